@@ -1,0 +1,308 @@
+//! Diagnostics: what gsdc says about a description, a GSD or a GSDML file.
+//!
+//! Every diagnostic has a stable code (`E…` for errors, `W…` for warnings, see
+//! `docs/rules.md`), a message, an optional span into the source it came from,
+//! a label shown under the caret and a help line. Rendering is rustc-style for
+//! people and JSON lines for tools.
+
+use std::fmt::Write as _;
+use std::ops::Range;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Severity {
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub code: &'static str,
+    pub severity: Severity,
+    pub message: String,
+    /// Byte range in the source the diagnostic is about, if it is about a place.
+    pub span: Option<Range<usize>>,
+    /// Short text printed under the caret.
+    pub label: Option<String>,
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn error(code: &'static str, message: impl Into<String>) -> Self {
+        Self::new(code, Severity::Error, message)
+    }
+
+    pub fn warning(code: &'static str, message: impl Into<String>) -> Self {
+        Self::new(code, Severity::Warning, message)
+    }
+
+    fn new(code: &'static str, severity: Severity, message: impl Into<String>) -> Self {
+        Diagnostic {
+            code,
+            severity,
+            message: message.into(),
+            span: None,
+            label: None,
+            help: None,
+        }
+    }
+
+    pub fn at(mut self, span: Range<usize>) -> Self {
+        self.span = Some(span);
+        self
+    }
+
+    pub fn at_opt(mut self, span: Option<Range<usize>>) -> Self {
+        self.span = span;
+        self
+    }
+
+    pub fn label(mut self, label: impl Into<String>) -> Self {
+        self.label = Some(label.into());
+        self
+    }
+
+    pub fn help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
+
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+/// Diagnostics about one source, in the order they were found.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Diagnostics(pub Vec<Diagnostic>);
+
+impl Diagnostics {
+    pub fn push(&mut self, diagnostic: Diagnostic) {
+        self.0.push(diagnostic);
+    }
+
+    pub fn extend(&mut self, other: impl IntoIterator<Item = Diagnostic>) {
+        self.0.extend(other);
+    }
+
+    pub fn has_errors(&self) -> bool {
+        self.0.iter().any(Diagnostic::is_error)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    pub fn iter(&self) -> std::slice::Iter<'_, Diagnostic> {
+        self.0.iter()
+    }
+
+    pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.0.iter().filter(|d| d.is_error())
+    }
+}
+
+impl IntoIterator for Diagnostics {
+    type Item = Diagnostic;
+    type IntoIter = std::vec::IntoIter<Diagnostic>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.into_iter()
+    }
+}
+
+impl From<Vec<Diagnostic>> for Diagnostics {
+    fn from(v: Vec<Diagnostic>) -> Self {
+        Diagnostics(v)
+    }
+}
+
+/// A named source text, so that spans can be turned into lines and columns.
+#[derive(Debug, Clone, Copy)]
+pub struct Source<'a> {
+    pub name: &'a str,
+    pub text: &'a str,
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let offset = floor_char_boundary(text, offset.min(text.len()));
+    let before = &text[..offset];
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let column = text[line_start..offset].chars().count() + 1;
+    (line, column)
+}
+
+fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    offset
+}
+
+impl Source<'_> {
+    /// `file:line:column` of the diagnostic's span, or just the file name.
+    pub fn location(&self, diagnostic: &Diagnostic) -> String {
+        match &diagnostic.span {
+            Some(span) => {
+                let (line, column) = line_col(self.text, span.start);
+                format!("{}:{line}:{column}", self.name)
+            }
+            None => self.name.to_string(),
+        }
+    }
+
+    /// rustc-style rendering: header, location, the source line with a caret
+    /// under the span and its label, then the help line.
+    pub fn render(&self, diagnostic: &Diagnostic) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{}[{}]: {}",
+            diagnostic.severity.as_str(),
+            diagnostic.code,
+            diagnostic.message
+        );
+        match &diagnostic.span {
+            Some(span) => self.render_snippet(&mut out, span.clone(), diagnostic),
+            None => {
+                let _ = writeln!(out, "  --> {}", self.name);
+            }
+        }
+        if let Some(help) = &diagnostic.help {
+            let _ = writeln!(out, "  = help: {help}");
+        }
+        out
+    }
+
+    fn render_snippet(&self, out: &mut String, span: Range<usize>, diagnostic: &Diagnostic) {
+        let (line, column) = line_col(self.text, span.start);
+        let gutter = line.to_string().len();
+        let pad = " ".repeat(gutter);
+        let _ = writeln!(out, "{pad}--> {}:{line}:{column}", self.name);
+        let line_text = self.text.lines().nth(line - 1).unwrap_or("");
+        let line_text = line_text.trim_end_matches('\r');
+        let line_chars = line_text.chars().count();
+        let start = floor_char_boundary(self.text, span.start.min(self.text.len()));
+        let end = floor_char_boundary(self.text, span.end.min(self.text.len())).max(start);
+        let span_chars = self.text[start..end]
+            .split('\n')
+            .next()
+            .unwrap_or("")
+            .chars()
+            .count();
+        let width = span_chars.clamp(1, (line_chars + 1).saturating_sub(column - 1).max(1));
+        let _ = writeln!(out, "{pad} |");
+        let _ = writeln!(out, "{line} | {}", printable(line_text));
+        let label = diagnostic
+            .label
+            .as_deref()
+            .map(|l| format!(" {l}"))
+            .unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "{pad} | {}{}{label}",
+            " ".repeat(column - 1),
+            "^".repeat(width)
+        );
+    }
+
+    /// One JSON object per diagnostic, on one line.
+    pub fn to_json(&self, diagnostic: &Diagnostic) -> String {
+        let (line, column) = match &diagnostic.span {
+            Some(span) => {
+                let (l, c) = line_col(self.text, span.start);
+                (l.to_string(), c.to_string())
+            }
+            None => ("null".into(), "null".into()),
+        };
+        let optional = |s: &Option<String>| s.as_deref().map_or("null".into(), json_string);
+        format!(
+            "{{\"file\":{},\"line\":{line},\"column\":{column},\"severity\":\"{}\",\"code\":\"{}\",\"message\":{},\"label\":{},\"help\":{}}}",
+            json_string(self.name),
+            diagnostic.severity.as_str(),
+            diagnostic.code,
+            json_string(&diagnostic.message),
+            optional(&diagnostic.label),
+            optional(&diagnostic.help),
+        )
+    }
+}
+
+/// Tabs become one space and control characters a `?`, so carets line up.
+fn printable(line: &str) -> String {
+    line.chars()
+        .map(|c| match c {
+            '\t' => ' ',
+            c if c.is_control() => '?',
+            c => c,
+        })
+        .collect()
+}
+
+pub fn json_string(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 2);
+    out.push('"');
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_col_counts_characters_not_bytes() {
+        let text = "a = 1\nname = \"中文\" x\n";
+        let x = text.find('x').unwrap();
+        assert_eq!(line_col(text, x), (2, 13));
+        assert_eq!(line_col(text, 0), (1, 1));
+    }
+
+    #[test]
+    fn render_puts_caret_under_span() {
+        let text = "[device]\nvendor = 42\n";
+        let start = text.find("42").unwrap();
+        let d = Diagnostic::error("E100", "wrong type")
+            .at(start..start + 2)
+            .label("expected a string")
+            .help("write vendor = \"Name\"");
+        let rendered = Source { name: "x.toml", text }.render(&d);
+        assert_eq!(
+            rendered,
+            "error[E100]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
+        );
+    }
+
+    #[test]
+    fn json_escapes_quotes_and_controls() {
+        assert_eq!(json_string("a\"b\\c\u{1}"), "\"a\\\"b\\\\c\\u0001\"");
+        let d = Diagnostic::warning("W1", "m");
+        let json = Source { name: "f", text: "" }.to_json(&d);
+        assert_eq!(
+            json,
+            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W1\",\"message\":\"m\",\"label\":null,\"help\":null}"
+        );
+    }
+}

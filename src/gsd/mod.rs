@@ -1,0 +1,1 @@
+//! GSD reader, keyword schema and rules (being written).

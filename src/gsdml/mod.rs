@@ -1,0 +1,1 @@
+//! GSDML reader and rules beyond the schema (being written).
