@@ -6,7 +6,34 @@
 //! and writing files happen in the CLI and in [`build`] for build scripts.
 
 pub mod diag;
+pub mod emit;
 pub mod gsd;
 pub mod gsdml;
 
 pub use diag::{Diagnostic, Diagnostics, Severity, Source};
+pub mod description;
+pub mod ir;
+pub mod load;
+pub mod lower;
+
+pub use emit::Artifact;
+pub use ir::Ir;
+
+/// Names the generator in the headers of generated files.
+pub const GENERATOR: &str = concat!("gsdc ", env!("CARGO_PKG_VERSION"));
+
+/// Reads a description: the IR when it has no error, and every diagnostic
+/// (warnings too) either way. `source_name` is the file name used in
+/// diagnostics and in the headers of generated files.
+pub fn load(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+    match load::parse(text) {
+        Ok(desc) => lower::lower(&desc, source_name, text),
+        Err(diagnostics) => (None, diagnostics),
+    }
+}
+
+/// Every file a loaded description gives, verified. Pure: no I/O, no clock.
+pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
+    emit::compile(ir)
+}
+pub mod output;

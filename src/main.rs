@@ -1,1 +1,9 @@
-fn main() {}
+use clap::Parser;
+use std::process::ExitCode;
+
+mod cli;
+
+fn main() -> ExitCode {
+    let args = cli::Cli::parse();
+    ExitCode::from(cli::run(args).code())
+}

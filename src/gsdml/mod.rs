@@ -1,1 +1,4 @@
-//! GSDML reader and rules beyond the schema (being written).
+//! GSDML stub until the reader lands.
+pub fn check(_text: &str, _file_name: Option<&str>) -> crate::diag::Diagnostics {
+    crate::diag::Diagnostics::default()
+}

@@ -1,0 +1,65 @@
+//! `gsdc build`: descriptions to device files. Every description is loaded
+//! and compiled before anything is written, so an error in one leaves the
+//! output directory as it was.
+
+use super::{display_name, report, Status};
+use gsdc::output::{write_if_changed, Outcome};
+use gsdc::Artifact;
+use std::path::{Path, PathBuf};
+
+pub fn run(descriptions: &[PathBuf], out: &Path) -> Status {
+    let mut status = Status::Ok;
+    let mut artifacts = Vec::new();
+    for path in descriptions {
+        match compile_one(path) {
+            Ok(files) => artifacts.extend(files),
+            Err(s) => status = status.max(s),
+        }
+    }
+    if status != Status::Ok {
+        eprintln!("nothing written: fix the errors above");
+        return status;
+    }
+    write_all(&artifacts, out)
+}
+
+fn compile_one(path: &Path) -> Result<Vec<Artifact>, Status> {
+    let name = display_name(path);
+    let bytes = std::fs::read(path).map_err(|e| {
+        eprintln!("error: cannot read {name}: {e}");
+        Status::UsageOrIo
+    })?;
+    let Ok(text) = String::from_utf8(bytes) else {
+        eprintln!("error[E000]: {name} is not UTF-8 text\n  = help: save the description as UTF-8");
+        return Err(Status::InputErrors);
+    };
+    let source_name = path
+        .file_name()
+        .map_or_else(|| name.clone(), |f| f.to_string_lossy().into_owned());
+    let (ir, diagnostics) = gsdc::load(&source_name, &text);
+    report(&name, &text, &diagnostics);
+    let ir = ir.ok_or(Status::InputErrors)?;
+    gsdc::compile(&ir).map_err(|diagnostics| {
+        report(&name, &text, &diagnostics);
+        Status::InputErrors
+    })
+}
+
+fn write_all(artifacts: &[Artifact], out: &Path) -> Status {
+    if let Err(e) = std::fs::create_dir_all(out) {
+        eprintln!("error: cannot create {}: {e}", out.display());
+        return Status::UsageOrIo;
+    }
+    for artifact in artifacts {
+        let path = out.join(&artifact.file_name);
+        match write_if_changed(out, &artifact.file_name, &artifact.contents) {
+            Ok(Outcome::Written) => println!("wrote {}", path.display()),
+            Ok(Outcome::Unchanged) => println!("unchanged {}", path.display()),
+            Err(e) => {
+                eprintln!("error: cannot write {}: {e}", path.display());
+                return Status::UsageOrIo;
+            }
+        }
+    }
+    Status::Ok
+}

@@ -1,0 +1,75 @@
+//! The command line: a thin layer over the library. One file per subcommand.
+
+mod build;
+mod check;
+
+use clap::{Parser, Subcommand};
+use gsdc::{Diagnostics, Source};
+use std::path::{Path, PathBuf};
+
+#[derive(Parser)]
+#[command(
+    name = "gsdc",
+    version,
+    about = "Fieldbus device descriptions from one TOML file: GSD, GSDML and firmware layout, checked",
+    after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc check vendor/SIEM8045.GSE\n\nExit codes: 0 ok, 1 the input has errors, 2 usage or I/O error."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Generate the device files of each description, each checked before it is written.
+    #[command(after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist")]
+    Build {
+        /// Description files (TOML).
+        #[arg(required = true, value_name = "DESCRIPTION")]
+        descriptions: Vec<PathBuf>,
+        /// Directory to write into; created if missing.
+        #[arg(long, short, default_value = ".", value_name = "DIR")]
+        out: PathBuf,
+    },
+    /// Check GSD and GSDML files against gsdc's rules.
+    #[command(after_help = "Examples:\n  gsdc check MD810DP.GSD\n  gsdc check GSDML-V2.32-MEGMEET-MV800-20230830.xml")]
+    Check {
+        /// GSD (.gsd, .gse, ...) or GSDML (.xml) files.
+        #[arg(required = true, value_name = "FILE")]
+        files: Vec<PathBuf>,
+    },
+}
+
+/// What a run ends with, as the exit code says it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Status {
+    Ok = 0,
+    InputErrors = 1,
+    UsageOrIo = 2,
+}
+
+impl Status {
+    pub fn code(self) -> u8 {
+        self as u8
+    }
+}
+
+pub fn run(cli: Cli) -> Status {
+    match cli.command {
+        Command::Build { descriptions, out } => build::run(&descriptions, &out),
+        Command::Check { files } => check::run(&files),
+    }
+}
+
+/// Prints each diagnostic to stderr, rendered against its source.
+fn report(name: &str, text: &str, diagnostics: &Diagnostics) {
+    let source = Source { name, text };
+    for d in diagnostics.iter() {
+        eprintln!("{}", source.render(d));
+    }
+}
+
+/// A path as diagnostics show it.
+fn display_name(path: &Path) -> String {
+    path.display().to_string()
+}

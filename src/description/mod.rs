@@ -1,0 +1,241 @@
+//! The raw description: the TOML file, one to one.
+//!
+//! Unknown keys are errors (`deny_unknown_fields`), and every value a
+//! diagnostic may point at is `Spanned`. No `flatten` or untagged enums here:
+//! they lose spans. Lowering ([`crate::lower`]) turns this into the IR.
+
+mod values;
+
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use toml::Spanned;
+
+pub use values::{Address, BitRange, Text};
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Description {
+    pub device: Device,
+    pub function_codes: Option<FunctionCodes>,
+    pub telegram: Telegram,
+    #[serde(default)]
+    pub mappings: Mappings,
+    pub profibus: Option<Spanned<Profibus>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Device {
+    pub vendor: Spanned<String>,
+    /// Product family, used in GSDML file names (`GSDML-V2.32-<Vendor>-<Family>-…`).
+    pub family: Spanned<String>,
+    /// Model name: GSD `Model_Name`.
+    pub model: Spanned<String>,
+    /// GSD `Revision`.
+    pub revision: Spanned<String>,
+    pub hardware_release: Spanned<String>,
+    pub software_release: Spanned<String>,
+    pub order_number: Option<Spanned<String>>,
+    pub name: Spanned<Text>,
+    pub info: Option<Spanned<Text>>,
+}
+
+/// How the drive names its parameters: `<prefix><group><separator><index>`.
+/// MD810 `F0-12`: prefix `F` (0xF0) plus group digit `0` (radix 16) make the
+/// high byte 0xF0, index `12` (decimal) the low byte: 0xF00C.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FunctionCodes {
+    pub separator: Spanned<String>,
+    pub group_radix: Spanned<u32>,
+    pub prefixes: BTreeMap<Spanned<String>, Spanned<u8>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Telegram {
+    pub pkw: Spanned<PkwKind>,
+    /// The most PZD words a module carries, each way.
+    pub pzd_words: Spanned<u8>,
+    pub control_word: Option<Word>,
+    pub status_word: Option<Word>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PkwKind {
+    /// No parameter channel.
+    None,
+    /// PROFIdrive-style PKE, IND, PWE (MD810).
+    PkeIndPwe,
+    /// Station, command, address, value (MV810).
+    StationCommandAddressValue,
+}
+
+/// A control or status word with named bits.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Word {
+    pub name: Spanned<Text>,
+    pub bits: Vec<BitField>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BitField {
+    pub bit: Spanned<BitRange>,
+    pub name: Spanned<Text>,
+    #[serde(default)]
+    pub values: Vec<Choice>,
+}
+
+/// One value of an enumeration, with its text.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Choice {
+    pub value: Spanned<i64>,
+    pub text: Spanned<Text>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Mappings {
+    /// What each PZD word the master sends means.
+    pub pzd_out: Option<Mapping>,
+    /// What each PZD word the drive sends means.
+    pub pzd_in: Option<Mapping>,
+    /// The DPV1 custom record indexes and the parameters behind them.
+    pub dpv1_index: Option<Mapping>,
+}
+
+/// A set of configurable mappings numbered `first..=last` (PZD words or
+/// record indexes), each holding a parameter address or a choice.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Mapping {
+    /// `{n}` stands for the word or index number.
+    pub name: Spanned<Text>,
+    pub first: Spanned<u8>,
+    pub last: Spanned<u8>,
+    /// The default of every entry; or give `defaults`, one per entry.
+    pub default: Option<Spanned<Address>>,
+    pub defaults: Option<Spanned<Vec<Spanned<Address>>>>,
+    /// Allowed parameter addresses, both ends included.
+    pub range: Option<Spanned<[Spanned<Address>; 2]>>,
+    /// Allowed values with their meaning, instead of a range.
+    pub choices: Option<Spanned<Vec<Choice>>>,
+    /// The drive parameter that holds the mapping of `first`; the next ones follow.
+    pub parameter: Option<Spanned<Address>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profibus {
+    pub file_name: Spanned<String>,
+    pub gsd_revision: Option<Spanned<u8>>,
+    pub ident_number: Spanned<IdentNumber>,
+    pub implementation_type: Option<Spanned<String>>,
+    pub ppo_types: Spanned<Vec<Spanned<String>>>,
+    /// PZD words of PPO5: 10 in PROFIdrive, 12 on MD810.
+    pub ppo5_pzd_words: Option<Spanned<u8>>,
+    /// MaxTsdr (bit times) of each supported baud rate, keyed as GSD spells it.
+    pub baud_rates: Spanned<BaudRates>,
+    /// Units of 100 us.
+    pub min_slave_interval: Spanned<u16>,
+    /// Main family (1 = drives) and optional sub-families, as `1@Drives@AC`.
+    pub slave_family: Spanned<String>,
+    #[serde(default)]
+    pub auto_baud: bool,
+    #[serde(default)]
+    pub freeze_mode: bool,
+    #[serde(default)]
+    pub sync_mode: bool,
+    pub dpv1: Option<Dpv1>,
+    pub diagnosis: Option<Spanned<Diagnosis>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IdentNumber {
+    pub value: Spanned<u16>,
+    /// The number is not assigned by PI: said in the files and warned about.
+    #[serde(default)]
+    pub placeholder: bool,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BaudRates {
+    #[serde(rename = "9.6")]
+    pub b9_6: Option<Spanned<u16>>,
+    #[serde(rename = "19.2")]
+    pub b19_2: Option<Spanned<u16>>,
+    #[serde(rename = "31.25")]
+    pub b31_25: Option<Spanned<u16>>,
+    #[serde(rename = "45.45")]
+    pub b45_45: Option<Spanned<u16>>,
+    #[serde(rename = "93.75")]
+    pub b93_75: Option<Spanned<u16>>,
+    #[serde(rename = "187.5")]
+    pub b187_5: Option<Spanned<u16>>,
+    #[serde(rename = "500")]
+    pub b500: Option<Spanned<u16>>,
+    #[serde(rename = "1.5M")]
+    pub b1_5m: Option<Spanned<u16>>,
+    #[serde(rename = "3M")]
+    pub b3m: Option<Spanned<u16>>,
+    #[serde(rename = "6M")]
+    pub b6m: Option<Spanned<u16>>,
+    #[serde(rename = "12M")]
+    pub b12m: Option<Spanned<u16>>,
+}
+
+impl BaudRates {
+    /// The rates in GSD order, with the names GSD keywords use.
+    pub fn entries(&self) -> [(&'static str, &Option<Spanned<u16>>); 11] {
+        [
+            ("9.6", &self.b9_6),
+            ("19.2", &self.b19_2),
+            ("31.25", &self.b31_25),
+            ("45.45", &self.b45_45),
+            ("93.75", &self.b93_75),
+            ("187.5", &self.b187_5),
+            ("500", &self.b500),
+            ("1.5M", &self.b1_5m),
+            ("3M", &self.b3m),
+            ("6M", &self.b6m),
+            ("12M", &self.b12m),
+        ]
+    }
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Dpv1 {
+    #[serde(default)]
+    pub c1_read_write: bool,
+    pub c1_max_data_len: Option<Spanned<u8>>,
+    /// Units of 10 ms.
+    pub c1_response_timeout: Option<Spanned<u16>>,
+    /// DPV1_Status_1..3, the first three bytes of User_Prm_Data.
+    #[serde(default)]
+    pub status_bytes: [u8; 3],
+}
+
+/// Device-related diagnosis: a header byte with the block length, then the
+/// device's bytes. Bit 0 is bit 0 of the first byte after the header.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Diagnosis {
+    /// Length of the device-related block, header byte included.
+    pub length: Spanned<u8>,
+    #[serde(default)]
+    pub areas: Vec<DiagnosisArea>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosisArea {
+    pub bit: Spanned<BitRange>,
+    pub values: Vec<Choice>,
+}

@@ -1,0 +1,327 @@
+//! The GSD emitter: IR to a GSD file through `templates/gsd.jinja`, then
+//! wrapped to 80 columns with `\` continuations and given CRLF line ends.
+
+use crate::ir::profibus::{Profibus, STANDARD_DIAG_BYTES};
+use crate::ir::{Allowed, Choice, Ir};
+use serde::Serialize;
+
+const TEMPLATE: &str = include_str!("../../templates/gsd.jinja");
+/// Longest line gsdc writes, line end excluded.
+pub const MAX_LINE: usize = 80;
+/// Keys are padded to this width so the `=` line up.
+const KEY_WIDTH: usize = 28;
+
+#[derive(Serialize)]
+struct Context<'a> {
+    file_name: &'a str,
+    generator: String,
+    source: &'a str,
+    fingerprint: String,
+    gsd_revision: u8,
+    vendor: &'a str,
+    model: &'a str,
+    revision: &'a str,
+    ident_number: String,
+    ident_placeholder: bool,
+    hardware_release: &'a str,
+    software_release: &'a str,
+    order_number: Option<&'a str>,
+    implementation_type: Option<&'a str>,
+    info_text: Option<&'a str>,
+    baud_rates: Vec<Rate>,
+    freeze_mode: u8,
+    sync_mode: u8,
+    auto_baud: u8,
+    min_slave_interval: u16,
+    max_len: u16,
+    max_data_len: u16,
+    slave_family: &'a str,
+    max_diag_data_len: u8,
+    diag_areas: Vec<DiagArea<'a>>,
+    dpv1: Option<Dpv1>,
+    prm_len: usize,
+    prm_const: Option<String>,
+    prm_texts: Vec<PrmText<'a>>,
+    params: Vec<Param<'a>>,
+    modules: Vec<Module<'a>>,
+}
+
+#[derive(Serialize)]
+struct Rate {
+    name: &'static str,
+    max_tsdr: u16,
+}
+
+#[derive(Serialize)]
+struct Value<'a> {
+    value: i64,
+    text: &'a str,
+}
+
+#[derive(Serialize)]
+struct DiagArea<'a> {
+    first: u16,
+    last: u16,
+    values: Vec<Value<'a>>,
+}
+
+#[derive(Serialize)]
+struct Dpv1 {
+    c1_read_write: u8,
+    c1_max_data_len: u8,
+    c1_response_timeout: u16,
+}
+
+#[derive(Serialize)]
+struct PrmText<'a> {
+    id: usize,
+    values: Vec<Value<'a>>,
+}
+
+#[derive(Serialize)]
+struct Param<'a> {
+    id: usize,
+    name: &'a str,
+    default: u16,
+    allowed: String,
+    text_ref: Option<usize>,
+    offset: u8,
+}
+
+#[derive(Serialize)]
+struct Module<'a> {
+    name: &'a str,
+    config: String,
+    reference: u8,
+}
+
+/// The GSD text of a description with a PROFIBUS part.
+pub fn emit(ir: &Ir, profibus: &Profibus) -> String {
+    let mut env = minijinja::Environment::new();
+    env.add_filter("key", |key: String| format!("{key:<KEY_WIDTH$}"));
+    env.add_template("gsd", TEMPLATE)
+        .expect("templates/gsd.jinja is valid (tested)");
+    let rendered = env
+        .get_template("gsd")
+        .and_then(|t| t.render(context(ir, profibus)))
+        .expect("the GSD context always renders (tested)");
+    finish(&rendered)
+}
+
+fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
+    let max_len = p.modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
+    let d = &ir.device;
+    Context {
+        file_name: &p.file_name,
+        generator: crate::GENERATOR.to_string(),
+        source: &ir.source_name,
+        fingerprint: ir.fingerprint.to_string(),
+        gsd_revision: p.gsd_revision,
+        vendor: &d.vendor,
+        model: &d.model,
+        revision: &d.revision,
+        ident_number: format!("0x{:04X}", p.ident_number),
+        ident_placeholder: p.ident_placeholder,
+        hardware_release: &d.hardware_release,
+        software_release: &d.software_release,
+        order_number: d.order_number.as_deref(),
+        implementation_type: p.implementation_type.as_deref(),
+        info_text: d.info.as_ref().map(|i| i.en.as_str()),
+        baud_rates: p
+            .baud_rates
+            .iter()
+            .map(|&(name, max_tsdr)| Rate { name, max_tsdr })
+            .collect(),
+        freeze_mode: p.freeze_mode.into(),
+        sync_mode: p.sync_mode.into(),
+        auto_baud: p.auto_baud.into(),
+        min_slave_interval: p.min_slave_interval,
+        max_len,
+        max_data_len: 2 * max_len,
+        slave_family: &p.slave_family,
+        max_diag_data_len: STANDARD_DIAG_BYTES + p.diagnosis.as_ref().map_or(0, |d| d.length),
+        diag_areas: p.diagnosis.iter().flat_map(|d| &d.areas).map(|a| DiagArea {
+            first: a.first_bit,
+            last: a.last_bit,
+            values: values(&a.values),
+        }).collect(),
+        dpv1: p.dpv1.map(|d| Dpv1 {
+            c1_read_write: d.c1_read_write.into(),
+            c1_max_data_len: d.c1_max_data_len,
+            c1_response_timeout: d.c1_response_timeout,
+        }),
+        prm_len: p.user_prm.len(),
+        prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
+        prm_texts: prm_texts(ir),
+        params: params(ir, p),
+        modules: p
+            .modules
+            .iter()
+            .map(|m| Module {
+                name: &m.name,
+                config: hex_list(&m.config_bytes()),
+                reference: m.ppo,
+            })
+            .collect(),
+    }
+}
+
+fn values(choices: &[Choice]) -> Vec<Value<'_>> {
+    choices
+        .iter()
+        .map(|c| Value {
+            value: c.value,
+            text: &c.text.en,
+        })
+        .collect()
+}
+
+/// One PrmText per mapping set with choices; its id is the set's position + 1.
+fn prm_texts(ir: &Ir) -> Vec<PrmText<'_>> {
+    ir.mappings
+        .iter()
+        .enumerate()
+        .filter_map(|(i, set)| match &set.allowed {
+            Allowed::Choices(choices) => Some(PrmText {
+                id: i + 1,
+                values: values(choices),
+            }),
+            Allowed::Range { .. } => None,
+        })
+        .collect()
+}
+
+fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
+    p.user_prm
+        .entries
+        .iter()
+        .enumerate()
+        .map(|(i, entry)| {
+            let (set_index, entry_index) = entry.mapping;
+            let set = &ir.mappings[set_index];
+            let mapping = &set.entries[entry_index];
+            Param {
+                id: i + 1,
+                name: &mapping.name.en,
+                default: mapping.default,
+                allowed: allowed(&set.allowed),
+                text_ref: matches!(set.allowed, Allowed::Choices(_)).then_some(set_index + 1),
+                offset: entry.offset,
+            }
+        })
+        .collect()
+}
+
+/// `min-max`, or the list of values when they are not contiguous.
+fn allowed(allowed: &Allowed) -> String {
+    match allowed {
+        Allowed::Range { min, max } => format!("{min}-{max}"),
+        Allowed::Choices(choices) => {
+            let mut values: Vec<i64> = choices.iter().map(|c| c.value).collect();
+            values.sort_unstable();
+            let contiguous = values.windows(2).all(|w| w[1] == w[0] + 1);
+            match (contiguous, values.first(), values.last()) {
+                (true, Some(first), Some(last)) if first != last => format!("{first}-{last}"),
+                _ => values.iter().map(i64::to_string).collect::<Vec<_>>().join(","),
+            }
+        }
+    }
+}
+
+fn hex_list(bytes: &[u8]) -> String {
+    bytes
+        .iter()
+        .map(|b| format!("0x{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// Wraps long lines and turns line ends into CRLF.
+fn finish(rendered: &str) -> String {
+    let mut out = String::with_capacity(rendered.len() + rendered.len() / 16);
+    for line in rendered.lines() {
+        for piece in wrap(line) {
+            out.push_str(&piece);
+            out.push_str("\r\n");
+        }
+    }
+    out
+}
+
+/// Splits a line longer than [`MAX_LINE`] into pieces ending in `\`: inside
+/// a string after a space (readers join the pieces back without the `\` and
+/// the line end), elsewhere after a comma of a number list.
+fn wrap(line: &str) -> Vec<String> {
+    let mut pieces = Vec::new();
+    let mut rest = line;
+    let mut in_string = false;
+    while rest.chars().count() > MAX_LINE {
+        let cut = break_point(rest, in_string);
+        in_string ^= rest[..cut].matches('"').count() % 2 == 1;
+        pieces.push(format!("{}\\", &rest[..cut]));
+        rest = &rest[cut..];
+    }
+    pieces.push(rest.to_string());
+    pieces
+}
+
+/// Byte index to cut `line` at, leaving room for the `\`. GSD text is ASCII,
+/// so bytes are characters here.
+fn break_point(line: &str, starts_in_string: bool) -> usize {
+    let limit = MAX_LINE - 1;
+    let mut in_string = starts_in_string;
+    let mut best = None;
+    for (i, c) in line.char_indices().take(limit) {
+        match c {
+            '"' => in_string = !in_string,
+            ' ' if in_string => best = Some(i + 1),
+            ',' if !in_string => best = Some(i + 1),
+            _ => {}
+        }
+    }
+    best.unwrap_or(limit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn short_lines_stay_whole() {
+        assert_eq!(wrap("Vendor_Name = \"x\""), ["Vendor_Name = \"x\""]);
+    }
+
+    #[test]
+    fn long_strings_break_after_a_space_and_join_back() {
+        let text = "word ".repeat(40);
+        let line = format!("Info_Text = \"{}\"", text.trim_end());
+        let pieces = wrap(&line);
+        assert!(pieces.len() > 1);
+        assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
+        assert!(pieces[..pieces.len() - 1].iter().all(|p| p.ends_with(" \\")));
+        let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
+        assert_eq!(joined, line);
+    }
+
+    #[test]
+    fn long_number_lists_break_after_a_comma() {
+        let line = format!("Ext_User_Prm_Data_Const(0) = {}", hex_list(&[0xAB; 30]));
+        let pieces = wrap(&line);
+        assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
+        assert!(pieces[..pieces.len() - 1].iter().all(|p| p.ends_with(",\\")));
+        let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
+        assert_eq!(joined, line);
+    }
+
+    #[test]
+    fn allowed_values_are_a_range_when_contiguous() {
+        let choice = |value| Choice {
+            value,
+            text: crate::ir::Text { en: String::new(), zh: None },
+        };
+        assert_eq!(allowed(&Allowed::Range { min: 0, max: 65535 }), "0-65535");
+        assert_eq!(allowed(&Allowed::Choices(vec![choice(2), choice(0), choice(1)])), "0-2");
+        assert_eq!(allowed(&Allowed::Choices(vec![choice(0), choice(5)])), "0,5");
+        assert_eq!(allowed(&Allowed::Choices(vec![choice(7)])), "7");
+    }
+}

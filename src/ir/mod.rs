@@ -1,0 +1,92 @@
+//! The IR: a validated, bus-neutral model of one option card, with every
+//! default applied and every number computed. Emitters read only this.
+//!
+//! Identity, telegram and mappings are shared by every bus; what only
+//! PROFIBUS needs lives in [`profibus`].
+
+pub mod mapping;
+pub mod numbering;
+pub mod profibus;
+pub mod telegram;
+
+pub use mapping::{Allowed, MappingEntry, MappingKind, MappingSet};
+pub use numbering::Numbering;
+pub use profibus::Profibus;
+pub use telegram::{BitField, Choice, Layout, PkwKind, Telegram, Word};
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Ir {
+    /// The description's file name, without directories: it goes into the
+    /// headers of generated files, which must not depend on where they were built.
+    pub source_name: String,
+    pub fingerprint: Fingerprint,
+    pub device: Device,
+    pub numbering: Option<Numbering>,
+    pub telegram: Telegram,
+    /// In telegram order: PZD out, PZD in, then the DPV1 indexes.
+    pub mappings: Vec<MappingSet>,
+    pub profibus: Option<Profibus>,
+}
+
+/// A text in English and, optionally, Chinese.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Text {
+    pub en: String,
+    pub zh: Option<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Device {
+    pub vendor: String,
+    pub family: String,
+    pub model: String,
+    pub revision: String,
+    pub hardware_release: String,
+    pub software_release: String,
+    pub order_number: Option<String>,
+    pub name: Text,
+    pub info: Option<Text>,
+}
+
+/// FNV-1a (64 bit) of the description text with line ends normalised to LF,
+/// so a checkout with CRLF line ends has the same fingerprint. It identifies
+/// a description; it is not a security measure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Fingerprint(pub u64);
+
+impl Fingerprint {
+    pub fn of(text: &str) -> Self {
+        const OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+        const PRIME: u64 = 0x0000_0100_0000_01b3;
+        let mut hash = OFFSET;
+        let bytes = text.as_bytes();
+        for (i, &byte) in bytes.iter().enumerate() {
+            if byte == b'\r' && bytes.get(i + 1) == Some(&b'\n') {
+                continue;
+            }
+            hash ^= u64::from(byte);
+            hash = hash.wrapping_mul(PRIME);
+        }
+        Fingerprint(hash)
+    }
+}
+
+impl std::fmt::Display for Fingerprint {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:016x}", self.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fingerprint;
+
+    #[test]
+    fn fingerprint_is_fnv1a_and_ignores_crlf() {
+        // FNV-1a 64 reference values: "" and "a".
+        assert_eq!(Fingerprint::of("").to_string(), "cbf29ce484222325");
+        assert_eq!(Fingerprint::of("a").to_string(), "af63dc4c8601ec8c");
+        assert_eq!(Fingerprint::of("a\r\nb"), Fingerprint::of("a\nb"));
+        assert_ne!(Fingerprint::of("a\nb"), Fingerprint::of("a\nc"));
+    }
+}

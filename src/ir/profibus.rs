@@ -1,0 +1,153 @@
+//! What only PROFIBUS-DP needs: identity numbers, bus parameters, the PPO
+//! modules with their config bytes, the parameter telegram and diagnosis.
+
+use super::{Choice, Layout};
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Profibus {
+    pub file_name: String,
+    pub gsd_revision: u8,
+    pub ident_number: u16,
+    /// Not assigned by PI: the files say so.
+    pub ident_placeholder: bool,
+    pub implementation_type: Option<String>,
+    pub modules: Vec<PpoModule>,
+    /// Supported baud rates as GSD names them, with MaxTsdr in bit times.
+    pub baud_rates: Vec<(&'static str, u16)>,
+    /// Units of 100 us.
+    pub min_slave_interval: u16,
+    pub slave_family: String,
+    pub auto_baud: bool,
+    pub freeze_mode: bool,
+    pub sync_mode: bool,
+    pub dpv1: Option<Dpv1>,
+    pub user_prm: UserPrm,
+    pub diagnosis: Option<Diagnosis>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Dpv1 {
+    pub c1_read_write: bool,
+    pub c1_max_data_len: u8,
+    /// Units of 10 ms.
+    pub c1_response_timeout: u16,
+    pub status_bytes: [u8; 3],
+}
+
+/// A PPO type as a module: PPO1..PPO5.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PpoModule {
+    pub ppo: u8,
+    pub name: String,
+    pub layout: Layout,
+}
+
+/// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
+/// the whole length, bit 6 words, bits 5-4 direction (11 = in and out),
+/// bits 3-0 length - 1.
+const CONSISTENT_WORDS_IN_OUT: u8 = 0b1111_0000;
+
+/// Words one general identifier byte can carry.
+pub const MAX_WORDS_PER_IDENTIFIER: u8 = 16;
+
+impl PpoModule {
+    /// PPO1 `0xF3,0xF1`: the PKW as 4 consistent words in and out, then the
+    /// PZD as one consistent block in and out.
+    pub fn config_bytes(&self) -> Vec<u8> {
+        let pkw = self.layout.pkw.then(|| identifier(super::telegram::PKW_WORDS));
+        pkw.into_iter()
+            .chain(std::iter::once(identifier(self.layout.pzd_words)))
+            .collect()
+    }
+}
+
+fn identifier(words: u8) -> u8 {
+    debug_assert!((1..=MAX_WORDS_PER_IDENTIFIER).contains(&words));
+    CONSISTENT_WORDS_IN_OUT | (words - 1)
+}
+
+/// The standard PPO types: (PKW, PZD words). PPO5's PZD count may differ per
+/// device (MD810 has 12), so the description gives it.
+pub fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
+    let (pkw, pzd_words) = match ppo {
+        1 => (true, 2),
+        2 => (true, 6),
+        3 => (false, 2),
+        4 => (false, 6),
+        5 => (true, ppo5_pzd_words),
+        _ => return None,
+    };
+    Some(Layout { pkw, pzd_words })
+}
+
+/// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
+/// DPV1 status bytes), then one Unsigned16 per mapping entry.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UserPrm {
+    pub constant: Vec<u8>,
+    pub entries: Vec<PrmEntry>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PrmEntry {
+    pub offset: u8,
+    /// Index into `Ir::mappings`, then into that set's entries.
+    pub mapping: (usize, usize),
+}
+
+pub const PRM_ENTRY_BYTES: u8 = 2;
+
+impl UserPrm {
+    pub fn len(&self) -> usize {
+        self.constant.len() + self.entries.len() * usize::from(PRM_ENTRY_BYTES)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Device-related diagnosis: the block length (header byte included) and
+/// texts for values of bit areas counted from the first byte after the header.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Diagnosis {
+    pub length: u8,
+    pub areas: Vec<DiagnosisArea>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DiagnosisArea {
+    pub first_bit: u16,
+    pub last_bit: u16,
+    pub values: Vec<Choice>,
+}
+
+/// Bytes of the standard diagnosis before the device-related block.
+pub const STANDARD_DIAG_BYTES: u8 = 6;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn config(ppo: u8, ppo5: u8) -> Vec<u8> {
+        let layout = ppo_layout(ppo, ppo5).unwrap();
+        PpoModule { ppo, name: String::new(), layout }.config_bytes()
+    }
+
+    #[test]
+    fn ppo_config_bytes_match_the_profidrive_table() {
+        assert_eq!(config(1, 12), [0xF3, 0xF1]);
+        assert_eq!(config(2, 12), [0xF3, 0xF5]);
+        assert_eq!(config(3, 12), [0xF1]);
+        assert_eq!(config(4, 12), [0xF5]);
+        assert_eq!(config(5, 12), [0xF3, 0xFB]);
+        assert_eq!(config(5, 10), [0xF3, 0xF9]);
+    }
+
+    #[test]
+    fn ppo_lengths_in_bytes() {
+        let bytes = |ppo| ppo_layout(ppo, 12).unwrap().bytes();
+        assert_eq!([bytes(1), bytes(2), bytes(3), bytes(4), bytes(5)], [12, 20, 4, 12, 32]);
+        assert!(ppo_layout(6, 12).is_none());
+    }
+}

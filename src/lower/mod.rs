@@ -1,0 +1,134 @@
+//! Lowering: the raw description to the IR, applying every default and
+//! checking every rule. All failures are collected, not only the first.
+//!
+//! Rule codes of this stage are E1xx (errors) and W1xx (warnings); they are
+//! documented in `docs/rules.md`.
+
+mod checks;
+mod mappings;
+mod profibus;
+mod telegram;
+
+use crate::description::{self as raw, Address, Description};
+use crate::diag::{Diagnostic, Diagnostics};
+use crate::ir::{self, Fingerprint, Ir, Numbering};
+use checks::Checker;
+use toml::Spanned;
+
+/// Lowers a parsed description: the IR when there is no error, and every
+/// diagnostic, warnings included. `source_name` is the file name written into
+/// generated headers; `text` is the description's text, for the fingerprint.
+pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+    let mut cx = Checker::new(desc.profibus.is_some());
+    if desc.profibus.is_none() {
+        cx.push(
+            Diagnostic::error("E110", "the description targets no bus")
+                .help("add a [profibus] section; docs/description.md shows one"),
+        );
+    }
+    let numbering = desc.function_codes.as_ref().map(|f| lower_numbering(&mut cx, f));
+    let device = lower_device(&mut cx, &desc.device);
+    let telegram = telegram::lower(&mut cx, &desc.telegram);
+    let mappings = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
+    let profibus = desc
+        .profibus
+        .as_ref()
+        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings));
+    let diagnostics = cx.finish();
+    if diagnostics.has_errors() {
+        return (None, diagnostics);
+    }
+    let ir = Ir {
+        source_name: source_name.to_string(),
+        fingerprint: Fingerprint::of(text),
+        device,
+        numbering,
+        telegram,
+        mappings,
+        profibus: profibus.flatten(),
+    };
+    (Some(ir), diagnostics)
+}
+
+fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
+    ir::Device {
+        vendor: cx.gsd_string(&d.vendor, checks::GSD_NAME_LEN, "vendor"),
+        family: cx.required(&d.family, "family"),
+        model: cx.gsd_string(&d.model, checks::GSD_NAME_LEN, "model"),
+        revision: cx.gsd_string(&d.revision, checks::GSD_NAME_LEN, "revision"),
+        hardware_release: cx.gsd_string(&d.hardware_release, checks::GSD_NAME_LEN, "hardware_release"),
+        software_release: cx.gsd_string(&d.software_release, checks::GSD_NAME_LEN, "software_release"),
+        order_number: d
+            .order_number
+            .as_ref()
+            .map(|o| cx.gsd_string(o, checks::GSD_NAME_LEN, "order_number")),
+        name: cx.text(&d.name, None, "name"),
+        info: d
+            .info
+            .as_ref()
+            .map(|i| cx.text(i, Some(checks::GSD_INFO_LEN), "info")),
+    }
+}
+
+fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
+    if ![10, 16].contains(f.group_radix.get_ref()) {
+        cx.push(
+            Diagnostic::error("E101", "group_radix must be 10 or 16")
+                .at(f.group_radix.span())
+                .label("not 10 or 16")
+                .help("16 for groups written as one hex digit (F0..FF), 10 for decimal groups (P43)"),
+        );
+    }
+    if f.separator.get_ref().is_empty() {
+        cx.push(
+            Diagnostic::error("E117", "the function-code separator is empty")
+                .at(f.separator.span())
+                .label("empty")
+                .help("write the character between group and index, e.g. \"-\" for F0-12"),
+        );
+    }
+    let prefixes = f
+        .prefixes
+        .iter()
+        .map(|(p, base)| (p.get_ref().clone(), *base.get_ref()))
+        .collect();
+    Numbering::new(f.separator.get_ref().clone(), *f.group_radix.get_ref(), prefixes)
+}
+
+/// An address written as a number or a function-code name, as u16.
+fn resolve_address(
+    cx: &mut Checker,
+    address: &Spanned<Address>,
+    numbering: Option<&Numbering>,
+) -> Option<u16> {
+    match address.get_ref() {
+        Address::Number(n) => cx.in_range(*n, 0, 0xFFFF, address.span(), "an address or value"),
+        Address::Name(name) => match numbering {
+            None => {
+                cx.push(
+                    Diagnostic::error("E107", format!("`{name}` is a function-code name, but the description has no [function_codes]"))
+                        .at(address.span())
+                        .label("needs [function_codes]")
+                        .help("add [function_codes] saying how names map to addresses, or write the number"),
+                );
+                None
+            }
+            Some(numbering) => match numbering.parse(name) {
+                Ok(value) => Some(value),
+                Err(why) => {
+                    cx.push(
+                        Diagnostic::error("E106", format!("`{name}` is not a function-code name: {why}"))
+                            .at(address.span())
+                            .label("not a function code")
+                            .help(format!(
+                                "write it as <prefix><group>{}<index>, e.g. {}, or as a number",
+                                numbering.separator,
+                                numbering.format(0xF00C).unwrap_or_else(|| "61452".into())
+                            )),
+                    );
+                    None
+                }
+            },
+        },
+    }
+}

@@ -1,0 +1,281 @@
+//! The PROFIBUS part: identity numbers, bus parameters, PPO modules, the
+//! parameter telegram and the diagnosis.
+
+use super::checks::{Checker, GSD_NAME_LEN};
+use super::telegram::lower_choices;
+use crate::description as raw;
+use crate::diag::Diagnostic;
+use crate::ir::profibus::{
+    ppo_layout, Diagnosis, DiagnosisArea, Dpv1, PpoModule, PrmEntry, Profibus, UserPrm,
+    PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
+};
+use crate::ir::{MappingSet, PkwKind, Telegram};
+use std::collections::BTreeSet;
+use toml::Spanned;
+
+const DEFAULT_GSD_REVISION: u8 = 5;
+/// PROFIdrive's PPO5 has 10 PZD words.
+const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
+const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
+const DEFAULT_C1_RESPONSE_TIMEOUT: u16 = 100;
+/// GSD limits: Max_User_Prm_Data_Len 0..237, Max_Diag_Data_Len 6..244.
+const MAX_USER_PRM_LEN: usize = 237;
+const MAX_DIAG_DATA_LEN: i64 = 244;
+/// A Unit_Diag_Area spans at most 16 bits.
+const MAX_DIAG_AREA_BITS: i64 = 16;
+/// Main slave families defined by PI (0 general .. 12 PA).
+const MAX_MAIN_FAMILY: u8 = 12;
+
+pub fn lower(
+    cx: &mut Checker,
+    p: &Spanned<raw::Profibus>,
+    telegram: &Telegram,
+    mappings: &[MappingSet],
+) -> Option<Profibus> {
+    let p = p.get_ref();
+    let gsd_revision = match &p.gsd_revision {
+        Some(r) => cx.spanned_in_range(r, 1, 5, "gsd_revision")?,
+        None => DEFAULT_GSD_REVISION,
+    };
+    let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
+    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, &p.ppo_types);
+    let ident = p.ident_number.get_ref();
+    if ident.placeholder {
+        cx.push(
+            Diagnostic::warning("W101", format!("PROFIBUS ident number 0x{:04X} is a placeholder, not assigned by PI", ident.value.get_ref()))
+                .at(p.ident_number.span())
+                .label("placeholder")
+                .help("apply to PI for an ident number before shipping the GSD"),
+        );
+    }
+    Some(Profibus {
+        file_name: file_name(cx, &p.file_name),
+        gsd_revision,
+        ident_number: *ident.value.get_ref(),
+        ident_placeholder: ident.placeholder,
+        implementation_type: p
+            .implementation_type
+            .as_ref()
+            .map(|i| cx.gsd_string(i, GSD_NAME_LEN, "implementation_type")),
+        modules: modules(cx, p, telegram),
+        baud_rates: baud_rates(cx, &p.baud_rates),
+        min_slave_interval: cx.spanned_in_range(&p.min_slave_interval, 1, 0xFFFF, "min_slave_interval")?,
+        slave_family: slave_family(cx, &p.slave_family),
+        auto_baud: p.auto_baud,
+        freeze_mode: p.freeze_mode,
+        sync_mode: p.sync_mode,
+        dpv1,
+        user_prm,
+        diagnosis: p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d)),
+    })
+}
+
+/// 8.3 names, ending in .GSD (neutral) or the language letter (.GSE, .GSG, …).
+fn file_name(cx: &mut Checker, name: &Spanned<String>) -> String {
+    let text = name.get_ref();
+    let valid = text.rsplit_once('.').is_some_and(|(stem, ext)| {
+        let ext = ext.to_ascii_uppercase();
+        (1..=8).contains(&stem.len())
+            && stem.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && ["GSD", "GSE", "GSG", "GSF", "GSI", "GSS"].contains(&ext.as_str())
+    });
+    if !valid {
+        cx.push(
+            Diagnostic::error("E112", format!("`{text}` is not a GSD file name"))
+                .at(name.span())
+                .label("not 8.3 with a GSD extension")
+                .help("at most 8 letters, digits or `_`, then .GSD (or .GSE, .GSG, .GSF, .GSI, .GSS for one language)"),
+        );
+    }
+    text.clone()
+}
+
+fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoModule> {
+    let ppo5_pzd_words = match &p.ppo5_pzd_words {
+        Some(w) => cx.spanned_in_range(w, 1, 16, "ppo5_pzd_words").unwrap_or(DEFAULT_PPO5_PZD_WORDS),
+        None => DEFAULT_PPO5_PZD_WORDS,
+    };
+    if p.ppo_types.get_ref().is_empty() {
+        cx.push(
+            Diagnostic::error("E101", "ppo_types is empty")
+                .at(p.ppo_types.span())
+                .label("no PPO type")
+                .help("offer at least one, e.g. ppo_types = [\"PPO1\"]"),
+        );
+    }
+    let mut seen = BTreeSet::new();
+    p.ppo_types
+        .get_ref()
+        .iter()
+        .filter_map(|name| {
+            let module = ppo_module(cx, name, ppo5_pzd_words, telegram)?;
+            if !seen.insert(module.ppo) {
+                cx.duplicate(format!("PPO{}", module.ppo), name.span());
+                return None;
+            }
+            Some(module)
+        })
+        .collect()
+}
+
+fn ppo_module(cx: &mut Checker, name: &Spanned<String>, ppo5_pzd_words: u8, telegram: &Telegram) -> Option<PpoModule> {
+    let number = name
+        .get_ref()
+        .strip_prefix("PPO")
+        .and_then(|n| n.parse::<u8>().ok());
+    let Some((ppo, layout)) = number.and_then(|n| Some((n, ppo_layout(n, ppo5_pzd_words)?))) else {
+        cx.push(
+            Diagnostic::error("E104", format!("`{}` is not a PPO type", name.get_ref()))
+                .at(name.span())
+                .label("unknown PPO type")
+                .help("PPO types are PPO1, PPO2, PPO3, PPO4 and PPO5"),
+        );
+        return None;
+    };
+    if layout.pkw && telegram.pkw == PkwKind::None {
+        cx.push(
+            Diagnostic::error("E121", format!("PPO{ppo} carries a PKW channel, but the telegram has none"))
+                .at(name.span())
+                .label("has PKW")
+                .help("set telegram.pkw to the channel's kind, or offer only PPO3 and PPO4"),
+        );
+    }
+    if layout.pzd_words > telegram.pzd_words {
+        cx.push(
+            Diagnostic::error("E113", format!("PPO{ppo} has {} PZD words; the telegram has {}", layout.pzd_words, telegram.pzd_words))
+                .at(name.span())
+                .label("longer than the telegram")
+                .help("raise telegram.pzd_words or drop this PPO type"),
+        );
+    }
+    let pkw = if layout.pkw { "4 PKW + " } else { "" };
+    Some(PpoModule {
+        ppo,
+        name: format!("PPO{ppo}: {pkw}{} PZD", layout.pzd_words),
+        layout,
+    })
+}
+
+fn baud_rates(cx: &mut Checker, rates: &Spanned<raw::BaudRates>) -> Vec<(&'static str, u16)> {
+    let lowered: Vec<_> = rates
+        .get_ref()
+        .entries()
+        .into_iter()
+        .filter_map(|(name, tsdr)| {
+            let tsdr = tsdr.as_ref()?;
+            Some((name, cx.spanned_in_range(tsdr, 1, 0xFFFF, "MaxTsdr")?))
+        })
+        .collect();
+    if lowered.is_empty() && !any_rate_given(rates) {
+        cx.push(
+            Diagnostic::error("E111", "no baud rate is supported")
+                .at(rates.span())
+                .label("empty")
+                .help("give MaxTsdr for each supported rate, e.g. \"1.5M\" = 150"),
+        );
+    }
+    lowered
+}
+
+/// A rate that failed its range check was reported already.
+fn any_rate_given(rates: &Spanned<raw::BaudRates>) -> bool {
+    rates.get_ref().entries().iter().any(|(_, t)| t.is_some())
+}
+
+/// `1`, or `1@Drives@AC`: a main family number, then sub-families.
+fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
+    let text = family.get_ref();
+    let mut parts = text.split('@');
+    let main_ok = parts
+        .next()
+        .and_then(|m| m.parse::<u8>().ok())
+        .is_some_and(|m| m <= MAX_MAIN_FAMILY);
+    let subs_ok = parts.all(|s| !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char));
+    if !(main_ok && subs_ok) {
+        cx.push(
+            Diagnostic::error("E120", format!("`{text}` is not a slave family"))
+                .at(family.span())
+                .label("expected <main>[@<sub>...]")
+                .help(format!("the main family is a number 0..={MAX_MAIN_FAMILY} (1 = drives), sub-families follow after `@`")),
+        );
+    }
+    text.clone()
+}
+
+fn lower_dpv1(cx: &mut Checker, d: &raw::Dpv1) -> Option<Dpv1> {
+    Some(Dpv1 {
+        c1_read_write: d.c1_read_write,
+        c1_max_data_len: match &d.c1_max_data_len {
+            Some(l) => cx.spanned_in_range(l, 0, 240, "c1_max_data_len")?,
+            None => DEFAULT_C1_MAX_DATA_LEN,
+        },
+        c1_response_timeout: match &d.c1_response_timeout {
+            Some(t) => cx.spanned_in_range(t, 1, 0xFFFF, "c1_response_timeout")?,
+            None => DEFAULT_C1_RESPONSE_TIMEOUT,
+        },
+        status_bytes: d.status_bytes,
+    })
+}
+
+/// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
+/// them), then one Unsigned16 per mapping entry in telegram order.
+fn user_prm(
+    cx: &mut Checker,
+    dpv1: Option<&Dpv1>,
+    mappings: &[MappingSet],
+    anchor: &Spanned<Vec<Spanned<String>>>,
+) -> UserPrm {
+    let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
+    let slots = mappings
+        .iter()
+        .enumerate()
+        .flat_map(|(set, m)| (0..m.entries.len()).map(move |entry| (set, entry)));
+    let entries: Vec<PrmEntry> = slots
+        .enumerate()
+        .map(|(i, mapping)| PrmEntry {
+            offset: (constant.len() + i * usize::from(PRM_ENTRY_BYTES)).min(usize::from(u8::MAX)) as u8,
+            mapping,
+        })
+        .collect();
+    let prm = UserPrm { constant, entries };
+    if prm.len() > MAX_USER_PRM_LEN {
+        cx.push(
+            Diagnostic::error("E116", format!("the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}", prm.len()))
+                .at(anchor.span())
+                .label("for these modules")
+                .help("map fewer PZD words or DPV1 indexes"),
+        );
+    }
+    prm
+}
+
+fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis> {
+    let raw = d.get_ref();
+    let length: u8 = cx.spanned_in_range(&raw.length, 1, MAX_DIAG_DATA_LEN - i64::from(STANDARD_DIAG_BYTES), "the diagnosis length")?;
+    let bits = (i64::from(length) - 1) * 8;
+    let areas = raw
+        .areas
+        .iter()
+        .filter_map(|a| diagnosis_area(cx, a, bits))
+        .collect();
+    Some(Diagnosis { length, areas })
+}
+
+fn diagnosis_area(cx: &mut Checker, a: &raw::DiagnosisArea, bits: i64) -> Option<DiagnosisArea> {
+    let range = a.bit.get_ref();
+    if bits == 0 || range.first < 0 || range.last < range.first || range.last >= bits || range.last - range.first >= MAX_DIAG_AREA_BITS {
+        cx.push(
+            Diagnostic::error("E115", format!("bits {}..={} are not within the diagnosis", range.first, range.last))
+                .at(a.bit.span())
+                .label(format!("the device bytes hold bits 0..{bits}"))
+                .help(format!("bit 0 is the first byte after the header; an area spans at most {MAX_DIAG_AREA_BITS} bits")),
+        );
+        return None;
+    }
+    let max_value = (1i64 << (range.last - range.first + 1)) - 1;
+    Some(DiagnosisArea {
+        first_bit: range.first as u16,
+        last_bit: range.last as u16,
+        values: lower_choices(cx, &a.values, 0, max_value, Some(GSD_NAME_LEN)),
+    })
+}

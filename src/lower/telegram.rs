@@ -1,0 +1,95 @@
+//! The telegram: PKW kind, PZD words, control and status words.
+
+use super::checks::Checker;
+use crate::description::{self as raw, PkwKind};
+use crate::diag::Diagnostic;
+use crate::ir::{self, Telegram};
+use std::collections::BTreeSet;
+
+/// A general config identifier byte carries at most 16 words.
+const MAX_PZD_WORDS: i64 = 16;
+const WORD_BITS: i64 = 16;
+
+pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
+    let pzd_words = cx
+        .spanned_in_range(&t.pzd_words, 1, MAX_PZD_WORDS, "pzd_words")
+        .unwrap_or(1);
+    Telegram {
+        pkw: match t.pkw.get_ref() {
+            PkwKind::None => ir::PkwKind::None,
+            PkwKind::PkeIndPwe => ir::PkwKind::PkeIndPwe,
+            PkwKind::StationCommandAddressValue => ir::PkwKind::StationCommandAddressValue,
+        },
+        pzd_words,
+        control_word: t.control_word.as_ref().map(|w| lower_word(cx, w, "control word")),
+        status_word: t.status_word.as_ref().map(|w| lower_word(cx, w, "status word")),
+    }
+}
+
+fn lower_word(cx: &mut Checker, w: &raw::Word, what: &str) -> ir::Word {
+    let mut used = 0u32;
+    let bits = w
+        .bits
+        .iter()
+        .filter_map(|b| {
+            let field = lower_bit_field(cx, b)?;
+            let mask = mask(field.first, field.last);
+            if used & mask != 0 {
+                cx.push(
+                    Diagnostic::error("E114", format!("bits of the {what} overlap"))
+                        .at(b.bit.span())
+                        .label("already named by an earlier entry")
+                        .help("each bit belongs to one entry"),
+                );
+            }
+            used |= mask;
+            Some(field)
+        })
+        .collect();
+    ir::Word {
+        name: cx.text(&w.name, None, what),
+        bits,
+    }
+}
+
+fn mask(first: u8, last: u8) -> u32 {
+    (first..=last).fold(0, |m, b| m | 1 << b)
+}
+
+fn lower_bit_field(cx: &mut Checker, b: &raw::BitField) -> Option<ir::BitField> {
+    let range = b.bit.get_ref();
+    let span = b.bit.span();
+    let first: u8 = cx.in_range(range.first, 0, WORD_BITS - 1, span.clone(), "a bit number")?;
+    let last: u8 = cx.in_range(range.last, i64::from(first), WORD_BITS - 1, span.clone(), "the last bit")?;
+    let max_value = (1i64 << (last - first + 1)) - 1;
+    Some(ir::BitField {
+        first,
+        last,
+        name: cx.text(&b.name, None, "bit name"),
+        values: lower_choices(cx, &b.values, 0, max_value, None),
+    })
+}
+
+/// Choices with values within `min..=max`, each value once.
+pub fn lower_choices(
+    cx: &mut Checker,
+    choices: &[raw::Choice],
+    min: i64,
+    max: i64,
+    gsd_limit: Option<usize>,
+) -> Vec<ir::Choice> {
+    let mut seen = BTreeSet::new();
+    choices
+        .iter()
+        .filter_map(|c| {
+            let value: i64 = cx.spanned_in_range(&c.value, min, max, "a choice value")?;
+            if !seen.insert(value) {
+                cx.duplicate(format!("value {value}"), c.value.span());
+            }
+            Some(ir::Choice {
+                value,
+                text: cx.text(&c.text, gsd_limit, "choice text"),
+            })
+        })
+        .collect()
+}
