@@ -85,7 +85,7 @@ struct Param<'a> {
     default: u16,
     allowed: String,
     text_ref: Option<usize>,
-    offset: u8,
+    offset: usize,
 }
 
 #[derive(Serialize)]

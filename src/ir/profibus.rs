@@ -90,7 +90,7 @@ pub struct UserPrm {
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PrmEntry {
-    pub offset: u8,
+    pub offset: usize,
     /// Index into `Ir::mappings`, then into that set's entries.
     pub mapping: (usize, usize),
 }

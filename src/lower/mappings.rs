@@ -9,12 +9,14 @@ use crate::diag::Diagnostic;
 use std::ops::Range;
 use crate::ir::{Allowed, MappingEntry, MappingKind, MappingSet, Numbering, Telegram, Text};
 
+/// The mapping sets in telegram order, each with the span of its `last`
+/// (where a diagnostic about the set's size points).
 pub fn lower(
     cx: &mut Checker,
     m: &raw::Mappings,
     numbering: Option<&Numbering>,
     telegram: &Telegram,
-) -> Vec<MappingSet> {
+) -> (Vec<MappingSet>, Vec<Range<usize>>) {
     [
         (MappingKind::PzdOut, &m.pzd_out),
         (MappingKind::PzdIn, &m.pzd_in),
@@ -23,9 +25,9 @@ pub fn lower(
     .into_iter()
     .filter_map(|(kind, mapping)| {
         let mapping = mapping.as_ref()?;
-        lower_set(cx, kind, mapping, numbering, telegram)
+        Some((lower_set(cx, kind, mapping, numbering, telegram)?, mapping.last.span()))
     })
-    .collect()
+    .unzip()
 }
 
 fn lower_set(
@@ -38,11 +40,13 @@ fn lower_set(
     let (first, last) = numbers(cx, kind, m, telegram)?;
     let allowed = allowed(cx, m, numbering)?;
     let defaults = defaults(cx, m, numbering, last - first + 1)?;
-    for (default, span) in &defaults {
-        if !allowed.contains(i64::from(*default)) {
+    let mut checked = defaults.clone();
+    checked.dedup(); // one `default` for all entries is reported once
+    for (default, span) in checked {
+        if !allowed.contains(i64::from(default)) {
             cx.push(
                 Diagnostic::error("E108", format!("default {default} is not among the values {} allows", kind.key()))
-                    .at(span.clone())
+                    .at(span)
                     .label("not allowed")
                     .help("pick a default within the range or among the choices"),
             );
@@ -80,8 +84,8 @@ fn numbers(cx: &mut Checker, kind: MappingKind, m: &raw::Mapping, telegram: &Tel
     };
     let (min, max, what) = match kind {
         MappingKind::Dpv1Index => (0, 255, "a record index"),
-        _ if fixed_word => (2, i64::from(telegram.pzd_words), "a PZD word number (PZD1 is the control or status word)"),
-        _ => (1, i64::from(telegram.pzd_words), "a PZD word number (1..=telegram.pzd_words)"),
+        _ if fixed_word => (2, i64::from(telegram.pzd_words), "a PZD word number after the control or status word"),
+        _ => (1, i64::from(telegram.pzd_words), "a PZD word number"),
     };
     let first: u8 = cx.spanned_in_range(&m.first, min, max, what)?;
     let last: u8 = cx.spanned_in_range(&m.last, i64::from(first), max, what)?;

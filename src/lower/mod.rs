@@ -21,19 +21,22 @@ use toml::Spanned;
 pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
     let mut cx = Checker::new(desc.profibus.is_some());
     if desc.profibus.is_none() {
+        let first_line = 0..text.find('\n').unwrap_or(text.len());
         cx.push(
             Diagnostic::error("E110", "the description targets no bus")
+                .at(first_line)
+                .label("in this description")
                 .help("add a [profibus] section; docs/description.md shows one"),
         );
     }
     let numbering = desc.function_codes.as_ref().map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device);
     let telegram = telegram::lower(&mut cx, &desc.telegram);
-    let mappings = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
+    let (mappings, mapping_spans) = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
     let profibus = desc
         .profibus
         .as_ref()
-        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings));
+        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &mapping_spans));
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);

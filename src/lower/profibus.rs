@@ -11,6 +11,7 @@ use crate::ir::profibus::{
 };
 use crate::ir::{MappingSet, PkwKind, Telegram};
 use std::collections::BTreeSet;
+use std::ops::Range;
 use toml::Spanned;
 
 const DEFAULT_GSD_REVISION: u8 = 5;
@@ -31,6 +32,7 @@ pub fn lower(
     p: &Spanned<raw::Profibus>,
     telegram: &Telegram,
     mappings: &[MappingSet],
+    mapping_spans: &[Range<usize>],
 ) -> Option<Profibus> {
     let p = p.get_ref();
     let gsd_revision = match &p.gsd_revision {
@@ -38,7 +40,7 @@ pub fn lower(
         None => DEFAULT_GSD_REVISION,
     };
     let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
-    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, &p.ppo_types);
+    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, mapping_spans);
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
         cx.push(
@@ -223,7 +225,7 @@ fn user_prm(
     cx: &mut Checker,
     dpv1: Option<&Dpv1>,
     mappings: &[MappingSet],
-    anchor: &Spanned<Vec<Spanned<String>>>,
+    mapping_spans: &[Range<usize>],
 ) -> UserPrm {
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
     let slots = mappings
@@ -233,16 +235,20 @@ fn user_prm(
     let entries: Vec<PrmEntry> = slots
         .enumerate()
         .map(|(i, mapping)| PrmEntry {
-            offset: (constant.len() + i * usize::from(PRM_ENTRY_BYTES)).min(usize::from(u8::MAX)) as u8,
+            offset: constant.len() + i * usize::from(PRM_ENTRY_BYTES),
             mapping,
         })
         .collect();
     let prm = UserPrm { constant, entries };
-    if prm.len() > MAX_USER_PRM_LEN {
+    let overflowing = prm
+        .entries
+        .iter()
+        .find(|e| e.offset + usize::from(PRM_ENTRY_BYTES) > MAX_USER_PRM_LEN);
+    if let Some(entry) = overflowing {
         cx.push(
             Diagnostic::error("E116", format!("the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}", prm.len()))
-                .at(anchor.span())
-                .label("for these modules")
+                .at(mapping_spans[entry.mapping.0].clone())
+                .label("this mapping runs past the limit")
                 .help("map fewer PZD words or DPV1 indexes"),
         );
     }

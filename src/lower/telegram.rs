@@ -11,9 +11,11 @@ const MAX_PZD_WORDS: i64 = 16;
 const WORD_BITS: i64 = 16;
 
 pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
+    // An out-of-range count is reported once; the nearest valid one keeps
+    // the checks that depend on it from piling up more errors.
     let pzd_words = cx
         .spanned_in_range(&t.pzd_words, 1, MAX_PZD_WORDS, "pzd_words")
-        .unwrap_or(1);
+        .unwrap_or_else(|| (*t.pzd_words.get_ref()).clamp(1, MAX_PZD_WORDS as u8));
     Telegram {
         pkw: match t.pkw.get_ref() {
             PkwKind::None => ir::PkwKind::None,

@@ -1,0 +1,48 @@
+//! Every description under tests/fixtures/invalid/ is rejected with the code
+//! its `# expect:` line names, and its rendered diagnostics are snapshotted.
+
+use gsdc::Source;
+use std::path::{Path, PathBuf};
+
+fn fixtures() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/invalid");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+}
+
+fn expected_code(text: &str) -> &str {
+    text.lines()
+        .find_map(|l| l.strip_prefix("# expect: "))
+        .expect("each fixture has an `# expect: CODE` line")
+        .trim()
+}
+
+#[test]
+fn there_are_enough_invalid_fixtures() {
+    assert!(fixtures().len() >= 15);
+}
+
+#[test]
+fn each_invalid_description_is_rejected_with_its_code() {
+    for path in fixtures() {
+        let name = path.file_name().unwrap().to_str().unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let (ir, diagnostics) = gsdc::load(name, &text);
+        assert!(ir.is_none(), "{name} was accepted");
+        let code = expected_code(&text);
+        let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
+        assert!(codes.contains(&code), "{name}: expected {code}, got {codes:?}");
+        for d in diagnostics.iter() {
+            assert!(d.span.is_some(), "{name}: {} has no place in the file", d.code);
+            assert!(d.help.is_some(), "{name}: {} has no help", d.code);
+        }
+        let source = Source { name: &format!("tests/fixtures/invalid/{name}"), text: &text };
+        let rendered: String = diagnostics.iter().map(|d| source.render(d)).collect();
+        insta::assert_snapshot!(name.trim_end_matches(".toml"), rendered);
+    }
+}
