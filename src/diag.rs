@@ -171,19 +171,21 @@ impl Source<'_> {
             diagnostic.code,
             diagnostic.message
         );
-        match &diagnostic.span {
+        let pad = match &diagnostic.span {
             Some(span) => self.render_snippet(&mut out, span.clone(), diagnostic),
             None => {
-                let _ = writeln!(out, "  --> {}", self.name);
+                let _ = writeln!(out, " --> {}", self.name);
+                String::new()
             }
-        }
+        };
         if let Some(help) = &diagnostic.help {
-            let _ = writeln!(out, "  = help: {help}");
+            let _ = writeln!(out, "{pad} = help: {help}");
         }
         out
     }
 
-    fn render_snippet(&self, out: &mut String, span: Range<usize>, diagnostic: &Diagnostic) {
+    /// Writes location, source line and caret; returns the gutter's padding.
+    fn render_snippet(&self, out: &mut String, span: Range<usize>, diagnostic: &Diagnostic) -> String {
         let (line, column) = line_col(self.text, span.start);
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
@@ -213,6 +215,7 @@ impl Source<'_> {
             " ".repeat(column - 1),
             "^".repeat(width)
         );
+        pad
     }
 
     /// One JSON object per diagnostic, on one line.

@@ -4,7 +4,7 @@
 
 use super::{display_name, report, Status};
 use gsdc::output::{write_if_changed, Outcome};
-use gsdc::Artifact;
+use gsdc::{Artifact, Diagnostic, Diagnostics};
 use std::path::{Path, PathBuf};
 
 pub fn run(descriptions: &[PathBuf], out: &Path) -> Status {
@@ -29,9 +29,18 @@ fn compile_one(path: &Path) -> Result<Vec<Artifact>, Status> {
         eprintln!("error: cannot read {name}: {e}");
         Status::UsageOrIo
     })?;
-    let Ok(text) = String::from_utf8(bytes) else {
-        eprintln!("error[E000]: {name} is not UTF-8 text\n  = help: save the description as UTF-8");
-        return Err(Status::InputErrors);
+    let text = match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => {
+            let at = e.utf8_error().valid_up_to();
+            let text = String::from_utf8_lossy(e.as_bytes());
+            let diagnostic = Diagnostic::error("E000", "the description is not UTF-8 text")
+                .at(at..at + 1)
+                .label("not UTF-8")
+                .help("save the description as UTF-8");
+            report(&name, &text, &Diagnostics(vec![diagnostic]));
+            return Err(Status::InputErrors);
+        }
     };
     let source_name = path
         .file_name()

@@ -20,7 +20,11 @@ pub struct Description {
     pub telegram: Telegram,
     #[serde(default)]
     pub mappings: Mappings,
+    /// Single drive parameters a master may set at start-up.
+    #[serde(default)]
+    pub settings: Vec<Setting>,
     pub profibus: Option<Spanned<Profibus>>,
+    pub profinet: Option<Spanned<Profinet>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -126,6 +130,18 @@ pub struct Mapping {
     pub choices: Option<Spanned<Vec<Choice>>>,
     /// The drive parameter that holds the mapping of `first`; the next ones follow.
     pub parameter: Option<Spanned<Address>>,
+}
+
+/// One drive parameter with its meaning, like MV810's P43.01 (0 standard
+/// telegram 1, 1 user-defined telegram).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Setting {
+    pub name: Spanned<Text>,
+    pub parameter: Option<Spanned<Address>>,
+    pub default: Spanned<Address>,
+    pub range: Option<Spanned<[Spanned<Address>; 2]>>,
+    pub choices: Option<Spanned<Vec<Choice>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -238,4 +254,50 @@ pub struct Diagnosis {
 pub struct DiagnosisArea {
     pub bit: Spanned<BitRange>,
     pub values: Vec<Choice>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profinet {
+    pub vendor_id: Spanned<IdentNumber>,
+    pub device_id: Spanned<IdentNumber>,
+    /// Vendor as the GSDML file name spells it; the device's vendor by default.
+    pub file_vendor: Option<Spanned<String>>,
+    /// GSDML schema version, "2.32" by default.
+    pub gsdml_version: Option<Spanned<String>>,
+    /// The file's date: part of its name and of its version. Never the clock.
+    pub date: Spanned<toml::value::Datetime>,
+    /// DNS_CompatibleName: the default name of station.
+    pub dns_name: Spanned<String>,
+    /// Ethernet ports of the interface.
+    pub ports: Spanned<u8>,
+    /// Units of 31.25 us (32 = 1 ms).
+    pub min_device_interval: Spanned<u16>,
+    /// PZD words of the selectable modules.
+    pub pzd_lengths: Spanned<Vec<Spanned<u8>>>,
+    /// Which of the selectable modules carry the PKW channel.
+    pub module_pkw: Spanned<ModulePkw>,
+    /// Also offer PROFIdrive standard telegram 1 (STW1, NSOLL_A / ZSW1, NIST_A).
+    #[serde(default)]
+    pub standard_telegram_1: bool,
+    /// Record indexes of the parameter records.
+    #[serde(default)]
+    pub records: RecordIndexes,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ModulePkw {
+    With,
+    Without,
+    Both,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RecordIndexes {
+    pub pzd_out: Option<Spanned<u16>>,
+    pub pzd_in: Option<Spanned<u16>>,
+    pub dpv1_index: Option<Spanned<u16>>,
+    pub settings: Option<Spanned<u16>>,
 }

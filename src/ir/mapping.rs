@@ -11,6 +11,8 @@ pub enum MappingKind {
     PzdIn,
     /// DPV1 record indexes read and written acyclically.
     Dpv1Index,
+    /// A single drive parameter set at start-up.
+    Setting,
 }
 
 impl MappingKind {
@@ -19,6 +21,7 @@ impl MappingKind {
             MappingKind::PzdOut => "pzd_out",
             MappingKind::PzdIn => "pzd_in",
             MappingKind::Dpv1Index => "dpv1_index",
+            MappingKind::Setting => "settings",
         }
     }
 }

@@ -7,11 +7,13 @@
 pub mod mapping;
 pub mod numbering;
 pub mod profibus;
+pub mod profinet;
 pub mod telegram;
 
 pub use mapping::{Allowed, MappingEntry, MappingKind, MappingSet};
 pub use numbering::Numbering;
 pub use profibus::Profibus;
+pub use profinet::Profinet;
 pub use telegram::{BitField, Choice, Layout, PkwKind, Telegram, Word};
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -23,9 +25,10 @@ pub struct Ir {
     pub device: Device,
     pub numbering: Option<Numbering>,
     pub telegram: Telegram,
-    /// In telegram order: PZD out, PZD in, then the DPV1 indexes.
+    /// In telegram order: PZD out, PZD in, the DPV1 indexes, then the settings.
     pub mappings: Vec<MappingSet>,
     pub profibus: Option<Profibus>,
+    pub profinet: Option<Profinet>,
 }
 
 /// A text in English and, optionally, Chinese.

@@ -7,6 +7,7 @@ use super::telegram::lower_choices;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use std::ops::Range;
+use toml::Spanned;
 use crate::ir::{Allowed, MappingEntry, MappingKind, MappingSet, Numbering, Telegram, Text};
 
 /// The mapping sets in telegram order, each with the span of its `last`
@@ -38,8 +39,57 @@ fn lower_set(
     telegram: &Telegram,
 ) -> Option<MappingSet> {
     let (first, last) = numbers(cx, kind, m, telegram)?;
-    let allowed = allowed(cx, m, numbering)?;
     let defaults = defaults(cx, m, numbering, last - first + 1)?;
+    let parts = Parts {
+        name: &m.name,
+        range: &m.range,
+        choices: &m.choices,
+        parameter: &m.parameter,
+    };
+    build_set(cx, kind, &parts, (first, last), defaults, numbering)
+}
+
+/// Settings: each a set of one entry, numbered from 1 in the order given;
+/// with the span of each setting's name.
+pub fn lower_settings(
+    cx: &mut Checker,
+    settings: &[raw::Setting],
+    numbering: Option<&Numbering>,
+) -> (Vec<MappingSet>, Vec<Range<usize>>) {
+    settings
+        .iter()
+        .zip(1u8..)
+        .filter_map(|(s, number)| {
+            let default = (resolve_address(cx, &s.default, numbering)?, s.default.span());
+            let parts = Parts {
+                name: &s.name,
+                range: &s.range,
+                choices: &s.choices,
+                parameter: &s.parameter,
+            };
+            let set = build_set(cx, MappingKind::Setting, &parts, (number, number), vec![default], numbering)?;
+            Some((set, s.name.span()))
+        })
+        .unzip()
+}
+
+/// What mapping sets and settings have in common.
+struct Parts<'a> {
+    name: &'a Spanned<raw::Text>,
+    range: &'a Option<Spanned<[Spanned<raw::Address>; 2]>>,
+    choices: &'a Option<Spanned<Vec<raw::Choice>>>,
+    parameter: &'a Option<Spanned<raw::Address>>,
+}
+
+fn build_set(
+    cx: &mut Checker,
+    kind: MappingKind,
+    parts: &Parts,
+    (first, last): (u8, u8),
+    defaults: Vec<(u16, Range<usize>)>,
+    numbering: Option<&Numbering>,
+) -> Option<MappingSet> {
+    let allowed = allowed(cx, parts, numbering)?;
     let mut checked = defaults.clone();
     checked.dedup(); // one `default` for all entries is reported once
     for (default, span) in checked {
@@ -52,12 +102,12 @@ fn lower_set(
             );
         }
     }
-    let parameter = match &m.parameter {
+    let parameter = match parts.parameter {
         Some(p) => Some(parameter_base(cx, p, numbering, last - first)?),
         None => None,
     };
-    let name = cx.text(&m.name, None, "mapping name");
-    check_rendered_name(cx, m, &name, last);
+    let name = cx.text(parts.name, None, "mapping name");
+    check_rendered_name(cx, parts.name, &name, last);
     let entries = (first..=last)
         .zip(defaults)
         .map(|(number, (default, _))| MappingEntry {
@@ -80,10 +130,10 @@ fn numbers(cx: &mut Checker, kind: MappingKind, m: &raw::Mapping, telegram: &Tel
     let fixed_word = match kind {
         MappingKind::PzdOut => telegram.control_word.is_some(),
         MappingKind::PzdIn => telegram.status_word.is_some(),
-        MappingKind::Dpv1Index => false,
+        MappingKind::Dpv1Index | MappingKind::Setting => false,
     };
     let (min, max, what) = match kind {
-        MappingKind::Dpv1Index => (0, 255, "a record index"),
+        MappingKind::Dpv1Index | MappingKind::Setting => (0, 255, "a record index"),
         _ if fixed_word => (2, i64::from(telegram.pzd_words), "a PZD word number after the control or status word"),
         _ => (1, i64::from(telegram.pzd_words), "a PZD word number"),
     };
@@ -134,8 +184,8 @@ fn defaults(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>, c
     }
 }
 
-fn allowed(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>) -> Option<Allowed> {
-    match (&m.range, &m.choices) {
+fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option<Allowed> {
+    match (m.range, m.choices) {
         (Some(_), Some(choices)) => {
             cx.push(
                 Diagnostic::error("E119", "a mapping has both `range` and `choices`")
@@ -174,17 +224,17 @@ fn allowed(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>) ->
 }
 
 /// The first entry's drive parameter; the others follow it, so the last must fit too.
-fn parameter_base(cx: &mut Checker, p: &toml::Spanned<raw::Address>, numbering: Option<&Numbering>, extra: u8) -> Option<u16> {
+fn parameter_base(cx: &mut Checker, p: &Spanned<raw::Address>, numbering: Option<&Numbering>, extra: u8) -> Option<u16> {
     let base = resolve_address(cx, p, numbering)?;
     cx.in_range(i64::from(base), 0, 0xFFFF - i64::from(extra), p.span(), "the first mapping parameter")
 }
 
 /// The longest name is the last entry's: check that one for the GSD.
-fn check_rendered_name(cx: &mut Checker, m: &raw::Mapping, name: &Text, last: u8) {
+fn check_rendered_name(cx: &mut Checker, raw_name: &Spanned<raw::Text>, name: &Text, last: u8) {
     if name.en.trim().is_empty() {
         return; // already reported as empty
     }
-    let span = m.name.get_ref().en_span(&m.name.span());
+    let span = raw_name.get_ref().en_span(&raw_name.span());
     cx.check_gsd_text(&render(name, last).en, span, GSD_NAME_LEN, "mapping name");
 }
 

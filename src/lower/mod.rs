@@ -7,6 +7,7 @@
 mod checks;
 mod mappings;
 mod profibus;
+mod profinet;
 mod telegram;
 
 use crate::description::{self as raw, Address, Description};
@@ -20,23 +21,30 @@ use toml::Spanned;
 /// generated headers; `text` is the description's text, for the fingerprint.
 pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
     let mut cx = Checker::new(desc.profibus.is_some());
-    if desc.profibus.is_none() {
+    if desc.profibus.is_none() && desc.profinet.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
         cx.push(
             Diagnostic::error("E110", "the description targets no bus")
                 .at(first_line)
                 .label("in this description")
-                .help("add a [profibus] section; docs/description.md shows one"),
+                .help("add a [profibus] or [profinet] section; docs/description.md shows both"),
         );
     }
     let numbering = desc.function_codes.as_ref().map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device);
     let telegram = telegram::lower(&mut cx, &desc.telegram);
-    let (mappings, mapping_spans) = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
+    let (mut mappings, mut mapping_spans) = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
+    let (settings, setting_spans) = mappings::lower_settings(&mut cx, &desc.settings, numbering.as_ref());
+    mappings.extend(settings);
+    mapping_spans.extend(setting_spans);
     let profibus = desc
         .profibus
         .as_ref()
         .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &mapping_spans));
+    let profinet = desc
+        .profinet
+        .as_ref()
+        .map(|p| profinet::lower(&mut cx, p, &device, &telegram, &mappings));
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);
@@ -49,6 +57,7 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         telegram,
         mappings,
         profibus: profibus.flatten(),
+        profinet: profinet.flatten(),
     };
     (Some(ir), diagnostics)
 }

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The whole test suite: the command the README gives a new user, and the one
+# .ci/run calls. It installs the system packages the tests need when they are
+# missing (libxml2 and libclang for the PI schema validation in the tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+missing=()
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq "${missing[@]}"
+fi
+
+cargo test "$@"

@@ -1,0 +1,90 @@
+//! The command line as a user runs it: exit codes, what is written, and
+//! that nothing is written when a description has an error.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn gsdc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gsdc-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|entries| entries.map(|e| e.unwrap().file_name().into_string().unwrap()).collect())
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+#[test]
+fn build_writes_the_gsd_and_exits_0() {
+    let out = scratch("build");
+    let output = gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(files_in(&out), ["MD810DP.GSD"]);
+    let written = std::fs::read(out.join("MD810DP.GSD")).unwrap();
+    assert!(written.starts_with(b";====="));
+    // The placeholder ident number is a warning with its place in the file.
+    assert!(stderr(&output).contains("warning[W101]"));
+    assert!(stderr(&output).contains("descriptions/md810dp.toml:"));
+
+    let again = gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]);
+    assert!(String::from_utf8_lossy(&again.stdout).contains("unchanged"));
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn an_invalid_description_exits_1_and_writes_nothing() {
+    let out = scratch("invalid");
+    let output = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "tests/fixtures/invalid/unknown_ppo.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stderr(&output).contains("error[E104]"));
+    assert!(stderr(&output).contains("tests/fixtures/invalid/unknown_ppo.toml:26:22"));
+    assert!(files_in(&out).is_empty(), "the valid description was not written either");
+}
+
+#[test]
+fn a_missing_description_exits_2() {
+    let output = gsdc(&["build", "descriptions/no-such-card.toml", "--out", "/tmp"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).contains("cannot read descriptions/no-such-card.toml"));
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    assert_eq!(gsdc(&["build"]).status.code(), Some(2));
+    assert_eq!(gsdc(&["frobnicate"]).status.code(), Some(2));
+}
+
+#[test]
+fn a_description_that_is_not_utf8_exits_1() {
+    let dir = scratch("latin1");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("card.toml");
+    std::fs::write(&path, b"[device]\nvendor = \"M\xfcller\"\n").unwrap();
+    let output = gsdc(&["build", path.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stderr(&output).contains("error[E000]: the description is not UTF-8 text"));
+    assert!(stderr(&output).contains("card.toml:2:12"), "{}", stderr(&output));
+    std::fs::remove_dir_all(dir).unwrap();
+}
