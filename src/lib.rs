@@ -5,6 +5,7 @@
 //! The core is pure: it takes text and returns text and diagnostics; reading
 //! and writing files happen in the CLI and in [`build`] for build scripts.
 
+pub mod build;
 pub mod diag;
 pub mod emit;
 pub mod gsd;

@@ -29,6 +29,15 @@ pub fn write_if_changed(dir: &Path, file_name: &str, contents: &[u8]) -> io::Res
     result.map(|()| Outcome::Written)
 }
 
+/// Whether `dir/file_name` holds exactly `contents`; a missing file does not.
+pub fn is_up_to_date(dir: &Path, file_name: &str, contents: &[u8]) -> io::Result<bool> {
+    match fs::read(dir.join(file_name)) {
+        Ok(existing) => Ok(existing == contents),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(false),
+        Err(e) => Err(e),
+    }
+}
+
 fn temp_path(dir: &Path, file_name: &str) -> PathBuf {
     dir.join(format!(".{file_name}.gsdc-{}.tmp", std::process::id()))
 }

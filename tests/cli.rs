@@ -88,3 +88,40 @@ fn a_description_that_is_not_utf8_exits_1() {
     assert!(stderr(&output).contains("card.toml:2:12"), "{}", stderr(&output));
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
+    let dir = scratch("check");
+    let out = dir.join("dist");
+    let description = dir.join("md810dp.toml");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy("descriptions/md810dp.toml", &description).unwrap();
+    let (description, out_arg) = (description.to_str().unwrap(), out.to_str().unwrap());
+
+    let missing = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(missing.status.code(), Some(1), "nothing built yet: out of step");
+    assert!(!out.exists(), "--check creates nothing");
+
+    assert_eq!(gsdc(&["build", description, "--out", out_arg]).status.code(), Some(0));
+    let before: Vec<(String, Vec<u8>)> = files_in(&out)
+        .into_iter()
+        .map(|f| (f.clone(), std::fs::read(out.join(&f)).unwrap()))
+        .collect();
+    let in_step = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(in_step.status.code(), Some(0), "{}", stderr(&in_step));
+    assert!(in_step.stdout.is_empty());
+
+    let text = std::fs::read_to_string(description).unwrap();
+    std::fs::write(description, text.replace("min_slave_interval = 1", "min_slave_interval = 2")).unwrap();
+    let changed = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(changed.status.code(), Some(1));
+    let diff = String::from_utf8_lossy(&changed.stdout);
+    assert!(diff.contains("-Min_Slave_Intervall         = 1"), "{diff}");
+    assert!(diff.contains("+Min_Slave_Intervall         = 2"), "{diff}");
+    let after: Vec<(String, Vec<u8>)> = files_in(&out)
+        .into_iter()
+        .map(|f| (f.clone(), std::fs::read(out.join(&f)).unwrap()))
+        .collect();
+    assert_eq!(before, after, "--check wrote nothing");
+    std::fs::remove_dir_all(dir).unwrap();
+}

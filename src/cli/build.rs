@@ -3,11 +3,11 @@
 //! output directory as it was.
 
 use super::{display_name, report, Status};
-use gsdc::output::{write_if_changed, Outcome};
+use gsdc::output::{is_up_to_date, write_if_changed, Outcome};
 use gsdc::{Artifact, Diagnostic, Diagnostics};
 use std::path::{Path, PathBuf};
 
-pub fn run(descriptions: &[PathBuf], out: &Path) -> Status {
+pub fn run(descriptions: &[PathBuf], out: &Path, check: bool) -> Status {
     let mut status = Status::Ok;
     let mut artifacts = Vec::new();
     for path in descriptions {
@@ -20,7 +20,45 @@ pub fn run(descriptions: &[PathBuf], out: &Path) -> Status {
         eprintln!("nothing written: fix the errors above");
         return status;
     }
-    write_all(&artifacts, out)
+    if check {
+        check_all(&artifacts, out)
+    } else {
+        write_all(&artifacts, out)
+    }
+}
+
+/// `--check`: compares, writes nothing, prints a unified diff per differing file.
+fn check_all(artifacts: &[Artifact], out: &Path) -> Status {
+    let mut status = Status::Ok;
+    for artifact in artifacts {
+        let path = out.join(&artifact.file_name);
+        match is_up_to_date(out, &artifact.file_name, &artifact.contents) {
+            Ok(true) => {}
+            Ok(false) => {
+                let existing = std::fs::read(&path).unwrap_or_default();
+                print!("{}", unified_diff(&path, &existing, &artifact.contents));
+                status = status.max(Status::InputErrors);
+            }
+            Err(e) => {
+                eprintln!("error: cannot read {}: {e}", path.display());
+                status = Status::UsageOrIo;
+            }
+        }
+    }
+    if status == Status::InputErrors {
+        eprintln!("out of step: run `gsdc build` without --check to update {}", out.display());
+    }
+    status
+}
+
+fn unified_diff(path: &Path, existing: &[u8], generated: &[u8]) -> String {
+    let (old, new) = (String::from_utf8_lossy(existing), String::from_utf8_lossy(generated));
+    let name = path.display().to_string();
+    similar::TextDiff::from_lines(old.as_ref(), new.as_ref())
+        .unified_diff()
+        .context_radius(3)
+        .header(&format!("{name} (on disk)"), &format!("{name} (from the description)"))
+        .to_string()
 }
 
 fn compile_one(path: &Path) -> Result<Vec<Artifact>, Status> {

@@ -22,7 +22,7 @@ pub struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Generate the device files of each description, each checked before it is written.
-    #[command(after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist")]
+    #[command(after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist --check   # in CI: are the shipped files in step?")]
     Build {
         /// Description files (TOML).
         #[arg(required = true, value_name = "DESCRIPTION")]
@@ -30,6 +30,9 @@ enum Command {
         /// Directory to write into; created if missing.
         #[arg(long, short, default_value = ".", value_name = "DIR")]
         out: PathBuf,
+        /// Write nothing: exit 1 with a diff if a file in DIR differs from what the descriptions give.
+        #[arg(long)]
+        check: bool,
     },
     /// Check GSD and GSDML files against gsdc's rules.
     #[command(after_help = "Examples:\n  gsdc check MD810DP.GSD\n  gsdc check GSDML-V2.32-MEGMEET-MV800-20230830.xml")]
@@ -56,7 +59,11 @@ impl Status {
 
 pub fn run(cli: Cli) -> Status {
     match cli.command {
-        Command::Build { descriptions, out } => build::run(&descriptions, &out),
+        Command::Build {
+            descriptions,
+            out,
+            check,
+        } => build::run(&descriptions, &out, check),
         Command::Check { files } => check::run(&files),
     }
 }
