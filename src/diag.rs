@@ -287,14 +287,14 @@ mod tests {
     fn render_puts_caret_under_span() {
         let text = "[device]\nvendor = 42\n";
         let start = text.find("42").unwrap();
-        let d = Diagnostic::error("E100", "wrong type")
+        let d = Diagnostic::error("E003", "wrong type")
             .at(start..start + 2)
             .label("expected a string")
             .help("write vendor = \"Name\"");
         let rendered = Source { name: "x.toml", text }.render(&d);
         assert_eq!(
             rendered,
-            "error[E100]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
+            "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
         );
     }
 

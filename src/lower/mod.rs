@@ -44,7 +44,7 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
     let profinet = desc
         .profinet
         .as_ref()
-        .map(|p| profinet::lower(&mut cx, p, &device, &telegram, &mappings));
+        .map(|p| profinet::lower(&mut cx, p, &desc.device, &telegram, &mappings));
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);

@@ -5,7 +5,7 @@ use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{Date, Module, ModuleKind, ParameterRecord, Profinet};
-use crate::ir::{Device, Layout, MappingKind, MappingSet, PkwKind, Telegram};
+use crate::ir::{Layout, MappingKind, MappingSet, PkwKind, Telegram};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
@@ -20,15 +20,15 @@ const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
 pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profinet>,
-    device: &Device,
+    device: &raw::Device,
     telegram: &Telegram,
     mappings: &[MappingSet],
 ) -> Option<Profinet> {
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
-    let file_vendor = file_name_part(cx, p.file_vendor.as_ref(), &device.vendor, "file_vendor");
-    let family = file_name_part(cx, None, &device.family, "family");
+    let file_vendor = file_name_part(cx, p.file_vendor.as_ref().unwrap_or(&device.vendor), "profinet.file_vendor");
+    let family = file_name_part(cx, &device.family, "device.family");
     placeholder_warning(cx, &p.vendor_id, "vendor ID");
     placeholder_warning(cx, &p.device_id, "device ID");
     Some(Profinet {
@@ -84,15 +84,15 @@ fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<Date> {
 
 /// Vendor and family as they go into the file name: letters, digits, `_`
 /// and `.`, since `-` separates the name's parts.
-fn file_name_part(cx: &mut Checker, given: Option<&Spanned<String>>, fallback: &str, what: &str) -> String {
-    let text = given.map_or(fallback, |g| g.get_ref().as_str());
+fn file_name_part(cx: &mut Checker, part: &Spanned<String>, what: &str) -> String {
+    let text = part.get_ref();
     let valid = !text.is_empty() && text.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
     if !valid {
         cx.push(
             Diagnostic::error("E133", format!("`{text}` cannot be part of a GSDML file name"))
-                .at_opt(given.map(Spanned::span))
+                .at(part.span())
                 .label("not letters and digits")
-                .help(format!("GSDML-V<version>-<Vendor>-<Family>-<date>.xml takes letters, digits and `_`; set profinet.{what}")),
+                .help(format!("GSDML-V<version>-<Vendor>-<Family>-<date>.xml takes letters, digits and `_`; set {what}")),
         );
     }
     text.to_string()
@@ -201,7 +201,7 @@ fn pzd_lengths(cx: &mut Checker, lengths: &Spanned<Vec<Spanned<u8>>>, max: u8) -
         .get_ref()
         .iter()
         .filter_map(|n| {
-            let words: u8 = cx.spanned_in_range(n, 1, i64::from(max), "a PZD length (1..=telegram.pzd_words)")?;
+            let words: u8 = cx.spanned_in_range(n, 1, i64::from(max), "a PZD length")?;
             if !seen.insert(words) {
                 cx.duplicate(format!("PZD length {words}"), n.span());
                 return None;
