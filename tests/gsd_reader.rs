@@ -495,6 +495,9 @@ fn w209_string_length() {
         gsd::check_strict(&text).has_errors(),
         "strict mode refuses it"
     );
+    let module = format!("Module = \"{}\" 0xF3,0xF1", "P".repeat(33));
+    let text = replaced("Module = \"PPO1\" 0xF3,0xF1", &module);
+    assert_rule(&text, "W209", &module[9..44]);
 }
 
 #[test]

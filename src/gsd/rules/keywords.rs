@@ -39,7 +39,41 @@ pub(super) fn check(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     for scope in scopes(file) {
         duplicates(scope, out);
     }
+    block_texts(file, out);
     mandatory(file, out);
+}
+
+/// The texts that blocks carry outside settings: module and parameter
+/// names, value texts and diagnosis area texts, all limited to 32.
+fn block_texts(file: &GsdFile, out: &mut Vec<Diagnostic>) {
+    const LIMIT: usize = 32;
+    let modules = file.modules.iter().map(|m| ("module name", &m.name));
+    let params = file
+        .ext_user_prm_data
+        .iter()
+        .map(|d| ("parameter name", &d.name));
+    let texts = file.prm_texts.iter().flat_map(|t| &t.texts);
+    let type_areas = file.unit_diag_types.iter().flat_map(|t| &t.areas);
+    let areas = file
+        .unit_diag_areas
+        .iter()
+        .chain(type_areas)
+        .flat_map(|a| &a.values);
+    let values = texts.map(|t| ("PrmText text", &t.text));
+    let diag = areas.map(|v| ("diagnosis text", &v.text));
+    for (what, text) in modules.chain(params).chain(values).chain(diag) {
+        let len = text.value.chars().count();
+        if len > LIMIT {
+            out.push(too_long(what, len, LIMIT, text.span.clone()));
+        }
+    }
+}
+
+fn too_long(what: &str, len: usize, max: usize, span: std::ops::Range<usize>) -> Diagnostic {
+    Diagnostic::warning("W209", format!("{what} is {len} characters long"))
+        .at(span)
+        .label(format!("at most {max} characters"))
+        .help("configuration tools may cut the text; gsdc's own output keeps the limit (check_strict)")
 }
 
 fn nonstandard(setting: &Setting) -> Diagnostic {
@@ -193,12 +227,12 @@ fn check_length(setting: &Setting, keyword: &Keyword, text: &str, out: &mut Vec<
     };
     let len = text.chars().count();
     if len > max {
-        out.push(
-            Diagnostic::warning("W209", format!("`{}` is {len} characters long", keyword.name))
-                .at(setting.value_span.clone())
-                .label(format!("at most {max} characters"))
-                .help("configuration tools may cut the text; gsdc's own output keeps the limit (check_strict)"),
-        );
+        out.push(too_long(
+            &format!("`{}`", keyword.name),
+            len,
+            max,
+            setting.value_span.clone(),
+        ));
     }
 }
 
