@@ -19,7 +19,7 @@ mod reader;
 mod rules;
 mod schema;
 
-pub use config::{CfgError, IoLengths};
+pub use config::{io_lengths, CfgError, IoLengths};
 pub use model::{
     Allowed, Arg, Baud, Block, ExtUserPrmData, GsdFile, IndexedText, Module, PrmDataType, PrmText,
     Setting, Slot, Spanned, UnitDiagArea, UnitDiagType, Value,
