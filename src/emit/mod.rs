@@ -32,35 +32,14 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
     Ok(artifacts)
 }
 
+/// gsdc's own GSD must meet the strict rules: the vendor-file rules with
+/// warnings as errors, plus 7-bit ASCII, CRLF and lines of at most 80 characters.
 fn verify_gsd(file_name: &str, text: &str) -> Vec<Diagnostic> {
-    let format = gsd_format_problems(text);
-    let rules = crate::gsd::check(text).into_iter().filter(Diagnostic::is_error);
-    format
+    crate::gsd::check_strict(text)
         .into_iter()
-        .chain(rules)
+        .filter(Diagnostic::is_error)
         .map(|d| generated_file_breaks(file_name, d))
         .collect()
-}
-
-/// What gsdc promises of every GSD it writes, beyond what it accepts on
-/// read: 7-bit ASCII, CRLF line ends, lines of at most 80 characters.
-fn gsd_format_problems(text: &str) -> Vec<Diagnostic> {
-    let mut problems = Vec::new();
-    if let Some(at) = text.find(|c: char| !c.is_ascii() || (c.is_ascii_control() && c != '\r' && c != '\n')) {
-        problems.push(Diagnostic::error("E901", "character outside 7-bit printable ASCII").at(at..at + 1));
-    }
-    let mut offset = 0;
-    for line in text.split_inclusive('\n') {
-        let content = line.trim_end_matches('\n');
-        if !line.ends_with("\r\n") && !line.is_empty() {
-            problems.push(Diagnostic::error("E902", "line does not end in CRLF").at(offset..offset + line.len()));
-        }
-        if content.trim_end_matches('\r').chars().count() > gsd::MAX_LINE {
-            problems.push(Diagnostic::error("E903", format!("line longer than {} characters", gsd::MAX_LINE)).at(offset..offset + content.len()));
-        }
-        offset += line.len();
-    }
-    problems
 }
 
 /// A rule broken by gsdc's own output: an internal error, reported with the
