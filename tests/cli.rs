@@ -125,3 +125,20 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     assert_eq!(before, after, "--check wrote nothing");
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
+    let out = scratch("check-gsd");
+    assert_eq!(gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]).status.code(), Some(0));
+    let clean = gsdc(&["check", out.join("MD810DP.GSD").to_str().unwrap()]);
+    assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
+    assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
+
+    // A compact station with three modules (the corpus lists it as a known finding).
+    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_compact.gsd"]);
+    assert_eq!(broken.status.code(), Some(1));
+    assert!(stderr(&broken).contains("error[E217]"), "{}", stderr(&broken));
+
+    assert_eq!(gsdc(&["check", "no-such-file.gsd"]).status.code(), Some(2));
+    std::fs::remove_dir_all(out).unwrap();
+}

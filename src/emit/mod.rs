@@ -53,3 +53,36 @@ fn generated_file_breaks(file_name: &str, d: Diagnostic) -> Diagnostic {
         ..d
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn md810_gsd() -> String {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        gsd::emit(&ir, ir.profibus.as_ref().unwrap())
+    }
+
+    #[test]
+    fn the_generated_gsd_passes_verification() {
+        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd()), []);
+    }
+
+    #[test]
+    fn a_gsd_breaking_a_rule_is_refused_naming_the_rule() {
+        // PPO5 declared as 16 PZD words no longer fits Max_Input_Len = 32.
+        let broken = md810_gsd().replace("0xF3,0xFB", "0xF3,0xFF");
+        let problems = verify_gsd("MD810DP.GSD", &broken);
+        assert!(!problems.is_empty());
+        assert!(problems.iter().all(|d| d.code == "E900"));
+        assert!(problems.iter().any(|d| d.message.contains("E216")), "{problems:?}");
+    }
+
+    #[test]
+    fn a_gsd_with_a_long_line_is_refused() {
+        let broken = md810_gsd().replace("Vendor_Name                 = \"Inovance\"", &format!("Vendor_Name = \"Inovance\" ;{}", "x".repeat(80)));
+        let problems = verify_gsd("MD810DP.GSD", &broken);
+        assert!(problems.iter().any(|d| d.message.contains("E240")), "{problems:?}");
+    }
+}
