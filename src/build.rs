@@ -1,15 +1,15 @@
 //! The build-script API: generate a description's files from a firmware
 //! crate's `build.rs`.
 //!
+//! In `build.rs`:
+//!
 //! ```no_run
-//! // build.rs
-//! fn main() {
-//!     let out_dir = std::env::var("OUT_DIR").unwrap();
-//!     gsdc::build::generate_rust("descriptions/md810dp.toml", &out_dir)
-//!         .unwrap_or_else(|e| panic!("{e}"));
-//! }
-//! // src/lib.rs: include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
+//! let out_dir = std::env::var("OUT_DIR").unwrap();
+//! gsdc::build::generate_rust("descriptions/md810dp.toml", &out_dir)
+//!     .unwrap_or_else(|e| panic!("{e}"));
 //! ```
+//!
+//! and in the firmware: `include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));`
 //!
 //! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
 //! again when the description changes, and writes only files whose content
@@ -34,20 +34,28 @@ impl fmt::Display for BuildError {
 impl std::error::Error for BuildError {}
 
 /// Writes every file of the description into `out_dir`; returns their paths.
-pub fn generate(description: impl AsRef<Path>, out_dir: impl AsRef<Path>) -> Result<Vec<PathBuf>, BuildError> {
+pub fn generate(
+    description: impl AsRef<Path>,
+    out_dir: impl AsRef<Path>,
+) -> Result<Vec<PathBuf>, BuildError> {
     let artifacts = compile_file(description.as_ref())?;
     write(&artifacts, out_dir.as_ref())
 }
 
 /// Writes only the firmware layout (`<stem>_layout.rs`) into `out_dir`; returns its path.
-pub fn generate_rust(description: impl AsRef<Path>, out_dir: impl AsRef<Path>) -> Result<PathBuf, BuildError> {
+pub fn generate_rust(
+    description: impl AsRef<Path>,
+    out_dir: impl AsRef<Path>,
+) -> Result<PathBuf, BuildError> {
     let artifacts = compile_file(description.as_ref())?;
     let layout: Vec<Artifact> = artifacts
         .into_iter()
         .filter(|a| a.file_name.ends_with("_layout.rs"))
         .collect();
     if layout.is_empty() {
-        return Err(BuildError("the description gives no firmware layout".into()));
+        return Err(BuildError(
+            "the description gives no firmware layout".into(),
+        ));
     }
     let mut paths = write(&layout, out_dir.as_ref())?;
     Ok(paths.remove(0))
@@ -56,14 +64,22 @@ pub fn generate_rust(description: impl AsRef<Path>, out_dir: impl AsRef<Path>) -
 fn compile_file(path: &Path) -> Result<Vec<Artifact>, BuildError> {
     println!("cargo:rerun-if-changed={}", path.display());
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| BuildError(format!("cannot read {name}: {e}")))?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| BuildError(format!("cannot read {name}: {e}")))?;
     let source_name = path
         .file_name()
         .map_or_else(|| name.clone(), |f| f.to_string_lossy().into_owned());
-    let source = Source { name: &name, text: &text };
+    let source = Source {
+        name: &name,
+        text: &text,
+    };
     let (ir, diagnostics) = crate::load(&source_name, &text);
     for warning in diagnostics.iter().filter(|d| !d.is_error()) {
-        println!("cargo:warning={}: {}", source.location(warning), warning.message);
+        println!(
+            "cargo:warning={}: {}",
+            source.location(warning),
+            warning.message
+        );
     }
     let ir = ir.ok_or_else(|| rendered(&source, &diagnostics))?;
     crate::compile(&ir).map_err(|d| rendered(&source, &d))
@@ -74,13 +90,19 @@ fn rendered(source: &Source, diagnostics: &Diagnostics) -> BuildError {
 }
 
 fn write(artifacts: &[Artifact], out_dir: &Path) -> Result<Vec<PathBuf>, BuildError> {
-    std::fs::create_dir_all(out_dir).map_err(|e| BuildError(format!("cannot create {}: {e}", out_dir.display())))?;
+    std::fs::create_dir_all(out_dir)
+        .map_err(|e| BuildError(format!("cannot create {}: {e}", out_dir.display())))?;
     artifacts
         .iter()
         .map(|a| {
             write_if_changed(out_dir, &a.file_name, &a.contents)
                 .map(|_| out_dir.join(&a.file_name))
-                .map_err(|e| BuildError(format!("cannot write {}: {e}", out_dir.join(&a.file_name).display())))
+                .map_err(|e| {
+                    BuildError(format!(
+                        "cannot write {}: {e}",
+                        out_dir.join(&a.file_name).display()
+                    ))
+                })
         })
         .collect()
 }

@@ -185,7 +185,12 @@ impl Source<'_> {
     }
 
     /// Writes location, source line and caret; returns the gutter's padding.
-    fn render_snippet(&self, out: &mut String, span: Range<usize>, diagnostic: &Diagnostic) -> String {
+    fn render_snippet(
+        &self,
+        out: &mut String,
+        span: Range<usize>,
+        diagnostic: &Diagnostic,
+    ) -> String {
         let (line, column) = line_col(self.text, span.start);
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
@@ -291,7 +296,11 @@ mod tests {
             .at(start..start + 2)
             .label("expected a string")
             .help("write vendor = \"Name\"");
-        let rendered = Source { name: "x.toml", text }.render(&d);
+        let rendered = Source {
+            name: "x.toml",
+            text,
+        }
+        .render(&d);
         assert_eq!(
             rendered,
             "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
@@ -302,7 +311,11 @@ mod tests {
     fn json_escapes_quotes_and_controls() {
         assert_eq!(json_string("a\"b\\c\u{1}"), "\"a\\\"b\\\\c\\u0001\"");
         let d = Diagnostic::warning("W1", "m");
-        let json = Source { name: "f", text: "" }.to_json(&d);
+        let json = Source {
+            name: "f",
+            text: "",
+        }
+        .to_json(&d);
         assert_eq!(
             json,
             "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W1\",\"message\":\"m\",\"label\":null,\"help\":null}"

@@ -34,7 +34,11 @@ fn classify(message: &str) -> (&'static str, &'static str, String) {
             "missing key",
             "add the key; docs/description.md shows a complete example".into(),
         )
-    } else if message.starts_with("invalid type") || message.starts_with("invalid value") || message.starts_with("unknown variant") || message.starts_with("invalid length") {
+    } else if message.starts_with("invalid type")
+        || message.starts_with("invalid value")
+        || message.starts_with("unknown variant")
+        || message.starts_with("invalid length")
+    {
         (
             "E003",
             "wrong type or value",

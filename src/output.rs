@@ -62,9 +62,18 @@ mod tests {
     #[test]
     fn writes_then_leaves_identical_content_alone() {
         let dir = scratch("same");
-        assert_eq!(write_if_changed(&dir, "A.GSD", b"one").unwrap(), Outcome::Written);
-        assert_eq!(write_if_changed(&dir, "A.GSD", b"one").unwrap(), Outcome::Unchanged);
-        assert_eq!(write_if_changed(&dir, "A.GSD", b"two").unwrap(), Outcome::Written);
+        assert_eq!(
+            write_if_changed(&dir, "A.GSD", b"one").unwrap(),
+            Outcome::Written
+        );
+        assert_eq!(
+            write_if_changed(&dir, "A.GSD", b"one").unwrap(),
+            Outcome::Unchanged
+        );
+        assert_eq!(
+            write_if_changed(&dir, "A.GSD", b"two").unwrap(),
+            Outcome::Written
+        );
         assert_eq!(fs::read(dir.join("A.GSD")).unwrap(), b"two");
         let leftovers: Vec<_> = fs::read_dir(&dir).unwrap().collect();
         assert_eq!(leftovers.len(), 1, "no temporary file is left behind");

@@ -20,7 +20,11 @@ fn scratch(name: &str) -> PathBuf {
 
 fn files_in(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
-        .map(|entries| entries.map(|e| e.unwrap().file_name().into_string().unwrap()).collect())
+        .map(|entries| {
+            entries
+                .map(|e| e.unwrap().file_name().into_string().unwrap())
+                .collect()
+        })
         .unwrap_or_default();
     names.sort();
     names
@@ -33,7 +37,12 @@ fn stderr(output: &Output) -> String {
 #[test]
 fn build_writes_the_gsd_and_exits_0() {
     let out = scratch("build");
-    let output = gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]);
+    let output = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     assert_eq!(files_in(&out), ["MD810DP.GSD"]);
     let written = std::fs::read(out.join("MD810DP.GSD")).unwrap();
@@ -42,7 +51,12 @@ fn build_writes_the_gsd_and_exits_0() {
     assert!(stderr(&output).contains("warning[W101]"));
     assert!(stderr(&output).contains("descriptions/md810dp.toml:"));
 
-    let again = gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]);
+    let again = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(String::from_utf8_lossy(&again.stdout).contains("unchanged"));
     std::fs::remove_dir_all(out).unwrap();
 }
@@ -60,7 +74,10 @@ fn an_invalid_description_exits_1_and_writes_nothing() {
     assert_eq!(output.status.code(), Some(1));
     assert!(stderr(&output).contains("error[E104]"));
     assert!(stderr(&output).contains("tests/fixtures/invalid/unknown_ppo.toml:26:22"));
-    assert!(files_in(&out).is_empty(), "the valid description was not written either");
+    assert!(
+        files_in(&out).is_empty(),
+        "the valid description was not written either"
+    );
 }
 
 #[test]
@@ -82,10 +99,19 @@ fn a_description_that_is_not_utf8_exits_1() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("card.toml");
     std::fs::write(&path, b"[device]\nvendor = \"M\xfcller\"\n").unwrap();
-    let output = gsdc(&["build", path.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+    let output = gsdc(&[
+        "build",
+        path.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert_eq!(output.status.code(), Some(1));
     assert!(stderr(&output).contains("error[E000]: the description is not UTF-8 text"));
-    assert!(stderr(&output).contains("card.toml:2:12"), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("card.toml:2:12"),
+        "{}",
+        stderr(&output)
+    );
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -99,10 +125,19 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     let (description, out_arg) = (description.to_str().unwrap(), out.to_str().unwrap());
 
     let missing = gsdc(&["build", description, "--out", out_arg, "--check"]);
-    assert_eq!(missing.status.code(), Some(1), "nothing built yet: out of step");
+    assert_eq!(
+        missing.status.code(),
+        Some(1),
+        "nothing built yet: out of step"
+    );
     assert!(!out.exists(), "--check creates nothing");
 
-    assert_eq!(gsdc(&["build", description, "--out", out_arg]).status.code(), Some(0));
+    assert_eq!(
+        gsdc(&["build", description, "--out", out_arg])
+            .status
+            .code(),
+        Some(0)
+    );
     let before: Vec<(String, Vec<u8>)> = files_in(&out)
         .into_iter()
         .map(|f| (f.clone(), std::fs::read(out.join(&f)).unwrap()))
@@ -112,7 +147,11 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     assert!(in_step.stdout.is_empty());
 
     let text = std::fs::read_to_string(description).unwrap();
-    std::fs::write(description, text.replace("min_slave_interval = 1", "min_slave_interval = 2")).unwrap();
+    std::fs::write(
+        description,
+        text.replace("min_slave_interval = 1", "min_slave_interval = 2"),
+    )
+    .unwrap();
     let changed = gsdc(&["build", description, "--out", out_arg, "--check"]);
     assert_eq!(changed.status.code(), Some(1));
     let diff = String::from_utf8_lossy(&changed.stdout);
@@ -129,7 +168,17 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
 #[test]
 fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     let out = scratch("check-gsd");
-    assert_eq!(gsdc(&["build", "descriptions/md810dp.toml", "--out", out.to_str().unwrap()]).status.code(), Some(0));
+    assert_eq!(
+        gsdc(&[
+            "build",
+            "descriptions/md810dp.toml",
+            "--out",
+            out.to_str().unwrap()
+        ])
+        .status
+        .code(),
+        Some(0)
+    );
     let clean = gsdc(&["check", out.join("MD810DP.GSD").to_str().unwrap()]);
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
     assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
@@ -137,7 +186,11 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     // A compact station with three modules (the corpus lists it as a known finding).
     let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_compact.gsd"]);
     assert_eq!(broken.status.code(), Some(1));
-    assert!(stderr(&broken).contains("error[E217]"), "{}", stderr(&broken));
+    assert!(
+        stderr(&broken).contains("error[E217]"),
+        "{}",
+        stderr(&broken)
+    );
 
     assert_eq!(gsdc(&["check", "no-such-file.gsd"]).status.code(), Some(2));
     std::fs::remove_dir_all(out).unwrap();

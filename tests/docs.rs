@@ -4,7 +4,10 @@
 #[test]
 fn the_guides_example_compiles() {
     let guide = include_str!("../docs/description.md");
-    let start = guide.find("```toml\n").expect("the guide has a TOML example") + "```toml\n".len();
+    let start = guide
+        .find("```toml\n")
+        .expect("the guide has a TOML example")
+        + "```toml\n".len();
     let end = start + guide[start..].find("```").unwrap();
     let example = &guide[start..end];
     let (ir, diagnostics) = gsdc::load("example.toml", example);

@@ -10,7 +10,9 @@ use std::path::Path;
 const DESCRIPTIONS: [&str; 2] = ["md810dp.toml", "9kdp1.toml"];
 
 fn load(name: &str) -> Ir {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions").join(name);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("descriptions")
+        .join(name);
     let text = std::fs::read_to_string(&path).unwrap();
     let (ir, diagnostics) = gsdc::load(name, &text);
     assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
@@ -85,28 +87,49 @@ fn gsd_parser_reads_what_the_ir_says() {
             .collect();
         assert_eq!(modules, expected, "{name}");
 
-        let largest = profibus.modules.iter().map(|m| m.layout.bytes()).max().unwrap();
+        let largest = profibus
+            .modules
+            .iter()
+            .map(|m| m.layout.bytes())
+            .max()
+            .unwrap();
         assert_eq!(u16::from(parsed.max_input_length), largest, "{name}");
         assert_eq!(u16::from(parsed.max_output_length), largest, "{name}");
 
         let prm = &parsed.user_prm_data;
-        assert_eq!(prm.data_ref.len(), profibus.user_prm.entries.len(), "{name}");
+        assert_eq!(
+            prm.data_ref.len(),
+            profibus.user_prm.entries.len(),
+            "{name}"
+        );
         for ((offset, definition), entry) in prm.data_ref.iter().zip(&profibus.user_prm.entries) {
             let (set, index) = entry.mapping;
             let mapping = &ir.mappings[set].entries[index];
             assert_eq!(*offset, entry.offset, "{name}");
             assert_eq!(definition.name, mapping.name.en, "{name}");
             assert_eq!(definition.data_type, UserPrmDataType::Unsigned16, "{name}");
-            assert_eq!(definition.default_value, i64::from(mapping.default), "{name}");
+            assert_eq!(
+                definition.default_value,
+                i64::from(mapping.default),
+                "{name}"
+            );
             let Allowed::Range { min, max } = ir.mappings[set].allowed else {
                 panic!("{name}: the shipped descriptions map addresses");
             };
-            assert_eq!(definition.constraint, PrmValueConstraint::MinMax(min.into(), max.into()), "{name}");
+            assert_eq!(
+                definition.constraint,
+                PrmValueConstraint::MinMax(min.into(), max.into()),
+                "{name}"
+            );
         }
 
         let telegram = PrmBuilder::new(prm).into_bytes();
         assert_eq!(telegram.len(), profibus.user_prm.len(), "{name}");
-        assert_eq!(telegram[..profibus.user_prm.constant.len()], profibus.user_prm.constant[..], "{name}");
+        assert_eq!(
+            telegram[..profibus.user_prm.constant.len()],
+            profibus.user_prm.constant[..],
+            "{name}"
+        );
     }
 }
 

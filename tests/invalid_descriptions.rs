@@ -36,12 +36,22 @@ fn each_invalid_description_is_rejected_with_its_code() {
         assert!(ir.is_none(), "{name} was accepted");
         let code = expected_code(&text);
         let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
-        assert!(codes.contains(&code), "{name}: expected {code}, got {codes:?}");
+        assert!(
+            codes.contains(&code),
+            "{name}: expected {code}, got {codes:?}"
+        );
         for d in diagnostics.iter() {
-            assert!(d.span.is_some(), "{name}: {} has no place in the file", d.code);
+            assert!(
+                d.span.is_some(),
+                "{name}: {} has no place in the file",
+                d.code
+            );
             assert!(d.help.is_some(), "{name}: {} has no help", d.code);
         }
-        let source = Source { name: &format!("tests/fixtures/invalid/{name}"), text: &text };
+        let source = Source {
+            name: &format!("tests/fixtures/invalid/{name}"),
+            text: &text,
+        };
         let rendered: String = diagnostics.iter().map(|d| source.render(d)).collect();
         insta::assert_snapshot!(name.trim_end_matches(".toml"), rendered);
     }

@@ -49,7 +49,12 @@ fn every_description_code_has_a_fixture() {
         .unwrap()
         .filter_map(|e| {
             let text = std::fs::read_to_string(e.unwrap().path()).ok()?;
-            Some(text.lines().find_map(|l| l.strip_prefix("# expect: "))?.trim().to_string())
+            Some(
+                text.lines()
+                    .find_map(|l| l.strip_prefix("# expect: "))?
+                    .trim()
+                    .to_string(),
+            )
         })
         .collect();
     // E000 needs bytes that are not UTF-8 (tests/cli.rs); W1xx are warnings.

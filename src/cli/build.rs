@@ -46,18 +46,27 @@ fn check_all(artifacts: &[Artifact], out: &Path) -> Status {
         }
     }
     if status == Status::InputErrors {
-        eprintln!("out of step: run `gsdc build` without --check to update {}", out.display());
+        eprintln!(
+            "out of step: run `gsdc build` without --check to update {}",
+            out.display()
+        );
     }
     status
 }
 
 fn unified_diff(path: &Path, existing: &[u8], generated: &[u8]) -> String {
-    let (old, new) = (String::from_utf8_lossy(existing), String::from_utf8_lossy(generated));
+    let (old, new) = (
+        String::from_utf8_lossy(existing),
+        String::from_utf8_lossy(generated),
+    );
     let name = path.display().to_string();
     similar::TextDiff::from_lines(old.as_ref(), new.as_ref())
         .unified_diff()
         .context_radius(3)
-        .header(&format!("{name} (on disk)"), &format!("{name} (from the description)"))
+        .header(
+            &format!("{name} (on disk)"),
+            &format!("{name} (from the description)"),
+        )
         .to_string()
 }
 

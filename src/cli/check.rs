@@ -5,7 +5,11 @@ use gsdc::Diagnostics;
 use std::path::Path;
 
 pub fn run(files: &[std::path::PathBuf]) -> Status {
-    files.iter().map(|f| check_one(f)).max().unwrap_or(Status::Ok)
+    files
+        .iter()
+        .map(|f| check_one(f))
+        .max()
+        .unwrap_or(Status::Ok)
 }
 
 fn check_one(path: &Path) -> Status {

@@ -22,7 +22,9 @@ pub struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Generate the device files of each description, each checked before it is written.
-    #[command(after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist --check   # in CI: are the shipped files in step?")]
+    #[command(
+        after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist --check   # in CI: are the shipped files in step?"
+    )]
     Build {
         /// Description files (TOML).
         #[arg(required = true, value_name = "DESCRIPTION")]
@@ -35,7 +37,9 @@ enum Command {
         check: bool,
     },
     /// Check GSD and GSDML files against gsdc's rules.
-    #[command(after_help = "Examples:\n  gsdc check MD810DP.GSD\n  gsdc check GSDML-V2.32-MEGMEET-MV800-20230830.xml")]
+    #[command(
+        after_help = "Examples:\n  gsdc check MD810DP.GSD\n  gsdc check GSDML-V2.32-MEGMEET-MV800-20230830.xml"
+    )]
     Check {
         /// GSD (.gsd, .gse, ...) or GSDML (.xml) files.
         #[arg(required = true, value_name = "FILE")]

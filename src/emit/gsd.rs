@@ -109,7 +109,12 @@ pub fn emit(ir: &Ir, profibus: &Profibus) -> String {
 }
 
 fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
-    let max_len = p.modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
+    let max_len = p
+        .modules
+        .iter()
+        .map(|m| m.layout.bytes())
+        .max()
+        .unwrap_or(0);
     let d = &ir.device;
     Context {
         file_name: &p.file_name,
@@ -140,11 +145,16 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         max_data_len: 2 * max_len,
         slave_family: &p.slave_family,
         max_diag_data_len: STANDARD_DIAG_BYTES + p.diagnosis.as_ref().map_or(0, |d| d.length),
-        diag_areas: p.diagnosis.iter().flat_map(|d| &d.areas).map(|a| DiagArea {
-            first: a.first_bit,
-            last: a.last_bit,
-            values: values(&a.values),
-        }).collect(),
+        diag_areas: p
+            .diagnosis
+            .iter()
+            .flat_map(|d| &d.areas)
+            .map(|a| DiagArea {
+                first: a.first_bit,
+                last: a.last_bit,
+                values: values(&a.values),
+            })
+            .collect(),
         dpv1: p.dpv1.map(|d| Dpv1 {
             c1_read_write: d.c1_read_write.into(),
             c1_max_data_len: d.c1_max_data_len,
@@ -222,7 +232,11 @@ fn allowed(allowed: &Allowed) -> String {
             let contiguous = values.windows(2).all(|w| w[1] == w[0] + 1);
             match (contiguous, values.first(), values.last()) {
                 (true, Some(first), Some(last)) if first != last => format!("{first}-{last}"),
-                _ => values.iter().map(i64::to_string).collect::<Vec<_>>().join(","),
+                _ => values
+                    .iter()
+                    .map(i64::to_string)
+                    .collect::<Vec<_>>()
+                    .join(","),
             }
         }
     }
@@ -298,7 +312,9 @@ mod tests {
         let pieces = wrap(&line);
         assert!(pieces.len() > 1);
         assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
-        assert!(pieces[..pieces.len() - 1].iter().all(|p| p.ends_with(" \\")));
+        assert!(pieces[..pieces.len() - 1]
+            .iter()
+            .all(|p| p.ends_with(" \\")));
         let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
         assert_eq!(joined, line);
     }
@@ -308,7 +324,9 @@ mod tests {
         let line = format!("Ext_User_Prm_Data_Const(0) = {}", hex_list(&[0xAB; 30]));
         let pieces = wrap(&line);
         assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
-        assert!(pieces[..pieces.len() - 1].iter().all(|p| p.ends_with(",\\")));
+        assert!(pieces[..pieces.len() - 1]
+            .iter()
+            .all(|p| p.ends_with(",\\")));
         let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
         assert_eq!(joined, line);
     }
@@ -317,11 +335,20 @@ mod tests {
     fn allowed_values_are_a_range_when_contiguous() {
         let choice = |value| Choice {
             value,
-            text: crate::ir::Text { en: String::new(), zh: None },
+            text: crate::ir::Text {
+                en: String::new(),
+                zh: None,
+            },
         };
         assert_eq!(allowed(&Allowed::Range { min: 0, max: 65535 }), "0-65535");
-        assert_eq!(allowed(&Allowed::Choices(vec![choice(2), choice(0), choice(1)])), "0-2");
-        assert_eq!(allowed(&Allowed::Choices(vec![choice(0), choice(5)])), "0,5");
+        assert_eq!(
+            allowed(&Allowed::Choices(vec![choice(2), choice(0), choice(1)])),
+            "0-2"
+        );
+        assert_eq!(
+            allowed(&Allowed::Choices(vec![choice(0), choice(5)])),
+            "0,5"
+        );
         assert_eq!(allowed(&Allowed::Choices(vec![choice(7)])), "7");
     }
 }

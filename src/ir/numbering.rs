@@ -35,14 +35,20 @@ impl Numbering {
         let (group, index) = rest
             .split_once(self.separator.as_str())
             .ok_or_else(|| format!("`{name}` has no `{}` separator", self.separator))?;
-        let group = parse_digits(group, self.group_radix)
-            .ok_or_else(|| format!("`{group}` is not a group number in radix {}", self.group_radix))?;
+        let group = parse_digits(group, self.group_radix).ok_or_else(|| {
+            format!(
+                "`{group}` is not a group number in radix {}",
+                self.group_radix
+            )
+        })?;
         let index = parse_digits(index, 10)
             .filter(|i| *i <= 0xFF)
             .ok_or_else(|| format!("`{index}` is not an index from 0 to 255"))?;
         let high = u32::from(*base) + group;
         if high > 0xFF {
-            return Err(format!("group `{prefix}{group}` is beyond the address space"));
+            return Err(format!(
+                "group `{prefix}{group}` is beyond the address space"
+            ));
         }
         Ok((high << 8 | index) as u16)
     }

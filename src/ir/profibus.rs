@@ -54,7 +54,10 @@ impl PpoModule {
     /// PPO1 `0xF3,0xF1`: the PKW as 4 consistent words in and out, then the
     /// PZD as one consistent block in and out.
     pub fn config_bytes(&self) -> Vec<u8> {
-        let pkw = self.layout.pkw.then(|| identifier(super::telegram::PKW_WORDS));
+        let pkw = self
+            .layout
+            .pkw
+            .then(|| identifier(super::telegram::PKW_WORDS));
         pkw.into_iter()
             .chain(std::iter::once(identifier(self.layout.pzd_words)))
             .collect()
@@ -131,7 +134,12 @@ mod tests {
 
     fn config(ppo: u8, ppo5: u8) -> Vec<u8> {
         let layout = ppo_layout(ppo, ppo5).unwrap();
-        PpoModule { ppo, name: String::new(), layout }.config_bytes()
+        PpoModule {
+            ppo,
+            name: String::new(),
+            layout,
+        }
+        .config_bytes()
     }
 
     #[test]
@@ -147,7 +155,10 @@ mod tests {
     #[test]
     fn ppo_lengths_in_bytes() {
         let bytes = |ppo| ppo_layout(ppo, 12).unwrap().bytes();
-        assert_eq!([bytes(1), bytes(2), bytes(3), bytes(4), bytes(5)], [12, 20, 4, 12, 32]);
+        assert_eq!(
+            [bytes(1), bytes(2), bytes(3), bytes(4), bytes(5)],
+            [12, 20, 4, 12, 32]
+        );
         assert!(ppo_layout(6, 12).is_none());
     }
 }

@@ -68,7 +68,9 @@ impl Module {
     pub fn ident_for(kind: ModuleKind, layout: Layout) -> u32 {
         match kind {
             ModuleKind::StandardTelegram1 => 0x10,
-            ModuleKind::Pzd => (if layout.pkw { 0x200 } else { 0x100 }) + u32::from(layout.pzd_words),
+            ModuleKind::Pzd => {
+                (if layout.pkw { 0x200 } else { 0x100 }) + u32::from(layout.pzd_words)
+            }
         }
     }
 }

@@ -73,10 +73,13 @@ impl Checker {
         let len = s.chars().count();
         if len > limit {
             self.push(
-                Diagnostic::error("E103", format!("{what} is {len} characters long; GSD allows {limit}"))
-                    .at(span)
-                    .label(format!("{} characters too long", len - limit))
-                    .help(format!("shorten it to at most {limit} characters")),
+                Diagnostic::error(
+                    "E103",
+                    format!("{what} is {len} characters long; GSD allows {limit}"),
+                )
+                .at(span)
+                .label(format!("{} characters too long", len - limit))
+                .help(format!("shorten it to at most {limit} characters")),
             );
         }
     }
@@ -121,7 +124,13 @@ impl Checker {
     }
 
     /// A spanned number within `min..=max`.
-    pub fn spanned_in_range<T, V>(&mut self, v: &Spanned<V>, min: i64, max: i64, what: &str) -> Option<T>
+    pub fn spanned_in_range<T, V>(
+        &mut self,
+        v: &Spanned<V>,
+        min: i64,
+        max: i64,
+        what: &str,
+    ) -> Option<T>
     where
         T: TryFrom<i64>,
         V: Copy + Into<i64>,

@@ -6,9 +6,9 @@ use super::resolve_address;
 use super::telegram::lower_choices;
 use crate::description as raw;
 use crate::diag::Diagnostic;
+use crate::ir::{Allowed, MappingEntry, MappingKind, MappingSet, Numbering, Telegram, Text};
 use std::ops::Range;
 use toml::Spanned;
-use crate::ir::{Allowed, MappingEntry, MappingKind, MappingSet, Numbering, Telegram, Text};
 
 /// The mapping sets in telegram order, each with the span of its `last`
 /// (where a diagnostic about the set's size points).
@@ -26,7 +26,10 @@ pub fn lower(
     .into_iter()
     .filter_map(|(kind, mapping)| {
         let mapping = mapping.as_ref()?;
-        Some((lower_set(cx, kind, mapping, numbering, telegram)?, mapping.last.span()))
+        Some((
+            lower_set(cx, kind, mapping, numbering, telegram)?,
+            mapping.last.span(),
+        ))
     })
     .unzip()
 }
@@ -60,14 +63,24 @@ pub fn lower_settings(
         .iter()
         .zip(1u8..)
         .filter_map(|(s, number)| {
-            let default = (resolve_address(cx, &s.default, numbering)?, s.default.span());
+            let default = (
+                resolve_address(cx, &s.default, numbering)?,
+                s.default.span(),
+            );
             let parts = Parts {
                 name: &s.name,
                 range: &s.range,
                 choices: &s.choices,
                 parameter: &s.parameter,
             };
-            let set = build_set(cx, MappingKind::Setting, &parts, (number, number), vec![default], numbering)?;
+            let set = build_set(
+                cx,
+                MappingKind::Setting,
+                &parts,
+                (number, number),
+                vec![default],
+                numbering,
+            )?;
             Some((set, s.name.span()))
         })
         .unzip()
@@ -95,10 +108,16 @@ fn build_set(
     for (default, span) in checked {
         if !allowed.contains(i64::from(default)) {
             cx.push(
-                Diagnostic::error("E108", format!("default {default} is not among the values {} allows", kind.key()))
-                    .at(span)
-                    .label("not allowed")
-                    .help("pick a default within the range or among the choices"),
+                Diagnostic::error(
+                    "E108",
+                    format!(
+                        "default {default} is not among the values {} allows",
+                        kind.key()
+                    ),
+                )
+                .at(span)
+                .label("not allowed")
+                .help("pick a default within the range or among the choices"),
             );
         }
     }
@@ -126,7 +145,12 @@ fn build_set(
 
 /// `first..=last`: PZD words within the telegram (after PZD1 when that is
 /// the control or status word), record indexes within 0..=255.
-fn numbers(cx: &mut Checker, kind: MappingKind, m: &raw::Mapping, telegram: &Telegram) -> Option<(u8, u8)> {
+fn numbers(
+    cx: &mut Checker,
+    kind: MappingKind,
+    m: &raw::Mapping,
+    telegram: &Telegram,
+) -> Option<(u8, u8)> {
     let fixed_word = match kind {
         MappingKind::PzdOut => telegram.control_word.is_some(),
         MappingKind::PzdIn => telegram.status_word.is_some(),
@@ -134,7 +158,11 @@ fn numbers(cx: &mut Checker, kind: MappingKind, m: &raw::Mapping, telegram: &Tel
     };
     let (min, max, what) = match kind {
         MappingKind::Dpv1Index | MappingKind::Setting => (0, 255, "a record index"),
-        _ if fixed_word => (2, i64::from(telegram.pzd_words), "a PZD word number after the control or status word"),
+        _ if fixed_word => (
+            2,
+            i64::from(telegram.pzd_words),
+            "a PZD word number after the control or status word",
+        ),
         _ => (1, i64::from(telegram.pzd_words), "a PZD word number"),
     };
     let first: u8 = cx.spanned_in_range(&m.first, min, max, what)?;
@@ -143,7 +171,12 @@ fn numbers(cx: &mut Checker, kind: MappingKind, m: &raw::Mapping, telegram: &Tel
 }
 
 /// One default per entry, with its span: `default` for all, or `defaults` one by one.
-fn defaults(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>, count: u8) -> Option<Vec<(u16, Range<usize>)>> {
+fn defaults(
+    cx: &mut Checker,
+    m: &raw::Mapping,
+    numbering: Option<&Numbering>,
+    count: u8,
+) -> Option<Vec<(u16, Range<usize>)>> {
     match (&m.default, &m.defaults) {
         (Some(default), None) => {
             let value = resolve_address(cx, default, numbering)?;
@@ -156,10 +189,13 @@ fn defaults(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>, c
             .collect(),
         (None, Some(list)) => {
             cx.push(
-                Diagnostic::error("E122", format!("{} defaults for {count} entries", list.get_ref().len()))
-                    .at(list.span())
-                    .label(format!("expected {count} values"))
-                    .help("give one default per entry, first to last"),
+                Diagnostic::error(
+                    "E122",
+                    format!("{} defaults for {count} entries", list.get_ref().len()),
+                )
+                .at(list.span())
+                .label(format!("expected {count} values"))
+                .help("give one default per entry, first to last"),
             );
             None
         }
@@ -177,7 +213,9 @@ fn defaults(cx: &mut Checker, m: &raw::Mapping, numbering: Option<&Numbering>, c
                 Diagnostic::error("E123", "a mapping has neither `default` nor `defaults`")
                     .at(m.name.span())
                     .label("in this mapping")
-                    .help("add `default = ...` for every entry, or `defaults = [...]` one per entry"),
+                    .help(
+                        "add `default = ...` for every entry, or `defaults = [...]` one per entry",
+                    ),
             );
             None
         }
@@ -219,14 +257,28 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
             0xFFFF,
             Some(GSD_NAME_LEN),
         ))),
-        (None, None) => Some(Allowed::Range { min: 0, max: 0xFFFF }),
+        (None, None) => Some(Allowed::Range {
+            min: 0,
+            max: 0xFFFF,
+        }),
     }
 }
 
 /// The first entry's drive parameter; the others follow it, so the last must fit too.
-fn parameter_base(cx: &mut Checker, p: &Spanned<raw::Address>, numbering: Option<&Numbering>, extra: u8) -> Option<u16> {
+fn parameter_base(
+    cx: &mut Checker,
+    p: &Spanned<raw::Address>,
+    numbering: Option<&Numbering>,
+    extra: u8,
+) -> Option<u16> {
     let base = resolve_address(cx, p, numbering)?;
-    cx.in_range(i64::from(base), 0, 0xFFFF - i64::from(extra), p.span(), "the first mapping parameter")
+    cx.in_range(
+        i64::from(base),
+        0,
+        0xFFFF - i64::from(extra),
+        p.span(),
+        "the first mapping parameter",
+    )
 }
 
 /// The longest name is the last entry's: check that one for the GSD.

@@ -30,11 +30,16 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
                 .help("add a [profibus] or [profinet] section; docs/description.md shows both"),
         );
     }
-    let numbering = desc.function_codes.as_ref().map(|f| lower_numbering(&mut cx, f));
+    let numbering = desc
+        .function_codes
+        .as_ref()
+        .map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device);
     let telegram = telegram::lower(&mut cx, &desc.telegram);
-    let (mut mappings, mut mapping_spans) = mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
-    let (settings, setting_spans) = mappings::lower_settings(&mut cx, &desc.settings, numbering.as_ref());
+    let (mut mappings, mut mapping_spans) =
+        mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
+    let (settings, setting_spans) =
+        mappings::lower_settings(&mut cx, &desc.settings, numbering.as_ref());
     mappings.extend(settings);
     mapping_spans.extend(setting_spans);
     let profibus = desc
@@ -68,8 +73,16 @@ fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, checks::GSD_NAME_LEN, "model"),
         revision: cx.gsd_string(&d.revision, checks::GSD_NAME_LEN, "revision"),
-        hardware_release: cx.gsd_string(&d.hardware_release, checks::GSD_NAME_LEN, "hardware_release"),
-        software_release: cx.gsd_string(&d.software_release, checks::GSD_NAME_LEN, "software_release"),
+        hardware_release: cx.gsd_string(
+            &d.hardware_release,
+            checks::GSD_NAME_LEN,
+            "hardware_release",
+        ),
+        software_release: cx.gsd_string(
+            &d.software_release,
+            checks::GSD_NAME_LEN,
+            "software_release",
+        ),
         order_number: d
             .order_number
             .as_ref()
@@ -88,7 +101,9 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
             Diagnostic::error("E101", "group_radix must be 10 or 16")
                 .at(f.group_radix.span())
                 .label("not 10 or 16")
-                .help("16 for groups written as one hex digit (F0..FF), 10 for decimal groups (P43)"),
+                .help(
+                    "16 for groups written as one hex digit (F0..FF), 10 for decimal groups (P43)",
+                ),
         );
     }
     if f.separator.get_ref().is_empty() {
@@ -104,7 +119,11 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
         .iter()
         .map(|(p, base)| (p.get_ref().clone(), *base.get_ref()))
         .collect();
-    Numbering::new(f.separator.get_ref().clone(), *f.group_radix.get_ref(), prefixes)
+    Numbering::new(
+        f.separator.get_ref().clone(),
+        *f.group_radix.get_ref(),
+        prefixes,
+    )
 }
 
 /// An address written as a number or a function-code name, as u16.
@@ -129,14 +148,17 @@ fn resolve_address(
                 Ok(value) => Some(value),
                 Err(why) => {
                     cx.push(
-                        Diagnostic::error("E106", format!("`{name}` is not a function-code name: {why}"))
-                            .at(address.span())
-                            .label("not a function code")
-                            .help(format!(
-                                "write it as <prefix><group>{}<index>, e.g. {}, or as a number",
-                                numbering.separator,
-                                numbering.format(0xF00C).unwrap_or_else(|| "61452".into())
-                            )),
+                        Diagnostic::error(
+                            "E106",
+                            format!("`{name}` is not a function-code name: {why}"),
+                        )
+                        .at(address.span())
+                        .label("not a function code")
+                        .help(format!(
+                            "write it as <prefix><group>{}<index>, e.g. {}, or as a number",
+                            numbering.separator,
+                            numbering.format(0xF00C).unwrap_or_else(|| "61452".into())
+                        )),
                     );
                     None
                 }

@@ -44,10 +44,16 @@ pub fn lower(
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
         cx.push(
-            Diagnostic::warning("W101", format!("PROFIBUS ident number 0x{:04X} is a placeholder, not assigned by PI", ident.value.get_ref()))
-                .at(p.ident_number.span())
-                .label("placeholder")
-                .help("apply to PI for an ident number before shipping the GSD"),
+            Diagnostic::warning(
+                "W101",
+                format!(
+                    "PROFIBUS ident number 0x{:04X} is a placeholder, not assigned by PI",
+                    ident.value.get_ref()
+                ),
+            )
+            .at(p.ident_number.span())
+            .label("placeholder")
+            .help("apply to PI for an ident number before shipping the GSD"),
         );
     }
     Some(Profibus {
@@ -61,7 +67,12 @@ pub fn lower(
             .map(|i| cx.gsd_string(i, GSD_NAME_LEN, "implementation_type")),
         modules: modules(cx, p, telegram),
         baud_rates: baud_rates(cx, &p.baud_rates),
-        min_slave_interval: cx.spanned_in_range(&p.min_slave_interval, 1, 0xFFFF, "min_slave_interval")?,
+        min_slave_interval: cx.spanned_in_range(
+            &p.min_slave_interval,
+            1,
+            0xFFFF,
+            "min_slave_interval",
+        )?,
         slave_family: slave_family(cx, &p.slave_family),
         auto_baud: p.auto_baud,
         freeze_mode: p.freeze_mode,
@@ -94,7 +105,9 @@ fn file_name(cx: &mut Checker, name: &Spanned<String>) -> String {
 
 fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoModule> {
     let ppo5_pzd_words = match &p.ppo5_pzd_words {
-        Some(w) => cx.spanned_in_range(w, 1, 16, "ppo5_pzd_words").unwrap_or(DEFAULT_PPO5_PZD_WORDS),
+        Some(w) => cx
+            .spanned_in_range(w, 1, 16, "ppo5_pzd_words")
+            .unwrap_or(DEFAULT_PPO5_PZD_WORDS),
         None => DEFAULT_PPO5_PZD_WORDS,
     };
     if p.ppo_types.get_ref().is_empty() {
@@ -120,7 +133,12 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
         .collect()
 }
 
-fn ppo_module(cx: &mut Checker, name: &Spanned<String>, ppo5_pzd_words: u8, telegram: &Telegram) -> Option<PpoModule> {
+fn ppo_module(
+    cx: &mut Checker,
+    name: &Spanned<String>,
+    ppo5_pzd_words: u8,
+    telegram: &Telegram,
+) -> Option<PpoModule> {
     let number = name
         .get_ref()
         .strip_prefix("PPO")
@@ -136,18 +154,27 @@ fn ppo_module(cx: &mut Checker, name: &Spanned<String>, ppo5_pzd_words: u8, tele
     };
     if layout.pkw && telegram.pkw == PkwKind::None {
         cx.push(
-            Diagnostic::error("E121", format!("PPO{ppo} carries a PKW channel, but the telegram has none"))
-                .at(name.span())
-                .label("has PKW")
-                .help("set telegram.pkw to the channel's kind, or offer only PPO3 and PPO4"),
+            Diagnostic::error(
+                "E121",
+                format!("PPO{ppo} carries a PKW channel, but the telegram has none"),
+            )
+            .at(name.span())
+            .label("has PKW")
+            .help("set telegram.pkw to the channel's kind, or offer only PPO3 and PPO4"),
         );
     }
     if layout.pzd_words > telegram.pzd_words {
         cx.push(
-            Diagnostic::error("E113", format!("PPO{ppo} has {} PZD words; the telegram has {}", layout.pzd_words, telegram.pzd_words))
-                .at(name.span())
-                .label("longer than the telegram")
-                .help("raise telegram.pzd_words or drop this PPO type"),
+            Diagnostic::error(
+                "E113",
+                format!(
+                    "PPO{ppo} has {} PZD words; the telegram has {}",
+                    layout.pzd_words, telegram.pzd_words
+                ),
+            )
+            .at(name.span())
+            .label("longer than the telegram")
+            .help("raise telegram.pzd_words or drop this PPO type"),
         );
     }
     let pkw = if layout.pkw { "4 PKW + " } else { "" };
@@ -192,7 +219,9 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
         .next()
         .and_then(|m| m.parse::<u8>().ok())
         .is_some_and(|m| m <= MAX_MAIN_FAMILY);
-    let subs_ok = parts.all(|s| !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char));
+    let subs_ok = parts.all(|s| {
+        !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char)
+    });
     if !(main_ok && subs_ok) {
         cx.push(
             Diagnostic::error("E120", format!("`{text}` is not a slave family"))
@@ -246,10 +275,16 @@ fn user_prm(
         .find(|e| e.offset + usize::from(PRM_ENTRY_BYTES) > MAX_USER_PRM_LEN);
     if let Some(entry) = overflowing {
         cx.push(
-            Diagnostic::error("E116", format!("the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}", prm.len()))
-                .at(mapping_spans[entry.mapping.0].clone())
-                .label("this mapping runs past the limit")
-                .help("map fewer PZD words or DPV1 indexes"),
+            Diagnostic::error(
+                "E116",
+                format!(
+                    "the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}",
+                    prm.len()
+                ),
+            )
+            .at(mapping_spans[entry.mapping.0].clone())
+            .label("this mapping runs past the limit")
+            .help("map fewer PZD words or DPV1 indexes"),
         );
     }
     prm
@@ -257,7 +292,12 @@ fn user_prm(
 
 fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis> {
     let raw = d.get_ref();
-    let length: u8 = cx.spanned_in_range(&raw.length, 1, MAX_DIAG_DATA_LEN - i64::from(STANDARD_DIAG_BYTES), "the diagnosis length")?;
+    let length: u8 = cx.spanned_in_range(
+        &raw.length,
+        1,
+        MAX_DIAG_DATA_LEN - i64::from(STANDARD_DIAG_BYTES),
+        "the diagnosis length",
+    )?;
     let bits = (i64::from(length) - 1) * 8;
     let areas = raw
         .areas
@@ -269,7 +309,12 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
 
 fn diagnosis_area(cx: &mut Checker, a: &raw::DiagnosisArea, bits: i64) -> Option<DiagnosisArea> {
     let range = a.bit.get_ref();
-    if bits == 0 || range.first < 0 || range.last < range.first || range.last >= bits || range.last - range.first >= MAX_DIAG_AREA_BITS {
+    if bits == 0
+        || range.first < 0
+        || range.last < range.first
+        || range.last >= bits
+        || range.last - range.first >= MAX_DIAG_AREA_BITS
+    {
         cx.push(
             Diagnostic::error("E115", format!("bits {}..={} are not within the diagnosis", range.first, range.last))
                 .at(a.bit.span())

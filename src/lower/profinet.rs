@@ -27,12 +27,19 @@ pub fn lower(
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
-    let file_vendor = file_name_part(cx, p.file_vendor.as_ref().unwrap_or(&device.vendor), "profinet.file_vendor");
+    let file_vendor = file_name_part(
+        cx,
+        p.file_vendor.as_ref().unwrap_or(&device.vendor),
+        "profinet.file_vendor",
+    );
     let family = file_name_part(cx, &device.family, "device.family");
     placeholder_warning(cx, &p.vendor_id, "vendor ID");
     placeholder_warning(cx, &p.device_id, "device ID");
     Some(Profinet {
-        file_name: format!("GSDML-V{gsdml_version}-{file_vendor}-{family}-{}.xml", date.compact()),
+        file_name: format!(
+            "GSDML-V{gsdml_version}-{file_vendor}-{family}-{}.xml",
+            date.compact()
+        ),
         gsdml_version,
         date,
         vendor_id: *p.vendor_id.get_ref().value.get_ref(),
@@ -41,7 +48,12 @@ pub fn lower(
         device_id_placeholder: p.device_id.get_ref().placeholder,
         dns_name: dns_name(cx, &p.dns_name),
         ports: cx.spanned_in_range(&p.ports, 1, 16, "ports")?,
-        min_device_interval: cx.spanned_in_range(&p.min_device_interval, 1, 4096, "min_device_interval")?,
+        min_device_interval: cx.spanned_in_range(
+            &p.min_device_interval,
+            1,
+            4096,
+            "min_device_interval",
+        )?,
         modules: modules(cx, p, telegram),
         records: records(cx, &p.records, mappings),
     })
@@ -86,7 +98,10 @@ fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<Date> {
 /// and `.`, since `-` separates the name's parts.
 fn file_name_part(cx: &mut Checker, part: &Spanned<String>, what: &str) -> String {
     let text = part.get_ref();
-    let valid = !text.is_empty() && text.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
+    let valid = !text.is_empty()
+        && text
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
     if !valid {
         cx.push(
             Diagnostic::error("E133", format!("`{text}` cannot be part of a GSDML file name"))
@@ -117,14 +132,18 @@ fn dns_name(cx: &mut Checker, name: &Spanned<String>) -> String {
         (1..=63).contains(&l.len())
             && !l.starts_with('-')
             && !l.ends_with('-')
-            && l.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
+            && l.chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
     };
     if text.len() > 240 || !text.split('.').all(label_ok) {
         cx.push(
-            Diagnostic::error("E132", format!("`{text}` is not a DNS-compatible name of station"))
-                .at(name.span())
-                .label("not a DNS name")
-                .help("use lower-case letters, digits and `-`, e.g. \"mv810-pnet02\""),
+            Diagnostic::error(
+                "E132",
+                format!("`{text}` is not a DNS-compatible name of station"),
+            )
+            .at(name.span())
+            .label("not a DNS name")
+            .help("use lower-case letters, digits and `-`, e.g. \"mv810-pnet02\""),
         );
     }
     text.clone()
@@ -138,10 +157,13 @@ fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<Modu
     };
     if pkw_choices.contains(&true) && telegram.pkw == PkwKind::None {
         cx.push(
-            Diagnostic::error("E121", "modules with a PKW channel, but the telegram has none")
-                .at(p.module_pkw.span())
-                .label("asks for PKW")
-                .help("set telegram.pkw to the channel's kind, or module_pkw = \"without\""),
+            Diagnostic::error(
+                "E121",
+                "modules with a PKW channel, but the telegram has none",
+            )
+            .at(p.module_pkw.span())
+            .label("asks for PKW")
+            .help("set telegram.pkw to the channel's kind, or module_pkw = \"without\""),
         );
     }
     let lengths = pzd_lengths(cx, &p.pzd_lengths, telegram.pzd_words);
@@ -167,10 +189,13 @@ fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<Modu
 fn standard_telegram_1(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Module {
     if telegram.pzd_words < STANDARD_TELEGRAM_1_WORDS {
         cx.push(
-            Diagnostic::error("E113", "standard telegram 1 needs 2 PZD words; the telegram has 1")
-                .at(p.pzd_lengths.span())
-                .label("for this device")
-                .help("raise telegram.pzd_words to 2 or drop standard_telegram_1"),
+            Diagnostic::error(
+                "E113",
+                "standard telegram 1 needs 2 PZD words; the telegram has 1",
+            )
+            .at(p.pzd_lengths.span())
+            .label("for this device")
+            .help("raise telegram.pzd_words to 2 or drop standard_telegram_1"),
         );
     }
     let layout = Layout {
@@ -213,7 +238,11 @@ fn pzd_lengths(cx: &mut Checker, lengths: &Spanned<Vec<Spanned<u8>>>, max: u8) -
 
 /// One record per kind of mapping the description has: PZD out, PZD in,
 /// DPV1 indexes, settings; indexes 1, 2, 3, 4 unless the description says otherwise.
-fn records(cx: &mut Checker, indexes: &raw::RecordIndexes, mappings: &[MappingSet]) -> Vec<ParameterRecord> {
+fn records(
+    cx: &mut Checker,
+    indexes: &raw::RecordIndexes,
+    mappings: &[MappingSet],
+) -> Vec<ParameterRecord> {
     let kinds = [
         (MappingKind::PzdOut, &indexes.pzd_out, 1),
         (MappingKind::PzdIn, &indexes.pzd_in, 2),
@@ -224,7 +253,9 @@ fn records(cx: &mut Checker, indexes: &raw::RecordIndexes, mappings: &[MappingSe
     kinds
         .into_iter()
         .filter_map(|(kind, given, default)| {
-            let sets: Vec<usize> = (0..mappings.len()).filter(|&i| mappings[i].kind == kind).collect();
+            let sets: Vec<usize> = (0..mappings.len())
+                .filter(|&i| mappings[i].kind == kind)
+                .collect();
             if sets.is_empty() {
                 return None;
             }

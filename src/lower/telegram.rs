@@ -23,8 +23,14 @@ pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
             PkwKind::StationCommandAddressValue => ir::PkwKind::StationCommandAddressValue,
         },
         pzd_words,
-        control_word: t.control_word.as_ref().map(|w| lower_word(cx, w, "control word")),
-        status_word: t.status_word.as_ref().map(|w| lower_word(cx, w, "status word")),
+        control_word: t
+            .control_word
+            .as_ref()
+            .map(|w| lower_word(cx, w, "control word")),
+        status_word: t
+            .status_word
+            .as_ref()
+            .map(|w| lower_word(cx, w, "status word")),
     }
 }
 
@@ -62,7 +68,13 @@ fn lower_bit_field(cx: &mut Checker, b: &raw::BitField) -> Option<ir::BitField> 
     let range = b.bit.get_ref();
     let span = b.bit.span();
     let first: u8 = cx.in_range(range.first, 0, WORD_BITS - 1, span.clone(), "a bit number")?;
-    let last: u8 = cx.in_range(range.last, i64::from(first), WORD_BITS - 1, span.clone(), "the last bit")?;
+    let last: u8 = cx.in_range(
+        range.last,
+        i64::from(first),
+        WORD_BITS - 1,
+        span.clone(),
+        "the last bit",
+    )?;
     let max_value = (1i64 << (last - first + 1)) - 1;
     Some(ir::BitField {
         first,
