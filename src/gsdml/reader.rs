@@ -1,0 +1,127 @@
+//! Bytes to text, text to XML tree. Everything that makes a file unreadable
+//! is rule E300.
+
+use std::borrow::Cow;
+
+use crate::diag::{line_col, Diagnostic};
+
+/// Enough for the largest real GSDML files (the 1 MB SEW file has about
+/// 100 000 nodes) with a wide margin, small enough to bound memory on
+/// hostile input.
+const NODES_LIMIT: u32 = 4_000_000;
+
+/// Parses GSDML text. DTDs are refused, never resolved; a document with
+/// more than [`NODES_LIMIT`] nodes is refused.
+pub fn parse(text: &str) -> Result<roxmltree::Document<'_>, Diagnostic> {
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: NODES_LIMIT,
+        ..roxmltree::ParsingOptions::default()
+    };
+    roxmltree::Document::parse_with_options(text, options).map_err(|e| syntax_error(text, &e))
+}
+
+fn syntax_error(text: &str, error: &roxmltree::Error) -> Diagnostic {
+    let base = Diagnostic::error("E300", format!("the file is not well-formed XML: {error}"));
+    match error {
+        roxmltree::Error::DtdDetected => {
+            let at = text.find("<!DOCTYPE").unwrap_or(0);
+            base.at(at..at + "<!DOCTYPE".len().min(text.len() - at))
+                .label("DTD here")
+                .help("GSDML files have no DTD; remove the <!DOCTYPE ...> declaration")
+        }
+        roxmltree::Error::NodesLimitReached => base.help(format!(
+            "the file has more than {NODES_LIMIT} XML nodes; no real GSDML file comes near that"
+        )),
+        _ => {
+            let pos = error.pos();
+            let at = offset_of(text, pos.row, pos.col);
+            let end = text[at..].chars().next().map_or(at, |c| at + c.len_utf8());
+            base.at(at..end)
+                .label("here")
+                .help("fix the XML syntax; an XML editor or `xmllint --noout` shows the same place")
+        }
+    }
+}
+
+/// Byte offset of a 1-based row and column (in characters), clamped to the text.
+fn offset_of(text: &str, row: u32, col: u32) -> usize {
+    let line_start = text
+        .split_inclusive('\n')
+        .take(row.saturating_sub(1) as usize)
+        .map(str::len)
+        .sum::<usize>();
+    let line = &text[line_start..];
+    line.char_indices()
+        .nth(col.saturating_sub(1) as usize)
+        .map_or(text.len(), |(i, _)| line_start + i)
+}
+
+/// Turns the bytes of a GSDML file into text, honouring the encoding of the
+/// XML declaration: UTF-8 (the default) and ISO-8859-1, which older vendor
+/// files use. Spans of later diagnostics refer to the returned text; lines
+/// and columns are the same as in the file.
+pub fn decode(bytes: &[u8]) -> Result<Cow<'_, str>, Diagnostic> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    let encoding = declared_encoding(bytes).unwrap_or_else(|| "utf-8".into());
+    match encoding.as_str() {
+        "utf-8" | "utf8" | "us-ascii" | "ascii" => std::str::from_utf8(bytes)
+            .map(Cow::Borrowed)
+            .map_err(|e| invalid_utf8(bytes, e.valid_up_to())),
+        "iso-8859-1" | "iso8859-1" | "iso_8859-1" | "latin1" | "latin-1" | "l1" => {
+            Ok(Cow::Owned(bytes.iter().map(|&b| char::from(b)).collect()))
+        }
+        other => Err(Diagnostic::error("E300", format!("unsupported encoding \"{other}\""))
+            .help("save the file as UTF-8 (or ISO-8859-1) and declare it in <?xml ... encoding=\"UTF-8\"?>")),
+    }
+}
+
+/// The lower-cased `encoding` of the XML declaration, if there is one.
+fn declared_encoding(bytes: &[u8]) -> Option<String> {
+    let head = bytes.strip_prefix(b"<?xml")?;
+    let end = head.windows(2).position(|w| w == b"?>")?;
+    let declaration = std::str::from_utf8(&head[..end]).ok()?;
+    let after = &declaration[declaration.find("encoding")? + "encoding".len()..];
+    let after = after.trim_start().strip_prefix('=')?.trim_start();
+    let quote = after.chars().next().filter(|c| *c == '"' || *c == '\'')?;
+    let value = &after[1..];
+    Some(value[..value.find(quote)?].to_ascii_lowercase())
+}
+
+fn invalid_utf8(bytes: &[u8], at: usize) -> Diagnostic {
+    // The text is not valid UTF-8, so lines are counted on the valid prefix.
+    let valid = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+    let (line, column) = line_col(valid, valid.len());
+    Diagnostic::error(
+        "E300",
+        format!("the file is not valid UTF-8: byte 0x{:02X} at line {line}, column {column}", bytes[at]),
+    )
+    .help("declare the real encoding in the XML declaration (encoding=\"iso-8859-1\") or save the file as UTF-8")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn latin1_is_decoded_by_declaration() {
+        let bytes = b"<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><a b=\"\xE4\"/>";
+        assert_eq!(
+            decode(bytes).unwrap(),
+            "<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><a b=\"\u{e4}\"/>"
+        );
+    }
+
+    #[test]
+    fn undeclared_latin1_is_an_error_with_position() {
+        let d = decode(b"<a>\n\xE4</a>").unwrap_err();
+        assert_eq!(d.code, "E300");
+        assert!(d.message.contains("line 2, column 1"), "{}", d.message);
+    }
+
+    #[test]
+    fn offset_of_counts_characters() {
+        assert_eq!(offset_of("ab\n\u{e4}x", 2, 2), 5);
+        assert_eq!(offset_of("ab", 9, 9), 2);
+    }
+}

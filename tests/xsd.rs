@@ -1,0 +1,92 @@
+//! The PI schema harness: the corpus files that the V2.44 schema accepts
+//! (per the corpus MANIFEST.tsv) validate, and the schema rejects each
+//! broken corpus file at the place that was broken. This proves the harness
+//! that later validates the project's own GSDML.
+
+#[path = "common/xsd.rs"]
+mod xsd;
+
+use gsdc::gsdml::decode;
+
+const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
+
+fn read(folder: &str, name: &str) -> String {
+    let path = format!("{CORPUS}/{folder}/{name}");
+    let bytes =
+        std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
+    decode(&bytes)
+        .unwrap_or_else(|d| panic!("{name}: {}", d.message))
+        .into_owned()
+}
+
+/// (file, whether xmllint accepted it against V2.44) from MANIFEST.tsv.
+fn manifest() -> Vec<(String, bool)> {
+    let path = format!("{CORPUS}/gsdml/MANIFEST.tsv");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path} is missing ({e})"));
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines
+        .next()
+        .expect("MANIFEST.tsv has a header")
+        .split('\t')
+        .collect();
+    let column = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no column {name}"))
+    };
+    let (file, verdict) = (column("file"), column("xmllint_v2.44"));
+    lines
+        .map(|line| line.split('\t').collect::<Vec<_>>())
+        .map(|fields| (fields[file].to_string(), fields[verdict] == "valid"))
+        .collect()
+}
+
+#[test]
+fn corpus_validates_as_the_manifest_says() {
+    let entries = manifest();
+    assert_eq!(entries.len(), 16);
+    assert_eq!(
+        entries.iter().filter(|(_, valid)| *valid).count(),
+        13,
+        "V2.33 and later validate"
+    );
+    for (name, valid) in entries {
+        let result = xsd::validate(&read("gsdml", &name));
+        if valid {
+            assert_eq!(result, Ok(()), "{name} should validate against V2.44");
+        } else {
+            // Attributes they lack became required after their version.
+            let errors = result.expect_err(&name);
+            assert!(
+                errors.iter().any(|e| e.contains("MayIssueProcessAlarm")),
+                "{name}: {errors:?}"
+            );
+        }
+    }
+}
+
+/// Each broken file, the line that was broken and a word of the schema's
+/// complaint.
+const BROKEN: &[(&str, u32, &str)] = &[
+    ("neg_bad_datatype.xml", 100, "UInt8"),
+    ("neg_bad_identnumber.xml", 26, "'12'"),
+    ("neg_dangling_moduleref.xml", 38, "IDM_NOPE"),
+    ("neg_dup_module_id.xml", 119, "IDM_30"),
+    ("neg_missing_pnio_version.xml", 26, "PNIO_Version"),
+    ("neg_missing_textid.xml", 28, "IDT_DOES_NOT_EXIST"),
+];
+
+#[test]
+fn schema_rejects_each_broken_file_where_it_is_broken() {
+    for (name, line, word) in BROKEN {
+        let errors = xsd::validate(&read("gsdml-invalid", name)).expect_err(name);
+        let expected = format!("line {line}: ");
+        assert!(
+            errors
+                .iter()
+                .any(|e| e.starts_with(&expected) && e.contains(word)),
+            "{name}: expected an error on line {line} about {word}, got {errors:?}"
+        );
+    }
+}
