@@ -195,3 +195,20 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     assert_eq!(gsdc(&["check", "no-such-file.gsd"]).status.code(), Some(2));
     std::fs::remove_dir_all(out).unwrap();
 }
+
+#[test]
+fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
+    let leuze = "../shared/corpus/gsdml/GSDML-V2.31-LEUZE-BCL348i-20150923.xml";
+    let clean = gsdc(&["check", leuze]);
+    assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
+    let dangling = gsdc(&[
+        "check",
+        "../shared/corpus/gsdml-invalid/neg_dangling_moduleref.xml",
+    ]);
+    assert_eq!(dangling.status.code(), Some(1));
+    assert!(
+        stderr(&dangling).contains("error[E307]"),
+        "{}",
+        stderr(&dangling)
+    );
+}

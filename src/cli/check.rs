@@ -39,7 +39,16 @@ fn check_bytes(path: &Path, bytes: &[u8]) -> (String, Diagnostics) {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("xml"));
     if is_xml {
-        let text = String::from_utf8_lossy(bytes).into_owned();
+        // UTF-8, or ISO-8859-1 when the XML declaration says so.
+        let text = match gsdc::gsdml::decode(bytes) {
+            Ok(text) => text.into_owned(),
+            Err(d) => {
+                return (
+                    String::from_utf8_lossy(bytes).into_owned(),
+                    Diagnostics(vec![d]),
+                )
+            }
+        };
         let file_name = path.file_name().map(|f| f.to_string_lossy().into_owned());
         let diagnostics = gsdc::gsdml::check(&text, file_name.as_deref());
         (text, diagnostics)
