@@ -33,6 +33,8 @@ pub struct Diagnostic {
     /// Short text printed under the caret.
     pub label: Option<String>,
     pub help: Option<String>,
+    /// The GSD keyword or GSDML element the diagnostic is about, for tools.
+    pub subject: Option<String>,
 }
 
 impl Diagnostic {
@@ -52,6 +54,7 @@ impl Diagnostic {
             span: None,
             label: None,
             help: None,
+            subject: None,
         }
     }
 
@@ -72,6 +75,11 @@ impl Diagnostic {
 
     pub fn help(mut self, help: impl Into<String>) -> Self {
         self.help = Some(help.into());
+        self
+    }
+
+    pub fn subject(mut self, subject: impl Into<String>) -> Self {
+        self.subject = Some(subject.into());
         self
     }
 
@@ -107,6 +115,16 @@ impl Diagnostics {
 
     pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
         self.0.iter().filter(|d| d.is_error())
+    }
+
+    /// Names the subject of every diagnostic that has a place but no subject
+    /// yet, with `subject_at(offset)`.
+    pub fn name_subjects(&mut self, subject_at: impl Fn(usize) -> Option<String>) {
+        for d in &mut self.0 {
+            if d.subject.is_none() {
+                d.subject = d.span.as_ref().and_then(|span| subject_at(span.start));
+            }
+        }
     }
 }
 
@@ -234,10 +252,11 @@ impl Source<'_> {
         };
         let optional = |s: &Option<String>| s.as_deref().map_or("null".into(), json_string);
         format!(
-            "{{\"file\":{},\"line\":{line},\"column\":{column},\"severity\":\"{}\",\"code\":\"{}\",\"message\":{},\"label\":{},\"help\":{}}}",
+            "{{\"file\":{},\"line\":{line},\"column\":{column},\"severity\":\"{}\",\"code\":\"{}\",\"subject\":{},\"message\":{},\"label\":{},\"help\":{}}}",
             json_string(self.name),
             diagnostic.severity.as_str(),
             diagnostic.code,
+            optional(&diagnostic.subject),
             json_string(&diagnostic.message),
             optional(&diagnostic.label),
             optional(&diagnostic.help),
@@ -318,7 +337,7 @@ mod tests {
         .to_json(&d);
         assert_eq!(
             json,
-            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W1\",\"message\":\"m\",\"label\":null,\"help\":null}"
+            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W1\",\"subject\":null,\"message\":\"m\",\"label\":null,\"help\":null}"
         );
     }
 }

@@ -30,6 +30,10 @@ fn files_in(dir: &Path) -> Vec<String> {
     names
 }
 
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
 fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
@@ -46,7 +50,10 @@ fn build_writes_the_gsd_and_exits_0() {
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     let written = files_in(&out);
     for expected in ["MD810DP.GSD", "GSDML-V2.32-INOVANCE-MD810-20261122.xml"] {
-        assert!(written.iter().any(|f| f == expected), "{expected} not in {written:?}");
+        assert!(
+            written.iter().any(|f| f == expected),
+            "{expected} not in {written:?}"
+        );
     }
     let written = std::fs::read(out.join("MD810DP.GSD")).unwrap();
     assert!(written.starts_with(b";====="));
@@ -190,9 +197,9 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_compact.gsd"]);
     assert_eq!(broken.status.code(), Some(1));
     assert!(
-        stderr(&broken).contains("error[E217]"),
+        stdout(&broken).contains("error[E217]"),
         "{}",
-        stderr(&broken)
+        stdout(&broken)
     );
 
     assert_eq!(gsdc(&["check", "no-such-file.gsd"]).status.code(), Some(2));
@@ -210,8 +217,64 @@ fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
     ]);
     assert_eq!(dangling.status.code(), Some(1));
     assert!(
-        stderr(&dangling).contains("error[E307]"),
+        stdout(&dangling).contains("error[E307]"),
         "{}",
-        stderr(&dangling)
+        stdout(&dangling)
+    );
+}
+
+/// `--format json`: one object per finding, with the fields tools need, in
+/// the order of the arguments whatever thread checked each file.
+#[test]
+fn check_json_lines_have_the_documented_fields_in_argument_order() {
+    let files = [
+        "../shared/corpus/gsdml-invalid/neg_missing_textid.xml",
+        "../shared/corpus/gsd/mbuesch__dummy_compact.gsd",
+        "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml",
+    ];
+    let mut args = vec!["check", "--format", "json"];
+    args.extend(files);
+    let output = gsdc(&args);
+    assert_eq!(output.status.code(), Some(1));
+    let lines: Vec<String> = stdout(&output).lines().map(str::to_string).collect();
+    assert!(!lines.is_empty());
+    let mut seen_files = Vec::new();
+    for line in &lines {
+        assert!(
+            line.starts_with("{\"file\":") && line.ends_with('}'),
+            "{line}"
+        );
+        for field in [
+            "\"line\":",
+            "\"column\":",
+            "\"severity\":",
+            "\"code\":",
+            "\"subject\":",
+            "\"message\":",
+            "\"label\":",
+            "\"help\":",
+        ] {
+            assert!(line.contains(field), "{field} missing in {line}");
+        }
+        let file = line.split('"').nth(3).unwrap().to_string();
+        if seen_files.last() != Some(&file) {
+            seen_files.push(file);
+        }
+    }
+    assert_eq!(
+        seen_files, files,
+        "findings follow the order of the arguments"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("\"code\":\"E217\"") && l.contains("\"subject\":\"Module\"")),
+        "{lines:#?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("\"code\":\"E309\"") && l.contains("\"subject\":\"DataItem\"")),
+        "{lines:#?}"
     );
 }

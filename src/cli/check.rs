@@ -1,35 +1,73 @@
-//! `gsdc check`: GSD and GSDML files against gsdc's rules.
+//! `gsdc check`: GSD and GSDML files against gsdc's rules. Files are checked
+//! in parallel; what is printed follows the order of the arguments.
 
-use super::{display_name, report, Status};
-use gsdc::Diagnostics;
-use std::path::Path;
+use super::{display_name, Status};
+use gsdc::{Diagnostics, Source};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
-pub fn run(files: &[std::path::PathBuf]) -> Status {
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Rendered diagnostics and a summary per file.
+    Human,
+    /// One JSON object per finding, one per line.
+    Json,
+}
+
+/// What checking one file gave: its text and diagnostics, or why it could not be read.
+enum Report {
+    Checked {
+        text: String,
+        diagnostics: Diagnostics,
+    },
+    Unreadable(String),
+}
+
+pub fn run(files: &[PathBuf], format: Format) -> Status {
+    let reports = check_all(files);
     files
         .iter()
-        .map(|f| check_one(f))
+        .zip(reports)
+        .map(|(path, report)| print(&display_name(path), report, format))
         .max()
         .unwrap_or(Status::Ok)
 }
 
-fn check_one(path: &Path) -> Status {
-    let name = display_name(path);
-    let bytes = match std::fs::read(path) {
-        Ok(bytes) => bytes,
-        Err(e) => {
-            eprintln!("error: cannot read {name}: {e}");
-            return Status::UsageOrIo;
+/// Checks every file on as many threads as the machine has cores, keeping
+/// the reports in the order of `files`.
+fn check_all(files: &[PathBuf]) -> Vec<Report> {
+    let slots: Vec<Mutex<Option<Report>>> = files.iter().map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(files.len());
+    std::thread::scope(|scope| {
+        for _ in 0..workers {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(path) = files.get(i) else { break };
+                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(check_one(path));
+            });
         }
-    };
-    let (text, diagnostics) = check_bytes(path, &bytes);
-    report(&name, &text, &diagnostics);
-    let errors = diagnostics.errors().count();
-    let warnings = diagnostics.iter().count() - errors;
-    println!("{name}: {errors} error(s), {warnings} warning(s)");
-    if errors > 0 {
-        Status::InputErrors
-    } else {
-        Status::Ok
+    });
+    slots
+        .into_iter()
+        .map(|slot| {
+            slot.into_inner()
+                .unwrap_or_else(|e| e.into_inner())
+                .expect("every file was checked")
+        })
+        .collect()
+}
+
+fn check_one(path: &Path) -> Report {
+    match std::fs::read(path) {
+        Ok(bytes) => {
+            let (text, diagnostics) = check_bytes(path, &bytes);
+            Report::Checked { text, diagnostics }
+        }
+        Err(e) => Report::Unreadable(e.to_string()),
     }
 }
 
@@ -56,5 +94,36 @@ fn check_bytes(path: &Path, bytes: &[u8]) -> (String, Diagnostics) {
         let text = gsdc::gsd::decode(bytes).into_owned();
         let diagnostics = gsdc::gsd::check(&text);
         (text, diagnostics)
+    }
+}
+
+fn print(name: &str, report: Report, format: Format) -> Status {
+    let (text, diagnostics) = match report {
+        Report::Checked { text, diagnostics } => (text, diagnostics),
+        Report::Unreadable(why) => {
+            eprintln!("error: cannot read {name}: {why}");
+            return Status::UsageOrIo;
+        }
+    };
+    let source = Source { name, text: &text };
+    let errors = diagnostics.errors().count();
+    let warnings = diagnostics.iter().count() - errors;
+    match format {
+        Format::Human => {
+            for d in diagnostics.iter() {
+                println!("{}", source.render(d));
+            }
+            println!("{name}: {errors} error(s), {warnings} warning(s)");
+        }
+        Format::Json => {
+            for d in diagnostics.iter() {
+                println!("{}", source.to_json(d));
+            }
+        }
+    }
+    if errors > 0 {
+        Status::InputErrors
+    } else {
+        Status::Ok
     }
 }

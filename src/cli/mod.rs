@@ -44,6 +44,9 @@ enum Command {
         /// GSD (.gsd, .gse, ...) or GSDML (.xml) files.
         #[arg(required = true, value_name = "FILE")]
         files: Vec<PathBuf>,
+        /// How findings are printed.
+        #[arg(long, value_enum, default_value = "human")]
+        format: check::Format,
     },
 }
 
@@ -68,7 +71,7 @@ pub fn run(cli: Cli) -> Status {
             out,
             check,
         } => build::run(&descriptions, &out, check),
-        Command::Check { files } => check::run(&files),
+        Command::Check { files, format } => check::run(&files, format),
     }
 }
 

@@ -46,7 +46,18 @@ pub fn parse(text: &str) -> (GsdFile, Diagnostics) {
 pub fn check(text: &str) -> Diagnostics {
     let (file, mut diags) = parse(text);
     diags.extend(rules::check(&file));
+    diags.name_subjects(|offset| keyword_at(text, offset));
     diags
+}
+
+/// The keyword of the line holding `offset`: what a finding is about.
+fn keyword_at(text: &str, offset: usize) -> Option<String> {
+    let start = text.get(..offset)?.rfind('\n').map_or(0, |i| i + 1);
+    let line = text[start..].lines().next()?.trim_start();
+    let keyword = line
+        .split(|c: char| c == '=' || c == '(' || c == ';' || c.is_whitespace())
+        .next()?;
+    (!keyword.is_empty()).then(|| keyword.to_string())
 }
 
 /// [`check`] for a file gsdc wrote itself: adds the output-format rules
@@ -61,4 +72,22 @@ pub fn check_strict(text: &str) -> Diagnostics {
         d.severity = Severity::Error;
     }
     diags
+}
+
+#[cfg(test)]
+mod subject_tests {
+    use super::keyword_at;
+
+    #[test]
+    fn the_subject_is_the_keyword_of_the_line() {
+        let text = "#Profibus_DP\nMax_Input_Len = 249\nUnit_Diag_Bit(3) = \"x\"\n";
+        assert_eq!(
+            keyword_at(text, text.find("249").unwrap()).as_deref(),
+            Some("Max_Input_Len")
+        );
+        assert_eq!(
+            keyword_at(text, text.find("\"x").unwrap()).as_deref(),
+            Some("Unit_Diag_Bit")
+        );
+    }
 }

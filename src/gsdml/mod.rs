@@ -42,7 +42,41 @@ pub fn check(text: &str, file_name: Option<&str>) -> Diagnostics {
     }
     // Stable sort: diagnostics without a span first, the rest in file order.
     out.sort_by_key(|d| d.span.as_ref().map(|s| s.start));
-    Diagnostics(out)
+    let mut diagnostics = Diagnostics(out);
+    diagnostics.name_subjects(|offset| element_at(text, offset));
+    diagnostics
+}
+
+/// The element whose start tag holds `offset` (or precedes it): what a
+/// finding is about. Closing tags, comments and declarations are skipped.
+fn element_at(text: &str, offset: usize) -> Option<String> {
+    let mut end = text.get(..=offset.min(text.len().saturating_sub(1)))?.len();
+    loop {
+        let open = text[..end].rfind('<')?;
+        let rest = &text[open + 1..];
+        if rest.starts_with(['/', '!', '?']) {
+            end = open;
+            continue;
+        }
+        let name = rest.split(|c: char| c.is_whitespace() || c == '/' || c == '>').next()?;
+        let local = name.rsplit(':').next()?;
+        return (!local.is_empty()).then(|| local.to_string());
+    }
+}
+
+#[cfg(test)]
+mod subject_tests {
+    use super::element_at;
+
+    #[test]
+    fn the_subject_is_the_enclosing_start_tag() {
+        let text = "<a:Root>\n  <ModuleItemRef ModuleItemTarget=\"IDM_X\"/>\n</a:Root>";
+        let at = text.find("IDM_X").unwrap();
+        assert_eq!(element_at(text, at).as_deref(), Some("ModuleItemRef"));
+        assert_eq!(element_at(text, 1).as_deref(), Some("Root"));
+        assert_eq!(element_at(text, text.len() - 1).as_deref(), Some("ModuleItemRef"));
+        assert_eq!(element_at("no tags", 3), None);
+    }
 }
 
 fn check_document(
