@@ -15,6 +15,8 @@ use std::ops::Range;
 use toml::Spanned;
 
 const DEFAULT_GSD_REVISION: u8 = 5;
+/// The DPV1 keywords came with GSD revision 3.
+const DPV1_GSD_REVISION: u8 = 3;
 /// PROFIdrive's PPO5 has 10 PZD words.
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
@@ -40,6 +42,16 @@ pub fn lower(
         None => DEFAULT_GSD_REVISION,
     };
     let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
+    if let (Some(_), Some(revision)) = (&dpv1, &p.gsd_revision) {
+        if gsd_revision < DPV1_GSD_REVISION {
+            cx.push(
+                Diagnostic::error("E124", format!("DPV1 needs GSD revision {DPV1_GSD_REVISION}; this GSD is revision {gsd_revision}"))
+                    .at(revision.span())
+                    .label("too old for DPV1")
+                    .help(format!("set gsd_revision = {DPV1_GSD_REVISION} or later, or drop [profibus.dpv1]")),
+            );
+        }
+    }
     let user_prm = user_prm(cx, dpv1.as_ref(), mappings, mapping_spans);
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
