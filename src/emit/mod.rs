@@ -1,6 +1,7 @@
 //! Emitters: the IR to file contents, each verified before it is returned.
 
 pub mod gsd;
+pub mod gsdml;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::Ir;
@@ -26,6 +27,14 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
             contents: text.into_bytes(),
         });
     }
+    if let Some(profinet) = &ir.profinet {
+        let text = gsdml::emit(ir, profinet);
+        problems.extend(verify_gsdml(&profinet.file_name, &text));
+        artifacts.push(Artifact {
+            file_name: profinet.file_name.clone(),
+            contents: text.into_bytes(),
+        });
+    }
     if problems.has_errors() {
         return Err(problems);
     }
@@ -36,6 +45,15 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
 /// warnings as errors, plus 7-bit ASCII, CRLF and lines of at most 80 characters.
 fn verify_gsd(file_name: &str, text: &str) -> Vec<Diagnostic> {
     crate::gsd::check_strict(text)
+        .into_iter()
+        .filter(Diagnostic::is_error)
+        .map(|d| generated_file_breaks(file_name, d))
+        .collect()
+}
+
+/// gsdc's own GSDML must pass the rules `gsdc check` applies to any GSDML.
+fn verify_gsdml(file_name: &str, text: &str) -> Vec<Diagnostic> {
+    crate::gsdml::check(text, Some(file_name))
         .into_iter()
         .filter(Diagnostic::is_error)
         .map(|d| generated_file_breaks(file_name, d))

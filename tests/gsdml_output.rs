@@ -1,0 +1,369 @@
+//! The GSDML files gsdc writes for the shipped descriptions: snapshots
+//! reviewed against the manuals, the file read back with roxmltree and
+//! compared with the IR, and determinism. Validation against PI's schema
+//! lives in its own test.
+
+use gsdc::ir::profinet::Profinet;
+use gsdc::ir::{Allowed, Ir};
+use roxmltree::{Document, Node};
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// The descriptions with a PROFINET part.
+const DESCRIPTIONS: [&str; 2] = ["mv810-pnet02.toml", "md810dp.toml"];
+
+fn load(name: &str) -> Ir {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("descriptions")
+        .join(name);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (ir, diagnostics) = gsdc::load(name, &text);
+    assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
+    ir.unwrap()
+}
+
+fn gsdml_of(ir: &Ir) -> (String, &Profinet) {
+    let profinet = ir.profinet.as_ref().expect("a PROFINET part");
+    let artifacts = gsdc::compile(ir).unwrap();
+    let gsdml = artifacts
+        .iter()
+        .find(|a| a.file_name == profinet.file_name)
+        .expect("a GSDML artifact");
+    (String::from_utf8(gsdml.contents.clone()).unwrap(), profinet)
+}
+
+fn elements<'a, 'i>(
+    doc: &'a Document<'i>,
+    name: &'a str,
+) -> impl Iterator<Item = Node<'a, 'i>> + 'a {
+    doc.descendants().filter(move |n| n.has_tag_name(name))
+}
+
+fn children<'a, 'i>(node: Node<'a, 'i>, name: &'a str) -> impl Iterator<Item = Node<'a, 'i>> + 'a {
+    node.children().filter(move |n| n.has_tag_name(name))
+}
+
+fn attribute<'a>(node: Node<'a, '_>, name: &str) -> &'a str {
+    node.attribute(name)
+        .unwrap_or_else(|| panic!("{} has no {name}", node.tag_name().name()))
+}
+
+/// The English text of a TextId.
+fn english<'a>(doc: &'a Document, text_id: &str) -> &'a str {
+    let primary = elements(doc, "PrimaryLanguage").next().unwrap();
+    let text = children(primary, "Text")
+        .find(|t| t.attribute("TextId") == Some(text_id))
+        .unwrap_or_else(|| panic!("{text_id} is not defined"));
+    attribute(text, "Value")
+}
+
+#[test]
+fn mv810_gsdml_snapshot() {
+    let (gsdml, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    insta::assert_snapshot!("GSDML-V2.32-MEGMEET-MV800-20230830.xml", gsdml);
+}
+
+#[test]
+fn md810_gsdml_snapshot() {
+    let ir = load("md810dp.toml");
+    let (gsdml, profinet) = gsdml_of(&ir);
+    insta::assert_snapshot!(profinet.file_name.as_str(), gsdml);
+}
+
+#[test]
+fn two_builds_give_identical_bytes() {
+    for name in DESCRIPTIONS {
+        assert_eq!(
+            gsdc::compile(&load(name)).unwrap(),
+            gsdc::compile(&load(name)).unwrap(),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn the_header_names_generator_source_fingerprint_and_placeholders() {
+    let ir = load("mv810-pnet02.toml");
+    let (gsdml, _) = gsdml_of(&ir);
+    let head: String = gsdml.lines().take(6).collect::<Vec<_>>().join("\n");
+    assert!(
+        head.starts_with("<?xml version=\"1.0\" encoding=\"utf-8\"?>"),
+        "{head}"
+    );
+    assert!(head.contains(gsdc::GENERATOR), "{head}");
+    assert!(head.contains("mv810-pnet02.toml"), "{head}");
+    assert!(head.contains(&ir.fingerprint.to_string()), "{head}");
+    assert!(
+        head.contains("VendorID 0x0A10 and DeviceID 0x0810 are placeholders"),
+        "{head}"
+    );
+    assert!(head.contains("GSDML-DeviceProfile-V2.32.xsd"), "{head}");
+}
+
+/// Each module's ident number, and its IO data both ways, are the IR's.
+#[test]
+fn modules_are_the_irs() {
+    for name in DESCRIPTIONS {
+        let ir = load(name);
+        let (text, profinet) = gsdml_of(&ir);
+        let doc = Document::parse(&text).unwrap();
+        let modules: Vec<Node> = elements(&doc, "ModuleItem").collect();
+        assert_eq!(modules.len(), profinet.modules.len(), "{name}");
+        for (node, module) in modules.iter().zip(&profinet.modules) {
+            let ident = format!("0x{:08X}", module.ident);
+            assert_eq!(
+                attribute(*node, "ModuleIdentNumber"),
+                ident,
+                "{name}: {}",
+                module.name
+            );
+            let submodule = node
+                .descendants()
+                .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
+                .unwrap();
+            assert_eq!(
+                attribute(submodule, "SubmoduleIdentNumber"),
+                ident,
+                "{name}"
+            );
+            assert_eq!(attribute(submodule, "API"), "0", "{name}");
+            for direction in ["Input", "Output"] {
+                let io = submodule
+                    .descendants()
+                    .find(|n| n.has_tag_name(direction))
+                    .unwrap();
+                let items: Vec<Node> = children(io, "DataItem").collect();
+                assert!(
+                    items
+                        .iter()
+                        .all(|i| attribute(*i, "DataType") == "Unsigned16"),
+                    "{name}"
+                );
+                assert_eq!(
+                    2 * items.len(),
+                    usize::from(module.layout.bytes()),
+                    "{name}: {} {direction}",
+                    module.name
+                );
+            }
+        }
+        let largest = profinet
+            .modules
+            .iter()
+            .map(|m| m.layout.bytes())
+            .max()
+            .unwrap();
+        let config = elements(&doc, "IOConfigData").next().unwrap();
+        for length in ["MaxInputLength", "MaxOutputLength"] {
+            let value: u16 = attribute(config, length).parse().unwrap();
+            assert!(
+                (largest..=1440).contains(&value),
+                "{name}: {length} = {value}"
+            );
+        }
+        let useable: Vec<&str> = elements(&doc, "ModuleItemRef")
+            .map(|r| attribute(r, "ModuleItemTarget"))
+            .collect();
+        let ids: Vec<&str> = modules.iter().map(|m| attribute(*m, "ID")).collect();
+        assert_eq!(useable, ids, "{name}");
+    }
+}
+
+/// Every TextId the file refers to is defined in every language, and no
+/// language defines one that nothing uses.
+#[test]
+fn every_text_id_is_defined_in_every_language() {
+    for name in DESCRIPTIONS {
+        let (text, _) = gsdml_of(&load(name));
+        let doc = Document::parse(&text).unwrap();
+        let referenced: BTreeSet<&str> = doc
+            .descendants()
+            .filter(|n| !n.has_tag_name("Text"))
+            .filter_map(|n| n.attribute("TextId"))
+            .collect();
+        let languages: Vec<Node> = elements(&doc, "PrimaryLanguage")
+            .chain(elements(&doc, "Language"))
+            .collect();
+        assert_eq!(languages.len(), 2, "{name}: English and Chinese");
+        for language in languages {
+            let defined: Vec<&str> = children(language, "Text")
+                .map(|t| attribute(t, "TextId"))
+                .collect();
+            let unique: BTreeSet<&str> = defined.iter().copied().collect();
+            assert_eq!(
+                unique.len(),
+                defined.len(),
+                "{name}: a TextId defined twice"
+            );
+            assert_eq!(
+                unique,
+                referenced,
+                "{name}: {:?}",
+                language.attribute(("http://www.w3.org/XML/1998/namespace", "lang"))
+            );
+        }
+    }
+}
+
+/// The control word's bits as the MV810 manual (section 3, PZD1) names them.
+#[test]
+fn mv810_control_word_bits_are_the_manuals() {
+    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&text).unwrap();
+    let module = elements(&doc, "ModuleItem")
+        .find(|m| m.attribute("ID") == Some("IDM_PKW_12"))
+        .unwrap();
+    let output = module
+        .descendants()
+        .find(|n| n.has_tag_name("Output"))
+        .unwrap();
+    let control = children(output, "DataItem")
+        .find(|d| d.attribute("UseAsBits") == Some("true"))
+        .unwrap();
+    let bits: Vec<(&str, &str)> = children(control, "BitDataItem")
+        .map(|b| {
+            (
+                attribute(b, "BitOffset"),
+                english(&doc, attribute(b, "TextId")),
+            )
+        })
+        .collect();
+    let manual = [
+        ("0", "Forward running"),
+        ("1", "Reverse running"),
+        ("2", "Forward JOG"),
+        ("3", "Reverse JOG"),
+        ("4", "Decelerate to stop"),
+        ("5", "Coast to stop"),
+        ("6", "Fault reset"),
+        ("7", "Emergency stop"),
+    ];
+    assert_eq!(bits, manual);
+    // PKW0..PKW3 come first, then PZD1 is the control word.
+    let first_words: Vec<&str> = children(output, "DataItem")
+        .take(5)
+        .map(|d| english(&doc, attribute(d, "TextId")))
+        .collect();
+    assert_eq!(
+        first_words,
+        ["Station", "Command", "Address", "Value", "Control word"]
+    );
+}
+
+/// P43.02..P43.12 choose among 15 meanings (0..14), P43.13..P43.23 among 26
+/// (0..25): the records' Refs point to ValueItems with exactly those.
+#[test]
+fn mv810_p43_enumerations_have_15_and_26_values() {
+    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&text).unwrap();
+    let values_of_record = |index: &str| -> (usize, Vec<i64>) {
+        let record = elements(&doc, "ParameterRecordDataItem")
+            .find(|r| r.attribute("Index") == Some(index))
+            .unwrap();
+        let refs: Vec<Node> = children(record, "Ref").collect();
+        let target = attribute(refs[0], "ValueItemTarget");
+        assert!(refs
+            .iter()
+            .all(|r| r.attribute("ValueItemTarget") == Some(target)));
+        let item = elements(&doc, "ValueItem")
+            .find(|v| v.attribute("ID") == Some(target))
+            .unwrap();
+        let values = item
+            .descendants()
+            .filter(|n| n.has_tag_name("Assign"))
+            .map(|a| attribute(a, "Content").parse().unwrap())
+            .collect();
+        (refs.len(), values)
+    };
+    assert_eq!(values_of_record("1"), (11, (0..=14).collect()));
+    assert_eq!(values_of_record("2"), (11, (0..=25).collect()));
+}
+
+/// Every Ref lies inside its record, and its default is among its allowed
+/// values as the IR has them.
+#[test]
+fn record_refs_fit_their_records() {
+    for name in DESCRIPTIONS {
+        let ir = load(name);
+        let (text, profinet) = gsdml_of(&ir);
+        let doc = Document::parse(&text).unwrap();
+        let records: Vec<Node> = elements(&doc, "ParameterRecordDataItem").collect();
+        assert_eq!(records.len(), profinet.records.len(), "{name}");
+        for (node, record) in records.iter().zip(&profinet.records) {
+            assert_eq!(
+                attribute(*node, "Index"),
+                record.index.to_string(),
+                "{name}"
+            );
+            let length: usize = attribute(*node, "Length").parse().unwrap();
+            let entries: Vec<_> = record
+                .sets
+                .iter()
+                .flat_map(|&s| ir.mappings[s].entries.iter().map(move |e| (s, e)))
+                .collect();
+            let refs: Vec<Node> = children(*node, "Ref").collect();
+            assert_eq!(refs.len(), entries.len(), "{name}");
+            assert_eq!(length, 2 * entries.len(), "{name}");
+            for (i, (r, (set, entry))) in refs.iter().zip(entries).enumerate() {
+                let offset: usize = attribute(*r, "ByteOffset").parse().unwrap();
+                assert_eq!(offset, 2 * i, "{name}");
+                assert_eq!(
+                    attribute(*r, "DefaultValue"),
+                    entry.default.to_string(),
+                    "{name}"
+                );
+                assert!(
+                    ir.mappings[set].allowed.contains(entry.default.into()),
+                    "{name}"
+                );
+                let has_target = r.attribute("ValueItemTarget").is_some();
+                assert_eq!(
+                    has_target,
+                    matches!(ir.mappings[set].allowed, Allowed::Choices(_)),
+                    "{name}"
+                );
+            }
+        }
+    }
+}
+
+/// What the DAP must and must not say, beyond the schema.
+#[test]
+fn the_dap_keeps_the_rules_beyond_the_schema() {
+    for name in DESCRIPTIONS {
+        let ir = load(name);
+        let (text, profinet) = gsdml_of(&ir);
+        let doc = Document::parse(&text).unwrap();
+        let dap = elements(&doc, "DeviceAccessPointItem").next().unwrap();
+        assert_eq!(
+            attribute(dap, "PNIO_Version"),
+            format!("V{}", profinet.gsdml_version),
+            "{name}"
+        );
+        assert_eq!(attribute(dap, "PhysicalSlots"), "0..1", "{name}");
+        let records = attribute(
+            elements(&doc, "VirtualSubmoduleItem").next().unwrap(),
+            "Writeable_IM_Records",
+        );
+        assert!(
+            records.split(' ').all(|r| r != "0" && r != "5"),
+            "{name}: {records}"
+        );
+        let interface = elements(&doc, "InterfaceSubmoduleItem").next().unwrap();
+        assert_eq!(interface.attribute("DCP_HelloSupported"), None, "{name}");
+        assert_eq!(attribute(interface, "SubslotNumber"), "32768", "{name}");
+        let relations = children(interface, "ApplicationRelations").next().unwrap();
+        assert_eq!(
+            attribute(relations, "StartupMode"),
+            "Legacy;Advanced",
+            "{name}"
+        );
+        let ports: Vec<&str> = elements(&doc, "PortSubmoduleItem")
+            .map(|p| attribute(p, "SubslotNumber"))
+            .collect();
+        let expected: Vec<String> = (1..=u16::from(profinet.ports))
+            .map(|p| (0x8000 + p).to_string())
+            .collect();
+        assert_eq!(ports, expected, "{name}");
+    }
+}
