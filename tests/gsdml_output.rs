@@ -279,50 +279,67 @@ fn mv810_p43_enumerations_have_15_and_26_values() {
     assert_eq!(values_of_record("2"), (11, (0..=25).collect()));
 }
 
-/// Every Ref lies inside its record, and its default is among its allowed
-/// values as the IR has them.
+/// Every user-defined (PZD) module carries every parameter record, standard
+/// telegram 1 and the DAP none; every Ref lies inside its record, and its
+/// default is among its allowed values as the IR has them.
 #[test]
 fn record_refs_fit_their_records() {
     for name in DESCRIPTIONS {
         let ir = load(name);
         let (text, profinet) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
-        let records: Vec<Node> = elements(&doc, "ParameterRecordDataItem").collect();
-        assert_eq!(records.len(), profinet.records.len(), "{name}");
-        for (node, record) in records.iter().zip(&profinet.records) {
+        for submodule in elements(&doc, "VirtualSubmoduleItem") {
+            let records: Vec<Node> = submodule
+                .descendants()
+                .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
+                .collect();
+            let id = attribute(submodule, "ID");
+            let is_pzd_module = id.starts_with("IDS_PKW_") || id.starts_with("IDS_PZD_");
+            let expected = if is_pzd_module {
+                profinet.records.len()
+            } else {
+                0
+            };
+            assert_eq!(records.len(), expected, "{name}: {id}");
+            check_records(&ir, profinet, &records, name);
+        }
+    }
+}
+
+fn check_records(ir: &Ir, profinet: &Profinet, records: &[Node], name: &str) {
+    for (node, record) in records.iter().zip(&profinet.records) {
+        assert_eq!(
+            attribute(*node, "Index"),
+            record.index.to_string(),
+            "{name}"
+        );
+        let length: usize = attribute(*node, "Length").parse().unwrap();
+        let entries: Vec<_> = record
+            .sets
+            .iter()
+            .flat_map(|&s| ir.mappings[s].entries.iter().map(move |e| (s, e)))
+            .collect();
+        let refs: Vec<Node> = children(*node, "Ref").collect();
+        assert_eq!(refs.len(), entries.len(), "{name}");
+        assert_eq!(length, 2 * entries.len(), "{name}");
+        for (i, (r, (set, entry))) in refs.iter().zip(entries).enumerate() {
+            let offset: usize = attribute(*r, "ByteOffset").parse().unwrap();
+            assert_eq!(offset, 2 * i, "{name}");
             assert_eq!(
-                attribute(*node, "Index"),
-                record.index.to_string(),
+                attribute(*r, "DefaultValue"),
+                entry.default.to_string(),
                 "{name}"
             );
-            let length: usize = attribute(*node, "Length").parse().unwrap();
-            let entries: Vec<_> = record
-                .sets
-                .iter()
-                .flat_map(|&s| ir.mappings[s].entries.iter().map(move |e| (s, e)))
-                .collect();
-            let refs: Vec<Node> = children(*node, "Ref").collect();
-            assert_eq!(refs.len(), entries.len(), "{name}");
-            assert_eq!(length, 2 * entries.len(), "{name}");
-            for (i, (r, (set, entry))) in refs.iter().zip(entries).enumerate() {
-                let offset: usize = attribute(*r, "ByteOffset").parse().unwrap();
-                assert_eq!(offset, 2 * i, "{name}");
-                assert_eq!(
-                    attribute(*r, "DefaultValue"),
-                    entry.default.to_string(),
-                    "{name}"
-                );
-                assert!(
-                    ir.mappings[set].allowed.contains(entry.default.into()),
-                    "{name}"
-                );
-                let has_target = r.attribute("ValueItemTarget").is_some();
-                assert_eq!(
-                    has_target,
-                    matches!(ir.mappings[set].allowed, Allowed::Choices(_)),
-                    "{name}"
-                );
-            }
+            assert!(
+                ir.mappings[set].allowed.contains(entry.default.into()),
+                "{name}"
+            );
+            let has_target = r.attribute("ValueItemTarget").is_some();
+            assert_eq!(
+                has_target,
+                matches!(ir.mappings[set].allowed, Allowed::Choices(_)),
+                "{name}"
+            );
         }
     }
 }
@@ -366,4 +383,45 @@ fn the_dap_keeps_the_rules_beyond_the_schema() {
             .collect();
         assert_eq!(ports, expected, "{name}");
     }
+}
+
+/// The checker that guards the build rejects a generated file broken in
+/// each of the ways the issue names: a duplicated ID, a removed TextId, a
+/// module longer than IOConfigData allows. Each mutation is checked to have
+/// happened, so the test cannot pass on an unchanged file.
+#[test]
+fn broken_generated_files_are_rejected_with_their_rule() {
+    let ir = load("mv810-pnet02.toml");
+    let (text, profinet) = gsdml_of(&ir);
+    let file_name = Some(profinet.file_name.as_str());
+    let codes = |xml: &str| -> Vec<&'static str> {
+        gsdc::gsdml::check(xml, file_name)
+            .errors()
+            .map(|d| d.code)
+            .collect()
+    };
+    assert_eq!(codes(&text), Vec::<&str>::new(), "the generated file is clean");
+
+    let duplicated = mutate(&text, "ID=\"IDM_PZD_1\"", "ID=\"IDM_PZD_2\"");
+    assert!(codes(&duplicated).contains(&"E306"), "{:?}", codes(&duplicated));
+
+    let primary = text.find("<PrimaryLanguage>").unwrap();
+    let text_id = "<Text TextId=\"IDT_DEVICE_NAME\"";
+    let at = primary + text[primary..].find(text_id).unwrap();
+    let end = at + text[at..].find("/>").unwrap() + 2;
+    let removed = format!("{}{}", &text[..at], &text[end..]);
+    assert!(codes(&removed).contains(&"E308"), "{:?}", codes(&removed));
+
+    let too_long = mutate(
+        &text,
+        "MaxInputLength=\"38\" MaxOutputLength=\"38\"",
+        "MaxInputLength=\"20\" MaxOutputLength=\"20\"",
+    );
+    assert!(codes(&too_long).contains(&"E310"), "{:?}", codes(&too_long));
+}
+
+/// `text` with `from` replaced once; panics if `from` is not there.
+fn mutate(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "{from} is not in the generated file");
+    text.replacen(from, to, 1)
 }

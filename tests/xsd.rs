@@ -90,3 +90,25 @@ fn schema_rejects_each_broken_file_where_it_is_broken() {
         );
     }
 }
+
+/// Every GSDML gsdc generates from the shipped descriptions validates
+/// against the PI schema.
+#[test]
+fn generated_gsdml_validates_against_the_pi_schema() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions");
+    let mut generated = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let ir = gsdc::load(&name, &text).0.unwrap_or_else(|| panic!("{name} loads"));
+        for artifact in gsdc::compile(&ir).unwrap() {
+            if artifact.file_name.ends_with(".xml") {
+                let xml = String::from_utf8(artifact.contents).unwrap();
+                assert_eq!(xsd::validate(&xml), Ok(()), "{}", artifact.file_name);
+                generated += 1;
+            }
+        }
+    }
+    assert_eq!(generated, 2, "md810dp and mv810-pnet02 give GSDML");
+}

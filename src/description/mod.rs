@@ -261,6 +261,8 @@ pub struct DiagnosisArea {
 pub struct Profinet {
     pub vendor_id: Spanned<IdentNumber>,
     pub device_id: Spanned<IdentNumber>,
+    /// DeviceIdentity's info text, when it should differ from `device.info`.
+    pub info: Option<Spanned<Text>>,
     /// Vendor as the GSDML file name spells it; the device's vendor by default.
     pub file_vendor: Option<Spanned<String>>,
     /// GSDML schema version, "2.32" by default.

@@ -52,7 +52,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     device_identity(&mut doc, ir, profinet);
     doc.open("ApplicationProcess", &[]);
     device_access_point(&mut doc, ir, profinet);
-    module_list(&mut doc, &ir.telegram, profinet);
+    module_list(&mut doc, ir, profinet);
     value_list(&mut doc, ir, profinet);
     external_texts(&mut doc);
     doc.close("ApplicationProcess");
@@ -201,8 +201,12 @@ fn profile_header(doc: &mut Doc) {
     doc.close("ProfileHeader");
 }
 
-fn device_info(ir: &Ir) -> &Text {
-    ir.device.info.as_ref().unwrap_or(&ir.device.name)
+/// The PROFINET part's own info text, else the device's, else its name.
+fn device_info<'a>(ir: &'a Ir, p: &'a Profinet) -> &'a Text {
+    p.info
+        .as_ref()
+        .or(ir.device.info.as_ref())
+        .unwrap_or(&ir.device.name)
 }
 
 fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
@@ -213,7 +217,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
             ("DeviceID", &hex16(p.device_id)),
         ],
     );
-    doc.text_ref("InfoText", DEVICE_INFO, device_info(ir));
+    doc.text_ref("InfoText", DEVICE_INFO, device_info(ir, p));
     doc.leaf("VendorName", &[("Value", &ir.device.vendor)]);
     doc.close("DeviceIdentity");
     doc.open("DeviceFunction", &[]);
@@ -227,7 +231,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.close("DeviceFunction");
 }
 
-/// The one DAP: slot 0 with the parameter records, slot 1 for one module.
+/// The one DAP: slot 0, with slot 1 for one module.
 fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("DeviceAccessPointList", &[]);
     doc.open(
@@ -262,7 +266,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     module_info(
         doc,
         (DEVICE_NAME, &d.name),
-        (DEVICE_INFO, device_info(ir)),
+        (DEVICE_INFO, device_info(ir, p)),
         &values,
     );
     // Conformance class B: RT_CLASS_1 with SNMP and LLDP (see the interface
@@ -325,8 +329,7 @@ fn module_info(doc: &mut Doc, name: (&str, &Text), info: (&str, &Text), values: 
     doc.close("ModuleInfo");
 }
 
-/// The DAP's own submodule: no IO data; it carries the parameter records,
-/// so the controller writes them at every connection start.
+/// The DAP's own submodule: no IO data and no records.
 fn dap_submodule(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("VirtualSubmoduleList", &[]);
     doc.open(
@@ -339,17 +342,10 @@ fn dap_submodule(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         ],
     );
     doc.leaf("IOData", &[]);
-    if !p.records.is_empty() {
-        doc.open("RecordDataList", &[]);
-        for record in &p.records {
-            parameter_record(doc, ir, record);
-        }
-        doc.close("RecordDataList");
-    }
     module_info(
         doc,
         (DEVICE_NAME, &ir.device.name),
-        (DEVICE_INFO, device_info(ir)),
+        (DEVICE_INFO, device_info(ir, p)),
         &[],
     );
     doc.close("VirtualSubmoduleItem");
@@ -524,10 +520,10 @@ fn module_tag(m: &Module) -> String {
     }
 }
 
-fn module_list(doc: &mut Doc, telegram: &Telegram, p: &Profinet) {
+fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("ModuleList", &[]);
     for m in &p.modules {
-        module(doc, telegram, m);
+        module(doc, ir, p, m);
     }
     doc.close("ModuleList");
 }
@@ -535,7 +531,13 @@ fn module_list(doc: &mut Doc, telegram: &Telegram, p: &Profinet) {
 /// A module with one submodule of the same ident number in API 0: the
 /// firmware does not implement the PROFIdrive profile, so not its API even
 /// for standard telegram 1.
-fn module(doc: &mut Doc, telegram: &Telegram, m: &Module) {
+///
+/// The user-defined (PZD) modules carry the parameter records, so the
+/// controller writes the mappings and settings when it plugs one of them;
+/// standard telegram 1 has fixed meanings and carries none (the firmware
+/// selects the standard telegram itself, e.g. MV810's P43.01 = 0).
+fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
+    let telegram = &ir.telegram;
     let tag = module_tag(m);
     let ident = hex32(m.ident);
     let (name_id, info_id) = (
@@ -567,6 +569,13 @@ fn module(doc: &mut Doc, telegram: &Telegram, m: &Module) {
         doc.close(direction.element());
     }
     doc.close("IOData");
+    if m.kind == ModuleKind::Pzd && !p.records.is_empty() {
+        doc.open("RecordDataList", &[]);
+        for record in &p.records {
+            parameter_record(doc, ir, record);
+        }
+        doc.close("RecordDataList");
+    }
     module_info(doc, (&name_id, &name), (&info_id, &info), &[]);
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");

@@ -13,6 +13,8 @@ pub struct Profinet {
     pub vendor_id_placeholder: bool,
     pub device_id: u16,
     pub device_id_placeholder: bool,
+    /// Info text of this bus's device identity, when it differs from the device's.
+    pub info: Option<super::Text>,
     /// DNS_CompatibleName: the default name of station.
     pub dns_name: String,
     pub ports: u8,

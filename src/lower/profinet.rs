@@ -44,8 +44,9 @@ pub fn lower(
         date,
         vendor_id: *p.vendor_id.get_ref().value.get_ref(),
         vendor_id_placeholder: p.vendor_id.get_ref().placeholder,
-        device_id: *p.device_id.get_ref().value.get_ref(),
+        device_id: cx.spanned_in_range(&p.device_id.get_ref().value, 1, 0xFFFF, "device_id")?,
         device_id_placeholder: p.device_id.get_ref().placeholder,
+        info: p.info.as_ref().map(|i| cx.text(i, None, "profinet.info")),
         dns_name: dns_name(cx, &p.dns_name),
         ports: cx.spanned_in_range(&p.ports, 1, 16, "ports")?,
         min_device_interval: cx.spanned_in_range(
