@@ -2,6 +2,7 @@
 
 pub mod gsd;
 pub mod gsdml;
+pub mod rust;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::Ir;
@@ -35,6 +36,11 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
             contents: text.into_bytes(),
         });
     }
+    // The layout is checked by the tests that compile it (tests/generated_rust.rs).
+    artifacts.push(Artifact {
+        file_name: rust::file_name(ir),
+        contents: rust::emit(ir).into_bytes(),
+    });
     if problems.has_errors() {
         return Err(problems);
     }

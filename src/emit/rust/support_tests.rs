@@ -1,0 +1,382 @@
+//! Tests of the hand-written code the generated layout includes: compiled
+//! here as the generated file has it, each PKW kind in a module beside the
+//! support code it uses.
+
+use super::support::*;
+
+mod pke_ind_pwe {
+    use crate::emit::rust::support::U16Be;
+    include!("../../../templates/pkw_pke_ind_pwe.rs");
+}
+
+mod station_command {
+    use crate::emit::rust::support::U16Be;
+    include!("../../../templates/pkw_station_command.rs");
+}
+
+/// `"10F0 0800 0000 1388"`, as the manuals print a PKW channel.
+fn pkw(hex: &str) -> [U16Be; 4] {
+    let words: Vec<U16Be> = hex
+        .split_whitespace()
+        .map(|w| U16Be::new(u16::from_str_radix(w, 16).unwrap()))
+        .collect();
+    words.try_into().unwrap()
+}
+
+#[test]
+fn words_are_big_endian_with_alignment_1() {
+    let mut word = U16Be::new(0x1388);
+    assert_eq!(word.get(), 5000);
+    let mut bytes = [0; 2];
+    put_words(&mut bytes, &[word]);
+    assert_eq!(bytes, [0x13, 0x88]);
+    word.set(0x07D0);
+    assert_eq!(words::<1>(&[0x07, 0xD0]), [word]);
+    assert_eq!(core::mem::size_of::<[U16Be; 16]>(), 32);
+    assert_eq!(core::mem::align_of::<[U16Be; 16]>(), 1);
+}
+
+#[test]
+fn words_copy_as_far_as_both_reach() {
+    assert_eq!(
+        words::<3>(&[0x12, 0x34, 0x56]),
+        [U16Be::new(0x1234), U16Be::new(0), U16Be::new(0)]
+    );
+    let mut bytes = [0xFF; 5];
+    put_words(
+        &mut bytes,
+        &[U16Be::new(0x0102), U16Be::new(0x0304), U16Be::new(0x0506)],
+    );
+    assert_eq!(bytes, [1, 2, 3, 4, 0xFF]);
+}
+
+#[test]
+fn the_pkw_channel_is_the_first_four_words() {
+    let telegram = [0x10, 0xF0, 0x08, 0x00, 0, 0, 0, 0, 0x13, 0x88];
+    let (channel, pzd) = telegram.split_at(PKW_BYTES);
+    assert_eq!(words::<4>(channel), pkw("10F0 0800 0000 0000"));
+    assert_eq!(words::<1>(pzd), [U16Be::new(0x1388)]);
+}
+
+#[test]
+fn bit_fields_read_and_write_their_bits_only() {
+    let control_mode = BitField::new(9, 10);
+    assert_eq!(control_mode.mask(), 0x0600);
+    assert_eq!(control_mode.get(0xFDFF), 0b10);
+    assert!(control_mode.is_set(0x0200));
+    assert!(!control_mode.is_set(0xF9FF));
+    assert_eq!(control_mode.with(0xFFFF, 0), 0xF9FF);
+    assert_eq!(
+        control_mode.with(0, 0b111),
+        0x0600,
+        "bits beyond the field are dropped"
+    );
+    let whole = BitField::new(0, 15);
+    assert_eq!(whole.mask(), 0xFFFF);
+    assert_eq!(whole.with(0x1234, 7), 7);
+    assert_eq!(BitField::new(3, 3).mask(), 0x0008);
+}
+
+fn is_small(value: u16) -> bool {
+    value < 3
+}
+
+const MAPPINGS: [Mapping; 2] = [
+    Mapping {
+        name: "PZD2",
+        number: 2,
+        default: 0xF000,
+        parameter: None,
+        allowed: Allowed::Range {
+            min: 0xF000,
+            max: 0xF0FF,
+        },
+    },
+    Mapping {
+        name: "PZD3",
+        number: 3,
+        default: 1,
+        parameter: Some(0x2B02),
+        allowed: Allowed::Choices(is_small),
+    },
+];
+
+#[test]
+fn allowed_values_are_a_range_or_choices() {
+    let [range, choices] = MAPPINGS.map(|m| m.allowed);
+    assert!(range.contains(0xF000) && range.contains(0xF0FF));
+    assert!(!range.contains(0xEFFF) && !range.contains(0xF100));
+    assert!(choices.contains(2) && !choices.contains(3));
+    assert_eq!(
+        MAPPINGS.map(|m| (m.name, m.number, m.parameter)),
+        [("PZD2", 2, None), ("PZD3", 3, Some(0x2B02))]
+    );
+}
+
+#[test]
+fn defaults_in_mapping_order() {
+    const DEFAULTS: [u16; 2] = defaults(&MAPPINGS);
+    assert_eq!(DEFAULTS, [0xF000, 1]);
+}
+
+fn length(expected: usize, found: usize) -> PrmError {
+    PrmError::Length { expected, found }
+}
+
+fn not_allowed(offset: usize, value: u16) -> PrmError {
+    PrmError::NotAllowed { offset, value }
+}
+
+#[test]
+fn values_are_read_and_checked_at_their_offset() {
+    let telegram = [0x80, 0xF0, 0x12, 0x00, 0x02];
+    assert_eq!(read_bytes::<1>(&telegram, 0), Ok([0x80]));
+    assert_eq!(read_values(&telegram, 1, &MAPPINGS), Ok([0xF012, 2]));
+    let bad_choice = [0x80, 0xF0, 0x12, 0x00, 0x03];
+    assert_eq!(
+        read_values(&bad_choice, 1, &MAPPINGS),
+        Err(not_allowed(3, 3))
+    );
+    let bad_address = [0x80, 0xA0, 0x12, 0x00, 0x02];
+    let refused = read_values(&bad_address, 1, &MAPPINGS);
+    assert_eq!(refused, Err(not_allowed(1, 0xA012)));
+}
+
+#[test]
+fn reading_past_the_end_is_refused() {
+    let telegram = [0x80, 0xF0, 0x12, 0x00, 0x02];
+    let short = read_values(&telegram[..4], 1, &MAPPINGS);
+    assert_eq!(short, Err(length(5, 4)));
+    assert_eq!(read_bytes::<2>(&telegram, 4), Err(length(6, 5)));
+    let far = read_values(&telegram, usize::MAX - 1, &MAPPINGS);
+    assert_eq!(far, Err(length(usize::MAX, 5)));
+}
+
+#[test]
+fn a_record_has_exactly_one_word_per_mapping() {
+    let record = [0xF0, 0x00, 0x00, 0x01];
+    assert_eq!(read_record(&record, &MAPPINGS), Ok([0xF000, 1]));
+    assert_eq!(read_record(&record[1..], &MAPPINGS), Err(length(4, 3)));
+    assert_eq!(check_len(&[], 0), Ok(()));
+}
+
+mod md810 {
+    use super::pke_ind_pwe::*;
+    use super::pkw;
+
+    const F0_08: u16 = 0xF008;
+
+    /// Manual 1.4.2, figure 6: read F0-08, the answer 50.00 Hz.
+    #[test]
+    fn read_f0_08() {
+        let request = pkw("10F0 0800 0000 0000");
+        assert_eq!(
+            PkwRequest::decode(&request),
+            Ok(PkwRequest::Read { address: F0_08 })
+        );
+        assert_eq!(PkwRequest::Read { address: F0_08 }.encode(), request);
+        let answer = pkw("10F0 0800 0000 1388");
+        let done = PkwResponse::Done {
+            address: F0_08,
+            value: 5000,
+        };
+        assert_eq!(PkwResponse::decode(&answer), Ok(done));
+        assert_eq!(done.encode(), answer);
+    }
+
+    /// Manual 1.4.2, figure 7: write 20.00 Hz to F0-08; the answer echoes it.
+    #[test]
+    fn write_f0_08() {
+        let write = PkwRequest::Write {
+            address: F0_08,
+            value: 2000,
+        };
+        assert_eq!(write.encode(), pkw("20F0 0800 0000 07D0"));
+        assert_eq!(PkwRequest::decode(&pkw("20F0 0800 0000 07D0")), Ok(write));
+        let done = PkwResponse::Done {
+            address: F0_08,
+            value: 2000,
+        };
+        assert_eq!(PkwResponse::decode(&pkw("10F0 0800 0000 07D0")), Ok(done));
+    }
+
+    #[test]
+    fn cannot_execute_with_each_error_code() {
+        let codes = [
+            PkwErrorCode::IllegalCommand,
+            PkwErrorCode::IllegalAddress,
+            PkwErrorCode::IllegalData,
+            PkwErrorCode::Other,
+        ];
+        for (error, code) in codes.into_iter().zip(1..) {
+            let answer = pkw(&format!("70F0 0800 0000 000{code}"));
+            let failed = PkwResponse::Failed {
+                address: F0_08,
+                error,
+            };
+            assert_eq!(PkwResponse::decode(&answer), Ok(failed));
+            assert_eq!(failed.encode(), answer);
+            assert_eq!(PkwErrorCode::from_code(error.code()), Some(error));
+        }
+        let unknown = PkwResponse::decode(&pkw("70F0 0800 0000 0005"));
+        assert_eq!(unknown, Err(PkwDecodeError::UnknownErrorCode(5)));
+    }
+
+    #[test]
+    fn no_request_ignores_what_the_master_left() {
+        assert_eq!(PkwRequest::None.encode(), pkw("0000 0000 0000 0000"));
+        assert_eq!(
+            PkwRequest::decode(&pkw("00F0 0800 0000 1388")),
+            Ok(PkwRequest::None)
+        );
+        assert_eq!(PkwResponse::None.encode(), pkw("0000 0000 0000 0000"));
+        assert_eq!(
+            PkwResponse::decode(&pkw("0000 0000 0000 0000")),
+            Ok(PkwResponse::None)
+        );
+    }
+
+    #[test]
+    fn reserved_bits_are_not_read() {
+        let request = PkwRequest::decode(&pkw("1FF0 08FF FFFF 0000"));
+        assert_eq!(request, Ok(PkwRequest::Read { address: F0_08 }));
+    }
+
+    #[test]
+    fn illegal_commands_and_codes_are_refused() {
+        let illegal = PkwDecodeError::IllegalCommand {
+            command: 3,
+            address: F0_08,
+        };
+        assert_eq!(
+            PkwRequest::decode(&pkw("30F0 0800 0000 0000")),
+            Err(illegal)
+        );
+        assert_eq!(
+            PkwResponse::decode(&pkw("20F0 0800 0000 0000")),
+            Err(PkwDecodeError::UnknownResponse(2))
+        );
+        assert_eq!(PkwErrorCode::from_code(0), None);
+    }
+}
+
+mod mv810 {
+    use super::pkw;
+    use super::station_command::*;
+
+    /// P43.02 by the description's numbering: group 43 in the high byte.
+    const P43_02: u16 = 0x2B02;
+    const TO_DRIVE_1: Stations = Stations {
+        target: 1,
+        source: 0,
+    };
+    const FROM_DRIVE_1: Stations = Stations {
+        target: 0,
+        source: 1,
+    };
+
+    #[test]
+    fn read_p43_02() {
+        let read = PkwRequest {
+            stations: TO_DRIVE_1,
+            address: P43_02,
+            access: PkwAccess::Read,
+        };
+        assert_eq!(read.encode(), pkw("0100 0003 2B02 0001"));
+        assert_eq!(PkwRequest::decode(&pkw("0100 0003 2B02 0001")), Ok(read));
+        let value = PkwResponse {
+            stations: FROM_DRIVE_1,
+            address: P43_02,
+            reply: PkwReply::Value(1),
+        };
+        assert_eq!(value.encode(), pkw("0001 0003 2B02 0001"));
+        assert_eq!(PkwResponse::decode(&pkw("0001 0003 2B02 0001")), Ok(value));
+    }
+
+    #[test]
+    fn write_p43_02_with_and_without_storing() {
+        for (access, code, reply) in [
+            (
+                PkwAccess::WriteAndStore { value: 1 },
+                "0006",
+                PkwReply::WrittenAndStored,
+            ),
+            (PkwAccess::Write { value: 1 }, "0007", PkwReply::Written),
+        ] {
+            let write = PkwRequest {
+                stations: TO_DRIVE_1,
+                address: P43_02,
+                access,
+            };
+            let telegram = pkw(&format!("0100 {code} 2B02 0001"));
+            assert_eq!(write.encode(), telegram);
+            assert_eq!(PkwRequest::decode(&telegram), Ok(write));
+            let written = PkwResponse {
+                stations: FROM_DRIVE_1,
+                address: P43_02,
+                reply,
+            };
+            let answer = pkw(&format!("0001 {code} 2B02 0000"));
+            assert_eq!(written.encode(), answer);
+            assert_eq!(PkwResponse::decode(&answer), Ok(written));
+        }
+    }
+
+    #[test]
+    fn errors_reply_0x80_plus_the_command() {
+        let failed = PkwReply::Failed {
+            command: PkwCommand::Write,
+            error: 2,
+        };
+        let response = PkwResponse {
+            stations: FROM_DRIVE_1,
+            address: P43_02,
+            reply: failed,
+        };
+        assert_eq!(response.encode(), pkw("0001 0087 2B02 0002"));
+        assert_eq!(
+            PkwResponse::decode(&pkw("0001 0087 2B02 0002")),
+            Ok(response)
+        );
+    }
+
+    #[test]
+    fn commands_the_manual_does_not_list_are_refused() {
+        assert_eq!(
+            PkwRequest::decode(&pkw("0100 0000 0000 0000")),
+            Err(PkwDecodeError::UnknownCommand(0))
+        );
+        assert_eq!(
+            PkwRequest::decode(&pkw("0100 0083 2B02 0001")),
+            Err(PkwDecodeError::UnknownCommand(0x83))
+        );
+        assert_eq!(
+            PkwResponse::decode(&pkw("0001 0085 2B02 0001")),
+            Err(PkwDecodeError::UnknownCommand(0x85))
+        );
+        assert_eq!(
+            PkwResponse::decode(&pkw("0001 0103 2B02 0001")),
+            Err(PkwDecodeError::UnknownCommand(0x103))
+        );
+    }
+
+    #[test]
+    fn a_read_is_of_one_parameter() {
+        assert_eq!(
+            PkwRequest::decode(&pkw("0100 0003 2B02 0002")),
+            Err(PkwDecodeError::ReadCount(2))
+        );
+    }
+
+    #[test]
+    fn command_codes() {
+        for command in [
+            PkwCommand::Read,
+            PkwCommand::WriteAndStore,
+            PkwCommand::Write,
+        ] {
+            assert_eq!(PkwCommand::from_code(command.code()), Some(command));
+        }
+        assert_eq!(PkwAccess::Write { value: 0 }.command(), PkwCommand::Write);
+    }
+}

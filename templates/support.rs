@@ -1,0 +1,190 @@
+// Support code (gsdc templates/support.rs, included verbatim): the types the
+// generated items below are built from. Bus data is big-endian and copied
+// word by word, so everything here has alignment 1, the exact size it has on
+// the bus, and needs neither `unsafe` nor an allocator.
+
+/// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
+/// so a `#[repr(C)]` struct of words has no padding.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct U16Be([u8; 2]);
+
+const _: () = assert!(core::mem::align_of::<U16Be>() == 1);
+
+impl U16Be {
+    pub const fn new(value: u16) -> Self {
+        Self(value.to_be_bytes())
+    }
+
+    pub const fn get(self) -> u16 {
+        u16::from_be_bytes(self.0)
+    }
+
+    pub fn set(&mut self, value: u16) {
+        self.0 = value.to_be_bytes();
+    }
+}
+
+/// Bytes of the PKW channel at the start of a telegram that has one.
+pub const PKW_BYTES: usize = 8;
+
+/// The words at the start of `bytes`; words past its end stay zero. The
+/// telegram structs pass slices of exactly the right length.
+pub fn words<const N: usize>(bytes: &[u8]) -> [U16Be; N] {
+    let mut words = [U16Be::new(0); N];
+    for (word, pair) in words.iter_mut().zip(bytes.chunks_exact(2)) {
+        if let [high, low] = *pair {
+            *word = U16Be([high, low]);
+        }
+    }
+    words
+}
+
+/// Writes `words` to the start of `bytes`, as far as it reaches.
+pub fn put_words(bytes: &mut [u8], words: &[U16Be]) {
+    for (pair, word) in bytes.chunks_exact_mut(2).zip(words) {
+        pair.copy_from_slice(&word.0);
+    }
+}
+
+/// Bits `first..=last` of a control or status word, read as one number.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BitField {
+    first: u8,
+    last: u8,
+}
+
+impl BitField {
+    /// Checked where the generated constants are evaluated: at compile time.
+    pub const fn new(first: u8, last: u8) -> Self {
+        assert!(first <= last && last < 16);
+        Self { first, last }
+    }
+
+    /// The field's bits set, all others clear.
+    pub const fn mask(self) -> u16 {
+        (u16::MAX >> (15 - (self.last - self.first))) << self.first
+    }
+
+    /// The field's value in `word`.
+    pub const fn get(self, word: u16) -> u16 {
+        (word & self.mask()) >> self.first
+    }
+
+    /// Whether any of the field's bits is set in `word`.
+    pub const fn is_set(self, word: u16) -> bool {
+        word & self.mask() != 0
+    }
+
+    /// `word` with the field set to `value`; bits of `value` that do not fit
+    /// the field are dropped.
+    pub const fn with(self, word: u16, value: u16) -> u16 {
+        (word & !self.mask()) | ((value << self.first) & self.mask())
+    }
+}
+
+/// What a configurable mapping may hold.
+#[derive(Clone, Copy, Debug)]
+pub enum Allowed {
+    /// Any value from `min` to `max`: a parameter address.
+    Range { min: u16, max: u16 },
+    /// A value the function accepts: one of the meanings the drive knows.
+    Choices(fn(u16) -> bool),
+}
+
+impl Allowed {
+    pub fn contains(self, value: u16) -> bool {
+        match self {
+            Allowed::Range { min, max } => (min..=max).contains(&value),
+            Allowed::Choices(is_choice) => is_choice(value),
+        }
+    }
+}
+
+/// One configurable mapping: what a PZD word or a DPV1 index carries, or a
+/// setting; one Unsigned16 in the parameter telegram and in its record.
+#[derive(Clone, Copy, Debug)]
+pub struct Mapping {
+    /// As the device files name it.
+    pub name: &'static str,
+    /// The PZD word (from 1), record index or setting it configures.
+    pub number: u8,
+    pub default: u16,
+    /// The drive parameter that holds it, when the drive has one.
+    pub parameter: Option<u16>,
+    pub allowed: Allowed,
+}
+
+/// The defaults of `mappings`, in order.
+pub const fn defaults<const N: usize>(mappings: &[Mapping; N]) -> [u16; N] {
+    let mut values = [0; N];
+    let mut i = 0;
+    while i < N {
+        values[i] = mappings[i].default;
+        i += 1;
+    }
+    values
+}
+
+/// Why a parameter telegram or record was refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PrmError {
+    /// It is `found` bytes long; it must be `expected`.
+    Length { expected: usize, found: usize },
+    /// The value at byte `offset` is not one its mapping allows.
+    NotAllowed { offset: usize, value: u16 },
+}
+
+/// Refuses `bytes` unless it is exactly `len` long.
+pub fn check_len(bytes: &[u8], len: usize) -> Result<(), PrmError> {
+    if bytes.len() == len {
+        Ok(())
+    } else {
+        Err(PrmError::Length {
+            expected: len,
+            found: bytes.len(),
+        })
+    }
+}
+
+/// The `N` bytes at `offset`.
+pub fn read_bytes<const N: usize>(bytes: &[u8], offset: usize) -> Result<[u8; N], PrmError> {
+    // Saturating: an offset near usize::MAX is refused, not a panic.
+    let end = offset.saturating_add(N);
+    let found = bytes.get(offset..end).and_then(|b| b.try_into().ok());
+    found.ok_or(PrmError::Length {
+        expected: end,
+        found: bytes.len(),
+    })
+}
+
+/// The values of `mappings`, one Unsigned16 each from `offset` on, each one
+/// checked against what its mapping allows.
+pub fn read_values<const N: usize>(
+    bytes: &[u8],
+    offset: usize,
+    mappings: &[Mapping; N],
+) -> Result<[u16; N], PrmError> {
+    let mut values = [0; N];
+    for (i, (value, mapping)) in values.iter_mut().zip(mappings).enumerate() {
+        let at = offset.saturating_add(2 * i);
+        *value = u16::from_be_bytes(read_bytes(bytes, at)?);
+        if !mapping.allowed.contains(*value) {
+            return Err(PrmError::NotAllowed {
+                offset: at,
+                value: *value,
+            });
+        }
+    }
+    Ok(values)
+}
+
+/// The values of a PROFINET parameter record: exactly one Unsigned16 per
+/// mapping, each checked.
+pub fn read_record<const N: usize>(
+    bytes: &[u8],
+    mappings: &[Mapping; N],
+) -> Result<[u16; N], PrmError> {
+    check_len(bytes, 2 * N)?;
+    read_values(bytes, 0, mappings)
+}
