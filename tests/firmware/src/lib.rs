@@ -1,0 +1,17 @@
+//! The firmware layouts of the shipped descriptions, as firmware includes
+//! them: no_std, and any warning an error.
+
+#![no_std]
+#![deny(warnings)]
+
+pub mod md810dp {
+    include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
+}
+
+pub mod mv810_pnet02 {
+    include!(concat!(env!("OUT_DIR"), "/mv810_pnet02_layout.rs"));
+}
+
+pub mod powtran_9kdp1 {
+    include!(concat!(env!("OUT_DIR"), "/9kdp1_layout.rs"));
+}

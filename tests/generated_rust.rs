@@ -1,0 +1,98 @@
+//! The firmware layouts gsdc writes for the shipped descriptions: snapshots
+//! reviewed against the manuals, formatted as rustfmt formats them, and
+//! compiled, linted and run in the no_std crate `tests/firmware`.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+
+/// The layout artifact of a shipped description: its file name and text.
+fn layout(name: &str) -> (String, String) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("descriptions")
+        .join(name);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let (ir, diagnostics) = gsdc::load(name, &text);
+    assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
+    let artifacts = gsdc::compile(&ir.unwrap()).unwrap();
+    let layout = artifacts
+        .into_iter()
+        .find(|a| a.file_name.ends_with("_layout.rs"))
+        .expect("a layout artifact");
+    (
+        layout.file_name,
+        String::from_utf8(layout.contents).unwrap(),
+    )
+}
+
+/// A directory of this test's own under the target directory.
+fn scratch_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn md810dp_layout_snapshot() {
+    insta::assert_snapshot!("md810dp_layout.rs", layout("md810dp.toml").1);
+}
+
+#[test]
+fn mv810_pnet02_layout_snapshot() {
+    insta::assert_snapshot!("mv810_pnet02_layout.rs", layout("mv810-pnet02.toml").1);
+}
+
+#[test]
+fn powtran_9kdp1_layout_snapshot() {
+    insta::assert_snapshot!("9kdp1_layout.rs", layout("9kdp1.toml").1);
+}
+
+/// Each layout is exactly what rustfmt makes of it. The files are checked
+/// in a directory of their own, so no rustfmt.toml of the project applies.
+#[test]
+fn layouts_are_formatted_as_rustfmt_formats_them() {
+    let dir = scratch_dir("rustfmt-check");
+    for name in DESCRIPTIONS {
+        let (file_name, text) = layout(name);
+        let path = dir.join(&file_name);
+        std::fs::write(&path, text).unwrap();
+        let output = Command::new("rustfmt")
+            .args(["--check", "--edition", "2021"])
+            .arg(&path)
+            .output()
+            .expect("rustfmt runs");
+        assert!(
+            output.status.success(),
+            "{file_name} is not formatted as rustfmt formats it:\n{}{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+}
+
+/// `cargo test` and `cargo clippy -- -D warnings` in `tests/firmware`, whose
+/// build script generates every layout with gsdc's build-script API.
+#[test]
+fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
+    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/firmware");
+    let target_dir = scratch_dir("firmware-target");
+    for args in [
+        &["test", "--quiet"][..],
+        &["clippy", "--quiet", "--all-targets", "--", "-D", "warnings"],
+    ] {
+        let output = Command::new(env!("CARGO"))
+            .args(args)
+            .current_dir(&crate_dir)
+            .env("CARGO_TARGET_DIR", &target_dir)
+            .output()
+            .expect("cargo runs");
+        assert!(
+            output.status.success(),
+            "cargo {} in tests/firmware failed:\n{}{}",
+            args.join(" "),
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+}
