@@ -31,10 +31,10 @@ pub struct Diagnostic {
     /// Byte range in the source the diagnostic is about, if it is about a place.
     pub span: Option<Range<usize>>,
     /// Short text printed under the caret.
-    pub label: Option<String>,
-    pub help: Option<String>,
+    pub label: Option<Box<str>>,
+    pub help: Option<Box<str>>,
     /// The GSD keyword or GSDML element the diagnostic is about, for tools.
-    pub subject: Option<String>,
+    pub subject: Option<Box<str>>,
 }
 
 impl Diagnostic {
@@ -69,17 +69,17 @@ impl Diagnostic {
     }
 
     pub fn label(mut self, label: impl Into<String>) -> Self {
-        self.label = Some(label.into());
+        self.label = Some(label.into().into_boxed_str());
         self
     }
 
     pub fn help(mut self, help: impl Into<String>) -> Self {
-        self.help = Some(help.into());
+        self.help = Some(help.into().into_boxed_str());
         self
     }
 
     pub fn subject(mut self, subject: impl Into<String>) -> Self {
-        self.subject = Some(subject.into());
+        self.subject = Some(subject.into().into_boxed_str());
         self
     }
 
@@ -122,7 +122,11 @@ impl Diagnostics {
     pub fn name_subjects(&mut self, subject_at: impl Fn(usize) -> Option<String>) {
         for d in &mut self.0 {
             if d.subject.is_none() {
-                d.subject = d.span.as_ref().and_then(|span| subject_at(span.start));
+                d.subject = d
+                    .span
+                    .as_ref()
+                    .and_then(|span| subject_at(span.start))
+                    .map(String::into_boxed_str);
             }
         }
     }
@@ -250,7 +254,7 @@ impl Source<'_> {
             }
             None => ("null".into(), "null".into()),
         };
-        let optional = |s: &Option<String>| s.as_deref().map_or("null".into(), json_string);
+        let optional = |s: &Option<Box<str>>| s.as_deref().map_or("null".into(), json_string);
         format!(
             "{{\"file\":{},\"line\":{line},\"column\":{column},\"severity\":\"{}\",\"code\":\"{}\",\"subject\":{},\"message\":{},\"label\":{},\"help\":{}}}",
             json_string(self.name),

@@ -400,10 +400,18 @@ fn broken_generated_files_are_rejected_with_their_rule() {
             .map(|d| d.code)
             .collect()
     };
-    assert_eq!(codes(&text), Vec::<&str>::new(), "the generated file is clean");
+    assert_eq!(
+        codes(&text),
+        Vec::<&str>::new(),
+        "the generated file is clean"
+    );
 
     let duplicated = mutate(&text, "ID=\"IDM_PZD_1\"", "ID=\"IDM_PZD_2\"");
-    assert!(codes(&duplicated).contains(&"E306"), "{:?}", codes(&duplicated));
+    assert!(
+        codes(&duplicated).contains(&"E306"),
+        "{:?}",
+        codes(&duplicated)
+    );
 
     let primary = text.find("<PrimaryLanguage>").unwrap();
     let text_id = "<Text TextId=\"IDT_DEVICE_NAME\"";

@@ -101,7 +101,9 @@ fn generated_gsdml_validates_against_the_pi_schema() {
         let path = entry.unwrap().path();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         let text = std::fs::read_to_string(&path).unwrap();
-        let ir = gsdc::load(&name, &text).0.unwrap_or_else(|| panic!("{name} loads"));
+        let ir = gsdc::load(&name, &text)
+            .0
+            .unwrap_or_else(|| panic!("{name} loads"));
         for artifact in gsdc::compile(&ir).unwrap() {
             if artifact.file_name.ends_with(".xml") {
                 let xml = String::from_utf8(artifact.contents).unwrap();

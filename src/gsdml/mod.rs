@@ -58,24 +58,11 @@ fn element_at(text: &str, offset: usize) -> Option<String> {
             end = open;
             continue;
         }
-        let name = rest.split(|c: char| c.is_whitespace() || c == '/' || c == '>').next()?;
+        let name = rest
+            .split(|c: char| c.is_whitespace() || c == '/' || c == '>')
+            .next()?;
         let local = name.rsplit(':').next()?;
         return (!local.is_empty()).then(|| local.to_string());
-    }
-}
-
-#[cfg(test)]
-mod subject_tests {
-    use super::element_at;
-
-    #[test]
-    fn the_subject_is_the_enclosing_start_tag() {
-        let text = "<a:Root>\n  <ModuleItemRef ModuleItemTarget=\"IDM_X\"/>\n</a:Root>";
-        let at = text.find("IDM_X").unwrap();
-        assert_eq!(element_at(text, at).as_deref(), Some("ModuleItemRef"));
-        assert_eq!(element_at(text, 1).as_deref(), Some("Root"));
-        assert_eq!(element_at(text, text.len() - 1).as_deref(), Some("ModuleItemRef"));
-        assert_eq!(element_at("no tags", 3), None);
     }
 }
 
@@ -104,4 +91,22 @@ fn check_document(
 struct Ctx<'a, 'input> {
     idx: Index<'a, 'input>,
     version: Version,
+}
+
+#[cfg(test)]
+mod subject_tests {
+    use super::element_at;
+
+    #[test]
+    fn the_subject_is_the_enclosing_start_tag() {
+        let text = "<a:Root>\n  <ModuleItemRef ModuleItemTarget=\"IDM_X\"/>\n</a:Root>";
+        let at = text.find("IDM_X").unwrap();
+        assert_eq!(element_at(text, at).as_deref(), Some("ModuleItemRef"));
+        assert_eq!(element_at(text, 1).as_deref(), Some("Root"));
+        assert_eq!(
+            element_at(text, text.len() - 1).as_deref(),
+            Some("ModuleItemRef")
+        );
+        assert_eq!(element_at("no tags", 3), None);
+    }
 }
