@@ -136,7 +136,7 @@ struct ProfinetItems {
     interface_subslot: String,
     first_port_subslot: String,
     ports: u8,
-    module_slot: u8,
+    module_slot: u16,
     modules: Vec<PnModule>,
 }
 
@@ -425,7 +425,7 @@ fn group(ir: &Ir, g: &SetsOfKind) -> Group {
             .profinet
             .iter()
             .flat_map(|p| &p.records)
-            .find(|r| r.sets == g.sets)
+            .find(|r| r.kind == g.kind)
             .map(|r| r.index),
     }
 }

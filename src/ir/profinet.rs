@@ -40,11 +40,13 @@ impl Date {
 
 /// The device access point's ModuleIdentNumber and its submodule's.
 pub const DAP_IDENT: u32 = 0x0000_0001;
-/// Subslots of the interface and of its first port (IEC 61158-6-10).
+/// Subslots of the interface and of its first port (IEC 61158-6-10). They
+/// are also the submodule ident numbers of the interface and the ports, as
+/// p-net does it, so firmware and GSDML share one number for each.
 pub const INTERFACE_SUBSLOT: u16 = 0x8000;
 pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
 /// The slot modules are plugged into; the DAP is in slot 0.
-pub const MODULE_SLOT: u8 = 1;
+pub const MODULE_SLOT: u16 = 1;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ModuleKind {
@@ -78,9 +80,11 @@ impl Module {
 }
 
 /// A parameter record: one Unsigned16 Ref per entry of the mapping sets it
-/// holds, in order, at byte offsets 0, 2, 4, ...
+/// holds, in order, at byte offsets 0, 2, 4, ... There is one record per
+/// kind of mapping, holding every set of that kind.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ParameterRecord {
+    pub kind: super::MappingKind,
     pub index: u16,
     /// Indexes into `Ir::mappings`.
     pub sets: Vec<usize>,

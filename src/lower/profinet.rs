@@ -272,7 +272,7 @@ fn records(
                         .help("give each record its own index under [profinet.records]"),
                 );
             }
-            Some(ParameterRecord { index, sets })
+            Some(ParameterRecord { kind, index, sets })
         })
         .collect()
 }
