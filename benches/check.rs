@@ -3,8 +3,9 @@
 //!
 //! - GSD corpus: `gsdc::gsd::check` (reader, schema, rules) against
 //!   `gsd_parser::parser::parse` (reader only), in process.
-//! - GSDML corpus: `gsdc check` against `xmllint --noout --nonet --schema`
-//!   with the PI schema, both as processes on all files at once.
+//! - GSDML corpus: `gsdc check` (without and with `--xsd`) against
+//!   `xmllint --noout --nonet --schema` with the PI schema, all as processes
+//!   on all files at once.
 //! - `gsdc build descriptions/md810dp.toml` (every output, each verified)
 //!   against xmllint validating only the GSDML that build writes.
 //!
@@ -51,6 +52,19 @@ fn main() {
     report(
         &format!("GSDML corpus ({} files)", gsdml_files.len()),
         ("gsdc check", gsdc_gsdml),
+        ("xmllint --schema", xmllint_gsdml),
+    );
+    let schema_dir = Path::new(&schema).parent().unwrap();
+    let gsdc_xsd = median(|| {
+        run(Command::new(GSDC)
+            .arg("check")
+            .arg("--xsd")
+            .arg(schema_dir)
+            .args(&gsdml_files))
+    });
+    report(
+        &format!("GSDML corpus ({} files), with the schema", gsdml_files.len()),
+        ("gsdc check --xsd", gsdc_xsd),
         ("xmllint --schema", xmllint_gsdml),
     );
 

@@ -38,3 +38,5 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
     emit::compile(ir)
 }
 pub mod output;
+#[cfg(feature = "xsd")]
+pub mod xsd;

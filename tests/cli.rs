@@ -278,3 +278,39 @@ fn check_json_lines_have_the_documented_fields_in_argument_order() {
         "{lines:#?}"
     );
 }
+
+/// `--xsd DIR` adds the PI schema's findings (E399) to gsdc's own rules.
+#[test]
+fn check_xsd_adds_the_schemas_findings() {
+    let schema = "../shared/reference/gsdml-xsd-v2.44";
+    let broken = "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml";
+    let with_schema = gsdc(&["check", "--xsd", schema, broken]);
+    assert_eq!(with_schema.status.code(), Some(1));
+    let findings = stdout(&with_schema);
+    assert!(findings.contains("error[E309]"), "{findings}");
+    assert!(
+        findings.contains("error[E399]") && findings.contains("UInt8"),
+        "{findings}"
+    );
+    assert!(
+        !stdout(&gsdc(&["check", broken])).contains("E399"),
+        "no schema unless asked"
+    );
+
+    let generated = scratch("xsd");
+    let build = gsdc(&[
+        "build",
+        "descriptions/mv810-pnet02.toml",
+        "--out",
+        generated.to_str().unwrap(),
+    ]);
+    assert_eq!(build.status.code(), Some(0));
+    let gsdml = generated.join("GSDML-V2.32-MEGMEET-MV800-20230830.xml");
+    let clean = gsdc(&["check", "--xsd", schema, gsdml.to_str().unwrap()]);
+    assert_eq!(clean.status.code(), Some(0), "{}", stdout(&clean));
+
+    let missing = gsdc(&["check", "--xsd", "/no/such/dir", broken]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(stderr(&missing).contains("GSDML-DeviceProfile-v2.44.xsd is missing"));
+    std::fs::remove_dir_all(generated).unwrap();
+}

@@ -24,14 +24,67 @@ enum Report {
     Unreadable(String),
 }
 
-pub fn run(files: &[PathBuf], format: Format) -> Status {
-    let reports = check_all(files);
+pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
+    // The schema, when asked for, is checked on a thread of its own beside
+    // the rules (libxml2's contexts must stay on one thread).
+    let (mut reports, schema) = std::thread::scope(|scope| {
+        let schema = xsd.map(|dir| scope.spawn(move || schema_findings(files, dir)));
+        let reports = check_all(files);
+        let schema = schema.map(|thread| {
+            thread
+                .join()
+                .unwrap_or_else(|_| Err("the schema check failed".into()))
+        });
+        (reports, schema)
+    });
+    match schema {
+        Some(Err(why)) => {
+            eprintln!("error: --xsd: {why}");
+            return Status::UsageOrIo;
+        }
+        Some(Ok(findings)) => add_schema_findings(&mut reports, findings),
+        None => {}
+    }
     files
         .iter()
         .zip(reports)
         .map(|(path, report)| print(&display_name(path), report, format))
         .max()
         .unwrap_or(Status::Ok)
+}
+
+fn add_schema_findings(reports: &mut [Report], findings: Vec<Diagnostics>) {
+    for (report, found) in reports.iter_mut().zip(findings) {
+        if let Report::Checked { diagnostics, .. } = report {
+            diagnostics.extend(found);
+        }
+    }
+}
+
+/// The PI schema's findings for each GSDML file (none for other files).
+#[cfg(feature = "xsd")]
+fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, String> {
+    let mut schema = gsdc::xsd::Schema::load(dir)?;
+    Ok(files
+        .iter()
+        .map(|path| {
+            let bytes = std::fs::read(path).unwrap_or_default();
+            match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
+                (true, Ok(text)) => schema.validate(&text),
+                _ => Diagnostics::default(), // unreadable: the rules say so
+            }
+        })
+        .collect())
+}
+
+#[cfg(not(feature = "xsd"))]
+fn schema_findings(_: &[PathBuf], _: &Path) -> Result<Vec<Diagnostics>, String> {
+    Err("this gsdc was built without the `xsd` feature: build it with `--features xsd`".into())
+}
+
+fn is_gsdml(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
 }
 
 /// Checks every file on as many threads as the machine has cores, keeping
@@ -73,10 +126,7 @@ fn check_one(path: &Path) -> Report {
 
 /// GSDML by its `.xml` extension, GSD otherwise.
 fn check_bytes(path: &Path, bytes: &[u8]) -> (String, Diagnostics) {
-    let is_xml = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("xml"));
-    if is_xml {
+    if is_gsdml(path) {
         // UTF-8, or ISO-8859-1 when the XML declaration says so.
         let text = match gsdc::gsdml::decode(bytes) {
             Ok(text) => text.into_owned(),

@@ -47,6 +47,10 @@ enum Command {
         /// How findings are printed.
         #[arg(long, value_enum, default_value = "human")]
         format: check::Format,
+        /// Also validate GSDML files against the PI schema in DIR
+        /// (GSDML-DeviceProfile-v2.44.xsd and its imports; needs the `xsd` feature).
+        #[arg(long, value_name = "DIR")]
+        xsd: Option<PathBuf>,
     },
 }
 
@@ -71,7 +75,7 @@ pub fn run(cli: Cli) -> Status {
             out,
             check,
         } => build::run(&descriptions, &out, check),
-        Command::Check { files, format } => check::run(&files, format),
+        Command::Check { files, format, xsd } => check::run(&files, format, xsd.as_deref()),
     }
 }
 
