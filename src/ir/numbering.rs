@@ -73,7 +73,7 @@ impl Numbering {
 }
 
 fn parse_digits(text: &str, radix: u32) -> Option<u32> {
-    if text.is_empty() || text.len() > 3 {
+    if text.is_empty() || text.len() > 3 || !(2..=36).contains(&radix) {
         return None;
     }
     u32::from_str_radix(text, radix).ok()
@@ -104,6 +104,12 @@ mod tests {
         let n = Numbering::new(".".into(), 10, vec![("P".into(), 0)]);
         assert_eq!(n.parse("P43.02"), Ok(0x2B02));
         assert_eq!(n.format(0x2B02).as_deref(), Some("P43.02"));
+    }
+
+    #[test]
+    fn a_radix_no_number_system_has_is_an_error_not_a_panic() {
+        let n = Numbering::new(".".into(), 54, vec![("P".into(), 0)]);
+        assert!(n.parse("P43.02").is_err());
     }
 
     #[test]

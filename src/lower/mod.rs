@@ -96,7 +96,8 @@ fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
 }
 
 fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
-    if ![10, 16].contains(f.group_radix.get_ref()) {
+    let radix = *f.group_radix.get_ref();
+    if ![10, 16].contains(&radix) {
         cx.push(
             Diagnostic::error("E101", "group_radix must be 10 or 16")
                 .at(f.group_radix.span())
@@ -119,11 +120,9 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
         .iter()
         .map(|(p, base)| (p.get_ref().clone(), *base.get_ref()))
         .collect();
-    Numbering::new(
-        f.separator.get_ref().clone(),
-        *f.group_radix.get_ref(),
-        prefixes,
-    )
+    // A wrong radix was reported above; 16 only keeps names from failing twice.
+    let radix = if radix == 10 { 10 } else { 16 };
+    Numbering::new(f.separator.get_ref().clone(), radix, prefixes)
 }
 
 /// An address written as a number or a function-code name, as u16.
