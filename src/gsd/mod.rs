@@ -46,6 +46,8 @@ pub fn parse(text: &str) -> (GsdFile, Diagnostics) {
 pub fn check(text: &str) -> Diagnostics {
     let (file, mut diags) = parse(text);
     diags.extend(rules::check(&file));
+    // Stable sort: file-wide findings first, the rest in file order.
+    diags.0.sort_by_key(|d| d.span.as_ref().map(|s| s.start));
     diags.name_subjects(|offset| keyword_at(text, offset));
     diags
 }

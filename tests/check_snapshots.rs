@@ -1,0 +1,38 @@
+//! What `gsdc check` says about a handful of real vendor files, rendered as
+//! a user sees it. Each snapshot was read against the file it is about.
+
+use gsdc::Source;
+
+const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
+
+fn findings(folder: &str, name: &str) -> String {
+    let path = format!("{CORPUS}/{folder}/{name}");
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
+    let (text, diagnostics) = if name.ends_with(".xml") {
+        let text = gsdc::gsdml::decode(&bytes).unwrap().into_owned();
+        let diagnostics = gsdc::gsdml::check(&text, Some(name));
+        (text, diagnostics)
+    } else {
+        let text = gsdc::gsd::decode(&bytes).into_owned();
+        let diagnostics = gsdc::gsd::check(&text);
+        (text, diagnostics)
+    };
+    let source = Source { name, text: &text };
+    diagnostics.iter().map(|d| source.render(d)).collect()
+}
+
+#[test]
+fn findings_of_real_files() {
+    let files = [
+        ("gsd", "mbuesch__dummy_compact.gsd"),
+        ("gsd", "ivangre4__SI028131.GSD"),
+        ("gsd", "siamect__abb_acs880_pb_slave.gsd"),
+        ("gsd", "joao404__STM32F1002A.gsd"),
+        ("gsdml", "GSDML-V2.33-ABB-FENA-20170914.xml"),
+        ("gsdml", "GSDML-V2.4-RT-Labs-P-Net-Sample-App-20210507.xml"),
+        ("gsdml-invalid", "neg_dup_module_id.xml"),
+    ];
+    for (folder, name) in files {
+        insta::assert_snapshot!(format!("check__{name}"), findings(folder, name));
+    }
+}
