@@ -63,7 +63,10 @@ fn main() {
             .args(&gsdml_files))
     });
     report(
-        &format!("GSDML corpus ({} files), with the schema", gsdml_files.len()),
+        &format!(
+            "GSDML corpus ({} files), with the schema",
+            gsdml_files.len()
+        ),
         ("gsdc check --xsd", gsdc_xsd),
         ("xmllint --schema", xmllint_gsdml),
     );
