@@ -335,6 +335,15 @@ fn diagnosis_area(cx: &mut Checker, a: &raw::DiagnosisArea, bits: i64) -> Option
         );
         return None;
     }
+    if a.values.is_empty() {
+        cx.push(
+            Diagnostic::error("E125", "a diagnosis area without values")
+                .at(a.bit.span())
+                .label("no text for any value of these bits")
+                .help("give each value a text: values = [{ value = 0x34, text = \"...\" }]; or drop the area"),
+        );
+        return None;
+    }
     let max_value = (1i64 << (range.last - range.first + 1)) - 1;
     Some(DiagnosisArea {
         first_bit: range.first as u16,
