@@ -7,7 +7,8 @@ const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
 
 fn findings(folder: &str, name: &str) -> String {
     let path = format!("{CORPUS}/{folder}/{name}");
-    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
+    let bytes =
+        std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
     let (text, diagnostics) = if name.ends_with(".xml") {
         let text = gsdc::gsdml::decode(&bytes).unwrap().into_owned();
         let diagnostics = gsdc::gsdml::check(&text, Some(name));
