@@ -217,20 +217,20 @@ impl Source<'_> {
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
         let _ = writeln!(out, "{pad}--> {}:{line}:{column}", self.name);
-        let line_text = self.text.lines().nth(line - 1).unwrap_or("");
-        let line_text = line_text.trim_end_matches('\r');
-        let line_chars = line_text.chars().count();
         let start = floor_char_boundary(self.text, span.start.min(self.text.len()));
         let end = floor_char_boundary(self.text, span.end.min(self.text.len())).max(start);
-        let span_chars = self.text[start..end]
-            .split('\n')
-            .next()
-            .unwrap_or("")
+        let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = self.text[start..]
+            .find('\n')
+            .map_or(self.text.len(), |i| start + i);
+        let line_text: Vec<char> = self.text[line_start..line_end]
+            .trim_end_matches('\r')
             .chars()
-            .count();
-        let width = span_chars.clamp(1, (line_chars + 1).saturating_sub(column - 1).max(1));
+            .collect();
+        let span_chars = self.text[start..end.min(line_end)].chars().count().max(1);
+        let (shown, caret_at, width) = window(&line_text, column - 1, span_chars);
         let _ = writeln!(out, "{pad} |");
-        let _ = writeln!(out, "{line} | {}", printable(line_text));
+        let _ = writeln!(out, "{line} | {}", printable(&shown));
         let label = diagnostic
             .label
             .as_deref()
@@ -239,7 +239,7 @@ impl Source<'_> {
         let _ = writeln!(
             out,
             "{pad} | {}{}{label}",
-            " ".repeat(column - 1),
+            " ".repeat(caret_at),
             "^".repeat(width)
         );
         pad
@@ -266,6 +266,34 @@ impl Source<'_> {
             optional(&diagnostic.help),
         )
     }
+}
+
+/// Characters of a source line shown at most, so that a megabyte-long line
+/// does not print a megabyte per diagnostic.
+const MAX_SHOWN_LINE: usize = 120;
+
+/// The part of `line` to show around a span at `column` (0-based, in
+/// characters) of `span_chars` characters: the line itself when it is short,
+/// else a window with `...` where it was cut. Returns the text, the caret's
+/// column in it and the caret's width.
+fn window(line: &[char], column: usize, span_chars: usize) -> (String, usize, usize) {
+    let column = column.min(line.len());
+    let width = span_chars.min(line.len().saturating_sub(column).max(1));
+    if line.len() <= MAX_SHOWN_LINE {
+        return (line.iter().collect(), column, width);
+    }
+    let first = column.saturating_sub(MAX_SHOWN_LINE / 3);
+    let last = (first + MAX_SHOWN_LINE).min(line.len());
+    let mut shown = String::new();
+    if first > 0 {
+        shown.push_str("...");
+    }
+    shown.extend(&line[first..last]);
+    if last < line.len() {
+        shown.push_str("...");
+    }
+    let caret_at = column - first + if first > 0 { 3 } else { 0 };
+    (shown, caret_at, width.min(last - column).max(1))
 }
 
 /// Tabs become one space and control characters a `?`, so carets line up.
@@ -328,6 +356,27 @@ mod tests {
             rendered,
             "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
         );
+    }
+
+    #[test]
+    fn a_long_line_shows_a_window_around_the_span() {
+        let text = format!(
+            "key = [{}\"PPO7\"{}]\n",
+            "\"PPO1\", ".repeat(10_000),
+            ", \"PPO2\"".repeat(10_000)
+        );
+        let start = text.find("PPO7").unwrap() - 1;
+        let d = Diagnostic::error("E104", "not a PPO type").at(start..start + 6);
+        let rendered = Source {
+            name: "x.toml",
+            text: &text,
+        }
+        .render(&d);
+        assert!(rendered.len() < 600, "{rendered}");
+        let lines: Vec<&str> = rendered.lines().collect();
+        let caret = lines[4].find('^').unwrap();
+        assert_eq!(&lines[3][caret..caret + 6], "\"PPO7\"", "{rendered}");
+        assert!(lines[3].contains("...") && lines[3].ends_with("..."));
     }
 
     #[test]

@@ -314,3 +314,46 @@ fn check_xsd_adds_the_schemas_findings() {
     assert!(stderr(&missing).contains("GSDML-DeviceProfile-v2.44.xsd is missing"));
     std::fs::remove_dir_all(generated).unwrap();
 }
+
+/// A description with a hundred thousand errors on one 800 KB line: the
+/// first hundred are shown, each with a window of the line, and the rest
+/// counted; the output stays small and the run short.
+#[test]
+fn a_hostile_description_gives_bounded_output() {
+    let dir = scratch("hostile");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("ppo.toml");
+    let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    let many = vec!["\"PPO9\""; 100_000].join(", ");
+    let hostile = text.replace(
+        "ppo_types = [\"PPO1\", \"PPO2\", \"PPO3\", \"PPO4\", \"PPO5\"]",
+        &format!("ppo_types = [{many}]"),
+    );
+    assert_ne!(hostile, text);
+    std::fs::write(&path, hostile).unwrap();
+    let started = std::time::Instant::now();
+    let output = gsdc(&[
+        "build",
+        path.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    // The bound catches a hang or quadratic output, not speed.
+    assert!(started.elapsed().as_secs() < 20, "{:?}", started.elapsed());
+    let errors = stderr(&output);
+    // The placeholder warning, then 99 of the 100,000 E104s; the PROFINET
+    // placeholder warnings come after them and are counted among the rest.
+    assert_eq!(errors.matches("error[E104]").count(), 99);
+    assert!(
+        errors.contains("99903 more finding(s) not shown"),
+        "{}",
+        &errors[errors.len() - 300..]
+    );
+    assert!(
+        errors.len() < 100_000,
+        "{} bytes of diagnostics",
+        errors.len()
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -2,7 +2,7 @@
 //! and compiled before anything is written, so an error in one leaves the
 //! output directory as it was.
 
-use super::{display_name, report, Status};
+use super::{display_name, report, say, Status};
 use gsdc::output::{is_up_to_date, write_if_changed, Outcome};
 use gsdc::{Artifact, Diagnostic, Diagnostics};
 use std::path::{Path, PathBuf};
@@ -36,7 +36,7 @@ fn check_all(artifacts: &[Artifact], out: &Path) -> Status {
             Ok(true) => {}
             Ok(false) => {
                 let existing = std::fs::read(&path).unwrap_or_default();
-                print!("{}", unified_diff(&path, &existing, &artifact.contents));
+                say(unified_diff(&path, &existing, &artifact.contents).trim_end());
                 status = status.max(Status::InputErrors);
             }
             Err(e) => {
@@ -109,8 +109,8 @@ fn write_all(artifacts: &[Artifact], out: &Path) -> Status {
     for artifact in artifacts {
         let path = out.join(&artifact.file_name);
         match write_if_changed(out, &artifact.file_name, &artifact.contents) {
-            Ok(Outcome::Written) => println!("wrote {}", path.display()),
-            Ok(Outcome::Unchanged) => println!("unchanged {}", path.display()),
+            Ok(Outcome::Written) => say(&format!("wrote {}", path.display())),
+            Ok(Outcome::Unchanged) => say(&format!("unchanged {}", path.display())),
             Err(e) => {
                 eprintln!("error: cannot write {}: {e}", path.display());
                 return Status::UsageOrIo;

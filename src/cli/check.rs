@@ -1,7 +1,7 @@
 //! `gsdc check`: GSD and GSDML files against gsdc's rules. Files are checked
 //! in parallel; what is printed follows the order of the arguments.
 
-use super::{display_name, Status};
+use super::{display_name, say, say_how_many_not_shown, Status, MAX_SHOWN};
 use gsdc::{Diagnostics, Source};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -158,19 +158,21 @@ fn print(name: &str, report: Report, format: Format) -> Status {
     let source = Source { name, text: &text };
     let errors = diagnostics.errors().count();
     let warnings = diagnostics.iter().count() - errors;
+    let shown = diagnostics.iter().take(MAX_SHOWN);
     match format {
         Format::Human => {
-            for d in diagnostics.iter() {
-                println!("{}", source.render(d));
+            for d in shown {
+                say(&source.render(d));
             }
-            println!("{name}: {errors} error(s), {warnings} warning(s)");
+            say(&format!("{name}: {errors} error(s), {warnings} warning(s)"));
         }
         Format::Json => {
-            for d in diagnostics.iter() {
-                println!("{}", source.to_json(d));
+            for d in shown {
+                say(&source.to_json(d));
             }
         }
     }
+    say_how_many_not_shown(name, &diagnostics);
     if errors > 0 {
         Status::InputErrors
     } else {

@@ -79,12 +79,31 @@ pub fn run(cli: Cli) -> Status {
     }
 }
 
-/// Prints each diagnostic to stderr, rendered against its source.
+/// Diagnostics printed per file at most: a hostile file can have a hundred
+/// thousand findings, and the first hundred say what is wrong.
+const MAX_SHOWN: usize = 100;
+
+/// Prints the first [`MAX_SHOWN`] diagnostics to stderr, rendered against their source.
 fn report(name: &str, text: &str, diagnostics: &Diagnostics) {
     let source = Source { name, text };
-    for d in diagnostics.iter() {
+    for d in diagnostics.iter().take(MAX_SHOWN) {
         eprintln!("{}", source.render(d));
     }
+    say_how_many_not_shown(name, diagnostics);
+}
+
+fn say_how_many_not_shown(name: &str, diagnostics: &Diagnostics) {
+    let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
+    if hidden > 0 {
+        eprintln!("{name}: {hidden} more finding(s) not shown");
+    }
+}
+
+/// Prints a line to stdout. A reader that went away (`gsdc check ... | head`)
+/// is no reason to panic, nor to stop writing files.
+fn say(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stdout(), "{line}");
 }
 
 /// A path as diagnostics show it.
