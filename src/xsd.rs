@@ -65,31 +65,71 @@ impl Schema {
         };
         match self.context.validate_document(&document) {
             Ok(()) => Diagnostics::default(),
-            Err(errors) => Diagnostics(errors.iter().map(|e| schema_error(text, e)).collect()),
+            Err(errors) => schema_errors(text, &errors),
         }
     }
 }
 
-fn schema_error(text: &str, error: &StructuredError) -> Diagnostic {
+impl Schema {
+    /// Validates the file at `path` as libxml2 streams it, which is what
+    /// xmllint does and faster than building a tree; `text` is the file
+    /// decoded, for placing the findings. A file with a DTD is not handed to
+    /// libxml2 at all (gsdc's own rules refuse it, E300): no entity is ever
+    /// expanded or fetched.
+    pub fn validate_file(&mut self, path: &Path, text: &str) -> Diagnostics {
+        if text.contains("<!DOCTYPE") || text.contains("<!ENTITY") {
+            return Diagnostics::default();
+        }
+        let Some(path) = path.to_str() else {
+            return self.validate(text);
+        };
+        match self.context.validate_file(path) {
+            Ok(()) => Diagnostics::default(),
+            Err(errors) => schema_errors(text, &errors),
+        }
+    }
+}
+
+fn schema_errors(text: &str, errors: &[StructuredError]) -> Diagnostics {
+    let lines = LineStarts::of(text);
+    Diagnostics(errors.iter().map(|e| schema_error(&lines, e)).collect())
+}
+
+fn schema_error(lines: &LineStarts, error: &StructuredError) -> Diagnostic {
     let span = error
         .line
         .and_then(|line| usize::try_from(line).ok())
-        .and_then(|line| line_span(text, line));
+        .and_then(|line| lines.span(line));
     Diagnostic::error("E399", message(error).to_string())
         .at_opt(span)
         .label("not valid against the PI schema")
         .help("the PI GSDML schema V2.44 rejects this; see its documentation of the element")
 }
 
-/// The byte range of 1-based line `line`, without its line end.
-fn line_span(text: &str, line: usize) -> Option<std::ops::Range<usize>> {
-    let start = if line <= 1 {
-        0
-    } else {
-        text.match_indices('\n').nth(line - 2)?.0 + 1
-    };
-    let end = text[start..].find('\n').map_or(text.len(), |i| start + i);
-    Some(start..end)
+/// Where each line starts, found once per file: a file the schema rejects
+/// may have hundreds of findings.
+struct LineStarts<'a> {
+    text: &'a str,
+    starts: Vec<usize>,
+}
+
+impl<'a> LineStarts<'a> {
+    fn of(text: &'a str) -> Self {
+        let starts = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        LineStarts { text, starts }
+    }
+
+    /// The byte range of 1-based line `line`, without its line end.
+    fn span(&self, line: usize) -> Option<std::ops::Range<usize>> {
+        let start = *self.starts.get(line.checked_sub(1)?)?;
+        let end = self
+            .starts
+            .get(line)
+            .map_or(self.text.len(), |next| next - 1);
+        Some(start..end.max(start))
+    }
 }
 
 fn message(error: &StructuredError) -> &str {
@@ -102,14 +142,15 @@ fn message(error: &StructuredError) -> &str {
 
 #[cfg(test)]
 mod tests {
-    use super::line_span;
+    use super::LineStarts;
 
     #[test]
     fn line_spans_cover_one_line() {
-        let text = "a\nbc\r\nd";
-        assert_eq!(line_span(text, 1), Some(0..1));
-        assert_eq!(line_span(text, 2), Some(2..5));
-        assert_eq!(line_span(text, 3), Some(6..7));
-        assert_eq!(line_span(text, 4), None);
+        let lines = LineStarts::of("a\nbc\r\nd");
+        assert_eq!(lines.span(1), Some(0..1));
+        assert_eq!(lines.span(2), Some(2..5));
+        assert_eq!(lines.span(3), Some(6..7));
+        assert_eq!(lines.span(4), None);
+        assert_eq!(lines.span(0), None);
     }
 }

@@ -29,7 +29,8 @@ pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
     // the rules (libxml2's contexts must stay on one thread).
     let (mut reports, schema) = std::thread::scope(|scope| {
         let schema = xsd.map(|dir| scope.spawn(move || schema_findings(files, dir)));
-        let reports = check_all(files);
+        // The schema thread is the longer job: leave it a core of its own.
+        let reports = check_all(files, usize::from(schema.is_some()));
         let schema = schema.map(|thread| {
             thread
                 .join()
@@ -70,7 +71,7 @@ fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, St
         .map(|path| {
             let bytes = std::fs::read(path).unwrap_or_default();
             match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
-                (true, Ok(text)) => schema.validate(&text),
+                (true, Ok(text)) => schema.validate_file(path, &text),
                 _ => Diagnostics::default(), // unreadable: the rules say so
             }
         })
@@ -87,14 +88,15 @@ fn is_gsdml(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
 }
 
-/// Checks every file on as many threads as the machine has cores, keeping
-/// the reports in the order of `files`.
-fn check_all(files: &[PathBuf]) -> Vec<Report> {
+/// Checks every file on as many threads as the machine has cores but
+/// `spare_cores`, keeping the reports in the order of `files`.
+fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
     let slots: Vec<Mutex<Option<Report>>> = files.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
-        .min(files.len());
+        .saturating_sub(spare_cores)
+        .clamp(1, files.len().max(1));
     std::thread::scope(|scope| {
         for _ in 0..workers {
             scope.spawn(|| loop {
