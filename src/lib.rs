@@ -2,21 +2,28 @@
 //! GSD (PROFIBUS-DP), GSDML (PROFINET) and firmware layout, and checks GSD and
 //! GSDML files.
 //!
-//! The core is pure: it takes text and returns text and diagnostics; reading
-//! and writing files happen in the CLI and in [`build`] for build scripts.
+//! The core is pure: [`load`], [`compile`], [`gsd::check`] and
+//! [`gsdml::check`] take text and return text and diagnostics, with no I/O
+//! and no clock. Files are read and written at the edges: the CLI, [`build`]
+//! for build scripts, and [`output`] which both use.
 
-pub mod build;
+// The core.
+pub mod description;
 pub mod diag;
 pub mod emit;
 pub mod gsd;
 pub mod gsdml;
-
-pub use diag::{Diagnostic, Diagnostics, Severity, Source};
-pub mod description;
 pub mod ir;
 pub mod load;
 pub mod lower;
 
+// The edges.
+pub mod build;
+pub mod output;
+#[cfg(feature = "xsd")]
+pub mod xsd;
+
+pub use diag::{Diagnostic, Diagnostics, Severity, Source};
 pub use emit::Artifact;
 pub use ir::Ir;
 
@@ -37,6 +44,3 @@ pub fn load(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
 pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
     emit::compile(ir)
 }
-pub mod output;
-#[cfg(feature = "xsd")]
-pub mod xsd;
