@@ -2,6 +2,10 @@
 //! reviewed against the manuals, formatted as rustfmt formats them, and
 //! compiled, linted and run in the no_std crate `tests/firmware`.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+use descriptions::load;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -9,13 +13,7 @@ const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.tom
 
 /// The layout artifact of a shipped description: its file name and text.
 fn layout(name: &str) -> (String, String) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("descriptions")
-        .join(name);
-    let text = std::fs::read_to_string(&path).unwrap();
-    let (ir, diagnostics) = gsdc::load(name, &text);
-    assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
-    let artifacts = gsdc::compile(&ir.unwrap()).unwrap();
+    let artifacts = gsdc::compile(&load(name)).unwrap();
     let layout = artifacts
         .into_iter()
         .find(|a| a.file_name.ends_with("_layout.rs"))

@@ -2,22 +2,16 @@
 //! reviewed against the manuals, an independent parser's reading compared
 //! with the IR, and determinism.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+use descriptions::load;
+
 use gsd_parser::{PrmBuilder, PrmValueConstraint, UserPrmDataType};
 use gsdc::ir::profibus::Profibus;
 use gsdc::ir::{Allowed, Ir};
 use std::path::Path;
 
 const DESCRIPTIONS: [&str; 2] = ["md810dp.toml", "9kdp1.toml"];
-
-fn load(name: &str) -> Ir {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("descriptions")
-        .join(name);
-    let text = std::fs::read_to_string(&path).unwrap();
-    let (ir, diagnostics) = gsdc::load(name, &text);
-    assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
-    ir.unwrap()
-}
 
 fn gsd_of(ir: &Ir) -> (String, &Profibus) {
     let artifacts = gsdc::compile(ir).unwrap();

@@ -3,24 +3,17 @@
 //! compared with the IR, and determinism. Validation against PI's schema
 //! lives in its own test.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+use descriptions::load;
+
 use gsdc::ir::profinet::Profinet;
 use gsdc::ir::{Allowed, Ir};
 use roxmltree::{Document, Node};
 use std::collections::BTreeSet;
-use std::path::Path;
 
 /// The descriptions with a PROFINET part.
 const DESCRIPTIONS: [&str; 2] = ["mv810-pnet02.toml", "md810dp.toml"];
-
-fn load(name: &str) -> Ir {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("descriptions")
-        .join(name);
-    let text = std::fs::read_to_string(&path).unwrap();
-    let (ir, diagnostics) = gsdc::load(name, &text);
-    assert!(!diagnostics.has_errors(), "{name}: {diagnostics:?}");
-    ir.unwrap()
-}
 
 fn gsdml_of(ir: &Ir) -> (String, &Profinet) {
     let profinet = ir.profinet.as_ref().expect("a PROFINET part");
