@@ -141,7 +141,10 @@ pub fn schema() -> &'static Schema {
 /// `Unit_Diag_!Bit` for `Unit_Diag_Not_Bit`).
 pub fn normalize(name: &str) -> String {
     // Nearly every keyword is plain: lower-casing it is all there is to do.
-    if !name.bytes().any(|b| b.is_ascii_whitespace() || b == b'!' || !b.is_ascii()) {
+    if !name
+        .bytes()
+        .any(|b| b.is_ascii_whitespace() || b == b'!' || !b.is_ascii())
+    {
         return name.to_ascii_lowercase();
     }
     let mut key = String::with_capacity(name.len());
