@@ -15,8 +15,9 @@
 //! again when the description changes, and writes only files whose content
 //! changed. Warnings (placeholder ident numbers) become `cargo:warning` lines.
 
-use crate::diag::{Diagnostics, Source};
-use crate::output::write_if_changed;
+use crate::diag::{Diagnostic, Diagnostics, Source};
+use crate::load;
+use crate::output::{read_input, write_if_changed, ReadError};
 use crate::Artifact;
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -64,16 +65,17 @@ pub fn generate_rust(
 fn compile_file(path: &Path) -> Result<Vec<Artifact>, BuildError> {
     println!("cargo:rerun-if-changed={}", path.display());
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| BuildError(format!("cannot read {name}: {e}")))?;
+    let bytes = read_input(path, &load::INPUT_LIMIT).map_err(|e| match e {
+        ReadError::TooLarge(d) => rendered_one(&name, "", d),
+        ReadError::Io(e) => BuildError(format!("cannot read {name}: {e}")),
+    })?;
+    let text = load::decode(&bytes)
+        .map_err(|d| rendered_one(&name, &String::from_utf8_lossy(&bytes), d))?;
     let source_name = path
         .file_name()
         .map_or_else(|| name.clone(), |f| f.to_string_lossy().into_owned());
-    let source = Source {
-        name: &name,
-        text: &text,
-    };
-    let (ir, diagnostics) = crate::load(&source_name, &text);
+    let source = Source { name: &name, text };
+    let (ir, diagnostics) = crate::load(&source_name, text);
     for warning in diagnostics.iter().filter(|d| !d.is_error()) {
         println!(
             "cargo:warning={}: {}",
@@ -89,20 +91,17 @@ fn rendered(source: &Source, diagnostics: &Diagnostics) -> BuildError {
     BuildError(diagnostics.iter().map(|d| source.render(d)).collect())
 }
 
+fn rendered_one(name: &str, text: &str, diagnostic: Diagnostic) -> BuildError {
+    rendered(&Source { name, text }, &Diagnostics(vec![diagnostic]))
+}
+
+/// Writes all the files or, as far as the disk allows, none (see
+/// [`write_if_changed`]); the error names the path, the OS error and the
+/// files already written.
 fn write(artifacts: &[Artifact], out_dir: &Path) -> Result<Vec<PathBuf>, BuildError> {
-    std::fs::create_dir_all(out_dir)
-        .map_err(|e| BuildError(format!("cannot create {}: {e}", out_dir.display())))?;
-    artifacts
+    write_if_changed(out_dir, artifacts).map_err(|e| BuildError(e.to_string()))?;
+    Ok(artifacts
         .iter()
-        .map(|a| {
-            write_if_changed(out_dir, &a.file_name, &a.contents)
-                .map(|_| out_dir.join(&a.file_name))
-                .map_err(|e| {
-                    BuildError(format!(
-                        "cannot write {}: {e}",
-                        out_dir.join(&a.file_name).display()
-                    ))
-                })
-        })
-        .collect()
+        .map(|a| out_dir.join(&a.file_name))
+        .collect())
 }

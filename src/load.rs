@@ -3,9 +3,37 @@
 
 use crate::description::Description;
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::output::InputLimit;
 
-/// Parses a description. Errors carry spans into `text`.
+/// The largest description gsdc reads (E006). Real ones are a few
+/// kilobytes; the limit keeps a mistaken or hostile file from costing
+/// memory and time. Nesting needs no limit of gsdc's own: the toml crate
+/// stops at 80 levels with an error (E001), before the stack is at risk.
+pub const INPUT_LIMIT: InputLimit = InputLimit {
+    max_bytes: 1 << 20,
+    code: "E006",
+    what: "a description",
+    help: "a description is a few kilobytes of TOML: check that this is the right file",
+};
+
+/// The text of a description's bytes: UTF-8, or E000 at the first byte
+/// that is not.
+pub fn decode(bytes: &[u8]) -> Result<&str, Diagnostic> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let at = e.valid_up_to();
+        Diagnostic::error("E000", "the description is not UTF-8 text")
+            .at(at..at + 1)
+            .label("not UTF-8")
+            .help("save the description as UTF-8")
+    })
+}
+
+/// Parses a description. Errors carry spans into `text`. A text larger than
+/// [`INPUT_LIMIT`] is refused before it is parsed.
 pub fn parse(text: &str) -> Result<Description, Diagnostics> {
+    INPUT_LIMIT
+        .check(text.len())
+        .map_err(|d| Diagnostics(vec![d]))?;
     toml::from_str::<Description>(text).map_err(|error| Diagnostics(vec![diagnose(text, &error)]))
 }
 

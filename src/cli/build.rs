@@ -1,9 +1,10 @@
 //! `gsdc build`: descriptions to device files. Every description is loaded
 //! and compiled before anything is written, so an error in one leaves the
-//! output directory as it was.
+//! output directory as it was; an I/O error while writing leaves it as it
+//! was too, as far as the disk allows (see `gsdc::output::write_if_changed`).
 
 use super::{display_name, report, say, Status};
-use gsdc::output::{is_up_to_date, write_if_changed, Outcome};
+use gsdc::output::{is_up_to_date, read_input, write_if_changed, Outcome, ReadError};
 use gsdc::{Artifact, Diagnostic, Diagnostics};
 use std::path::{Path, PathBuf};
 
@@ -72,50 +73,50 @@ fn unified_diff(path: &Path, existing: &[u8], generated: &[u8]) -> String {
 
 fn compile_one(path: &Path) -> Result<Vec<Artifact>, Status> {
     let name = display_name(path);
-    let bytes = std::fs::read(path).map_err(|e| {
-        eprintln!("error: cannot read {name}: {e}");
-        Status::UsageOrIo
-    })?;
-    let text = match String::from_utf8(bytes) {
-        Ok(text) => text,
-        Err(e) => {
-            let at = e.utf8_error().valid_up_to();
-            let text = String::from_utf8_lossy(e.as_bytes());
-            let diagnostic = Diagnostic::error("E000", "the description is not UTF-8 text")
-                .at(at..at + 1)
-                .label("not UTF-8")
-                .help("save the description as UTF-8");
-            report(&name, &text, &Diagnostics(vec![diagnostic]));
-            return Err(Status::InputErrors);
+    let bytes = read_input(path, &gsdc::load::INPUT_LIMIT).map_err(|e| match e {
+        ReadError::TooLarge(d) => input_error(&name, "", d),
+        ReadError::Io(e) => {
+            eprintln!("error: cannot read {name}: {e}");
+            Status::UsageOrIo
         }
-    };
+    })?;
+    let text = gsdc::load::decode(&bytes)
+        .map_err(|d| input_error(&name, &String::from_utf8_lossy(&bytes), d))?;
     let source_name = path
         .file_name()
         .map_or_else(|| name.clone(), |f| f.to_string_lossy().into_owned());
-    let (ir, diagnostics) = gsdc::load(&source_name, &text);
-    report(&name, &text, &diagnostics);
+    let (ir, diagnostics) = gsdc::load(&source_name, text);
+    report(&name, text, &diagnostics);
     let ir = ir.ok_or(Status::InputErrors)?;
     gsdc::compile(&ir).map_err(|diagnostics| {
-        report(&name, &text, &diagnostics);
+        report(&name, text, &diagnostics);
         Status::InputErrors
     })
 }
 
+/// The description could not be read as one: reported, exit 1.
+fn input_error(name: &str, text: &str, diagnostic: Diagnostic) -> Status {
+    report(name, text, &Diagnostics(vec![diagnostic]));
+    Status::InputErrors
+}
+
 fn write_all(artifacts: &[Artifact], out: &Path) -> Status {
-    if let Err(e) = std::fs::create_dir_all(out) {
-        eprintln!("error: cannot create {}: {e}", out.display());
-        return Status::UsageOrIo;
-    }
-    for artifact in artifacts {
-        let path = out.join(&artifact.file_name);
-        match write_if_changed(out, &artifact.file_name, &artifact.contents) {
-            Ok(Outcome::Written) => say(&format!("wrote {}", path.display())),
-            Ok(Outcome::Unchanged) => say(&format!("unchanged {}", path.display())),
-            Err(e) => {
-                eprintln!("error: cannot write {}: {e}", path.display());
-                return Status::UsageOrIo;
-            }
+    let outcomes = match write_if_changed(out, artifacts) {
+        Ok(outcomes) => outcomes,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Status::UsageOrIo;
         }
+    };
+    for (artifact, outcome) in artifacts.iter().zip(outcomes) {
+        let verb = match outcome {
+            Outcome::Written => "wrote",
+            Outcome::Unchanged => "unchanged",
+        };
+        say(&format!(
+            "{verb} {}",
+            out.join(&artifact.file_name).display()
+        ));
     }
     Status::Ok
 }

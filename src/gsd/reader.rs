@@ -409,6 +409,7 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
             0
         }
     };
+    reader.diags.extend(control_character(text));
     let mut lexer = Lexer::new(text, start);
     let mut tokens = Vec::new();
     let mut unterminated = Vec::new();
@@ -432,6 +433,31 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
         reader.unclosed(frame);
     }
     (reader.file, reader.diags)
+}
+
+/// The first NUL or other control character (tab, CR and LF aside), with
+/// how many there are: reported once, since a damaged or binary file has
+/// them by the million. A GSD file is text, and tools written in C end a
+/// string at a NUL, so such a file means different things to different
+/// readers.
+fn control_character(text: &str) -> Option<Diagnostic> {
+    let is_control = |b: &u8| b.is_ascii_control() && !matches!(b, b'\t' | b'\r' | b'\n');
+    let at = text.bytes().position(|b| is_control(&b))?;
+    let count = text.bytes().filter(is_control).count();
+    let name = match text.as_bytes()[at] {
+        0 => "a NUL byte".to_string(),
+        b => format!("control character 0x{b:02X}"),
+    };
+    let more = match count {
+        1 => String::new(),
+        n => format!(" ({} more after it)", n - 1),
+    };
+    Some(
+        Diagnostic::error("E230", format!("{name} in the file{more}"))
+            .at(at..at + 1)
+            .label("not text")
+            .help("a GSD file is text: the file may be damaged or not a GSD file; remove the character"),
+    )
 }
 
 impl Reader<'_> {

@@ -1,9 +1,10 @@
 //! GSDML (PROFINET device description) reader and the rules beyond the PI
 //! schema.
 //!
-//! [`check`] parses a GSDML file with roxmltree (DTDs refused, node count
-//! bounded) and runs every rule of `docs/rules.md` over it: codes
-//! E300..E399 are errors, W300..W399 warnings. All failures are collected.
+//! [`check`] parses a GSDML file with roxmltree (DTDs refused; size, node
+//! count, nesting, attributes and namespaces bounded) and runs every rule
+//! of `docs/rules.md` over it: codes E300..E399 are errors, W300..W399
+//! warnings. All failures are collected.
 //!
 //! The rules are linear passes over an [`index::Index`] of the document's
 //! GSDML elements, with hash maps for IDs and texts, so that checking the
@@ -18,6 +19,7 @@ mod keys;
 mod network;
 mod reader;
 mod records;
+mod shape;
 mod slots;
 mod values;
 mod version;
@@ -25,7 +27,7 @@ mod version;
 use crate::diag::{Diagnostic, Diagnostics};
 use index::Index;
 
-pub use reader::{decode, parse};
+pub use reader::{decode, parse, INPUT_LIMIT};
 pub use version::Version;
 
 /// The namespace of every GSDML element.
