@@ -146,6 +146,45 @@ impl From<Vec<Diagnostic>> for Diagnostics {
     }
 }
 
+/// The most a reader takes of one input, and the diagnostic for more. A
+/// hostile or mistaken input (a 200 MB file, `/dev/zero`) is refused before
+/// it is read whole, so memory stays bounded whatever the file.
+#[derive(Debug, Clone, Copy)]
+pub struct InputLimit {
+    pub max_bytes: usize,
+    /// The rule code of the diagnostic.
+    pub code: &'static str,
+    /// What the reader reads, for the message: "a GSD file".
+    pub what: &'static str,
+    pub help: &'static str,
+}
+
+impl InputLimit {
+    /// `Err` with the diagnostic when `len` bytes are more than the limit.
+    pub fn check(&self, len: usize) -> Result<(), Diagnostic> {
+        if len > self.max_bytes {
+            Err(self.diagnostic())
+        } else {
+            Ok(())
+        }
+    }
+
+    /// The file is larger than the limit. It has no place: nothing of the
+    /// file was read.
+    pub fn diagnostic(&self) -> Diagnostic {
+        Diagnostic::error(
+            self.code,
+            format!(
+                "the file is larger than {} MiB ({} bytes), the most gsdc reads of {}",
+                self.max_bytes >> 20,
+                self.max_bytes,
+                self.what
+            ),
+        )
+        .help(self.help)
+    }
+}
+
 /// A named source text, so that spans can be turned into lines and columns.
 #[derive(Debug, Clone, Copy)]
 pub struct Source<'a> {
@@ -223,12 +262,10 @@ impl Source<'_> {
         let line_end = self.text[start..]
             .find('\n')
             .map_or(self.text.len(), |i| start + i);
-        let line_text: Vec<char> = self.text[line_start..line_end]
-            .trim_end_matches('\r')
-            .chars()
-            .collect();
+        let before = &self.text[line_start..start];
+        let after = self.text[start..line_end].trim_end_matches('\r');
         let span_chars = self.text[start..end.min(line_end)].chars().count().max(1);
-        let (shown, caret_at, width) = window(&line_text, column - 1, span_chars);
+        let (shown, caret_at, width) = window(before, after, span_chars);
         let _ = writeln!(out, "{pad} |");
         let _ = writeln!(out, "{line} | {}", printable(&shown));
         let label = diagnostic
@@ -272,28 +309,32 @@ impl Source<'_> {
 /// does not print a megabyte per diagnostic.
 const MAX_SHOWN_LINE: usize = 120;
 
-/// The part of `line` to show around a span at `column` (0-based, in
-/// characters) of `span_chars` characters: the line itself when it is short,
-/// else a window with `...` where it was cut. Returns the text, the caret's
-/// column in it and the caret's width.
-fn window(line: &[char], column: usize, span_chars: usize) -> (String, usize, usize) {
-    let column = column.min(line.len());
-    let width = span_chars.min(line.len().saturating_sub(column).max(1));
-    if line.len() <= MAX_SHOWN_LINE {
-        return (line.iter().collect(), column, width);
+/// The part of a line to show around a span that starts between `before`
+/// and `after` and is `span_chars` characters long: the whole line when it is
+/// short, else a window with `...` where it was cut. Only the characters
+/// shown are walked, so a line of megabytes costs no more than a short one.
+/// Returns the text, the caret's column in it and the caret's width.
+fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize) {
+    if before.len() + after.len() <= MAX_SHOWN_LINE {
+        // Bytes bound characters: the whole line fits.
+        let width = span_chars.min(after.chars().count().max(1));
+        return (format!("{before}{after}"), before.chars().count(), width);
     }
-    let first = column.saturating_sub(MAX_SHOWN_LINE / 3);
-    let last = (first + MAX_SHOWN_LINE).min(line.len());
-    let mut shown = String::new();
-    if first > 0 {
-        shown.push_str("...");
+    let lead: Vec<char> = before.chars().rev().take(MAX_SHOWN_LINE / 3 + 1).collect();
+    let cut_before = lead.len() > MAX_SHOWN_LINE / 3;
+    let lead: String = lead.iter().rev().skip(usize::from(cut_before)).collect();
+    let room = MAX_SHOWN_LINE - lead.chars().count();
+    let mut tail: String = after.chars().take(room + 1).collect();
+    let cut_after = tail.chars().count() > room;
+    if cut_after {
+        tail.pop();
     }
-    shown.extend(&line[first..last]);
-    if last < line.len() {
-        shown.push_str("...");
-    }
-    let caret_at = column - first + if first > 0 { 3 } else { 0 };
-    (shown, caret_at, width.min(last - column).max(1))
+    let tail_chars = tail.chars().count();
+    let prefix = if cut_before { "..." } else { "" };
+    let suffix = if cut_after { "..." } else { "" };
+    let caret_at = prefix.len() + lead.chars().count();
+    let width = span_chars.min(tail_chars.max(1));
+    (format!("{prefix}{lead}{tail}{suffix}"), caret_at, width)
 }
 
 /// Tabs become one space and control characters a `?`, so carets line up.

@@ -2,8 +2,8 @@
 //! diagnostics that point at the offending text.
 
 use crate::description::Description;
+use crate::diag::InputLimit;
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::output::InputLimit;
 
 /// The largest description gsdc reads (E006). Real ones are a few
 /// kilobytes; the limit keeps a mistaken or hostile file from costing

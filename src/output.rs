@@ -3,51 +3,12 @@
 //! content changed. The CLI and the build-script API call it; the core never
 //! touches the disk.
 
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, InputLimit};
 use crate::Artifact;
 use std::fmt;
 use std::fs;
 use std::io::{self, Read, Write};
 use std::path::{Path, PathBuf};
-
-/// The most a reader takes of one input, and the diagnostic for more. A
-/// hostile or mistaken input (a 200 MB file, `/dev/zero`) is refused before
-/// it is read whole, so memory stays bounded whatever the file.
-#[derive(Debug, Clone, Copy)]
-pub struct InputLimit {
-    pub max_bytes: usize,
-    /// The rule code of the diagnostic.
-    pub code: &'static str,
-    /// What the reader reads, for the message: "a GSD file".
-    pub what: &'static str,
-    pub help: &'static str,
-}
-
-impl InputLimit {
-    /// `Err` with the diagnostic when `len` bytes are more than the limit.
-    pub fn check(&self, len: usize) -> Result<(), Diagnostic> {
-        if len > self.max_bytes {
-            Err(self.diagnostic())
-        } else {
-            Ok(())
-        }
-    }
-
-    /// The file is larger than the limit. It has no place: nothing of the
-    /// file was read.
-    pub fn diagnostic(&self) -> Diagnostic {
-        Diagnostic::error(
-            self.code,
-            format!(
-                "the file is larger than {} MiB ({} bytes), the most gsdc reads of {}",
-                self.max_bytes >> 20,
-                self.max_bytes,
-                self.what
-            ),
-        )
-        .help(self.help)
-    }
-}
 
 /// Why an input file was not read.
 #[derive(Debug)]

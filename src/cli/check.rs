@@ -2,6 +2,7 @@
 //! in parallel; what is printed follows the order of the arguments.
 
 use super::{display_name, say, say_how_many_not_shown, Status, MAX_SHOWN};
+use gsdc::output::ReadError;
 use gsdc::{Diagnostics, Source};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -69,10 +70,11 @@ fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, St
     Ok(files
         .iter()
         .map(|path| {
-            let bytes = std::fs::read(path).unwrap_or_default();
+            // Unreadable or too large: the rules say so.
+            let bytes = read(path).unwrap_or_default();
             match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
                 (true, Ok(text)) => schema.validate_file(path, &text),
-                _ => Diagnostics::default(), // unreadable: the rules say so
+                _ => Diagnostics::default(),
             }
         })
         .collect())
@@ -117,13 +119,28 @@ fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
 }
 
 fn check_one(path: &Path) -> Report {
-    match std::fs::read(path) {
+    match read(path) {
         Ok(bytes) => {
             let (text, diagnostics) = check_bytes(path, &bytes);
             Report::Checked { text, diagnostics }
         }
-        Err(e) => Report::Unreadable(e.to_string()),
+        Err(ReadError::TooLarge(d)) => Report::Checked {
+            text: String::new(),
+            diagnostics: Diagnostics(vec![d]),
+        },
+        Err(ReadError::Io(e)) => Report::Unreadable(e.to_string()),
     }
+}
+
+/// The file's bytes, refused by size before they are read when they are
+/// more than its reader takes.
+fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
+    let limit = if is_gsdml(path) {
+        &gsdc::gsdml::INPUT_LIMIT
+    } else {
+        &gsdc::gsd::INPUT_LIMIT
+    };
+    gsdc::output::read_input(path, limit)
 }
 
 /// GSDML by its `.xml` extension, GSD otherwise.

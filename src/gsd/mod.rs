@@ -9,8 +9,8 @@
 
 use std::borrow::Cow;
 
+use crate::diag::InputLimit;
 use crate::diag::{Diagnostics, Severity};
-use crate::output::InputLimit;
 
 mod config;
 mod lexer;

@@ -3,8 +3,8 @@
 
 use std::borrow::Cow;
 
+use crate::diag::InputLimit;
 use crate::diag::{line_col, Diagnostic};
-use crate::output::InputLimit;
 
 /// The largest GSDML file gsdc reads: 15 times the largest in the corpus
 /// (the 1.1 MB SEW file). Checking 16 MiB of real content takes about half
