@@ -49,7 +49,11 @@ fn build_writes_the_gsd_and_exits_0() {
     ]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     let written = files_in(&out);
-    for expected in ["MD810DP.GSD", "GSDML-V2.32-INOVANCE-MD810-20261122.xml"] {
+    for expected in [
+        "MD810DP.GSD",
+        "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
+        "md810dp_layout.rs",
+    ] {
         assert!(
             written.iter().any(|f| f == expected),
             "{expected} not in {written:?}"
