@@ -655,6 +655,15 @@ fn e225_dpv1_status_bytes() {
 }
 
 #[test]
+fn w231_diagnosis_area_without_values() {
+    assert_rule(
+        &plus(&["Unit_Diag_Area = 0-7", "Unit_Diag_Area_End"]),
+        "W231",
+        "Unit_Diag_Area",
+    );
+}
+
+#[test]
 fn e226_diagnosis_bit_beyond_length() {
     assert_rule(
         &plus(&["Unit_Diag_Bit(24) = \"Late\""]),

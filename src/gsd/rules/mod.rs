@@ -8,7 +8,7 @@
 //! | E213-E214 | baud rates and MaxTsdr |
 //! | E215-E218 | modules: config bytes, I/O lengths, compact and modular stations |
 //! | E219-E225, E227-E228 | user parameter data |
-//! | E226 | diagnosis bits within Max_Diag_Data_Len |
+//! | E226, W231 | diagnosis bits within Max_Diag_Data_Len; areas with values |
 //! | E240-E242 | strict profile only: the format of gsdc's own output |
 
 use crate::diag::Diagnostic;

@@ -1,5 +1,6 @@
 //! Station-wide rules: baud rates (E213, E214), compact and modular
-//! stations (E217, E218), DPV1 status bytes (E225), diagnosis bits (E226).
+//! stations (E217, E218), DPV1 status bytes (E225), diagnosis bits (E226),
+//! diagnosis areas without values (W231).
 
 use std::collections::HashSet;
 
@@ -20,6 +21,28 @@ pub(super) fn check(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     module_count(file, out);
     dpv1_status_bytes(file, out);
     diag_bits(file, out);
+    empty_diag_areas(file, out);
+}
+
+/// W231: an area with no `Value` line names no value. Configuration tools
+/// differ here (gsd-parser refuses the block), so it is a warning for vendor
+/// files and, through the strict profile, an error in gsdc's own.
+fn empty_diag_areas(file: &GsdFile, out: &mut Vec<Diagnostic>) {
+    let areas = file
+        .unit_diag_areas
+        .iter()
+        .chain(file.unit_diag_types.iter().flat_map(|t| &t.areas));
+    for area in areas.filter(|a| a.values.is_empty()) {
+        out.push(
+            Diagnostic::warning(
+                "W231",
+                format!("`{}` without a `Value`", area.keyword.value),
+            )
+            .at(area.keyword.span.clone())
+            .label("names no value of these bits")
+            .help("add `Value(n) = \"text\"` lines, or drop the area"),
+        );
+    }
 }
 
 fn bauds(file: &GsdFile, out: &mut Vec<Diagnostic>) {
