@@ -78,11 +78,6 @@ impl Diagnostic {
         self
     }
 
-    pub fn subject(mut self, subject: impl Into<String>) -> Self {
-        self.subject = Some(subject.into().into_boxed_str());
-        self
-    }
-
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }

@@ -118,7 +118,7 @@ fn gsd_parser_reads_what_the_ir_says() {
         }
 
         let telegram = PrmBuilder::new(prm).into_bytes();
-        assert_eq!(telegram.len(), profibus.user_prm.len(), "{name}");
+        assert_eq!(telegram.len(), profibus.user_prm.byte_len(), "{name}");
         assert_eq!(
             telegram[..profibus.user_prm.constant.len()],
             profibus.user_prm.constant[..],

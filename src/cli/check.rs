@@ -67,6 +67,8 @@ fn add_schema_findings(reports: &mut [Report], findings: Vec<Diagnostics>) {
 #[cfg(feature = "xsd")]
 fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, String> {
     let mut schema = gsdc::xsd::Schema::load(dir)?;
+    // Each file is read here a second time: this thread runs beside the
+    // rules' workers, and waiting for their copy would serialise the two.
     Ok(files
         .iter()
         .map(|path| {

@@ -160,7 +160,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             c1_max_data_len: d.c1_max_data_len,
             c1_response_timeout: d.c1_response_timeout,
         }),
-        prm_len: p.user_prm.len(),
+        prm_len: p.user_prm.byte_len(),
         prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
         prm_texts: prm_texts(ir),
         params: params(ir, p),

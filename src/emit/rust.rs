@@ -528,7 +528,7 @@ fn user_prm_offset(p: &Profibus, g: &SetsOfKind) -> usize {
         .filter(|e| g.sets.contains(&e.mapping.0))
         .map(|e| e.offset)
         .collect();
-    let first = offsets.first().copied().unwrap_or(p.user_prm.len());
+    let first = offsets.first().copied().unwrap_or(p.user_prm.byte_len());
     debug_assert!(offsets.iter().enumerate().all(|(i, &o)| o == first + 2 * i));
     first
 }
@@ -554,7 +554,7 @@ fn profibus_items(p: &Profibus) -> ProfibusItems {
                 }
             })
             .collect(),
-        user_prm_len: p.user_prm.len(),
+        user_prm_len: p.user_prm.byte_len(),
         dpv1_status: p.dpv1.map(|d| hex_bytes(&d.status_bytes)),
     }
 }

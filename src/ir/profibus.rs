@@ -101,12 +101,9 @@ pub struct PrmEntry {
 pub const PRM_ENTRY_BYTES: u8 = 2;
 
 impl UserPrm {
-    pub fn len(&self) -> usize {
+    /// Bytes of the whole parameter telegram.
+    pub fn byte_len(&self) -> usize {
         self.constant.len() + self.entries.len() * usize::from(PRM_ENTRY_BYTES)
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
     }
 }
 

@@ -291,7 +291,7 @@ fn user_prm(
                 "E116",
                 format!(
                     "the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}",
-                    prm.len()
+                    prm.byte_len()
                 ),
             )
             .at(mapping_spans[entry.mapping.0].clone())
