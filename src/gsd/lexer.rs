@@ -9,22 +9,24 @@
 //! The lexer looks at each byte a bounded number of times: no backtracking,
 //! so a 1 MB line costs what a 1 MB file of short lines costs.
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) enum Tok {
+pub(crate) enum Tok<'a> {
     /// A run of characters that are not whitespace or punctuation: keywords,
     /// numbers, type names (`Unsigned8`, `1.5M_supp`, `Unit_Diag_!Bit`).
     Word,
-    /// A string literal, continuations removed, without its quotes.
-    Str(String),
+    /// A string literal, continuations removed, without its quotes:
+    /// borrowed from the text unless a continuation had to be removed.
+    Str(Cow<'a, str>),
     /// One of `= ( ) , - @`.
     Punct(u8),
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) struct Token {
-    pub tok: Tok,
+pub(crate) struct Token<'a> {
+    pub tok: Tok<'a>,
     pub span: Range<usize>,
 }
 
@@ -78,7 +80,11 @@ impl<'a> Lexer<'a> {
     /// Reads the next logical line into `tokens` (cleared first). Returns
     /// false at the end of the text. Lines without tokens (blank, comment
     /// only) come back as empty.
-    pub fn next_line(&mut self, tokens: &mut Vec<Token>, errors: &mut Vec<Unterminated>) -> bool {
+    pub fn next_line(
+        &mut self,
+        tokens: &mut Vec<Token<'a>>,
+        errors: &mut Vec<Unterminated>,
+    ) -> bool {
         tokens.clear();
         if self.pos >= self.bytes.len() {
             return false;
@@ -134,7 +140,7 @@ impl<'a> Lexer<'a> {
         Some(i)
     }
 
-    fn word(&mut self) -> Token {
+    fn word(&mut self) -> Token<'a> {
         let start = self.pos;
         while let Some(&b) = self.bytes.get(self.pos) {
             if is_space(b) || b == b'\n' || b == b';' || b == b'"' || PUNCT.contains(&b) {
@@ -158,24 +164,23 @@ impl<'a> Lexer<'a> {
 
     /// A string literal. Inside it `;` is text, and `\` before the end of
     /// the line joins the next line (the newline is dropped).
-    fn string(&mut self, errors: &mut Vec<Unterminated>) -> Token {
+    fn string(&mut self, errors: &mut Vec<Unterminated>) -> Token<'a> {
         let start = self.pos;
         self.pos += 1;
-        let mut value = String::new();
+        // The pieces before each continuation; none for nearly every string.
+        let mut joined: Option<String> = None;
         let mut piece = self.pos;
-        loop {
+        let last_piece = loop {
             let Some(&b) = self.bytes.get(self.pos) else {
                 errors.push(Unterminated {
                     span: start..self.pos,
                 });
-                value.push_str(&self.text[piece..self.pos]);
-                break;
+                break &self.text[piece..self.pos];
             };
             match b {
                 b'"' => {
-                    value.push_str(&self.text[piece..self.pos]);
                     self.pos += 1;
-                    break;
+                    break &self.text[piece..self.pos - 1];
                 }
                 b'\n' => {
                     let end = if self.bytes[self.pos - 1] == b'\r' {
@@ -184,12 +189,12 @@ impl<'a> Lexer<'a> {
                         self.pos
                     };
                     errors.push(Unterminated { span: start..end });
-                    value.push_str(self.text[piece..self.pos].trim_end_matches('\r'));
-                    break;
+                    break self.text[piece..self.pos].trim_end_matches('\r');
                 }
                 b'\\' => match self.string_continuation(self.pos + 1) {
                     Some(next) => {
-                        value.push_str(&self.text[piece..self.pos]);
+                        let before = &self.text[piece..self.pos];
+                        joined.get_or_insert_with(String::new).push_str(before);
                         self.pos = next;
                         piece = next;
                     }
@@ -197,7 +202,14 @@ impl<'a> Lexer<'a> {
                 },
                 _ => self.pos += 1,
             }
-        }
+        };
+        let value = match joined {
+            None => Cow::Borrowed(last_piece),
+            Some(mut value) => {
+                value.push_str(last_piece);
+                Cow::Owned(value)
+            }
+        };
         Token {
             tok: Tok::Str(value),
             span: start..self.pos,

@@ -2,6 +2,7 @@
 //! that describe parameters and diagnosis, each with the spans the rules and
 //! callers point at.
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 /// A value and where it is written.
@@ -150,8 +151,9 @@ pub struct Setting {
     /// The keyword as written, case preserved (`MaxTsdr_1.5M`, `24V Pins`).
     pub name: String,
     /// The keyword as the schema knows it: lower case, blanks as `_`, and
-    /// the Siemens spelling `Unit_Diag_!Bit` as `unit_diag_not_bit`.
-    pub key: String,
+    /// the Siemens spelling `Unit_Diag_!Bit` as `unit_diag_not_bit`
+    /// (borrowed from the schema when it knows the keyword).
+    pub key: Cow<'static, str>,
     pub arg: Option<Arg>,
     pub value: Value,
     /// The whole statement.
@@ -172,7 +174,7 @@ impl Setting {
 
 /// Finds settings by keyword, case-insensitively.
 pub(crate) fn find<'a>(settings: &'a [Setting], name: &str) -> Option<&'a Setting> {
-    let key = crate::gsd::schema::normalize(name);
+    let key = crate::gsd::schema::key_of(name);
     settings.iter().find(|s| s.key == key)
 }
 
@@ -180,7 +182,7 @@ pub(crate) fn find_all<'a>(
     settings: &'a [Setting],
     name: &str,
 ) -> impl Iterator<Item = &'a Setting> + 'a {
-    let key = crate::gsd::schema::normalize(name);
+    let key = crate::gsd::schema::key_of(name);
     settings.iter().filter(move |s| s.key == key)
 }
 

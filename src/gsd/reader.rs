@@ -7,6 +7,7 @@
 //! left open is closed (with E203) as soon as a line that cannot belong to it
 //! arrives, so one missing `EndPrmText` does not swallow the rest of the file.
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 use crate::diag::Diagnostic;
@@ -66,16 +67,16 @@ pub(crate) fn parse_number(s: &str) -> Option<i64> {
 
 /// One element of what follows a keyword.
 #[derive(Debug, Clone)]
-enum Item {
+enum Item<'a> {
     Num(Spanned<i64>),
-    Str(Spanned<String>),
+    Str(Spanned<Cow<'a, str>>),
     Range(Spanned<(i64, i64)>),
     Family(Spanned<(i64, Vec<String>)>),
     /// A word that is not a number, or stray punctuation.
     Other(Range<usize>),
 }
 
-impl Item {
+impl Item<'_> {
     fn span(&self) -> Range<usize> {
         match self {
             Item::Num(s) => s.span.clone(),
@@ -94,22 +95,23 @@ fn items_span(items: &[Item], empty_at: usize) -> Range<usize> {
     }
 }
 
-/// One logical line, split into keyword, argument and value items.
+/// One logical line, split into keyword, argument and value items, all
+/// borrowed from the text: the model takes copies of what it keeps.
 #[derive(Debug)]
-struct Stmt {
-    name: String,
+struct Stmt<'a> {
+    name: &'a str,
     /// Normalized keyword; empty when the line does not start with one.
-    key: String,
+    key: Cow<'static, str>,
     name_span: Range<usize>,
     /// What stands in `( )` after the keyword.
-    arg: Option<(Vec<Item>, Range<usize>)>,
+    arg: Option<(Vec<Item<'a>>, Range<usize>)>,
     has_eq: bool,
-    items: Vec<Item>,
+    items: Vec<Item<'a>>,
     span: Range<usize>,
 }
 
-impl Stmt {
-    fn parse(text: &str, tokens: &[Token]) -> Stmt {
+impl<'a> Stmt<'a> {
+    fn parse(text: &'a str, tokens: &[Token<'a>]) -> Stmt<'a> {
         let span = tokens[0].span.start..tokens[tokens.len() - 1].span.end;
         let name_len = name_length(text, tokens);
         let name_span = match name_len {
@@ -130,9 +132,9 @@ impl Stmt {
         if has_eq {
             rest = &rest[1..];
         }
-        let name = text[name_span.clone()].to_string();
+        let name = &text[name_span.clone()];
         Stmt {
-            key: schema::normalize(&name),
+            key: schema::key_of(name),
             name,
             name_span,
             arg,
@@ -196,7 +198,7 @@ fn signed_number(text: &str, tokens: &[Token]) -> Option<(i64, usize)> {
 
 /// Splits value tokens into items: strings, numbers (commas only separate),
 /// ranges `a-b`, and a family `n@sub@sub` that takes the rest of the line.
-fn items(text: &str, tokens: &[Token]) -> Vec<Item> {
+fn items<'a>(text: &'a str, tokens: &[Token<'a>]) -> Vec<Item<'a>> {
     let mut out = Vec::new();
     let mut i = 0;
     while i < tokens.len() {
@@ -258,7 +260,7 @@ fn value(text: &str, stmt: &Stmt) -> Result<Value, &'static str> {
         [] if stmt.has_eq => return Err("nothing follows `=`"),
         [] => Value::None,
         [Item::Num(n)] => Value::Number(n.value),
-        [Item::Str(s)] => Value::Str(s.value.clone()),
+        [Item::Str(s)] => Value::Str(s.value.to_string()),
         [Item::Family(f)] => Value::Family {
             main: f.value.0,
             sub: f.value.1.clone(),
@@ -288,10 +290,10 @@ fn setting(text: &str, stmt: &Stmt) -> Result<Setting, &'static str> {
             stmt.index()
                 .ok_or("the argument in parentheses is not a number")?,
         )),
-        None => schema::baud_pattern(&stmt.key).map(|(_, baud)| Arg::Baud(baud)),
+        None => schema::baud_of(&stmt.key).map(Arg::Baud),
     };
     Ok(Setting {
-        name: stmt.name.clone(),
+        name: stmt.name.to_string(),
         key: stmt.key.clone(),
         arg,
         value: value(text, stmt)?,
@@ -304,12 +306,17 @@ fn setting(text: &str, stmt: &Stmt) -> Result<Setting, &'static str> {
     })
 }
 
+/// A string item as the model keeps it.
+fn owned(s: &Spanned<Cow<'_, str>>) -> Spanned<String> {
+    Spanned::new(s.value.to_string(), s.span.clone())
+}
+
 /// `Text(n) = "..."`, `Value(n) = "..."`.
 fn indexed_text(stmt: &Stmt) -> Option<IndexedText> {
     match (stmt.index(), stmt.items.as_slice()) {
         (Some(index), [Item::Str(text)]) => Some(IndexedText {
             index,
-            text: text.clone(),
+            text: owned(text),
             span: stmt.span.clone(),
         }),
         _ => None,
@@ -345,7 +352,7 @@ struct TypeLine {
 
 fn prm_type_line(stmt: &Stmt) -> Option<TypeLine> {
     let arg = stmt.arg.as_ref().map(|(items, _)| items.as_slice());
-    let ty = match (stmt.key.as_str(), arg) {
+    let ty = match (&*stmt.key, arg) {
         ("bit", Some([Item::Num(n)])) => PrmDataType::Bit(u8::try_from(n.value).ok()?),
         ("bitarea", Some([Item::Range(r)])) => {
             PrmDataType::BitArea(u8::try_from(r.value.0).ok()?, u8::try_from(r.value.1).ok()?)
@@ -358,7 +365,7 @@ fn prm_type_line(stmt: &Stmt) -> Option<TypeLine> {
         ("signed8", None) => PrmDataType::Signed8,
         ("signed16", None) => PrmDataType::Signed16,
         ("signed32", None) => PrmDataType::Signed32,
-        (_, None) => PrmDataType::Other(stmt.name.clone()),
+        (_, None) => PrmDataType::Other(stmt.name.to_string()),
     };
     let type_end = stmt.arg.as_ref().map_or(stmt.name_span.end, |(_, s)| s.end);
     let ty = Spanned::new(ty, stmt.name_span.start..type_end);
@@ -381,7 +388,7 @@ struct Reader<'t> {
     text: &'t str,
     file: GsdFile,
     diags: Vec<Diagnostic>,
-    open: Option<Frame>,
+    open: Option<Frame<'t>>,
     /// End of the previous statement: where an unclosed block ends.
     prev_end: usize,
 }
@@ -442,7 +449,14 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
 /// readers.
 fn control_character(text: &str) -> Option<Diagnostic> {
     let is_control = |b: &u8| b.is_ascii_control() && !matches!(b, b'\t' | b'\r' | b'\n');
-    let at = text.bytes().position(|b| is_control(&b))?;
+    // Whole chunks first: a loop without an early exit is vectorised, and
+    // nearly every file has no control character at all.
+    const CHUNK: usize = 256;
+    let chunk = text
+        .as_bytes()
+        .chunks(CHUNK)
+        .position(|c| c.iter().fold(false, |any, b| any | is_control(b)))?;
+    let at = chunk * CHUNK + text.as_bytes()[chunk * CHUNK..].iter().position(is_control)?;
     let count = text.bytes().filter(is_control).count();
     let name = match text.as_bytes()[at] {
         0 => "a NUL byte".to_string(),
@@ -460,8 +474,8 @@ fn control_character(text: &str) -> Option<Diagnostic> {
     )
 }
 
-impl Reader<'_> {
-    fn statement(&mut self, stmt: Stmt) {
+impl<'t> Reader<'t> {
+    fn statement(&mut self, stmt: Stmt<'t>) {
         if let Some(frame) = self.open.take() {
             match self.feed(frame, &stmt) {
                 Fed::Open(frame) => {
@@ -484,7 +498,7 @@ impl Reader<'_> {
         );
     }
 
-    fn top(&mut self, stmt: &Stmt) {
+    fn top(&mut self, stmt: &Stmt<'t>) {
         if stmt.key.is_empty() {
             self.malformed(stmt.span.clone(), "the line does not start with a keyword");
         } else if is_opener(&stmt.key) {
@@ -501,16 +515,16 @@ impl Reader<'_> {
 
 /// The opening keyword of a block as written, and where.
 #[derive(Debug, Clone)]
-struct Header {
-    name: String,
-    key: String,
+struct Header<'a> {
+    name: &'a str,
+    key: Cow<'static, str>,
     span: Range<usize>,
 }
 
-impl Header {
-    fn of(stmt: &Stmt) -> Header {
+impl<'a> Header<'a> {
+    fn of(stmt: &Stmt<'a>) -> Header<'a> {
         Header {
-            name: stmt.name.clone(),
+            name: stmt.name,
             key: stmt.key.clone(),
             span: stmt.name_span.clone(),
         }
@@ -535,17 +549,17 @@ enum Body {
 }
 
 /// A block being read.
-struct Frame {
-    header: Header,
+struct Frame<'a> {
+    header: Header<'a>,
     body: Body,
 }
 
 /// What a frame did with a line.
-enum Fed {
-    Open(Frame),
+enum Fed<'a> {
+    Open(Frame<'a>),
     Closed,
     /// The line cannot belong to the block, which was left open.
-    NotMine(Frame),
+    NotMine(Frame<'a>),
 }
 
 /// A block body that took the line, or that cannot take it (the line is
@@ -555,8 +569,8 @@ enum Feed {
     Foreign(Body),
 }
 
-impl Reader<'_> {
-    fn unclosed(&mut self, frame: Frame) {
+impl<'t> Reader<'t> {
+    fn unclosed(&mut self, frame: Frame<'t>) {
         self.report_unclosed(
             &frame.header.name,
             &frame.header.key,
@@ -575,7 +589,7 @@ impl Reader<'_> {
         );
     }
 
-    fn stray_end(&mut self, stmt: &Stmt) {
+    fn stray_end(&mut self, stmt: &Stmt<'t>) {
         self.diags.push(
             Diagnostic::error("E204", format!("`{}` without an open block", stmt.name))
                 .at(stmt.name_span.clone())
@@ -585,7 +599,7 @@ impl Reader<'_> {
     }
 
     /// Stores a block that ends at `end`.
-    fn finish(&mut self, frame: Frame, end: usize) {
+    fn finish(&mut self, frame: Frame<'t>, end: usize) {
         match frame.body {
             Body::Module { mut module, area } => {
                 if let Some(area) = area {
@@ -637,14 +651,14 @@ impl Reader<'_> {
         let keyword = area.keyword.clone();
         self.report_unclosed(
             &keyword.value,
-            &schema::normalize(&keyword.value),
+            &schema::key_of(&keyword.value),
             keyword.span,
         );
         area.span.end = self.prev_end;
         area
     }
 
-    fn feed(&mut self, frame: Frame, stmt: &Stmt) -> Fed {
+    fn feed(&mut self, frame: Frame<'t>, stmt: &Stmt<'t>) -> Fed<'t> {
         let Frame { header, body } = frame;
         if ends(&stmt.key, &header.key) {
             self.finish(Frame { header, body }, stmt.span.end);
@@ -666,7 +680,7 @@ impl Reader<'_> {
     }
 
     /// A setting for a block's own list; `None` (reported) if unreadable.
-    fn block_setting(&mut self, stmt: &Stmt) -> Option<Setting> {
+    fn block_setting(&mut self, stmt: &Stmt<'t>) -> Option<Setting> {
         match setting(self.text, stmt) {
             Ok(s) => Some(s),
             Err(why) => {
@@ -682,7 +696,7 @@ impl Reader<'_> {
         stmt.key.is_empty() || is_opener(&stmt.key) || is_end(&stmt.key) || !stmt.has_eq
     }
 
-    fn feed_module(&mut self, mut module: Module, area: Option<Block>, stmt: &Stmt) -> Feed {
+    fn feed_module(&mut self, mut module: Module, area: Option<Block>, stmt: &Stmt<'t>) -> Feed {
         if let Some(mut area) = area {
             if ends(&stmt.key, "data_area_beg") {
                 area.span.end = stmt.span.end;
@@ -698,7 +712,7 @@ impl Reader<'_> {
             }
             module.data_areas.push(self.close_nested_area(area));
         }
-        match stmt.key.as_str() {
+        match &*stmt.key {
             "data_area_beg" => {
                 let area = self.generic_block(stmt);
                 return Feed::Took(Body::Module {
@@ -727,7 +741,7 @@ impl Reader<'_> {
     }
 
     /// The bare number on its own line inside a module.
-    fn module_reference(&mut self, module: &mut Module, stmt: &Stmt) {
+    fn module_reference(&mut self, module: &mut Module, stmt: &Stmt<'t>) {
         match (stmt.items.as_slice(), &module.reference) {
             ([Item::Num(n)], None) => module.reference = Some(n.clone()),
             ([Item::Num(_)], Some(_)) => {
@@ -737,12 +751,12 @@ impl Reader<'_> {
         }
     }
 
-    fn feed_ext(&mut self, mut data: ExtUserPrmData, stmt: &Stmt) -> Feed {
-        match stmt.key.as_str() {
+    fn feed_ext(&mut self, mut data: ExtUserPrmData, stmt: &Stmt<'t>) -> Feed {
+        match &*stmt.key {
             "prm_text_ref" | "changeable" | "visible" if stmt.has_eq => {
                 if let Some(s) = self.block_setting(stmt) {
                     let number = s.value.as_number();
-                    match s.key.as_str() {
+                    match &*s.key {
                         "prm_text_ref" => {
                             data.prm_text_ref =
                                 number.map(|n| Spanned::new(n, s.value_span.clone()))
@@ -774,7 +788,7 @@ impl Reader<'_> {
         Feed::Took(Body::Ext(data))
     }
 
-    fn feed_prm_text(&mut self, mut text: PrmText, stmt: &Stmt) -> Feed {
+    fn feed_prm_text(&mut self, mut text: PrmText, stmt: &Stmt<'t>) -> Feed {
         if stmt.key != "text" {
             return Feed::Foreign(Body::PrmText(text));
         }
@@ -787,7 +801,7 @@ impl Reader<'_> {
 
     /// `Value(n) = "text"` (or `X_Value`) into an area; false if the line is
     /// something else.
-    fn area_value(&mut self, area: &mut UnitDiagArea, stmt: &Stmt) -> bool {
+    fn area_value(&mut self, area: &mut UnitDiagArea, stmt: &Stmt<'t>) -> bool {
         if stmt.key != "value" && stmt.key != "x_value" {
             return false;
         }
@@ -798,7 +812,7 @@ impl Reader<'_> {
         true
     }
 
-    fn feed_diag_area(&mut self, mut area: UnitDiagArea, stmt: &Stmt) -> Feed {
+    fn feed_diag_area(&mut self, mut area: UnitDiagArea, stmt: &Stmt<'t>) -> Feed {
         match self.area_value(&mut area, stmt) {
             true => Feed::Took(Body::DiagArea(area)),
             false => Feed::Foreign(Body::DiagArea(area)),
@@ -809,10 +823,10 @@ impl Reader<'_> {
         &mut self,
         mut ty: UnitDiagType,
         area: Option<UnitDiagArea>,
-        stmt: &Stmt,
+        stmt: &Stmt<'t>,
     ) -> Feed {
         if let Some(mut area) = area {
-            if ends(&stmt.key, &schema::normalize(&area.keyword.value)) {
+            if ends(&stmt.key, &schema::key_of(&area.keyword.value)) {
                 area.span.end = stmt.span.end;
                 ty.areas.push(area);
                 return Feed::Took(Body::DiagType { ty, area: None });
@@ -825,7 +839,7 @@ impl Reader<'_> {
             }
             ty.areas.push(self.close_nested_diag_area(area));
         }
-        match stmt.key.as_str() {
+        match &*stmt.key {
             "unit_diag_area" | "x_unit_diag_area" => {
                 let area = self.diag_area(stmt);
                 return Feed::Took(Body::DiagType {
@@ -839,7 +853,7 @@ impl Reader<'_> {
         Feed::Took(Body::DiagType { ty, area: None })
     }
 
-    fn feed_slots(&mut self, stmt: &Stmt) -> Feed {
+    fn feed_slots(&mut self, stmt: &Stmt<'t>) -> Feed {
         if stmt.key != "slot" {
             return Feed::Foreign(Body::Slots);
         }
@@ -853,7 +867,7 @@ impl Reader<'_> {
         Feed::Took(Body::Slots)
     }
 
-    fn feed_generic(&mut self, mut block: Block, stmt: &Stmt) -> Feed {
+    fn feed_generic(&mut self, mut block: Block, stmt: &Stmt<'t>) -> Feed {
         if Self::foreign(stmt) {
             return Feed::Foreign(Body::Generic(block));
         }
@@ -861,8 +875,8 @@ impl Reader<'_> {
         Feed::Took(Body::Generic(block))
     }
 
-    fn open_block(&mut self, stmt: &Stmt) -> Frame {
-        let body = match stmt.key.as_str() {
+    fn open_block(&mut self, stmt: &Stmt<'t>) -> Frame<'t> {
+        let body = match &*stmt.key {
             "module" => Body::Module {
                 module: self.module_header(stmt),
                 area: None,
@@ -894,9 +908,9 @@ impl Reader<'_> {
 
     /// A block whose header value is not checked here (the schema rules see
     /// it as a setting).
-    fn generic_block(&mut self, stmt: &Stmt) -> Block {
+    fn generic_block(&mut self, stmt: &Stmt<'t>) -> Block {
         let header = self.block_setting(stmt).unwrap_or_else(|| Setting {
-            name: stmt.name.clone(),
+            name: stmt.name.to_string(),
             key: stmt.key.clone(),
             arg: None,
             value: Value::None,
@@ -912,9 +926,9 @@ impl Reader<'_> {
     }
 
     /// `Module = "name" 0x.., 0x..`.
-    fn module_header(&mut self, stmt: &Stmt) -> Module {
+    fn module_header(&mut self, stmt: &Stmt<'t>) -> Module {
         let (name, rest) = match stmt.items.split_first() {
-            Some((Item::Str(name), rest)) => (name.clone(), rest),
+            Some((Item::Str(name), rest)) => (owned(name), rest),
             _ => {
                 self.malformed(stmt.span.clone(), "a module needs a name in double quotes");
                 (
@@ -952,9 +966,9 @@ impl Reader<'_> {
     }
 
     /// `ExtUserPrmData = id "name"`.
-    fn ext_header(&mut self, stmt: &Stmt) -> ExtUserPrmData {
+    fn ext_header(&mut self, stmt: &Stmt<'t>) -> ExtUserPrmData {
         let (id, name) = match stmt.items.as_slice() {
-            [Item::Num(id), Item::Str(name)] => (id.clone(), name.clone()),
+            [Item::Num(id), Item::Str(name)] => (id.clone(), owned(name)),
             _ => {
                 self.malformed(stmt.span.clone(), "expected `ExtUserPrmData = id \"name\"`");
                 let at = stmt.value_span();
@@ -976,7 +990,7 @@ impl Reader<'_> {
     }
 
     /// `PrmText = id`, `UnitDiagType = id`.
-    fn id_header(&mut self, stmt: &Stmt) -> Spanned<i64> {
+    fn id_header(&mut self, stmt: &Stmt<'t>) -> Spanned<i64> {
         match stmt.items.as_slice() {
             [Item::Num(id)] => id.clone(),
             _ => {
@@ -987,7 +1001,7 @@ impl Reader<'_> {
     }
 
     /// `Unit_Diag_Area = first-last`.
-    fn diag_area(&mut self, stmt: &Stmt) -> UnitDiagArea {
+    fn diag_area(&mut self, stmt: &Stmt<'t>) -> UnitDiagArea {
         let (first, last) = match stmt.items.as_slice() {
             [Item::Range(r)] => r.value,
             _ => {
@@ -996,7 +1010,7 @@ impl Reader<'_> {
             }
         };
         UnitDiagArea {
-            keyword: Spanned::new(stmt.name.clone(), stmt.name_span.clone()),
+            keyword: Spanned::new(stmt.name.to_string(), stmt.name_span.clone()),
             first,
             last,
             range_span: stmt.value_span(),
@@ -1014,7 +1028,7 @@ fn slot(stmt: &Stmt) -> Option<Slot> {
     };
     Some(Slot {
         number,
-        name: name.clone(),
+        name: owned(name),
         default: default.clone(),
         allowed: allowed(rest, default.span.end)?,
         span: stmt.span.clone(),

@@ -1,7 +1,9 @@
 //! The GSD keyword schema (`schemas/gsd-keywords.toml`), compiled into the
 //! binary and parsed once.
 
-use std::collections::HashMap;
+use std::borrow::Cow;
+use std::collections::{BTreeMap, HashMap};
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
 use serde::Deserialize;
@@ -91,49 +93,126 @@ pub struct Keyword {
     pub spec: KeywordSpec,
 }
 
-pub struct Schema {
-    by_key: HashMap<String, Keyword>,
+/// What the schema holds under a normalized key.
+#[derive(Debug)]
+enum Entry {
+    Keyword(Keyword),
+    /// `maxtsdr_1.5m`: one baud rate of a keyword the schema spells with
+    /// `<baud>` (`MaxTsdr_<baud>`), whose key is `pattern`.
+    Baud { pattern: Box<str>, baud: Baud },
 }
 
-/// Keyword prefixes and suffixes that carry a baud rate in their name.
-const BAUD_PREFIXES: [&str; 3] = ["maxtsdr_", "transmission_delay_", "reaction_delay_"];
-const BAUD_SUFFIX: &str = "_supp";
+pub struct Schema {
+    by_key: HashMap<Box<str>, Entry, BuildHasherDefault<Fnv>>,
+}
+
+/// The placeholder for a baud rate in the schema's keyword names.
+const BAUD: &str = "<baud>";
 
 impl Schema {
     fn load() -> Schema {
         let text = include_str!("../../schemas/gsd-keywords.toml");
         // The schema ships inside the binary and a unit test parses it, so a
         // failure here is a build defect, not something a user's input causes.
-        let table: HashMap<String, KeywordSpec> =
+        let table: BTreeMap<String, KeywordSpec> =
             toml::from_str(text).expect("schemas/gsd-keywords.toml is valid");
-        let by_key = table
-            .into_iter()
-            .map(|(name, spec)| (name.to_ascii_lowercase(), Keyword { name, spec }))
-            .collect();
+        let mut by_key = HashMap::default();
+        for (name, spec) in table {
+            let key: Box<str> = name.to_ascii_lowercase().into();
+            if key.contains(BAUD) {
+                for baud in Baud::ALL {
+                    let concrete = key.replace(BAUD, &baud.as_str().to_ascii_lowercase());
+                    let pattern = key.clone();
+                    by_key.insert(concrete.into(), Entry::Baud { pattern, baud });
+                }
+            }
+            by_key.insert(key, Entry::Keyword(Keyword { name, spec }));
+        }
         Schema { by_key }
     }
 
-    /// The schema entry for a normalized keyword (see [`normalize`]).
+    /// The schema entry for a normalized keyword (see [`normalize`]); a
+    /// baud rate keyword (`maxtsdr_1.5m`) finds its pattern's entry.
     pub fn lookup(&self, key: &str) -> Option<&Keyword> {
-        if let Some(k) = self.by_key.get(key) {
-            return Some(k);
+        match self.by_key.get(key)? {
+            Entry::Keyword(k) => Some(k),
+            Entry::Baud { pattern, .. } => match self.by_key.get(pattern)? {
+                Entry::Keyword(k) => Some(k),
+                Entry::Baud { .. } => None,
+            },
         }
-        let (pattern, _) = baud_pattern(key)?;
-        self.by_key.get(&pattern)
     }
 
     pub fn keywords(&self) -> impl Iterator<Item = &Keyword> {
-        self.by_key.values()
+        self.by_key.values().filter_map(|entry| match entry {
+            Entry::Keyword(k) => Some(k),
+            Entry::Baud { .. } => None,
+        })
     }
 
     pub fn mandatory(&self) -> impl Iterator<Item = &Keyword> {
-        self.by_key.values().filter(|k| k.spec.mandatory)
+        self.keywords().filter(|k| k.spec.mandatory)
     }
 }
 
 pub fn schema() -> &'static Schema {
     static SCHEMA: OnceLock<Schema> = OnceLock::new();
     SCHEMA.get_or_init(Schema::load)
+}
+
+/// FNV-1a, for the keyword table: its keys are fixed and short, so
+/// SipHash's defence against chosen keys buys nothing there (a file's
+/// keywords are only looked up, never inserted) and costs most of a lookup.
+pub(crate) struct Fnv(u64);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Fnv(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher for Fnv {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// The longest keyword the schema knows is shorter than this; a longer name
+/// is not looked up without allocating.
+const MAX_PLAIN_KEY: usize = 48;
+
+/// The key of a keyword as written (see [`normalize`]), borrowed from the
+/// schema when the schema knows the keyword, as it does on nearly every
+/// line: reading a file then allocates no keys.
+pub fn key_of(name: &str) -> Cow<'static, str> {
+    let mut buf = [0u8; MAX_PLAIN_KEY];
+    let known = plain_lowercase(name, &mut buf)
+        .and_then(|lower| schema().by_key.get_key_value(lower))
+        .map(|(key, _)| &**key);
+    match known {
+        Some(key) => Cow::Borrowed(key),
+        None => Cow::Owned(normalize(name)),
+    }
+}
+
+/// `name` in lower case in `buf`, when it is plain ASCII with nothing else
+/// for [`normalize`] to do, and fits.
+fn plain_lowercase<'b>(name: &str, buf: &'b mut [u8; MAX_PLAIN_KEY]) -> Option<&'b str> {
+    let bytes = name.as_bytes();
+    let plain = |b: &u8| b.is_ascii() && !b.is_ascii_whitespace() && *b != b'!';
+    if bytes.len() > buf.len() || !bytes.iter().all(plain) {
+        return None;
+    }
+    let lower = &mut buf[..bytes.len()];
+    lower.copy_from_slice(bytes);
+    lower.make_ascii_lowercase();
+    std::str::from_utf8(lower).ok()
 }
 
 /// A keyword as the schema keys it: lower case, blanks as `_` (Siemens
@@ -172,15 +251,13 @@ pub fn is_nonstandard_spelling(name: &str) -> bool {
     name.contains(char::is_whitespace) || name.contains('!')
 }
 
-/// `maxtsdr_1.5m` -> (`maxtsdr_<baud>`, 1.5M); `12m_supp` -> (`<baud>_supp`, 12M).
-pub fn baud_pattern(key: &str) -> Option<(String, Baud)> {
-    if let Some(baud) = key.strip_suffix(BAUD_SUFFIX).and_then(Baud::parse) {
-        return Some((format!("<baud>{BAUD_SUFFIX}"), baud));
+/// The baud rate a normalized keyword carries in its name: `maxtsdr_1.5m`
+/// and `12m_supp` do, for each keyword the schema spells with `<baud>`.
+pub fn baud_of(key: &str) -> Option<Baud> {
+    match schema().by_key.get(key)? {
+        Entry::Baud { baud, .. } => Some(*baud),
+        Entry::Keyword(_) => None,
     }
-    BAUD_PREFIXES.iter().find_map(|prefix| {
-        let baud = Baud::parse(key.strip_prefix(prefix)?)?;
-        Some((format!("{prefix}<baud>"), baud))
-    })
 }
 
 #[cfg(test)]
@@ -216,6 +293,26 @@ mod tests {
         assert_eq!(k.name, "MaxTsdr_<baud>");
         assert_eq!(schema().lookup("45.45_supp").unwrap().spec.kind, Kind::Bool);
         assert!(schema().lookup("maxtsdr_2m").is_none());
+        assert_eq!(baud_of("maxtsdr_1.5m"), Some(Baud::B1M5));
+        assert_eq!(baud_of("12m_supp"), Some(Baud::B12M));
+        assert_eq!(baud_of("max_input_len"), None);
+    }
+
+    #[test]
+    fn known_keys_are_borrowed_from_the_schema() {
+        assert!(matches!(key_of("Vendor_Name"), Cow::Borrowed("vendor_name")));
+        assert!(matches!(key_of("MaxTsdr_1.5M"), Cow::Borrowed("maxtsdr_1.5m")));
+        // Not plain, or unknown: the same key, built.
+        assert_eq!(key_of("Unit_Diag_!Bit"), "unit_diag_not_bit");
+        assert_eq!(key_of("24V Pins"), "24v_pins");
+        assert!(matches!(key_of("Vendor_Extra"), Cow::Owned(k) if k == "vendor_extra"));
+        let long = "X".repeat(MAX_PLAIN_KEY + 1);
+        assert_eq!(key_of(&long), long.to_ascii_lowercase());
+    }
+
+    #[test]
+    fn no_schema_keyword_is_too_long_to_borrow() {
+        assert!(schema().by_key.keys().all(|k| k.len() <= MAX_PLAIN_KEY));
     }
 
     #[test]

@@ -60,7 +60,7 @@ fn bauds(file: &GsdFile, out: &mut Vec<Diagnostic>) {
                 .help("add e.g. `1.5M_supp = 1` and `MaxTsdr_1.5M = 150` for each baud rate the device runs at"),
         );
     }
-    let keys: HashSet<&str> = file.settings.iter().map(|s| s.key.as_str()).collect();
+    let keys: HashSet<&str> = file.settings.iter().map(|s| &*s.key).collect();
     for supp in supported {
         let Some(Arg::Baud(baud)) = supp.arg else {
             continue;
@@ -155,7 +155,7 @@ fn diag_bits(file: &GsdFile, out: &mut Vec<Diagnostic>) {
         .settings
         .iter()
         .chain(types.clone().flat_map(|t| &t.settings))
-        .filter(|s| DIAG_BIT_KEYS.contains(&s.key.as_str()));
+        .filter(|s| DIAG_BIT_KEYS.contains(&&*s.key));
     for s in settings {
         if let Some(bit) = s.index().filter(|&b| b < 0 || b >= bits) {
             out.push(beyond(bit, s.span.clone(), max_len, bits));
