@@ -114,7 +114,7 @@ impl Diagnostics {
 
     /// Names the subject of every diagnostic that has a place but no subject
     /// yet, with `subject_at(offset)`.
-    pub fn name_subjects(&mut self, subject_at: impl Fn(usize) -> Option<String>) {
+    pub fn name_subjects(&mut self, mut subject_at: impl FnMut(usize) -> Option<String>) {
         for d in &mut self.0 {
             if d.subject.is_none() {
                 d.subject = d

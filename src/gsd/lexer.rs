@@ -116,9 +116,11 @@ impl<'a> Lexer<'a> {
     }
 
     fn skip_comment(&mut self) {
-        while self.pos < self.bytes.len() && self.bytes[self.pos] != b'\n' {
-            self.pos += 1;
-        }
+        // `pos` is at the `;`, an ASCII byte, so slicing the text there holds.
+        self.pos = match self.text[self.pos..].find('\n') {
+            Some(newline) => self.pos + newline,
+            None => self.bytes.len(),
+        };
     }
 
     /// If only blanks (and outside strings a comment) follow `from` up to the
@@ -143,12 +145,12 @@ impl<'a> Lexer<'a> {
     fn word(&mut self) -> Token<'a> {
         let start = self.pos;
         while let Some(&b) = self.bytes.get(self.pos) {
-            if is_space(b) || b == b'\n' || b == b';' || b == b'"' || PUNCT.contains(&b) {
-                break;
-            }
-            // A `\` that ends the line belongs to the line, not to the word.
-            if b == b'\\' && self.pos > start && self.continuation_end(self.pos + 1).is_some() {
-                break;
+            if WORD_STOPS[usize::from(b)] {
+                // A `\` that ends the line belongs to the line, not to the word.
+                let ends_line = self.pos > start && self.continuation_end(self.pos + 1).is_some();
+                if b != b'\\' || ends_line {
+                    break;
+                }
             }
             self.pos += 1;
         }
@@ -231,9 +233,28 @@ impl<'a> Lexer<'a> {
 
 /// Blanks between tokens: space, tab, the CR of CRLF, and the form feeds and
 /// Ctrl-Z end markers that old DOS editors left in files.
-fn is_space(b: u8) -> bool {
+const fn is_space(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\r' | 0x0b | 0x0c | 0x1a)
 }
+
+/// The bytes a word stops at, as a table: blanks, the end of the line, a
+/// comment, a string, punctuation, and `\` (which ends a word only when it
+/// continues the line).
+const WORD_STOPS: [bool; 256] = {
+    let mut stops = [false; 256];
+    let mut b = 0;
+    while b < 256 {
+        let byte = b as u8;
+        stops[b] = is_space(byte) || matches!(byte, b'\n' | b';' | b'"' | b'\\');
+        b += 1;
+    }
+    let mut p = 0;
+    while p < PUNCT.len() {
+        stops[PUNCT[p] as usize] = true;
+        p += 1;
+    }
+    stops
+};
 
 #[cfg(test)]
 mod tests {

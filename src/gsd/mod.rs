@@ -67,32 +67,59 @@ pub fn check(text: &str) -> Diagnostics {
     diags.extend(rules::check(&file));
     // Stable sort: file-wide findings first, the rest in file order.
     diags.0.sort_by_key(|d| d.span.as_ref().map(|s| s.start));
-    let lines = LineStarts::new(text);
-    diags.name_subjects(|offset| keyword_at(text, lines.start_of(offset)?));
+    let mut lines = LineCursor::new(text);
+    diags.name_subjects(|offset| keyword_at(text, lines.start_of(offset)));
     diags
 }
 
-/// Where each line starts, found once: looking back from every finding
-/// instead is quadratic on a megabyte line with thousands of findings.
-struct LineStarts(Vec<usize>);
+/// Finds the start of the line holding an offset, scanning forward from the
+/// previous offset when the offsets come in file order (as the sorted
+/// findings do): the whole text is scanned once, however many findings a
+/// megabyte line has.
+struct LineCursor<'a> {
+    text: &'a str,
+    /// Offset up to which the text has been scanned, and the start of the
+    /// line holding it.
+    scanned: usize,
+    line_start: usize,
+}
 
-impl LineStarts {
-    fn new(text: &str) -> Self {
-        let breaks = text.match_indices('\n').map(|(i, _)| i + 1);
-        LineStarts(std::iter::once(0).chain(breaks).collect())
+impl<'a> LineCursor<'a> {
+    fn new(text: &'a str) -> Self {
+        LineCursor {
+            text,
+            scanned: 0,
+            line_start: 0,
+        }
     }
 
-    /// The start of the line holding `offset`.
-    fn start_of(&self, offset: usize) -> Option<usize> {
-        let line = self.0.partition_point(|&start| start <= offset);
-        self.0.get(line.checked_sub(1)?).copied()
+    fn start_of(&mut self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len());
+        if offset < self.scanned {
+            // Out of order: look back from the offset itself.
+            return self.last_newline(0..offset).map_or(0, |i| i + 1);
+        }
+        if let Some(i) = self.last_newline(self.scanned..offset) {
+            self.line_start = i + 1;
+        }
+        self.scanned = offset;
+        self.line_start
+    }
+
+    fn last_newline(&self, range: std::ops::Range<usize>) -> Option<usize> {
+        let start = range.start;
+        let found = match self.text.get(range.clone()) {
+            Some(part) => part.rfind('\n'), // memrchr
+            None => self.text.as_bytes()[range].iter().rposition(|&b| b == b'\n'),
+        };
+        found.map(|i| start + i)
     }
 }
 
 /// The keyword of the line starting at `start`: what a finding is about.
 /// Reads no further than the keyword, however long the line.
 fn keyword_at(text: &str, start: usize) -> Option<String> {
-    let line = text[start..].trim_start_matches(|c: char| c.is_whitespace() && c != '\n');
+    let line = text.get(start..)?.trim_start_matches(|c: char| c.is_whitespace() && c != '\n');
     let keyword = line
         .split(|c: char| c == '=' || c == '(' || c == ';' || c.is_whitespace())
         .next()?;
@@ -115,13 +142,14 @@ pub fn check_strict(text: &str) -> Diagnostics {
 
 #[cfg(test)]
 mod subject_tests {
-    use super::{keyword_at, LineStarts};
+    use super::{keyword_at, LineCursor};
 
     #[test]
     fn the_subject_is_the_keyword_of_the_line() {
         let text = "#Profibus_DP\nMax_Input_Len = 249\nUnit_Diag_Bit(3) = \"x\"\n  \nEnd";
-        let lines = LineStarts::new(text);
-        let subject = |at: usize| keyword_at(text, lines.start_of(at)?);
+        let mut lines = LineCursor::new(text);
+        let mut subject = |at: usize| keyword_at(text, lines.start_of(at));
+        assert_eq!(subject(0).as_deref(), Some("#Profibus_DP"));
         assert_eq!(
             subject(text.find("249").unwrap()).as_deref(),
             Some("Max_Input_Len")
@@ -130,8 +158,13 @@ mod subject_tests {
             subject(text.find("\"x").unwrap()).as_deref(),
             Some("Unit_Diag_Bit")
         );
-        assert_eq!(subject(0).as_deref(), Some("#Profibus_DP"));
         // A blank line has no keyword; the next line's is not taken.
         assert_eq!(subject(text.find("  ").unwrap()), None);
+        // Back to an earlier line, out of order.
+        assert_eq!(
+            subject(text.find("Input").unwrap()).as_deref(),
+            Some("Max_Input_Len")
+        );
+        assert_eq!(subject(text.len()).as_deref(), Some("End"));
     }
 }

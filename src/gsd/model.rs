@@ -92,7 +92,7 @@ impl Baud {
 }
 
 /// The argument a keyword carries in its name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Arg {
     /// `Unit_Diag_Bit(3)`, `Ext_User_Prm_Data_Const(0)`.
     Index(i64),

@@ -34,6 +34,17 @@ const BLOCKS: [(&str, &str); 11] = [
     ("data_area_beg", "Data_Area_End"),
 ];
 
+/// The keywords of lines inside blocks besides settings, which the schema
+/// does not list: its table holds them too (see [`schema::key_of`]), so a
+/// block's lines allocate no keys either.
+pub(crate) fn inner_keywords() -> impl Iterator<Item = &'static str> {
+    const LINES: [&str; 12] = [
+        "text", "value", "x_value", "slot", "bit", "bitarea", "unsigned8", "unsigned16",
+        "unsigned32", "signed8", "signed16", "signed32",
+    ];
+    BLOCKS.iter().map(|(_, end)| *end).chain(LINES)
+}
+
 fn end_keyword(open_key: &str) -> &'static str {
     BLOCKS
         .iter()

@@ -100,10 +100,13 @@ enum Entry {
     /// `maxtsdr_1.5m`: one baud rate of a keyword the schema spells with
     /// `<baud>` (`MaxTsdr_<baud>`), whose key is `pattern`.
     Baud { pattern: Box<str>, baud: Baud },
+    /// A keyword of a line inside a block (`Text`, `Unsigned8`,
+    /// `EndModule`): known to the reader, not a setting of the schema.
+    Inner,
 }
 
 pub struct Schema {
-    by_key: HashMap<Box<str>, Entry, BuildHasherDefault<Fnv>>,
+    by_key: HashMap<Box<str>, Entry, BuildHasherDefault<KeyHasher>>,
 }
 
 /// The placeholder for a baud rate in the schema's keyword names.
@@ -128,6 +131,9 @@ impl Schema {
             }
             by_key.insert(key, Entry::Keyword(Keyword { name, spec }));
         }
+        for name in crate::gsd::reader::inner_keywords() {
+            by_key.insert(name.to_ascii_lowercase().into(), Entry::Inner);
+        }
         Schema { by_key }
     }
 
@@ -138,15 +144,16 @@ impl Schema {
             Entry::Keyword(k) => Some(k),
             Entry::Baud { pattern, .. } => match self.by_key.get(pattern)? {
                 Entry::Keyword(k) => Some(k),
-                Entry::Baud { .. } => None,
+                Entry::Baud { .. } | Entry::Inner => None,
             },
+            Entry::Inner => None,
         }
     }
 
     pub fn keywords(&self) -> impl Iterator<Item = &Keyword> {
         self.by_key.values().filter_map(|entry| match entry {
             Entry::Keyword(k) => Some(k),
-            Entry::Baud { .. } => None,
+            Entry::Baud { .. } | Entry::Inner => None,
         })
     }
 
@@ -160,21 +167,29 @@ pub fn schema() -> &'static Schema {
     SCHEMA.get_or_init(Schema::load)
 }
 
-/// FNV-1a, for the keyword table: its keys are fixed and short, so
-/// SipHash's defence against chosen keys buys nothing there (a file's
-/// keywords are only looked up, never inserted) and costs most of a lookup.
-pub(crate) struct Fnv(u64);
+/// The keyword table's hash: eight bytes a step (the multiply-rotate of
+/// rustc's FxHash). Its keys are fixed and short, so SipHash's defence
+/// against chosen keys buys nothing there (a file's keywords are only looked
+/// up, never inserted) and costs most of a lookup.
+#[derive(Default)]
+pub(crate) struct KeyHasher(u64);
 
-impl Default for Fnv {
-    fn default() -> Self {
-        Fnv(0xcbf2_9ce4_8422_2325)
+impl KeyHasher {
+    fn add(&mut self, word: u64) {
+        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(0x517c_c1b7_2722_0a95);
     }
 }
 
-impl Hasher for Fnv {
+impl Hasher for KeyHasher {
     fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        let mut words = bytes.chunks_exact(8);
+        for word in &mut words {
+            let mut buf = [0u8; 8];
+            buf.copy_from_slice(word);
+            self.add(u64::from_le_bytes(buf));
+        }
+        for &b in words.remainder() {
+            self.add(u64::from(b));
         }
     }
 
@@ -248,6 +263,11 @@ pub fn normalize(name: &str) -> String {
 /// Whether the keyword as written differs from the specification's
 /// spelling in more than letter case (see [`normalize`]).
 pub fn is_nonstandard_spelling(name: &str) -> bool {
+    if name.is_ascii() {
+        return name
+            .bytes()
+            .any(|b| char::from(b).is_whitespace() || b == b'!');
+    }
     name.contains(char::is_whitespace) || name.contains('!')
 }
 
@@ -256,7 +276,7 @@ pub fn is_nonstandard_spelling(name: &str) -> bool {
 pub fn baud_of(key: &str) -> Option<Baud> {
     match schema().by_key.get(key)? {
         Entry::Baud { baud, .. } => Some(*baud),
-        Entry::Keyword(_) => None,
+        Entry::Keyword(_) | Entry::Inner => None,
     }
 }
 
@@ -302,6 +322,10 @@ mod tests {
     fn known_keys_are_borrowed_from_the_schema() {
         assert!(matches!(key_of("Vendor_Name"), Cow::Borrowed("vendor_name")));
         assert!(matches!(key_of("MaxTsdr_1.5M"), Cow::Borrowed("maxtsdr_1.5m")));
+        assert!(matches!(key_of("EndModule"), Cow::Borrowed("endmodule")));
+        assert!(matches!(key_of("Text"), Cow::Borrowed("text")));
+        // Known to the reader, not a setting of the schema.
+        assert!(schema().lookup("text").is_none());
         // Not plain, or unknown: the same key, built.
         assert_eq!(key_of("Unit_Diag_!Bit"), "unit_diag_not_bit");
         assert_eq!(key_of("24V Pins"), "24v_pins");

@@ -1,7 +1,5 @@
 //! W205-W212: every setting against the keyword schema.
 
-use std::collections::HashSet;
-
 use crate::diag::Diagnostic;
 use crate::gsd::model::{Arg, GsdFile, Setting, Value};
 use crate::gsd::rules::{file_span, scopes};
@@ -12,35 +10,62 @@ use crate::gsd::schema::{self, is_nonstandard_spelling, Keyword, Kind};
 const MAX_SUGGESTIONS: usize = 32;
 
 pub(super) fn check(file: &GsdFile, out: &mut Vec<Diagnostic>) {
-    let revision = file.get("GSD_Revision").and_then(|s| s.value.as_number());
-    let mut suggestions = 0;
+    let mut checker = Checker {
+        revision: file.get("GSD_Revision").and_then(|s| s.value.as_number()),
+        suggestions: 0,
+        seen: Vec::new(),
+    };
+    for scope in scopes(file) {
+        checker.scope(scope, out);
+    }
     let headers = file.blocks.iter().map(|b| &b.header);
     let module_areas = file.modules.iter().flat_map(|m| &m.data_areas);
-    let all = scopes(file)
-        .into_iter()
-        .flatten()
-        .chain(headers)
-        .chain(module_areas.map(|a| &a.header));
-    for setting in all {
+    for header in headers.chain(module_areas.map(|a| &a.header)) {
+        checker.setting(header, out);
+    }
+    block_texts(file, out);
+    mandatory(file, out);
+}
+
+struct Checker<'f> {
+    revision: Option<i64>,
+    /// Unknown keywords given a suggestion so far.
+    suggestions: usize,
+    /// The scope's settings that may appear once: (key, argument, position).
+    seen: Vec<(&'f str, Option<Arg>, usize)>,
+}
+
+impl<'f> Checker<'f> {
+    /// Every setting of one scope against the schema, then W211 for the
+    /// keywords it repeats.
+    fn scope(&mut self, scope: &'f [Setting], out: &mut Vec<Diagnostic>) {
+        self.seen.clear();
+        for (position, setting) in scope.iter().enumerate() {
+            let repeatable = self.setting(setting, out).is_some_and(|k| k.spec.repeatable);
+            if !repeatable {
+                self.seen.push((&setting.key, setting.arg, position));
+            }
+        }
+        duplicates(scope, &mut self.seen, out);
+    }
+
+    /// One setting against the schema; its keyword, when the schema has it.
+    fn setting(&mut self, setting: &Setting, out: &mut Vec<Diagnostic>) -> Option<&'static Keyword> {
         if is_nonstandard_spelling(&setting.name) {
             out.push(nonstandard(setting));
         }
         let Some(keyword) = schema::schema().lookup(&setting.key) else {
-            let suggest = suggestions < MAX_SUGGESTIONS;
-            suggestions += usize::from(suggest);
+            let suggest = self.suggestions < MAX_SUGGESTIONS;
+            self.suggestions += usize::from(suggest);
             out.push(unknown(setting, suggest));
-            continue;
+            return None;
         };
         check_value(setting, keyword, out);
-        if let Some(revision) = revision {
+        if let Some(revision) = self.revision {
             check_revision(setting, keyword, revision, out);
         }
+        Some(keyword)
     }
-    for scope in scopes(file) {
-        duplicates(scope, out);
-    }
-    block_texts(file, out);
-    mandatory(file, out);
 }
 
 /// The texts that blocks carry outside settings: module and parameter
@@ -255,27 +280,29 @@ fn check_revision(setting: &Setting, keyword: &Keyword, revision: i64, out: &mut
     }
 }
 
-fn duplicates(scope: &[Setting], out: &mut Vec<Diagnostic>) {
-    let mut seen: HashSet<(&str, Option<Arg>)> = HashSet::new();
-    for setting in scope {
-        let repeatable = schema::schema()
-            .lookup(&setting.key)
-            .is_some_and(|k| k.spec.repeatable);
-        if repeatable {
-            continue;
-        }
-        if !seen.insert((&setting.key, setting.arg)) {
-            let name = match setting.index() {
-                Some(i) => format!("{}({i})", setting.name),
-                None => setting.name.clone(),
-            };
-            out.push(
-                Diagnostic::warning("W211", format!("`{name}` appears twice"))
-                    .at(setting.name_span.clone())
-                    .label("repeated here")
-                    .help("keep one: tools disagree on whether the first or the last counts"),
-            );
-        }
+/// W211 for each setting whose keyword and argument an earlier one in
+/// `scope` has, `seen` listing the settings that may appear once. Sorting
+/// finds them in O(n log n) whatever the keys (a hash set of keys a file
+/// chooses could be made quadratic).
+fn duplicates(scope: &[Setting], seen: &mut [(&str, Option<Arg>, usize)], out: &mut Vec<Diagnostic>) {
+    seen.sort_unstable();
+    let mut repeated: Vec<usize> = seen
+        .windows(2)
+        .filter(|pair| (pair[0].0, pair[0].1) == (pair[1].0, pair[1].1))
+        .map(|pair| pair[1].2)
+        .collect();
+    repeated.sort_unstable();
+    for setting in repeated.into_iter().map(|position| &scope[position]) {
+        let name = match setting.index() {
+            Some(i) => format!("{}({i})", setting.name),
+            None => setting.name.clone(),
+        };
+        out.push(
+            Diagnostic::warning("W211", format!("`{name}` appears twice"))
+                .at(setting.name_span.clone())
+                .label("repeated here")
+                .help("keep one: tools disagree on whether the first or the last counts"),
+        );
     }
 }
 
