@@ -399,7 +399,9 @@ struct Reader<'t> {
     text: &'t str,
     file: GsdFile,
     diags: Vec<Diagnostic>,
-    open: Option<Frame<'t>>,
+    /// The block being read, boxed so that it stays in place while it
+    /// takes its lines (it is moved once, when it ends).
+    open: Option<Box<Frame<'t>>>,
     /// End of the previous statement: where an unclosed block ends.
     prev_end: usize,
 }
@@ -448,7 +450,7 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
         }
     }
     if let Some(frame) = reader.open.take() {
-        reader.unclosed(frame);
+        reader.unclosed(*frame);
     }
     (reader.file, reader.diags)
 }
@@ -487,14 +489,14 @@ fn control_character(text: &str) -> Option<Diagnostic> {
 
 impl<'t> Reader<'t> {
     fn statement(&mut self, stmt: Stmt<'t>) {
-        if let Some(frame) = self.open.take() {
-            match self.feed(frame, &stmt) {
-                Fed::Open(frame) => {
+        if let Some(mut frame) = self.open.take() {
+            match self.feed(&mut frame, &stmt) {
+                Fed::Took => {
                     self.open = Some(frame);
                     return;
                 }
-                Fed::Closed => return,
-                Fed::NotMine(frame) => self.unclosed(frame),
+                Fed::Closed => return self.finish(*frame, stmt.span.end),
+                Fed::Foreign => self.unclosed(*frame),
             }
         }
         self.top(&stmt);
@@ -513,7 +515,7 @@ impl<'t> Reader<'t> {
         if stmt.key.is_empty() {
             self.malformed(stmt.span.clone(), "the line does not start with a keyword");
         } else if is_opener(&stmt.key) {
-            self.open = Some(self.open_block(stmt));
+            self.open = Some(Box::new(self.open_block(stmt)));
         } else if is_end(&stmt.key) {
             self.stray_end(stmt);
         } else if !stmt.has_eq {
@@ -565,19 +567,13 @@ struct Frame<'a> {
     body: Body,
 }
 
-/// What a frame did with a line.
-enum Fed<'a> {
-    Open(Frame<'a>),
+/// What a block did with a line.
+enum Fed {
+    Took,
+    /// The line ends the block.
     Closed,
     /// The line cannot belong to the block, which was left open.
-    NotMine(Frame<'a>),
-}
-
-/// A block body that took the line, or that cannot take it (the line is
-/// foreign to the block).
-enum Feed {
-    Took(Body),
-    Foreign(Body),
+    Foreign,
 }
 
 impl<'t> Reader<'t> {
@@ -669,24 +665,22 @@ impl<'t> Reader<'t> {
         area
     }
 
-    fn feed(&mut self, frame: Frame<'t>, stmt: &Stmt<'t>) -> Fed<'t> {
-        let Frame { header, body } = frame;
-        if ends(&stmt.key, &header.key) {
-            self.finish(Frame { header, body }, stmt.span.end);
+    fn feed(&mut self, frame: &mut Frame<'t>, stmt: &Stmt<'t>) -> Fed {
+        if ends(&stmt.key, &frame.header.key) {
             return Fed::Closed;
         }
-        let fed = match body {
+        let took = match &mut frame.body {
             Body::Module { module, area } => self.feed_module(module, area, stmt),
             Body::Ext(data) => self.feed_ext(data, stmt),
             Body::PrmText(text) => self.feed_prm_text(text, stmt),
-            Body::DiagArea(area) => self.feed_diag_area(area, stmt),
+            Body::DiagArea(area) => self.area_value(area, stmt),
             Body::DiagType { ty, area } => self.feed_diag_type(ty, area, stmt),
             Body::Slots => self.feed_slots(stmt),
             Body::Generic(block) => self.feed_generic(block, stmt),
         };
-        match fed {
-            Feed::Took(body) => Fed::Open(Frame { header, body }),
-            Feed::Foreign(body) => Fed::NotMine(Frame { header, body }),
+        match took {
+            true => Fed::Took,
+            false => Fed::Foreign,
         }
     }
 
@@ -707,32 +701,27 @@ impl<'t> Reader<'t> {
         stmt.key.is_empty() || is_opener(&stmt.key) || is_end(&stmt.key) || !stmt.has_eq
     }
 
-    fn feed_module(&mut self, mut module: Module, area: Option<Block>, stmt: &Stmt<'t>) -> Feed {
-        if let Some(mut area) = area {
+    /// A line of a module, or of the data area open in it. Like every
+    /// `feed_*`: false when the line cannot belong to the block.
+    fn feed_module(&mut self, module: &mut Module, area: &mut Option<Block>, stmt: &Stmt<'t>) -> bool {
+        if let Some(open) = area {
             if ends(&stmt.key, "data_area_beg") {
-                area.span.end = stmt.span.end;
-                module.data_areas.push(area);
-                return Feed::Took(Body::Module { module, area: None });
+                open.span.end = stmt.span.end;
+                module.data_areas.extend(area.take());
+                return true;
             }
             if !Self::foreign(stmt) {
-                area.settings.extend(self.block_setting(stmt));
-                return Feed::Took(Body::Module {
-                    module,
-                    area: Some(area),
-                });
+                open.settings.extend(self.block_setting(stmt));
+                return true;
             }
-            module.data_areas.push(self.close_nested_area(area));
+        }
+        if let Some(open) = area.take() {
+            module.data_areas.push(self.close_nested_area(open));
         }
         match &*stmt.key {
-            "data_area_beg" => {
-                let area = self.generic_block(stmt);
-                return Feed::Took(Body::Module {
-                    module,
-                    area: Some(area),
-                });
-            }
-            "" => self.module_reference(&mut module, stmt),
-            key if is_opener(key) => return Feed::Foreign(Body::Module { module, area: None }),
+            "data_area_beg" => *area = Some(self.generic_block(stmt)),
+            "" => self.module_reference(module, stmt),
+            key if is_opener(key) => return false,
             key if is_end(key) => self.stray_end(stmt),
             _ if !stmt.has_eq => {
                 self.malformed(stmt.span.clone(), "expected `=` after the keyword")
@@ -748,7 +737,7 @@ impl<'t> Reader<'t> {
                 }
             }
         }
-        Feed::Took(Body::Module { module, area: None })
+        true
     }
 
     /// The bare number on its own line inside a module.
@@ -762,7 +751,7 @@ impl<'t> Reader<'t> {
         }
     }
 
-    fn feed_ext(&mut self, mut data: ExtUserPrmData, stmt: &Stmt<'t>) -> Feed {
+    fn feed_ext(&mut self, data: &mut ExtUserPrmData, stmt: &Stmt<'t>) -> bool {
         match &*stmt.key {
             "prm_text_ref" | "changeable" | "visible" if stmt.has_eq => {
                 if let Some(s) = self.block_setting(stmt) {
@@ -778,9 +767,7 @@ impl<'t> Reader<'t> {
                     data.settings.push(s);
                 }
             }
-            key if key.is_empty() || stmt.has_eq || is_opener(key) || is_end(key) => {
-                return Feed::Foreign(Body::Ext(data))
-            }
+            key if key.is_empty() || stmt.has_eq || is_opener(key) || is_end(key) => return false,
             _ if data.data_type.is_some() => {
                 self.malformed(stmt.span.clone(), "a parameter has one type line")
             }
@@ -796,18 +783,18 @@ impl<'t> Reader<'t> {
                 ),
             },
         }
-        Feed::Took(Body::Ext(data))
+        true
     }
 
-    fn feed_prm_text(&mut self, mut text: PrmText, stmt: &Stmt<'t>) -> Feed {
+    fn feed_prm_text(&mut self, text: &mut PrmText, stmt: &Stmt<'t>) -> bool {
         if stmt.key != "text" {
-            return Feed::Foreign(Body::PrmText(text));
+            return false;
         }
         match indexed_text(stmt) {
             Some(t) => text.texts.push(t),
             None => self.malformed(stmt.span.clone(), "expected `Text(value) = \"text\"`"),
         }
-        Feed::Took(Body::PrmText(text))
+        true
     }
 
     /// `Value(n) = "text"` (or `X_Value`) into an area; false if the line is
@@ -823,50 +810,37 @@ impl<'t> Reader<'t> {
         true
     }
 
-    fn feed_diag_area(&mut self, mut area: UnitDiagArea, stmt: &Stmt<'t>) -> Feed {
-        match self.area_value(&mut area, stmt) {
-            true => Feed::Took(Body::DiagArea(area)),
-            false => Feed::Foreign(Body::DiagArea(area)),
-        }
-    }
-
+    /// A line of a `UnitDiagType`, or of the area open in it.
     fn feed_diag_type(
         &mut self,
-        mut ty: UnitDiagType,
-        area: Option<UnitDiagArea>,
+        ty: &mut UnitDiagType,
+        area: &mut Option<UnitDiagArea>,
         stmt: &Stmt<'t>,
-    ) -> Feed {
-        if let Some(mut area) = area {
-            if ends(&stmt.key, &schema::key_of(&area.keyword.value)) {
-                area.span.end = stmt.span.end;
-                ty.areas.push(area);
-                return Feed::Took(Body::DiagType { ty, area: None });
+    ) -> bool {
+        if let Some(open) = area {
+            if ends(&stmt.key, &schema::key_of(&open.keyword.value)) {
+                open.span.end = stmt.span.end;
+                ty.areas.extend(area.take());
+                return true;
             }
-            if self.area_value(&mut area, stmt) {
-                return Feed::Took(Body::DiagType {
-                    ty,
-                    area: Some(area),
-                });
+            if self.area_value(open, stmt) {
+                return true;
             }
-            ty.areas.push(self.close_nested_diag_area(area));
+        }
+        if let Some(open) = area.take() {
+            ty.areas.push(self.close_nested_diag_area(open));
         }
         match &*stmt.key {
-            "unit_diag_area" | "x_unit_diag_area" => {
-                let area = self.diag_area(stmt);
-                return Feed::Took(Body::DiagType {
-                    ty,
-                    area: Some(area),
-                });
-            }
-            _ if Self::foreign(stmt) => return Feed::Foreign(Body::DiagType { ty, area: None }),
+            "unit_diag_area" | "x_unit_diag_area" => *area = Some(self.diag_area(stmt)),
+            _ if Self::foreign(stmt) => return false,
             _ => ty.settings.extend(self.block_setting(stmt)),
         }
-        Feed::Took(Body::DiagType { ty, area: None })
+        true
     }
 
-    fn feed_slots(&mut self, stmt: &Stmt<'t>) -> Feed {
+    fn feed_slots(&mut self, stmt: &Stmt<'t>) -> bool {
         if stmt.key != "slot" {
-            return Feed::Foreign(Body::Slots);
+            return false;
         }
         match slot(stmt) {
             Some(slot) => self.file.slots.push(slot),
@@ -875,15 +849,15 @@ impl<'t> Reader<'t> {
                 "expected `Slot(n) = \"name\" default min-max` or `... default a,b,c`",
             ),
         }
-        Feed::Took(Body::Slots)
+        true
     }
 
-    fn feed_generic(&mut self, mut block: Block, stmt: &Stmt<'t>) -> Feed {
+    fn feed_generic(&mut self, block: &mut Block, stmt: &Stmt<'t>) -> bool {
         if Self::foreign(stmt) {
-            return Feed::Foreign(Body::Generic(block));
+            return false;
         }
         block.settings.extend(self.block_setting(stmt));
-        Feed::Took(Body::Generic(block))
+        true
     }
 
     fn open_block(&mut self, stmt: &Stmt<'t>) -> Frame<'t> {
