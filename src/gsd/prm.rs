@@ -20,10 +20,11 @@ pub enum Family {
 }
 
 impl Family {
-    pub fn prefix(self) -> &'static str {
+    /// The keys of its const and ref entries.
+    fn entry_keys(self) -> (&'static str, &'static str) {
         match self {
-            Family::Plain => "",
-            Family::Safety => "f_",
+            Family::Plain => ("ext_user_prm_data_const", "ext_user_prm_data_ref"),
+            Family::Safety => ("f_ext_user_prm_data_const", "f_ext_user_prm_data_ref"),
         }
     }
 }
@@ -55,8 +56,7 @@ impl Layout<'_> {
 
 /// The const and ref entries among `settings`, in file order.
 pub fn layout(settings: &[Setting], family: Family) -> Layout<'_> {
-    let const_key = format!("{}ext_user_prm_data_const", family.prefix());
-    let ref_key = format!("{}ext_user_prm_data_ref", family.prefix());
+    let (const_key, ref_key) = family.entry_keys();
     let mut layout = Layout {
         consts: Vec::new(),
         refs: Vec::new(),

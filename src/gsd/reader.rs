@@ -65,15 +65,20 @@ fn ends(key: &str, open_key: &str) -> bool {
 }
 
 /// Decimal (leading zeros allowed) or `0x`/`0X` hexadecimal.
+/// `None` for anything else, and for a number beyond `i64`.
 pub(crate) fn parse_number(s: &str) -> Option<i64> {
-    let (digits, radix) = match s.strip_prefix("0x").or_else(|| s.strip_prefix("0X")) {
-        Some(hex) => (hex, 16),
-        None => (s, 10),
+    let (digits, radix) = match s.as_bytes() {
+        [b'0', b'x' | b'X', hex @ ..] => (hex, 16),
+        decimal => (decimal, 10),
     };
-    if digits.is_empty() || !digits.chars().all(|c| c.is_digit(radix)) {
+    if digits.is_empty() {
         return None;
     }
-    i64::from_str_radix(digits, radix).ok()
+    digits.iter().try_fold(0i64, |n, &b| {
+        let digit = char::from(b).to_digit(radix)?;
+        n.checked_mul(i64::from(radix))?
+            .checked_add(i64::from(digit))
+    })
 }
 
 /// One element of what follows a keyword.
@@ -107,22 +112,25 @@ fn items_span(items: &[Item], empty_at: usize) -> Range<usize> {
 }
 
 /// One logical line, split into keyword, argument and value items, all
-/// borrowed from the text: the model takes copies of what it keeps.
+/// borrowed: from the text, and the items from a buffer the reader keeps
+/// for every line. The model takes copies of what it keeps.
 #[derive(Debug)]
-struct Stmt<'a> {
+struct Stmt<'a, 'b> {
     name: &'a str,
     /// Normalized keyword; empty when the line does not start with one.
     key: Cow<'static, str>,
     name_span: Range<usize>,
     /// What stands in `( )` after the keyword.
-    arg: Option<(Vec<Item<'a>>, Range<usize>)>,
+    arg: Option<(&'b [Item<'a>], Range<usize>)>,
     has_eq: bool,
-    items: Vec<Item<'a>>,
+    items: &'b [Item<'a>],
     span: Range<usize>,
 }
 
-impl<'a> Stmt<'a> {
-    fn parse(text: &'a str, tokens: &[Token<'a>]) -> Stmt<'a> {
+impl<'a, 'b> Stmt<'a, 'b> {
+    /// The statement of a line's tokens, its items in `buf` (cleared first).
+    fn parse(text: &'a str, tokens: &[Token<'a>], buf: &'b mut Vec<Item<'a>>) -> Stmt<'a, 'b> {
+        buf.clear();
         let span = tokens[0].span.start..tokens[tokens.len() - 1].span.end;
         let name_len = name_length(text, tokens);
         let name_span = match name_len {
@@ -136,28 +144,32 @@ impl<'a> Stmt<'a> {
             let inner_end = close.unwrap_or(rest.len());
             let end = rest[inner_end - 1].span.end;
             let arg_span = rest[0].span.start..close.map_or(end, |c| rest[c].span.end);
-            arg = Some((items(text, &rest[1..inner_end]), arg_span));
+            items(text, &rest[1..inner_end], buf);
+            arg = Some(arg_span);
             rest = &rest[close.map_or(rest.len(), |c| c + 1)..];
         }
         let has_eq = name_len > 0 && is_punct(rest.first(), b'=');
         if has_eq {
             rest = &rest[1..];
         }
+        let arg_items = buf.len();
+        items(text, rest, buf);
+        let (arg_items, items) = buf.split_at(arg_items);
         let name = &text[name_span.clone()];
         Stmt {
             key: schema::key_of(name),
             name,
             name_span,
-            arg,
+            arg: arg.map(|span| (arg_items, span)),
             has_eq,
-            items: items(text, rest),
+            items,
             span,
         }
     }
 
     /// The index in `Keyword(n)`, if that is what the argument is.
     fn index(&self) -> Option<i64> {
-        match self.arg.as_ref()?.0.as_slice() {
+        match self.arg.as_ref()?.0 {
             [Item::Num(n)] => Some(n.value),
             _ => None,
         }
@@ -209,8 +221,8 @@ fn signed_number(text: &str, tokens: &[Token]) -> Option<(i64, usize)> {
 
 /// Splits value tokens into items: strings, numbers (commas only separate),
 /// ranges `a-b`, and a family `n@sub@sub` that takes the rest of the line.
-fn items<'a>(text: &'a str, tokens: &[Token<'a>]) -> Vec<Item<'a>> {
-    let mut out = Vec::new();
+/// The items are appended to `out`.
+fn items<'a>(text: &'a str, tokens: &[Token<'a>], out: &mut Vec<Item<'a>>) {
     let mut i = 0;
     while i < tokens.len() {
         let token = &tokens[i];
@@ -250,7 +262,6 @@ fn items<'a>(text: &'a str, tokens: &[Token<'a>]) -> Vec<Item<'a>> {
         }
         out.push(Item::Num(Spanned::new(n, start..end)));
     }
-    out
 }
 
 /// Whether the `-` at `i` joins the number before it to a range: `0-255`
@@ -267,7 +278,7 @@ fn is_range_dash(tokens: &[Token], i: usize) -> bool {
 
 /// The value of a setting, or why it cannot be read.
 fn value(text: &str, stmt: &Stmt) -> Result<Value, &'static str> {
-    Ok(match stmt.items.as_slice() {
+    Ok(match stmt.items {
         [] if stmt.has_eq => return Err("nothing follows `=`"),
         [] => Value::None,
         [Item::Num(n)] => Value::Number(n.value),
@@ -324,7 +335,7 @@ fn owned(s: &Spanned<Cow<'_, str>>) -> Spanned<String> {
 
 /// `Text(n) = "..."`, `Value(n) = "..."`.
 fn indexed_text(stmt: &Stmt) -> Option<IndexedText> {
-    match (stmt.index(), stmt.items.as_slice()) {
+    match (stmt.index(), stmt.items) {
         (Some(index), [Item::Str(text)]) => Some(IndexedText {
             index,
             text: owned(text),
@@ -362,7 +373,7 @@ struct TypeLine {
 }
 
 fn prm_type_line(stmt: &Stmt) -> Option<TypeLine> {
-    let arg = stmt.arg.as_ref().map(|(items, _)| items.as_slice());
+    let arg = stmt.arg.as_ref().map(|(items, _)| *items);
     let ty = match (&*stmt.key, arg) {
         ("bit", Some([Item::Num(n)])) => PrmDataType::Bit(u8::try_from(n.value).ok()?),
         ("bitarea", Some([Item::Range(r)])) => {
@@ -432,6 +443,7 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
     reader.diags.extend(control_character(text));
     let mut lexer = Lexer::new(text, start);
     let mut tokens = Vec::new();
+    let mut items = Vec::new();
     let mut unterminated = Vec::new();
     while lexer.next_line(&mut tokens, &mut unterminated) {
         for u in unterminated.drain(..) {
@@ -443,7 +455,7 @@ pub(crate) fn read(text: &str) -> (GsdFile, Vec<Diagnostic>) {
             );
         }
         if !tokens.is_empty() {
-            let stmt = Stmt::parse(reader.text, &tokens);
+            let stmt = Stmt::parse(reader.text, &tokens, &mut items);
             let end = stmt.span.end;
             reader.statement(stmt);
             reader.prev_end = end;
@@ -488,7 +500,7 @@ fn control_character(text: &str) -> Option<Diagnostic> {
 }
 
 impl<'t> Reader<'t> {
-    fn statement(&mut self, stmt: Stmt<'t>) {
+    fn statement(&mut self, stmt: Stmt<'t, '_>) {
         if let Some(mut frame) = self.open.take() {
             match self.feed(&mut frame, &stmt) {
                 Fed::Took => {
@@ -511,7 +523,7 @@ impl<'t> Reader<'t> {
         );
     }
 
-    fn top(&mut self, stmt: &Stmt<'t>) {
+    fn top(&mut self, stmt: &Stmt<'t, '_>) {
         if stmt.key.is_empty() {
             self.malformed(stmt.span.clone(), "the line does not start with a keyword");
         } else if is_opener(&stmt.key) {
@@ -535,7 +547,7 @@ struct Header<'a> {
 }
 
 impl<'a> Header<'a> {
-    fn of(stmt: &Stmt<'a>) -> Header<'a> {
+    fn of(stmt: &Stmt<'a, '_>) -> Header<'a> {
         Header {
             name: stmt.name,
             key: stmt.key.clone(),
@@ -596,7 +608,7 @@ impl<'t> Reader<'t> {
         );
     }
 
-    fn stray_end(&mut self, stmt: &Stmt<'t>) {
+    fn stray_end(&mut self, stmt: &Stmt<'t, '_>) {
         self.diags.push(
             Diagnostic::error("E204", format!("`{}` without an open block", stmt.name))
                 .at(stmt.name_span.clone())
@@ -665,7 +677,7 @@ impl<'t> Reader<'t> {
         area
     }
 
-    fn feed(&mut self, frame: &mut Frame<'t>, stmt: &Stmt<'t>) -> Fed {
+    fn feed(&mut self, frame: &mut Frame<'t>, stmt: &Stmt<'t, '_>) -> Fed {
         if ends(&stmt.key, &frame.header.key) {
             return Fed::Closed;
         }
@@ -685,7 +697,7 @@ impl<'t> Reader<'t> {
     }
 
     /// A setting for a block's own list; `None` (reported) if unreadable.
-    fn block_setting(&mut self, stmt: &Stmt<'t>) -> Option<Setting> {
+    fn block_setting(&mut self, stmt: &Stmt<'t, '_>) -> Option<Setting> {
         match setting(self.text, stmt) {
             Ok(s) => Some(s),
             Err(why) => {
@@ -703,7 +715,7 @@ impl<'t> Reader<'t> {
 
     /// A line of a module, or of the data area open in it. Like every
     /// `feed_*`: false when the line cannot belong to the block.
-    fn feed_module(&mut self, module: &mut Module, area: &mut Option<Block>, stmt: &Stmt<'t>) -> bool {
+    fn feed_module(&mut self, module: &mut Module, area: &mut Option<Block>, stmt: &Stmt<'t, '_>) -> bool {
         if let Some(open) = area {
             if ends(&stmt.key, "data_area_beg") {
                 open.span.end = stmt.span.end;
@@ -741,8 +753,8 @@ impl<'t> Reader<'t> {
     }
 
     /// The bare number on its own line inside a module.
-    fn module_reference(&mut self, module: &mut Module, stmt: &Stmt<'t>) {
-        match (stmt.items.as_slice(), &module.reference) {
+    fn module_reference(&mut self, module: &mut Module, stmt: &Stmt<'t, '_>) {
+        match (stmt.items, &module.reference) {
             ([Item::Num(n)], None) => module.reference = Some(n.clone()),
             ([Item::Num(_)], Some(_)) => {
                 self.malformed(stmt.span.clone(), "a module has one reference number")
@@ -751,7 +763,7 @@ impl<'t> Reader<'t> {
         }
     }
 
-    fn feed_ext(&mut self, data: &mut ExtUserPrmData, stmt: &Stmt<'t>) -> bool {
+    fn feed_ext(&mut self, data: &mut ExtUserPrmData, stmt: &Stmt<'t, '_>) -> bool {
         match &*stmt.key {
             "prm_text_ref" | "changeable" | "visible" if stmt.has_eq => {
                 if let Some(s) = self.block_setting(stmt) {
@@ -786,7 +798,7 @@ impl<'t> Reader<'t> {
         true
     }
 
-    fn feed_prm_text(&mut self, text: &mut PrmText, stmt: &Stmt<'t>) -> bool {
+    fn feed_prm_text(&mut self, text: &mut PrmText, stmt: &Stmt<'t, '_>) -> bool {
         if stmt.key != "text" {
             return false;
         }
@@ -799,7 +811,7 @@ impl<'t> Reader<'t> {
 
     /// `Value(n) = "text"` (or `X_Value`) into an area; false if the line is
     /// something else.
-    fn area_value(&mut self, area: &mut UnitDiagArea, stmt: &Stmt<'t>) -> bool {
+    fn area_value(&mut self, area: &mut UnitDiagArea, stmt: &Stmt<'t, '_>) -> bool {
         if stmt.key != "value" && stmt.key != "x_value" {
             return false;
         }
@@ -815,7 +827,7 @@ impl<'t> Reader<'t> {
         &mut self,
         ty: &mut UnitDiagType,
         area: &mut Option<UnitDiagArea>,
-        stmt: &Stmt<'t>,
+        stmt: &Stmt<'t, '_>,
     ) -> bool {
         if let Some(open) = area {
             if ends(&stmt.key, &schema::key_of(&open.keyword.value)) {
@@ -838,7 +850,7 @@ impl<'t> Reader<'t> {
         true
     }
 
-    fn feed_slots(&mut self, stmt: &Stmt<'t>) -> bool {
+    fn feed_slots(&mut self, stmt: &Stmt<'t, '_>) -> bool {
         if stmt.key != "slot" {
             return false;
         }
@@ -852,7 +864,7 @@ impl<'t> Reader<'t> {
         true
     }
 
-    fn feed_generic(&mut self, block: &mut Block, stmt: &Stmt<'t>) -> bool {
+    fn feed_generic(&mut self, block: &mut Block, stmt: &Stmt<'t, '_>) -> bool {
         if Self::foreign(stmt) {
             return false;
         }
@@ -860,7 +872,7 @@ impl<'t> Reader<'t> {
         true
     }
 
-    fn open_block(&mut self, stmt: &Stmt<'t>) -> Frame<'t> {
+    fn open_block(&mut self, stmt: &Stmt<'t, '_>) -> Frame<'t> {
         let body = match &*stmt.key {
             "module" => Body::Module {
                 module: self.module_header(stmt),
@@ -893,7 +905,7 @@ impl<'t> Reader<'t> {
 
     /// A block whose header value is not checked here (the schema rules see
     /// it as a setting).
-    fn generic_block(&mut self, stmt: &Stmt<'t>) -> Block {
+    fn generic_block(&mut self, stmt: &Stmt<'t, '_>) -> Block {
         let header = self.block_setting(stmt).unwrap_or_else(|| Setting {
             name: stmt.name.to_string(),
             key: stmt.key.clone(),
@@ -911,14 +923,14 @@ impl<'t> Reader<'t> {
     }
 
     /// `Module = "name" 0x.., 0x..`.
-    fn module_header(&mut self, stmt: &Stmt<'t>) -> Module {
+    fn module_header(&mut self, stmt: &Stmt<'t, '_>) -> Module {
         let (name, rest) = match stmt.items.split_first() {
             Some((Item::Str(name), rest)) => (owned(name), rest),
             _ => {
                 self.malformed(stmt.span.clone(), "a module needs a name in double quotes");
                 (
                     Spanned::new(String::new(), stmt.value_span()),
-                    &stmt.items[..],
+                    stmt.items,
                 )
             }
         };
@@ -951,8 +963,8 @@ impl<'t> Reader<'t> {
     }
 
     /// `ExtUserPrmData = id "name"`.
-    fn ext_header(&mut self, stmt: &Stmt<'t>) -> ExtUserPrmData {
-        let (id, name) = match stmt.items.as_slice() {
+    fn ext_header(&mut self, stmt: &Stmt<'t, '_>) -> ExtUserPrmData {
+        let (id, name) = match stmt.items {
             [Item::Num(id), Item::Str(name)] => (id.clone(), owned(name)),
             _ => {
                 self.malformed(stmt.span.clone(), "expected `ExtUserPrmData = id \"name\"`");
@@ -975,8 +987,8 @@ impl<'t> Reader<'t> {
     }
 
     /// `PrmText = id`, `UnitDiagType = id`.
-    fn id_header(&mut self, stmt: &Stmt<'t>) -> Spanned<i64> {
-        match stmt.items.as_slice() {
+    fn id_header(&mut self, stmt: &Stmt<'t, '_>) -> Spanned<i64> {
+        match stmt.items {
             [Item::Num(id)] => id.clone(),
             _ => {
                 self.malformed(stmt.span.clone(), "expected a number after `=`");
@@ -986,8 +998,8 @@ impl<'t> Reader<'t> {
     }
 
     /// `Unit_Diag_Area = first-last`.
-    fn diag_area(&mut self, stmt: &Stmt<'t>) -> UnitDiagArea {
-        let (first, last) = match stmt.items.as_slice() {
+    fn diag_area(&mut self, stmt: &Stmt<'t, '_>) -> UnitDiagArea {
+        let (first, last) = match stmt.items {
             [Item::Range(r)] => r.value,
             _ => {
                 self.malformed(stmt.span.clone(), "expected `first-last` bit numbers");
@@ -1008,7 +1020,7 @@ impl<'t> Reader<'t> {
 /// `Slot(n) = "name" default allowed`.
 fn slot(stmt: &Stmt) -> Option<Slot> {
     let number = stmt.index()?;
-    let [Item::Str(name), Item::Num(default), rest @ ..] = stmt.items.as_slice() else {
+    let [Item::Str(name), Item::Num(default), rest @ ..] = stmt.items else {
         return None;
     };
     Some(Slot {
@@ -1018,4 +1030,20 @@ fn slot(stmt: &Stmt) -> Option<Slot> {
         allowed: allowed(rest, default.span.end)?,
         span: stmt.span.clone(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_number;
+
+    #[test]
+    fn numbers_are_decimal_or_hex() {
+        assert_eq!(parse_number("0x1A"), Some(26));
+        assert_eq!(parse_number("0X1a"), Some(26));
+        assert_eq!(parse_number("007"), Some(7));
+        assert_eq!(parse_number("9223372036854775807"), Some(i64::MAX));
+        for not_a_number in ["", "0x", "12a", "0xG", "-1", "+1", "1.5", "9223372036854775808"] {
+            assert_eq!(parse_number(not_a_number), None, "{not_a_number}");
+        }
+    }
 }

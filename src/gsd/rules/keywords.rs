@@ -136,7 +136,7 @@ fn unknown(setting: &Setting, suggest: bool) -> Diagnostic {
 fn closest_keyword(key: &str) -> Option<String> {
     schema::schema()
         .keywords()
-        .filter(|k| !k.name.contains('<'))
+        .filter(|k| !k.name.contains('<') && k.name.len().abs_diff(key.len()) <= 2)
         .map(|k| (edit_distance(key, &k.name.to_ascii_lowercase()), k))
         .filter(|(d, _)| *d <= 2)
         .min_by_key(|(d, k)| (*d, k.name.clone()))
