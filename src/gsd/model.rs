@@ -148,8 +148,9 @@ impl Value {
 /// One `Keyword[(arg)] = value` statement.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Setting {
-    /// The keyword as written, case preserved (`MaxTsdr_1.5M`, `24V Pins`).
-    pub name: String,
+    /// The keyword as written, case preserved (`MaxTsdr_1.5M`, `24V Pins`;
+    /// borrowed from the schema when written as the specification spells it).
+    pub name: Cow<'static, str>,
     /// The keyword as the schema knows it: lower case, blanks as `_`, and
     /// the Siemens spelling `Unit_Diag_!Bit` as `unit_diag_not_bit`
     /// (borrowed from the schema when it knows the keyword).

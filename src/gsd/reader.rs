@@ -39,8 +39,8 @@ const BLOCKS: [(&str, &str); 11] = [
 /// block's lines allocate no keys either.
 pub(crate) fn inner_keywords() -> impl Iterator<Item = &'static str> {
     const LINES: [&str; 12] = [
-        "text", "value", "x_value", "slot", "bit", "bitarea", "unsigned8", "unsigned16",
-        "unsigned32", "signed8", "signed16", "signed32",
+        "Text", "Value", "X_Value", "Slot", "Bit", "BitArea", "Unsigned8", "Unsigned16",
+        "Unsigned32", "Signed8", "Signed16", "Signed32",
     ];
     BLOCKS.iter().map(|(_, end)| *end).chain(LINES)
 }
@@ -119,6 +119,9 @@ struct Stmt<'a, 'b> {
     name: &'a str,
     /// Normalized keyword; empty when the line does not start with one.
     key: Cow<'static, str>,
+    /// The specification's spelling of the keyword, when the schema's table
+    /// has it.
+    spelling: Option<&'static str>,
     name_span: Range<usize>,
     /// What stands in `( )` after the keyword.
     arg: Option<(&'b [Item<'a>], Range<usize>)>,
@@ -156,14 +159,26 @@ impl<'a, 'b> Stmt<'a, 'b> {
         items(text, rest, buf);
         let (arg_items, items) = buf.split_at(arg_items);
         let name = &text[name_span.clone()];
+        let keyword = schema::resolve(name);
         Stmt {
-            key: schema::key_of(name),
+            key: keyword.key,
+            spelling: keyword.spelling,
             name,
             name_span,
             arg: arg.map(|span| (arg_items, span)),
             has_eq,
             items,
             span,
+        }
+    }
+
+    /// The keyword as written, for the model: borrowed from the schema when
+    /// the file spells it as the specification does (generated files do), so
+    /// the model need not copy it.
+    fn owned_name(&self) -> Cow<'static, str> {
+        match self.spelling {
+            Some(spelling) if spelling == self.name => Cow::Borrowed(spelling),
+            _ => Cow::Owned(self.name.to_string()),
         }
     }
 
@@ -315,7 +330,7 @@ fn setting(text: &str, stmt: &Stmt) -> Result<Setting, &'static str> {
         None => schema::baud_of(&stmt.key).map(Arg::Baud),
     };
     Ok(Setting {
-        name: stmt.name.to_string(),
+        name: stmt.owned_name(),
         key: stmt.key.clone(),
         arg,
         value: value(text, stmt)?,
@@ -907,7 +922,7 @@ impl<'t> Reader<'t> {
     /// it as a setting).
     fn generic_block(&mut self, stmt: &Stmt<'t, '_>) -> Block {
         let header = self.block_setting(stmt).unwrap_or_else(|| Setting {
-            name: stmt.name.to_string(),
+            name: stmt.owned_name(),
             key: stmt.key.clone(),
             arg: None,
             value: Value::None,

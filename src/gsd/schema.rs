@@ -98,11 +98,27 @@ pub struct Keyword {
 enum Entry {
     Keyword(Keyword),
     /// `maxtsdr_1.5m`: one baud rate of a keyword the schema spells with
-    /// `<baud>` (`MaxTsdr_<baud>`), whose key is `pattern`.
-    Baud { pattern: Box<str>, baud: Baud },
+    /// `<baud>` (`MaxTsdr_<baud>`), whose key is `pattern`; `name` is its
+    /// spelling (`MaxTsdr_1.5M`).
+    Baud {
+        pattern: Box<str>,
+        baud: Baud,
+        name: Box<str>,
+    },
     /// A keyword of a line inside a block (`Text`, `Unsigned8`,
     /// `EndModule`): known to the reader, not a setting of the schema.
-    Inner,
+    Inner { name: &'static str },
+}
+
+impl Entry {
+    /// The keyword as the specification spells it.
+    fn spelling(&self) -> &str {
+        match self {
+            Entry::Keyword(k) => &k.name,
+            Entry::Baud { name, .. } => name,
+            Entry::Inner { name } => name,
+        }
+    }
 }
 
 pub struct Schema {
@@ -124,15 +140,20 @@ impl Schema {
             let key: Box<str> = name.to_ascii_lowercase().into();
             if key.contains(BAUD) {
                 for baud in Baud::ALL {
-                    let concrete = key.replace(BAUD, &baud.as_str().to_ascii_lowercase());
+                    let name: Box<str> = name.replace(BAUD, baud.as_str()).into();
                     let pattern = key.clone();
-                    by_key.insert(concrete.into(), Entry::Baud { pattern, baud });
+                    let entry = Entry::Baud {
+                        pattern,
+                        baud,
+                        name,
+                    };
+                    by_key.insert(entry.spelling().to_ascii_lowercase().into(), entry);
                 }
             }
             by_key.insert(key, Entry::Keyword(Keyword { name, spec }));
         }
         for name in crate::gsd::reader::inner_keywords() {
-            by_key.insert(name.to_ascii_lowercase().into(), Entry::Inner);
+            by_key.insert(name.to_ascii_lowercase().into(), Entry::Inner { name });
         }
         Schema { by_key }
     }
@@ -144,16 +165,16 @@ impl Schema {
             Entry::Keyword(k) => Some(k),
             Entry::Baud { pattern, .. } => match self.by_key.get(pattern)? {
                 Entry::Keyword(k) => Some(k),
-                Entry::Baud { .. } | Entry::Inner => None,
+                Entry::Baud { .. } | Entry::Inner { .. } => None,
             },
-            Entry::Inner => None,
+            Entry::Inner { .. } => None,
         }
     }
 
     pub fn keywords(&self) -> impl Iterator<Item = &Keyword> {
         self.by_key.values().filter_map(|entry| match entry {
             Entry::Keyword(k) => Some(k),
-            Entry::Baud { .. } | Entry::Inner => None,
+            Entry::Baud { .. } | Entry::Inner { .. } => None,
         })
     }
 
@@ -206,13 +227,29 @@ const MAX_PLAIN_KEY: usize = 48;
 /// schema when the schema knows the keyword, as it does on nearly every
 /// line: reading a file then allocates no keys.
 pub fn key_of(name: &str) -> Cow<'static, str> {
+    resolve(name).key
+}
+
+/// A keyword as written, against the schema's table.
+pub(crate) struct Resolved {
+    /// See [`key_of`].
+    pub key: Cow<'static, str>,
+    /// The specification's spelling, when the table has the keyword.
+    pub spelling: Option<&'static str>,
+}
+
+pub(crate) fn resolve(name: &str) -> Resolved {
     let mut buf = [0u8; MAX_PLAIN_KEY];
-    let known = plain_lowercase(name, &mut buf)
-        .and_then(|lower| schema().by_key.get_key_value(lower))
-        .map(|(key, _)| &**key);
+    let known = plain_lowercase(name, &mut buf).and_then(|lower| schema().by_key.get_key_value(lower));
     match known {
-        Some(key) => Cow::Borrowed(key),
-        None => Cow::Owned(normalize(name)),
+        Some((key, entry)) => Resolved {
+            key: Cow::Borrowed(key),
+            spelling: Some(entry.spelling()),
+        },
+        None => Resolved {
+            key: Cow::Owned(normalize(name)),
+            spelling: None,
+        },
     }
 }
 
@@ -276,7 +313,7 @@ pub fn is_nonstandard_spelling(name: &str) -> bool {
 pub fn baud_of(key: &str) -> Option<Baud> {
     match schema().by_key.get(key)? {
         Entry::Baud { baud, .. } => Some(*baud),
-        Entry::Keyword(_) | Entry::Inner => None,
+        Entry::Keyword(_) | Entry::Inner { .. } => None,
     }
 }
 
@@ -324,6 +361,12 @@ mod tests {
         assert!(matches!(key_of("MaxTsdr_1.5M"), Cow::Borrowed("maxtsdr_1.5m")));
         assert!(matches!(key_of("EndModule"), Cow::Borrowed("endmodule")));
         assert!(matches!(key_of("Text"), Cow::Borrowed("text")));
+        // The specification's spelling, whatever the case written.
+        assert_eq!(resolve("maxtsdr_1.5m").spelling, Some("MaxTsdr_1.5M"));
+        assert_eq!(resolve("12m_SUPP").spelling, Some("12M_supp"));
+        assert_eq!(resolve("ENDMODULE").spelling, Some("EndModule"));
+        assert_eq!(resolve("vendor_name").spelling, Some("Vendor_Name"));
+        assert_eq!(resolve("Vendor_Extra").spelling, None);
         // Known to the reader, not a setting of the schema.
         assert!(schema().lookup("text").is_none());
         // Not plain, or unknown: the same key, built.

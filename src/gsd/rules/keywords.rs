@@ -295,7 +295,7 @@ fn duplicates(scope: &[Setting], seen: &mut [(&str, Option<Arg>, usize)], out: &
     for setting in repeated.into_iter().map(|position| &scope[position]) {
         let name = match setting.index() {
             Some(i) => format!("{}({i})", setting.name),
-            None => setting.name.clone(),
+            None => setting.name.to_string(),
         };
         out.push(
             Diagnostic::warning("W211", format!("`{name}` appears twice"))
