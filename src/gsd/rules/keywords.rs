@@ -143,10 +143,12 @@ fn closest_keyword(key: &str) -> Option<String> {
         .map(|(_, k)| k.name.clone())
 }
 
-/// Levenshtein distance over bytes, two rows.
+/// Levenshtein distance over bytes, two rows; `usize::MAX` as soon as it
+/// must exceed 2, the most a suggestion allows.
 fn edit_distance(a: &str, b: &str) -> usize {
+    const TOO_FAR: usize = 2;
     let (a, b) = (a.as_bytes(), b.as_bytes());
-    if a.len().abs_diff(b.len()) > 2 {
+    if a.len().abs_diff(b.len()) > TOO_FAR {
         return usize::MAX;
     }
     let mut prev: Vec<usize> = (0..=b.len()).collect();
@@ -156,6 +158,10 @@ fn edit_distance(a: &str, b: &str) -> usize {
         for (j, &cb) in b.iter().enumerate() {
             let substitute = prev[j] + usize::from(ca != cb);
             cur[j + 1] = substitute.min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        // A row never shrinks below its minimum further down.
+        if cur.iter().min().is_some_and(|&m| m > TOO_FAR) {
+            return usize::MAX;
         }
         std::mem::swap(&mut prev, &mut cur);
     }
@@ -340,6 +346,8 @@ mod tests {
             1
         );
         assert_eq!(edit_distance("abc", "abc"), 0);
-        assert_eq!(edit_distance("abc", "xyz"), 3);
+        assert_eq!(edit_distance("abc", "axy"), 2);
+        assert_eq!(edit_distance("abc", "xyz"), usize::MAX);
+        assert_eq!(edit_distance("vendor_name", "model_name"), usize::MAX);
     }
 }
