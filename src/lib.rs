@@ -14,6 +14,7 @@ pub mod emit;
 pub mod gsd;
 pub mod gsdml;
 pub mod ir;
+mod latin1;
 pub mod load;
 pub mod lower;
 

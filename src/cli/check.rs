@@ -123,7 +123,7 @@ fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
 fn check_one(path: &Path) -> Report {
     match read(path) {
         Ok(bytes) => {
-            let (text, diagnostics) = check_bytes(path, &bytes);
+            let (text, diagnostics) = check_bytes(path, bytes);
             Report::Checked { text, diagnostics }
         }
         Err(ReadError::TooLarge(d)) => Report::Checked {
@@ -146,25 +146,48 @@ fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
 }
 
 /// GSDML by its `.xml` extension, GSD otherwise.
-fn check_bytes(path: &Path, bytes: &[u8]) -> (String, Diagnostics) {
+fn check_bytes(path: &Path, bytes: Vec<u8>) -> (String, Diagnostics) {
     if is_gsdml(path) {
         // UTF-8, or ISO-8859-1 when the XML declaration says so.
-        let text = match gsdc::gsdml::decode(bytes) {
-            Ok(text) => text.into_owned(),
-            Err(d) => {
-                return (
-                    String::from_utf8_lossy(bytes).into_owned(),
-                    Diagnostics(vec![d]),
-                )
-            }
-        };
+        let text = match gsdc::gsdml::decode(&bytes) {
+            Ok(text) => Decoded::of(&bytes, text),
+            Err(d) => return (Decoded::AsIs.text(bytes), Diagnostics(vec![d])),
+        }
+        .text(bytes);
         let file_name = path.file_name().map(|f| f.to_string_lossy().into_owned());
         let diagnostics = gsdc::gsdml::check(&text, file_name.as_deref());
         (text, diagnostics)
     } else {
-        let text = gsdc::gsd::decode(bytes).into_owned();
+        let text = Decoded::of(&bytes, gsdc::gsd::decode(&bytes)).text(bytes);
         let diagnostics = gsdc::gsd::check(&text);
         (text, diagnostics)
+    }
+}
+
+/// A file's text: its bytes as they are when they are UTF-8 and nothing was
+/// taken off (most files), else the converted text. Keeping the bytes spares
+/// a copy, whose fresh pages cost a megabyte file more than its check.
+enum Decoded {
+    AsIs,
+    Converted(String),
+}
+
+impl Decoded {
+    fn of(bytes: &[u8], text: std::borrow::Cow<'_, str>) -> Decoded {
+        match text {
+            std::borrow::Cow::Borrowed(t) if t.len() == bytes.len() => Decoded::AsIs,
+            text => Decoded::Converted(text.into_owned()),
+        }
+    }
+
+    /// The text, from the bytes it was decoded from (as they are, with any
+    /// byte that is not UTF-8 replaced, for a file that failed to decode).
+    fn text(self, bytes: Vec<u8>) -> String {
+        match self {
+            Decoded::AsIs => String::from_utf8(bytes)
+                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()),
+            Decoded::Converted(text) => text,
+        }
     }
 }
 

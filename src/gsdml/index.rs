@@ -2,6 +2,7 @@
 //! local name, so that each rule visits only the elements it is about; and
 //! the span helpers every rule uses.
 
+use std::cell::OnceCell;
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -23,8 +24,10 @@ pub const SUBMODULE_ITEMS: &[&str] = &[
 pub struct Index<'a, 'input> {
     elements: Vec<El<'a, 'input>>,
     by_name: HashMap<&'a str, Vec<El<'a, 'input>>>,
-    /// Byte offsets where lines start, to tell lines without rescanning.
-    line_starts: Vec<usize>,
+    text: &'input str,
+    /// Byte offsets where lines start, to tell lines without rescanning;
+    /// found when first asked for, since only some findings need them.
+    line_starts: OnceCell<Vec<usize>>,
 }
 
 impl<'a, 'input> Index<'a, 'input> {
@@ -37,15 +40,11 @@ impl<'a, 'input> Index<'a, 'input> {
                 .or_default()
                 .push(*node);
         }
-        let text = doc.input_text();
-        let breaks = text.bytes().enumerate().filter(|(_, b)| *b == b'\n');
-        let line_starts = std::iter::once(0)
-            .chain(breaks.map(|(i, _)| i + 1))
-            .collect();
         Index {
             elements,
             by_name,
-            line_starts,
+            text: doc.input_text(),
+            line_starts: OnceCell::new(),
         }
     }
 
@@ -56,8 +55,11 @@ impl<'a, 'input> Index<'a, 'input> {
 
     /// 1-based line of an element, for "first defined at line N" help texts.
     pub fn line_of(&self, node: &El<'_, '_>) -> usize {
-        self.line_starts
-            .partition_point(|&start| start <= node.range().start)
+        let line_starts = self.line_starts.get_or_init(|| {
+            let breaks = self.text.match_indices('\n').map(|(i, _)| i + 1);
+            std::iter::once(0).chain(breaks).collect()
+        });
+        line_starts.partition_point(|&start| start <= node.range().start)
     }
 
     /// Every GSDML element with this local name, in document order.

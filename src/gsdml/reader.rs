@@ -87,7 +87,7 @@ pub fn decode(bytes: &[u8]) -> Result<Cow<'_, str>, Diagnostic> {
             .map(Cow::Borrowed)
             .map_err(|e| invalid_utf8(bytes, e.valid_up_to())),
         "iso-8859-1" | "iso8859-1" | "iso_8859-1" | "latin1" | "latin-1" | "l1" => {
-            Ok(Cow::Owned(bytes.iter().map(|&b| char::from(b)).collect()))
+            Ok(Cow::Owned(crate::latin1::decode(bytes)))
         }
         other => Err(Diagnostic::error("E300", format!("unsupported encoding \"{other}\""))
             .help("save the file as UTF-8 (or ISO-8859-1) and declare it in <?xml ... encoding=\"UTF-8\"?>")),

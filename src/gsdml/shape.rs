@@ -1,4 +1,4 @@
-//! Limits on the shape of the XML, checked in one streaming pass before
+//! Limits on the shape of the XML, checked in one pass over the tags before
 //! roxmltree builds the tree (rule E300).
 //!
 //! roxmltree looks for a duplicate among the attributes already read for
@@ -9,7 +9,7 @@
 //! inside the limits: the corpus has at most 30 attributes on an element, 2
 //! namespace declarations in a file and 11 levels of nesting.
 
-use quick_xml::events::{BytesStart, Event};
+use std::ops::Range;
 
 use crate::diag::Diagnostic;
 
@@ -19,54 +19,179 @@ const MAX_NAMESPACES: usize = 64;
 /// than a dozen levels, and a limit keeps it that way for future rules.
 const MAX_DEPTH: usize = 256;
 
-/// `Err` with an E300 at the first element beyond a limit. Syntax errors are
-/// left to roxmltree, which reports them with a better message: the pass
-/// stops at the first one, and since quick-xml is the more lenient parser,
-/// roxmltree fails there too, never reading past it.
+/// `Err` with an E300 at the first element beyond a limit. The pass reads
+/// tags only as far as counting needs (memchr from `<` to `<`, quotes
+/// skipped whole), about ten times faster than a full XML tokenizer.
+/// Syntax errors are left to roxmltree, which reports them with a better
+/// message: the pass stops at the first thing that is not well-formed XML,
+/// and roxmltree, which reads every well-formed document this pass reads,
+/// fails there too, never reading past it.
 pub fn check(text: &str) -> Result<(), Diagnostic> {
-    let mut reader = quick_xml::Reader::from_str(text);
-    reader.config_mut().check_end_names = false;
+    let mut scan = Scan { text, pos: 0 };
     let (mut depth, mut namespaces) = (0, 0);
-    loop {
-        let at = usize::try_from(reader.buffer_position()).unwrap_or(usize::MAX);
-        let (tag, opens) = match reader.read_event() {
-            Ok(Event::Start(tag)) => (tag, true),
-            Ok(Event::Empty(tag)) => (tag, false),
-            Ok(Event::End(_)) => {
+    while let Some(markup) = scan.next_markup() {
+        let name = match markup {
+            Markup::StartTag(name) => name,
+            Markup::EndTag => {
                 depth = usize::saturating_sub(depth, 1); // an unmatched end tag is roxmltree's to report
                 continue;
             }
-            Ok(Event::Eof) | Err(_) => return Ok(()),
-            Ok(_) => continue,
         };
-        let span = at + 1..at + 1 + tag.name().as_ref().len(); // the name in the start tag
         if depth + 1 > MAX_DEPTH {
-            return Err(too_deep().at(span));
+            return Err(too_deep().at(name));
         }
-        namespaces += count_attributes(&tag).map_err(|d| d.at(span.clone()))?;
+        let Some(declared) = scan.attributes().map_err(|d| d.at(name.clone()))? else {
+            return Ok(()); // not well-formed
+        };
+        namespaces += declared.namespaces;
         if namespaces > MAX_NAMESPACES {
-            return Err(too_many_namespaces().at(span));
+            return Err(too_many_namespaces().at(name));
         }
-        depth += usize::from(opens);
+        depth += usize::from(!declared.empty_element);
+    }
+    Ok(())
+}
+
+enum Markup {
+    /// A start tag, read up to the end of its name (the span).
+    StartTag(Range<usize>),
+    EndTag,
+}
+
+struct Declared {
+    namespaces: usize,
+    /// `<a/>`, which opens no level.
+    empty_element: bool,
+}
+
+struct Scan<'t> {
+    text: &'t str,
+    /// Always just after an ASCII byte the scan stopped at, so a char
+    /// boundary.
+    pos: usize,
+}
+
+impl Scan<'_> {
+    /// Past the next start or end tag, skipping text, comments, CDATA and
+    /// processing instructions; `None` at the end or at anything else (a
+    /// DTD, which roxmltree refuses, or broken markup).
+    fn next_markup(&mut self) -> Option<Markup> {
+        loop {
+            self.skip_past("<")?;
+            let rest = &self.text.as_bytes()[self.pos..];
+            match rest.first()? {
+                b'/' => {
+                    self.skip_past(">")?;
+                    return Some(Markup::EndTag);
+                }
+                b'?' => self.skip_past("?>")?,
+                b'!' if rest.starts_with(b"!--") => self.skip_past("-->")?,
+                b'!' if rest.starts_with(b"![CDATA[") => self.skip_past("]]>")?,
+                b'!' => return None,
+                _ => {
+                    let start = self.pos;
+                    let len = rest
+                        .iter()
+                        .position(|&b| is_blank(b) || b == b'/' || b == b'>')?;
+                    self.pos += len;
+                    let name = start..start + len;
+                    return (len > 0).then_some(Markup::StartTag(name));
+                }
+            }
+        }
+    }
+
+    /// Reads the attributes up to the end of the start tag: `Ok(None)` when
+    /// the tag is not well-formed, `Err` past [`MAX_ATTRIBUTES`].
+    fn attributes(&mut self) -> Result<Option<Declared>, Diagnostic> {
+        let mut count = 0;
+        let mut namespaces = 0;
+        loop {
+            self.skip_blanks();
+            let bytes = self.text.as_bytes();
+            match bytes.get(self.pos) {
+                Some(b'>') => {
+                    self.pos += 1;
+                    return Ok(Some(Declared {
+                        namespaces,
+                        empty_element: false,
+                    }));
+                }
+                Some(b'/') if bytes.get(self.pos + 1) == Some(&b'>') => {
+                    self.pos += 2;
+                    return Ok(Some(Declared {
+                        namespaces,
+                        empty_element: true,
+                    }));
+                }
+                None | Some(b'/') => return Ok(None),
+                Some(_) => {}
+            }
+            let Some(name) = self.attribute() else {
+                return Ok(None);
+            };
+            count += 1;
+            if count > MAX_ATTRIBUTES {
+                return Err(too_many_attributes());
+            }
+            namespaces += usize::from(name == "xmlns" || name.starts_with("xmlns:"));
+        }
+    }
+
+    /// `name = "value"` (or `'value'`), returning the name.
+    fn attribute(&mut self) -> Option<&str> {
+        let bytes = self.text.as_bytes();
+        let start = self.pos;
+        let len = bytes[start..]
+            .iter()
+            .position(|&b| is_blank(b) || matches!(b, b'=' | b'/' | b'>'))?;
+        self.pos += len;
+        self.skip_blanks();
+        if bytes.get(self.pos) != Some(&b'=') || len == 0 {
+            return None;
+        }
+        self.pos += 1;
+        self.skip_blanks();
+        let quote = match bytes.get(self.pos)? {
+            b'"' => "\"",
+            b'\'' => "'",
+            _ => return None,
+        };
+        self.pos += 1;
+        self.skip_past(quote)?;
+        self.text.get(start..start + len)
+    }
+
+    fn skip_blanks(&mut self) {
+        let bytes = self.text.as_bytes();
+        while bytes.get(self.pos).copied().is_some_and(is_blank) {
+            self.pos += 1;
+        }
+    }
+
+    /// Moves just past the next `pattern`; `None` (and the end) if none.
+    fn skip_past(&mut self, pattern: &str) -> Option<()> {
+        let rest = &self.text[self.pos..];
+        let found = match pattern.as_bytes() {
+            [byte] => rest.find(char::from(*byte)), // memchr, no substring searcher
+            _ => rest.find(pattern),
+        };
+        match found {
+            Some(at) => {
+                self.pos += at + pattern.len();
+                Some(())
+            }
+            None => {
+                self.pos = self.text.len();
+                None
+            }
+        }
     }
 }
 
-/// The element's namespace declarations, or an error when it has more than
-/// [`MAX_ATTRIBUTES`] attributes (counted without reading the rest).
-fn count_attributes(tag: &BytesStart<'_>) -> Result<usize, Diagnostic> {
-    let mut attributes = tag.attributes();
-    attributes.with_checks(false);
-    let mut count = 0;
-    let mut namespaces = 0;
-    for attribute in attributes.take(MAX_ATTRIBUTES + 1) {
-        count += 1;
-        let declares = attribute.is_ok_and(|a| a.key.as_namespace_binding().is_some());
-        namespaces += usize::from(declares);
-    }
-    if count > MAX_ATTRIBUTES {
-        return Err(too_many_attributes());
-    }
-    Ok(namespaces)
+/// XML's white space.
+fn is_blank(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | b'\n')
 }
 
 fn too_deep() -> Diagnostic {
@@ -128,9 +253,76 @@ mod tests {
     }
 
     #[test]
+    fn comments_cdata_and_instructions_hold_no_tags() {
+        let inside = "<e xmlns:a=\"u\"/>".repeat(MAX_NAMESPACES + 1);
+        for wrapped in [
+            format!("<r><!--{inside}--></r>"),
+            format!("<r><![CDATA[{inside}]]></r>"),
+            format!("<?xml version=\"1.0\"?><?pi {inside}?><r/>"),
+            format!("<r a='{inside}' b=\"x>y\"/>"),
+        ] {
+            assert!(check(&wrapped).is_ok(), "{wrapped}");
+        }
+        // Outside them, the same tags count.
+        assert!(check(&format!("<r>{inside}</r>")).is_err());
+    }
+
+    #[test]
+    fn blanks_around_equals_and_the_default_namespace_count() {
+        let declarations = |n: usize| {
+            let list: String = (0..n).map(|i| format!("<e xmlns:n{i} = 'u' x\n=\t\"1\"/>")).collect();
+            format!("<r\nxmlns = \"u\" >{list}</r>")
+        };
+        assert!(check(&declarations(MAX_NAMESPACES - 1)).is_ok());
+        let d = check(&declarations(MAX_NAMESPACES)).unwrap_err();
+        assert!(d.message.contains("namespaces"), "{}", d.message);
+        // `xmlnsfoo` is an attribute, not a declaration.
+        let plain: String = (0..=MAX_NAMESPACES).map(|_| "<e xmlnsfoo=\"u\"/>").collect();
+        assert!(check(&format!("<r>{plain}</r>")).is_ok());
+    }
+
+    /// The start tags the pass reads, all of them well-formed, reading to
+    /// the end of the text.
+    fn start_tags(text: &str) -> usize {
+        let mut scan = Scan { text, pos: 0 };
+        let mut count = 0;
+        while let Some(markup) = scan.next_markup() {
+            if let Markup::StartTag(_) = markup {
+                assert!(scan.attributes().unwrap().is_some(), "at {}", scan.pos);
+                count += 1;
+            }
+        }
+        assert_eq!(scan.pos, text.len());
+        count
+    }
+
+    #[test]
+    fn the_pass_reads_every_element_of_real_files() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus/gsdml");
+        let mut files = 0;
+        for entry in std::fs::read_dir(dir).expect("the GSDML corpus is beside the checkout") {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "xml") {
+                continue;
+            }
+            let bytes = std::fs::read(&path).unwrap();
+            let text = crate::gsdml::decode(&bytes).unwrap();
+            let doc = roxmltree::Document::parse(&text).unwrap();
+            let elements = doc.descendants().filter(|n| n.is_element()).count();
+            assert_eq!(start_tags(&text), elements, "{}", path.display());
+            files += 1;
+        }
+        assert!(files >= 16, "{files} files");
+    }
+
+    #[test]
     fn syntax_errors_are_left_to_roxmltree() {
         assert!(check("<a><b></a>").is_ok());
         assert!(check("<a x=1 y='>").is_ok());
         assert!(check("<!-- never closed").is_ok());
+        assert!(check("<!DOCTYPE r><r/>").is_ok());
+        assert!(check("<a b></a>").is_ok());
+        assert!(check("<a/ >").is_ok());
+        assert!(check("<").is_ok());
     }
 }
