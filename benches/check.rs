@@ -9,8 +9,11 @@
 //! - `gsdc build descriptions/md810dp.toml` (every output, each verified)
 //!   against xmllint validating only the GSDML that build writes.
 //!
-//! Each figure is the median of several runs. Needs xmllint (libxml2-utils,
-//! installed by scripts/test.sh) and ../shared beside the checkout.
+//! The two sides of each comparison run in turns, and the ratio printed is
+//! the median of the ratios of the turns, so that the machine slowing down
+//! for a while (a shared VM does) does not favour either side. Needs
+//! xmllint (libxml2-utils, installed by scripts/test.sh) and ../shared
+//! beside the checkout.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -18,7 +21,7 @@ use std::time::{Duration, Instant};
 
 const SHARED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared");
 const GSDC: &str = env!("CARGO_BIN_EXE_gsdc");
-const RUNS: usize = 15;
+const RUNS: usize = 21;
 
 fn main() {
     let gsd_files = corpus("corpus/gsd", |name| !name.ends_with(".tsv"));
@@ -29,66 +32,69 @@ fn main() {
         .iter()
         .map(|p| (p.clone(), std::fs::read(p).unwrap()))
         .collect();
-    let gsdc_gsd = median(|| {
-        for (_, bytes) in &gsd_texts {
-            let text = gsdc::gsd::decode(bytes);
-            std::hint::black_box(gsdc::gsd::check(&text));
-        }
-    });
-    let parser_gsd = median(|| {
-        for (path, bytes) in &gsd_texts {
-            let text = String::from_utf8_lossy(bytes);
-            let _ = std::hint::black_box(gsd_parser::parser::parse(path, &text));
-        }
-    });
-    report(
+    compare(
         &format!("GSD corpus ({} files)", gsd_files.len()),
-        ("gsdc check", gsdc_gsd),
-        ("gsd-parser parse", parser_gsd),
+        ("gsdc check", &mut || {
+            for (_, bytes) in &gsd_texts {
+                let text = gsdc::gsd::decode(bytes);
+                std::hint::black_box(gsdc::gsd::check(&text));
+            }
+        }),
+        ("gsd-parser parse", &mut || {
+            for (path, bytes) in &gsd_texts {
+                let text = String::from_utf8_lossy(bytes);
+                let _ = std::hint::black_box(gsd_parser::parser::parse(path, &text));
+            }
+        }),
     );
 
-    let gsdc_gsdml = median(|| run(Command::new(GSDC).arg("check").args(&gsdml_files)));
-    let xmllint_gsdml = median(|| run(xmllint(&schema).args(&gsdml_files)));
-    report(
+    let xmllint_gsdml = || run(xmllint(&schema).args(&gsdml_files));
+    compare(
         &format!("GSDML corpus ({} files)", gsdml_files.len()),
-        ("gsdc check", gsdc_gsdml),
-        ("xmllint --schema", xmllint_gsdml),
+        ("gsdc check", &mut || {
+            run(Command::new(GSDC).arg("check").args(&gsdml_files))
+        }),
+        ("xmllint --schema", &mut { xmllint_gsdml }),
     );
     let schema_dir = Path::new(&schema).parent().unwrap();
-    let gsdc_xsd = median(|| {
-        run(Command::new(GSDC)
-            .arg("check")
-            .arg("--xsd")
-            .arg(schema_dir)
-            .args(&gsdml_files))
-    });
-    report(
+    compare(
         &format!(
             "GSDML corpus ({} files), with the schema",
             gsdml_files.len()
         ),
-        ("gsdc check --xsd", gsdc_xsd),
-        ("xmllint --schema", xmllint_gsdml),
+        ("gsdc check --xsd", &mut || {
+            run(Command::new(GSDC)
+                .arg("check")
+                .arg("--xsd")
+                .arg(schema_dir)
+                .args(&gsdml_files))
+        }),
+        ("xmllint --schema", &mut { xmllint_gsdml }),
     );
 
     let out = std::env::temp_dir().join(format!("gsdc-bench-{}", std::process::id()));
     let description = format!("{}/descriptions/md810dp.toml", env!("CARGO_MANIFEST_DIR"));
-    let build = median(|| {
+    let build = || {
         let _ = std::fs::remove_dir_all(&out);
         run(Command::new(GSDC)
             .args(["build", &description, "--out"])
             .arg(&out));
-    });
+    };
+    build();
     let gsdml = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().path())
         .find(|p| p.extension().is_some_and(|e| e == "xml"))
         .expect("the build writes a GSDML file");
-    let xmllint_one = median(|| run(xmllint(&schema).arg(&gsdml)));
-    report(
+    let written = std::fs::read(&gsdml).unwrap();
+    compare(
         "build md810dp.toml (all outputs, verified)",
-        ("gsdc build", build),
-        ("xmllint on its GSDML", xmllint_one),
+        ("gsdc build", &mut { build }),
+        ("xmllint on its GSDML", &mut || {
+            // The build above removes and rewrites the same file.
+            std::fs::write(&gsdml, &written).unwrap();
+            run(xmllint(&schema).arg(&gsdml))
+        }),
     );
     let _ = std::fs::remove_dir_all(&out);
 }
@@ -120,26 +126,36 @@ fn run(command: &mut Command) {
     std::hint::black_box(status);
 }
 
-fn median(mut f: impl FnMut()) -> Duration {
-    f(); // warm caches
-    let mut times: Vec<Duration> = (0..RUNS)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed()
-        })
+/// Times `ours` and `theirs` in turns, [`RUNS`] times each after a warm-up
+/// run, and prints both medians and the median of the per-turn ratios: a
+/// machine that slows down for a while slows both sides of a turn alike.
+fn compare(what: &str, ours: (&str, &mut dyn FnMut()), theirs: (&str, &mut dyn FnMut())) {
+    let (our_name, ours) = ours;
+    let (their_name, theirs) = theirs;
+    ours();
+    theirs();
+    let mut turns: Vec<(Duration, Duration)> = (0..RUNS).map(|_| (time(ours), time(theirs))).collect();
+    let mut ratios: Vec<f64> = turns
+        .iter()
+        .map(|(o, t)| t.as_secs_f64() / o.as_secs_f64())
         .collect();
-    times.sort();
-    times[RUNS / 2]
+    ratios.sort_by(f64::total_cmp);
+    let ratio = ratios[RUNS / 2];
+    turns.sort_by_key(|(o, _)| *o);
+    let our_median = turns[RUNS / 2].0;
+    turns.sort_by_key(|(_, t)| *t);
+    let their_median = turns[RUNS / 2].1;
+    println!(
+        "{what}: {our_name} {:.2} ms, {their_name} {:.2} ms (medians of {RUNS}): gsdc is {ratio:.1}x as fast (median of the ratios, {:.1}x..{:.1}x)",
+        our_median.as_secs_f64() * 1e3,
+        their_median.as_secs_f64() * 1e3,
+        ratios[0],
+        ratios[RUNS - 1],
+    );
 }
 
-fn report(what: &str, ours: (&str, Duration), theirs: (&str, Duration)) {
-    let ratio = theirs.1.as_secs_f64() / ours.1.as_secs_f64();
-    println!(
-        "{what}: {} {:.2} ms, {} {:.2} ms: gsdc is {ratio:.1}x as fast",
-        ours.0,
-        ours.1.as_secs_f64() * 1e3,
-        theirs.0,
-        theirs.1.as_secs_f64() * 1e3,
-    );
+fn time(f: &mut dyn FnMut()) -> Duration {
+    let start = Instant::now();
+    f();
+    start.elapsed()
 }

@@ -93,9 +93,14 @@ fn is_gsdml(path: &Path) -> bool {
 }
 
 /// Checks every file on as many threads as the machine has cores but
-/// `spare_cores`, keeping the reports in the order of `files`.
+/// `spare_cores`, keeping the reports in the order of `files`. The largest
+/// files are taken first, so that a large file taken last does not leave
+/// the other threads idle while it is checked.
 fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
     let slots: Vec<Mutex<Option<Report>>> = files.iter().map(|_| Mutex::new(None)).collect();
+    let mut order: Vec<usize> = (0..files.len()).collect();
+    let size = |i: &usize| std::fs::metadata(&files[*i]).map_or(0, |m| m.len());
+    order.sort_by_key(|i| std::cmp::Reverse(size(i)));
     let next = AtomicUsize::new(0);
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
@@ -104,8 +109,10 @@ fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
     std::thread::scope(|scope| {
         for _ in 0..workers {
             scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(path) = files.get(i) else { break };
+                let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) else {
+                    break;
+                };
+                let path = &files[i];
                 *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(check_one(path));
             });
         }
