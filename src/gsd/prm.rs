@@ -2,7 +2,7 @@
 //! `Ext_User_Prm_Data_Ref(offset)` entries of the station or of a module, and
 //! the default telegram they make.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use crate::gsd::model::{ExtUserPrmData, GsdFile, PrmDataType, Setting};
 

@@ -2,9 +2,10 @@
 //! binary and parsed once.
 
 use std::borrow::Cow;
-use std::collections::{BTreeMap, HashMap};
-use std::hash::{BuildHasherDefault, Hasher};
+use std::collections::BTreeMap;
 use std::sync::OnceLock;
+
+use foldhash::{HashMap, HashMapExt};
 
 use serde::Deserialize;
 
@@ -122,7 +123,7 @@ impl Entry {
 }
 
 pub struct Schema {
-    by_key: HashMap<Box<str>, Entry, BuildHasherDefault<KeyHasher>>,
+    by_key: HashMap<Box<str>, Entry>,
 }
 
 /// The placeholder for a baud rate in the schema's keyword names.
@@ -135,7 +136,7 @@ impl Schema {
         // failure here is a build defect, not something a user's input causes.
         let table: BTreeMap<String, KeywordSpec> =
             toml::from_str(text).expect("schemas/gsd-keywords.toml is valid");
-        let mut by_key = HashMap::default();
+        let mut by_key = HashMap::new();
         for (name, spec) in table {
             let key: Box<str> = name.to_ascii_lowercase().into();
             if key.contains(BAUD) {
@@ -186,37 +187,6 @@ impl Schema {
 pub fn schema() -> &'static Schema {
     static SCHEMA: OnceLock<Schema> = OnceLock::new();
     SCHEMA.get_or_init(Schema::load)
-}
-
-/// The keyword table's hash: eight bytes a step (the multiply-rotate of
-/// rustc's FxHash). Its keys are fixed and short, so SipHash's defence
-/// against chosen keys buys nothing there (a file's keywords are only looked
-/// up, never inserted) and costs most of a lookup.
-#[derive(Default)]
-pub(crate) struct KeyHasher(u64);
-
-impl KeyHasher {
-    fn add(&mut self, word: u64) {
-        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(0x517c_c1b7_2722_0a95);
-    }
-}
-
-impl Hasher for KeyHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        let mut words = bytes.chunks_exact(8);
-        for word in &mut words {
-            let mut buf = [0u8; 8];
-            buf.copy_from_slice(word);
-            self.add(u64::from_le_bytes(buf));
-        }
-        for &b in words.remainder() {
-            self.add(u64::from(b));
-        }
-    }
-
-    fn finish(&self) -> u64 {
-        self.0
-    }
 }
 
 /// The longest keyword the schema knows is shorter than this; a longer name

@@ -3,7 +3,7 @@
 //! the span helpers every rule uses.
 
 use std::cell::OnceCell;
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 use std::ops::Range;
 
 use roxmltree::{Document, ExpandedName, Node};

@@ -8,7 +8,9 @@
 //! submodule added), so gsdc takes the lenient reading and never rejects a
 //! file that fits with data alone.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
+
+use foldhash::HashMap;
 
 use super::datatype::{io_size, missing_length, unknown_type, Place, Size};
 use super::index::{child, children, describe, tag_span, value_span, El};

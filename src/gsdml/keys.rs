@@ -3,7 +3,7 @@
 //! (E308), and every primary text translated into each other language
 //! (W300). The scopes are the keys of the V2.44 schema.
 
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet};
 
 use roxmltree::ExpandedName;
 

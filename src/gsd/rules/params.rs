@@ -3,7 +3,7 @@
 //! range (E221), no overlaps (E222), unique ids (E224), consistent lengths
 //! (E227), readable data types (E228).
 
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use std::ops::Range;
 
 use crate::diag::Diagnostic;

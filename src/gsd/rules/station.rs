@@ -2,7 +2,7 @@
 //! stations (E217, E218), DPV1 status bytes (E225), diagnosis bits (E226),
 //! diagnosis areas without values (W231).
 
-use std::collections::HashSet;
+use foldhash::HashSet;
 
 use crate::diag::Diagnostic;
 use crate::gsd::model::{Arg, GsdFile, Setting};
