@@ -134,7 +134,8 @@ fn compare(what: &str, ours: (&str, &mut dyn FnMut()), theirs: (&str, &mut dyn F
     let (their_name, theirs) = theirs;
     ours();
     theirs();
-    let mut turns: Vec<(Duration, Duration)> = (0..RUNS).map(|_| (time(ours), time(theirs))).collect();
+    let mut turns: Vec<(Duration, Duration)> =
+        (0..RUNS).map(|_| (time(ours), time(theirs))).collect();
     let mut ratios: Vec<f64> = turns
         .iter()
         .map(|(o, t)| t.as_secs_f64() / o.as_secs_f64())

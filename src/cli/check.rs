@@ -26,12 +26,11 @@ enum Report {
 }
 
 pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
-    // The schema, when asked for, is checked on a thread of its own beside
-    // the rules (libxml2's contexts must stay on one thread).
-    let (mut reports, schema) = std::thread::scope(|scope| {
+    // The schema, when asked for, is checked beside the rules, by threads
+    // of its own (libxml2's contexts must stay on one thread).
+    let (reports, schema) = std::thread::scope(|scope| {
         let schema = xsd.map(|dir| scope.spawn(move || schema_findings(files, dir)));
-        // The schema thread is the longer job: leave it a core of its own.
-        let reports = check_all(files, usize::from(schema.is_some()));
+        let reports = check_all(files);
         let schema = schema.map(|thread| {
             thread
                 .join()
@@ -39,6 +38,7 @@ pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
         });
         (reports, schema)
     });
+    let Ok(mut reports) = reports;
     match schema {
         Some(Err(why)) => {
             eprintln!("error: --xsd: {why}");
@@ -64,22 +64,21 @@ fn add_schema_findings(reports: &mut [Report], findings: Vec<Diagnostics>) {
 }
 
 /// The PI schema's findings for each GSDML file (none for other files).
+/// Each thread compiles the schema for itself (a few milliseconds): one
+/// large file takes libxml2 most of the time all files take.
 #[cfg(feature = "xsd")]
 fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, String> {
-    let mut schema = gsdc::xsd::Schema::load(dir)?;
-    // Each file is read here a second time: this thread runs beside the
-    // rules' workers, and waiting for their copy would serialise the two.
-    Ok(files
-        .iter()
-        .map(|path| {
-            // Unreadable or too large: the rules say so.
-            let bytes = read(path).unwrap_or_default();
-            match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
-                (true, Ok(text)) => schema.validate_file(path, &text),
-                _ => Diagnostics::default(),
-            }
-        })
-        .collect())
+    let load = || gsdc::xsd::Schema::load(dir);
+    in_parallel(files, load, |schema, path| {
+        // Each file is read here a second time: these threads run beside the
+        // rules' workers, and waiting for their copy would serialise the two.
+        // Unreadable or too large: the rules say so.
+        let bytes = read(path).unwrap_or_default();
+        match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
+            (true, Ok(text)) => schema.validate_file(path, &text),
+            _ => Diagnostics::default(),
+        }
+    })
 }
 
 #[cfg(not(feature = "xsd"))]
@@ -92,39 +91,54 @@ fn is_gsdml(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
 }
 
-/// Checks every file on as many threads as the machine has cores but
-/// `spare_cores`, keeping the reports in the order of `files`. The largest
-/// files are taken first, so that a large file taken last does not leave
-/// the other threads idle while it is checked.
-fn check_all(files: &[PathBuf], spare_cores: usize) -> Vec<Report> {
-    let slots: Vec<Mutex<Option<Report>>> = files.iter().map(|_| Mutex::new(None)).collect();
+/// Checks every file against gsdc's rules.
+fn check_all(files: &[PathBuf]) -> Result<Vec<Report>, std::convert::Infallible> {
+    in_parallel(files, || Ok(()), |(), path| check_one(path))
+}
+
+/// `job` for every file, on as many threads as the machine has cores, each
+/// with a state of its own from `init`; the results in the order of `files`.
+/// The largest files are taken first, so that a large file taken last does
+/// not leave the other threads idle while it is done, and its freed memory
+/// serves the smaller ones. `Err` when a thread's `init` fails.
+fn in_parallel<S, R: Send, E: Send>(
+    files: &[PathBuf],
+    init: impl Fn() -> Result<S, E> + Sync,
+    job: impl Fn(&mut S, &Path) -> R + Sync,
+) -> Result<Vec<R>, E> {
+    let slots: Vec<Mutex<Option<R>>> = files.iter().map(|_| Mutex::new(None)).collect();
     let mut order: Vec<usize> = (0..files.len()).collect();
     let size = |i: &usize| std::fs::metadata(&files[*i]).map_or(0, |m| m.len());
     order.sort_by_key(|i| std::cmp::Reverse(size(i)));
     let next = AtomicUsize::new(0);
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
-        .saturating_sub(spare_cores)
         .clamp(1, files.len().max(1));
-    std::thread::scope(|scope| {
-        for _ in 0..workers {
-            scope.spawn(|| loop {
-                let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) else {
-                    break;
-                };
-                let path = &files[i];
-                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(check_one(path));
-            });
+    let work = || -> Result<(), E> {
+        let mut state = init()?;
+        while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+            let result = job(&mut state, &files[i]);
+            *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(result);
         }
-    });
-    slots
+        Ok(())
+    };
+    std::thread::scope(|scope| {
+        let threads: Vec<_> = (0..workers).map(|_| scope.spawn(work)).collect();
+        // The scope joins whatever threads are left after an `Err`.
+        threads.into_iter().try_for_each(|thread| {
+            thread
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        })
+    })?;
+    Ok(slots
         .into_iter()
         .map(|slot| {
             slot.into_inner()
                 .unwrap_or_else(|e| e.into_inner())
-                .expect("every file was checked")
+                .expect("every file was done")
         })
-        .collect()
+        .collect())
 }
 
 fn check_one(path: &Path) -> Report {

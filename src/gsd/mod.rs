@@ -110,7 +110,9 @@ impl<'a> LineCursor<'a> {
         let start = range.start;
         let found = match self.text.get(range.clone()) {
             Some(part) => part.rfind('\n'), // memrchr
-            None => self.text.as_bytes()[range].iter().rposition(|&b| b == b'\n'),
+            None => self.text.as_bytes()[range]
+                .iter()
+                .rposition(|&b| b == b'\n'),
         };
         found.map(|i| start + i)
     }
@@ -119,7 +121,9 @@ impl<'a> LineCursor<'a> {
 /// The keyword of the line starting at `start`: what a finding is about.
 /// Reads no further than the keyword, however long the line.
 fn keyword_at(text: &str, start: usize) -> Option<String> {
-    let line = text.get(start..)?.trim_start_matches(|c: char| c.is_whitespace() && c != '\n');
+    let line = text
+        .get(start..)?
+        .trim_start_matches(|c: char| c.is_whitespace() && c != '\n');
     let keyword = line
         .split(|c: char| c == '=' || c == '(' || c == ';' || c.is_whitespace())
         .next()?;

@@ -39,8 +39,18 @@ const BLOCKS: [(&str, &str); 11] = [
 /// block's lines allocate no keys either.
 pub(crate) fn inner_keywords() -> impl Iterator<Item = &'static str> {
     const LINES: [&str; 12] = [
-        "Text", "Value", "X_Value", "Slot", "Bit", "BitArea", "Unsigned8", "Unsigned16",
-        "Unsigned32", "Signed8", "Signed16", "Signed32",
+        "Text",
+        "Value",
+        "X_Value",
+        "Slot",
+        "Bit",
+        "BitArea",
+        "Unsigned8",
+        "Unsigned16",
+        "Unsigned32",
+        "Signed8",
+        "Signed16",
+        "Signed32",
     ];
     BLOCKS.iter().map(|(_, end)| *end).chain(LINES)
 }
@@ -191,7 +201,7 @@ impl<'a, 'b> Stmt<'a, 'b> {
     }
 
     fn value_span(&self) -> Range<usize> {
-        items_span(&self.items, self.span.end)
+        items_span(self.items, self.span.end)
     }
 }
 
@@ -496,7 +506,10 @@ fn control_character(text: &str) -> Option<Diagnostic> {
         .as_bytes()
         .chunks(CHUNK)
         .position(|c| c.iter().fold(false, |any, b| any | is_control(b)))?;
-    let at = chunk * CHUNK + text.as_bytes()[chunk * CHUNK..].iter().position(is_control)?;
+    let at = chunk * CHUNK
+        + text.as_bytes()[chunk * CHUNK..]
+            .iter()
+            .position(is_control)?;
     let count = text.bytes().filter(is_control).count();
     let name = match text.as_bytes()[at] {
         0 => "a NUL byte".to_string(),
@@ -606,7 +619,7 @@ enum Fed {
 impl<'t> Reader<'t> {
     fn unclosed(&mut self, frame: Frame<'t>) {
         self.report_unclosed(
-            &frame.header.name,
+            frame.header.name,
             &frame.header.key,
             frame.header.span.clone(),
         );
@@ -730,7 +743,12 @@ impl<'t> Reader<'t> {
 
     /// A line of a module, or of the data area open in it. Like every
     /// `feed_*`: false when the line cannot belong to the block.
-    fn feed_module(&mut self, module: &mut Module, area: &mut Option<Block>, stmt: &Stmt<'t, '_>) -> bool {
+    fn feed_module(
+        &mut self,
+        module: &mut Module,
+        area: &mut Option<Block>,
+        stmt: &Stmt<'t, '_>,
+    ) -> bool {
         if let Some(open) = area {
             if ends(&stmt.key, "data_area_beg") {
                 open.span.end = stmt.span.end;
@@ -943,10 +961,7 @@ impl<'t> Reader<'t> {
             Some((Item::Str(name), rest)) => (owned(name), rest),
             _ => {
                 self.malformed(stmt.span.clone(), "a module needs a name in double quotes");
-                (
-                    Spanned::new(String::new(), stmt.value_span()),
-                    stmt.items,
-                )
+                (Spanned::new(String::new(), stmt.value_span()), stmt.items)
             }
         };
         let mut bytes = Vec::new();
@@ -1057,7 +1072,16 @@ mod tests {
         assert_eq!(parse_number("0X1a"), Some(26));
         assert_eq!(parse_number("007"), Some(7));
         assert_eq!(parse_number("9223372036854775807"), Some(i64::MAX));
-        for not_a_number in ["", "0x", "12a", "0xG", "-1", "+1", "1.5", "9223372036854775808"] {
+        for not_a_number in [
+            "",
+            "0x",
+            "12a",
+            "0xG",
+            "-1",
+            "+1",
+            "1.5",
+            "9223372036854775808",
+        ] {
             assert_eq!(parse_number(not_a_number), None, "{not_a_number}");
         }
     }

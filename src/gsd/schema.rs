@@ -108,7 +108,9 @@ enum Entry {
     },
     /// A keyword of a line inside a block (`Text`, `Unsigned8`,
     /// `EndModule`): known to the reader, not a setting of the schema.
-    Inner { name: &'static str },
+    Inner {
+        name: &'static str,
+    },
 }
 
 impl Entry {
@@ -210,7 +212,8 @@ pub(crate) struct Resolved {
 
 pub(crate) fn resolve(name: &str) -> Resolved {
     let mut buf = [0u8; MAX_PLAIN_KEY];
-    let known = plain_lowercase(name, &mut buf).and_then(|lower| schema().by_key.get_key_value(lower));
+    let known =
+        plain_lowercase(name, &mut buf).and_then(|lower| schema().by_key.get_key_value(lower));
     match known {
         Some((key, entry)) => Resolved {
             key: Cow::Borrowed(key),
@@ -327,8 +330,14 @@ mod tests {
 
     #[test]
     fn known_keys_are_borrowed_from_the_schema() {
-        assert!(matches!(key_of("Vendor_Name"), Cow::Borrowed("vendor_name")));
-        assert!(matches!(key_of("MaxTsdr_1.5M"), Cow::Borrowed("maxtsdr_1.5m")));
+        assert!(matches!(
+            key_of("Vendor_Name"),
+            Cow::Borrowed("vendor_name")
+        ));
+        assert!(matches!(
+            key_of("MaxTsdr_1.5M"),
+            Cow::Borrowed("maxtsdr_1.5m")
+        ));
         assert!(matches!(key_of("EndModule"), Cow::Borrowed("endmodule")));
         assert!(matches!(key_of("Text"), Cow::Borrowed("text")));
         // The specification's spelling, whatever the case written.

@@ -2,8 +2,8 @@
 //! local name, so that each rule visits only the elements it is about; and
 //! the span helpers every rule uses.
 
-use std::cell::OnceCell;
 use foldhash::{HashMap, HashMapExt};
+use std::cell::OnceCell;
 use std::ops::Range;
 
 use roxmltree::{Document, ExpandedName, Node};

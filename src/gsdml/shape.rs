@@ -272,14 +272,18 @@ mod tests {
     #[test]
     fn blanks_around_equals_and_the_default_namespace_count() {
         let declarations = |n: usize| {
-            let list: String = (0..n).map(|i| format!("<e xmlns:n{i} = 'u' x\n=\t\"1\"/>")).collect();
+            let list: String = (0..n)
+                .map(|i| format!("<e xmlns:n{i} = 'u' x\n=\t\"1\"/>"))
+                .collect();
             format!("<r\nxmlns = \"u\" >{list}</r>")
         };
         assert!(check(&declarations(MAX_NAMESPACES - 1)).is_ok());
         let d = check(&declarations(MAX_NAMESPACES)).unwrap_err();
         assert!(d.message.contains("namespaces"), "{}", d.message);
         // `xmlnsfoo` is an attribute, not a declaration.
-        let plain: String = (0..=MAX_NAMESPACES).map(|_| "<e xmlnsfoo=\"u\"/>").collect();
+        let plain: String = (0..=MAX_NAMESPACES)
+            .map(|_| "<e xmlnsfoo=\"u\"/>")
+            .collect();
         assert!(check(&format!("<r>{plain}</r>")).is_ok());
     }
 

@@ -41,7 +41,9 @@ impl<'f> Checker<'f> {
     fn scope(&mut self, scope: &'f [Setting], out: &mut Vec<Diagnostic>) {
         self.seen.clear();
         for (position, setting) in scope.iter().enumerate() {
-            let repeatable = self.setting(setting, out).is_some_and(|k| k.spec.repeatable);
+            let repeatable = self
+                .setting(setting, out)
+                .is_some_and(|k| k.spec.repeatable);
             if !repeatable {
                 self.seen.push((&setting.key, setting.arg, position));
             }
@@ -50,7 +52,11 @@ impl<'f> Checker<'f> {
     }
 
     /// One setting against the schema; its keyword, when the schema has it.
-    fn setting(&mut self, setting: &Setting, out: &mut Vec<Diagnostic>) -> Option<&'static Keyword> {
+    fn setting(
+        &mut self,
+        setting: &Setting,
+        out: &mut Vec<Diagnostic>,
+    ) -> Option<&'static Keyword> {
         if is_nonstandard_spelling(&setting.name) {
             out.push(nonstandard(setting));
         }
@@ -290,7 +296,11 @@ fn check_revision(setting: &Setting, keyword: &Keyword, revision: i64, out: &mut
 /// `scope` has, `seen` listing the settings that may appear once. Sorting
 /// finds them in O(n log n) whatever the keys (a hash set of keys a file
 /// chooses could be made quadratic).
-fn duplicates(scope: &[Setting], seen: &mut [(&str, Option<Arg>, usize)], out: &mut Vec<Diagnostic>) {
+fn duplicates(
+    scope: &[Setting],
+    seen: &mut [(&str, Option<Arg>, usize)],
+    out: &mut Vec<Diagnostic>,
+) {
     seen.sort_unstable();
     let mut repeated: Vec<usize> = seen
         .windows(2)
