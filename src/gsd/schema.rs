@@ -230,13 +230,13 @@ pub(crate) fn resolve(name: &str) -> Resolved {
 /// for [`normalize`] to do, and fits.
 fn plain_lowercase<'b>(name: &str, buf: &'b mut [u8; MAX_PLAIN_KEY]) -> Option<&'b str> {
     let bytes = name.as_bytes();
-    let plain = |b: &u8| b.is_ascii() && !b.is_ascii_whitespace() && *b != b'!';
-    if bytes.len() > buf.len() || !bytes.iter().all(plain) {
-        return None;
+    let lower = buf.get_mut(..bytes.len())?;
+    for (to, &b) in lower.iter_mut().zip(bytes) {
+        if !b.is_ascii() || b.is_ascii_whitespace() || b == b'!' {
+            return None;
+        }
+        *to = b.to_ascii_lowercase();
     }
-    let lower = &mut buf[..bytes.len()];
-    lower.copy_from_slice(bytes);
-    lower.make_ascii_lowercase();
     std::str::from_utf8(lower).ok()
 }
 

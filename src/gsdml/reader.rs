@@ -16,10 +16,11 @@ pub const INPUT_LIMIT: InputLimit = InputLimit {
     help: "the largest real GSDML files are a few megabytes: check that this is the right file",
 };
 
-/// Enough for the largest real GSDML files (the 1 MB SEW file has about
-/// 100 000 nodes) with a wide margin, small enough to bound memory on
-/// hostile input: 16 MiB of empty elements stop here, after about 2 s and
-/// 500 MB in a debug build, the costliest input within the limits found.
+/// Enough for the largest real GSDML files (the 1.1 MB SEW file has
+/// 19 895 nodes) with a wide margin, small enough to bound memory on
+/// hostile input. The shape pass refuses more than a million elements,
+/// comments and instructions before roxmltree reads a byte, so this limit
+/// is left to bound the text nodes between them, as a second guard.
 const NODES_LIMIT: u32 = 4_000_000;
 
 /// Parses GSDML text. DTDs are refused, never resolved (so no entity is

@@ -5,9 +5,11 @@
 //! each new attribute, and copies every inherited namespace into each element
 //! that declares one: both are quadratic. 10 000 nested elements that each
 //! declare a namespace (a 270 KB file) took seven minutes to check, and a
-//! million attributes on one element would take days. Real files are far
-//! inside the limits: the corpus has at most 30 attributes on an element, 2
-//! namespace declarations in a file and 11 levels of nesting.
+//! million attributes on one element would take days. And roxmltree spends
+//! some 120 bytes on each node before its own node limit stops it. Real files
+//! are far inside the limits: the corpus has at most 30 attributes on an
+//! element, 2 namespace declarations in a file, 11 levels of nesting and
+//! 8 881 elements.
 
 use std::ops::Range;
 
@@ -18,6 +20,11 @@ const MAX_NAMESPACES: usize = 64;
 /// Nothing in gsdc recurses over the tree, but no GSDML file nests deeper
 /// than a dozen levels, and a limit keeps it that way for future rules.
 const MAX_DEPTH: usize = 256;
+/// Elements, comments, instructions and CDATA sections: a hundred times
+/// the most of any real file (8 881 elements in the 1.1 MB SEW file).
+/// 16 MiB of empty elements, four million of them, are refused here before
+/// roxmltree allocates a node for any.
+const MAX_NODES: usize = 1_000_000;
 
 /// `Err` with an E300 at the first element beyond a limit. The pass reads
 /// tags only as far as counting needs (memchr from `<` to `<`, quotes
@@ -28,7 +35,7 @@ const MAX_DEPTH: usize = 256;
 /// fails there too, never reading past it.
 pub fn check(text: &str) -> Result<(), Diagnostic> {
     let mut scan = Scan { text, pos: 0 };
-    let (mut depth, mut namespaces) = (0, 0);
+    let (mut depth, mut namespaces, mut nodes) = (0, 0, 0);
     while let Some(markup) = scan.next_markup() {
         let name = match markup {
             Markup::StartTag(name) => name,
@@ -36,9 +43,20 @@ pub fn check(text: &str) -> Result<(), Diagnostic> {
                 depth = usize::saturating_sub(depth, 1); // an unmatched end tag is roxmltree's to report
                 continue;
             }
+            Markup::Other(at) => {
+                nodes += 1;
+                if nodes > MAX_NODES {
+                    return Err(too_many_nodes().at(at));
+                }
+                continue;
+            }
         };
         if depth + 1 > MAX_DEPTH {
             return Err(too_deep().at(name));
+        }
+        nodes += 1;
+        if nodes > MAX_NODES {
+            return Err(too_many_nodes().at(name));
         }
         let Some(declared) = scan.attributes().map_err(|d| d.at(name.clone()))? else {
             return Ok(()); // not well-formed
@@ -56,6 +74,9 @@ enum Markup {
     /// A start tag, read up to the end of its name (the span).
     StartTag(Range<usize>),
     EndTag,
+    /// A comment, processing instruction or CDATA section (the span of its
+    /// `<`).
+    Other(Range<usize>),
 }
 
 struct Declared {
@@ -72,33 +93,33 @@ struct Scan<'t> {
 }
 
 impl Scan<'_> {
-    /// Past the next start or end tag, skipping text, comments, CDATA and
-    /// processing instructions; `None` at the end or at anything else (a
-    /// DTD, which roxmltree refuses, or broken markup).
+    /// Past the next piece of markup, skipping text: a start tag only up to
+    /// its name. `None` at the end or at anything else (a DTD, which
+    /// roxmltree refuses, or broken markup).
     fn next_markup(&mut self) -> Option<Markup> {
-        loop {
-            self.skip_past("<")?;
-            let rest = &self.text.as_bytes()[self.pos..];
-            match rest.first()? {
-                b'/' => {
-                    self.skip_past(">")?;
-                    return Some(Markup::EndTag);
-                }
-                b'?' => self.skip_past("?>")?,
-                b'!' if rest.starts_with(b"!--") => self.skip_past("-->")?,
-                b'!' if rest.starts_with(b"![CDATA[") => self.skip_past("]]>")?,
-                b'!' => return None,
-                _ => {
-                    let start = self.pos;
-                    let len = rest
-                        .iter()
-                        .position(|&b| is_blank(b) || b == b'/' || b == b'>')?;
-                    self.pos += len;
-                    let name = start..start + len;
-                    return (len > 0).then_some(Markup::StartTag(name));
-                }
+        self.skip_past("<")?;
+        let lt = self.pos - 1..self.pos;
+        let rest = &self.text.as_bytes()[self.pos..];
+        match rest.first()? {
+            b'/' => {
+                self.skip_past(">")?;
+                return Some(Markup::EndTag);
+            }
+            b'?' => self.skip_past("?>")?,
+            b'!' if rest.starts_with(b"!--") => self.skip_past("-->")?,
+            b'!' if rest.starts_with(b"![CDATA[") => self.skip_past("]]>")?,
+            b'!' => return None,
+            _ => {
+                let start = self.pos;
+                let len = rest
+                    .iter()
+                    .position(|&b| is_blank(b) || b == b'/' || b == b'>')?;
+                self.pos += len;
+                let name = start..start + len;
+                return (len > 0).then_some(Markup::StartTag(name));
             }
         }
+        Some(Markup::Other(lt))
     }
 
     /// Reads the attributes up to the end of the start tag: `Ok(None)` when
@@ -205,6 +226,15 @@ fn too_deep() -> Diagnostic {
     .help("real GSDML files nest about a dozen levels deep: check that this is the right file")
 }
 
+fn too_many_nodes() -> Diagnostic {
+    Diagnostic::error(
+        "E300",
+        format!("the file has more than {MAX_NODES} elements, comments and instructions, the most gsdc reads"),
+    )
+    .label(format!("number {}", MAX_NODES + 1))
+    .help("the largest real GSDML files have some ten thousand elements: check that this is the right file")
+}
+
 fn too_many_attributes() -> Diagnostic {
     Diagnostic::error(
         "E300",
@@ -252,6 +282,19 @@ mod tests {
         };
         assert!(check(&declarations(MAX_NAMESPACES - 1)).is_ok());
         assert!(check(&declarations(MAX_NAMESPACES)).is_err());
+
+        let elements = |n: usize| format!("<r>{}</r>", "<a/>".repeat(n - 1));
+        assert!(check(&elements(MAX_NODES)).is_ok());
+        let d = check(&elements(MAX_NODES + 1)).unwrap_err();
+        assert!(d.message.contains("elements"), "{}", d.message);
+        let last = 3 + 4 * (MAX_NODES - 1) + 1;
+        assert_eq!(d.span, Some(last..last + 1));
+        // Comments count too: each is a node of the tree.
+        let comments = |n: usize| format!("<r>{}</r>", "<!---->".repeat(n - 1));
+        assert!(check(&comments(MAX_NODES)).is_ok());
+        let d = check(&comments(MAX_NODES + 1)).unwrap_err();
+        let last = 3 + 7 * (MAX_NODES - 1);
+        assert_eq!(d.span, Some(last..last + 1));
     }
 
     #[test]
