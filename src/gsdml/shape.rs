@@ -27,8 +27,9 @@ const MAX_DEPTH: usize = 256;
 const MAX_NODES: usize = 1_000_000;
 
 /// `Err` with an E300 at the first element beyond a limit. The pass reads
-/// tags only as far as counting needs (memchr from `<` to `<`, quotes
-/// skipped whole), about ten times faster than a full XML tokenizer.
+/// tags only as far as counting needs (from `<` to `<`, quoted values
+/// skipped whole): on the corpus it takes half the time quick-xml's
+/// tokenizer took for the same limits (2 ms against 3.7 ms).
 /// Syntax errors are left to roxmltree, which reports them with a better
 /// message: the pass stops at the first thing that is not well-formed XML,
 /// and roxmltree, which reads every well-formed document this pass reads,
