@@ -156,7 +156,10 @@ impl Schema {
             by_key.insert(key, Entry::Keyword(Keyword { name, spec }));
         }
         for name in crate::gsd::reader::inner_keywords() {
-            by_key.insert(name.to_ascii_lowercase().into(), Entry::Inner { name });
+            // A keyword of the schema keeps its entry, should one share a name.
+            by_key
+                .entry(name.to_ascii_lowercase().into())
+                .or_insert(Entry::Inner { name });
         }
         Schema { by_key }
     }
