@@ -28,7 +28,7 @@ enum Report {
 pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
     // The schema, when asked for, is checked beside the rules, by threads
     // of its own (libxml2's contexts must stay on one thread).
-    let (reports, schema) = std::thread::scope(|scope| {
+    let (mut reports, schema) = std::thread::scope(|scope| {
         let schema = xsd.map(|dir| scope.spawn(move || schema_findings(files, dir)));
         let reports = check_all(files);
         let schema = schema.map(|thread| {
@@ -38,7 +38,6 @@ pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
         });
         (reports, schema)
     });
-    let Ok(mut reports) = reports;
     match schema {
         Some(Err(why)) => {
             eprintln!("error: --xsd: {why}");
@@ -92,8 +91,10 @@ fn is_gsdml(path: &Path) -> bool {
 }
 
 /// Checks every file against gsdc's rules.
-fn check_all(files: &[PathBuf]) -> Result<Vec<Report>, std::convert::Infallible> {
-    in_parallel(files, || Ok(()), |(), path| check_one(path))
+fn check_all(files: &[PathBuf]) -> Vec<Report> {
+    let no_state = || Ok::<(), std::convert::Infallible>(());
+    let Ok(reports) = in_parallel(files, no_state, |(), path| check_one(path));
+    reports
 }
 
 /// `job` for every file, on as many threads as the machine has cores, each
@@ -109,7 +110,7 @@ fn in_parallel<S, R: Send, E: Send>(
     let slots: Vec<Mutex<Option<R>>> = files.iter().map(|_| Mutex::new(None)).collect();
     let mut order: Vec<usize> = (0..files.len()).collect();
     let size = |i: &usize| std::fs::metadata(&files[*i]).map_or(0, |m| m.len());
-    order.sort_by_key(|i| std::cmp::Reverse(size(i)));
+    order.sort_by_cached_key(|i| std::cmp::Reverse(size(i)));
     let next = AtomicUsize::new(0);
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
