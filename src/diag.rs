@@ -308,12 +308,14 @@ const MAX_SHOWN_LINE: usize = 120;
 /// and `after` and is `span_chars` characters long: the whole line when it is
 /// short, else a window with `...` where it was cut. Only the characters
 /// shown are walked, so a line of megabytes costs no more than a short one.
-/// Returns the text, the caret's column in it and the caret's width.
+/// Returns the text, the caret's column in it and the caret's width, both
+/// in terminal columns (see [`columns`]).
 fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize) {
+    let spanned = |tail: &str| columns(tail.chars().take(span_chars)).max(1);
     if before.len() + after.len() <= MAX_SHOWN_LINE {
         // Bytes bound characters: the whole line fits.
-        let width = span_chars.min(after.chars().count().max(1));
-        return (format!("{before}{after}"), before.chars().count(), width);
+        let caret_at = columns(before.chars());
+        return (format!("{before}{after}"), caret_at, spanned(after));
     }
     let lead: Vec<char> = before.chars().rev().take(MAX_SHOWN_LINE / 3 + 1).collect();
     let cut_before = lead.len() > MAX_SHOWN_LINE / 3;
@@ -324,12 +326,40 @@ fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize
     if cut_after {
         tail.pop();
     }
-    let tail_chars = tail.chars().count();
     let prefix = if cut_before { "..." } else { "" };
     let suffix = if cut_after { "..." } else { "" };
-    let caret_at = prefix.len() + lead.chars().count();
-    let width = span_chars.min(tail_chars.max(1));
+    let caret_at = prefix.len() + columns(lead.chars());
+    let width = spanned(&tail);
     (format!("{prefix}{lead}{tail}{suffix}"), caret_at, width)
+}
+
+/// The terminal columns characters take: two for the wide and full-width
+/// ones of East Asian scripts (Chinese texts are common in descriptions of
+/// Chinese drive makers), one for the rest. The ranges are the wide blocks
+/// of Unicode's East Asian Width property, as wcwidth draws them.
+fn columns(chars: impl Iterator<Item = char>) -> usize {
+    const WIDE: [(u32, u32); 12] = [
+        (0x1100, 0x115F),   // Hangul Jamo initials
+        (0x2E80, 0x303E),   // CJK radicals, punctuation
+        (0x3041, 0x33FF),   // Kana, CJK compatibility
+        (0x3400, 0x4DBF),   // CJK extension A
+        (0x4E00, 0x9FFF),   // CJK unified ideographs
+        (0xA000, 0xA4CF),   // Yi
+        (0xAC00, 0xD7A3),   // Hangul syllables
+        (0xF900, 0xFAFF),   // CJK compatibility ideographs
+        (0xFE30, 0xFE4F),   // CJK compatibility forms
+        (0xFF00, 0xFF60),   // full-width forms
+        (0xFFE0, 0xFFE6),   // full-width signs
+        (0x20000, 0x3FFFD), // CJK extensions B and later
+    ];
+    chars
+        .map(|c| {
+            let wide = WIDE
+                .iter()
+                .any(|&(lo, hi)| (lo..=hi).contains(&u32::from(c)));
+            1 + usize::from(wide)
+        })
+        .sum()
 }
 
 /// Tabs become one space and control characters a `?`, so carets line up.
@@ -391,6 +421,30 @@ mod tests {
         assert_eq!(
             rendered,
             "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
+        );
+    }
+
+    #[test]
+    fn carets_count_the_columns_wide_characters_take() {
+        let text = "name = { zh = \"名称（中文）\", en = 42 }\n";
+        let start = text.find("42").unwrap();
+        let d = Diagnostic::error("E003", "wrong type").at(start..start + 2);
+        let rendered = Source {
+            name: "x.toml",
+            text,
+        }
+        .render(&d);
+        let lines: Vec<&str> = rendered.lines().collect();
+        assert_eq!(lines[3], "1 | name = { zh = \"名称（中文）\", en = 42 }");
+        // 15 narrow characters, 6 wide ones, 8 narrow: "42" 35 columns in.
+        assert_eq!(lines[4], format!("  | {}^^", " ".repeat(15 + 2 * 6 + 8)));
+        // A span over wide characters is as wide as they are drawn.
+        let start = text.find('名').unwrap();
+        let d = Diagnostic::error("E003", "x").at(start..start + "名称".len());
+        let rendered = Source { name: "x", text }.render(&d);
+        assert!(
+            rendered.contains(&format!("  | {}^^^^\n", " ".repeat(15))),
+            "{rendered}"
         );
     }
 
