@@ -145,12 +145,11 @@ impl<'a> Lexer<'a> {
     fn word(&mut self) -> Token<'a> {
         let start = self.pos;
         while let Some(&b) = self.bytes.get(self.pos) {
-            if WORD_STOPS[usize::from(b)] {
-                // A `\` that ends the line belongs to the line, not to the word.
-                let ends_line = self.pos > start && self.continuation_end(self.pos + 1).is_some();
-                if b != b'\\' || ends_line {
-                    break;
-                }
+            // A `\` stops the word only when it ends the line: then it
+            // belongs to the line, not to the word.
+            let ends_line = || self.pos > start && self.continuation_end(self.pos + 1).is_some();
+            if WORD_STOPS[usize::from(b)] && (b != b'\\' || ends_line()) {
+                break;
             }
             self.pos += 1;
         }
