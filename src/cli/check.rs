@@ -1,7 +1,7 @@
 //! `gsdc check`: GSD and GSDML files against gsdc's rules. Files are checked
 //! in parallel; what is printed follows the order of the arguments.
 
-use super::{display_name, say, say_how_many_not_shown, Status, MAX_SHOWN};
+use super::{display_name, not_shown, say, Status, MAX_SHOWN};
 use gsdc::output::ReadError;
 use gsdc::{Diagnostics, Source};
 use std::path::{Path, PathBuf};
@@ -16,85 +16,72 @@ pub enum Format {
     Json,
 }
 
-/// What checking one file gave: its text and diagnostics, or why it could not be read.
+/// What checking one file gave, rendered (the file's text is not kept, so a
+/// thread's next file can reuse its memory), or why it could not be read.
 enum Report {
     Checked {
-        text: String,
-        diagnostics: Diagnostics,
+        /// The findings shown and the summary, for stdout.
+        output: String,
+        /// How many findings were left out, for stderr.
+        not_shown: Option<String>,
+        errors: usize,
     },
     Unreadable(String),
 }
 
 pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
-    // The schema, when asked for, is checked beside the rules, by threads
-    // of its own (libxml2's contexts must stay on one thread).
-    let (mut reports, schema) = std::thread::scope(|scope| {
-        let schema = xsd.map(|dir| scope.spawn(move || schema_findings(files, dir)));
-        let reports = check_all(files);
-        let schema = schema.map(|thread| {
-            thread
-                .join()
-                .unwrap_or_else(|_| Err("the schema check failed".into()))
-        });
-        (reports, schema)
-    });
-    match schema {
-        Some(Err(why)) => {
+    // Each thread checks whole files: the rules, then the schema when asked
+    // for, with a schema of its own (libxml2's contexts must stay on the
+    // thread that made them; compiling one takes milliseconds).
+    let load = || xsd.map(load_schema).transpose();
+    let check = |schema: &mut Option<Schema>, path: &Path| check_one(path, schema.as_mut(), format);
+    let reports = match in_parallel(files, load, check) {
+        Ok(reports) => reports,
+        Err(why) => {
             eprintln!("error: --xsd: {why}");
             return Status::UsageOrIo;
         }
-        Some(Ok(findings)) => add_schema_findings(&mut reports, findings),
-        None => {}
-    }
+    };
     files
         .iter()
         .zip(reports)
-        .map(|(path, report)| print(&display_name(path), report, format))
+        .map(|(path, report)| print(&display_name(path), report))
         .max()
         .unwrap_or(Status::Ok)
 }
 
-fn add_schema_findings(reports: &mut [Report], findings: Vec<Diagnostics>) {
-    for (report, found) in reports.iter_mut().zip(findings) {
-        if let Report::Checked { diagnostics, .. } = report {
-            diagnostics.extend(found);
-        }
-    }
-}
-
-/// The PI schema's findings for each GSDML file (none for other files).
-/// Each thread compiles the schema for itself (a few milliseconds): one
-/// large file takes libxml2 most of the time all files take.
 #[cfg(feature = "xsd")]
-fn schema_findings(files: &[PathBuf], dir: &Path) -> Result<Vec<Diagnostics>, String> {
-    let load = || gsdc::xsd::Schema::load(dir);
-    in_parallel(files, load, |schema, path| {
-        // Each file is read here a second time: these threads run beside the
-        // rules' workers, and waiting for their copy would serialise the two.
-        // Unreadable or too large: the rules say so.
-        let bytes = read(path).unwrap_or_default();
-        match (is_gsdml(path), gsdc::gsdml::decode(&bytes)) {
-            (true, Ok(text)) => schema.validate_file(path, &text),
-            _ => Diagnostics::default(),
-        }
-    })
+type Schema = gsdc::xsd::Schema;
+
+/// Without the `xsd` feature no schema is ever loaded.
+#[cfg(not(feature = "xsd"))]
+enum Schema {}
+
+#[cfg(feature = "xsd")]
+fn load_schema(dir: &Path) -> Result<Schema, String> {
+    gsdc::xsd::Schema::load(dir)
 }
 
 #[cfg(not(feature = "xsd"))]
-fn schema_findings(_: &[PathBuf], _: &Path) -> Result<Vec<Diagnostics>, String> {
+fn load_schema(_: &Path) -> Result<Schema, String> {
     Err("this gsdc was built without the `xsd` feature: build it with `--features xsd`".into())
+}
+
+/// The PI schema's findings for a GSDML file, read from `path` as libxml2
+/// streams it; `text` places them.
+#[cfg(feature = "xsd")]
+fn schema_findings(schema: &mut Schema, path: &Path, text: &str) -> Diagnostics {
+    schema.validate_file(path, text)
+}
+
+#[cfg(not(feature = "xsd"))]
+fn schema_findings(schema: &mut Schema, _: &Path, _: &str) -> Diagnostics {
+    match *schema {}
 }
 
 fn is_gsdml(path: &Path) -> bool {
     path.extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
-}
-
-/// Checks every file against gsdc's rules.
-fn check_all(files: &[PathBuf]) -> Vec<Report> {
-    let no_state = || Ok::<(), std::convert::Infallible>(());
-    let Ok(reports) = in_parallel(files, no_state, |(), path| check_one(path));
-    reports
 }
 
 /// `job` for every file, on as many threads as the machine has cores, each
@@ -142,18 +129,21 @@ fn in_parallel<S, R: Send, E: Send>(
         .collect())
 }
 
-fn check_one(path: &Path) -> Report {
-    match read(path) {
-        Ok(bytes) => {
-            let (text, diagnostics) = check_bytes(path, bytes);
-            Report::Checked { text, diagnostics }
-        }
-        Err(ReadError::TooLarge(d)) => Report::Checked {
-            text: String::new(),
-            diagnostics: Diagnostics(vec![d]),
+fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report {
+    let name = display_name(path);
+    let (text, diagnostics) = match read(path) {
+        Ok(bytes) => check_bytes(path, bytes, schema),
+        Err(ReadError::TooLarge(d)) => (String::new(), Diagnostics(vec![d])),
+        Err(ReadError::Io(e)) => return Report::Unreadable(e.to_string()),
+    };
+    render(
+        &Source {
+            name: &name,
+            text: &text,
         },
-        Err(ReadError::Io(e)) => Report::Unreadable(e.to_string()),
-    }
+        &diagnostics,
+        format,
+    )
 }
 
 /// The file's bytes, refused by size before they are read when they are
@@ -167,8 +157,9 @@ fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
     gsdc::output::read_input(path, limit)
 }
 
-/// GSDML by its `.xml` extension, GSD otherwise.
-fn check_bytes(path: &Path, bytes: Vec<u8>) -> (String, Diagnostics) {
+/// GSDML by its `.xml` extension (with the schema's findings after the
+/// rules', when there is a schema), GSD otherwise.
+fn check_bytes(path: &Path, bytes: Vec<u8>, schema: Option<&mut Schema>) -> (String, Diagnostics) {
     if is_gsdml(path) {
         // UTF-8, or ISO-8859-1 when the XML declaration says so.
         let text = match gsdc::gsdml::decode(&bytes) {
@@ -177,7 +168,10 @@ fn check_bytes(path: &Path, bytes: Vec<u8>) -> (String, Diagnostics) {
         }
         .text(bytes);
         let file_name = path.file_name().map(|f| f.to_string_lossy().into_owned());
-        let diagnostics = gsdc::gsdml::check(&text, file_name.as_deref());
+        let mut diagnostics = gsdc::gsdml::check(&text, file_name.as_deref());
+        if let Some(schema) = schema {
+            diagnostics.extend(schema_findings(schema, path, &text));
+        }
         (text, diagnostics)
     } else {
         let text = Decoded::of(&bytes, gsdc::gsd::decode(&bytes)).text(bytes);
@@ -213,32 +207,47 @@ impl Decoded {
     }
 }
 
-fn print(name: &str, report: Report, format: Format) -> Status {
-    let (text, diagnostics) = match report {
-        Report::Checked { text, diagnostics } => (text, diagnostics),
+/// The findings as they are printed: at most [`MAX_SHOWN`], rendered or as
+/// JSON lines, and the summary.
+fn render(source: &Source<'_>, diagnostics: &Diagnostics, format: Format) -> Report {
+    let errors = diagnostics.errors().count();
+    let warnings = diagnostics.iter().count() - errors;
+    let shown = diagnostics.iter().take(MAX_SHOWN);
+    let mut lines: Vec<String> = match format {
+        Format::Human => shown.map(|d| source.render(d)).collect(),
+        Format::Json => shown.map(|d| source.to_json(d)).collect(),
+    };
+    if format == Format::Human {
+        lines.push(format!(
+            "{}: {errors} error(s), {warnings} warning(s)",
+            source.name
+        ));
+    }
+    Report::Checked {
+        output: lines.join("\n"),
+        not_shown: not_shown(source.name, diagnostics),
+        errors,
+    }
+}
+
+fn print(name: &str, report: Report) -> Status {
+    let (output, not_shown, errors) = match report {
+        Report::Checked {
+            output,
+            not_shown,
+            errors,
+        } => (output, not_shown, errors),
         Report::Unreadable(why) => {
             eprintln!("error: cannot read {name}: {why}");
             return Status::UsageOrIo;
         }
     };
-    let source = Source { name, text: &text };
-    let errors = diagnostics.errors().count();
-    let warnings = diagnostics.iter().count() - errors;
-    let shown = diagnostics.iter().take(MAX_SHOWN);
-    match format {
-        Format::Human => {
-            for d in shown {
-                say(&source.render(d));
-            }
-            say(&format!("{name}: {errors} error(s), {warnings} warning(s)"));
-        }
-        Format::Json => {
-            for d in shown {
-                say(&source.to_json(d));
-            }
-        }
+    if !output.is_empty() {
+        say(&output);
     }
-    say_how_many_not_shown(name, &diagnostics);
+    if let Some(note) = not_shown {
+        eprintln!("{note}");
+    }
     if errors > 0 {
         Status::InputErrors
     } else {

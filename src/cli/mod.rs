@@ -93,10 +93,15 @@ fn report(name: &str, text: &str, diagnostics: &Diagnostics) {
 }
 
 fn say_how_many_not_shown(name: &str, diagnostics: &Diagnostics) {
-    let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
-    if hidden > 0 {
-        eprintln!("{name}: {hidden} more finding(s) not shown");
+    if let Some(note) = not_shown(name, diagnostics) {
+        eprintln!("{note}");
     }
+}
+
+/// How many findings beyond [`MAX_SHOWN`] were left out, if any.
+fn not_shown(name: &str, diagnostics: &Diagnostics) -> Option<String> {
+    let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
+    (hidden > 0).then(|| format!("{name}: {hidden} more finding(s) not shown"))
 }
 
 /// Prints a line to stdout. A reader that went away (`gsdc check ... | head`)
