@@ -228,7 +228,9 @@ fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
 }
 
 /// `--format json`: one object per finding, with the fields tools need, in
-/// the order of the arguments whatever thread checked each file.
+/// the order of the arguments whatever thread checked each file. The GSD
+/// file is the smallest, so it is checked last (largest first), yet its
+/// findings come second.
 #[test]
 fn check_json_lines_have_the_documented_fields_in_argument_order() {
     let files = [
