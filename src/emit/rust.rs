@@ -7,7 +7,7 @@
 //! description's English texts, made unique within their scope.
 
 use crate::ir::mapping::{Allowed, MappingKind, MappingSet};
-use crate::ir::profibus::Profibus;
+use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, ModuleKind, Profinet};
 use crate::ir::{Choice, Ir, Layout, PkwKind, Telegram, Word};
 use serde::Serialize;
@@ -17,6 +17,7 @@ const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
 const SUPPORT: &str = include_str!("../../templates/support.rs");
 const PKW_PKE_IND_PWE: &str = include_str!("../../templates/pkw_pke_ind_pwe.rs");
 const PKW_STATION_COMMAND: &str = include_str!("../../templates/pkw_station_command.rs");
+const DIAGNOSIS: &str = include_str!("../../templates/diagnosis.rs");
 
 #[derive(Serialize)]
 struct Context<'a> {
@@ -26,6 +27,7 @@ struct Context<'a> {
     device: String,
     support: &'static str,
     pkw_support: Option<&'static str>,
+    diagnosis_support: Option<&'static str>,
     telegrams: Vec<TelegramStruct>,
     words: Vec<WordModule>,
     groups: Vec<Group>,
@@ -115,6 +117,23 @@ struct ProfibusItems {
     ppos: Vec<Ppo>,
     user_prm_len: usize,
     dpv1_status: Option<String>,
+    diagnosis: Option<DiagnosisItems>,
+}
+
+#[derive(Serialize)]
+struct DiagnosisItems {
+    /// Bytes of the block, the header included; also the header byte.
+    len: u8,
+    areas: Vec<DiagAreaItem>,
+}
+
+#[derive(Serialize)]
+struct DiagAreaItem {
+    constant: String,
+    doc: String,
+    first: u16,
+    last: u16,
+    values: ValueEnum,
 }
 
 #[derive(Serialize)]
@@ -185,6 +204,11 @@ fn context(ir: &Ir) -> Context<'_> {
             PkwKind::PkeIndPwe => Some(PKW_PKE_IND_PWE.trim_end()),
             PkwKind::StationCommandAddressValue => Some(PKW_STATION_COMMAND.trim_end()),
         },
+        diagnosis_support: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.diagnosis.as_ref())
+            .map(|_| DIAGNOSIS.trim_end()),
         telegrams: telegrams(ir),
         words: DIRECTIONS
             .iter()
@@ -347,6 +371,10 @@ fn word_module(dir: &Direction, word: &Word) -> WordModule {
 }
 
 fn bit_range(first: u8, last: u8) -> String {
+    bit_range_wide(first.into(), last.into())
+}
+
+fn bit_range_wide(first: u16, last: u16) -> String {
     if first == last {
         format!("Bit {first}")
     } else {
@@ -556,6 +584,50 @@ fn profibus_items(p: &Profibus) -> ProfibusItems {
             .collect(),
         user_prm_len: p.user_prm.byte_len(),
         dpv1_status: p.dpv1.map(|d| hex_bytes(&d.status_bytes)),
+        diagnosis: p.diagnosis.as_ref().map(diagnosis_items),
+    }
+}
+
+/// The device-related diagnosis: an area constant and a value enum for each
+/// `Unit_Diag_Area` of the GSD, named after its bits.
+fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
+    let mut types = Names::taken(&["DiagArea"]);
+    // The constants of the block come first; areas over the same bits get a
+    // counter.
+    let mut constants = Names::taken(&["LEN", "HEADER", "EMPTY"]);
+    let areas = d
+        .areas
+        .iter()
+        .map(|a| {
+            let (constant, enum_name) = match (a.first_bit, a.last_bit) {
+                (first, last) if first == last => (format!("BIT_{first}"), format!("Bit{first}")),
+                (first, last) => (
+                    format!("BITS_{first}_{last}"),
+                    format!("Bits{first}To{last}"),
+                ),
+            };
+            let constant = constants.unique(constant, a.first_bit);
+            let values = ValueEnum {
+                name: types.unique(enum_name, a.first_bit),
+                doc: format!("The values of [`{constant}`]."),
+                variants: variants(&a.values),
+            };
+            DiagAreaItem {
+                doc: format!(
+                    "{} of the device-related diagnosis: values in [`{}`].",
+                    bit_range_wide(a.first_bit, a.last_bit),
+                    values.name
+                ),
+                constant,
+                first: a.first_bit,
+                last: a.last_bit,
+                values,
+            }
+        })
+        .collect();
+    DiagnosisItems {
+        len: d.length,
+        areas,
     }
 }
 
@@ -735,6 +807,25 @@ mod tests {
         let text = include_str!("../../descriptions/mv810-pnet02.toml");
         let ir = crate::load("mv810-pnet02.toml", text).0.unwrap();
         assert_eq!(file_name(&ir), "mv810_pnet02_layout.rs");
+    }
+
+    #[test]
+    fn diagnosis_areas_over_the_same_bits_get_their_own_names() {
+        let text = include_str!("../../descriptions/md810dp.toml").replace(
+            "[[profibus.diagnosis.areas]]",
+            "[[profibus.diagnosis.areas]]\nbit = [8, 15]\nvalues = [{ value = 1, text = \"One\" }]\n\n[[profibus.diagnosis.areas]]",
+        );
+        let ir = crate::load("md810dp.toml", &text).0.unwrap();
+        let items = diagnosis_items(ir.profibus.as_ref().unwrap().diagnosis.as_ref().unwrap());
+        let names: Vec<_> = items
+            .areas
+            .iter()
+            .map(|a| (a.constant.as_str(), a.values.name.as_str()))
+            .collect();
+        assert_eq!(
+            names,
+            [("BITS_8_15", "Bits8To15"), ("BITS_8_15_8", "Bits8To158")]
+        );
     }
 
     #[test]

@@ -380,3 +380,47 @@ mod mv810 {
         assert_eq!(PkwAccess::Write { value: 0 }.command(), PkwCommand::Write);
     }
 }
+
+mod diagnosis {
+    include!("../../../templates/diagnosis.rs");
+
+    /// MD810 (1.8): header 3, then the fault code's high and low byte; the
+    /// low byte is bits 8..15.
+    #[test]
+    fn an_area_is_its_bits_counted_from_the_byte_after_the_header() {
+        let low_byte = DiagArea::new(8, 15);
+        let mut block = [3, 0, 0];
+        low_byte.set(&mut block, 0x34);
+        assert_eq!(block, [3, 0, 0x34]);
+        assert_eq!(low_byte.get(&block), 0x34);
+        assert_eq!(low_byte.block_len(), 3);
+        // Two bits in the middle of the first byte, the rest untouched.
+        let mode = DiagArea::new(2, 3);
+        let mut block = [3, 0xFF, 0xFF];
+        mode.set(&mut block, 0b01);
+        assert_eq!(block, [3, 0b1111_0111, 0xFF]);
+        assert_eq!(mode.get(&block), 0b01);
+        // Bits of the value beyond the area are dropped.
+        mode.set(&mut block, 0b110);
+        assert_eq!(mode.get(&block), 0b10);
+    }
+
+    #[test]
+    fn an_area_across_two_bytes_has_its_first_bit_lowest() {
+        let word = DiagArea::new(4, 11);
+        let mut block = [3, 0, 0];
+        word.set(&mut block, 0xAB);
+        assert_eq!(block, [3, 0xB0, 0x0A]);
+        assert_eq!(word.get(&block), 0xAB);
+        assert_eq!(word.block_len(), 3);
+    }
+
+    #[test]
+    fn a_block_too_short_loses_the_bits_past_its_end() {
+        let low_byte = DiagArea::new(8, 15);
+        let mut block = [3, 0];
+        low_byte.set(&mut block, 0x34);
+        assert_eq!(block, [3, 0]);
+        assert_eq!(low_byte.get(&block), 0);
+    }
+}

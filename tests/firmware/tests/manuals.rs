@@ -196,6 +196,36 @@ mod md810 {
         );
     }
 
+    /// A line of the GSD generated beside the layout: what follows `key`
+    /// and `=`.
+    fn gsd_value(key: &str) -> String {
+        let gsd = include_str!(concat!(env!("OUT_DIR"), "/MD810DP.GSD"));
+        let line = gsd
+            .lines()
+            .find(|l| l.starts_with(key))
+            .unwrap_or_else(|| panic!("the GSD has {key}"));
+        line.split_once('=').unwrap().1.trim().to_string()
+    }
+
+    /// Manual 1.8: when the card loses the drive the device-related
+    /// diagnosis is header 3, then 0x00 0x34; the GSD says the same
+    /// (Unit_Diag_Area = 8-15 with Value(52)) and its length.
+    #[test]
+    fn card_lost_the_drive_diagnosis() {
+        let mut block = diagnosis::EMPTY;
+        let lost = diagnosis::Bits8To15::DpCardLostTheDrive;
+        diagnosis::BITS_8_15.set(&mut block, lost.value());
+        assert_eq!(block, [0x03, 0x00, 0x34]);
+        assert_eq!(
+            diagnosis::Bits8To15::from_value(diagnosis::BITS_8_15.get(&block)),
+            Some(lost)
+        );
+        assert_eq!(gsd_value("Unit_Diag_Area"), "8-15");
+        assert_eq!(gsd_value("Value(52)"), "\"DP card lost the drive\"");
+        let max_diag: usize = gsd_value("Max_Diag_Data_Len").parse().unwrap();
+        assert_eq!(max_diag, 6 + diagnosis::LEN);
+    }
+
     #[test]
     fn dpv1_indexes_as_a_profinet_record() {
         assert_eq!(dpv1_index::RECORD_LEN, 12);
@@ -394,6 +424,16 @@ mod pi9000 {
             Some(status_word::Status::Stop)
         );
         assert_eq!(Ppo4In::from_bytes(&[0; 12]).to_bytes(), [0; 12]);
+    }
+
+    /// Appendix I: the fault code of 0x8000 in the diagnosis' low byte.
+    #[test]
+    fn fault_code_diagnosis() {
+        let mut block = diagnosis::EMPTY;
+        let fault = diagnosis::Bits8To15::MotorOverload;
+        diagnosis::BITS_8_15.set(&mut block, fault.value());
+        assert_eq!(block, [0x03, 0x00, 11]);
+        assert_eq!(diagnosis::Bits8To15::from_value(0x0B), Some(fault));
     }
 
     /// Without DPV1 the parameter telegram is the mappings alone: PZD2..6
