@@ -344,7 +344,7 @@ fn word_module(dir: &Direction, word: &Word) -> WordModule {
         .bits
         .iter()
         .map(|b| {
-            let bits = bit_range(b.first, b.last);
+            let bits = bit_range(b.first.into(), b.last.into());
             let name = constants.unique(upper_snake(&b.name.en, "BIT"), b.first);
             let values = (!b.values.is_empty()).then(|| ValueEnum {
                 name: types.unique(camel(&b.name.en, "Field"), b.first),
@@ -370,11 +370,7 @@ fn word_module(dir: &Direction, word: &Word) -> WordModule {
     }
 }
 
-fn bit_range(first: u8, last: u8) -> String {
-    bit_range_wide(first.into(), last.into())
-}
-
-fn bit_range_wide(first: u16, last: u16) -> String {
+fn bit_range(first: u16, last: u16) -> String {
     if first == last {
         format!("Bit {first}")
     } else {
@@ -592,8 +588,8 @@ fn profibus_items(p: &Profibus) -> ProfibusItems {
 /// `Unit_Diag_Area` of the GSD, named after its bits.
 fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
     let mut types = Names::taken(&["DiagArea"]);
-    // The constants of the block come first; areas over the same bits get a
-    // counter.
+    // Beside the block's own constants; two areas over the same bits get
+    // the first bit's number appended.
     let mut constants = Names::taken(&["LEN", "HEADER", "EMPTY"]);
     let areas = d
         .areas
@@ -615,7 +611,7 @@ fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
             DiagAreaItem {
                 doc: format!(
                     "{} of the device-related diagnosis: values in [`{}`].",
-                    bit_range_wide(a.first_bit, a.last_bit),
+                    bit_range(a.first_bit, a.last_bit),
                     values.name
                 ),
                 constant,
