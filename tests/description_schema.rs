@@ -68,6 +68,14 @@ fn walk<'a>(root: &'a Json, node: &'a Json, path: &Path, out: &mut Vec<(Path, &'
     }
 }
 
+/// The places `walk` finds whose node has `keyword`.
+fn places_with<'a>(root: &'a Json, keyword: &str) -> Vec<(Path, &'a Json)> {
+    let mut found = Vec::new();
+    walk(root, root, &Vec::new(), &mut found);
+    found.retain(|(_, node)| node.get(keyword).is_some());
+    found
+}
+
 fn extend(path: &Path, key: &str) -> Path {
     let mut longer = path.clone();
     longer.push(key.to_string());
@@ -140,14 +148,9 @@ fn sorted_strings<'a>(names: impl Iterator<Item = &'a str>) -> Vec<String> {
 #[test]
 fn every_table_of_the_schema_has_the_keys_the_loader_takes() {
     let root = schema();
-    let mut found = Vec::new();
-    walk(&root, &root, &Vec::new(), &mut found);
-    let tables: Vec<_> = found
-        .iter()
-        .filter(|(_, node)| node.get("properties").is_some())
-        .collect();
+    let tables = places_with(&root, "properties");
     assert!(tables.len() >= 20, "{} tables", tables.len());
-    for (path, node) in tables {
+    for (path, node) in &tables {
         let mut description = md810();
         match path.as_slice() {
             [] => {
@@ -173,14 +176,9 @@ fn every_table_of_the_schema_has_the_keys_the_loader_takes() {
 #[test]
 fn every_enumeration_of_the_schema_has_the_loaders_names() {
     let root = schema();
-    let mut found = Vec::new();
-    walk(&root, &root, &Vec::new(), &mut found);
-    let enums: Vec<_> = found
-        .iter()
-        .filter(|(_, node)| node.get("enum").is_some())
-        .collect();
+    let enums = places_with(&root, "enum");
     assert!(enums.len() >= 3, "{enums:?}");
-    for (path, node) in enums {
+    for (path, node) in &enums {
         let names = node["enum"]
             .as_array()
             .unwrap()
