@@ -8,8 +8,9 @@ pub(crate) fn decode(bytes: &[u8]) -> String {
     let wide = bytes.iter().filter(|b| !b.is_ascii()).count();
     let mut text = String::with_capacity(bytes.len() + wide);
     for block in bytes.chunks(BLOCK) {
-        match std::str::from_utf8(block) {
-            Ok(ascii) if block.is_ascii() => text.push_str(ascii),
+        // ASCII is UTF-8 as it stands; anything else is taken byte by byte.
+        match block.is_ascii().then(|| std::str::from_utf8(block)) {
+            Some(Ok(ascii)) => text.push_str(ascii),
             _ => text.extend(block.iter().map(|&b| char::from(b))),
         }
     }

@@ -13,7 +13,7 @@ use std::ops::Range;
 use crate::diag::Diagnostic;
 use crate::gsd::lexer::{find_marker, Lexer, Tok, Token};
 use crate::gsd::model::{
-    Allowed, Arg, Block, ExtUserPrmData, GsdFile, IndexedText, Module, PrmDataType, PrmText,
+    Allowed, Arg, Baud, Block, ExtUserPrmData, GsdFile, IndexedText, Module, PrmDataType, PrmText,
     Setting, Slot, Spanned, UnitDiagArea, UnitDiagType, Value,
 };
 use crate::gsd::schema;
@@ -132,6 +132,8 @@ struct Stmt<'a, 'b> {
     /// The specification's spelling of the keyword, when the schema's table
     /// has it.
     spelling: Option<&'static str>,
+    /// The baud rate in the keyword's name (`MaxTsdr_1.5M`).
+    baud: Option<Baud>,
     name_span: Range<usize>,
     /// What stands in `( )` after the keyword.
     arg: Option<(&'b [Item<'a>], Range<usize>)>,
@@ -173,6 +175,7 @@ impl<'a, 'b> Stmt<'a, 'b> {
         Stmt {
             key: keyword.key,
             spelling: keyword.spelling,
+            baud: keyword.baud,
             name,
             name_span,
             arg: arg.map(|span| (arg_items, span)),
@@ -337,7 +340,7 @@ fn setting(text: &str, stmt: &Stmt) -> Result<Setting, &'static str> {
             stmt.index()
                 .ok_or("the argument in parentheses is not a number")?,
         )),
-        None => schema::baud_of(&stmt.key).map(Arg::Baud),
+        None => stmt.baud.map(Arg::Baud),
     };
     Ok(Setting {
         name: stmt.owned_name(),

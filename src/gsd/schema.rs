@@ -114,6 +114,13 @@ enum Entry {
 }
 
 impl Entry {
+    fn baud(&self) -> Option<Baud> {
+        match self {
+            Entry::Baud { baud, .. } => Some(*baud),
+            Entry::Keyword(_) | Entry::Inner { .. } => None,
+        }
+    }
+
     /// The keyword as the specification spells it.
     fn spelling(&self) -> &str {
         match self {
@@ -211,20 +218,31 @@ pub(crate) struct Resolved {
     pub key: Cow<'static, str>,
     /// The specification's spelling, when the table has the keyword.
     pub spelling: Option<&'static str>,
+    /// The baud rate the keyword carries in its name: `maxtsdr_1.5m` and
+    /// `12m_supp` do, for each keyword the schema spells with `<baud>`.
+    pub baud: Option<Baud>,
 }
 
 pub(crate) fn resolve(name: &str) -> Resolved {
     let mut buf = [0u8; MAX_PLAIN_KEY];
-    let known =
-        plain_lowercase(name, &mut buf).and_then(|lower| schema().by_key.get_key_value(lower));
-    match known {
-        Some((key, entry)) => Resolved {
-            key: Cow::Borrowed(key),
+    let normalized;
+    let key = match plain_lowercase(name, &mut buf) {
+        Some(lower) => lower,
+        None => {
+            normalized = normalize(name);
+            &normalized
+        }
+    };
+    match schema().by_key.get_key_value(key) {
+        Some((known, entry)) => Resolved {
+            key: Cow::Borrowed(known),
             spelling: Some(entry.spelling()),
+            baud: entry.baud(),
         },
         None => Resolved {
-            key: Cow::Owned(normalize(name)),
+            key: Cow::Owned(key.to_string()),
             spelling: None,
+            baud: None,
         },
     }
 }
@@ -284,15 +302,6 @@ pub fn is_nonstandard_spelling(name: &str) -> bool {
     name.contains(char::is_whitespace) || name.contains('!')
 }
 
-/// The baud rate a normalized keyword carries in its name: `maxtsdr_1.5m`
-/// and `12m_supp` do, for each keyword the schema spells with `<baud>`.
-pub fn baud_of(key: &str) -> Option<Baud> {
-    match schema().by_key.get(key)? {
-        Entry::Baud { baud, .. } => Some(*baud),
-        Entry::Keyword(_) | Entry::Inner { .. } => None,
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -326,9 +335,9 @@ mod tests {
         assert_eq!(k.name, "MaxTsdr_<baud>");
         assert_eq!(schema().lookup("45.45_supp").unwrap().spec.kind, Kind::Bool);
         assert!(schema().lookup("maxtsdr_2m").is_none());
-        assert_eq!(baud_of("maxtsdr_1.5m"), Some(Baud::B1M5));
-        assert_eq!(baud_of("12m_supp"), Some(Baud::B12M));
-        assert_eq!(baud_of("max_input_len"), None);
+        assert_eq!(resolve("MaxTsdr_1.5M").baud, Some(Baud::B1M5));
+        assert_eq!(resolve("12M_supp").baud, Some(Baud::B12M));
+        assert_eq!(resolve("Max_Input_Len").baud, None);
     }
 
     #[test]
@@ -353,6 +362,10 @@ mod tests {
         assert!(schema().lookup("text").is_none());
         // Not plain, or unknown: the same key, built.
         assert_eq!(key_of("Unit_Diag_!Bit"), "unit_diag_not_bit");
+        assert_eq!(
+            resolve("Unit_Diag_!Bit").spelling,
+            Some("Unit_Diag_Not_Bit")
+        );
         assert_eq!(key_of("24V Pins"), "24v_pins");
         assert!(matches!(key_of("Vendor_Extra"), Cow::Owned(k) if k == "vendor_extra"));
         let long = "X".repeat(MAX_PLAIN_KEY + 1);
