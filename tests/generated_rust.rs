@@ -11,17 +11,39 @@ use std::process::Command;
 
 const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
 
-/// The layout artifact of a shipped description: its file name and text.
-fn layout(name: &str) -> (String, String) {
+/// The artifact of a shipped description whose name ends in `suffix`: its
+/// file name and text.
+fn artifact(name: &str, suffix: &str) -> (String, String) {
     let artifacts = gsdc::compile(&load(name)).unwrap();
-    let layout = artifacts
+    let found = artifacts
         .into_iter()
-        .find(|a| a.file_name.ends_with("_layout.rs"))
-        .expect("a layout artifact");
-    (
-        layout.file_name,
-        String::from_utf8(layout.contents).unwrap(),
-    )
+        .find(|a| a.file_name.ends_with(suffix))
+        .unwrap_or_else(|| panic!("{name}: no artifact ending in {suffix}"));
+    (found.file_name, String::from_utf8(found.contents).unwrap())
+}
+
+fn layout(name: &str) -> (String, String) {
+    artifact(name, "_layout.rs")
+}
+
+/// Every description gives the same support module, with every part
+/// inlined once as a module of its own.
+#[test]
+fn the_support_module_is_one_for_all_and_inlines_its_parts() {
+    let support = artifact(DESCRIPTIONS[0], "gsdc_support.rs");
+    for name in &DESCRIPTIONS[1..] {
+        assert_eq!(artifact(name, "gsdc_support.rs"), support, "{name}");
+    }
+    let text = support.1;
+    for part in ["pkw_pke_ind_pwe", "pkw_station_command", "diagnosis"] {
+        assert_eq!(
+            text.matches(&format!("pub mod {part} {{")).count(),
+            1,
+            "{part}"
+        );
+        assert!(!text.contains(&format!("pub mod {part};")), "{part}");
+    }
+    assert!(text.contains("pub struct PkwTelegram<const PZD: usize, const BYTES: usize>"));
 }
 
 /// A directory of this test's own under the target directory.
@@ -51,8 +73,8 @@ fn powtran_9kdp1_layout_snapshot() {
 #[test]
 fn layouts_are_formatted_as_rustfmt_formats_them() {
     let dir = scratch_dir("rustfmt-check");
-    for name in DESCRIPTIONS {
-        let (file_name, text) = layout(name);
+    let support = artifact(DESCRIPTIONS[0], "gsdc_support.rs");
+    for (file_name, text) in DESCRIPTIONS.map(layout).into_iter().chain([support]) {
         let path = dir.join(&file_name);
         std::fs::write(&path, text).unwrap();
         let output = Command::new("rustfmt")

@@ -77,7 +77,7 @@ fn gsd_parser_reads_what_the_ir_says() {
         let expected: Vec<(String, Vec<u8>)> = profibus
             .modules
             .iter()
-            .map(|m| (m.name.clone(), m.config_bytes()))
+            .map(|m| (m.name.clone(), m.config.clone()))
             .collect();
         assert_eq!(modules, expected, "{name}");
 
@@ -91,15 +91,11 @@ fn gsd_parser_reads_what_the_ir_says() {
         assert_eq!(u16::from(parsed.max_output_length), largest, "{name}");
 
         let prm = &parsed.user_prm_data;
-        assert_eq!(
-            prm.data_ref.len(),
-            profibus.user_prm.entries.len(),
-            "{name}"
-        );
-        for ((offset, definition), entry) in prm.data_ref.iter().zip(&profibus.user_prm.entries) {
-            let (set, index) = entry.mapping;
-            let mapping = &ir.mappings[set].entries[index];
-            assert_eq!(*offset, entry.offset, "{name}");
+        let params: Vec<_> = profibus.user_prm.params().collect();
+        assert_eq!(prm.data_ref.len(), params.len(), "{name}");
+        for ((offset, definition), param) in prm.data_ref.iter().zip(params) {
+            let (set, mapping) = ir.mappings.entry(param.entry);
+            assert_eq!(*offset, usize::from(param.offset), "{name}");
             assert_eq!(definition.name, mapping.name.en, "{name}");
             assert_eq!(definition.data_type, UserPrmDataType::Unsigned16, "{name}");
             assert_eq!(
@@ -107,7 +103,7 @@ fn gsd_parser_reads_what_the_ir_says() {
                 i64::from(mapping.default),
                 "{name}"
             );
-            let Allowed::Range { min, max } = ir.mappings[set].allowed else {
+            let Allowed::Range { min, max } = set.allowed else {
                 panic!("{name}: the shipped descriptions map addresses");
             };
             assert_eq!(
@@ -118,7 +114,7 @@ fn gsd_parser_reads_what_the_ir_says() {
         }
 
         let telegram = PrmBuilder::new(prm).into_bytes();
-        assert_eq!(telegram.len(), profibus.user_prm.byte_len(), "{name}");
+        assert_eq!(telegram.len(), usize::from(profibus.user_prm.len), "{name}");
         assert_eq!(
             telegram[..profibus.user_prm.constant.len()],
             profibus.user_prm.constant[..],

@@ -7,7 +7,7 @@
 mod descriptions;
 use descriptions::load;
 
-use gsdc::ir::profinet::Profinet;
+use gsdc::ir::profinet::{ModuleKind, ParameterRecord, Profinet};
 use gsdc::ir::{Allowed, Ir};
 use roxmltree::{Document, Node};
 use std::collections::BTreeSet;
@@ -103,12 +103,12 @@ fn modules_are_the_irs() {
         let modules: Vec<Node> = elements(&doc, "ModuleItem").collect();
         assert_eq!(modules.len(), profinet.modules.len(), "{name}");
         for (node, module) in modules.iter().zip(&profinet.modules) {
-            let ident = format!("0x{:08X}", module.ident);
+            let ident = format!("0x{:08X}", module.ident_number);
             assert_eq!(
                 attribute(*node, "ModuleIdentNumber"),
                 ident,
                 "{name}: {}",
-                module.name
+                module.id
             );
             let submodule = node
                 .descendants()
@@ -136,7 +136,7 @@ fn modules_are_the_irs() {
                     2 * items.len(),
                     usize::from(module.layout.bytes()),
                     "{name}: {} {direction}",
-                    module.name
+                    module.id
                 );
             }
         }
@@ -272,50 +272,52 @@ fn mv810_p43_enumerations_have_15_and_26_values() {
     assert_eq!(values_of_record("2"), (11, (0..=25).collect()));
 }
 
-/// Every user-defined (PZD) module carries every parameter record, standard
-/// telegram 1 and the DAP none; every Ref lies inside its record, and its
-/// default is among its allowed values as the IR has them.
+/// Every user-defined (PZD) module carries the parameter records the IR
+/// plans for it, standard telegram 1 and the DAP none; every Ref lies inside
+/// its record, and its default is among its allowed values as the IR has them.
 #[test]
 fn record_refs_fit_their_records() {
     for name in DESCRIPTIONS {
         let ir = load(name);
         let (text, profinet) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
-        for submodule in elements(&doc, "VirtualSubmoduleItem") {
-            let records: Vec<Node> = submodule
+        let records_of = |submodule_id: &str| -> Vec<Node> {
+            let submodule = elements(&doc, "VirtualSubmoduleItem")
+                .find(|s| s.attribute("ID") == Some(submodule_id))
+                .unwrap_or_else(|| panic!("{name}: no submodule {submodule_id}"));
+            submodule
                 .descendants()
                 .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
-                .collect();
-            let id = attribute(submodule, "ID");
-            let is_pzd_module = id.starts_with("IDS_PKW_") || id.starts_with("IDS_PZD_");
-            let expected = if is_pzd_module {
-                profinet.records.len()
-            } else {
-                0
+                .collect()
+        };
+        assert!(records_of("IDS_DAP").is_empty(), "{name}");
+        for module in &profinet.modules {
+            let records = records_of(&module.submodule_id);
+            let expected = match module.kind {
+                ModuleKind::Pzd => 1..,
+                ModuleKind::StandardTelegram1 => 0..,
+                _ => unreachable!(),
             };
-            assert_eq!(records.len(), expected, "{name}: {id}");
-            check_records(&ir, profinet, &records, name);
+            assert!(expected.contains(&records.len()), "{name}: {}", module.id);
+            assert_eq!(records.len(), module.records.len(), "{name}: {}", module.id);
+            check_records(&ir, &module.records, &records, name);
         }
     }
 }
 
-fn check_records(ir: &Ir, profinet: &Profinet, records: &[Node], name: &str) {
-    for (node, record) in records.iter().zip(&profinet.records) {
+fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &str) {
+    for (node, record) in records.iter().zip(planned) {
         assert_eq!(
             attribute(*node, "Index"),
             record.index.to_string(),
             "{name}"
         );
         let length: usize = attribute(*node, "Length").parse().unwrap();
-        let entries: Vec<_> = record
-            .sets
-            .iter()
-            .flat_map(|&s| ir.mappings[s].entries.iter().map(move |e| (s, e)))
-            .collect();
         let refs: Vec<Node> = children(*node, "Ref").collect();
-        assert_eq!(refs.len(), entries.len(), "{name}");
-        assert_eq!(length, 2 * entries.len(), "{name}");
-        for (i, (r, (set, entry))) in refs.iter().zip(entries).enumerate() {
+        assert_eq!(refs.len(), record.refs.len(), "{name}");
+        assert_eq!(length, 2 * record.refs.len(), "{name}");
+        for (i, (r, planned)) in refs.iter().zip(&record.refs).enumerate() {
+            let (set, entry) = ir.mappings.entry(planned.entry);
             let offset: usize = attribute(*r, "ByteOffset").parse().unwrap();
             assert_eq!(offset, 2 * i, "{name}");
             assert_eq!(
@@ -323,14 +325,11 @@ fn check_records(ir: &Ir, profinet: &Profinet, records: &[Node], name: &str) {
                 entry.default.to_string(),
                 "{name}"
             );
-            assert!(
-                ir.mappings[set].allowed.contains(entry.default.into()),
-                "{name}"
-            );
+            assert!(set.allowed.contains(entry.default.into()), "{name}");
             let has_target = r.attribute("ValueItemTarget").is_some();
             assert_eq!(
                 has_target,
-                matches!(ir.mappings[set].allowed, Allowed::Choices(_)),
+                matches!(set.allowed, Allowed::Choices(_)),
                 "{name}"
             );
         }
@@ -347,7 +346,7 @@ fn the_dap_keeps_the_rules_beyond_the_schema() {
         let dap = elements(&doc, "DeviceAccessPointItem").next().unwrap();
         assert_eq!(
             attribute(dap, "PNIO_Version"),
-            format!("V{}", profinet.gsdml_version),
+            profinet.gsdml_version.to_string(),
             "{name}"
         );
         assert_eq!(attribute(dap, "PhysicalSlots"), "0..1", "{name}");
@@ -371,7 +370,7 @@ fn the_dap_keeps_the_rules_beyond_the_schema() {
         let ports: Vec<&str> = elements(&doc, "PortSubmoduleItem")
             .map(|p| attribute(p, "SubslotNumber"))
             .collect();
-        let expected: Vec<String> = (1..=u16::from(profinet.ports))
+        let expected: Vec<String> = (1..=profinet.ports.len())
             .map(|p| (0x8000 + p).to_string())
             .collect();
         assert_eq!(ports, expected, "{name}");

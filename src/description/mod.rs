@@ -6,6 +6,7 @@
 
 mod values;
 
+use crate::gsd::Baud;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -155,7 +156,7 @@ pub struct Profibus {
     /// PZD words of PPO5: 10 in PROFIdrive, 12 on MD810.
     pub ppo5_pzd_words: Option<Spanned<u8>>,
     /// MaxTsdr (bit times) of each supported baud rate, keyed as GSD spells it.
-    pub baud_rates: Spanned<BaudRates>,
+    pub baud_rates: Spanned<BTreeMap<Baud, Spanned<u16>>>,
     /// Units of 100 us.
     pub min_slave_interval: Spanned<u16>,
     /// Main family (1 = drives) and optional sub-families, as `1@Drives@AC`.
@@ -177,52 +178,6 @@ pub struct IdentNumber {
     /// The number is not assigned by PI: said in the files and warned about.
     #[serde(default)]
     pub placeholder: bool,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BaudRates {
-    #[serde(rename = "9.6")]
-    pub b9_6: Option<Spanned<u16>>,
-    #[serde(rename = "19.2")]
-    pub b19_2: Option<Spanned<u16>>,
-    #[serde(rename = "31.25")]
-    pub b31_25: Option<Spanned<u16>>,
-    #[serde(rename = "45.45")]
-    pub b45_45: Option<Spanned<u16>>,
-    #[serde(rename = "93.75")]
-    pub b93_75: Option<Spanned<u16>>,
-    #[serde(rename = "187.5")]
-    pub b187_5: Option<Spanned<u16>>,
-    #[serde(rename = "500")]
-    pub b500: Option<Spanned<u16>>,
-    #[serde(rename = "1.5M")]
-    pub b1_5m: Option<Spanned<u16>>,
-    #[serde(rename = "3M")]
-    pub b3m: Option<Spanned<u16>>,
-    #[serde(rename = "6M")]
-    pub b6m: Option<Spanned<u16>>,
-    #[serde(rename = "12M")]
-    pub b12m: Option<Spanned<u16>>,
-}
-
-impl BaudRates {
-    /// The rates in GSD order, with the names GSD keywords use.
-    pub fn entries(&self) -> [(&'static str, &Option<Spanned<u16>>); 11] {
-        [
-            ("9.6", &self.b9_6),
-            ("19.2", &self.b19_2),
-            ("31.25", &self.b31_25),
-            ("45.45", &self.b45_45),
-            ("93.75", &self.b93_75),
-            ("187.5", &self.b187_5),
-            ("500", &self.b500),
-            ("1.5M", &self.b1_5m),
-            ("3M", &self.b3m),
-            ("6M", &self.b6m),
-            ("12M", &self.b12m),
-        ]
-    }
 }
 
 #[derive(Debug, Deserialize)]

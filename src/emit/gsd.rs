@@ -1,7 +1,7 @@
 //! The GSD emitter: IR to a GSD file through `templates/gsd.jinja`, then
 //! wrapped to 80 columns with `\` continuations and given CRLF line ends.
 
-use crate::ir::profibus::{Profibus, STANDARD_DIAG_BYTES};
+use crate::ir::profibus::Profibus;
 use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
@@ -33,13 +33,14 @@ struct Context<'a> {
     sync_mode: u8,
     auto_baud: u8,
     min_slave_interval: u16,
-    max_len: u16,
+    max_input_len: u16,
+    max_output_len: u16,
     max_data_len: u16,
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
     dpv1: Option<Dpv1>,
-    prm_len: usize,
+    prm_len: u16,
     prm_const: Option<String>,
     prm_texts: Vec<PrmText<'a>>,
     params: Vec<Param<'a>>,
@@ -74,18 +75,18 @@ struct Dpv1 {
 
 #[derive(Serialize)]
 struct PrmText<'a> {
-    id: usize,
+    id: u16,
     values: Vec<Value<'a>>,
 }
 
 #[derive(Serialize)]
 struct Param<'a> {
-    id: usize,
+    id: u16,
     name: &'a str,
     default: u16,
     allowed: String,
-    text_ref: Option<usize>,
-    offset: usize,
+    text_ref: Option<u16>,
+    offset: u16,
 }
 
 #[derive(Serialize)]
@@ -97,24 +98,22 @@ struct Module<'a> {
 
 /// The GSD text of a description with a PROFIBUS part.
 pub fn emit(ir: &Ir, profibus: &Profibus) -> String {
-    let mut env = minijinja::Environment::new();
-    env.add_filter("key", |key: String| format!("{key:<KEY_WIDTH$}"));
-    env.add_template("gsd", TEMPLATE)
-        .expect("templates/gsd.jinja is valid (tested)");
-    let rendered = env
-        .get_template("gsd")
-        .and_then(|t| t.render(context(ir, profibus)))
-        .expect("the GSD context always renders (tested)");
+    let rendered = render(TEMPLATE, ir, profibus)
+        .expect("the GSD template renders every IR with a PROFIBUS part (tested)");
     finish(&rendered)
 }
 
+/// Strict undefined: a name the context lacks is an error, so a misspelt
+/// keyword value cannot render as nothing.
+fn render(template: &str, ir: &Ir, profibus: &Profibus) -> Result<String, minijinja::Error> {
+    let mut env = minijinja::Environment::new();
+    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    env.add_filter("key", |key: String| format!("{key:<KEY_WIDTH$}"));
+    env.template_from_str(template)?
+        .render(context(ir, profibus))
+}
+
 fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
-    let max_len = p
-        .modules
-        .iter()
-        .map(|m| m.layout.bytes())
-        .max()
-        .unwrap_or(0);
     let d = &ir.device;
     Context {
         file_name: &p.file_name,
@@ -135,16 +134,20 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         baud_rates: p
             .baud_rates
             .iter()
-            .map(|&(name, max_tsdr)| Rate { name, max_tsdr })
+            .map(|&(baud, max_tsdr)| Rate {
+                name: baud.as_str(),
+                max_tsdr,
+            })
             .collect(),
         freeze_mode: p.freeze_mode.into(),
         sync_mode: p.sync_mode.into(),
         auto_baud: p.auto_baud.into(),
         min_slave_interval: p.min_slave_interval,
-        max_len,
-        max_data_len: 2 * max_len,
+        max_input_len: p.max_input_len,
+        max_output_len: p.max_output_len,
+        max_data_len: p.max_input_len + p.max_output_len,
         slave_family: &p.slave_family,
-        max_diag_data_len: STANDARD_DIAG_BYTES + p.diagnosis.as_ref().map_or(0, |d| d.length),
+        max_diag_data_len: p.max_diag_data_len,
         diag_areas: p
             .diagnosis
             .iter()
@@ -152,7 +155,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .map(|a| DiagArea {
                 first: a.first_bit,
                 last: a.last_bit,
-                values: values(&a.values),
+                values: values(&a.values.choices),
             })
             .collect(),
         dpv1: p.dpv1.map(|d| Dpv1 {
@@ -160,16 +163,29 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             c1_max_data_len: d.c1_max_data_len,
             c1_response_timeout: d.c1_response_timeout,
         }),
-        prm_len: p.user_prm.byte_len(),
+        prm_len: p.user_prm.len,
         prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
-        prm_texts: prm_texts(ir),
+        prm_texts: p
+            .user_prm
+            .texts
+            .iter()
+            .map(|t| PrmText {
+                id: t.id,
+                values: ir
+                    .mappings
+                    .set(t.set)
+                    .allowed
+                    .choices()
+                    .map_or_else(Vec::new, |v| values(&v.choices)),
+            })
+            .collect(),
         params: params(ir, p),
         modules: p
             .modules
             .iter()
             .map(|m| Module {
                 name: &m.name,
-                config: hex_list(&m.config_bytes()),
+                config: hex_list(&m.config),
                 reference: m.ppo,
             })
             .collect(),
@@ -186,37 +202,18 @@ fn values(choices: &[Choice]) -> Vec<Value<'_>> {
         .collect()
 }
 
-/// One PrmText per mapping set with choices; its id is the set's position + 1.
-fn prm_texts(ir: &Ir) -> Vec<PrmText<'_>> {
-    ir.mappings
-        .iter()
-        .enumerate()
-        .filter_map(|(i, set)| match &set.allowed {
-            Allowed::Choices(choices) => Some(PrmText {
-                id: i + 1,
-                values: values(choices),
-            }),
-            Allowed::Range { .. } => None,
-        })
-        .collect()
-}
-
 fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
     p.user_prm
-        .entries
-        .iter()
-        .enumerate()
-        .map(|(i, entry)| {
-            let (set_index, entry_index) = entry.mapping;
-            let set = &ir.mappings[set_index];
-            let mapping = &set.entries[entry_index];
+        .params()
+        .map(|param| {
+            let (set, entry) = ir.mappings.entry(param.entry);
             Param {
-                id: i + 1,
-                name: &mapping.name.en,
-                default: mapping.default,
+                id: param.id,
+                name: &entry.name.en,
+                default: entry.default,
                 allowed: allowed(&set.allowed),
-                text_ref: matches!(set.allowed, Allowed::Choices(_)).then_some(set_index + 1),
-                offset: entry.offset,
+                text_ref: param.text,
+                offset: param.offset,
             }
         })
         .collect()
@@ -226,8 +223,8 @@ fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
 fn allowed(allowed: &Allowed) -> String {
     match allowed {
         Allowed::Range { min, max } => format!("{min}-{max}"),
-        Allowed::Choices(choices) => {
-            let mut values: Vec<i64> = choices.iter().map(|c| c.value).collect();
+        Allowed::Choices(set) => {
+            let mut values: Vec<i64> = set.choices.iter().map(|c| c.value).collect();
             values.sort_unstable();
             let contiguous = values.windows(2).all(|w| w[1] == w[0] + 1);
             match (contiguous, values.first(), values.last()) {
@@ -301,6 +298,17 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_misspelt_name_in_the_template_is_an_error_not_empty_text() {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        let profibus = ir.profibus.as_ref().unwrap();
+        assert!(render(TEMPLATE, &ir, profibus).is_ok());
+        let typo = TEMPLATE.replace("max_input_len", "max_inptu_len");
+        let error = render(&typo, &ir, profibus).unwrap_err();
+        assert_eq!(error.kind(), minijinja::ErrorKind::UndefinedError);
+    }
+
+    #[test]
     fn short_lines_stay_whole() {
         assert_eq!(wrap("Vendor_Name = \"x\""), ["Vendor_Name = \"x\""]);
     }
@@ -333,22 +341,9 @@ mod tests {
 
     #[test]
     fn allowed_values_are_a_range_when_contiguous() {
-        let choice = |value| Choice {
-            value,
-            text: crate::ir::Text {
-                en: String::new(),
-                zh: None,
-            },
-        };
         assert_eq!(allowed(&Allowed::Range { min: 0, max: 65535 }), "0-65535");
-        assert_eq!(
-            allowed(&Allowed::Choices(vec![choice(2), choice(0), choice(1)])),
-            "0-2"
-        );
-        assert_eq!(
-            allowed(&Allowed::Choices(vec![choice(0), choice(5)])),
-            "0,5"
-        );
-        assert_eq!(allowed(&Allowed::Choices(vec![choice(7)])), "7");
+        assert_eq!(allowed(&Allowed::of_values(&[2, 0, 1])), "0-2");
+        assert_eq!(allowed(&Allowed::of_values(&[0, 5])), "0,5");
+        assert_eq!(allowed(&Allowed::of_values(&[7])), "7");
     }
 }

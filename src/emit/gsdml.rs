@@ -2,29 +2,23 @@
 //!
 //! The file is written for the schema version the description names (2.32
 //! by default): it validates against PI's V2.44 schema and uses nothing
-//! introduced after its own version. Elements follow the schema's sequences,
-//! and every ID and TextId is derived from the IR, so the same description
-//! always gives the same bytes.
+//! introduced after its own version. Elements follow the schema's sequences;
+//! every ID and TextId comes from the IR, so the same description always
+//! gives the same bytes.
 
-use crate::ir::mapping::MappingEntry;
+use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    Module, ModuleKind, ParameterRecord, Profinet, DAP_IDENT, FIRST_PORT_SUBSLOT,
-    INTERFACE_SUBSLOT, MODULE_SLOT,
+    DataItem, Module, ParameterRecord, Profinet, TextRef, DAP_IDENT, INTERFACE_SUBSLOT, MODULE_SLOT,
 };
-use crate::ir::{
-    Allowed, BitField, Choice, Ir, MappingKind, MappingSet, PkwKind, Telegram, Text, Word,
-};
+use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
 use quick_xml::Writer;
 
-const NAMESPACE: &str = "http://www.profibus.com/GSDML/2003/11/DeviceProfile";
 const XSI: &str = "http://www.w3.org/2001/XMLSchema-instance";
-/// The DAP's ID; its submodule, interface and ports have `IDS_` IDs.
+/// The DAP's ID and its submodule's.
 const DAP_ID: &str = "IDD_DAP";
-/// TextIds of the device's name and description, shared by DeviceIdentity,
-/// the DAP and its submodule.
-const DEVICE_NAME: &str = "IDT_DEVICE_NAME";
-const DEVICE_INFO: &str = "IDT_DEVICE_INFO";
+const DAP_SUBMODULE_ID: &str = "IDS_DAP";
+const INTERFACE_ID: &str = "IDS_INTERFACE";
 /// 100BASE-TX full duplex (IEC 61158-6-10 MAUType 16): the card's RJ45 ports.
 const MAU_100BASE_TX: &str = "16";
 /// I&M1..3 are writable; I&M0 and I&M5 are read-only and may never be listed.
@@ -36,7 +30,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     let mut doc = Doc::new();
     header(&mut doc, ir, profinet);
     let location = format!(
-        "{NAMESPACE} ..\\xsd\\GSDML-DeviceProfile-V{}.xsd",
+        "{NAMESPACE} ..\\xsd\\GSDML-DeviceProfile-{}.xsd",
         profinet.gsdml_version
     );
     doc.open(
@@ -53,7 +47,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     doc.open("ApplicationProcess", &[]);
     device_access_point(&mut doc, ir, profinet);
     module_list(&mut doc, ir, profinet);
-    value_list(&mut doc, ir, profinet);
+    value_list(&mut doc, profinet);
     external_texts(&mut doc);
     doc.close("ApplicationProcess");
     doc.close("ProfileBody");
@@ -111,18 +105,21 @@ impl Doc {
         self.write(Event::Comment(BytesText::from_escaped(format!(" {safe} "))));
     }
 
-    /// Registers `text` under `id`; the ID scheme gives each TextId one text.
-    fn text(&mut self, id: &str, text: &Text) {
-        match self.texts.iter().find(|(known, _)| known == id) {
-            Some((_, known)) => debug_assert_eq!(known, text, "TextId {id} names two texts"),
-            None => self.texts.push((id.to_string(), text.clone())),
+    /// Registers a text for the ExternalTextList, in the order first
+    /// referenced; lowering gives each TextId one text.
+    fn text(&mut self, text: &TextRef) {
+        match self.texts.iter().find(|(known, _)| *known == text.id) {
+            Some((_, known)) => {
+                debug_assert_eq!(*known, text.text, "TextId {} names two texts", text.id)
+            }
+            None => self.texts.push((text.id.clone(), text.text.clone())),
         }
     }
 
     /// `<element TextId="id"/>`, registering the text.
-    fn text_ref(&mut self, element: &str, id: &str, text: &Text) {
-        self.text(id, text);
-        self.leaf(element, &[("TextId", id)]);
+    fn text_ref(&mut self, element: &str, text: &TextRef) {
+        self.text(text);
+        self.leaf(element, &[("TextId", &text.id)]);
     }
 
     fn write(&mut self, event: Event) {
@@ -136,14 +133,6 @@ impl Doc {
             .expect("quick-xml writes the UTF-8 it is given");
         text.push('\n');
         text
-    }
-}
-
-/// A text the description does not translate: the other languages repeat it.
-fn english(text: impl Into<String>) -> Text {
-    Text {
-        en: text.into(),
-        zh: None,
     }
 }
 
@@ -201,14 +190,6 @@ fn profile_header(doc: &mut Doc) {
     doc.close("ProfileHeader");
 }
 
-/// The PROFINET part's own info text, else the device's, else its name.
-fn device_info<'a>(ir: &'a Ir, p: &'a Profinet) -> &'a Text {
-    p.info
-        .as_ref()
-        .or(ir.device.info.as_ref())
-        .unwrap_or(&ir.device.name)
-}
-
 fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open(
         "DeviceIdentity",
@@ -217,7 +198,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
             ("DeviceID", &hex16(p.device_id)),
         ],
     );
-    doc.text_ref("InfoText", DEVICE_INFO, device_info(ir, p));
+    doc.text_ref("InfoText", &p.device_info);
     doc.leaf("VendorName", &[("Value", &ir.device.vendor)]);
     doc.close("DeviceIdentity");
     doc.open("DeviceFunction", &[]);
@@ -238,7 +219,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         "DeviceAccessPointItem",
         &[
             ("ID", DAP_ID),
-            ("PNIO_Version", &format!("V{}", p.gsdml_version)),
+            ("PNIO_Version", &p.gsdml_version.to_string()),
             ("PhysicalSlots", &format!("0..{MODULE_SLOT}")),
             ("ModuleIdentNumber", &hex32(DAP_IDENT)),
             ("MinDeviceInterval", &p.min_device_interval.to_string()),
@@ -263,24 +244,18 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         ("HardwareRelease", d.hardware_release.as_str()),
         ("SoftwareRelease", d.software_release.as_str()),
     ]);
-    module_info(
-        doc,
-        (DEVICE_NAME, &d.name),
-        (DEVICE_INFO, device_info(ir, p)),
-        &values,
-    );
+    module_info(doc, &p.device_name, &p.device_info, &values);
     // Conformance class B: RT_CLASS_1 with SNMP and LLDP (see the interface
     // below); netload class I is the lowest.
     doc.leaf(
         "CertificationInfo",
         &[("ConformanceClass", "B"), ("NetloadClass", "I")],
     );
-    let max_length = max_io_length(p).to_string();
     doc.leaf(
         "IOConfigData",
         &[
-            ("MaxInputLength", &max_length),
-            ("MaxOutputLength", &max_length),
+            ("MaxInputLength", &p.max_input_length.to_string()),
+            ("MaxOutputLength", &p.max_output_length.to_string()),
         ],
     );
     doc.open("UseableModules", &[]);
@@ -288,41 +263,21 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     for m in &p.modules {
         doc.leaf(
             "ModuleItemRef",
-            &[
-                ("ModuleItemTarget", &format!("IDM_{}", module_tag(m))),
-                ("AllowedInSlots", &slot),
-            ],
+            &[("ModuleItemTarget", &m.id), ("AllowedInSlots", &slot)],
         );
     }
     doc.close("UseableModules");
-    dap_submodule(doc, ir, p);
+    dap_submodule(doc, p);
     interface_and_ports(doc, p);
     doc.close("DeviceAccessPointItem");
     doc.close("DeviceAccessPointList");
 }
 
-/// MaxInputLength and MaxOutputLength count a frame's IO data and its
-/// status bytes (IOPS, IOCS). Each submodule without data (the DAP's, the
-/// interface, the ports) adds one byte each way; the module's, with data
-/// both ways, adds its IOPS and the IOCS of the other direction. If a tool
-/// counts data only, this is still an upper bound; with at most 20 words in
-/// a module and 16 ports it stays far below the limit of 1440.
-fn max_io_length(p: &Profinet) -> u16 {
-    let data = p
-        .modules
-        .iter()
-        .map(|m| m.layout.bytes())
-        .max()
-        .unwrap_or(0);
-    let without_data = 2 + u16::from(p.ports);
-    data + without_data + 2
-}
-
 /// Name, InfoText and then any `Value` elements, in the schema's order.
-fn module_info(doc: &mut Doc, name: (&str, &Text), info: (&str, &Text), values: &[(&str, &str)]) {
+fn module_info(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&str, &str)]) {
     doc.open("ModuleInfo", &[]);
-    doc.text_ref("Name", name.0, name.1);
-    doc.text_ref("InfoText", info.0, info.1);
+    doc.text_ref("Name", name);
+    doc.text_ref("InfoText", info);
     for (element, value) in values {
         doc.leaf(element, &[("Value", value)]);
     }
@@ -330,42 +285,37 @@ fn module_info(doc: &mut Doc, name: (&str, &Text), info: (&str, &Text), values: 
 }
 
 /// The DAP's own submodule: no IO data and no records.
-fn dap_submodule(doc: &mut Doc, ir: &Ir, p: &Profinet) {
+fn dap_submodule(doc: &mut Doc, p: &Profinet) {
     doc.open("VirtualSubmoduleList", &[]);
     doc.open(
         "VirtualSubmoduleItem",
         &[
-            ("ID", "IDS_DAP"),
+            ("ID", DAP_SUBMODULE_ID),
             ("SubmoduleIdentNumber", &hex32(DAP_IDENT)),
             ("Writeable_IM_Records", WRITEABLE_IM_RECORDS),
             ("MayIssueProcessAlarm", "false"),
         ],
     );
     doc.leaf("IOData", &[]);
-    module_info(
-        doc,
-        (DEVICE_NAME, &ir.device.name),
-        (DEVICE_INFO, device_info(ir, p)),
-        &[],
-    );
+    module_info(doc, &p.device_name, &p.device_info, &[]);
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
 }
 
-/// The interface at 0x8000 and its ports from 0x8001. Their submodule ident
-/// numbers are their subslot numbers, the convention p-net also follows.
-/// DCP_HelloSupported stays off: it would need PowerOnToCommReady, which the
-/// description does not give.
+/// The interface and its ports. Their submodule ident numbers are their
+/// subslot numbers, the convention p-net also follows. DCP_HelloSupported
+/// stays off: it would need PowerOnToCommReady, which the description does
+/// not give.
 fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     doc.open("SystemDefinedSubmoduleList", &[]);
-    doc.text("IDT_INTERFACE", &english("PN-IO"));
+    doc.text(&p.interface);
     doc.open(
         "InterfaceSubmoduleItem",
         &[
-            ("ID", "IDS_INTERFACE"),
+            ("ID", INTERFACE_ID),
             ("SubslotNumber", &INTERFACE_SUBSLOT.to_string()),
             ("SubmoduleIdentNumber", &hex32(INTERFACE_SUBSLOT.into())),
-            ("TextId", "IDT_INTERFACE"),
+            ("TextId", &p.interface.id),
             ("SupportedRT_Classes", "RT_CLASS_1"),
             ("SupportedProtocols", "SNMP;LLDP"),
         ],
@@ -385,17 +335,15 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     );
     doc.close("ApplicationRelations");
     doc.close("InterfaceSubmoduleItem");
-    for port in 1..=p.ports {
-        let subslot = FIRST_PORT_SUBSLOT + u16::from(port) - 1;
-        let text_id = format!("IDT_PORT_{port}");
-        doc.text(&text_id, &english(format!("Port {port}")));
+    for port in &p.ports {
+        doc.text(&port.text);
         doc.open(
             "PortSubmoduleItem",
             &[
-                ("ID", &format!("IDS_PORT_{port}")),
-                ("SubslotNumber", &subslot.to_string()),
-                ("SubmoduleIdentNumber", &hex32(subslot.into())),
-                ("TextId", &text_id),
+                ("ID", &port.id),
+                ("SubslotNumber", &port.subslot.to_string()),
+                ("SubmoduleIdentNumber", &hex32(port.subslot.into())),
+                ("TextId", &port.text.id),
             ],
         );
         doc.open("MAUTypeList", &[]);
@@ -406,78 +354,36 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     doc.close("SystemDefinedSubmoduleList");
 }
 
-/// One Unsigned16 Ref per entry of the record's sets, at offsets 0, 2, 4, ...
 fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
-    let entries: Vec<(&MappingSet, &MappingEntry)> = record
-        .sets
-        .iter()
-        .map(|&i| &ir.mappings[i])
-        .flat_map(|set| set.entries.iter().map(move |entry| (set, entry)))
-        .collect();
     doc.open(
         "ParameterRecordDataItem",
         &[
             ("Index", &record.index.to_string()),
-            ("Length", &(2 * entries.len()).to_string()),
+            ("Length", &record.length.to_string()),
         ],
     );
-    let kind = record.sets.first().map(|&i| ir.mappings[i].kind);
-    doc.text_ref(
-        "Name",
-        &format!("IDT_RECORD_{}", record.index),
-        &english(record_name(kind)),
-    );
-    for (i, (set, entry)) in entries.into_iter().enumerate() {
-        let text_id = entry_text_id(set, entry);
-        doc.text(&text_id, &entry.name);
-        let offset = (2 * i).to_string();
+    doc.text_ref("Name", &record.name);
+    for r in &record.refs {
+        let (set, entry) = ir.mappings.entry(r.entry);
+        doc.text(&r.text);
+        let offset = r.offset.to_string();
         let default = entry.default.to_string();
         let allowed = allowed_values(&set.allowed);
-        let value_item =
-            matches!(set.allowed, Allowed::Choices(_)).then(|| format!("IDV_{}", value_tag(set)));
         let mut attributes = vec![
             ("DataType", "Unsigned16"),
             ("ByteOffset", offset.as_str()),
             ("DefaultValue", default.as_str()),
             ("AllowedValues", allowed.as_str()),
         ];
-        attributes.extend(value_item.as_deref().map(|v| ("ValueItemTarget", v)));
+        attributes.extend(r.value_item.as_deref().map(|v| ("ValueItemTarget", v)));
         attributes.extend([
             ("Changeable", "true"),
             ("Visible", "true"),
-            ("TextId", text_id.as_str()),
+            ("TextId", r.text.id.as_str()),
         ]);
         doc.leaf("Ref", &attributes);
     }
     doc.close("ParameterRecordDataItem");
-}
-
-/// Lowering puts one kind of mapping in each record.
-fn record_name(kind: Option<MappingKind>) -> &'static str {
-    match kind {
-        Some(MappingKind::PzdOut) => "PZD output mapping (controller to drive)",
-        Some(MappingKind::PzdIn) => "PZD input mapping (drive to controller)",
-        Some(MappingKind::Dpv1Index) => "Record index mapping",
-        Some(MappingKind::Setting) | None => "Drive settings",
-    }
-}
-
-fn kind_tag(kind: MappingKind) -> String {
-    kind.key().to_uppercase()
-}
-
-/// A Ref's TextId: `IDT_PZD_OUT_2`, `IDT_SETTINGS_1`.
-fn entry_text_id(set: &MappingSet, entry: &MappingEntry) -> String {
-    format!("IDT_{}_{}", kind_tag(set.kind), entry.number)
-}
-
-/// Names a set of choices in its ValueItem's ID and TextIds: its kind, and
-/// for a setting (each is a set of one entry) its number too.
-fn value_tag(set: &MappingSet) -> String {
-    match (set.kind, set.entries.first()) {
-        (MappingKind::Setting, Some(entry)) => format!("{}_{}", kind_tag(set.kind), entry.number),
-        (kind, _) => kind_tag(kind),
-    }
 }
 
 /// GSDML's value list: `min..max` runs and single values, e.g. "0..14" or
@@ -492,8 +398,8 @@ fn allowed_values(allowed: &Allowed) -> String {
     };
     match allowed {
         Allowed::Range { min, max } => run((*min).into(), (*max).into()),
-        Allowed::Choices(choices) => {
-            let mut values: Vec<i64> = choices.iter().map(|c| c.value).collect();
+        Allowed::Choices(set) => {
+            let mut values: Vec<i64> = set.choices.iter().map(|c| c.value).collect();
             values.sort_unstable();
             let mut runs: Vec<(i64, i64)> = Vec::new();
             for value in values {
@@ -510,20 +416,10 @@ fn allowed_values(allowed: &Allowed) -> String {
     }
 }
 
-/// IDs and TextIds of a module: `PKW_12` (PKW and 12 PZD words), `PZD_12`,
-/// `STD_TEL_1`. Lowering gives each PZD length once per PKW choice.
-fn module_tag(m: &Module) -> String {
-    match m.kind {
-        ModuleKind::StandardTelegram1 => "STD_TEL_1".into(),
-        ModuleKind::Pzd if m.layout.pkw => format!("PKW_{}", m.layout.pzd_words),
-        ModuleKind::Pzd => format!("PZD_{}", m.layout.pzd_words),
-    }
-}
-
 fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("ModuleList", &[]);
     for m in &p.modules {
-        module(doc, ir, p, m);
+        module(doc, ir, m);
     }
     doc.close("ModuleList");
 }
@@ -531,270 +427,89 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 /// A module with one submodule of the same ident number in API 0: the
 /// firmware does not implement the PROFIdrive profile, so not its API even
 /// for standard telegram 1.
-///
-/// The user-defined (PZD) modules carry the parameter records, so the
-/// controller writes the mappings and settings when it plugs one of them;
-/// standard telegram 1 has fixed meanings and carries none (the firmware
-/// selects the standard telegram itself, e.g. MV810's P43.01 = 0).
-fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
-    let telegram = &ir.telegram;
-    let tag = module_tag(m);
-    let ident = hex32(m.ident);
-    let (name_id, info_id) = (
-        format!("IDT_MODULE_{tag}"),
-        format!("IDT_MODULE_INFO_{tag}"),
-    );
-    let (name, info) = (english(m.name.as_str()), english(module_description(m)));
+fn module(doc: &mut Doc, ir: &Ir, m: &Module) {
+    let ident = hex32(m.ident_number);
     doc.open(
         "ModuleItem",
-        &[("ID", &format!("IDM_{tag}")), ("ModuleIdentNumber", &ident)],
+        &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
     );
-    module_info(doc, (&name_id, &name), (&info_id, &info), &[]);
+    module_info(doc, &m.name, &m.info, &[]);
     doc.open("VirtualSubmoduleList", &[]);
     doc.open(
         "VirtualSubmoduleItem",
         &[
-            ("ID", &format!("IDS_{tag}")),
+            ("ID", &m.submodule_id),
             ("SubmoduleIdentNumber", &ident),
             ("API", "0"),
             ("MayIssueProcessAlarm", "false"),
         ],
     );
     doc.open("IOData", &[]);
-    for direction in [Direction::Input, Direction::Output] {
-        doc.open(direction.element(), &[("Consistency", CONSISTENCY)]);
-        for item in data_items(telegram, m, direction) {
-            data_item(doc, &item);
+    for (element, items) in [("Input", &m.input), ("Output", &m.output)] {
+        doc.open(element, &[("Consistency", CONSISTENCY)]);
+        for item in items {
+            data_item(doc, item);
         }
-        doc.close(direction.element());
+        doc.close(element);
     }
     doc.close("IOData");
-    if m.kind == ModuleKind::Pzd && !p.records.is_empty() {
+    if !m.records.is_empty() {
         doc.open("RecordDataList", &[]);
-        for record in &p.records {
+        for record in &m.records {
             parameter_record(doc, ir, record);
         }
         doc.close("RecordDataList");
     }
-    module_info(doc, (&name_id, &name), (&info_id, &info), &[]);
+    module_info(doc, &m.name, &m.info, &[]);
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
     doc.close("ModuleItem");
 }
 
-fn module_description(m: &Module) -> String {
-    let bytes = m.layout.bytes();
-    match m.kind {
-        ModuleKind::StandardTelegram1 => {
-            format!("Standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way")
-        }
-        ModuleKind::Pzd => {
-            let pkw = match m.layout.pkw_words() {
-                0 => String::new(),
-                n => format!("PKW channel ({n} words) and "),
-            };
-            let words = match m.layout.pzd_words {
-                1 => "1 PZD word".to_string(),
-                n => format!("{n} PZD words"),
-            };
-            format!("{pkw}{words}; {bytes} bytes each way")
-        }
-    }
-}
-
-/// Input: drive to controller. Output: controller to drive.
-#[derive(Clone, Copy)]
-enum Direction {
-    Input,
-    Output,
-}
-
-impl Direction {
-    fn element(self) -> &'static str {
-        match self {
-            Direction::Input => "Input",
-            Direction::Output => "Output",
-        }
-    }
-
-    /// The word PZD1 carries this way, if it has named bits, with the tag
-    /// its TextIds use.
-    fn word(self, telegram: &Telegram) -> Option<(&Word, &'static str)> {
-        match self {
-            Direction::Input => telegram.status_word.as_ref().map(|w| (w, "STATUS")),
-            Direction::Output => telegram.control_word.as_ref().map(|w| (w, "CONTROL")),
-        }
-    }
-
-    /// Standard telegram 1's two words: TextId tag and text.
-    fn standard_telegram_1(self) -> [(&'static str, &'static str); 2] {
-        match self {
-            Direction::Input => [
-                ("ZSW1", "ZSW1 (status word 1)"),
-                ("NIST_A", "NIST_A (speed actual value)"),
-            ],
-            Direction::Output => [
-                ("STW1", "STW1 (control word 1)"),
-                ("NSOLL_A", "NSOLL_A (speed setpoint)"),
-            ],
-        }
-    }
-}
-
-/// One Unsigned16 DataItem; a word with named bits shows them.
-struct DataItem<'a> {
-    text_id: String,
-    text: Text,
-    bits: Option<(&'a Word, &'static str)>,
-}
-
-impl DataItem<'_> {
-    fn plain(tag: &str, text: &str) -> Self {
-        DataItem {
-            text_id: format!("IDT_{tag}"),
-            text: english(text),
-            bits: None,
-        }
-    }
-}
-
-/// The module's words one way, in telegram order: the PKW channel, then
-/// PZD1..PZDn.
-fn data_items<'a>(telegram: &'a Telegram, m: &Module, direction: Direction) -> Vec<DataItem<'a>> {
-    if m.kind == ModuleKind::StandardTelegram1 {
-        return direction
-            .standard_telegram_1()
-            .iter()
-            .map(|(tag, text)| DataItem::plain(tag, text))
-            .collect();
-    }
-    let pkw = if m.layout.pkw {
-        pkw_words(telegram.pkw)
-    } else {
-        &[]
-    };
-    let pkw = pkw
-        .iter()
-        .map(|(tag, text)| DataItem::plain(&format!("PKW_{tag}"), text));
-    let pzd = (1..=m.layout.pzd_words).map(|n| match direction.word(telegram) {
-        Some((word, tag)) if n == 1 => DataItem {
-            text_id: format!("IDT_{tag}_WORD"),
-            text: word.name.clone(),
-            bits: Some((word, tag)),
-        },
-        _ => DataItem::plain(&format!("PZD_{n}"), &format!("PZD{n}")),
-    });
-    pkw.chain(pzd).collect()
-}
-
-/// The PKW channel's words, the same both ways: TextId tag and text.
-fn pkw_words(kind: PkwKind) -> &'static [(&'static str, &'static str)] {
-    match kind {
-        PkwKind::None => &[],
-        PkwKind::PkeIndPwe => &[
-            ("PKE", "PKE"),
-            ("IND", "IND"),
-            ("PWE_HIGH", "PWE high"),
-            ("PWE_LOW", "PWE low"),
-        ],
-        PkwKind::StationCommandAddressValue => &[
-            ("STATION", "Station"),
-            ("COMMAND", "Command"),
-            ("ADDRESS", "Address"),
-            ("VALUE", "Value"),
-        ],
-    }
-}
-
 fn data_item(doc: &mut Doc, item: &DataItem) {
-    doc.text(&item.text_id, &item.text);
-    let Some((word, tag)) = item.bits else {
+    doc.text(&item.text);
+    if item.bits.is_empty() {
         doc.leaf(
             "DataItem",
-            &[("DataType", "Unsigned16"), ("TextId", &item.text_id)],
+            &[("DataType", "Unsigned16"), ("TextId", &item.text.id)],
         );
         return;
-    };
+    }
     doc.open(
         "DataItem",
         &[
             ("DataType", "Unsigned16"),
             ("UseAsBits", "true"),
-            ("TextId", &item.text_id),
+            ("TextId", &item.text.id),
         ],
     );
-    for field in &word.bits {
-        for bit in field.first..=field.last {
-            let text_id = format!("IDT_{tag}_BIT_{bit}");
-            let index = (field.last > field.first).then(|| bit - field.first);
-            doc.text(&text_id, &bit_text(field, index));
-            doc.leaf(
-                "BitDataItem",
-                &[("BitOffset", &bit.to_string()), ("TextId", &text_id)],
-            );
-        }
+    for bit in &item.bits {
+        doc.text(&bit.text);
+        doc.leaf(
+            "BitDataItem",
+            &[
+                ("BitOffset", &bit.offset.to_string()),
+                ("TextId", &bit.text.id),
+            ],
+        );
     }
     doc.close("DataItem");
 }
 
-/// A bit's name: the field's, with the bit's place in a field of several
-/// bits, and the field's values when it has them, since a BitDataItem has
-/// nothing else to show them with: "Control mode bit 0 (0 = Keypad, ...)".
-fn bit_text(field: &BitField, index: Option<u8>) -> Text {
-    let label = |chinese: bool| {
-        let mut text = pick(&field.name, chinese).to_string();
-        if let Some(index) = index {
-            text.push_str(&format!(" bit {index}"));
-        }
-        if !field.values.is_empty() {
-            let values: Vec<String> = field
-                .values
-                .iter()
-                .map(|c| format!("{} = {}", c.value, pick(&c.text, chinese)))
-                .collect();
-            text.push_str(&format!(" ({})", values.join(", ")));
-        }
-        text
-    };
-    let translated = field.name.zh.is_some() || field.values.iter().any(|c| c.text.zh.is_some());
-    Text {
-        en: label(false),
-        zh: translated.then(|| label(true)),
-    }
-}
-
-fn pick(text: &Text, chinese: bool) -> &str {
-    match (&text.zh, chinese) {
-        (Some(zh), true) => zh,
-        _ => &text.en,
-    }
-}
-
 /// One ValueItem per set of choices a record refers to.
-fn value_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
-    let sets: Vec<(String, &[Choice])> = p
-        .records
-        .iter()
-        .flat_map(|r| &r.sets)
-        .map(|&i| &ir.mappings[i])
-        .filter_map(|set| match &set.allowed {
-            Allowed::Choices(choices) => Some((value_tag(set), choices.as_slice())),
-            Allowed::Range { .. } => None,
-        })
-        .collect();
-    if sets.is_empty() {
+fn value_list(doc: &mut Doc, p: &Profinet) {
+    if p.value_items.is_empty() {
         return;
     }
     doc.open("ValueList", &[]);
-    for (tag, choices) in sets {
-        doc.open("ValueItem", &[("ID", &format!("IDV_{tag}"))]);
+    for item in &p.value_items {
+        doc.open("ValueItem", &[("ID", &item.id)]);
         doc.open("Assignments", &[]);
-        for choice in choices {
-            let text_id = format!("IDT_{tag}_VALUE_{}", choice.value);
-            doc.text(&text_id, &choice.text);
+        for (value, text) in &item.assignments {
+            doc.text(text);
             doc.leaf(
                 "Assign",
-                &[("Content", &choice.value.to_string()), ("TextId", &text_id)],
+                &[("Content", &value.to_string()), ("TextId", &text.id)],
             );
         }
         doc.close("Assignments");
@@ -824,7 +539,7 @@ fn language(
 ) {
     doc.open(element, attributes);
     for (id, text) in texts {
-        doc.leaf("Text", &[("TextId", id), ("Value", pick(text, chinese))]);
+        doc.leaf("Text", &[("TextId", id), ("Value", text.pick(chinese))]);
     }
     doc.close(element);
 }
@@ -833,18 +548,6 @@ fn language(
 mod tests {
     use super::*;
 
-    fn choices(values: &[i64]) -> Allowed {
-        Allowed::Choices(
-            values
-                .iter()
-                .map(|&value| Choice {
-                    value,
-                    text: english(""),
-                })
-                .collect(),
-        )
-    }
-
     #[test]
     fn allowed_values_are_runs_and_single_values() {
         assert_eq!(
@@ -852,9 +555,12 @@ mod tests {
             "0..65535"
         );
         assert_eq!(allowed_values(&Allowed::Range { min: 7, max: 7 }), "7");
-        assert_eq!(allowed_values(&choices(&[2, 0, 1])), "0..2");
-        assert_eq!(allowed_values(&choices(&[0, 5, 9, 10, 1])), "0..1 5 9..10");
-        assert_eq!(allowed_values(&choices(&[3])), "3");
+        assert_eq!(allowed_values(&Allowed::of_values(&[2, 0, 1])), "0..2");
+        assert_eq!(
+            allowed_values(&Allowed::of_values(&[0, 5, 9, 10, 1])),
+            "0..1 5 9..10"
+        );
+        assert_eq!(allowed_values(&Allowed::of_values(&[3])), "3");
     }
 
     #[test]
@@ -863,24 +569,5 @@ mod tests {
         doc.comment("from a--b---c.toml");
         let text = doc.finish();
         assert!(text.contains("<!-- from a- -b- - -c.toml -->"), "{text}");
-    }
-
-    #[test]
-    fn bits_of_a_field_name_their_place_and_values() {
-        let field = BitField {
-            first: 9,
-            last: 10,
-            name: Text {
-                en: "Control mode".into(),
-                zh: Some("控制方式".into()),
-            },
-            values: vec![Choice {
-                value: 0,
-                text: english("Keypad"),
-            }],
-        };
-        let text = bit_text(&field, Some(1));
-        assert_eq!(text.en, "Control mode bit 1 (0 = Keypad)");
-        assert_eq!(text.zh.as_deref(), Some("控制方式 bit 1 (0 = Keypad)"));
     }
 }

@@ -41,6 +41,7 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
         file_name: rust::file_name(ir),
         contents: rust::emit(ir).into_bytes(),
     });
+    artifacts.push(rust::support_module());
     if problems.has_errors() {
         return Err(problems);
     }

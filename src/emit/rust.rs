@@ -1,23 +1,38 @@
 //! The Rust emitter: IR to the firmware layout (`<stem>_layout.rs`) through
-//! `templates/layout.rs.jinja`, with the hand-written support code of
-//! `templates/*.rs` pasted in verbatim.
+//! `templates/layout.rs.jinja`, and the support module every layout is built
+//! from (`gsdc_support.rs`, from `templates/support/`), the same for every
+//! description, so a build with several layouts writes it once.
 //!
-//! The context carries finished pieces of Rust (identifiers, literals, doc
-//! lines) so the template only arranges them; names come from the
-//! description's English texts, made unique within their scope.
+//! Every name comes from the IR; the context carries finished pieces of Rust
+//! (identifiers, literals, doc lines) so the template only arranges them.
 
-use crate::ir::mapping::{Allowed, MappingKind, MappingSet};
+use crate::ir::mapping::{Allowed, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, ModuleKind, Profinet};
-use crate::ir::{Choice, Ir, Layout, PkwKind, Telegram, Word};
+use crate::ir::{Direction, Ir, Layout, PkwKind, Telegram, ValueSet, Word};
+use crate::Artifact;
 use serde::Serialize;
-use std::collections::BTreeSet;
 
 const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
-const SUPPORT: &str = include_str!("../../templates/support.rs");
-const PKW_PKE_IND_PWE: &str = include_str!("../../templates/pkw_pke_ind_pwe.rs");
-const PKW_STATION_COMMAND: &str = include_str!("../../templates/pkw_station_command.rs");
-const DIAGNOSIS: &str = include_str!("../../templates/diagnosis.rs");
+
+/// The support module's file, and its parts: `pub mod name;` in the first
+/// is replaced by the part's text.
+pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
+const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
+const SUPPORT_PARTS: [(&str, &str); 3] = [
+    (
+        "pkw_pke_ind_pwe",
+        include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
+    ),
+    (
+        "pkw_station_command",
+        include_str!("../../templates/support/pkw_station_command.rs"),
+    ),
+    (
+        "diagnosis",
+        include_str!("../../templates/support/diagnosis.rs"),
+    ),
+];
 
 #[derive(Serialize)]
 struct Context<'a> {
@@ -25,10 +40,8 @@ struct Context<'a> {
     source: &'a str,
     fingerprint: String,
     device: String,
-    support: &'static str,
-    pkw_support: Option<&'static str>,
-    diagnosis_support: Option<&'static str>,
-    telegrams: Vec<TelegramStruct>,
+    pkw_module: Option<&'static str>,
+    telegrams: Vec<TelegramAlias>,
     words: Vec<WordModule>,
     groups: Vec<Group>,
     profibus: Option<ProfibusItems>,
@@ -36,12 +49,11 @@ struct Context<'a> {
 }
 
 #[derive(Serialize)]
-struct TelegramStruct {
+struct TelegramAlias {
     name: String,
-    doc: String,
-    /// None when the telegram has no PKW channel.
-    pkw_doc: Option<String>,
-    pzd_doc: String,
+    doc: Vec<String>,
+    /// `PkwTelegram` or `PzdTelegram`.
+    generic: &'static str,
     pzd_words: u8,
     bytes: u16,
 }
@@ -76,7 +88,7 @@ struct Variant {
     value: i64,
 }
 
-/// The mapping sets of one kind: a module with their table, the offset in
+/// A group of mappings: a module with their table, the offset in
 /// User_Prm_Data and the PROFINET record.
 #[derive(Serialize)]
 struct Group {
@@ -84,7 +96,7 @@ struct Group {
     doc: &'static str,
     sets: Vec<SetAllowed>,
     entries: Vec<Entry>,
-    user_prm_offset: Option<usize>,
+    user_prm_offset: Option<u16>,
     record_index: Option<u16>,
 }
 
@@ -115,7 +127,7 @@ struct ProfibusItems {
     ident_placeholder: bool,
     ident_number: String,
     ppos: Vec<Ppo>,
-    user_prm_len: usize,
+    user_prm_len: u16,
     dpv1_status: Option<String>,
     diagnosis: Option<DiagnosisItems>,
 }
@@ -138,7 +150,7 @@ struct DiagAreaItem {
 
 #[derive(Serialize)]
 struct Ppo {
-    ppo: u8,
+    constant: String,
     name: String,
     config: String,
     config_len: usize,
@@ -154,7 +166,7 @@ struct ProfinetItems {
     dap_ident: String,
     interface_subslot: String,
     first_port_subslot: String,
-    ports: u8,
+    ports: usize,
     module_slot: u16,
     modules: Vec<PnModule>,
 }
@@ -168,15 +180,65 @@ struct PnModule {
 
 /// The firmware layout of a description.
 pub fn emit(ir: &Ir) -> String {
+    render(TEMPLATE, ir).expect("the layout template renders every IR (tested)")
+}
+
+/// Strict undefined: a name the context lacks is an error, so a misspelt
+/// field cannot render as nothing.
+fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
     let mut env = minijinja::Environment::new();
     env.set_trim_blocks(true);
     env.set_lstrip_blocks(true);
     env.set_keep_trailing_newline(true);
-    env.add_template("layout.rs", TEMPLATE)
-        .expect("templates/layout.rs.jinja is valid (tested)");
-    env.get_template("layout.rs")
-        .and_then(|t| t.render(context(ir)))
-        .expect("the layout context always renders (tested)")
+    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    env.template_from_str(template)?.render(context(ir))
+}
+
+/// `gsdc_support.rs`: the support code as one module, `gsdc_support`, with
+/// its parts inlined as modules of their own. Firmware includes it once at
+/// the crate root; the layouts refer to it as `crate::gsdc_support`.
+pub fn support_module() -> Artifact {
+    let mut text = format!(
+        "// @generated by {}; do not edit.\n\
+         // The support code of gsdc's firmware layouts. Include it once at the\n\
+         // crate root: include!(concat!(env!(\"OUT_DIR\"), \"/gsdc_support.rs\"));\n\
+         \n\
+         // A crate uses only the parts its layouts need.\n\
+         #[allow(dead_code)]\n\
+         pub mod gsdc_support {{\n",
+        crate::GENERATOR
+    );
+    for line in SUPPORT.lines() {
+        let part = line
+            .strip_prefix("pub mod ")
+            .and_then(|l| l.strip_suffix(';'))
+            .and_then(|name| SUPPORT_PARTS.iter().find(|(n, _)| *n == name));
+        match part {
+            Some((name, part)) => {
+                text.push_str(&format!("    pub mod {name} {{\n"));
+                indent(&mut text, part, 2);
+                text.push_str("    }\n");
+            }
+            None => indent(&mut text, line, 1),
+        }
+    }
+    text.push_str("}\n");
+    Artifact {
+        file_name: SUPPORT_FILE_NAME.to_string(),
+        contents: text.into_bytes(),
+    }
+}
+
+/// Appends `text`'s lines indented by `levels` of four spaces; blank lines
+/// stay empty, as rustfmt leaves them.
+fn indent(out: &mut String, text: &str, levels: usize) {
+    for line in text.lines() {
+        if !line.is_empty() {
+            out.push_str(&"    ".repeat(levels));
+            out.push_str(line);
+        }
+        out.push('\n');
+    }
 }
 
 /// `md810dp.toml` gives `md810dp_layout.rs`, `mv810-pnet02.toml`
@@ -197,26 +259,19 @@ fn context(ir: &Ir) -> Context<'_> {
         source: &ir.source_name,
         fingerprint: ir.fingerprint.to_string(),
         device: format!("{} {}", ir.device.vendor, ir.device.model),
-        // Without their final line end, like every other piece the template places.
-        support: SUPPORT.trim_end(),
-        pkw_support: match ir.telegram.pkw {
+        pkw_module: match ir.telegram.pkw {
             PkwKind::None => None,
-            PkwKind::PkeIndPwe => Some(PKW_PKE_IND_PWE.trim_end()),
-            PkwKind::StationCommandAddressValue => Some(PKW_STATION_COMMAND.trim_end()),
+            PkwKind::PkeIndPwe => Some("pkw_pke_ind_pwe"),
+            PkwKind::StationCommandAddressValue => Some("pkw_station_command"),
         },
-        diagnosis_support: ir
-            .profibus
-            .as_ref()
-            .and_then(|p| p.diagnosis.as_ref())
-            .map(|_| DIAGNOSIS.trim_end()),
         telegrams: telegrams(ir),
-        words: DIRECTIONS
+        words: Direction::BOTH
             .iter()
-            .filter_map(|dir| Some(word_module(dir, (dir.word)(&ir.telegram).as_ref()?)))
+            .filter_map(|&dir| Some(word_module(dir, ir.telegram.word(dir)?)))
             .collect(),
         profibus: ir.profibus.as_ref().map(profibus_items),
         profinet: ir.profinet.as_ref().map(profinet_items),
-        groups: groups(ir).iter().map(|g| group(ir, g)).collect(),
+        groups: ir.mappings.groups.iter().map(|g| group(ir, g)).collect(),
     }
 }
 
@@ -224,41 +279,39 @@ fn context(ir: &Ir) -> Context<'_> {
 // Telegrams
 
 /// What differs between the two directions of a cyclic telegram.
-struct Direction {
-    /// Of the struct's name.
+struct DirectionText {
+    /// Of the alias's name.
     suffix: &'static str,
     name: &'static str,
     /// What reads or writes the PKW channel in this direction.
     pkw: &'static str,
-    /// The word PZD1 carries, when the description has it, and its module.
-    word: fn(&Telegram) -> &Option<Word>,
+    /// The module of the word PZD1 carries, when the description has it.
     word_module: &'static str,
     standard_telegram_1: &'static str,
 }
 
-/// Master to drive (the master's outputs), then drive to master.
-const DIRECTIONS: [Direction; 2] = [
-    Direction {
-        suffix: "Out",
-        name: "master to drive",
-        pkw: "PkwRequest::decode",
-        word: |t| &t.control_word,
-        word_module: "control_word",
-        standard_telegram_1: "STW1 and NSOLL_A",
-    },
-    Direction {
-        suffix: "In",
-        name: "drive to master",
-        pkw: "PkwResponse::encode",
-        word: |t| &t.status_word,
-        word_module: "status_word",
-        standard_telegram_1: "ZSW1 and NIST_A",
-    },
-];
+fn direction_text(direction: Direction) -> DirectionText {
+    match direction {
+        Direction::Out => DirectionText {
+            suffix: "Out",
+            name: "master to drive",
+            pkw: "PkwRequest::decode",
+            word_module: "control_word",
+            standard_telegram_1: "STW1 and NSOLL_A",
+        },
+        Direction::In => DirectionText {
+            suffix: "In",
+            name: "drive to master",
+            pkw: "PkwResponse::encode",
+            word_module: "status_word",
+            standard_telegram_1: "ZSW1 and NIST_A",
+        },
+    }
+}
 
-/// A PPO type or a PROFINET module: one telegram struct each way.
+/// A PPO type or a PROFINET module: one telegram each way.
 struct Module {
-    /// The structs' names without the direction.
+    /// The aliases' names without the direction.
     base: String,
     doc: String,
     layout: Layout,
@@ -266,91 +319,85 @@ struct Module {
 }
 
 /// Each PPO type, then each PROFINET module, both ways.
-fn telegrams(ir: &Ir) -> Vec<TelegramStruct> {
+fn telegrams(ir: &Ir) -> Vec<TelegramAlias> {
     let ppos = ir.profibus.iter().flat_map(|p| {
         p.modules.iter().map(move |m| Module {
-            base: format!("Ppo{}", m.ppo),
+            base: m.ident.camel(),
             doc: format!("\"{}\" of {}", m.name, p.file_name),
             layout: m.layout,
             standard_telegram_1: false,
         })
     });
     let modules = ir.profinet.iter().flat_map(|p| {
-        p.modules.iter().map(|m| {
-            let (constant, base) = pn_module_name(m);
-            Module {
-                base,
-                doc: format!("PROFINET module \"{}\" ([`{constant}_IDENT`])", m.name),
-                layout: m.layout,
-                standard_telegram_1: m.kind == ModuleKind::StandardTelegram1,
-            }
+        p.modules.iter().map(|m| Module {
+            base: m.ident.camel(),
+            doc: format!(
+                "PROFINET module \"{}\" ([`{}_IDENT`])",
+                m.name.text.en,
+                m.ident.upper_snake()
+            ),
+            layout: m.layout,
+            standard_telegram_1: m.kind == ModuleKind::StandardTelegram1,
         })
     });
     ppos.chain(modules)
         .flat_map(|m| {
-            DIRECTIONS
+            Direction::BOTH
                 .iter()
-                .map(move |dir| telegram_struct(&ir.telegram, &m, dir))
+                .map(move |&dir| telegram_alias(&ir.telegram, &m, dir))
         })
         .collect()
 }
 
-fn telegram_struct(telegram: &Telegram, m: &Module, dir: &Direction) -> TelegramStruct {
+fn telegram_alias(telegram: &Telegram, m: &Module, direction: Direction) -> TelegramAlias {
+    let dir = direction_text(direction);
     let words = match m.layout.pzd_words {
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_doc = match (m.standard_telegram_1, (dir.word)(telegram)) {
+    let pzd_doc = match (m.standard_telegram_1, telegram.word(direction)) {
         (true, _) => format!("PROFIdrive {}.", dir.standard_telegram_1),
         (false, Some(_)) => format!("{words}; PZD1 is the word of [`{}`].", dir.word_module),
         (false, None) => format!("{words}."),
     };
-    TelegramStruct {
+    let mut doc = vec![format!(
+        "{}, {}: {} bytes.",
+        m.doc,
+        dir.name,
+        m.layout.bytes()
+    )];
+    if m.layout.pkw {
+        doc.push(format!("The PKW channel: see [`{}`].", dir.pkw));
+    }
+    doc.push(pzd_doc);
+    TelegramAlias {
         name: format!("{}{}", m.base, dir.suffix),
-        doc: format!("{}, {}: {} bytes.", m.doc, dir.name, m.layout.bytes()),
-        pkw_doc: m
-            .layout
-            .pkw
-            .then(|| format!("The PKW channel: see [`{}`].", dir.pkw)),
-        pzd_doc,
+        doc,
+        generic: if m.layout.pkw {
+            "PkwTelegram"
+        } else {
+            "PzdTelegram"
+        },
         pzd_words: m.layout.pzd_words,
         bytes: m.layout.bytes(),
-    }
-}
-
-/// The constant's and the struct's base name of a PROFINET module.
-fn pn_module_name(m: &profinet::Module) -> (String, String) {
-    match (m.kind, m.layout.pkw) {
-        (ModuleKind::StandardTelegram1, _) => ("TELEGRAM1".into(), "Telegram1".into()),
-        (ModuleKind::Pzd, true) => (
-            format!("PKW_PZD{}", m.layout.pzd_words),
-            format!("PkwPzd{}", m.layout.pzd_words),
-        ),
-        (ModuleKind::Pzd, false) => (
-            format!("PZD{}", m.layout.pzd_words),
-            format!("Pzd{}", m.layout.pzd_words),
-        ),
     }
 }
 
 // ---------------------------------------------------------------------------
 // Control and status words
 
-fn word_module(dir: &Direction, word: &Word) -> WordModule {
-    // `BitField` is imported into the module: no enum may take its name.
-    let mut types = Names::taken(&["BitField"]);
-    let mut constants = Names::default();
+fn word_module(direction: Direction, word: &Word) -> WordModule {
+    let dir = direction_text(direction);
     let fields = word
         .bits
         .iter()
         .map(|b| {
             let bits = bit_range(b.first.into(), b.last.into());
-            let name = constants.unique(upper_snake(&b.name.en, "BIT"), b.first);
-            let values = (!b.values.is_empty()).then(|| ValueEnum {
-                name: types.unique(camel(&b.name.en, "Field"), b.first),
-                doc: format!("The values of [`{name}`]."),
-                variants: variants(&b.values),
-            });
+            let name = b.ident.upper_snake();
+            let values = b
+                .values
+                .as_ref()
+                .map(|v| value_enum(v, format!("The values of [`{name}`].")));
             let see = values
                 .as_ref()
                 .map_or_else(String::new, |v| format!("; values in [`{}`]", v.name));
@@ -378,79 +425,38 @@ fn bit_range(first: u16, last: u16) -> String {
     }
 }
 
-fn variants(choices: &[Choice]) -> Vec<Variant> {
-    let mut names = Names::default();
-    choices
-        .iter()
-        .map(|c| Variant {
-            name: names.unique(camel(&c.text.en, "Value"), c.value),
-            doc: format!("{}.", doc_text(&c.text.en)),
-            value: c.value,
-        })
-        .collect()
+fn value_enum(values: &ValueSet, doc: String) -> ValueEnum {
+    ValueEnum {
+        name: values.ident.camel(),
+        doc,
+        variants: values
+            .choices
+            .iter()
+            .map(|c| Variant {
+                name: c.ident.camel(),
+                doc: format!("{}.", doc_text(&c.text.en)),
+                value: c.value,
+            })
+            .collect(),
+    }
 }
 
 // ---------------------------------------------------------------------------
 // Mappings
 
-/// Indexes into `Ir::mappings` of the sets of one kind; lowering orders the
-/// sets by kind, so each kind's sets are consecutive.
-struct SetsOfKind {
-    kind: MappingKind,
-    sets: Vec<usize>,
-}
-
-fn groups(ir: &Ir) -> Vec<SetsOfKind> {
-    let mut groups: Vec<SetsOfKind> = Vec::new();
-    for (i, set) in ir.mappings.iter().enumerate() {
-        match groups.last_mut() {
-            Some(g) if g.kind == set.kind => g.sets.push(i),
-            _ => groups.push(SetsOfKind {
-                kind: set.kind,
-                sets: vec![i],
-            }),
-        }
-    }
-    groups
-}
-
-fn group(ir: &Ir, g: &SetsOfKind) -> Group {
+fn group(ir: &Ir, g: &MappingGroup) -> Group {
     let single = g.sets.len() == 1;
-    let mut sets = Vec::new();
-    let mut entries = Vec::new();
-    for &i in &g.sets {
-        let set = &ir.mappings[i];
-        // A kind with several sets (the settings) tells their names apart by
-        // the number of each set's first entry; lowering gives every set one.
-        let names = if single {
-            SetNames {
-                allowed: "ALLOWED".into(),
-                choice: "Choice".into(),
-                holder: "Each entry".into(),
-            }
-        } else {
-            let first = &set.entries[0];
-            SetNames {
-                allowed: format!("ALLOWED_{}", first.number),
-                choice: format!("Choice{}", first.number),
-                holder: doc_text(&first.name.en),
-            }
-        };
-        entries.extend(set_entries(ir, set, &names.allowed));
-        sets.push(set_allowed(set, names));
-    }
     Group {
         module: g.kind.key(),
         doc: group_doc(g.kind),
-        sets,
-        entries,
-        user_prm_offset: ir.profibus.as_ref().map(|p| user_prm_offset(p, g)),
-        record_index: ir
-            .profinet
-            .iter()
-            .flat_map(|p| &p.records)
-            .find(|r| r.kind == g.kind)
-            .map(|r| r.index),
+        sets: g.sets.iter().map(|set| set_allowed(set, single)).collect(),
+        entries: g.sets.iter().flat_map(|set| set_entries(ir, set)).collect(),
+        user_prm_offset: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.block(g.kind))
+            .map(|b| b.offset),
+        record_index: ir.profinet.as_ref().and_then(|p| p.record_index(g.kind)),
     }
 }
 
@@ -465,22 +471,15 @@ fn group_doc(kind: MappingKind) -> &'static str {
     }
 }
 
-/// What a set's items are called.
-struct SetNames {
-    /// The constant of what its entries may hold.
-    allowed: String,
-    /// The enum of its choices.
-    choice: String,
-    /// Its entries, in docs: "Each entry", or the name of a set's one entry.
-    holder: String,
-}
-
-fn set_allowed(set: &MappingSet, names: SetNames) -> SetAllowed {
-    let SetNames {
-        allowed,
-        choice,
-        holder,
-    } = names;
+/// A group with one set says "each entry" in its docs; a set of a group of
+/// several (the settings) names its one entry.
+fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
+    let holder = if single {
+        "Each entry".to_string()
+    } else {
+        doc_text(&set.entries[0].name.en)
+    };
+    let allowed = set.allowed_ident.upper_snake();
     match &set.allowed {
         Allowed::Range { min, max } => SetAllowed {
             doc: format!(
@@ -493,25 +492,20 @@ fn set_allowed(set: &MappingSet, names: SetNames) -> SetAllowed {
             min: hex16(*min),
             max: hex16(*max),
         },
-        Allowed::Choices(choices) => SetAllowed {
-            doc: format!("{holder} holds one of the values of [`{choice}`]."),
-            allowed,
-            choices: Some(ValueEnum {
-                doc: format!("What {} may hold.", holder.to_lowercase()),
-                name: choice,
-                variants: variants(choices),
-            }),
-            min: String::new(),
-            max: String::new(),
-        },
+        Allowed::Choices(values) => {
+            let choices = value_enum(values, format!("What {} may hold.", holder.to_lowercase()));
+            SetAllowed {
+                doc: format!("{holder} holds one of the values of [`{}`].", choices.name),
+                allowed,
+                choices: Some(choices),
+                min: String::new(),
+                max: String::new(),
+            }
+        }
     }
 }
 
-fn set_entries<'a>(
-    ir: &'a Ir,
-    set: &'a MappingSet,
-    allowed: &'a str,
-) -> impl Iterator<Item = Entry> + 'a {
+fn set_entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entry> + 'a {
     // Parameter addresses read best in hex, with the manual's name beside
     // them; a choice is a plain number.
     let is_address = matches!(set.allowed, Allowed::Range { .. });
@@ -529,32 +523,16 @@ fn set_entries<'a>(
         };
         Entry {
             name: format!("{:?}", e.name.en),
-            number: e.number,
+            number: e.key.number,
             default,
             default_comment,
             parameter: e
                 .parameter
                 .map_or_else(|| "None".into(), |p| format!("Some({})", hex16(p))),
             parameter_comment: e.parameter.map_or_else(String::new, name_of),
-            allowed: allowed.to_string(),
+            allowed: set.allowed_ident.upper_snake(),
         }
     })
-}
-
-/// Where the group's first entry starts in User_Prm_Data. Lowering lays the
-/// entries out in mapping order, two bytes each, so the group's are
-/// consecutive: the generated decoder reads them from there.
-fn user_prm_offset(p: &Profibus, g: &SetsOfKind) -> usize {
-    let offsets: Vec<usize> = p
-        .user_prm
-        .entries
-        .iter()
-        .filter(|e| g.sets.contains(&e.mapping.0))
-        .map(|e| e.offset)
-        .collect();
-    let first = offsets.first().copied().unwrap_or(p.user_prm.byte_len());
-    debug_assert!(offsets.iter().enumerate().all(|(i, &o)| o == first + 2 * i));
-    first
 }
 
 // ---------------------------------------------------------------------------
@@ -568,46 +546,28 @@ fn profibus_items(p: &Profibus) -> ProfibusItems {
         ppos: p
             .modules
             .iter()
-            .map(|m| {
-                let config = m.config_bytes();
-                Ppo {
-                    ppo: m.ppo,
-                    name: m.name.clone(),
-                    config: hex_bytes(&config),
-                    config_len: config.len(),
-                }
+            .map(|m| Ppo {
+                constant: m.ident.upper_snake(),
+                name: m.name.clone(),
+                config: hex_bytes(&m.config),
+                config_len: m.config.len(),
             })
             .collect(),
-        user_prm_len: p.user_prm.byte_len(),
+        user_prm_len: p.user_prm.len,
         dpv1_status: p.dpv1.map(|d| hex_bytes(&d.status_bytes)),
         diagnosis: p.diagnosis.as_ref().map(diagnosis_items),
     }
 }
 
 /// The device-related diagnosis: an area constant and a value enum for each
-/// `Unit_Diag_Area` of the GSD, named after its bits.
+/// `Unit_Diag_Area` of the GSD.
 fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
-    let mut types = Names::taken(&["DiagArea"]);
-    // Beside the block's own constants; two areas over the same bits get
-    // the first bit's number appended.
-    let mut constants = Names::taken(&["LEN", "HEADER", "EMPTY"]);
     let areas = d
         .areas
         .iter()
         .map(|a| {
-            let (constant, enum_name) = match (a.first_bit, a.last_bit) {
-                (first, last) if first == last => (format!("BIT_{first}"), format!("Bit{first}")),
-                (first, last) => (
-                    format!("BITS_{first}_{last}"),
-                    format!("Bits{first}To{last}"),
-                ),
-            };
-            let constant = constants.unique(constant, a.first_bit);
-            let values = ValueEnum {
-                name: types.unique(enum_name, a.first_bit),
-                doc: format!("The values of [`{constant}`]."),
-                variants: variants(&a.values),
-            };
+            let constant = a.ident.upper_snake();
+            let values = value_enum(&a.values, format!("The values of [`{constant}`]."));
             DiagAreaItem {
                 doc: format!(
                     "{} of the device-related diagnosis: values in [`{}`].",
@@ -637,15 +597,15 @@ fn profinet_items(p: &Profinet) -> ProfinetItems {
         dap_ident: hex32(profinet::DAP_IDENT),
         interface_subslot: hex16(profinet::INTERFACE_SUBSLOT),
         first_port_subslot: hex16(profinet::FIRST_PORT_SUBSLOT),
-        ports: p.ports,
+        ports: p.ports.len(),
         module_slot: profinet::MODULE_SLOT,
         modules: p
             .modules
             .iter()
             .map(|m| PnModule {
-                name: m.name.clone(),
-                constant: pn_module_name(m).0,
-                ident: hex32(m.ident),
+                name: m.name.text.en.clone(),
+                constant: m.ident.upper_snake(),
+                ident: hex32(m.ident_number),
             })
             .collect(),
     }
@@ -669,96 +629,13 @@ fn hex32(value: u32) -> String {
     format!("0x{:04X}_{:04X}", value >> 16, value & 0xFFFF)
 }
 
-// ---------------------------------------------------------------------------
-// Names and docs
-
 /// One line of a doc comment.
 fn doc_text(text: &str) -> String {
     text.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-/// The runs of ASCII letters and digits of `text`, leaving out what is in
-/// parentheses: units and remarks, as in `Output frequency (0.01 Hz)`.
-fn ident_words(text: &str) -> Vec<String> {
-    let mut depth = 0usize;
-    let outside: String = text
-        .chars()
-        .map(|c| {
-            match c {
-                '(' => depth += 1,
-                ')' => depth = depth.saturating_sub(1),
-                _ if depth == 0 && c.is_ascii_alphanumeric() => return c,
-                _ => {}
-            }
-            ' '
-        })
-        .collect();
-    outside.split_whitespace().map(str::to_string).collect()
-}
-
-/// `Forward running` → `ForwardRunning`, `PID feedback` → `PidFeedback`;
-/// `fallback` when the text has no letters or starts with a digit.
-fn camel(text: &str, fallback: &str) -> String {
-    let name: String = ident_words(text)
-        .iter()
-        .flat_map(|w| {
-            let (head, tail) = w.split_at(1);
-            [head.to_ascii_uppercase(), tail.to_ascii_lowercase()]
-        })
-        .collect();
-    with_fallback(name, fallback)
-}
-
-/// `Forward running` → `FORWARD_RUNNING`.
-fn upper_snake(text: &str, fallback: &str) -> String {
-    let name = ident_words(text).join("_").to_ascii_uppercase();
-    with_fallback(name, fallback)
-}
-
-fn with_fallback(name: String, fallback: &str) -> String {
-    match name.chars().next() {
-        None => fallback.to_string(),
-        Some(c) if c.is_ascii_digit() => format!("{fallback}{name}"),
-        // `Self` is the one keyword a capitalised word can spell.
-        Some(_) if name == "Self" => format!("{name}{fallback}"),
-        Some(_) => name,
-    }
-}
-
-/// Names given in one scope, each once.
-#[derive(Default)]
-struct Names(BTreeSet<String>);
-
-impl Names {
-    fn taken(names: &[&str]) -> Self {
-        Names(names.iter().map(|n| n.to_string()).collect())
-    }
-
-    /// `name`, or `name` with `tag` (a bit or value number) and then a
-    /// counter appended until it is new.
-    fn unique(&mut self, name: String, tag: impl std::fmt::Display) -> String {
-        let sep = if name.contains('_') || name.chars().all(|c| !c.is_ascii_lowercase()) {
-            "_"
-        } else {
-            ""
-        };
-        let mut candidate = name.clone();
-        let mut n = 1;
-        while self.0.contains(&candidate) {
-            candidate = if n == 1 {
-                format!("{name}{sep}{tag}")
-            } else {
-                format!("{name}{sep}{tag}{sep}{n}")
-            };
-            n += 1;
-        }
-        self.0.insert(candidate.clone());
-        candidate
-    }
-}
-
 #[cfg(test)]
-#[path = "../../templates/support.rs"]
+#[path = "../../templates/support/mod.rs"]
 mod support;
 
 #[cfg(test)]
@@ -768,34 +645,17 @@ mod support_tests;
 mod tests {
     use super::*;
 
+    /// One typo in the template (`t.generik`) fails the rendering instead of
+    /// writing a layout without the telegram's type.
     #[test]
-    fn names_from_manual_texts() {
-        assert_eq!(camel("Forward running", "V"), "ForwardRunning");
-        assert_eq!(camel("PID feedback", "V"), "PidFeedback");
-        assert_eq!(camel("Output frequency (0.01 Hz)", "V"), "OutputFrequency");
-        assert_eq!(camel("DI1 to DI4 state", "V"), "Di1ToDi4State");
-        assert_eq!(
-            camel("Encoder/PG card abnormal", "V"),
-            "EncoderPgCardAbnormal"
-        );
-        assert_eq!(camel("1st speed", "Value"), "Value1stSpeed");
-        assert_eq!(camel("正转运行", "Value"), "Value");
-        assert_eq!(camel("self", "Value"), "SelfValue");
-        assert_eq!(upper_snake("Motor number", "BIT"), "MOTOR_NUMBER");
-        assert_eq!(upper_snake("5 V supply", "BIT"), "BIT5_V_SUPPLY");
-    }
-
-    #[test]
-    fn names_are_unique_in_their_scope() {
-        let mut names = Names::taken(&["BitField"]);
-        assert_eq!(names.unique("BitField".into(), 3), "BitField3");
-        assert_eq!(names.unique("Stop".into(), 3), "Stop");
-        assert_eq!(names.unique("Stop".into(), 3), "Stop3");
-        assert_eq!(names.unique("Stop".into(), 3), "Stop32");
-        let mut constants = Names::default();
-        assert_eq!(constants.unique("FAULT".into(), 4), "FAULT");
-        assert_eq!(constants.unique("FAULT".into(), 4), "FAULT_4");
-        assert_eq!(constants.unique("FAULT".into(), 4), "FAULT_4_2");
+    fn a_misspelt_name_in_the_template_is_an_error_not_empty_text() {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        assert!(render(TEMPLATE, &ir).is_ok());
+        let typo = TEMPLATE.replace("t.generic", "t.generik");
+        assert_ne!(typo, TEMPLATE);
+        let error = render(&typo, &ir).unwrap_err();
+        assert_eq!(error.kind(), minijinja::ErrorKind::UndefinedError);
     }
 
     #[test]

@@ -20,18 +20,30 @@ impl<T> Spanned<T> {
 
 /// The PROFIBUS baud rates, as the `<baud>_supp` and `MaxTsdr_<baud>` family
 /// of keywords spells them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+/// Descriptions key their MaxTsdr values by the same spelling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Deserialize)]
 pub enum Baud {
+    #[serde(rename = "9.6")]
     B9k6,
+    #[serde(rename = "19.2")]
     B19k2,
+    #[serde(rename = "31.25")]
     B31k25,
+    #[serde(rename = "45.45")]
     B45k45,
+    #[serde(rename = "93.75")]
     B93k75,
+    #[serde(rename = "187.5")]
     B187k5,
+    #[serde(rename = "500")]
     B500k,
+    #[serde(rename = "1.5M")]
     B1M5,
+    #[serde(rename = "3M")]
     B3M,
+    #[serde(rename = "6M")]
     B6M,
+    #[serde(rename = "12M")]
     B12M,
 }
 

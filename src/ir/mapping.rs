@@ -1,9 +1,16 @@
 //! Configurable mappings: which parameter (or which meaning) each PZD word
-//! and each DPV1 record index carries.
+//! and each DPV1 record index carries, and the drive settings a master gives
+//! at start-up.
+//!
+//! Mappings are grouped by kind, in telegram order; every set and entry has
+//! a key made of its kind and number, so that the parameter telegram, the
+//! records and the generated code link to them by what they are, not by
+//! where lowering happened to put them.
 
-use super::{Choice, Text};
+use super::{Ident, Text, ValueSet};
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
 pub enum MappingKind {
     /// Words the master sends (master -> slave).
     PzdOut,
@@ -16,6 +23,16 @@ pub enum MappingKind {
 }
 
 impl MappingKind {
+    /// Telegram order, the order of the groups.
+    pub const ALL: [MappingKind; 4] = [
+        MappingKind::PzdOut,
+        MappingKind::PzdIn,
+        MappingKind::Dpv1Index,
+        MappingKind::Setting,
+    ];
+
+    /// The description's key, and the name of the group's module in
+    /// generated code.
     pub fn key(self) -> &'static str {
         match self {
             MappingKind::PzdOut => "pzd_out",
@@ -26,18 +43,89 @@ impl MappingKind {
     }
 }
 
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct MappingSet {
+/// An entry: its kind and number (PZD word, record index, or the setting's
+/// place in the description, from 1). Unique within a description.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct EntryKey {
     pub kind: MappingKind,
+    pub number: u8,
+}
+
+/// A set: its kind and the number of its first entry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct SetKey {
+    pub kind: MappingKind,
+    pub first: u8,
+}
+
+/// Every mapping of the description, grouped by kind in telegram order.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub struct Mappings {
+    pub groups: Vec<MappingGroup>,
+}
+
+impl Mappings {
+    pub fn group(&self, kind: MappingKind) -> Option<&MappingGroup> {
+        self.groups.iter().find(|g| g.kind == kind)
+    }
+
+    pub fn sets(&self) -> impl Iterator<Item = &MappingSet> {
+        self.groups.iter().flat_map(|g| &g.sets)
+    }
+
+    pub fn set(&self, key: SetKey) -> &MappingSet {
+        self.sets()
+            .find(|s| s.key == key)
+            .expect("lowering links only to sets it made")
+    }
+
+    /// The entry and the set it belongs to.
+    pub fn entry(&self, key: EntryKey) -> (&MappingSet, &MappingEntry) {
+        self.sets()
+            .filter(|s| s.key.kind == key.kind)
+            .find_map(|s| Some((s, s.entries.iter().find(|e| e.key == key)?)))
+            .expect("lowering links only to entries it made")
+    }
+}
+
+/// The sets of one kind, in the order of their numbers.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct MappingGroup {
+    pub kind: MappingKind,
+    pub sets: Vec<MappingSet>,
+}
+
+impl MappingGroup {
+    pub fn entries(&self) -> impl Iterator<Item = (&MappingSet, &MappingEntry)> {
+        self.sets
+            .iter()
+            .flat_map(|s| s.entries.iter().map(move |e| (s, e)))
+    }
+
+    pub fn entry_count(&self) -> usize {
+        self.sets.iter().map(|s| s.entries.len()).sum()
+    }
+}
+
+/// Entries numbered `first..=last` that share what they may hold.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct MappingSet {
+    pub key: SetKey,
     pub allowed: Allowed,
+    /// The constant that says what the set's entries may hold, unique
+    /// within its group.
+    pub allowed_ident: Ident,
     pub entries: Vec<MappingEntry>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct MappingEntry {
-    /// PZD word number (1-based) or record index.
-    pub number: u8,
-    /// The name with `{n}` replaced by `number`.
+    pub key: EntryKey,
+    /// The name with `{n}` replaced by the number.
     pub name: Text,
     pub default: u16,
     /// The drive parameter that holds this mapping, if the drive has one.
@@ -47,16 +135,43 @@ pub struct MappingEntry {
 /// What a mapping may hold: a parameter address within a range, or one of
 /// a list of meanings.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Allowed {
     Range { min: u16, max: u16 },
-    Choices(Vec<Choice>),
+    Choices(ValueSet),
 }
 
 impl Allowed {
     pub fn contains(&self, value: i64) -> bool {
         match self {
             Allowed::Range { min, max } => (i64::from(*min)..=i64::from(*max)).contains(&value),
-            Allowed::Choices(choices) => choices.iter().any(|c| c.value == value),
+            Allowed::Choices(set) => set.choices.iter().any(|c| c.value == value),
         }
+    }
+
+    pub fn choices(&self) -> Option<&ValueSet> {
+        match self {
+            Allowed::Choices(set) => Some(set),
+            Allowed::Range { .. } => None,
+        }
+    }
+}
+
+#[cfg(test)]
+impl Allowed {
+    /// Choices with these values and empty texts, for tests.
+    pub(crate) fn of_values(values: &[i64]) -> Self {
+        let choices = values
+            .iter()
+            .map(|&value| super::Choice {
+                value,
+                text: Text::english(""),
+                ident: Ident::of(&["value"]).tagged(value),
+            })
+            .collect();
+        Allowed::Choices(ValueSet {
+            ident: Ident::of(&["choice"]),
+            choices,
+        })
     }
 }

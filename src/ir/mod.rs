@@ -5,18 +5,24 @@
 //! PROFIBUS needs lives in [`profibus`].
 
 pub mod mapping;
+mod names;
 pub mod numbering;
 pub mod profibus;
 pub mod profinet;
 pub mod telegram;
 
-pub use mapping::{Allowed, MappingEntry, MappingKind, MappingSet};
+pub use mapping::{
+    Allowed, EntryKey, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings, SetKey,
+};
+pub use names::Ident;
+pub(crate) use names::Scope;
 pub use numbering::Numbering;
 pub use profibus::Profibus;
 pub use profinet::Profinet;
-pub use telegram::{BitField, Choice, Layout, PkwKind, Telegram, Word};
+pub use telegram::{BitField, Choice, Direction, Layout, PkwKind, Telegram, ValueSet, Word};
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Ir {
     /// The description's file name, without directories: it goes into the
     /// headers of generated files, which must not depend on where they were built.
@@ -25,20 +31,38 @@ pub struct Ir {
     pub device: Device,
     pub numbering: Option<Numbering>,
     pub telegram: Telegram,
-    /// In telegram order: PZD out, PZD in, the DPV1 indexes, then the settings.
-    pub mappings: Vec<MappingSet>,
+    pub mappings: Mappings,
     pub profibus: Option<Profibus>,
     pub profinet: Option<Profinet>,
 }
 
 /// A text in English and, optionally, Chinese.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Text {
     pub en: String,
     pub zh: Option<String>,
 }
 
+impl Text {
+    pub(crate) fn english(text: impl Into<String>) -> Self {
+        Text {
+            en: text.into(),
+            zh: None,
+        }
+    }
+
+    /// The Chinese text when asked for and given, else the English.
+    pub fn pick(&self, chinese: bool) -> &str {
+        match (&self.zh, chinese) {
+            (Some(zh), true) => zh,
+            _ => &self.en,
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Device {
     pub vendor: String,
     pub family: String,

@@ -1,9 +1,11 @@
 //! What only PROFIBUS-DP needs: identity numbers, bus parameters, the PPO
 //! modules with their config bytes, the parameter telegram and diagnosis.
 
-use super::{Choice, Layout};
+use super::{EntryKey, Ident, Layout, MappingKind, SetKey, ValueSet};
+pub use crate::gsd::Baud;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Profibus {
     pub file_name: String,
     pub gsd_revision: u8,
@@ -12,8 +14,11 @@ pub struct Profibus {
     pub ident_placeholder: bool,
     pub implementation_type: Option<String>,
     pub modules: Vec<PpoModule>,
-    /// Supported baud rates as GSD names them, with MaxTsdr in bit times.
-    pub baud_rates: Vec<(&'static str, u16)>,
+    /// Max_Input_Len and Max_Output_Len: the largest module's bytes.
+    pub max_input_len: u16,
+    pub max_output_len: u16,
+    /// Supported baud rates with MaxTsdr in bit times, slowest first.
+    pub baud_rates: Vec<(Baud, u16)>,
     /// Units of 100 us.
     pub min_slave_interval: u16,
     pub slave_family: String,
@@ -23,9 +28,12 @@ pub struct Profibus {
     pub dpv1: Option<Dpv1>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
+    /// Max_Diag_Data_Len: the standard diagnosis and the device's block.
+    pub max_diag_data_len: u8,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Dpv1 {
     pub c1_read_write: bool,
     pub c1_max_data_len: u8,
@@ -36,10 +44,15 @@ pub struct Dpv1 {
 
 /// A PPO type as a module: PPO1..PPO5.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct PpoModule {
     pub ppo: u8,
     pub name: String,
     pub layout: Layout,
+    /// The config identifier bytes Chk_Cfg carries for this module.
+    pub config: Vec<u8>,
+    /// Its name in generated code: `ppo1`.
+    pub ident: Ident,
 }
 
 /// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
@@ -50,18 +63,14 @@ const CONSISTENT_WORDS_IN_OUT: u8 = 0b1111_0000;
 /// Words one general identifier byte can carry.
 pub const MAX_WORDS_PER_IDENTIFIER: u8 = 16;
 
-impl PpoModule {
-    /// PPO1 `0xF3,0xF1`: the PKW as 4 consistent words in and out, then the
-    /// PZD as one consistent block in and out.
-    pub fn config_bytes(&self) -> Vec<u8> {
-        let pkw = self
-            .layout
-            .pkw
-            .then(|| identifier(super::telegram::PKW_WORDS));
-        pkw.into_iter()
-            .chain(std::iter::once(identifier(self.layout.pzd_words)))
-            .collect()
-    }
+/// PPO1 `0xF3,0xF1`: the PKW as 4 consistent words in and out, then the PZD
+/// as one consistent block in and out. Lowering keeps `pzd_words` within
+/// 1..=16.
+pub(crate) fn config_bytes(layout: Layout) -> Vec<u8> {
+    let pkw = layout.pkw.then(|| identifier(super::telegram::PKW_WORDS));
+    pkw.into_iter()
+        .chain(std::iter::once(identifier(layout.pzd_words)))
+        .collect()
 }
 
 fn identifier(words: u8) -> u8 {
@@ -71,7 +80,7 @@ fn identifier(words: u8) -> u8 {
 
 /// The standard PPO types: (PKW, PZD words). PPO5's PZD count may differ per
 /// device (MD810 has 12), so the description gives it.
-pub fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
+pub(crate) fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
     let (pkw, pzd_words) = match ppo {
         1 => (true, 2),
         2 => (true, 6),
@@ -80,46 +89,82 @@ pub fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
         5 => (true, ppo5_pzd_words),
         _ => return None,
     };
-    Some(Layout { pkw, pzd_words })
+    Some(Layout::new(pkw, pzd_words))
 }
 
 /// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
-/// DPV1 status bytes), then one Unsigned16 per mapping entry.
+/// DPV1 status bytes), then one block of Unsigned16 parameters per group of
+/// mappings, in telegram order, with no gaps.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct UserPrm {
     pub constant: Vec<u8>,
-    pub entries: Vec<PrmEntry>,
+    pub blocks: Vec<PrmBlock>,
+    /// The value texts the parameters refer to.
+    pub texts: Vec<PrmText>,
+    /// Bytes of the whole telegram.
+    pub len: u16,
 }
-
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct PrmEntry {
-    pub offset: usize,
-    /// Index into `Ir::mappings`, then into that set's entries.
-    pub mapping: (usize, usize),
-}
-
-pub const PRM_ENTRY_BYTES: u8 = 2;
 
 impl UserPrm {
-    /// Bytes of the whole parameter telegram.
-    pub fn byte_len(&self) -> usize {
-        self.constant.len() + self.entries.len() * usize::from(PRM_ENTRY_BYTES)
+    pub fn params(&self) -> impl Iterator<Item = &PrmParam> {
+        self.blocks.iter().flat_map(|b| &b.params)
+    }
+
+    pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
+        self.blocks.iter().find(|b| b.kind == kind)
     }
 }
+
+/// The parameters of one kind of mapping, consecutive from `offset`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct PrmBlock {
+    pub kind: MappingKind,
+    pub offset: u16,
+    pub params: Vec<PrmParam>,
+}
+
+/// An `ExtUserPrmData`: one Unsigned16 holding a mapping entry.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct PrmParam {
+    /// Its reference number, from 1.
+    pub id: u16,
+    pub offset: u16,
+    pub entry: EntryKey,
+    /// The `PrmText` of its values, when its set has choices.
+    pub text: Option<u16>,
+}
+
+/// A `PrmText`: the texts of a set's choices.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct PrmText {
+    /// Its reference number, from 1.
+    pub id: u16,
+    pub set: SetKey,
+}
+
+pub const PRM_ENTRY_BYTES: u16 = 2;
 
 /// Device-related diagnosis: the block length (header byte included) and
 /// texts for values of bit areas counted from the first byte after the header.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Diagnosis {
     pub length: u8,
     pub areas: Vec<DiagnosisArea>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct DiagnosisArea {
     pub first_bit: u16,
     pub last_bit: u16,
-    pub values: Vec<Choice>,
+    /// The area's constant in generated code: `bits_8_15`.
+    pub ident: Ident,
+    pub values: ValueSet,
 }
 
 /// Bytes of the standard diagnosis before the device-related block.
@@ -130,13 +175,7 @@ mod tests {
     use super::*;
 
     fn config(ppo: u8, ppo5: u8) -> Vec<u8> {
-        let layout = ppo_layout(ppo, ppo5).unwrap();
-        PpoModule {
-            ppo,
-            name: String::new(),
-            layout,
-        }
-        .config_bytes()
+        config_bytes(ppo_layout(ppo, ppo5).unwrap())
     }
 
     #[test]

@@ -1,30 +1,52 @@
 //! What only PROFINET needs: identity numbers, the device access point,
-//! the selectable modules and the parameter records.
+//! the selectable modules with their IO data and parameter records, and the
+//! GSDML IDs and TextIds of everything, decided here so that the emitter
+//! only writes them down.
 
-use super::Layout;
+use super::{EntryKey, Ident, Layout, MappingKind, SetKey, Text};
+pub use crate::gsdml::Version;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Profinet {
-    /// Schema version, e.g. "2.32".
-    pub gsdml_version: String,
+    pub gsdml_version: Version,
     pub date: Date,
     pub file_name: String,
     pub vendor_id: u16,
     pub vendor_id_placeholder: bool,
     pub device_id: u16,
     pub device_id_placeholder: bool,
-    /// Info text of this bus's device identity, when it differs from the device's.
-    pub info: Option<super::Text>,
+    /// The device's name and info text, as DeviceIdentity, the DAP and its
+    /// submodule show them.
+    pub device_name: TextRef,
+    pub device_info: TextRef,
     /// DNS_CompatibleName: the default name of station.
     pub dns_name: String,
-    pub ports: u8,
     /// Units of 31.25 us.
     pub min_device_interval: u16,
+    /// IOConfigData: the most bytes the plugged submodules exchange.
+    pub max_input_length: u16,
+    pub max_output_length: u16,
+    pub interface: TextRef,
+    pub ports: Vec<Port>,
     pub modules: Vec<Module>,
-    pub records: Vec<ParameterRecord>,
+    /// One per set of choices the records refer to.
+    pub value_items: Vec<ValueItem>,
+}
+
+impl Profinet {
+    /// The record index of a kind of mapping, when a module carries it.
+    pub fn record_index(&self, kind: MappingKind) -> Option<u16> {
+        self.modules
+            .iter()
+            .flat_map(|m| &m.records)
+            .find(|r| r.kind == kind)
+            .map(|r| r.index)
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Date {
     pub year: u16,
     pub month: u8,
@@ -38,6 +60,23 @@ impl Date {
     }
 }
 
+/// A GSDML TextId and the text it stands for.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct TextRef {
+    pub id: String,
+    pub text: Text,
+}
+
+impl TextRef {
+    pub(crate) fn new(id: impl Into<String>, text: Text) -> Self {
+        TextRef {
+            id: id.into(),
+            text,
+        }
+    }
+}
+
 /// The device access point's ModuleIdentNumber and its submodule's.
 pub const DAP_IDENT: u32 = 0x0000_0001;
 /// Subslots of the interface and of its first port (IEC 61158-6-10). They
@@ -48,7 +87,17 @@ pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
 /// The slot modules are plugged into; the DAP is in slot 0.
 pub const MODULE_SLOT: u16 = 1;
 
+/// A port of the interface: its subslot is also its submodule ident number.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Port {
+    pub id: String,
+    pub subslot: u16,
+    pub text: TextRef,
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ModuleKind {
     /// PKW (or not) and PZD words, as the description maps them.
     Pzd,
@@ -56,36 +105,70 @@ pub enum ModuleKind {
     StandardTelegram1,
 }
 
+/// A selectable module with its one submodule of the same ident number.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Module {
     pub kind: ModuleKind,
-    pub name: String,
-    /// ModuleIdentNumber; the module's one submodule has the same number.
-    pub ident: u32,
+    /// ModuleItem ID (`IDM_PKW_12`) and its submodule's (`IDS_PKW_12`).
+    pub id: String,
+    pub submodule_id: String,
+    pub name: TextRef,
+    pub info: TextRef,
+    /// ModuleIdentNumber; the submodule has the same number.
+    pub ident_number: u32,
     pub layout: Layout,
+    /// Its name in generated code: `pkw_pzd12`.
+    pub ident: Ident,
+    /// The words each way, in telegram order.
+    pub input: Vec<DataItem>,
+    pub output: Vec<DataItem>,
+    pub records: Vec<ParameterRecord>,
 }
 
-impl Module {
-    /// Stable ident numbers, so firmware and GSDML agree without a table:
-    /// 0x0000_0010 standard telegram 1, 0x0000_01nn nn PZD words, 0x0000_02nn
-    /// the PKW and nn PZD words.
-    pub fn ident_for(kind: ModuleKind, layout: Layout) -> u32 {
-        match kind {
-            ModuleKind::StandardTelegram1 => 0x10,
-            ModuleKind::Pzd => {
-                (if layout.pkw { 0x200 } else { 0x100 }) + u32::from(layout.pzd_words)
-            }
-        }
-    }
-}
-
-/// A parameter record: one Unsigned16 Ref per entry of the mapping sets it
-/// holds, in order, at byte offsets 0, 2, 4, ... There is one record per
-/// kind of mapping, holding every set of that kind.
+/// One Unsigned16 word of IO data; a word with named bits shows them.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DataItem {
+    pub text: TextRef,
+    pub bits: Vec<BitItem>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct BitItem {
+    pub offset: u8,
+    pub text: TextRef,
+}
+
+/// A parameter record: one Unsigned16 per mapping entry, at consecutive
+/// byte offsets from 0.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct ParameterRecord {
-    pub kind: super::MappingKind,
+    pub kind: MappingKind,
     pub index: u16,
-    /// Indexes into `Ir::mappings`.
-    pub sets: Vec<usize>,
+    pub name: TextRef,
+    /// Bytes: two per Ref.
+    pub length: u16,
+    pub refs: Vec<RecordRef>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct RecordRef {
+    pub offset: u16,
+    pub entry: EntryKey,
+    pub text: TextRef,
+    /// The ValueItem of its choices, when its set has them.
+    pub value_item: Option<String>,
+}
+
+/// A set's choices with their TextIds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ValueItem {
+    pub id: String,
+    pub set: SetKey,
+    pub assignments: Vec<(i64, TextRef)>,
 }

@@ -1,24 +1,35 @@
 //! Mappings: PZD words each way and DPV1 indexes, each numbered entry with
-//! its default and what it may hold.
+//! its default and what it may hold; and the settings, each a set of one.
 
 use super::checks::{Checker, GSD_NAME_LEN};
 use super::resolve_address;
-use super::telegram::lower_choices;
+use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::{Allowed, MappingEntry, MappingKind, MappingSet, Numbering, Telegram, Text};
+use crate::ir::{
+    Allowed, EntryKey, Ident, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings,
+    Numbering, SetKey, Telegram, Text,
+};
+use std::collections::BTreeMap;
 use std::ops::Range;
 use toml::Spanned;
 
-/// The mapping sets in telegram order, each with the span of its `last`
-/// (where a diagnostic about the set's size points).
+/// The most settings a description may have: each is numbered by a byte.
+const MAX_SETTINGS: usize = 255;
+
+/// Where a diagnostic about a set's size points: its `last`, or a
+/// setting's name.
+pub type SetSpans = BTreeMap<SetKey, Range<usize>>;
+
+/// Every mapping set of the description, grouped, with the place of each.
 pub fn lower(
     cx: &mut Checker,
-    m: &raw::Mappings,
+    desc: &raw::Description,
     numbering: Option<&Numbering>,
     telegram: &Telegram,
-) -> (Vec<MappingSet>, Vec<Range<usize>>) {
-    [
+) -> (Mappings, SetSpans) {
+    let m = &desc.mappings;
+    let mut sets: Vec<(MappingSet, Range<usize>)> = [
         (MappingKind::PzdOut, &m.pzd_out),
         (MappingKind::PzdIn, &m.pzd_in),
         (MappingKind::Dpv1Index, &m.dpv1_index),
@@ -26,12 +37,41 @@ pub fn lower(
     .into_iter()
     .filter_map(|(kind, mapping)| {
         let mapping = mapping.as_ref()?;
-        Some((
-            lower_set(cx, kind, mapping, numbering, telegram)?,
-            mapping.last.span(),
-        ))
+        let set = lower_set(cx, kind, mapping, numbering, telegram)?;
+        Some((set, mapping.last.span()))
     })
-    .unzip()
+    .collect();
+    sets.extend(lower_settings(cx, &desc.settings, numbering));
+    let spans = sets.iter().map(|(s, span)| (s.key, span.clone())).collect();
+    (group(sets.into_iter().map(|(s, _)| s).collect()), spans)
+}
+
+/// The sets grouped by kind in telegram order, each group's sets by their
+/// numbers: the same plan whatever order lowering found them in. A kind
+/// with several sets (the settings) names each set's items after the number
+/// of its first entry.
+fn group(mut sets: Vec<MappingSet>) -> Mappings {
+    sets.sort_by_key(|s| s.key);
+    let mut groups: Vec<MappingGroup> = Vec::new();
+    for set in sets {
+        match groups.last_mut() {
+            Some(g) if g.kind == set.key.kind => g.sets.push(set),
+            _ => groups.push(MappingGroup {
+                kind: set.key.kind,
+                sets: vec![set],
+            }),
+        }
+    }
+    for g in groups.iter_mut().filter(|g| g.sets.len() > 1) {
+        for set in &mut g.sets {
+            let first = set.key.first;
+            set.allowed_ident = set.allowed_ident.tagged(first);
+            if let Allowed::Choices(values) = &mut set.allowed {
+                values.ident = values.ident.tagged(first);
+            }
+        }
+    }
+    Mappings { groups }
 }
 
 fn lower_set(
@@ -42,7 +82,7 @@ fn lower_set(
     telegram: &Telegram,
 ) -> Option<MappingSet> {
     let (first, last) = numbers(cx, kind, m, telegram)?;
-    let defaults = defaults(cx, m, numbering, last - first + 1)?;
+    let defaults = defaults(cx, m, numbering, usize::from(last - first) + 1)?;
     let parts = Parts {
         name: &m.name,
         range: &m.range,
@@ -54,14 +94,23 @@ fn lower_set(
 
 /// Settings: each a set of one entry, numbered from 1 in the order given;
 /// with the span of each setting's name.
-pub fn lower_settings(
+fn lower_settings(
     cx: &mut Checker,
     settings: &[raw::Setting],
     numbering: Option<&Numbering>,
-) -> (Vec<MappingSet>, Vec<Range<usize>>) {
+) -> Vec<(MappingSet, Range<usize>)> {
+    if let Some(extra) = settings.get(MAX_SETTINGS) {
+        cx.push(
+            Diagnostic::error("E134", format!("{} settings; a description holds at most {MAX_SETTINGS}", settings.len()))
+                .at(extra.name.span())
+                .label("setting 256")
+                .help("each setting is numbered by a byte in the parameter telegram and the generated code; drop some"),
+        );
+    }
     settings
         .iter()
-        .zip(1u8..)
+        .take(MAX_SETTINGS)
+        .zip(1..=u8::MAX)
         .filter_map(|(s, number)| {
             let default = (
                 resolve_address(cx, &s.default, numbering)?,
@@ -83,7 +132,7 @@ pub fn lower_settings(
             )?;
             Some((set, s.name.span()))
         })
-        .unzip()
+        .collect()
 }
 
 /// What mapping sets and settings have in common.
@@ -130,15 +179,16 @@ fn build_set(
     let entries = (first..=last)
         .zip(defaults)
         .map(|(number, (default, _))| MappingEntry {
-            number,
+            key: EntryKey { kind, number },
             name: render(&name, number),
             default,
             parameter: parameter.map(|base| base + u16::from(number - first)),
         })
         .collect();
     Some(MappingSet {
-        kind,
+        key: SetKey { kind, first },
         allowed,
+        allowed_ident: Ident::of(&["allowed"]),
         entries,
     })
 }
@@ -175,14 +225,14 @@ fn defaults(
     cx: &mut Checker,
     m: &raw::Mapping,
     numbering: Option<&Numbering>,
-    count: u8,
+    count: usize,
 ) -> Option<Vec<(u16, Range<usize>)>> {
     match (&m.default, &m.defaults) {
         (Some(default), None) => {
             let value = resolve_address(cx, default, numbering)?;
-            Some(vec![(value, default.span()); usize::from(count)])
+            Some(vec![(value, default.span()); count])
         }
-        (None, Some(list)) if list.get_ref().len() == usize::from(count) => list
+        (None, Some(list)) if list.get_ref().len() == count => list
             .get_ref()
             .iter()
             .map(|d| Some((resolve_address(cx, d, numbering)?, d.span())))
@@ -250,11 +300,11 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
             }
             Some(Allowed::Range { min, max })
         }
-        (None, Some(choices)) => Some(Allowed::Choices(lower_choices(
+        (None, Some(choices)) => Some(Allowed::Choices(value_set(
             cx,
+            Ident::of(&["choice"]),
             choices.get_ref(),
-            0,
-            0xFFFF,
+            (0, 0xFFFF),
             Some(GSD_NAME_LEN),
         ))),
         (None, None) => Some(Allowed::Range {
@@ -295,5 +345,43 @@ fn render(name: &Text, number: u8) -> Text {
     Text {
         en: name.en.replace("{n}", &n),
         zh: name.zh.as_ref().map(|z| z.replace("{n}", &n)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn loaded(name: &str) -> Mappings {
+        let text = std::fs::read_to_string(format!(
+            "{}/descriptions/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .unwrap();
+        crate::load(name, &text).0.unwrap().mappings
+    }
+
+    /// Lowering may find the sets in any order: the plan is the same.
+    #[test]
+    fn the_plan_does_not_depend_on_the_order_sets_are_found_in() {
+        for name in ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"] {
+            let mappings = loaded(name);
+            let sets: Vec<MappingSet> = mappings.sets().cloned().collect();
+            let mut reversed = sets.clone();
+            reversed.reverse();
+            // The settings' names depend on the group: regrouping gives them again.
+            let plain = |mut s: MappingSet| {
+                s.allowed_ident = Ident::of(&["allowed"]);
+                if let Allowed::Choices(v) = &mut s.allowed {
+                    v.ident = Ident::of(&["choice"]);
+                }
+                s
+            };
+            assert_eq!(
+                group(reversed.into_iter().map(plain).collect()),
+                mappings,
+                "{name}"
+            );
+        }
     }
 }

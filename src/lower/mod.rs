@@ -36,20 +36,15 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device);
     let telegram = telegram::lower(&mut cx, &desc.telegram);
-    let (mut mappings, mut mapping_spans) =
-        mappings::lower(&mut cx, &desc.mappings, numbering.as_ref(), &telegram);
-    let (settings, setting_spans) =
-        mappings::lower_settings(&mut cx, &desc.settings, numbering.as_ref());
-    mappings.extend(settings);
-    mapping_spans.extend(setting_spans);
+    let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
     let profibus = desc
         .profibus
         .as_ref()
-        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &mapping_spans));
+        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &set_spans));
     let profinet = desc
         .profinet
         .as_ref()
-        .map(|p| profinet::lower(&mut cx, p, &desc.device, &telegram, &mappings));
+        .map(|p| profinet::lower(&mut cx, p, &desc.device, (&device, &telegram, &mappings)));
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);

@@ -2,16 +2,16 @@
 //! parameter telegram and the diagnosis.
 
 use super::checks::{Checker, GSD_NAME_LEN};
-use super::telegram::lower_choices;
+use super::mappings::SetSpans;
+use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::{
-    ppo_layout, Diagnosis, DiagnosisArea, Dpv1, PpoModule, PrmEntry, Profibus, UserPrm,
-    PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
+    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, PpoModule, PrmBlock, PrmParam,
+    PrmText, Profibus, UserPrm, PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{MappingSet, PkwKind, Telegram};
-use std::collections::BTreeSet;
-use std::ops::Range;
+use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
+use std::collections::{BTreeMap, BTreeSet};
 use toml::Spanned;
 
 const DEFAULT_GSD_REVISION: u8 = 5;
@@ -33,8 +33,8 @@ pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profibus>,
     telegram: &Telegram,
-    mappings: &[MappingSet],
-    mapping_spans: &[Range<usize>],
+    mappings: &Mappings,
+    set_spans: &SetSpans,
 ) -> Option<Profibus> {
     let p = p.get_ref();
     let gsd_revision = match &p.gsd_revision {
@@ -52,7 +52,7 @@ pub fn lower(
             );
         }
     }
-    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, mapping_spans);
+    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, set_spans);
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
         cx.push(
@@ -68,6 +68,9 @@ pub fn lower(
             .help("apply to PI for an ident number before shipping the GSD"),
         );
     }
+    let modules = modules(cx, p, telegram);
+    let max_len = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
+    let diagnosis = p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d));
     Some(Profibus {
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
@@ -77,7 +80,9 @@ pub fn lower(
             .implementation_type
             .as_ref()
             .map(|i| cx.gsd_string(i, GSD_NAME_LEN, "implementation_type")),
-        modules: modules(cx, p, telegram),
+        modules,
+        max_input_len: max_len,
+        max_output_len: max_len,
         baud_rates: baud_rates(cx, &p.baud_rates),
         min_slave_interval: cx.spanned_in_range(
             &p.min_slave_interval,
@@ -91,7 +96,8 @@ pub fn lower(
         sync_mode: p.sync_mode,
         dpv1,
         user_prm,
-        diagnosis: p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d)),
+        max_diag_data_len: STANDARD_DIAG_BYTES + diagnosis.as_ref().map_or(0, |d| d.length),
+        diagnosis,
     })
 }
 
@@ -194,20 +200,18 @@ fn ppo_module(
         ppo,
         name: format!("PPO{ppo}: {pkw}{} PZD", layout.pzd_words),
         layout,
+        config: config_bytes(layout),
+        ident: Ident::of(&[&format!("ppo{ppo}")]),
     })
 }
 
-fn baud_rates(cx: &mut Checker, rates: &Spanned<raw::BaudRates>) -> Vec<(&'static str, u16)> {
+fn baud_rates(cx: &mut Checker, rates: &Spanned<BTreeMap<Baud, Spanned<u16>>>) -> Vec<(Baud, u16)> {
     let lowered: Vec<_> = rates
         .get_ref()
-        .entries()
-        .into_iter()
-        .filter_map(|(name, tsdr)| {
-            let tsdr = tsdr.as_ref()?;
-            Some((name, cx.spanned_in_range(tsdr, 1, 0xFFFF, "MaxTsdr")?))
-        })
+        .iter()
+        .filter_map(|(&baud, tsdr)| Some((baud, cx.spanned_in_range(tsdr, 1, 0xFFFF, "MaxTsdr")?)))
         .collect();
-    if lowered.is_empty() && !any_rate_given(rates) {
+    if rates.get_ref().is_empty() {
         cx.push(
             Diagnostic::error("E111", "no baud rate is supported")
                 .at(rates.span())
@@ -216,11 +220,6 @@ fn baud_rates(cx: &mut Checker, rates: &Spanned<raw::BaudRates>) -> Vec<(&'stati
         );
     }
     lowered
-}
-
-/// A rate that failed its range check was reported already.
-fn any_rate_given(rates: &Spanned<raw::BaudRates>) -> bool {
-    rates.get_ref().entries().iter().any(|(_, t)| t.is_some())
 }
 
 /// `1`, or `1@Drives@AC`: a main family number, then sub-families.
@@ -261,45 +260,80 @@ fn lower_dpv1(cx: &mut Checker, d: &raw::Dpv1) -> Option<Dpv1> {
 }
 
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
-/// them), then one Unsigned16 per mapping entry in telegram order.
+/// them), then one block per group of mappings in telegram order: one
+/// Unsigned16 per entry, numbered from 1. Sets with choices get a PrmText
+/// each, numbered from 1 in the same order.
 fn user_prm(
     cx: &mut Checker,
     dpv1: Option<&Dpv1>,
-    mappings: &[MappingSet],
-    mapping_spans: &[Range<usize>],
+    mappings: &Mappings,
+    set_spans: &SetSpans,
 ) -> UserPrm {
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
-    let slots = mappings
+    let texts: Vec<PrmText> = mappings
+        .sets()
+        .filter(|s| s.allowed.choices().is_some())
+        .zip(1..=u16::MAX)
+        .map(|(s, id)| PrmText { id, set: s.key })
+        .collect();
+    let text_of = |set| texts.iter().find(|t| t.set == set).map(|t| t.id);
+    let entry_bytes = usize::from(PRM_ENTRY_BYTES);
+    let mut end = constant.len();
+    let mut ids = 1..=u16::MAX;
+    let mut overflowing = None;
+    let blocks = mappings
+        .groups
         .iter()
-        .enumerate()
-        .flat_map(|(set, m)| (0..m.entries.len()).map(move |entry| (set, entry)));
-    let entries: Vec<PrmEntry> = slots
-        .enumerate()
-        .map(|(i, mapping)| PrmEntry {
-            offset: constant.len() + i * usize::from(PRM_ENTRY_BYTES),
-            mapping,
+        .map(|g| {
+            let block_offset = end;
+            let params = g
+                .entries()
+                .map(|(set, entry)| {
+                    let offset = end;
+                    end += entry_bytes;
+                    if end > MAX_USER_PRM_LEN {
+                        overflowing.get_or_insert(set.key);
+                    }
+                    PrmParam {
+                        id: ids.next().unwrap_or(u16::MAX),
+                        offset: saturate(offset),
+                        entry: entry.key,
+                        text: text_of(set.key),
+                    }
+                })
+                .collect();
+            PrmBlock {
+                kind: g.kind,
+                offset: saturate(block_offset),
+                params,
+            }
         })
         .collect();
-    let prm = UserPrm { constant, entries };
-    let overflowing = prm
-        .entries
-        .iter()
-        .find(|e| e.offset + usize::from(PRM_ENTRY_BYTES) > MAX_USER_PRM_LEN);
-    if let Some(entry) = overflowing {
+    if let Some(set) = overflowing {
         cx.push(
             Diagnostic::error(
                 "E116",
                 format!(
-                    "the parameter telegram would be {} bytes; GSD allows {MAX_USER_PRM_LEN}",
-                    prm.byte_len()
+                    "the parameter telegram would be {end} bytes; GSD allows {MAX_USER_PRM_LEN}"
                 ),
             )
-            .at(mapping_spans[entry.mapping.0].clone())
+            .at_opt(set_spans.get(&set).cloned())
             .label("this mapping runs past the limit")
             .help("map fewer PZD words or DPV1 indexes"),
         );
     }
-    prm
+    UserPrm {
+        constant,
+        blocks,
+        texts,
+        len: saturate(end),
+    }
+}
+
+/// An offset or length past what a telegram may hold has been reported
+/// (E116); the plan keeps the largest value instead of a wrapped one.
+fn saturate(value: usize) -> u16 {
+    u16::try_from(value).unwrap_or(u16::MAX)
 }
 
 fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis> {
@@ -311,15 +345,23 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         "the diagnosis length",
     )?;
     let bits = (i64::from(length) - 1) * 8;
+    let mut constants = Scope::default();
+    let mut types = Scope::default();
     let areas = raw
         .areas
         .iter()
-        .filter_map(|a| diagnosis_area(cx, a, bits))
+        .filter_map(|a| diagnosis_area(cx, a, bits, (&mut constants, &mut types)))
         .collect();
     Some(Diagnosis { length, areas })
 }
 
-fn diagnosis_area(cx: &mut Checker, a: &raw::DiagnosisArea, bits: i64) -> Option<DiagnosisArea> {
+/// An area named after its bits: `BITS_8_15` and `Bits8To15`.
+fn diagnosis_area(
+    cx: &mut Checker,
+    a: &raw::DiagnosisArea,
+    bits: i64,
+    (constants, types): (&mut Scope, &mut Scope),
+) -> Option<DiagnosisArea> {
     let range = a.bit.get_ref();
     if bits == 0
         || range.first < 0
@@ -345,9 +387,23 @@ fn diagnosis_area(cx: &mut Checker, a: &raw::DiagnosisArea, bits: i64) -> Option
         return None;
     }
     let max_value = (1i64 << (range.last - range.first + 1)) - 1;
+    // Checked above: 0 <= first <= last < bits <= 8 * 243.
+    let (first, last) = (range.first as u16, range.last as u16);
+    let (constant, type_name) = if first == last {
+        let bit = Ident::of(&["bit", &first.to_string()]);
+        (bit.clone(), bit)
+    } else {
+        let (f, l) = (first.to_string(), last.to_string());
+        (
+            Ident::of(&["bits", &f, &l]),
+            Ident::of(&["bits", &f, "to", &l]),
+        )
+    };
+    let ident = types.unique(type_name, first);
     Some(DiagnosisArea {
-        first_bit: range.first as u16,
-        last_bit: range.last as u16,
-        values: lower_choices(cx, &a.values, 0, max_value, Some(GSD_NAME_LEN)),
+        first_bit: first,
+        last_bit: last,
+        ident: constants.unique(constant, first),
+        values: value_set(cx, ident, &a.values, (0, max_value), Some(GSD_NAME_LEN)),
     })
 }

@@ -4,40 +4,50 @@
 use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Date, Module, ModuleKind, ParameterRecord, Profinet};
-use crate::ir::{Layout, MappingKind, MappingSet, PkwKind, Telegram};
+use crate::ir::profinet::{
+    Date, Module, ModuleKind, Port, Profinet, TextRef, Version, FIRST_PORT_SUBSLOT,
+};
+use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
+mod ids;
+mod io;
+mod records;
+
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
-const SUPPORTED_VERSIONS: [&str; 1] = ["2.32"];
-const DEFAULT_VERSION: &str = "2.32";
-/// Record indexes 0..0x7FFF are the vendor's (IEC 61158-6-10).
-const MAX_VENDOR_RECORD_INDEX: i64 = 0x7FFF;
-/// Standard telegram 1 has two words each way.
-const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
+const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
+const DEFAULT_VERSION: Version = Version::new(2, 32);
 
 pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profinet>,
-    device: &raw::Device,
-    telegram: &Telegram,
-    mappings: &[MappingSet],
+    raw_device: &raw::Device,
+    (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
-        p.file_vendor.as_ref().unwrap_or(&device.vendor),
+        p.file_vendor.as_ref().unwrap_or(&raw_device.vendor),
         "profinet.file_vendor",
     );
-    let family = file_name_part(cx, &device.family, "device.family");
+    let family = file_name_part(cx, &raw_device.family, "device.family");
     placeholder_warning(cx, &p.vendor_id, "vendor ID");
     placeholder_warning(cx, &p.device_id, "device ID");
+    let info = p.info.as_ref().map(|i| cx.text(i, None, "profinet.info"));
+    let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
+    let records = records::indexes(cx, &p.records, mappings);
+    let modules: Vec<Module> = modules(cx, p, telegram)
+        .into_iter()
+        .map(|(kind, layout)| io::module(kind, layout, telegram, mappings, &records))
+        .collect();
+    let value_items = records::value_items(mappings, &modules);
+    let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {
         file_name: format!(
-            "GSDML-V{gsdml_version}-{file_vendor}-{family}-{}.xml",
+            "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
             date.compact()
         ),
         gsdml_version,
@@ -46,34 +56,63 @@ pub fn lower(
         vendor_id_placeholder: p.vendor_id.get_ref().placeholder,
         device_id: cx.spanned_in_range(&p.device_id.get_ref().value, 1, 0xFFFF, "device_id")?,
         device_id_placeholder: p.device_id.get_ref().placeholder,
-        info: p.info.as_ref().map(|i| cx.text(i, None, "profinet.info")),
+        device_name: TextRef::new(ids::DEVICE_NAME, device.name.clone()),
+        // The PROFINET part's own info text, else the device's, else its name.
+        device_info: TextRef::new(
+            ids::DEVICE_INFO,
+            info.or_else(|| device.info.clone())
+                .unwrap_or_else(|| device.name.clone()),
+        ),
         dns_name: dns_name(cx, &p.dns_name),
-        ports: cx.spanned_in_range(&p.ports, 1, 16, "ports")?,
         min_device_interval: cx.spanned_in_range(
             &p.min_device_interval,
             1,
             4096,
             "min_device_interval",
         )?,
-        modules: modules(cx, p, telegram),
-        records: records(cx, &p.records, mappings),
+        max_input_length,
+        max_output_length,
+        interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
+        ports: (1..=ports).map(port).collect(),
+        modules,
+        value_items,
     })
 }
 
-fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<String> {
-    let Some(v) = v else {
-        return Some(DEFAULT_VERSION.to_string());
-    };
-    if SUPPORTED_VERSIONS.contains(&v.get_ref().as_str()) {
-        return Some(v.get_ref().clone());
+fn port(number: u8) -> Port {
+    Port {
+        id: format!("IDS_PORT_{number}"),
+        subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
+        text: TextRef::new(
+            format!("IDT_PORT_{number}"),
+            Text::english(format!("Port {number}")),
+        ),
     }
-    cx.push(
-        Diagnostic::error("E130", format!("gsdc does not write GSDML {}", v.get_ref()))
-            .at(v.span())
-            .label("unsupported version")
-            .help(format!("write one of: {}", SUPPORTED_VERSIONS.join(", "))),
-    );
-    None
+}
+
+/// The version as the description writes it: `2.32`, without the `V`.
+fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
+    let Some(v) = v else {
+        return Some(DEFAULT_VERSION);
+    };
+    let text = v.get_ref();
+    let version = (!text.starts_with(['V', 'v']))
+        .then(|| Version::parse(text))
+        .flatten()
+        .filter(|version| SUPPORTED_VERSIONS.contains(version));
+    if version.is_none() {
+        let supported: Vec<String> = SUPPORTED_VERSIONS
+            .iter()
+            .map(|v| v.to_string()[1..].to_string())
+            .collect();
+        cx.push(
+            Diagnostic::error("E130", format!("gsdc does not write GSDML {text}"))
+                .at(v.span())
+                .label("unsupported version")
+                .help(format!("write one of: {}", supported.join(", "))),
+        );
+    }
+    version
 }
 
 fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<Date> {
@@ -150,7 +189,9 @@ fn dns_name(cx: &mut Checker, name: &Spanned<String>) -> String {
     text.clone()
 }
 
-fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<Module> {
+/// The selectable modules: standard telegram 1 first when offered, then
+/// the PZD lengths with the PKW channel, then without.
+fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<(ModuleKind, Layout)> {
     let pkw_choices: &[bool] = match p.module_pkw.get_ref() {
         ModulePkw::With => &[true],
         ModulePkw::Without => &[false],
@@ -170,25 +211,22 @@ fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<Modu
     let lengths = pzd_lengths(cx, &p.pzd_lengths, telegram.pzd_words);
     let mut modules = Vec::new();
     if p.standard_telegram_1 {
-        modules.push(standard_telegram_1(cx, p, telegram));
+        check_standard_telegram_1(cx, p, telegram);
+        modules.push((
+            ModuleKind::StandardTelegram1,
+            Layout::new(false, io::STANDARD_TELEGRAM_1_WORDS),
+        ));
     }
     for &pkw in pkw_choices {
         for &pzd_words in &lengths {
-            let layout = Layout { pkw, pzd_words };
-            let pkw_text = if pkw { "PKW + " } else { "" };
-            modules.push(Module {
-                kind: ModuleKind::Pzd,
-                name: format!("{pkw_text}{pzd_words} PZD"),
-                ident: Module::ident_for(ModuleKind::Pzd, layout),
-                layout,
-            });
+            modules.push((ModuleKind::Pzd, Layout::new(pkw, pzd_words)));
         }
     }
     modules
 }
 
-fn standard_telegram_1(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Module {
-    if telegram.pzd_words < STANDARD_TELEGRAM_1_WORDS {
+fn check_standard_telegram_1(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) {
+    if telegram.pzd_words < io::STANDARD_TELEGRAM_1_WORDS {
         cx.push(
             Diagnostic::error(
                 "E113",
@@ -198,16 +236,6 @@ fn standard_telegram_1(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram)
             .label("for this device")
             .help("raise telegram.pzd_words to 2 or drop standard_telegram_1"),
         );
-    }
-    let layout = Layout {
-        pkw: false,
-        pzd_words: STANDARD_TELEGRAM_1_WORDS,
-    };
-    Module {
-        kind: ModuleKind::StandardTelegram1,
-        name: "Standard telegram 1".into(),
-        ident: Module::ident_for(ModuleKind::StandardTelegram1, layout),
-        layout,
     }
 }
 
@@ -233,46 +261,6 @@ fn pzd_lengths(cx: &mut Checker, lengths: &Spanned<Vec<Spanned<u8>>>, max: u8) -
                 return None;
             }
             Some(words)
-        })
-        .collect()
-}
-
-/// One record per kind of mapping the description has: PZD out, PZD in,
-/// DPV1 indexes, settings; indexes 1, 2, 3, 4 unless the description says otherwise.
-fn records(
-    cx: &mut Checker,
-    indexes: &raw::RecordIndexes,
-    mappings: &[MappingSet],
-) -> Vec<ParameterRecord> {
-    let kinds = [
-        (MappingKind::PzdOut, &indexes.pzd_out, 1),
-        (MappingKind::PzdIn, &indexes.pzd_in, 2),
-        (MappingKind::Dpv1Index, &indexes.dpv1_index, 3),
-        (MappingKind::Setting, &indexes.settings, 4),
-    ];
-    let mut used = BTreeSet::new();
-    kinds
-        .into_iter()
-        .filter_map(|(kind, given, default)| {
-            let sets: Vec<usize> = (0..mappings.len())
-                .filter(|&i| mappings[i].kind == kind)
-                .collect();
-            if sets.is_empty() {
-                return None;
-            }
-            let index = match given {
-                Some(i) => cx.spanned_in_range(i, 1, MAX_VENDOR_RECORD_INDEX, "a record index")?,
-                None => default,
-            };
-            if !used.insert(index) {
-                cx.push(
-                    Diagnostic::error("E105", format!("record index {index} is used twice"))
-                        .at_opt(given.as_ref().map(Spanned::span))
-                        .label("used by another record")
-                        .help("give each record its own index under [profinet.records]"),
-                );
-            }
-            Some(ParameterRecord { kind, index, sets })
         })
         .collect()
 }

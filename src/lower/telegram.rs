@@ -3,7 +3,7 @@
 use super::checks::Checker;
 use crate::description::{self as raw, PkwKind};
 use crate::diag::Diagnostic;
-use crate::ir::{self, Telegram};
+use crate::ir::{self, Ident, Scope, Telegram, ValueSet};
 use std::collections::BTreeSet;
 
 /// A general config identifier byte carries at most 16 words.
@@ -34,13 +34,17 @@ pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
     }
 }
 
+/// The fields of a word; their constants and their value types are named
+/// after them, each unique within the word.
 fn lower_word(cx: &mut Checker, w: &raw::Word, what: &str) -> ir::Word {
     let mut used = 0u32;
+    let mut constants = Scope::default();
+    let mut types = Scope::default();
     let bits = w
         .bits
         .iter()
         .filter_map(|b| {
-            let field = lower_bit_field(cx, b)?;
+            let field = lower_bit_field(cx, b, &mut constants, &mut types)?;
             let mask = mask(field.first, field.last);
             if used & mask != 0 {
                 cx.push(
@@ -64,7 +68,12 @@ fn mask(first: u8, last: u8) -> u32 {
     (first..=last).fold(0, |m, b| m | 1 << b)
 }
 
-fn lower_bit_field(cx: &mut Checker, b: &raw::BitField) -> Option<ir::BitField> {
+fn lower_bit_field(
+    cx: &mut Checker,
+    b: &raw::BitField,
+    constants: &mut Scope,
+    types: &mut Scope,
+) -> Option<ir::BitField> {
     let range = b.bit.get_ref();
     let span = b.bit.span();
     let first: u8 = cx.in_range(range.first, 0, WORD_BITS - 1, span.clone(), "a bit number")?;
@@ -75,35 +84,46 @@ fn lower_bit_field(cx: &mut Checker, b: &raw::BitField) -> Option<ir::BitField> 
         span.clone(),
         "the last bit",
     )?;
+    let name = cx.text(&b.name, None, "bit name");
     let max_value = (1i64 << (last - first + 1)) - 1;
+    let values = (!b.values.is_empty()).then(|| {
+        let ident = types.unique(Ident::from_text(&name.en, "field"), first);
+        value_set(cx, ident, &b.values, (0, max_value), None)
+    });
     Some(ir::BitField {
         first,
         last,
-        name: cx.text(&b.name, None, "bit name"),
-        values: lower_choices(cx, &b.values, 0, max_value, None),
+        ident: constants.unique(Ident::from_text(&name.en, "bit"), first),
+        name,
+        values,
     })
 }
 
-/// Choices with values within `min..=max`, each value once.
-pub fn lower_choices(
+/// Choices with values within `min..=max`, each value once, each named
+/// after its text; the set is named `ident`.
+pub fn value_set(
     cx: &mut Checker,
+    ident: Ident,
     choices: &[raw::Choice],
-    min: i64,
-    max: i64,
+    (min, max): (i64, i64),
     gsd_limit: Option<usize>,
-) -> Vec<ir::Choice> {
+) -> ValueSet {
     let mut seen = BTreeSet::new();
-    choices
+    let mut names = Scope::default();
+    let choices = choices
         .iter()
         .filter_map(|c| {
             let value: i64 = cx.spanned_in_range(&c.value, min, max, "a choice value")?;
             if !seen.insert(value) {
                 cx.duplicate(format!("value {value}"), c.value.span());
             }
+            let text = cx.text(&c.text, gsd_limit, "choice text");
             Some(ir::Choice {
                 value,
-                text: cx.text(&c.text, gsd_limit, "choice text"),
+                ident: names.unique(Ident::from_text(&text.en, "value"), value),
+                text,
             })
         })
-        .collect()
+        .collect();
+    ValueSet { ident, choices }
 }

@@ -1,18 +1,9 @@
-//! Tests of the hand-written code the generated layout includes: compiled
-//! here as the generated file has it, each PKW kind in a module beside the
-//! support code it uses.
+//! Tests of the hand-written support code the generated layouts are built
+//! from: compiled here as the module tree that `gsdc_support.rs` inlines.
 
+use super::support::pkw_pke_ind_pwe as pke_ind_pwe;
+use super::support::pkw_station_command as station_command;
 use super::support::*;
-
-mod pke_ind_pwe {
-    use crate::emit::rust::support::U16Be;
-    include!("../../../templates/pkw_pke_ind_pwe.rs");
-}
-
-mod station_command {
-    use crate::emit::rust::support::U16Be;
-    include!("../../../templates/pkw_station_command.rs");
-}
 
 /// `"10F0 0800 0000 1388"`, as the manuals print a PKW channel.
 fn pkw(hex: &str) -> [U16Be; 4] {
@@ -21,6 +12,26 @@ fn pkw(hex: &str) -> [U16Be; 4] {
         .map(|w| U16Be::new(u16::from_str_radix(w, 16).unwrap()))
         .collect();
     words.try_into().unwrap()
+}
+
+/// MD810 manual 1.4.2: a PPO1 telegram carrying "read F0-08" and two PZD
+/// words; PPO3 the same PZD words alone.
+#[test]
+fn telegrams_split_into_pkw_and_pzd_words_and_back() {
+    type Ppo1 = PkwTelegram<2, 12>;
+    type Ppo3 = PzdTelegram<2, 4>;
+    let bytes = [0x10, 0xF0, 0x08, 0x00, 0, 0, 0, 0, 0x00, 0x01, 0x13, 0x88];
+    let ppo1 = Ppo1::from_bytes(&bytes);
+    assert_eq!(ppo1.pkw.map(U16Be::get), [0x10F0, 0x0800, 0, 0]);
+    assert_eq!(ppo1.pzd.map(U16Be::get), [0x0001, 0x1388]);
+    assert_eq!(ppo1.to_bytes(), bytes);
+    let ppo3 = Ppo3::from_bytes(&[0x00, 0x01, 0x13, 0x88]);
+    assert_eq!(ppo3.pzd, ppo1.pzd);
+    assert_eq!(ppo3.to_bytes(), bytes[8..]);
+    assert_eq!((Ppo1::LEN, Ppo3::LEN), (12, 4));
+    assert_eq!(Ppo1::default().to_bytes(), [0; 12]);
+    assert_eq!(Ppo3::default().to_bytes(), [0; 4]);
+    assert_eq!(core::mem::size_of::<Ppo1>(), 12);
 }
 
 #[test]
@@ -382,7 +393,7 @@ mod mv810 {
 }
 
 mod diagnosis {
-    include!("../../../templates/diagnosis.rs");
+    use crate::emit::rust::support::diagnosis::DiagArea;
 
     /// MD810 (1.8): header 3, then the fault code's high and low byte; the
     /// low byte is bits 8..15.

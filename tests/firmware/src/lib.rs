@@ -4,6 +4,9 @@
 #![no_std]
 #![deny(warnings)]
 
+// The support code every layout is built from: once, at the crate root.
+include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
+
 pub mod md810dp {
     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
 }

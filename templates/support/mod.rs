@@ -1,7 +1,16 @@
-// Support code (gsdc templates/support.rs, included verbatim): the types the
-// generated items below are built from. Bus data is big-endian and copied
-// word by word, so everything here has alignment 1, the exact size it has on
-// the bus, and needs neither `unsafe` nor an allocator.
+// The support code every generated layout is built from (gsdc
+// templates/support/, written out as the module `gsdc_support`). Bus data is
+// big-endian and copied word by word, so everything here has alignment 1, the
+// exact size it has on the bus, and needs neither `unsafe` nor an allocator.
+
+/// The PKW channel of MD810-style drives: PKE, IND, PWE.
+pub mod pkw_pke_ind_pwe;
+
+/// The PKW channel of MV810-style cards: station, command, address, value.
+pub mod pkw_station_command;
+
+/// The device-related diagnosis block of a PROFIBUS slave.
+pub mod diagnosis;
 
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
 /// so a `#[repr(C)]` struct of words has no padding.
@@ -44,6 +53,86 @@ pub fn words<const N: usize>(bytes: &[u8]) -> [U16Be; N] {
 pub fn put_words(bytes: &mut [u8], words: &[U16Be]) {
     for (pair, word) in bytes.chunks_exact_mut(2).zip(words) {
         pair.copy_from_slice(&word.0);
+    }
+}
+
+/// A telegram with the PKW channel: 4 PKW words, then `PZD` PZD words;
+/// `BYTES` bytes on the bus. The layouts name each module's telegram with an
+/// alias, and check its size where they declare it ([`Self::LEN`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[repr(C)]
+pub struct PkwTelegram<const PZD: usize, const BYTES: usize> {
+    pub pkw: [U16Be; 4],
+    pub pzd: [U16Be; PZD],
+}
+
+impl<const PZD: usize, const BYTES: usize> PkwTelegram<PZD, BYTES> {
+    /// `BYTES`, checked at compile time against the words and the type's size.
+    pub const LEN: usize = {
+        assert!(BYTES == PKW_BYTES + 2 * PZD);
+        assert!(core::mem::size_of::<Self>() == BYTES);
+        BYTES
+    };
+
+    pub fn from_bytes(bytes: &[u8; BYTES]) -> Self {
+        let (pkw, pzd) = bytes.split_at(PKW_BYTES);
+        let _ = Self::LEN;
+        Self {
+            pkw: words(pkw),
+            pzd: words(pzd),
+        }
+    }
+
+    pub fn to_bytes(&self) -> [u8; BYTES] {
+        let mut bytes = [0; BYTES];
+        let (pkw, pzd) = bytes.split_at_mut(PKW_BYTES);
+        put_words(pkw, &self.pkw);
+        put_words(pzd, &self.pzd);
+        bytes
+    }
+}
+
+impl<const PZD: usize, const BYTES: usize> Default for PkwTelegram<PZD, BYTES> {
+    fn default() -> Self {
+        Self {
+            pkw: [U16Be::new(0); 4],
+            pzd: [U16Be::new(0); PZD],
+        }
+    }
+}
+
+/// A telegram of `PZD` PZD words only; `BYTES` bytes on the bus.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[repr(C)]
+pub struct PzdTelegram<const PZD: usize, const BYTES: usize> {
+    pub pzd: [U16Be; PZD],
+}
+
+impl<const PZD: usize, const BYTES: usize> PzdTelegram<PZD, BYTES> {
+    /// `BYTES`, checked at compile time against the words and the type's size.
+    pub const LEN: usize = {
+        assert!(BYTES == 2 * PZD);
+        assert!(core::mem::size_of::<Self>() == BYTES);
+        BYTES
+    };
+
+    pub fn from_bytes(bytes: &[u8; BYTES]) -> Self {
+        let _ = Self::LEN;
+        Self { pzd: words(bytes) }
+    }
+
+    pub fn to_bytes(&self) -> [u8; BYTES] {
+        let mut bytes = [0; BYTES];
+        put_words(&mut bytes, &self.pzd);
+        bytes
+    }
+}
+
+impl<const PZD: usize, const BYTES: usize> Default for PzdTelegram<PZD, BYTES> {
+    fn default() -> Self {
+        Self {
+            pzd: [U16Be::new(0); PZD],
+        }
     }
 }
 

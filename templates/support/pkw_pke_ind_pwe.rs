@@ -1,10 +1,12 @@
-// The PKW channel, PROFIdrive style (gsdc templates/pkw_pke_ind_pwe.rs,
-// included verbatim): PKE, IND, PWE high, PWE low. PKE bits 15-12 hold the
-// command or response code, PKE bits 7-0 the parameter address's high byte,
-// IND bits 15-8 its low byte, the PWE low word the value or error code.
+// The PKW channel, PROFIdrive style (gsdc templates/support/pkw_pke_ind_pwe.rs):
+// PKE, IND, PWE high, PWE low. PKE bits 15-12 hold the command or response
+// code, PKE bits 7-0 the parameter address's high byte, IND bits 15-8 its low
+// byte, the PWE low word the value or error code.
 // Reserved bits (PKE 11-8, IND 7-0, the PWE high word) are written 0 and not
 // read, and neither is the rest of a telegram without a request: a master
 // may leave old values there.
+
+use super::U16Be;
 
 // PKE bits 15-12.
 const PKW_NO_REQUEST: u8 = 0;

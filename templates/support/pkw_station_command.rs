@@ -1,9 +1,12 @@
-// The PKW channel with station numbers (gsdc templates/pkw_station_command.rs,
-// included verbatim): PKW0 target station (high byte) and source station
-// (low byte), for the card's forwarding over RS-485; PKW1 the command; PKW2
-// the parameter address; PKW3 the value, or the count (always 1) of a read.
+// The PKW channel with station numbers (gsdc
+// templates/support/pkw_station_command.rs): PKW0 target station (high byte)
+// and source station (low byte), for the card's forwarding over RS-485; PKW1
+// the command; PKW2 the parameter address; PKW3 the value, or the count
+// (always 1) of a read.
 // The drive answers with the command, 0x80 + the command on error. The value
 // word of a write reply is 0 and not read.
+
+use super::U16Be;
 
 /// Added to the command of a failed request in the reply.
 const PKW_FAILED: u16 = 0x80;

@@ -1,5 +1,5 @@
-// Support code for the device-related diagnosis (gsdc templates/diagnosis.rs,
-// included verbatim when the description has one).
+// Support code for the device-related diagnosis (gsdc
+// templates/support/diagnosis.rs).
 
 /// Bits `first..=last` of the device-related diagnosis block, numbered as
 /// the GSD's `Unit_Diag_Area` numbers them: bit 0 is the lowest bit of the

@@ -1,0 +1,35 @@
+//! The GSDML IDs and TextIds gsdc gives: derived from what each thing is,
+//! so the same description always gives the same IDs.
+
+use crate::ir::profinet::ModuleKind;
+use crate::ir::{Layout, MappingKind, MappingSet};
+
+/// TextIds of the device's name and description, shared by DeviceIdentity,
+/// the DAP and its submodule.
+pub const DEVICE_NAME: &str = "IDT_DEVICE_NAME";
+pub const DEVICE_INFO: &str = "IDT_DEVICE_INFO";
+pub const INTERFACE_TEXT: &str = "IDT_INTERFACE";
+
+/// A module's part of its IDs and TextIds: `PKW_12` (PKW and 12 PZD
+/// words), `PZD_12`, `STD_TEL_1`. Lowering gives each PZD length once per
+/// PKW choice.
+pub fn module_tag(kind: ModuleKind, layout: Layout) -> String {
+    match kind {
+        ModuleKind::StandardTelegram1 => "STD_TEL_1".into(),
+        ModuleKind::Pzd if layout.pkw => format!("PKW_{}", layout.pzd_words),
+        ModuleKind::Pzd => format!("PZD_{}", layout.pzd_words),
+    }
+}
+
+pub fn kind_tag(kind: MappingKind) -> String {
+    kind.key().to_uppercase()
+}
+
+/// A set's part of its ValueItem's ID and TextIds: its kind, and for a
+/// setting (each is a set of one entry) its number too.
+pub fn value_tag(set: &MappingSet) -> String {
+    match set.key.kind {
+        MappingKind::Setting => format!("{}_{}", kind_tag(set.key.kind), set.key.first),
+        kind => kind_tag(kind),
+    }
+}
