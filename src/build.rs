@@ -9,7 +9,15 @@
 //!     .unwrap_or_else(|e| panic!("{e}"));
 //! ```
 //!
-//! and in the firmware: `include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));`
+//! and in the firmware, the support module once at the crate root and each
+//! layout in a module of its own:
+//!
+//! ```ignore
+//! include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
+//! pub mod md810dp {
+//!     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
+//! }
+//! ```
 //!
 //! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
 //! again when the description changes, and writes only files whose content
@@ -18,7 +26,7 @@
 use crate::diag::{Diagnostic, Diagnostics, Source};
 use crate::load;
 use crate::output::{read_input, write_if_changed, ReadError};
-use crate::Artifact;
+use crate::{Artifact, ArtifactKind};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -43,7 +51,9 @@ pub fn generate(
     write(&artifacts, out_dir.as_ref())
 }
 
-/// Writes only the firmware layout (`<stem>_layout.rs`) into `out_dir`; returns its path.
+/// Writes only the firmware layout (`<stem>_layout.rs`) and the support
+/// module it is built from (`gsdc_support.rs`) into `out_dir`; returns the
+/// layout's path.
 pub fn generate_rust(
     description: impl AsRef<Path>,
     out_dir: impl AsRef<Path>,
@@ -51,7 +61,7 @@ pub fn generate_rust(
     let artifacts = compile_file(description.as_ref())?;
     let layout: Vec<Artifact> = artifacts
         .into_iter()
-        .filter(|a| a.file_name.ends_with("_layout.rs"))
+        .filter(|a| matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::RustSupport))
         .collect();
     if layout.is_empty() {
         return Err(BuildError(

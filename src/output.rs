@@ -228,6 +228,7 @@ mod tests {
 
     fn artifact(file_name: &str, contents: &[u8]) -> Artifact {
         Artifact {
+            kind: crate::emit::ArtifactKind::Gsd,
             file_name: file_name.into(),
             contents: contents.to_vec(),
         }

@@ -10,7 +10,7 @@
 //! not used: root ignores them.
 
 use gsdc::output::{write_if_changed, Outcome};
-use gsdc::Artifact;
+use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -134,6 +134,7 @@ fn a_missing_output_directory_is_created() {
     assert_eq!(names_in(&out).len(), MD810_FILES.len());
 
     let files = [Artifact {
+        kind: ArtifactKind::Gsd,
         file_name: "X.GSD".into(),
         contents: b"x".to_vec(),
     }];

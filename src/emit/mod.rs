@@ -7,11 +7,34 @@ pub mod rust;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::Ir;
 
-/// One generated file: its name (no directory) and its bytes.
+/// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Artifact {
+    pub kind: ArtifactKind,
     pub file_name: String,
     pub contents: Vec<u8>,
+}
+
+/// What a generated file is for: the edges choose among them (a build
+/// script may want the firmware layout alone).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
+pub enum ArtifactKind {
+    /// The PROFIBUS device description.
+    Gsd,
+    /// The PROFINET device description.
+    Gsdml,
+    /// The Rust firmware layout of one description.
+    RustLayout,
+    /// The support module every Rust layout is built from, the same for all.
+    RustSupport,
+}
+
+impl ArtifactKind {
+    /// Device files ship to PLC engineers; the others go into firmware.
+    pub fn is_device_file(self) -> bool {
+        matches!(self, ArtifactKind::Gsd | ArtifactKind::Gsdml)
+    }
 }
 
 /// Every file the description gives, each read back and checked by the same
@@ -24,6 +47,7 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
         let text = gsd::emit(ir, profibus);
         problems.extend(verify_gsd(&profibus.file_name, &text));
         artifacts.push(Artifact {
+            kind: ArtifactKind::Gsd,
             file_name: profibus.file_name.clone(),
             contents: text.into_bytes(),
         });
@@ -32,12 +56,14 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
         let text = gsdml::emit(ir, profinet);
         problems.extend(verify_gsdml(&profinet.file_name, &text));
         artifacts.push(Artifact {
+            kind: ArtifactKind::Gsdml,
             file_name: profinet.file_name.clone(),
             contents: text.into_bytes(),
         });
     }
     // The layout is checked by the tests that compile it (tests/generated_rust.rs).
     artifacts.push(Artifact {
+        kind: ArtifactKind::RustLayout,
         file_name: rust::file_name(ir),
         contents: rust::emit(ir).into_bytes(),
     });

@@ -6,11 +6,11 @@
 //! Every name comes from the IR; the context carries finished pieces of Rust
 //! (identifiers, literals, doc lines) so the template only arranges them.
 
+use super::{Artifact, ArtifactKind};
 use crate::ir::mapping::{Allowed, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, ModuleKind, Profinet};
 use crate::ir::{Direction, Ir, Layout, PkwKind, Telegram, ValueSet, Word};
-use crate::Artifact;
 use serde::Serialize;
 
 const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
@@ -224,6 +224,7 @@ pub fn support_module() -> Artifact {
     }
     text.push_str("}\n");
     Artifact {
+        kind: ArtifactKind::RustSupport,
         file_name: SUPPORT_FILE_NAME.to_string(),
         contents: text.into_bytes(),
     }
