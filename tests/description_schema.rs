@@ -281,7 +281,9 @@ fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
             }
         }
         for (key, item) in table {
-            let property = properties.and_then(|p| p.get(key));
+            let property = properties
+                .and_then(|p| p.get(key))
+                .or_else(|| pattern_property(node, key));
             match (property, &node["additionalProperties"]) {
                 (Some(property), _) => conforms(root, property, item),
                 (None, Json::Bool(false)) => Err(format!("`{key}` is not a key here")),
@@ -292,6 +294,22 @@ fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// The schema of `key` under `patternProperties`. The schema uses one form
+/// of pattern, `^[a-z]{N}$` (language codes); another form fails the test
+/// until this reader knows it.
+fn pattern_property<'a>(node: &'a Json, key: &str) -> Option<&'a Json> {
+    let patterns = node.get("patternProperties")?.as_object()?;
+    patterns.iter().find_map(|(pattern, schema)| {
+        let count = pattern
+            .strip_prefix("^[a-z]{")
+            .and_then(|rest| rest.strip_suffix("}$"))
+            .and_then(|n| n.parse::<usize>().ok())
+            .unwrap_or_else(|| panic!("a pattern this test cannot read: {pattern}"));
+        let matches = key.len() == count && key.bytes().all(|b| b.is_ascii_lowercase());
+        matches.then_some(schema)
+    })
 }
 
 fn guide_example() -> &'static str {

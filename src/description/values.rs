@@ -73,12 +73,28 @@ impl<'de> Deserialize<'de> for BitRange {
     }
 }
 
-/// A text in English and, optionally, Chinese: `"Control word"` or
-/// `{ en = "Control word", zh = "控制字" }`.
+/// A text: `"Control word"` (English only), or a table with `en` and any
+/// other language by its ISO 639-1 code, and optionally `gsd`, a short
+/// English form for a GSD file's 32 characters:
+/// `{ en = "Frequency reference (0.00 to P02.10)", zh = "设定频率（0.00～P02.10）", gsd = "Frequency ref. (0.00 to P02.10)" }`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Text {
     pub en: Spanned<String>,
-    pub zh: Option<Spanned<String>>,
+    /// Other languages in the order written: the code and the text.
+    pub others: Vec<(Spanned<String>, Spanned<String>)>,
+    pub gsd: Option<Spanned<String>>,
+}
+
+/// The ISO 639-1 language codes.
+const ISO_639_1: &str = "aa ab ae af ak am an ar as av ay az ba be bg bh bi bm bn bo br bs ca ce ch \
+    co cr cs cu cv cy da de dv dz ee el en eo es et eu fa ff fi fj fo fr fy ga gd gl gn gu gv ha he \
+    hi ho hr ht hu hy hz ia id ie ig ii ik io is it iu ja jv ka kg ki kj kk kl km kn ko kr ks ku kv \
+    kw ky la lb lg li ln lo lt lu lv mg mh mi mk ml mn mr ms mt my na nb nd ne ng nl nn no nr nv ny \
+    oc oj om or os pa pi pl ps pt qu rm rn ro ru rw sa sc sd se sg si sk sl sm sn so sq sr ss st su \
+    sv sw ta te tg th ti tk tl tn to tr ts tt tw ty ug uk ur uz ve vi vo wa wo xh yi yo za zh zu";
+
+pub fn is_language_code(code: &str) -> bool {
+    code.len() == 2 && ISO_639_1.split_whitespace().any(|c| c == code)
 }
 
 impl<'de> Deserialize<'de> for Text {
@@ -93,20 +109,28 @@ impl<'de> Deserialize<'de> for Text {
                 // The whole value's span is on the enclosing Spanned<Text>.
                 Ok(Text {
                     en: Spanned::new(0..0, v.to_string()),
-                    zh: None,
+                    others: Vec::new(),
+                    gsd: None,
                 })
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Text, A::Error> {
-                let (mut en, mut zh) = (None, None);
-                while let Some(key) = map.next_key::<String>()? {
-                    match key.as_str() {
+                let (mut en, mut gsd, mut others) = (None, None, Vec::new());
+                while let Some(key) = map.next_key::<Spanned<String>>()? {
+                    match key.get_ref().as_str() {
                         "en" => en = Some(map.next_value::<Spanned<String>>()?),
-                        "zh" => zh = Some(map.next_value::<Spanned<String>>()?),
-                        other => return Err(de::Error::unknown_field(other, &["en", "zh"])),
+                        "gsd" => gsd = Some(map.next_value::<Spanned<String>>()?),
+                        code if is_language_code(code) => {
+                            others.push((key, map.next_value::<Spanned<String>>()?));
+                        }
+                        other => {
+                            return Err(de::Error::custom(format!(
+                                "unknown field `{other}`, expected `en`, `gsd` or an ISO 639-1 language code (Chinese is zh, German de)"
+                            )))
+                        }
                     }
                 }
                 let en = en.ok_or_else(|| de::Error::missing_field("en"))?;
-                Ok(Text { en, zh })
+                Ok(Text { en, others, gsd })
             }
         }
         deserializer.deserialize_any(TextVisitor)

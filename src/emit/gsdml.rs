@@ -48,7 +48,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     device_access_point(&mut doc, ir, profinet);
     module_list(&mut doc, ir, profinet);
     value_list(&mut doc, profinet);
-    external_texts(&mut doc);
+    external_texts(&mut doc, &ir.languages);
     doc.close("ApplicationProcess");
     doc.close("ProfileBody");
     doc.close("ISO15745Profile");
@@ -518,14 +518,14 @@ fn value_list(doc: &mut Doc, p: &Profinet) {
     doc.close("ValueList");
 }
 
-/// English first; Chinese when the description has any, with every TextId
-/// in both (English where a text has no translation).
-fn external_texts(doc: &mut Doc) {
+/// English first, then every other language the description has, each
+/// with every TextId (English where a text has none in that language).
+fn external_texts(doc: &mut Doc, languages: &[String]) {
     let texts = std::mem::take(&mut doc.texts);
     doc.open("ExternalTextList", &[]);
-    language(doc, "PrimaryLanguage", &[], &texts, false);
-    if texts.iter().any(|(_, text)| text.zh.is_some()) {
-        language(doc, "Language", &[("xml:lang", "zh")], &texts, true);
+    language(doc, "PrimaryLanguage", &[], &texts, "en");
+    for code in languages {
+        language(doc, "Language", &[("xml:lang", code)], &texts, code);
     }
     doc.close("ExternalTextList");
 }
@@ -535,11 +535,11 @@ fn language(
     element: &str,
     attributes: &[(&str, &str)],
     texts: &[(String, Text)],
-    chinese: bool,
+    code: &str,
 ) {
     doc.open(element, attributes);
     for (id, text) in texts {
-        doc.leaf("Text", &[("TextId", id), ("Value", text.pick(chinese))]);
+        doc.leaf("Text", &[("TextId", id), ("Value", text.get(code))]);
     }
     doc.close(element);
 }

@@ -32,31 +32,69 @@ pub struct Ir {
     pub numbering: Option<Numbering>,
     pub telegram: Telegram,
     pub mappings: Mappings,
+    /// The languages besides English that the description's texts use, by
+    /// ISO 639-1 code in code order: every device file that has languages
+    /// has each of them.
+    pub languages: Vec<String>,
     pub profibus: Option<Profibus>,
     pub profinet: Option<Profinet>,
 }
 
-/// A text in English and, optionally, Chinese.
+/// A text in English and any other languages the description gives.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Text {
+    /// Every device file has English; generated code is named after it.
     pub en: String,
-    pub zh: Option<String>,
+    /// Other languages by ISO 639-1 code, in the order of their codes.
+    pub others: Vec<(String, String)>,
+    /// A shorter English form for a GSD's 32 characters, when the
+    /// description gives one; the full text goes everywhere else.
+    pub gsd: Option<String>,
 }
 
 impl Text {
     pub(crate) fn english(text: impl Into<String>) -> Self {
         Text {
             en: text.into(),
-            zh: None,
+            others: Vec::new(),
+            gsd: None,
         }
     }
 
-    /// The Chinese text when asked for and given, else the English.
-    pub fn pick(&self, chinese: bool) -> &str {
-        match (&self.zh, chinese) {
-            (Some(zh), true) => zh,
-            _ => &self.en,
+    /// gsdc's own text in English and Chinese (gsdc's translation).
+    pub(crate) fn en_zh(en: impl Into<String>, zh: impl Into<String>) -> Self {
+        Text {
+            en: en.into(),
+            others: vec![("zh".to_string(), zh.into())],
+            gsd: None,
+        }
+    }
+
+    /// The text in `language` (an ISO 639-1 code), or in English when it has
+    /// none in that language.
+    pub fn get(&self, language: &str) -> &str {
+        self.others
+            .iter()
+            .find(|(code, _)| code == language)
+            .map_or(&self.en, |(_, text)| text)
+    }
+
+    /// What a GSD file shows: the short form, or the English.
+    pub fn for_gsd(&self) -> &str {
+        self.gsd.as_deref().unwrap_or(&self.en)
+    }
+
+    /// Each language's text (the short form too) changed by `f`.
+    pub(crate) fn map(&self, f: impl Fn(&str) -> String) -> Text {
+        Text {
+            en: f(&self.en),
+            others: self
+                .others
+                .iter()
+                .map(|(code, text)| (code.clone(), f(text)))
+                .collect(),
+            gsd: self.gsd.as_deref().map(&f),
         }
     }
 }

@@ -4,6 +4,7 @@
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir;
+use std::collections::BTreeSet;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -15,6 +16,8 @@ pub struct Checker {
     diagnostics: Diagnostics,
     /// Strings that go into a GSD must be short 7-bit ASCII.
     for_gsd: bool,
+    /// The languages besides English that the description's texts use.
+    languages: BTreeSet<String>,
 }
 
 impl Checker {
@@ -22,7 +25,13 @@ impl Checker {
         Checker {
             diagnostics: Diagnostics::default(),
             for_gsd,
+            languages: BTreeSet::new(),
         }
+    }
+
+    /// Every language besides English that a text used, in code order.
+    pub fn languages(&self) -> Vec<String> {
+        self.languages.iter().cloned().collect()
     }
 
     pub fn push(&mut self, diagnostic: Diagnostic) {
@@ -39,13 +48,26 @@ impl Checker {
         s.get_ref().clone()
     }
 
+    /// Not empty, and no character that a device file, a generated header
+    /// or generated code cannot hold safely.
     fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) {
         if s.trim().is_empty() {
             self.push(
                 Diagnostic::error("E117", format!("{what} is empty"))
-                    .at(span)
+                    .at(span.clone())
                     .label("empty")
                     .help(format!("write the {what}")),
+            );
+        }
+        if let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) {
+            self.push(
+                Diagnostic::error(
+                    "E135",
+                    format!("{what} has {}, a control or formatting character", char_name(bad)),
+                )
+                .at(span)
+                .label("not a printable character")
+                .help("remove it: device files and generated code show texts as they are, and such a character breaks a line, a string or the reading order"),
             );
         }
     }
@@ -64,10 +86,10 @@ impl Checker {
         }
         if let Some(bad) = s.chars().find(|c| !is_gsd_char(*c)) {
             self.push(
-                Diagnostic::error("E102", format!("{what} has `{}`, which a GSD file cannot hold", bad.escape_default()))
+                Diagnostic::error("E102", format!("{what} has {}, which a GSD file cannot hold", char_name(bad)))
                     .at(span.clone())
                     .label("not 7-bit printable ASCII, or a quote")
-                    .help("GSD strings are 7-bit ASCII without `\"`; put other languages in `zh` (GSDML only)"),
+                    .help("GSD strings are 7-bit ASCII without `\"`; give the GSD an ASCII form with `gsd = \"...\"`, and other languages by their code (`zh = \"...\"`)"),
             );
         }
         let len = s.chars().count();
@@ -79,25 +101,39 @@ impl Checker {
                 )
                 .at(span)
                 .label(format!("{} characters too long", len - limit))
-                .help(format!("shorten it to at most {limit} characters")),
+                .help(format!("shorten it to at most {limit} characters, or keep it and give the GSD a short form: `gsd = \"...\"`")),
             );
         }
     }
 
-    /// A text; its English part also goes into the GSD when `gsd_limit` is given.
+    /// A text; what goes into the GSD (its short form, else its English) is
+    /// checked for the GSD when `gsd_limit` is given. Other languages come
+    /// out in the order of their codes.
     pub fn text(&mut self, t: &Spanned<Text>, gsd_limit: Option<usize>, what: &str) -> ir::Text {
         let text = t.get_ref();
         let en_span = text.en_span(&t.span());
-        match gsd_limit {
-            Some(limit) => self.check_gsd_text(text.en.get_ref(), en_span, limit, what),
-            None => self.non_empty(text.en.get_ref(), en_span, what),
+        self.non_empty(text.en.get_ref(), en_span.clone(), what);
+        if let Some(limit) = gsd_limit {
+            let (gsd, span) = text
+                .gsd
+                .as_ref()
+                .map_or((text.en.get_ref(), en_span), |g| (g.get_ref(), g.span()));
+            self.check_gsd_text(gsd, span, limit, what);
         }
-        if let Some(zh) = &text.zh {
-            self.non_empty(zh.get_ref(), zh.span(), what);
+        for (code, other) in &text.others {
+            self.non_empty(other.get_ref(), other.span(), what);
+            self.languages.insert(code.get_ref().clone());
         }
+        let mut others: Vec<(String, String)> = text
+            .others
+            .iter()
+            .map(|(code, other)| (code.get_ref().clone(), other.get_ref().clone()))
+            .collect();
+        others.sort();
         ir::Text {
             en: text.en.get_ref().clone(),
-            zh: text.zh.as_ref().map(|z| z.get_ref().clone()),
+            others,
+            gsd: text.gsd.as_ref().map(|g| g.get_ref().clone()),
         }
     }
 
@@ -151,4 +187,31 @@ impl Checker {
 
 pub fn is_gsd_char(c: char) -> bool {
     (' '..='~').contains(&c) && c != '"'
+}
+
+/// Control characters (C0, DEL, C1), the line and paragraph separators,
+/// the bidirectional formatting characters (which reorder what a reader
+/// sees: a name could read differently from what the compiler sees) and the
+/// Unicode noncharacters.
+fn is_unsafe_char(c: char) -> bool {
+    let code = u32::from(c);
+    c.is_control()
+        || matches!(
+            c,
+            '\u{2028}' | '\u{2029}' | '\u{061C}' | '\u{200E}' | '\u{200F}'
+        )
+        || ('\u{202A}'..='\u{202E}').contains(&c)
+        || ('\u{2066}'..='\u{2069}').contains(&c)
+        || (0xFDD0..=0xFDEF).contains(&code)
+        || code & 0xFFFE == 0xFFFE
+}
+
+/// A character as a message shows it: itself in backticks when it prints,
+/// its code point when it does not.
+fn char_name(c: char) -> String {
+    if is_unsafe_char(c) || c.is_whitespace() && c != ' ' {
+        format!("U+{:04X}", u32::from(c))
+    } else {
+        format!("`{c}`")
+    }
 }

@@ -174,8 +174,12 @@ fn build_set(
         Some(p) => Some(parameter_base(cx, p, numbering, last - first)?),
         None => None,
     };
-    let name = cx.text(parts.name, None, "mapping name");
-    check_rendered_name(cx, parts.name, &name, last);
+    let what = match kind {
+        MappingKind::Setting => "setting name",
+        _ => "mapping name",
+    };
+    let name = cx.text(parts.name, None, what);
+    check_rendered_name(cx, parts.name, &name, last, what);
     let entries = (first..=last)
         .zip(defaults)
         .map(|(number, (default, _))| MappingEntry {
@@ -331,21 +335,30 @@ fn parameter_base(
     )
 }
 
-/// The longest name is the last entry's: check that one for the GSD.
-fn check_rendered_name(cx: &mut Checker, raw_name: &Spanned<raw::Text>, name: &Text, last: u8) {
+/// The longest name is the last entry's: check that one for the GSD, in
+/// the form the GSD shows.
+fn check_rendered_name(
+    cx: &mut Checker,
+    raw_name: &Spanned<raw::Text>,
+    name: &Text,
+    last: u8,
+    what: &str,
+) {
     if name.en.trim().is_empty() {
         return; // already reported as empty
     }
-    let span = raw_name.get_ref().en_span(&raw_name.span());
-    cx.check_gsd_text(&render(name, last).en, span, GSD_NAME_LEN, "mapping name");
+    let raw = raw_name.get_ref();
+    let span = raw
+        .gsd
+        .as_ref()
+        .map_or_else(|| raw.en_span(&raw_name.span()), Spanned::span);
+    let rendered = render(name, last);
+    cx.check_gsd_text(rendered.for_gsd(), span, GSD_NAME_LEN, what);
 }
 
 fn render(name: &Text, number: u8) -> Text {
     let n = number.to_string();
-    Text {
-        en: name.en.replace("{n}", &n),
-        zh: name.zh.as_ref().map(|z| z.replace("{n}", &n)),
-    }
+    name.map(|text| text.replace("{n}", &n))
 }
 
 #[cfg(test)]

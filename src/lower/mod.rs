@@ -45,6 +45,7 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .profinet
         .as_ref()
         .map(|p| profinet::lower(&mut cx, p, &desc.device, (&device, &telegram, &mappings)));
+    let languages = cx.languages();
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);
@@ -56,6 +57,7 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         numbering,
         telegram,
         mappings,
+        languages,
         profibus: profibus.flatten(),
         profinet: profinet.flatten(),
     };

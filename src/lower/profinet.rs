@@ -85,7 +85,7 @@ fn port(number: u8) -> Port {
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
         text: TextRef::new(
             format!("IDT_PORT_{number}"),
-            Text::english(format!("Port {number}")),
+            Text::en_zh(format!("Port {number}"), format!("端口 {number}")),
         ),
     }
 }

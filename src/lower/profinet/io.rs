@@ -27,14 +27,8 @@ pub fn module(
         kind,
         id: format!("IDM_{tag}"),
         submodule_id: format!("IDS_{tag}"),
-        name: TextRef::new(
-            format!("IDT_MODULE_{tag}"),
-            Text::english(name(kind, layout)),
-        ),
-        info: TextRef::new(
-            format!("IDT_MODULE_INFO_{tag}"),
-            Text::english(description(kind, layout)),
-        ),
+        name: TextRef::new(format!("IDT_MODULE_{tag}"), name(kind, layout)),
+        info: TextRef::new(format!("IDT_MODULE_INFO_{tag}"), description(kind, layout)),
         ident_number: ident_number(kind, layout),
         layout,
         ident: code_name(kind, layout),
@@ -60,11 +54,11 @@ fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
     }
 }
 
-fn name(kind: ModuleKind, layout: Layout) -> String {
+fn name(kind: ModuleKind, layout: Layout) -> Text {
     match kind {
-        ModuleKind::StandardTelegram1 => "Standard telegram 1".into(),
-        ModuleKind::Pzd if layout.pkw => format!("PKW + {} PZD", layout.pzd_words),
-        ModuleKind::Pzd => format!("{} PZD", layout.pzd_words),
+        ModuleKind::StandardTelegram1 => Text::en_zh("Standard telegram 1", "标准报文 1"),
+        ModuleKind::Pzd if layout.pkw => Text::english(format!("PKW + {} PZD", layout.pzd_words)),
+        ModuleKind::Pzd => Text::english(format!("{} PZD", layout.pzd_words)),
     }
 }
 
@@ -78,46 +72,60 @@ fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
     }
 }
 
-fn description(kind: ModuleKind, layout: Layout) -> String {
+/// What a module carries, in gsdc's words (English and gsdc's Chinese).
+fn description(kind: ModuleKind, layout: Layout) -> Text {
     let bytes = layout.bytes();
     match kind {
-        ModuleKind::StandardTelegram1 => {
-            format!("Standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way")
-        }
+        ModuleKind::StandardTelegram1 => Text::en_zh(
+            format!("Standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way"),
+            format!("标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节"),
+        ),
         ModuleKind::Pzd => {
-            let pkw = match layout.pkw_words() {
-                0 => String::new(),
-                n => format!("PKW channel ({n} words) and "),
+            let (pkw, pkw_zh) = match layout.pkw_words() {
+                0 => (String::new(), String::new()),
+                n => (format!("PKW channel ({n} words) and "), format!("PKW 通道（{n} 个字）和 ")),
             };
-            let words = match layout.pzd_words {
-                1 => "1 PZD word".to_string(),
-                n => format!("{n} PZD words"),
-            };
-            format!("{pkw}{words}; {bytes} bytes each way")
+            let n = layout.pzd_words;
+            let words = if n == 1 { "1 PZD word".to_string() } else { format!("{n} PZD words") };
+            Text::en_zh(
+                format!("{pkw}{words}; {bytes} bytes each way"),
+                format!("{pkw_zh}{n} 个 PZD 字；每个方向 {bytes} 字节"),
+            )
         }
     }
 }
 
-fn plain(tag: &str, text: &str) -> DataItem {
+fn plain(tag: &str, text: Text) -> DataItem {
     DataItem {
-        text: TextRef::new(format!("IDT_{tag}"), Text::english(text)),
+        text: TextRef::new(format!("IDT_{tag}"), text),
         bits: Vec::new(),
     }
 }
 
-/// Standard telegram 1's two words.
+/// Standard telegram 1's two words, with PROFIdrive's names.
 fn standard_telegram_1(direction: Direction) -> Vec<DataItem> {
     let words = match direction {
         Direction::In => [
-            ("ZSW1", "ZSW1 (status word 1)"),
-            ("NIST_A", "NIST_A (speed actual value)"),
+            ("ZSW1", "ZSW1 (status word 1)", "ZSW1（状态字 1）"),
+            (
+                "NIST_A",
+                "NIST_A (speed actual value)",
+                "NIST_A（速度实际值）",
+            ),
         ],
         Direction::Out => [
-            ("STW1", "STW1 (control word 1)"),
-            ("NSOLL_A", "NSOLL_A (speed setpoint)"),
+            ("STW1", "STW1 (control word 1)", "STW1（控制字 1）"),
+            (
+                "NSOLL_A",
+                "NSOLL_A (speed setpoint)",
+                "NSOLL_A（速度设定值）",
+            ),
         ],
     };
-    words.iter().map(|(tag, text)| plain(tag, text)).collect()
+    words
+        .iter()
+        .map(|(tag, en, zh)| plain(tag, Text::en_zh(*en, *zh)))
+        .collect()
 }
 
 /// The module's words one way, in telegram order: the PKW channel, then
@@ -130,7 +138,7 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
     };
     let pkw = pkw
         .iter()
-        .map(|(tag, text)| plain(&format!("PKW_{tag}"), text));
+        .map(|(tag, en, zh)| plain(&format!("PKW_{tag}"), Text::en_zh(*en, *zh)));
     let word = telegram.word(direction);
     let tag = match direction {
         Direction::Out => "CONTROL",
@@ -145,26 +153,28 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
                 .flat_map(|field| bit_items(tag, field))
                 .collect(),
         },
-        _ => plain(&format!("PZD_{n}"), &format!("PZD{n}")),
+        _ => plain(&format!("PZD_{n}"), Text::english(format!("PZD{n}"))),
     });
     pkw.chain(pzd).collect()
 }
 
-/// The PKW channel's words, the same both ways: TextId tag and text.
-fn pkw_words(kind: PkwKind) -> &'static [(&'static str, &'static str)] {
+/// The PKW channel's words, the same both ways: TextId tag, English and
+/// Chinese (MD810's manual writes `PWE 高 16 位`, `低 16 位`).
+type WordName = (&'static str, &'static str, &'static str);
+fn pkw_words(kind: PkwKind) -> &'static [WordName] {
     match kind {
         PkwKind::None => &[],
         PkwKind::PkeIndPwe => &[
-            ("PKE", "PKE"),
-            ("IND", "IND"),
-            ("PWE_HIGH", "PWE high"),
-            ("PWE_LOW", "PWE low"),
+            ("PKE", "PKE", "PKE"),
+            ("IND", "IND", "IND"),
+            ("PWE_HIGH", "PWE high", "PWE 高 16 位"),
+            ("PWE_LOW", "PWE low", "PWE 低 16 位"),
         ],
         PkwKind::StationCommandAddressValue => &[
-            ("STATION", "Station"),
-            ("COMMAND", "Command"),
-            ("ADDRESS", "Address"),
-            ("VALUE", "Value"),
+            ("STATION", "Station", "站号"),
+            ("COMMAND", "Command", "命令"),
+            ("ADDRESS", "Address", "地址"),
+            ("VALUE", "Value", "数值"),
         ],
     }
 }
@@ -182,26 +192,39 @@ fn bit_items<'a>(tag: &'a str, field: &'a BitField) -> impl Iterator<Item = BitI
 /// A bit's name: the field's, with the bit's place in a field of several
 /// bits, and the field's values when it has them, since a BitDataItem has
 /// nothing else to show them with: "Control mode bit 0 (0 = Keypad, ...)".
+/// In every language the field or its values have.
 fn bit_text(field: &BitField, index: Option<u8>) -> Text {
     let choices = field.values.as_ref().map_or(&[][..], |v| &v.choices[..]);
-    let label = |chinese: bool| {
-        let mut text = field.name.pick(chinese).to_string();
+    let label = |language: &str| {
+        let mut text = field.name.get(language).to_string();
         if let Some(index) = index {
             text.push_str(&format!(" bit {index}"));
         }
         if !choices.is_empty() {
             let values: Vec<String> = choices
                 .iter()
-                .map(|c| format!("{} = {}", c.value, c.text.pick(chinese)))
+                .map(|c| format!("{} = {}", c.value, c.text.get(language)))
                 .collect();
             text.push_str(&format!(" ({})", values.join(", ")));
         }
         text
     };
-    let translated = field.name.zh.is_some() || choices.iter().any(|c| c.text.zh.is_some());
+    let mut languages: Vec<&str> = field
+        .name
+        .others
+        .iter()
+        .chain(choices.iter().flat_map(|c| &c.text.others))
+        .map(|(code, _)| code.as_str())
+        .collect();
+    languages.sort_unstable();
+    languages.dedup();
     Text {
-        en: label(false),
-        zh: translated.then(|| label(true)),
+        en: label("en"),
+        others: languages
+            .into_iter()
+            .map(|code| (code.to_string(), label(code)))
+            .collect(),
+        gsd: None,
     }
 }
 
@@ -228,10 +251,7 @@ mod tests {
         let field = BitField {
             first: 9,
             last: 10,
-            name: Text {
-                en: "Control mode".into(),
-                zh: Some("控制方式".into()),
-            },
+            name: Text::en_zh("Control mode", "控制方式"),
             ident: Ident::of(&["control", "mode"]),
             values: Some(ValueSet {
                 ident: Ident::of(&["control", "mode"]),
@@ -244,6 +264,6 @@ mod tests {
         };
         let text = bit_text(&field, Some(1));
         assert_eq!(text.en, "Control mode bit 1 (0 = Keypad)");
-        assert_eq!(text.zh.as_deref(), Some("控制方式 bit 1 (0 = Keypad)"));
+        assert_eq!(text.get("zh"), "控制方式 bit 1 (0 = Keypad)");
     }
 }

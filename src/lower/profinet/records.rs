@@ -74,10 +74,7 @@ pub fn records(mappings: &Mappings, indexes: &[(MappingKind, u16)]) -> Vec<Param
             Some(ParameterRecord {
                 kind,
                 index,
-                name: TextRef::new(
-                    format!("IDT_RECORD_{index}"),
-                    Text::english(record_name(kind)),
-                ),
+                name: TextRef::new(format!("IDT_RECORD_{index}"), record_name(kind)),
                 // Entries per kind are bounded by lowering (at most 256 a set).
                 length: u16::try_from(2 * refs.len()).unwrap_or(u16::MAX),
                 refs,
@@ -86,13 +83,21 @@ pub fn records(mappings: &Mappings, indexes: &[(MappingKind, u16)]) -> Vec<Param
         .collect()
 }
 
-fn record_name(kind: MappingKind) -> &'static str {
-    match kind {
-        MappingKind::PzdOut => "PZD output mapping (controller to drive)",
-        MappingKind::PzdIn => "PZD input mapping (drive to controller)",
-        MappingKind::Dpv1Index => "Record index mapping",
-        MappingKind::Setting => "Drive settings",
-    }
+/// gsdc's name of a record, in English and gsdc's Chinese.
+fn record_name(kind: MappingKind) -> Text {
+    let (en, zh) = match kind {
+        MappingKind::PzdOut => (
+            "PZD output mapping (controller to drive)",
+            "PZD 输出映射（控制器到驱动器）",
+        ),
+        MappingKind::PzdIn => (
+            "PZD input mapping (drive to controller)",
+            "PZD 输入映射（驱动器到控制器）",
+        ),
+        MappingKind::Dpv1Index => ("Record index mapping", "记录索引映射"),
+        MappingKind::Setting => ("Drive settings", "驱动器设置"),
+    };
+    Text::en_zh(en, zh)
 }
 
 /// One ValueItem per set of choices a module's record refers to, in the
