@@ -75,25 +75,44 @@ impl Checker {
     /// A string that goes into the GSD: not empty, 7-bit printable ASCII
     /// without `"`, at most `limit` characters.
     pub fn gsd_string(&mut self, s: &Spanned<String>, limit: usize, what: &str) -> String {
-        self.check_gsd_text(s.get_ref(), s.span(), limit, what);
+        self.check_gsd(s.get_ref(), s.span(), limit, what, GsdForm::Only);
         s.get_ref().clone()
     }
 
+    /// What goes into the GSD of a text, which may have a short form beside it.
     pub fn check_gsd_text(&mut self, s: &str, span: Range<usize>, limit: usize, what: &str) {
+        self.check_gsd(s, span, limit, what, GsdForm::OfText);
+    }
+
+    fn check_gsd(&mut self, s: &str, span: Range<usize>, limit: usize, what: &str, form: GsdForm) {
         self.non_empty(s, span.clone(), what);
         if !self.for_gsd {
             return;
         }
         if let Some(bad) = s.chars().find(|c| !is_gsd_char(*c)) {
+            let help = match form {
+                GsdForm::Only => "GSD strings are 7-bit ASCII without `\"`",
+                GsdForm::OfText => "GSD strings are 7-bit ASCII without `\"`: give the GSD an ASCII form with `gsd = \"...\"`, and other languages by their code (`zh = \"...\"`)",
+            };
             self.push(
-                Diagnostic::error("E102", format!("{what} has {}, which a GSD file cannot hold", char_name(bad)))
-                    .at(span.clone())
-                    .label("not 7-bit printable ASCII, or a quote")
-                    .help("GSD strings are 7-bit ASCII without `\"`; give the GSD an ASCII form with `gsd = \"...\"`, and other languages by their code (`zh = \"...\"`)"),
+                Diagnostic::error(
+                    "E102",
+                    format!(
+                        "{what} has {}, which a GSD file cannot hold",
+                        char_name(bad)
+                    ),
+                )
+                .at(span.clone())
+                .label("not 7-bit printable ASCII, or a quote")
+                .help(help),
             );
         }
         let len = s.chars().count();
         if len > limit {
+            let help = match form {
+                GsdForm::Only => format!("shorten it to at most {limit} characters"),
+                GsdForm::OfText => format!("shorten it to at most {limit} characters, or keep it and give the GSD a short form: `gsd = \"...\"`"),
+            };
             self.push(
                 Diagnostic::error(
                     "E103",
@@ -101,7 +120,7 @@ impl Checker {
                 )
                 .at(span)
                 .label(format!("{} characters too long", len - limit))
-                .help(format!("shorten it to at most {limit} characters, or keep it and give the GSD a short form: `gsd = \"...\"`")),
+                .help(help),
             );
         }
     }
@@ -183,6 +202,14 @@ impl Checker {
                 .help("remove one of them"),
         );
     }
+}
+
+/// Whether a string that goes into the GSD can have a short form (`gsd`)
+/// beside it: texts can, plain strings (vendor, model) cannot.
+#[derive(Clone, Copy)]
+enum GsdForm {
+    Only,
+    OfText,
 }
 
 pub fn is_gsd_char(c: char) -> bool {
