@@ -391,18 +391,37 @@ fn e301_root_must_be_iso15745profile_in_the_gsdml_namespace() {
 }
 
 #[test]
-fn e302_schema_version_must_be_readable() {
+fn w303_schema_version_unknown() {
     let text = edit("GSDML-DeviceProfile-V2.43.xsd", "GSDML-DeviceProfile.xsd");
     let found = findings(&text);
     assert_eq!(found.len(), 1);
-    assert_eq!(found[0].0, "E302");
+    assert_eq!(found[0].0, "W303");
     assert!(found[0].1.ends_with("GSDML-DeviceProfile.xsd"));
+    // The file name's version applies then: a V2.25 file may lack PNIO_Version ...
+    let old = edit_text(&text, " PNIO_Version=\"V2.43\"", "");
+    let v2_25 = "GSDML-V2.25-Acme-Drive-20240101.xml";
+    assert_eq!(findings_named(&old, v2_25)[0].0, "W303");
+    assert_eq!(findings_named(&old, v2_25).len(), 1);
+    // ... and without a version anywhere, the newest applies.
+    assert_eq!(
+        check(&old, None).iter().map(|d| d.code).collect::<Vec<_>>(),
+        ["W303", "E319"]
+    );
 }
 
 #[test]
-fn e303_profile_header_is_fixed() {
+fn e303_profile_header_elements_are_required() {
+    let text = edit("<ProfileTechnology>GSDML</ProfileTechnology>", "");
+    assert_eq!(findings(&text), [("E303", "ProfileHeader")]);
+    let text = edit("<ProfileHeader>", "<ProfileHeaderX>");
+    let text = edit_text(&text, "</ProfileHeader>", "</ProfileHeaderX>");
+    assert_eq!(findings(&text), [("E303", "ISO15745Profile")]);
+}
+
+#[test]
+fn w304_profile_header_text_is_the_templates() {
     let text = edit("<ProfileTechnology>GSDML<", "<ProfileTechnology>GSD<");
-    assert_eq!(findings(&text), [("E303", "ProfileTechnology")]);
+    assert_eq!(findings(&text), [("W304", "ProfileTechnology")]);
 }
 
 #[test]
