@@ -27,6 +27,7 @@ fn findings_of_real_files() {
     let files = [
         ("gsd", "mbuesch__dummy_compact.gsd"),
         ("gsd", "ivangre4__SI028131.GSD"),
+        ("gsd", "ivangre4__siem8037.gsd"),
         ("gsd", "siamect__abb_acs880_pb_slave.gsd"),
         ("gsd", "joao404__STM32F1002A.gsd"),
         ("gsdml", "GSDML-V2.33-ABB-FENA-20170914.xml"),

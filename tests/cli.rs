@@ -197,11 +197,11 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
     assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
 
-    // A compact station with three modules (the corpus lists it as a known finding).
-    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_compact.gsd"]);
+    // Max_Input_Len = 249, beyond 244 (the corpus lists it as a known finding).
+    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_modular.gsd"]);
     assert_eq!(broken.status.code(), Some(1));
     assert!(
-        stdout(&broken).contains("error[E217]"),
+        stdout(&broken).contains("error[E208]"),
         "{}",
         stdout(&broken)
     );
@@ -235,7 +235,7 @@ fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
 fn check_json_lines_have_the_documented_fields_in_argument_order() {
     let files = [
         "../shared/corpus/gsdml-invalid/neg_missing_textid.xml",
-        "../shared/corpus/gsd/mbuesch__dummy_compact.gsd",
+        "../shared/corpus/gsd/mbuesch__dummy_modular.gsd",
         "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml",
     ];
     let mut args = vec!["check", "--format", "json"];
@@ -274,7 +274,8 @@ fn check_json_lines_have_the_documented_fields_in_argument_order() {
     assert!(
         lines
             .iter()
-            .any(|l| l.contains("\"code\":\"E217\"") && l.contains("\"subject\":\"Module\"")),
+            .any(|l| l.contains("\"code\":\"E208\"")
+                && l.contains("\"subject\":\"Max_Input_Len\"")),
         "{lines:#?}"
     );
     assert!(

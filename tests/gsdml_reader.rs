@@ -10,6 +10,9 @@ use gsdc::Diagnostic;
 #[path = "common/xsd.rs"]
 mod xsd;
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
 
 // ---------------------------------------------------------------------------
@@ -43,9 +46,12 @@ fn corpus(folder: &str) -> Vec<(String, String)> {
 /// breaks an error rule of its own version; the warnings are explained in
 /// docs/rules.md, "Known findings in the corpus".
 const KNOWN_FINDINGS: &[(&str, &str, usize)] = &[
-    ("GSDML-V2.25-LEUZE-BCL348i-20120814.xml", "W302", 1),
-    ("GSDML-V2.3-LEUZE-BCL648i-20150128.xml", "W302", 1),
-    ("GSDML-V2.31-LEUZE-BCL348i-20150923.xml", "W302", 1),
+    // Input and output: 79 slots, each with its data and status bytes.
+    ("GSDML-V2.25-LEUZE-BCL348i-20120814.xml", "W302", 2),
+    ("GSDML-V2.3-LEUZE-BCL648i-20150128.xml", "W302", 2),
+    ("GSDML-V2.31-LEUZE-BCL348i-20150923.xml", "W302", 2),
+    // Input of DAP V3 and V4: 38 data bytes and 7 or 8 status bytes, 44 allowed.
+    ("GSDML-V2.33-ABB-FENA-20170914.xml", "W302", 2),
     ("GSDML-V2.33-rt-labs-IODevice-20191008.xml", "W301", 1),
     (
         "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
@@ -59,7 +65,7 @@ const KNOWN_FINDINGS: &[(&str, &str, usize)] = &[
         "W301",
         1,
     ),
-    ("GSDML-V2.41-LEUZE-BCL248i-20211213.xml", "W302", 1),
+    ("GSDML-V2.41-LEUZE-BCL248i-20211213.xml", "W302", 2),
     (
         "GSDML-V2.43-RT-Labs-P-Net-Sample-App-20230117.xml",
         "W301",
@@ -124,6 +130,60 @@ fn largest_corpus_file_checks_quickly() {
         "{name} took {:?}",
         start.elapsed()
     );
+}
+
+// ---------------------------------------------------------------------------
+// gsdc's own output, read the way the checker reads third-party files
+
+/// The GSDML files gsdc writes for the shipped descriptions: (name, text).
+fn generated_gsdml() -> Vec<(String, String)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions");
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".toml"))
+        .collect();
+    names.sort();
+    let artifacts = names
+        .iter()
+        .flat_map(|name| gsdc::compile(&descriptions::load(name)).unwrap());
+    artifacts
+        .filter(|a| a.file_name.ends_with(".xml"))
+        .map(|a| (a.file_name, String::from_utf8(a.contents).unwrap()))
+        .collect()
+}
+
+/// One reading of IOConfigData on both sides: the MaxInputLength and
+/// MaxOutputLength gsdc writes are exactly what the checker needs for the
+/// largest module, status bytes included. One byte less and the checker
+/// finds a module that never fits (E310). Should the emitter stop counting
+/// IOPS/IOCS, or the checker, or either count something the other does
+/// not, one of the two assertions fails.
+#[test]
+fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
+    let files = generated_gsdml();
+    assert!(files.len() >= 2, "the shipped PROFINET descriptions");
+    for (name, text) in &files {
+        let io_findings = |text: &str| -> Vec<&'static str> {
+            check(text, Some(name))
+                .iter()
+                .map(|d| d.code)
+                .filter(|c| matches!(*c, "E310" | "W302"))
+                .collect()
+        };
+        assert_eq!(io_findings(text), Vec::<&str>::new(), "{name}");
+        for attribute in ["MaxInputLength", "MaxOutputLength"] {
+            let at = text.find(&format!("{attribute}=\"")).unwrap() + attribute.len() + 2;
+            let digits = &text[at..at + text[at..].find('"').unwrap()];
+            let value: u32 = digits.parse().unwrap();
+            let lowered = format!("{}{}{}", &text[..at], value - 1, &text[at + digits.len()..]);
+            let found = io_findings(&lowered);
+            assert!(
+                !found.is_empty() && found.iter().all(|c| *c == "E310"),
+                "{name}: {attribute} {value} - 1: {found:?}"
+            );
+        }
+    }
 }
 
 /// Each broken copy of the p-net sample with the errors it deserves, in
@@ -391,18 +451,37 @@ fn e301_root_must_be_iso15745profile_in_the_gsdml_namespace() {
 }
 
 #[test]
-fn e302_schema_version_must_be_readable() {
+fn w303_schema_version_unknown() {
     let text = edit("GSDML-DeviceProfile-V2.43.xsd", "GSDML-DeviceProfile.xsd");
     let found = findings(&text);
     assert_eq!(found.len(), 1);
-    assert_eq!(found[0].0, "E302");
+    assert_eq!(found[0].0, "W303");
     assert!(found[0].1.ends_with("GSDML-DeviceProfile.xsd"));
+    // The file name's version applies then: a V2.25 file may lack PNIO_Version ...
+    let old = edit_text(&text, " PNIO_Version=\"V2.43\"", "");
+    let v2_25 = "GSDML-V2.25-Acme-Drive-20240101.xml";
+    assert_eq!(findings_named(&old, v2_25)[0].0, "W303");
+    assert_eq!(findings_named(&old, v2_25).len(), 1);
+    // ... and without a version anywhere, the newest applies.
+    assert_eq!(
+        check(&old, None).iter().map(|d| d.code).collect::<Vec<_>>(),
+        ["W303", "E319"]
+    );
 }
 
 #[test]
-fn e303_profile_header_is_fixed() {
+fn e303_profile_header_elements_are_required() {
+    let text = edit("<ProfileTechnology>GSDML</ProfileTechnology>", "");
+    assert_eq!(findings(&text), [("E303", "ProfileHeader")]);
+    let text = edit("<ProfileHeader>", "<ProfileHeaderX>");
+    let text = edit_text(&text, "</ProfileHeader>", "</ProfileHeaderX>");
+    assert_eq!(findings(&text), [("E303", "ISO15745Profile")]);
+}
+
+#[test]
+fn w304_profile_header_text_is_the_templates() {
     let text = edit("<ProfileTechnology>GSDML<", "<ProfileTechnology>GSD<");
-    assert_eq!(findings(&text), [("E303", "ProfileTechnology")]);
+    assert_eq!(findings(&text), [("W304", "ProfileTechnology")]);
 }
 
 #[test]
@@ -518,6 +597,27 @@ fn e310_a_module_that_never_fits() {
     assert_eq!(findings(&text), [("E310", "ModuleItemRef")]);
 }
 
+/// MaxInputLength counts status bytes: the DAP's submodule, interface and
+/// port have an IOPS each in the input CR (3), the module its 4 data bytes,
+/// its IOPS and the IOCS of its output (6): 9 in all, 4 of them data.
+#[test]
+fn e310_counts_iops_and_iocs() {
+    let text = edit("MaxInputLength=\"32\"", "MaxInputLength=\"9\"");
+    assert_eq!(findings(&text), []);
+    let text = edit("MaxInputLength=\"32\"", "MaxInputLength=\"8\"");
+    assert_eq!(findings(&text), [("E310", "ModuleItemRef")]);
+    let message = &check(&text, Some(NAME)).0[0].message;
+    assert!(message.contains("needs 9 input bytes"), "{message}");
+    // An input-only module: its IOPS in the input CR, its IOCS in the output CR.
+    let input_only = edit_text(
+        &edit("<Output Consistency=\"All items consistency\">\n                  <DataItem DataType=\"Unsigned16\" TextId=\"T_WORD\"/>\n                  <DataItem DataType=\"Unsigned16\" TextId=\"T_WORD\"/>\n                </Output>", ""),
+        "MaxOutputLength=\"32\"",
+        "MaxOutputLength=\"3\"",
+    );
+    let message = &check(&input_only, Some(NAME)).0[0].message;
+    assert!(message.contains("needs 4 output bytes"), "{message}");
+}
+
 #[test]
 fn e310_the_fixed_configuration_does_not_fit() {
     let text = edit(
@@ -532,8 +632,11 @@ fn e310_the_fixed_configuration_does_not_fit() {
 fn w302_the_largest_configuration_does_not_fit() {
     let text = edit("PhysicalSlots=\"0..1\"", "PhysicalSlots=\"0..3\"");
     let text = edit_text(&text, "AllowedInSlots=\"1\"", "AllowedInSlots=\"1..3\"");
-    let text = edit_text(&text, "MaxInputLength=\"32\"", "MaxInputLength=\"8\"");
-    assert_eq!(findings(&text), [("W302", "8")]);
+    // Each module with the DAP: 9 input bytes; all three: 3 + 3 * 6 = 21.
+    let text = edit_text(&text, "MaxInputLength=\"32\"", "MaxInputLength=\"12\"");
+    assert_eq!(findings(&text), [("W302", "12")]);
+    let message = &check(&text, Some(NAME)).0[0].message;
+    assert!(message.contains("needs 21 input bytes"), "{message}");
 }
 
 #[test]

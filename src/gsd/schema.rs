@@ -62,6 +62,9 @@ pub struct KeywordSpec {
     pub kind: Kind,
     pub min: Option<i64>,
     pub max: Option<i64>,
+    /// Numbers from here up to `min` break the specification's range, yet
+    /// engineering tools accept them: a warning (W234), not an error.
+    pub tolerated_min: Option<i64>,
     pub max_len: Option<usize>,
     #[serde(default)]
     pub mandatory: bool,
@@ -313,7 +316,6 @@ mod tests {
         assert_eq!(
             names,
             [
-                "GSD_Revision",
                 "Hardware_Release",
                 "Ident_Number",
                 "Max_Diag_Data_Len",
@@ -327,6 +329,21 @@ mod tests {
                 "Vendor_Name",
             ]
         );
+    }
+
+    /// GSD_Revision is the one keyword a revision-0 file lacks by
+    /// definition; no source dates any other keyword to revision 1, so
+    /// nothing a revision-0 file may hold is dated after it by a guess.
+    #[test]
+    fn only_gsd_revision_is_dated_revision_1() {
+        let mut dated_1: Vec<&str> = schema()
+            .keywords()
+            .filter(|k| k.spec.revision == 1)
+            .map(|k| k.name.as_str())
+            .collect();
+        dated_1.sort_unstable();
+        assert_eq!(dated_1, ["GSD_Revision"]);
+        assert!(!schema().lookup("gsd_revision").unwrap().spec.mandatory);
     }
 
     #[test]

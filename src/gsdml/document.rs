@@ -1,6 +1,6 @@
 //! What makes a file a GSDML file of a given version: the root element
-//! (E301), the schema version of `xsi:schemaLocation` (E302), the ISO 15745
-//! profile header (E303) and the file name (E304, E305).
+//! (E301), the schema version of `xsi:schemaLocation` (W303), the ISO 15745
+//! profile header (E303, W304) and the file name (E304, E305).
 
 use roxmltree::Document;
 
@@ -23,12 +23,15 @@ pub fn check(
         out.push(not_gsdml(&root));
         return None;
     }
-    let declared = schema_version(&root, out);
-    profile_header(&root, out);
-    if let Some(name) = file_name {
-        check_file_name(name, declared, &root, out);
+    let location = root.attribute((XSI, "schemaLocation"));
+    let declared = location.and_then(from_schema_location);
+    let named = file_name.and_then(|name| check_file_name(name, declared, &root, out));
+    let version = declared.or(named).unwrap_or(Version::LATEST);
+    if declared.is_none() {
+        out.push(unknown_version(&root, location.is_some(), version));
     }
-    Some(declared.unwrap_or(Version::LATEST))
+    profile_header(&root, out);
+    Some(version)
 }
 
 fn not_gsdml(root: &El<'_, '_>) -> Diagnostic {
@@ -47,35 +50,31 @@ fn not_gsdml(root: &El<'_, '_>) -> Diagnostic {
     ))
 }
 
-fn schema_version(root: &El<'_, '_>, out: &mut Vec<Diagnostic>) -> Option<Version> {
-    let location = root.attribute((XSI, "schemaLocation"));
-    let version = location.and_then(from_schema_location);
-    if version.is_none() {
-        let what = if location.is_some() {
-            "xsi:schemaLocation does not name a GSDML-DeviceProfile-V<x.yy>.xsd schema"
-        } else {
-            "the root element has no xsi:schemaLocation"
-        };
-        let span = value_span(root, (XSI, "schemaLocation"));
-        out.push(
-            Diagnostic::error(
-                "E302",
-                format!("cannot tell the GSDML schema version: {what}"),
-            )
-            .at(span)
-            .label("schema version unknown")
-            .help(format!(
-                "write xsi:schemaLocation=\"{NAMESPACE} ..\\xsd\\GSDML-DeviceProfile-V2.32.xsd\"; \
-                     until then the file is checked against {}",
-                Version::LATEST
-            )),
-        );
-    }
-    version
+/// W303: the file does not say its schema version. The PI schema does not
+/// require `xsi:schemaLocation` (a hint to validators, XML Schema part 1,
+/// 4.3.2) and nothing a tool configures depends on it, so it is a warning;
+/// the rules then apply the version of the file name, else the newest.
+fn unknown_version(root: &El<'_, '_>, has_location: bool, applied: Version) -> Diagnostic {
+    let what = if has_location {
+        "xsi:schemaLocation does not name a GSDML-DeviceProfile-V<x.yy>.xsd schema"
+    } else {
+        "the root element has no xsi:schemaLocation"
+    };
+    Diagnostic::warning(
+        "W303",
+        format!("cannot tell the GSDML schema version: {what}"),
+    )
+    .at(value_span(root, (XSI, "schemaLocation")))
+    .label("schema version unknown")
+    .help(format!(
+        "write xsi:schemaLocation=\"{NAMESPACE} ..\\xsd\\GSDML-DeviceProfile-V2.32.xsd\"; \
+         until then the file is checked against {applied}"
+    ))
 }
 
 /// The ISO 15745 header is fixed text ("Please do not change the content",
-/// as PI's template says); tools identify GSDML files by it.
+/// as PI's template says). The PI schema requires these elements (E303)
+/// but not their text: other text is W304.
 const HEADER: &[(&[&str], &str)] = &[
     (&["ProfileIdentification"], "PROFINET Device Profile"),
     (&["ProfileClassID"], "Device"),
@@ -89,7 +88,7 @@ fn profile_header(root: &El<'_, '_>, out: &mut Vec<Diagnostic>) {
             Diagnostic::error("E303", "the ProfileHeader is missing")
                 .at(tag_span(root))
                 .label("no ProfileHeader in here")
-                .help("copy the ProfileHeader of PI's GSDML template; its content is fixed"),
+                .help("the PI schema requires it; copy the ProfileHeader of PI's GSDML template"),
         );
         return;
     };
@@ -106,27 +105,29 @@ fn profile_header(root: &El<'_, '_>, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let element = path[path.len() - 1];
-        let (message, node) = match (&text, found) {
-            (Some(text), Some(node)) => {
-                (format!("{element} is \"{text}\", not \"{expected}\""), node)
-            }
-            _ => (format!("the ProfileHeader lacks {element}"), header),
+        let diagnostic = match (&text, found) {
+            (Some(text), Some(node)) => Diagnostic::warning(
+                "W304",
+                format!("{element} is \"{text}\", not \"{expected}\""),
+            )
+            .at(tag_span(&node))
+            .help("PI's template fixes this text and the schema accepts any; copy it from the template"),
+            _ => Diagnostic::error("E303", format!("the ProfileHeader lacks {element}"))
+                .at(tag_span(&header))
+                .help("the PI schema requires it; copy the ProfileHeader from PI's template"),
         };
-        out.push(
-            Diagnostic::error("E303", message)
-                .at(tag_span(&node))
-                .label(format!("expected \"{expected}\""))
-                .help("the ProfileHeader's content is fixed by the GSDML specification; copy it from PI's template"),
-        );
+        out.push(diagnostic.label(format!("expected \"{expected}\"")));
     }
 }
 
+/// E304 and E305; the version the name gives, when it follows the
+/// convention.
 fn check_file_name(
     name: &str,
     declared: Option<Version>,
     root: &El<'_, '_>,
     out: &mut Vec<Diagnostic>,
-) {
+) -> Option<Version> {
     let parsed = match parse_file_name(name) {
         Ok(parsed) => parsed,
         Err(why) => {
@@ -134,11 +135,12 @@ fn check_file_name(
                 Diagnostic::error("E304", format!("the file name \"{name}\" breaks the GSDML naming convention: {why}"))
                     .help("name it GSDML-V<x.yy>-<Vendor>-<Family>-<yyyymmdd>[-hhmmss].xml, e.g. GSDML-V2.32-Vendor-Drive-20240101.xml"),
             );
-            return;
+            return None;
         }
     };
+    let named = Some(parsed.version);
     let Some(declared) = declared.filter(|v| *v != parsed.version) else {
-        return;
+        return named;
     };
     out.push(
         Diagnostic::error(
@@ -158,4 +160,5 @@ fn check_file_name(
             parsed.version
         )),
     );
+    named
 }

@@ -2,18 +2,22 @@
 //! of each DAP against its IOConfigData (E310, W302), and the PROFINET
 //! frame limit of 1440 bytes (E311).
 //!
-//! Lengths are application data bytes; the IOPS/IOCS status bytes are not
-//! counted. Whether MaxInputLength includes them the corpus does not settle
-//! (ABB FENA's DAPs fit with data alone, not with a status byte per
-//! submodule added), so gsdc takes the lenient reading and never rejects a
-//! file that fits with data alone.
+//! MaxInputLength and MaxOutputLength bound what the input and the output
+//! CR carry: the IO data and the status bytes, an IOPS and an IOCS for each
+//! submodule (the C_SDU of the frame, whose limit is the 1440 of E311).
+//! The schema's attributes bear this out: beside them IOConfigData has
+//! MaxApplicationInputLength and MaxApplicationOutputLength, separate
+//! "application" lengths with a flag `ApplicationLengthIncludesIOxS`
+//! (default false) for whether those count the status bytes. gsdc's
+//! emitter writes the same reading (`emit::gsdml::max_io_length`);
+//! docs/rules.md, E310, gives the sources and what the corpus does.
 
 use std::collections::BTreeMap;
 
 use foldhash::HashMap;
 
 use super::datatype::{io_size, missing_length, unknown_type, Place, Size};
-use super::index::{child, children, describe, tag_span, value_span, El};
+use super::index::{child, children, describe, in_gsdml, tag_span, value_span, El};
 use super::values::{parse_u32, ValueList};
 use super::Ctx;
 use crate::diag::Diagnostic;
@@ -21,7 +25,7 @@ use crate::diag::Diagnostic;
 /// The largest C_SDU of a PROFINET RT frame: no IOConfigData may promise more.
 const FRAME_LIMIT: u32 = 1440;
 
-/// Input and output bytes.
+/// Bytes of the input and of the output CR: data and status bytes.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
 struct Io([u32; 2]);
 
@@ -82,8 +86,8 @@ fn data_item_size(item: &El<'_, '_>) -> Result<u32, Diagnostic> {
     }
 }
 
-/// The IO data of the VirtualSubmoduleItems of a DAP or module: they are
-/// always plugged with it.
+/// What the VirtualSubmoduleItems of a DAP or module add to the CRs: they
+/// are always plugged with it.
 fn built_in_io(owner: &El<'_, '_>) -> Io {
     let submodules = child(*owner, "VirtualSubmoduleList")
         .into_iter()
@@ -93,18 +97,38 @@ fn built_in_io(owner: &El<'_, '_>) -> Io {
         .fold(Io::default(), Io::add)
 }
 
+/// What a DAP always has in the CRs: its virtual submodules, and its
+/// interface and port submodules, which carry no data but their status.
+fn dap_io(dap: &El<'_, '_>) -> Io {
+    let system_defined = child(*dap, "SystemDefinedSubmoduleList")
+        .into_iter()
+        .flat_map(|list| list.children())
+        .filter(in_gsdml);
+    system_defined
+        .map(|s| submodule_io(&s))
+        .fold(built_in_io(dap), Io::add)
+}
+
+/// One submodule in the CRs: its data, and its status bytes. A submodule
+/// with input data has its IOPS in the input CR and its IOCS in the output
+/// CR; one with output data the other way round; one with both has both in
+/// each. One without data counts as an input submodule of length 0, as
+/// p-net's `pf_cmdev_calculate_exp_sub_data_descriptor_direction` places
+/// NO_IO submodules (rtlabs-com/p-net, src/device/pf_cmdev.c).
 fn submodule_io(submodule: &El<'_, '_>) -> Io {
-    let Some(io_data) = child(*submodule, "IOData") else {
-        return Io::default();
-    };
-    let bytes = |direction| {
-        child(io_data, direction)
-            .into_iter()
-            .flat_map(|d| children(d, "DataItem"))
+    let io_data = child(*submodule, "IOData");
+    let data = |direction| {
+        let list = io_data.and_then(|d| child(d, direction))?;
+        let bytes = children(list, "DataItem")
             .map(|item| data_item_size(&item).unwrap_or(0))
-            .fold(0u32, u32::saturating_add)
+            .fold(0u32, u32::saturating_add);
+        Some(bytes)
     };
-    Io([bytes("Input"), bytes("Output")])
+    let (input, output) = (data("Input"), data("Output"));
+    // One status byte in each CR for each direction the submodule has.
+    let as_input = u32::from(input.is_some() || output.is_none());
+    let status = as_input + u32::from(output.is_some());
+    Io([input, output].map(|bytes| bytes.unwrap_or(0).saturating_add(status)))
 }
 
 /// A DAP's configurations: the fixed one, each module with it, the largest.
@@ -155,7 +179,7 @@ fn configurations<'a, 'input>(
     physical: &ValueList,
     modules: &HashMap<&str, Io>,
 ) -> Configurations<'a, 'input> {
-    let dap_io = built_in_io(dap);
+    let dap_io = dap_io(dap);
     let dap_slots = dap.attribute("FixedInSlots").and_then(ValueList::parse);
     let refs: Vec<(El, Io)> = child(*dap, "UseableModules")
         .into_iter()
@@ -268,7 +292,7 @@ fn check_direction(
             Diagnostic::error(
                 "E310",
                 format!(
-                    "{} and its fixed modules have {fixed} {direction} bytes, more than {attribute}={max}",
+                    "{} and its fixed modules need {fixed} {direction} bytes (status bytes included), more than {attribute}={max}",
                     describe(dap)
                 ),
             )
@@ -287,7 +311,7 @@ fn check_direction(
                 Diagnostic::error(
                     "E310",
                     format!(
-                        "module \"{}\" never fits {}: with the DAP it needs {needed} {direction} bytes, {attribute} is {max}",
+                        "module \"{}\" never fits {}: with the DAP it needs {needed} {direction} bytes (status bytes included), {attribute} is {max}",
                         reference.attribute("ModuleItemTarget").unwrap_or("?"),
                         describe(dap)
                     ),
@@ -304,7 +328,7 @@ fn check_direction(
             Diagnostic::warning(
                 "W302",
                 format!(
-                    "the largest configuration of {} has {largest} {direction} bytes, more than {attribute}={max}",
+                    "the largest configuration of {} needs {largest} {direction} bytes (status bytes included), more than {attribute}={max}",
                     describe(dap)
                 ),
             )

@@ -1,4 +1,4 @@
-//! W205-W212: every setting against the keyword schema.
+//! W205-W212, W234: every setting against the keyword schema.
 
 use crate::diag::Diagnostic;
 use crate::gsd::model::{Arg, GsdFile, Setting, Value};
@@ -11,7 +11,7 @@ const MAX_SUGGESTIONS: usize = 32;
 
 pub(super) fn check(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     let mut checker = Checker {
-        revision: file.get("GSD_Revision").and_then(|s| s.value.as_number()),
+        revision: revision_of(file),
         suggestions: 0,
         seen: Vec::new(),
     };
@@ -25,6 +25,17 @@ pub(super) fn check(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     }
     block_texts(file, out);
     mandatory(file, out);
+}
+
+/// The GSD revision the file is judged by: its `GSD_Revision`, or 0 when it
+/// has none (a file older than the keyword, as STEP 7's own catalog has);
+/// `None` when the value is no number (E207 says so), so that nothing is
+/// judged by a guess.
+fn revision_of(file: &GsdFile) -> Option<i64> {
+    match file.get("GSD_Revision") {
+        Some(setting) => setting.value.as_number(),
+        None => Some(0),
+    }
 }
 
 struct Checker<'f> {
@@ -222,18 +233,32 @@ fn wrong_form(setting: &Setting, message: String) -> Diagnostic {
 
 fn check_range(setting: &Setting, keyword: &Keyword, n: i64, out: &mut Vec<Diagnostic>) {
     let (min, max) = keyword.spec.number_range();
-    if !(min..=max).contains(&n) {
-        out.push(
-            Diagnostic::error("E208", format!("`{}` = {n} is out of range", keyword.name))
-                .at(setting.value_span.clone())
-                .label(format!("must be {min}..{max}"))
-                .help(format!(
-                    "`{}` is {} in {min}..{max}",
-                    keyword.name,
-                    keyword.spec.kind.describe()
-                )),
-        );
+    if (min..=max).contains(&n) {
+        return;
     }
+    let tolerated = keyword
+        .spec
+        .tolerated_min
+        .is_some_and(|t| (t..min).contains(&n));
+    let diagnostic = if tolerated {
+        Diagnostic::warning(
+            "W234",
+            format!("`{}` = {n} is below the specification's {min}", keyword.name),
+        )
+        .label(format!("the specification allows {min}..{max}"))
+        .help(format!(
+            "engineering tools accept it (STEP 7's own catalog has files with it); write {min} or more if the device allows it"
+        ))
+    } else {
+        Diagnostic::error("E208", format!("`{}` = {n} is out of range", keyword.name))
+            .label(format!("must be {min}..{max}"))
+            .help(format!(
+                "`{}` is {} in {min}..{max}",
+                keyword.name,
+                keyword.spec.kind.describe()
+            ))
+    };
+    out.push(diagnostic.at(setting.value_span.clone()));
 }
 
 fn check_octets(setting: &Setting, keyword: &Keyword, bytes: &[i64], out: &mut Vec<Diagnostic>) {

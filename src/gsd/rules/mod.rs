@@ -1,12 +1,14 @@
 //! The GSD rules. Each has a stable code (`docs/rules.md`); all failures
-//! are collected, never just the first.
+//! are collected, never just the first. An error is what breaks a rule of
+//! the file's own GSD revision in a way a tool refuses or misreads; what
+//! tools accept (Siemens' own STEP 7 catalog files do it) is a warning.
 //!
 //! | code | rule |
 //! |---|---|
 //! | E200-E204 | reader: marker, unreadable line, unclosed string, unclosed block, stray block end |
-//! | W205-W212 | keyword schema: unknown, mandatory, type, range, string length, revision, duplicate, spelling |
-//! | E213-E214 | baud rates and MaxTsdr |
-//! | E215-E218 | modules: config bytes, I/O lengths, compact and modular stations |
+//! | W205-W212, W234 | keyword schema: unknown, mandatory, type, range (W234: below the minimum, accepted by tools), string length, revision, duplicate, spelling |
+//! | E213-E214, W232 | baud rates and MaxTsdr (W232: 31.25 kbit/s) |
+//! | E215-E218, W233 | modules: config bytes, I/O lengths, compact (W233: several modules) and modular stations |
 //! | E219-E225, E227-E228 | user parameter data |
 //! | E226, W231 | diagnosis bits within Max_Diag_Data_Len; areas with values |
 //! | E240-E242 | strict profile only: the format of gsdc's own output |

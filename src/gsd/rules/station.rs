@@ -1,11 +1,11 @@
-//! Station-wide rules: baud rates (E213, E214), compact and modular
-//! stations (E217, E218), DPV1 status bytes (E225), diagnosis bits (E226),
-//! diagnosis areas without values (W231).
+//! Station-wide rules: baud rates (E213, E214, W232), compact and modular
+//! stations (E217, W233, E218), DPV1 status bytes (E225), diagnosis bits
+//! (E226), diagnosis areas without values (W231).
 
 use foldhash::HashSet;
 
 use crate::diag::Diagnostic;
-use crate::gsd::model::{Arg, GsdFile, Setting};
+use crate::gsd::model::{Arg, Baud, GsdFile, Setting};
 use crate::gsd::rules::file_span;
 use crate::gsd::schema;
 
@@ -67,14 +67,31 @@ fn bauds(file: &GsdFile, out: &mut Vec<Diagnostic>) {
         };
         let tsdr = format!("MaxTsdr_{}", baud.as_str());
         if !keys.contains(schema::normalize(&tsdr).as_str()) {
-            out.push(
-                Diagnostic::error("E213", format!("`{}` without `{tsdr}`", supp.name))
-                    .at(supp.span.clone())
-                    .label(format!("no `{tsdr}` in this file"))
-                    .help(format!("add `{tsdr} = <bit times>`: the master needs the response time at every supported baud rate")),
-            );
+            out.push(baud_without_tsdr(supp, baud, &tsdr));
         }
     }
+}
+
+/// E213, or W232 at 31.25 kbit/s: that is the MBP rate of PROFIBUS PA, which
+/// no DP master's RS-485 line runs at. A master reaches such a slave through
+/// a DP/PA coupler or link and never computes a slot time from this
+/// keyword; STEP 7 imports Siemens' own FDC 157-0 file, which leaves it out.
+fn baud_without_tsdr(supp: &Setting, baud: Baud, tsdr: &str) -> Diagnostic {
+    let (diagnostic, help) = if baud == Baud::B31k25 {
+        (
+            Diagnostic::warning("W232", format!("`{}` without `{tsdr}`", supp.name)),
+            format!("add `{tsdr} = <bit times>`; tools accept the file without it, as 31.25 kbit/s (PROFIBUS PA) is reached through a DP/PA coupler or link"),
+        )
+    } else {
+        (
+            Diagnostic::error("E213", format!("`{}` without `{tsdr}`", supp.name)),
+            format!("add `{tsdr} = <bit times>`: the master needs the response time at every supported baud rate"),
+        )
+    };
+    diagnostic
+        .at(supp.span.clone())
+        .label(format!("no `{tsdr}` in this file"))
+        .help(help)
 }
 
 fn module_count(file: &GsdFile, out: &mut Vec<Diagnostic>) {
@@ -93,22 +110,24 @@ fn module_count(file: &GsdFile, out: &mut Vec<Diagnostic>) {
         }
         return;
     }
-    if file.modules.len() == 1 {
+    let count = file.modules.len();
+    if count == 1 {
         return;
     }
-    let span = match file.modules.get(1) {
-        Some(second) => second.name.span.clone(),
-        None => modular.map_or_else(|| file_span(file), |s| s.span.clone()),
+    let diagnostic = match file.modules.get(1) {
+        // A tool has nothing to configure such a station with.
+        None => Diagnostic::error("E217", "compact station without a module")
+            .at(modular.map_or_else(|| file_span(file), |s| s.span.clone()))
+            .label("a compact station (`Modular_Station = 0` or absent) has one module")
+            .help("add the station's module, or set `Modular_Station = 1` with `Max_Module`"),
+        // STEP 7 imports Siemens' own SIPART DR file, compact with 98
+        // modules; gsd-parser reads such a file with `Max_Module = 1`.
+        Some(second) => Diagnostic::warning("W233", format!("compact station with {count} modules"))
+            .at(second.name.span.clone())
+            .label("a compact station (`Modular_Station = 0` or absent) has one module")
+            .help("tools accept it (STEP 7's own catalog has such files); set `Modular_Station = 1` with `Max_Module` if the station takes several modules, or keep one"),
     };
-    out.push(
-        Diagnostic::error(
-            "E217",
-            format!("compact station with {} modules", file.modules.len()),
-        )
-        .at(span)
-        .label("a compact station (`Modular_Station = 0` or absent) has exactly one module")
-        .help("set `Modular_Station = 1` with `Max_Module`, or keep one module"),
-    );
+    out.push(diagnostic);
 }
 
 fn dpv1_status_bytes(file: &GsdFile, out: &mut Vec<Diagnostic>) {

@@ -228,11 +228,14 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
     }
 }
 
-/// IOConfigData's MaxInputLength and MaxOutputLength count a frame's IO
-/// data and its status bytes (IOPS, IOCS). Each submodule without data (the
-/// DAP's, the interface, the ports) adds one byte each way; the module's,
-/// with data both ways, adds its IOPS and the IOCS of the other direction.
-/// If a tool counts data only, this is still an upper bound; with at most
+/// IOConfigData's MaxInputLength and MaxOutputLength bound what the input
+/// and the output CR carry: IO data and status bytes, as the checker reads
+/// them (E310, `gsdml::io`; docs/rules.md gives the sources). Each
+/// submodule without data (the DAP's, the interface, the ports) has its IOPS
+/// in the input CR and its IOCS in the output CR: one byte each way; the
+/// module's, with data both ways, adds its IOPS and the IOCS of the other
+/// direction to each. The largest module with these is exactly what the
+/// checker needs (`tests/gsdml_reader.rs` holds the two to it); with at most
 /// 20 words in a module and 16 ports it stays far below the limit of 1440.
 pub fn max_lengths(modules: &[Module], ports: u8) -> (u16, u16) {
     let data = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
