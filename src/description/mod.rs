@@ -11,11 +11,17 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
-pub use values::{Address, BitRange, Text};
+pub use values::{is_language_code, Address, BitRange, Text};
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Description {
+    /// The manual the description quotes.
+    pub manual: Option<Manual>,
+    /// Values the manual does not give, each marked as the description's own
+    /// choice: key path (`profibus.min_slave_interval`) to the reason.
+    #[serde(default)]
+    pub choices: BTreeMap<Spanned<String>, Spanned<String>>,
     pub device: Device,
     pub function_codes: Option<FunctionCodes>,
     pub telegram: Telegram,
@@ -26,6 +32,18 @@ pub struct Description {
     pub settings: Vec<Setting>,
     pub profibus: Option<Spanned<Profibus>>,
     pub profinet: Option<Spanned<Profinet>>,
+}
+
+/// The vendor's manual the description's texts and values come from.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Manual {
+    /// As the manual names itself.
+    pub title: Spanned<String>,
+    /// The languages (ISO 639-1) of the manual: texts in these are quoted
+    /// from it word for word; texts in others are the description's
+    /// translations.
+    pub languages: Spanned<Vec<Spanned<String>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -167,7 +185,7 @@ pub struct Profibus {
     pub freeze_mode: bool,
     #[serde(default)]
     pub sync_mode: bool,
-    pub dpv1: Option<Dpv1>,
+    pub dpv1: Option<Spanned<Dpv1>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }
 
@@ -189,8 +207,7 @@ pub struct Dpv1 {
     /// Units of 10 ms.
     pub c1_response_timeout: Option<Spanned<u16>>,
     /// DPV1_Status_1..3, the first three bytes of User_Prm_Data.
-    #[serde(default)]
-    pub status_bytes: [u8; 3],
+    pub status_bytes: Option<Spanned<[u8; 3]>>,
 }
 
 /// Device-related diagnosis: a header byte with the block length, then the

@@ -22,7 +22,8 @@ struct Context<'a> {
     model: &'a str,
     revision: &'a str,
     ident_number: String,
-    ident_placeholder: bool,
+    /// Header comment lines, each within the line limit.
+    notes: Vec<String>,
     hardware_release: &'a str,
     software_release: &'a str,
     order_number: Option<&'a str>,
@@ -125,7 +126,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         model: &d.model,
         revision: &d.revision,
         ident_number: format!("0x{:04X}", p.ident_number),
-        ident_placeholder: p.ident_placeholder,
+        notes: notes(ir),
         hardware_release: &d.hardware_release,
         software_release: &d.software_release,
         order_number: d.order_number.as_deref(),
@@ -190,6 +191,29 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             })
             .collect(),
     }
+}
+
+/// The header notes as GSD comment lines: 7-bit ASCII (a character beyond
+/// it shows as `?`; lowering keeps reasons ASCII for descriptions with a GSD,
+/// so only a marked value in another language shows so), wrapped to the
+/// line limit with continuation lines indented.
+fn notes(ir: &Ir) -> Vec<String> {
+    let width = MAX_LINE - "; ".len();
+    super::header_notes(ir)
+        .iter()
+        .flat_map(|note| {
+            let ascii: String = note
+                .chars()
+                .map(|c| if c.is_ascii() { c } else { '?' })
+                .collect();
+            let lines = super::wrap_words(&ascii, width - 2);
+            lines
+                .into_iter()
+                .enumerate()
+                .map(|(i, line)| if i == 0 { line } else { format!("  {line}") })
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }
 
 fn values(choices: &[Choice]) -> Vec<Value<'_>> {

@@ -156,21 +156,8 @@ fn header(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         ir.source_name
     ));
     doc.comment(&format!("Description fingerprint: {}", ir.fingerprint));
-    let placeholders: Vec<String> = [
-        ("VendorID", p.vendor_id, p.vendor_id_placeholder),
-        ("DeviceID", p.device_id, p.device_id_placeholder),
-    ]
-    .into_iter()
-    .filter(|&(_, _, placeholder)| placeholder)
-    .map(|(name, value, _)| format!("{name} {}", hex16(value)))
-    .collect();
-    match placeholders.as_slice() {
-        [] => {}
-        [one] => doc.comment(&format!("{one} is a placeholder, not assigned by PI.")),
-        many => doc.comment(&format!(
-            "{} are placeholders, not assigned by PI.",
-            many.join(" and ")
-        )),
+    for note in super::header_notes(ir) {
+        doc.comment(&note);
     }
 }
 

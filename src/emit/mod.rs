@@ -37,6 +37,48 @@ impl ArtifactKind {
     }
 }
 
+/// What every generated file's header says beyond its origin: which
+/// languages are the description's translations, and each decision
+/// (placeholder, own choice, gsdc's default), one note each.
+pub(crate) fn header_notes(ir: &Ir) -> Vec<String> {
+    let mut notes = Vec::new();
+    if !ir.manual_languages.is_empty() {
+        let translated: Vec<&str> = std::iter::once("en")
+            .chain(ir.languages.iter().map(String::as_str))
+            .filter(|code| !ir.manual_languages.iter().any(|m| m == code))
+            .collect();
+        if !translated.is_empty() {
+            notes.push(format!(
+                "Texts in {} are the description's translations of the manual's {}.",
+                translated.join(", "),
+                ir.manual_languages.join(", ")
+            ));
+        }
+    }
+    notes.extend(ir.decisions.iter().map(|d| d.summary()));
+    notes
+}
+
+/// `text` in lines of at most `width` characters, broken between words (a
+/// longer word gets a line of its own).
+pub(crate) fn wrap_words(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
 /// Every file the description gives, each read back and checked by the same
 /// rules `gsdc check` applies to third-party files. A file that breaks one is
 /// not returned: the diagnostics say which rule, and that gsdc is at fault.
@@ -118,6 +160,13 @@ mod tests {
         let text = include_str!("../../descriptions/md810dp.toml");
         let ir = crate::load("md810dp.toml", text).0.unwrap();
         gsd::emit(&ir, ir.profibus.as_ref().unwrap())
+    }
+
+    #[test]
+    fn words_wrap_at_the_width_and_long_words_stand_alone() {
+        assert_eq!(wrap_words("a bb ccc dddd", 6), ["a bb", "ccc", "dddd"]);
+        assert_eq!(wrap_words("abcdefgh ij", 4), ["abcdefgh", "ij"]);
+        assert!(wrap_words("", 10).is_empty());
     }
 
     #[test]

@@ -40,6 +40,8 @@ struct Context<'a> {
     source: &'a str,
     fingerprint: String,
     device: String,
+    /// Header comment lines: translations and decisions, wrapped.
+    notes: Vec<String>,
     pkw_module: Option<&'static str>,
     telegrams: Vec<TelegramAlias>,
     words: Vec<WordModule>,
@@ -260,6 +262,7 @@ fn context(ir: &Ir) -> Context<'_> {
         source: &ir.source_name,
         fingerprint: ir.fingerprint.to_string(),
         device: format!("{} {}", ir.device.vendor, ir.device.model),
+        notes: notes(ir),
         pkw_module: match ir.telegram.pkw {
             PkwKind::None => None,
             PkwKind::PkeIndPwe => Some("pkw_pke_ind_pwe"),
@@ -274,6 +277,21 @@ fn context(ir: &Ir) -> Context<'_> {
         profinet: ir.profinet.as_ref().map(profinet_items),
         groups: ir.mappings.groups.iter().map(|g| group(ir, g)).collect(),
     }
+}
+
+/// Header notes in lines that keep the comment within 80 columns; a note's
+/// continuation lines are indented.
+fn notes(ir: &Ir) -> Vec<String> {
+    super::header_notes(ir)
+        .iter()
+        .flat_map(|note| {
+            super::wrap_words(note, 75)
+                .into_iter()
+                .enumerate()
+                .map(|(i, line)| if i == 0 { line } else { format!("  {line}") })
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }
 
 // ---------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 //! Identity, telegram and mappings are shared by every bus; what only
 //! PROFIBUS needs lives in [`profibus`].
 
+mod decision;
 pub mod mapping;
 mod names;
 pub mod numbering;
@@ -11,6 +12,7 @@ pub mod profibus;
 pub mod profinet;
 pub mod telegram;
 
+pub use decision::{Decision, DecisionKind};
 pub use mapping::{
     Allowed, EntryKey, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings, SetKey,
 };
@@ -36,6 +38,12 @@ pub struct Ir {
     /// ISO 639-1 code in code order: every device file that has languages
     /// has each of them.
     pub languages: Vec<String>,
+    /// What the manuals the description quotes do not give, in the order of
+    /// the description: placeholders, its own choices, gsdc's defaults.
+    pub decisions: Vec<Decision>,
+    /// The languages whose texts the description quotes from the manual;
+    /// texts in other languages are the description's translations.
+    pub manual_languages: Vec<String>,
     pub profibus: Option<Profibus>,
     pub profinet: Option<Profinet>,
 }

@@ -3,7 +3,7 @@
 
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir;
+use crate::ir::{self, Decision, DecisionKind};
 use std::collections::BTreeSet;
 use std::ops::Range;
 use toml::Spanned;
@@ -18,6 +18,8 @@ pub struct Checker {
     for_gsd: bool,
     /// The languages besides English that the description's texts use.
     languages: BTreeSet<String>,
+    /// Placeholders and gsdc's defaults, as lowering meets them.
+    decisions: Vec<Decision>,
 }
 
 impl Checker {
@@ -26,7 +28,46 @@ impl Checker {
             diagnostics: Diagnostics::default(),
             for_gsd,
             languages: BTreeSet::new(),
+            decisions: Vec::new(),
         }
+    }
+
+    /// A placeholder, said where it is written (the warning's code and text
+    /// are the caller's): listed in every generated file.
+    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String, reason: &str) {
+        self.push(warning);
+        self.decisions.push(Decision {
+            kind: DecisionKind::Placeholder,
+            path: path.to_string(),
+            value,
+            reason: reason.to_string(),
+        });
+    }
+
+    /// W104: gsdc chose `value` for `path`, which the description does not
+    /// state; `near` is where the description would state it.
+    pub fn defaulted(&mut self, path: &str, value: impl ToString, near: Range<usize>) {
+        let value = value.to_string();
+        self.push(
+            Diagnostic::warning(
+                "W104",
+                format!("{path} is not stated: gsdc uses {value}"),
+            )
+            .at(near)
+            .label(format!("no `{}` here", path.rsplit('.').next().unwrap_or(path)))
+            .help("state what the firmware does (and mark it under [choices] if the manual does not say); `gsdc build --deny-warnings` refuses gsdc's defaults"),
+        );
+        self.decisions.push(Decision {
+            kind: DecisionKind::Default,
+            path: path.to_string(),
+            value,
+            reason: "the description does not state it".to_string(),
+        });
+    }
+
+    /// The placeholders and defaults met, in the order met.
+    pub fn take_decisions(&mut self) -> Vec<Decision> {
+        std::mem::take(&mut self.decisions)
     }
 
     /// Every language besides English that a text used, in code order.
@@ -50,7 +91,7 @@ impl Checker {
 
     /// Not empty, and no character that a device file, a generated header
     /// or generated code cannot hold safely.
-    fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) {
+    pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) {
         if s.trim().is_empty() {
             self.push(
                 Diagnostic::error("E117", format!("{what} is empty"))

@@ -5,6 +5,7 @@
 //! documented in `docs/rules.md`.
 
 mod checks;
+mod choices;
 mod mappings;
 mod profibus;
 mod profinet;
@@ -45,6 +46,13 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .profinet
         .as_ref()
         .map(|p| profinet::lower(&mut cx, p, &desc.device, (&device, &telegram, &mappings)));
+    let manual_languages = desc
+        .manual
+        .as_ref()
+        .map_or_else(Vec::new, |m| manual_languages(&mut cx, m));
+    let mut decisions = cx.take_decisions();
+    decisions.extend(choices::lower(&mut cx, &desc.choices, text));
+    decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
     let languages = cx.languages();
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
@@ -58,6 +66,8 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         telegram,
         mappings,
         languages,
+        decisions,
+        manual_languages,
         profibus: profibus.flatten(),
         profinet: profinet.flatten(),
     };
@@ -90,6 +100,28 @@ fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
             .as_ref()
             .map(|i| cx.text(i, Some(checks::GSD_INFO_LEN), "info")),
     }
+}
+
+/// The manual's languages: ISO 639-1 codes, each once.
+fn manual_languages(cx: &mut Checker, manual: &raw::Manual) -> Vec<String> {
+    cx.non_empty(manual.title.get_ref(), manual.title.span(), "the manual's title");
+    let mut codes: Vec<String> = Vec::new();
+    for code in manual.languages.get_ref() {
+        if !crate::description::is_language_code(code.get_ref()) {
+            cx.push(
+                Diagnostic::error("E137", format!("`{}` is not an ISO 639-1 language code", code.get_ref()))
+                    .at(code.span())
+                    .label("not a language code")
+                    .help("write the manual's languages as texts write them: \"en\", \"zh\", \"de\""),
+            );
+        } else if codes.contains(code.get_ref()) {
+            cx.duplicate(format!("language `{}`", code.get_ref()), code.span());
+        } else {
+            codes.push(code.get_ref().clone());
+        }
+    }
+    codes.sort();
+    codes
 }
 
 fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {

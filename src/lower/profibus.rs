@@ -55,17 +55,18 @@ pub fn lower(
     let user_prm = user_prm(cx, dpv1.as_ref(), mappings, set_spans);
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
-        cx.push(
+        let value = format!("0x{:04X}", ident.value.get_ref());
+        cx.placeholder(
             Diagnostic::warning(
                 "W101",
-                format!(
-                    "PROFIBUS ident number 0x{:04X} is a placeholder, not assigned by PI",
-                    ident.value.get_ref()
-                ),
+                format!("PROFIBUS ident number {value} is a placeholder, not assigned by PI"),
             )
             .at(p.ident_number.span())
             .label("placeholder")
             .help("apply to PI for an ident number before shipping the GSD"),
+            "profibus.ident_number",
+            value,
+            "not assigned by PI",
         );
     }
     let modules = modules(cx, p, telegram);
@@ -244,18 +245,37 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
     text.clone()
 }
 
-fn lower_dpv1(cx: &mut Checker, d: &raw::Dpv1) -> Option<Dpv1> {
+/// The DPV1 class 1 channel; what the description leaves out is gsdc's
+/// default, said (W104) where the description would state it.
+fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
+    let near = d.span();
+    let d = d.get_ref();
+    let c1_max_data_len = match &d.c1_max_data_len {
+        Some(l) => cx.spanned_in_range(l, 0, 240, "c1_max_data_len")?,
+        None => {
+            cx.defaulted("profibus.dpv1.c1_max_data_len", DEFAULT_C1_MAX_DATA_LEN, near.clone());
+            DEFAULT_C1_MAX_DATA_LEN
+        }
+    };
+    let c1_response_timeout = match &d.c1_response_timeout {
+        Some(t) => cx.spanned_in_range(t, 1, 0xFFFF, "c1_response_timeout")?,
+        None => {
+            cx.defaulted("profibus.dpv1.c1_response_timeout", DEFAULT_C1_RESPONSE_TIMEOUT, near.clone());
+            DEFAULT_C1_RESPONSE_TIMEOUT
+        }
+    };
+    let status_bytes = match &d.status_bytes {
+        Some(bytes) => *bytes.get_ref(),
+        None => {
+            cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near);
+            [0; 3]
+        }
+    };
     Some(Dpv1 {
         c1_read_write: d.c1_read_write,
-        c1_max_data_len: match &d.c1_max_data_len {
-            Some(l) => cx.spanned_in_range(l, 0, 240, "c1_max_data_len")?,
-            None => DEFAULT_C1_MAX_DATA_LEN,
-        },
-        c1_response_timeout: match &d.c1_response_timeout {
-            Some(t) => cx.spanned_in_range(t, 1, 0xFFFF, "c1_response_timeout")?,
-            None => DEFAULT_C1_RESPONSE_TIMEOUT,
-        },
-        status_bytes: d.status_bytes,
+        c1_max_data_len,
+        c1_response_timeout,
+        status_bytes,
     })
 }
 

@@ -25,6 +25,7 @@ pub fn lower(
     raw_device: &raw::Device,
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
+    let records = records::indexes(cx, p, mappings);
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
@@ -34,11 +35,10 @@ pub fn lower(
         "profinet.file_vendor",
     );
     let family = file_name_part(cx, &raw_device.family, "device.family");
-    placeholder_warning(cx, &p.vendor_id, "vendor ID");
-    placeholder_warning(cx, &p.device_id, "device ID");
+    placeholder_warning(cx, &p.vendor_id, ("vendor ID", "vendor_id"));
+    placeholder_warning(cx, &p.device_id, ("device ID", "device_id"));
     let info = p.info.as_ref().map(|i| cx.text(i, None, "profinet.info"));
     let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
-    let records = records::indexes(cx, &p.records, mappings);
     let modules: Vec<Module> = modules(cx, p, telegram)
         .into_iter()
         .map(|(kind, layout)| io::module(kind, layout, telegram, mappings, &records))
@@ -153,13 +153,17 @@ fn file_name_part(cx: &mut Checker, part: &Spanned<String>, what: &str) -> Strin
     text.to_string()
 }
 
-fn placeholder_warning(cx: &mut Checker, id: &Spanned<raw::IdentNumber>, what: &str) {
+fn placeholder_warning(cx: &mut Checker, id: &Spanned<raw::IdentNumber>, (what, key): (&str, &str)) {
     if id.get_ref().placeholder {
-        cx.push(
-            Diagnostic::warning("W102", format!("PROFINET {what} 0x{:04X} is a placeholder, not assigned by PI", id.get_ref().value.get_ref()))
+        let value = format!("0x{:04X}", id.get_ref().value.get_ref());
+        cx.placeholder(
+            Diagnostic::warning("W102", format!("PROFINET {what} {value} is a placeholder, not assigned by PI"))
                 .at(id.span())
                 .label("placeholder")
                 .help("use the vendor ID PI assigned and the device ID the vendor assigned before shipping"),
+            &format!("profinet.{key}"),
+            value,
+            "not assigned by PI",
         );
     }
 }

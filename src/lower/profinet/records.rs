@@ -15,11 +15,13 @@ const MAX_VENDOR_RECORD_INDEX: i64 = 0x7FFF;
 
 /// One record per kind of mapping the description has: PZD out, PZD in,
 /// DPV1 indexes, settings; indexes 1, 2, 3, 4 unless the description says otherwise.
+/// An index the description leaves out is gsdc's default, said (W104).
 pub fn indexes(
     cx: &mut Checker,
-    given: &raw::RecordIndexes,
+    p: &Spanned<raw::Profinet>,
     mappings: &Mappings,
 ) -> Vec<(MappingKind, u16)> {
+    let given = &p.get_ref().records;
     let kinds = [
         (MappingKind::PzdOut, &given.pzd_out, 1),
         (MappingKind::PzdIn, &given.pzd_in, 2),
@@ -33,7 +35,11 @@ pub fn indexes(
         .filter_map(|(kind, given, default)| {
             let index = match given {
                 Some(i) => cx.spanned_in_range(i, 1, MAX_VENDOR_RECORD_INDEX, "a record index")?,
-                None => default,
+                None => {
+                    let path = format!("profinet.records.{}", kind.key());
+                    cx.defaulted(&path, default, p.span());
+                    default
+                }
             };
             if !used.insert(index) {
                 cx.push(

@@ -1,0 +1,39 @@
+//! Values that reach the device files although no manual gave them: the
+//! description's own choices (with their reasons), placeholders to be
+//! replaced before shipping, and the defaults gsdc applied where the
+//! description is silent. Every generated file lists them in its header; a
+//! shipping build refuses them (`gsdc build --deny-warnings`).
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Decision {
+    pub kind: DecisionKind,
+    /// Where the description holds it (or would): `profibus.min_slave_interval`.
+    pub path: String,
+    /// The value as the description writes it, on one line.
+    pub value: String,
+    pub reason: String,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum DecisionKind {
+    /// Not assigned yet (a PI ident number): to be replaced.
+    Placeholder,
+    /// Chosen by the description, with its reason.
+    Choice,
+    /// Chosen by gsdc: the description does not state it.
+    Default,
+}
+
+impl Decision {
+    /// One line: `Own choice: profibus.min_slave_interval = 1 (the reason)`.
+    pub fn summary(&self) -> String {
+        let kind = match self.kind {
+            DecisionKind::Placeholder => "Placeholder",
+            DecisionKind::Choice => "Own choice",
+            DecisionKind::Default => "gsdc's default",
+        };
+        format!("{kind}: {} = {} ({})", self.path, self.value, self.reason)
+    }
+}
