@@ -227,62 +227,65 @@ fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
     );
 }
 
-/// `--format json`: one object per finding, with the fields tools need, in
-/// the order of the arguments whatever thread checked each file. The GSD
-/// file is the smallest, so it is checked last (largest first), yet its
-/// findings come second.
+/// `--format json`: one object per finding, with the fields tools need,
+/// and after each file's findings a summary object (file, errors,
+/// warnings) that counts them, clean files included; in the order of the
+/// arguments whatever thread checked each file. The GSD file is the
+/// smallest, so it is checked last (largest first), yet its findings come
+/// second.
 #[test]
-fn check_json_lines_have_the_documented_fields_in_argument_order() {
+fn check_json_lines_have_the_documented_fields_and_a_summary_per_file_in_argument_order() {
     let files = [
         "../shared/corpus/gsdml-invalid/neg_missing_textid.xml",
         "../shared/corpus/gsd/mbuesch__dummy_compact.gsd",
         "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml",
+        "../shared/corpus/gsdml/GSDML-V2.31-LEUZE-BCL348i-20150923.xml",
     ];
     let mut args = vec!["check", "--format", "json"];
     args.extend(files);
     let output = gsdc(&args);
     assert_eq!(output.status.code(), Some(1));
-    let lines: Vec<String> = stdout(&output).lines().map(str::to_string).collect();
-    assert!(!lines.is_empty());
-    let mut seen_files = Vec::new();
-    for line in &lines {
-        assert!(
-            line.starts_with("{\"file\":") && line.ends_with('}'),
-            "{line}"
-        );
-        for field in [
-            "\"line\":",
-            "\"column\":",
-            "\"severity\":",
-            "\"code\":",
-            "\"subject\":",
-            "\"message\":",
-            "\"label\":",
-            "\"help\":",
-        ] {
-            assert!(line.contains(field), "{field} missing in {line}");
+    let objects: Vec<serde_json::Value> = stdout(&output)
+        .lines()
+        .map(|line| serde_json::from_str(line).unwrap_or_else(|e| panic!("{e}: {line}")))
+        .collect();
+    let finding_fields = [
+        "file", "line", "column", "severity", "code", "subject", "message", "label", "help",
+    ];
+    let mut summaries = Vec::new();
+    let (mut errors, mut warnings) = (0, 0);
+    for object in &objects {
+        let keys: Vec<&str> = object
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        if keys.contains(&"code") {
+            let mut sorted = finding_fields.to_vec();
+            sorted.sort_unstable();
+            assert_eq!(keys, sorted, "{object}");
+            match object["severity"].as_str().unwrap() {
+                "error" => errors += 1,
+                _ => warnings += 1,
+            }
+            continue;
         }
-        let file = line.split('"').nth(3).unwrap().to_string();
-        if seen_files.last() != Some(&file) {
-            seen_files.push(file);
-        }
+        assert_eq!(keys, ["errors", "file", "warnings"], "{object}");
+        assert_eq!(object["errors"], errors, "{object} counts its findings");
+        assert_eq!(object["warnings"], warnings, "{object} counts its findings");
+        summaries.push(object["file"].as_str().unwrap().to_string());
+        (errors, warnings) = (0, 0);
     }
-    assert_eq!(
-        seen_files, files,
-        "findings follow the order of the arguments"
-    );
-    assert!(
-        lines
+    assert_eq!(summaries, files, "one summary per file, in argument order");
+    assert_eq!(objects.last().unwrap()["errors"], 0, "the clean file too");
+    let finding = |code: &str, subject: &str| {
+        objects
             .iter()
-            .any(|l| l.contains("\"code\":\"E217\"") && l.contains("\"subject\":\"Module\"")),
-        "{lines:#?}"
-    );
-    assert!(
-        lines
-            .iter()
-            .any(|l| l.contains("\"code\":\"E309\"") && l.contains("\"subject\":\"DataItem\"")),
-        "{lines:#?}"
-    );
+            .any(|o| o["code"] == code && o["subject"] == subject)
+    };
+    assert!(finding("E217", "Module"), "{objects:#?}");
+    assert!(finding("E309", "DataItem"), "{objects:#?}");
 }
 
 /// `--xsd DIR` adds the PI schema's findings (E399) to gsdc's own rules.

@@ -1,6 +1,6 @@
 //! Writing output when the disk says no: `gsdc build` exits 2 with the path
 //! and the OS error, `gsdc::build::generate` and
-//! `gsdc::output::write_if_changed` return them, and no partial, truncated
+//! `gsdc::output::write_files` return them, and no partial, truncated
 //! or temporary file is left behind; a file already there is never replaced
 //! by a broken one.
 //!
@@ -9,7 +9,7 @@
 //! by the failing-disk unit tests in `src/output.rs`. Permission bits are
 //! not used: root ignores them.
 
-use gsdc::output::{write_if_changed, Outcome};
+use gsdc::output::{write_files, Outcome};
 use gsdc::Artifact;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -138,7 +138,7 @@ fn a_missing_output_directory_is_created() {
     }];
     let lib_out = dir.join("c/d");
     assert_eq!(
-        write_if_changed(&lib_out, &files).unwrap(),
+        write_files(&lib_out, &files, false).unwrap().outcomes,
         [Outcome::Written]
     );
     assert_eq!(std::fs::read(lib_out.join("X.GSD")).unwrap(), b"x");
