@@ -112,19 +112,21 @@ impl Config {
         description: impl AsRef<Path>,
         out_dir: impl AsRef<Path>,
     ) -> Result<Vec<PathBuf>, BuildError> {
-        let files = self.build_script_compile(description.as_ref())?;
+        let files = self.build_script_compile(description.as_ref(), true)?;
         write(&files, out_dir.as_ref())
     }
 
     /// Writes only the firmware layout (`<stem>_layout.rs`) into `out_dir`;
-    /// returns its path.
+    /// returns its path. No GSDML is written, so none is validated: a
+    /// firmware crate builds without the `xsd` feature whatever
+    /// [`XSD_ENV`] says.
     pub fn generate_rust(
         &self,
         description: impl AsRef<Path>,
         out_dir: impl AsRef<Path>,
     ) -> Result<PathBuf, BuildError> {
         let description = description.as_ref();
-        let files = self.build_script_compile(description)?;
+        let files = self.build_script_compile(description, false)?;
         let Some(layout) = files
             .into_iter()
             .find(|a| a.file_name.ends_with("_layout.rs"))
@@ -140,9 +142,13 @@ impl Config {
 
     /// The steps of a build, with the schema loaded when one is asked for.
     pub fn compiler(&self) -> Result<Compiler, BuildError> {
-        let schema = match &self.xsd {
+        self.compiler_with(self.xsd.as_deref())
+    }
+
+    fn compiler_with(&self, xsd: Option<&Path>) -> Result<Compiler, BuildError> {
+        let schema = match xsd {
             Some(dir) => Some(Schema::load(dir).map_err(|why| BuildError::Schema {
-                dir: dir.clone(),
+                dir: dir.to_path_buf(),
                 why,
             })?),
             None => None,
@@ -155,16 +161,24 @@ impl Config {
 
     /// [`Compiler::compile`] as a build script needs it: the `cargo:` lines
     /// that make cargo run it again when an input changes, warnings as
-    /// `cargo:warning`, and the findings rendered into the error.
-    fn build_script_compile(&self, description: &Path) -> Result<Vec<Artifact>, BuildError> {
+    /// `cargo:warning`, and the findings rendered into the error. The
+    /// schema, if any, only when the GSDML is to be `validated`.
+    fn build_script_compile(
+        &self,
+        description: &Path,
+        validated: bool,
+    ) -> Result<Vec<Artifact>, BuildError> {
         println!("cargo:rerun-if-changed={}", description.display());
-        println!("cargo:rerun-if-env-changed={XSD_ENV}");
-        if let Some(dir) = &self.xsd {
+        let xsd = self.xsd.as_deref().filter(|_| validated);
+        if validated {
+            println!("cargo:rerun-if-env-changed={XSD_ENV}");
+        }
+        if let Some(dir) = xsd {
             let schema = dir.join(crate::xsd::SCHEMA_FILE);
             println!("cargo:rerun-if-changed={}", schema.display());
         }
         let name = description.display().to_string();
-        let compiled = self.compiler()?.compile(description, &name)?;
+        let compiled = self.compiler_with(xsd)?.compile(description, &name)?;
         match compiled.files {
             Ok(files) => {
                 for findings in &compiled.findings {
