@@ -389,15 +389,20 @@ fn create_temporary(dir: &Path, file_name: &str) -> io::Result<(PathBuf, fs::Fil
             std::process::id(),
             random_u64()
         ));
-        match fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&path)
-        {
+        match create_exclusive(&path) {
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 8 => tries += 1,
             result => return result.map(|file| (path, file)),
         }
     }
+}
+
+/// A new file at `path`, or `AlreadyExists` if anything is there: a file, a
+/// directory, a symbolic link even to nowhere (`O_CREAT|O_EXCL`).
+fn create_exclusive(path: &Path) -> io::Result<fs::File> {
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
 }
 
 /// 64 bits no other process can predict: std's hasher keys are seeded from
@@ -635,6 +640,26 @@ mod tests {
             assert!(is_temporary(name), "{name}");
             assert!(name.starts_with(".A.GSD.gsdc-"), "{name}");
         }
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    /// Whoever could guess a temporary's name and put a link there first
+    /// would still not have gsdc write through it.
+    #[test]
+    fn a_temporary_is_never_opened_through_a_link() {
+        let dir = scratch("exclusive");
+        let victim = dir.join("victim");
+        fs::write(&victim, b"not gsdc's").unwrap();
+        let link = dir.join("to-victim");
+        let dangling = dir.join("to-nowhere");
+        std::os::unix::fs::symlink(&victim, &link).unwrap();
+        std::os::unix::fs::symlink(dir.join("nothing"), &dangling).unwrap();
+        for path in [&link, &dangling, &victim] {
+            let e = create_exclusive(path).unwrap_err();
+            assert_eq!(e.kind(), io::ErrorKind::AlreadyExists, "{path:?}");
+        }
+        assert_eq!(fs::read(&victim).unwrap(), b"not gsdc's");
+        assert!(!dir.join("nothing").exists());
         fs::remove_dir_all(dir).unwrap();
     }
 
