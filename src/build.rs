@@ -280,7 +280,7 @@ impl Compiled {
     pub fn render(&self, refused: Refused, max: usize) -> String {
         let mut out: String = self.findings.iter().flat_map(|f| f.rendered(max)).collect();
         out += match refused {
-            Refused::Errors => "nothing written: the description has errors",
+            Refused::Errors => "nothing written: fix the errors above",
             Refused::Warnings => {
                 "nothing written: the description has warnings, and they are denied"
             }
