@@ -1,7 +1,10 @@
-//! The build-script API: generate a description's files from a firmware
-//! crate's `build.rs`.
+//! The build: description files to the files they give, checked, then
+//! written. `gsdc build` and build scripts go through the same steps
+//! ([`Compiler::compile`]: read the description within its size limit,
+//! decode, load, compile, deny warnings when asked, validate each GSDML
+//! against the PI schema when asked), so they cannot drift apart.
 //!
-//! In `build.rs`:
+//! In a firmware crate's `build.rs`:
 //!
 //! ```no_run
 //! let out_dir = std::env::var("OUT_DIR").unwrap();
@@ -21,97 +24,536 @@
 //!
 //! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
 //! again when the description changes, and writes only files whose content
-//! changed. Warnings (placeholder ident numbers) become `cargo:warning` lines.
+//! changed. Warnings (placeholder ident numbers) become `cargo:warning`
+//! lines, or refuse the build with [`Config::deny_warnings`]. With
+//! [`Config::xsd`], or the environment variable [`XSD_ENV`], each GSDML is
+//! validated against the PI schema before anything is written:
+//!
+//! ```no_run
+//! let out_dir = std::env::var("OUT_DIR").unwrap();
+//! gsdc::build::Config::new()
+//!     .deny_warnings(true)
+//!     .xsd("../pi/gsdml-xsd-v2.44")
+//!     .generate("descriptions/md810dp.toml", &out_dir)
+//!     .unwrap_or_else(|e| panic!("{e}"));
+//! ```
 
-use crate::diag::{Diagnostic, Diagnostics, Source};
-use crate::load;
-use crate::output::{read_input, write_if_changed, ReadError};
+use crate::diag::{Diagnostic, Diagnostics, Severity, Source};
+use crate::file_kind::{self, FileKind};
+use crate::output::{read_input, write_files, ReadError, WriteError};
+use crate::xsd::Schema;
 use crate::{Artifact, ArtifactKind};
 use std::fmt;
+use std::io;
 use std::path::{Path, PathBuf};
 
-/// Why nothing was generated: the rendered diagnostics, or the I/O error.
-#[derive(Debug)]
-pub struct BuildError(String);
-
-impl fmt::Display for BuildError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for BuildError {}
+/// The environment variable that names a PI schema directory for every
+/// build, as `--xsd` and [`Config::xsd`] do: a CI job sets it once and each
+/// `gsdc build` and each build script validates its GSDML files. Empty is
+/// unset.
+pub const XSD_ENV: &str = "GSDC_BUILD_XSD";
 
 /// Writes every file of the description into `out_dir`; returns their paths.
+/// [`Config::new`]'s settings: warnings allowed, the schema of [`XSD_ENV`].
 pub fn generate(
     description: impl AsRef<Path>,
     out_dir: impl AsRef<Path>,
 ) -> Result<Vec<PathBuf>, BuildError> {
-    let artifacts = compile_file(description.as_ref())?;
-    write(&artifacts, out_dir.as_ref())
+    Config::new().generate(description, out_dir)
 }
 
 /// Writes only the firmware layout (`<stem>_layout.rs`) and the support
 /// module it is built from (`gsdc_support.rs`) into `out_dir`; returns the
-/// layout's path.
+/// layout's path. [`Config::new`]'s settings.
 pub fn generate_rust(
     description: impl AsRef<Path>,
     out_dir: impl AsRef<Path>,
 ) -> Result<PathBuf, BuildError> {
-    let artifacts = compile_file(description.as_ref())?;
-    let layout: Vec<Artifact> = artifacts
-        .into_iter()
-        .filter(|a| matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::RustSupport))
-        .collect();
-    if layout.is_empty() {
-        return Err(BuildError(
-            "the description gives no firmware layout".into(),
-        ));
+    Config::new().generate_rust(description, out_dir)
+}
+
+/// How descriptions are built.
+#[derive(Debug, Clone)]
+pub struct Config {
+    deny_warnings: bool,
+    xsd: Option<PathBuf>,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config::new()
     }
-    let mut paths = write(&layout, out_dir.as_ref())?;
-    Ok(paths.remove(0))
 }
 
-fn compile_file(path: &Path) -> Result<Vec<Artifact>, BuildError> {
-    println!("cargo:rerun-if-changed={}", path.display());
-    let name = path.display().to_string();
-    let bytes = read_input(path, &load::INPUT_LIMIT).map_err(|e| match e {
-        ReadError::TooLarge(d) => rendered_one(&name, "", d),
-        ReadError::Io(e) => BuildError(format!("cannot read {name}: {e}")),
-    })?;
-    let text = load::decode(&bytes)
-        .map_err(|d| rendered_one(&name, &String::from_utf8_lossy(&bytes), d))?;
-    let source_name = path
-        .file_name()
-        .map_or_else(|| name.clone(), |f| f.to_string_lossy().into_owned());
-    let source = Source { name: &name, text };
-    let (ir, diagnostics) = crate::load(&source_name, text);
-    for warning in diagnostics.iter().filter(|d| !d.is_error()) {
-        println!(
-            "cargo:warning={}: {}",
-            source.location(warning),
-            warning.message
-        );
+impl Config {
+    /// Warnings allowed; each GSDML validated against the PI schema in the
+    /// directory [`XSD_ENV`] names, if it is set.
+    pub fn new() -> Config {
+        let xsd = std::env::var_os(XSD_ENV)
+            .filter(|dir| !dir.is_empty())
+            .map(PathBuf::from);
+        Config {
+            deny_warnings: false,
+            xsd,
+        }
     }
-    let ir = ir.ok_or_else(|| rendered(&source, &diagnostics))?;
-    crate::compile(&ir).map_err(|d| rendered(&source, &d))
+
+    /// With `true`, a description with any warning (a placeholder ident
+    /// number, say) is refused as one with an error: nothing is written.
+    pub fn deny_warnings(&mut self, deny: bool) -> &mut Self {
+        self.deny_warnings = deny;
+        self
+    }
+
+    /// Validates each GSDML against the PI schema in `dir`
+    /// ([`crate::xsd::SCHEMA_FILE`] and what it imports) before anything is
+    /// written; a GSDML the schema rejects refuses the build with its
+    /// findings (E399). Needs the cargo feature `xsd`: without it, every
+    /// build fails saying so.
+    pub fn xsd(&mut self, dir: impl Into<PathBuf>) -> &mut Self {
+        self.xsd = Some(dir.into());
+        self
+    }
+
+    /// Writes every file of the description into `out_dir`; returns their paths.
+    pub fn generate(
+        &self,
+        description: impl AsRef<Path>,
+        out_dir: impl AsRef<Path>,
+    ) -> Result<Vec<PathBuf>, BuildError> {
+        let files = self.build_script_compile(description.as_ref(), true)?;
+        write(&files, out_dir.as_ref())
+    }
+
+    /// Writes only the firmware layout (`<stem>_layout.rs`) and the support
+    /// module it is built from (`gsdc_support.rs`) into `out_dir`;
+    /// returns its path. No GSDML is written, so none is validated: a
+    /// firmware crate builds without the `xsd` feature whatever
+    /// [`XSD_ENV`] says.
+    pub fn generate_rust(
+        &self,
+        description: impl AsRef<Path>,
+        out_dir: impl AsRef<Path>,
+    ) -> Result<PathBuf, BuildError> {
+        let description = description.as_ref();
+        let files: Vec<Artifact> = self
+            .build_script_compile(description, false)?
+            .into_iter()
+            .filter(|a| matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::RustSupport))
+            .collect();
+        if !files.iter().any(|a| a.kind == ArtifactKind::RustLayout) {
+            return Err(BuildError::Description {
+                path: description.to_path_buf(),
+                rendered: "the description gives no firmware layout".into(),
+            });
+        }
+        let mut paths = write(&files, out_dir.as_ref())?;
+        Ok(paths.remove(0))
+    }
+
+    /// The steps of a build, with the schema loaded when one is asked for.
+    pub fn compiler(&self) -> Result<Compiler, BuildError> {
+        self.compiler_with(self.xsd.as_deref())
+    }
+
+    fn compiler_with(&self, xsd: Option<&Path>) -> Result<Compiler, BuildError> {
+        let schema = match xsd {
+            Some(dir) => Some(Schema::load(dir).map_err(|why| BuildError::Schema {
+                dir: dir.to_path_buf(),
+                why,
+            })?),
+            None => None,
+        };
+        Ok(Compiler {
+            deny_warnings: self.deny_warnings,
+            schema,
+        })
+    }
+
+    /// [`Compiler::compile`] as a build script needs it: the `cargo:` lines
+    /// that make cargo run it again when an input changes, warnings as
+    /// `cargo:warning`, and the findings rendered into the error. The
+    /// schema, if any, only when the GSDML is to be `validated`.
+    fn build_script_compile(
+        &self,
+        description: &Path,
+        validated: bool,
+    ) -> Result<Vec<Artifact>, BuildError> {
+        println!("cargo:rerun-if-changed={}", description.display());
+        let xsd = self.xsd.as_deref().filter(|_| validated);
+        if validated {
+            println!("cargo:rerun-if-env-changed={XSD_ENV}");
+        }
+        if let Some(dir) = xsd {
+            let schema = dir.join(crate::xsd::SCHEMA_FILE);
+            println!("cargo:rerun-if-changed={}", schema.display());
+        }
+        let name = description.display().to_string();
+        let compiled = self.compiler_with(xsd)?.compile(description, &name)?;
+        match compiled.files {
+            Ok(files) => {
+                for findings in &compiled.findings {
+                    findings.cargo_warnings();
+                }
+                Ok(files)
+            }
+            Err(refused) => Err(BuildError::Description {
+                path: description.to_path_buf(),
+                rendered: compiled.render(refused, usize::MAX),
+            }),
+        }
+    }
 }
 
-fn rendered(source: &Source, diagnostics: &Diagnostics) -> BuildError {
-    BuildError(diagnostics.iter().map(|d| source.render(d)).collect())
+/// The steps from a description file to its files: one [`Config`]'s
+/// settings, and the PI schema loaded once for every description.
+pub struct Compiler {
+    deny_warnings: bool,
+    schema: Option<Schema>,
 }
 
-fn rendered_one(name: &str, text: &str, diagnostic: Diagnostic) -> BuildError {
-    rendered(&Source { name, text }, &Diagnostics(vec![diagnostic]))
+/// What one description gave: what to show, and the files or why there are
+/// none.
+#[derive(Debug)]
+#[non_exhaustive]
+pub struct Compiled {
+    /// The description's findings (warnings too, possibly none), then those
+    /// of each generated GSDML the PI schema rejects.
+    pub findings: Vec<Findings>,
+    pub files: Result<Vec<Artifact>, Refused>,
+}
+
+/// Why a description gave no files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Refused {
+    /// The description, or a GSDML it gives, has errors.
+    Errors,
+    /// It has warnings, and warnings are denied.
+    Warnings,
+}
+
+/// Diagnostics about one text: a description, or a generated file.
+#[derive(Debug)]
+pub struct Findings {
+    /// The name the diagnostics give for the text.
+    pub name: String,
+    pub text: String,
+    pub diagnostics: Diagnostics,
+}
+
+impl Findings {
+    /// The first `max` diagnostics, each rendered against the text, then
+    /// how many more there are: a hostile description can have a hundred
+    /// thousand, and the first hundred say what is wrong.
+    pub fn rendered(&self, max: usize) -> Vec<String> {
+        let source = Source {
+            name: &self.name,
+            text: &self.text,
+        };
+        let mut out: Vec<String> = self
+            .diagnostics
+            .iter()
+            .take(max)
+            .map(|d| source.render(d))
+            .collect();
+        let hidden = self.diagnostics.iter().count().saturating_sub(max);
+        if hidden > 0 {
+            out.push(format!(
+                "{}: {hidden} more finding(s) not shown\n",
+                self.name
+            ));
+        }
+        out
+    }
+
+    fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Warning)
+    }
+
+    fn cargo_warnings(&self) {
+        let source = Source {
+            name: &self.name,
+            text: &self.text,
+        };
+        for warning in self.warnings() {
+            let location = source.location(warning);
+            println!("cargo:warning={location}: {}", warning.message);
+        }
+    }
+}
+
+impl Compiled {
+    /// Every finding rendered (at most `max` per text), then what refused
+    /// the description.
+    pub fn render(&self, refused: Refused, max: usize) -> String {
+        let mut out: String = self.findings.iter().flat_map(|f| f.rendered(max)).collect();
+        out += match refused {
+            Refused::Errors => "nothing written: fix the errors above",
+            Refused::Warnings => {
+                "nothing written: the description has warnings, and they are denied"
+            }
+        };
+        out
+    }
+}
+
+impl Compiler {
+    /// Reads the description at `path` (no more than [`crate::load::INPUT_LIMIT`]),
+    /// decodes, loads and compiles it, refuses it for warnings when they are
+    /// denied, and validates each GSDML it gives against the schema if
+    /// there is one. `name` names the description in diagnostics. `Err`
+    /// only when the file cannot be read.
+    pub fn compile(&mut self, path: &Path, name: &str) -> Result<Compiled, BuildError> {
+        let read_error = |error| BuildError::Read {
+            path: path.to_path_buf(),
+            error,
+        };
+        let bytes = match read_input(path, &crate::load::INPUT_LIMIT) {
+            Ok(bytes) => bytes,
+            Err(ReadError::Io(error)) => return Err(read_error(error)),
+            Err(ReadError::TooLarge(d)) => return Ok(refused_unread(name, String::new(), d)),
+        };
+        let text = match crate::load::decode(&bytes) {
+            Ok(text) => text,
+            Err(d) => {
+                let shown = String::from_utf8_lossy(&bytes).into_owned();
+                return Ok(refused_unread(name, shown, d));
+            }
+        };
+        // The name in generated headers is the file's own, without folders.
+        let source_name = path
+            .file_name()
+            .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
+        let (ir, mut diagnostics) = crate::load(&source_name, text);
+        let files = match ir.map(|ir| crate::compile(&ir)) {
+            Some(Ok(files)) => Some(files),
+            Some(Err(problems)) => {
+                diagnostics.extend(problems);
+                None
+            }
+            None => None,
+        };
+        let description = Findings {
+            name: name.to_string(),
+            text: text.to_string(),
+            diagnostics,
+        };
+        Ok(self.judge(description, files))
+    }
+
+    /// The verdict on a description's files: errors refuse them, then
+    /// warnings when denied, then a GSDML the PI schema rejects.
+    fn judge(&mut self, description: Findings, files: Option<Vec<Artifact>>) -> Compiled {
+        let has_errors = description.diagnostics.has_errors();
+        let has_warnings = description.warnings().next().is_some();
+        let mut findings = vec![description];
+        let Some(files) = files.filter(|_| !has_errors) else {
+            return Compiled {
+                findings,
+                files: Err(Refused::Errors),
+            };
+        };
+        let from = &findings[0].name;
+        let rejected = self.validate(from, &files);
+        let schema_errors = !rejected.is_empty();
+        findings.extend(rejected);
+        let files = if schema_errors {
+            Err(Refused::Errors)
+        } else if has_warnings && self.deny_warnings {
+            Err(Refused::Warnings)
+        } else {
+            Ok(files)
+        };
+        Compiled { findings, files }
+    }
+
+    /// The PI schema's findings for each GSDML among `files` that it
+    /// rejects, each named after the file and the description `from`; none
+    /// without a schema. The build's last step before writing, and the
+    /// tests' way in with a GSDML gsdc would not generate.
+    pub fn validate(&mut self, from: &str, files: &[Artifact]) -> Vec<Findings> {
+        let Some(schema) = self.schema.as_mut() else {
+            return Vec::new();
+        };
+        files
+            .iter()
+            .filter(|file| file_kind::detect(&file.contents) == FileKind::Gsdml)
+            .filter_map(|file| {
+                let text = String::from_utf8_lossy(&file.contents).into_owned();
+                let diagnostics = schema.validate(&text);
+                (!diagnostics.is_empty()).then(|| Findings {
+                    name: format!("{} (generated from {from})", file.file_name),
+                    text,
+                    diagnostics,
+                })
+            })
+            .collect()
+    }
+}
+
+/// A description refused before it could be loaded (too large, not UTF-8).
+fn refused_unread(name: &str, text: String, diagnostic: Diagnostic) -> Compiled {
+    Compiled {
+        findings: vec![Findings {
+            name: name.to_string(),
+            text,
+            diagnostics: Diagnostics(vec![diagnostic]),
+        }],
+        files: Err(Refused::Errors),
+    }
+}
+
+/// Two descriptions that give files of one name with different contents.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Collision {
+    pub file_name: String,
+    pub first: PathBuf,
+    pub second: PathBuf,
+}
+
+impl fmt::Display for Collision {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} and {} both give {}, with different contents",
+            self.first.display(),
+            self.second.display(),
+            self.file_name
+        )
+    }
+}
+
+/// The files of several descriptions as one set, each once: a file that two
+/// descriptions give with the same bytes (a support module every layout
+/// shares, the same description given twice) is one file; two different
+/// files of one name are a collision, and every collision is returned.
+pub fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Vec<Collision>> {
+    let mut merged: Vec<(PathBuf, Artifact)> = Vec::new();
+    let mut collisions = Vec::new();
+    for (description, files) in sets {
+        for file in files {
+            match merged.iter().find(|(_, a)| a.file_name == file.file_name) {
+                Some((_, same)) if same.contents == file.contents => {}
+                Some((first, _)) => collisions.push(Collision {
+                    file_name: file.file_name,
+                    first: first.clone(),
+                    second: description.clone(),
+                }),
+                None => merged.push((description.clone(), file)),
+            }
+        }
+    }
+    if collisions.is_empty() {
+        Ok(merged.into_iter().map(|(_, file)| file).collect())
+    } else {
+        Err(collisions)
+    }
+}
+
+/// Why a build wrote nothing, or not everything.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum BuildError {
+    /// The description could not be read.
+    Read { path: PathBuf, error: io::Error },
+    /// The description has errors, or warnings while they are denied, or a
+    /// GSDML it gives breaks the PI schema: the diagnostics, rendered as
+    /// gsdc prints them. Nothing was written.
+    Description { path: PathBuf, rendered: String },
+    /// The files could not all be written: the path, the OS error, and the
+    /// files already replaced (as far as the disk allowed, none).
+    Write(WriteError),
+    /// The PI schema asked for cannot be loaded from `dir`.
+    Schema { dir: PathBuf, why: String },
+}
+
+impl fmt::Display for BuildError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BuildError::Read { path, error } => {
+                write!(f, "cannot read {}: {error}", path.display())
+            }
+            BuildError::Description { rendered, .. } => f.write_str(rendered),
+            BuildError::Write(e) => e.fmt(f),
+            BuildError::Schema { dir, why } => {
+                write!(f, "cannot use the PI schema in {}: {why}", dir.display())
+            }
+        }
+    }
+}
+
+impl std::error::Error for BuildError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            BuildError::Read { error, .. } => Some(error),
+            BuildError::Write(e) => Some(e),
+            BuildError::Description { .. } | BuildError::Schema { .. } => None,
+        }
+    }
 }
 
 /// Writes all the files or, as far as the disk allows, none (see
-/// [`write_if_changed`]); the error names the path, the OS error and the
-/// files already written.
-fn write(artifacts: &[Artifact], out_dir: &Path) -> Result<Vec<PathBuf>, BuildError> {
-    write_if_changed(out_dir, artifacts).map_err(|e| BuildError(e.to_string()))?;
-    Ok(artifacts
-        .iter()
-        .map(|a| out_dir.join(&a.file_name))
-        .collect())
+/// [`write_files`]); returns their paths.
+fn write(files: &[Artifact], out_dir: &Path) -> Result<Vec<PathBuf>, BuildError> {
+    let written = write_files(out_dir, files, false).map_err(BuildError::Write)?;
+    for leftover in &written.leftovers {
+        println!(
+            "cargo:warning=removed {}, left by a build that was interrupted",
+            leftover.display()
+        );
+    }
+    if let Some(e) = &written.not_locked {
+        println!(
+            "cargo:warning=cannot lock {} ({e}): a build writing into it at the same time could mix its files with these",
+            out_dir.display()
+        );
+    }
+    Ok(files.iter().map(|a| out_dir.join(&a.file_name)).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn artifact(file_name: &str, contents: &str) -> Artifact {
+        Artifact {
+            kind: ArtifactKind::RustLayout,
+            file_name: file_name.into(),
+            contents: contents.as_bytes().to_vec(),
+        }
+    }
+
+    #[test]
+    fn files_of_one_name_merge_when_identical_and_collide_when_not() {
+        let set = |d: &str, files: Vec<Artifact>| (PathBuf::from(d), files);
+        let merged = merge(vec![
+            set(
+                "a.toml",
+                vec![artifact("A.GSD", "a"), artifact("support.rs", "s")],
+            ),
+            set(
+                "b.toml",
+                vec![artifact("B.GSD", "b"), artifact("support.rs", "s")],
+            ),
+        ])
+        .unwrap();
+        let names: Vec<&str> = merged.iter().map(|a| a.file_name.as_str()).collect();
+        assert_eq!(names, ["A.GSD", "support.rs", "B.GSD"]);
+
+        let collisions = merge(vec![
+            set("x-y.toml", vec![artifact("x_y_layout.rs", "from x-y")]),
+            set("x_y.toml", vec![artifact("x_y_layout.rs", "from x_y")]),
+            set("z.toml", vec![artifact("x_y_layout.rs", "from z")]),
+        ])
+        .unwrap_err();
+        assert_eq!(collisions.len(), 2);
+        assert_eq!(
+            collisions[0].to_string(),
+            "x-y.toml and x_y.toml both give x_y_layout.rs, with different contents"
+        );
+        assert_eq!(collisions[1].second, PathBuf::from("z.toml"));
+    }
 }

@@ -11,17 +11,18 @@
 pub mod description;
 pub mod diag;
 pub mod emit;
+pub mod file_kind;
 pub mod gsd;
 pub mod gsdml;
 pub mod ir;
 mod latin1;
 pub mod load;
 pub mod lower;
+mod utf16;
 
 // The edges.
 pub mod build;
 pub mod output;
-#[cfg(feature = "xsd")]
 pub mod xsd;
 
 pub use diag::{Diagnostic, Diagnostics, Severity, Source};

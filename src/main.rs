@@ -1,9 +1,7 @@
-use clap::Parser;
 use std::process::ExitCode;
 
 mod cli;
 
 fn main() -> ExitCode {
-    let args = cli::Cli::parse();
-    ExitCode::from(cli::run(args).code())
+    ExitCode::from(cli::main().code())
 }

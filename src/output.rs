@@ -1,9 +1,10 @@
 //! The library's edge with the disk: reading an input file no larger than
 //! its reader takes, and writing generated files atomically, only when their
-//! content changed. The CLI and the build-script API call it; the core never
-//! touches the disk.
+//! content changed, into a directory locked while it is written. The CLI
+//! and the build-script API call it; the core never touches the disk.
 
 use crate::diag::{Diagnostic, InputLimit};
+use crate::file_kind::{self, FileKind, HEAD_BYTES};
 use crate::Artifact;
 use std::fmt;
 use std::fs;
@@ -25,11 +26,44 @@ pub enum ReadError {
 pub fn read_input(path: &Path, limit: &InputLimit) -> Result<Vec<u8>, ReadError> {
     let file = fs::File::open(path).map_err(ReadError::Io)?;
     let known = file.metadata().map_err(ReadError::Io)?.len();
+    read_rest(file, known, limit, Vec::new())
+}
+
+/// The bytes of a file given to `gsdc check`, and what its first
+/// [`HEAD_BYTES`] show it to be. A GSD or GSDML file is read up to its
+/// reader's limit, refused by its size before it is read when larger; of a
+/// file that is neither, only the first bytes are read.
+pub fn read_device_file(path: &Path) -> Result<(FileKind, Vec<u8>), ReadError> {
+    let mut file = fs::File::open(path).map_err(ReadError::Io)?;
+    let known = file.metadata().map_err(ReadError::Io)?.len();
+    let mut bytes = Vec::with_capacity(known.min(HEAD_BYTES as u64) as usize);
+    (&mut file)
+        .take(HEAD_BYTES as u64)
+        .read_to_end(&mut bytes)
+        .map_err(ReadError::Io)?;
+    let kind = file_kind::detect(&bytes);
+    let limit = match kind {
+        FileKind::Gsd => &crate::gsd::INPUT_LIMIT,
+        FileKind::Gsdml => &crate::gsdml::INPUT_LIMIT,
+        FileKind::Neither => return Ok((kind, bytes)),
+    };
+    read_rest(file, known, limit, bytes).map(|bytes| (kind, bytes))
+}
+
+/// Reads the rest of `file`, of `known` bytes by the file system's word,
+/// after the `bytes` already read, unless it is more than `limit` allows.
+fn read_rest(
+    file: fs::File,
+    known: u64,
+    limit: &InputLimit,
+    mut bytes: Vec<u8>,
+) -> Result<Vec<u8>, ReadError> {
     if known > limit.max_bytes as u64 {
         return Err(ReadError::TooLarge(limit.diagnostic()));
     }
-    let mut bytes = Vec::with_capacity(known as usize);
-    file.take(limit.max_bytes as u64 + 1)
+    bytes.reserve((known as usize).saturating_sub(bytes.len()));
+    let room = (limit.max_bytes + 1).saturating_sub(bytes.len());
+    file.take(room as u64)
         .read_to_end(&mut bytes)
         .map_err(ReadError::Io)?;
     limit.check(bytes.len()).map_err(ReadError::TooLarge)?;
@@ -42,12 +76,29 @@ pub enum Outcome {
     Unchanged,
 }
 
+/// What [`write_files`] did.
+#[derive(Debug)]
+#[non_exhaustive]
+pub struct Written {
+    /// What happened to each file, in the order given.
+    pub outcomes: Vec<Outcome>,
+    /// Temporaries of an interrupted gsdc build found in the directory, and
+    /// removed.
+    pub leftovers: Vec<PathBuf>,
+    /// Stale files removed (see [`stale_files`]), when asked to prune.
+    pub pruned: Vec<PathBuf>,
+    /// Why the directory could not be locked, if it could not (a file
+    /// system without locks): the files were written all the same, and
+    /// leftovers were left alone, as they could be another build's.
+    pub not_locked: Option<io::Error>,
+}
+
 /// Why the files were not all written: the path and the OS error, and which
 /// files were already replaced when it happened.
 #[derive(Debug)]
 pub struct WriteError {
     /// The file that could not be written, or the directory that could not
-    /// be created.
+    /// be created or opened.
     pub path: PathBuf,
     pub error: io::Error,
     /// Files replaced before the error; every other file is as it was.
@@ -80,10 +131,20 @@ impl fmt::Display for WriteError {
     }
 }
 
-impl std::error::Error for WriteError {}
+impl std::error::Error for WriteError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&self.error)
+    }
+}
 
 /// Writes every file into `dir` (created if missing) unless it already
-/// holds exactly that content; returns what happened to each, in order.
+/// holds exactly that content; with `prune`, removes the [`stale_files`]
+/// after.
+///
+/// While it works it holds an exclusive lock on `dir` (`flock` on the
+/// directory itself, so no lock file is left), so that two builds into one
+/// directory replace their sets of files one after the other, never mixed.
+/// Holding it, it removes the temporaries that a build killed halfway left.
 ///
 /// All or nothing as far as the disk allows: every changed file is first
 /// written in full to a temporary file beside its target and synced, and
@@ -92,31 +153,85 @@ impl std::error::Error for WriteError {}
 /// while staging, and then no file is changed and no temporary is left.
 /// Only a rename can fail after another succeeded; the error then names the
 /// files already replaced. A reader never sees a partial file.
-pub fn write_if_changed(dir: &Path, files: &[Artifact]) -> Result<Vec<Outcome>, WriteError> {
-    write_with(&OsDisk, dir, files)
+///
+/// A temporary has a name of its own (process id and 64 random bits) and is
+/// created exclusively (`O_CREAT|O_EXCL`, which by POSIX fails on any
+/// existing name, a symbolic link included): nothing placed at its name is
+/// ever written through, and two builds never share one, even with the
+/// same process id in two PID namespaces. A replaced file keeps its
+/// permission bits.
+pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Written, WriteError> {
+    write_with(&OsDisk, dir, files, prune)
 }
 
 /// Whether `dir/file_name` holds exactly `contents`; a missing file does not.
 pub fn is_up_to_date(dir: &Path, file_name: &str, contents: &[u8]) -> io::Result<bool> {
-    match fs::read(dir.join(file_name)) {
-        Ok(existing) => Ok(existing == contents),
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(false),
+    match read_target(&dir.join(file_name)) {
+        Ok(existing) => Ok(existing.is_some_and(|e| e == contents)),
         Err(e) => Err(e),
     }
 }
 
-/// The two steps that can fail halfway on a real disk (full, read-only, a
+/// The mark every file gsdc generates carries in its header.
+pub const GENERATED_MARK: &str = "@generated by gsdc ";
+
+/// How much of a file's start is searched for [`GENERATED_MARK`].
+const HEADER_BYTES: u64 = 1024;
+
+/// Files in `dir` that gsdc made and none of `files` is: regular files
+/// (never symbolic links) with [`GENERATED_MARK`] in their first KiB, and
+/// temporaries of interrupted builds. They are the outputs of descriptions
+/// that changed a file name or a date, or were not given. Sorted by name;
+/// none when `dir` does not exist.
+pub fn stale_files(dir: &Path, files: &[Artifact]) -> io::Result<Vec<PathBuf>> {
+    let entries = match fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => return Err(e),
+    };
+    let mut stale = Vec::new();
+    for entry in entries {
+        let entry = entry?;
+        let name = entry.file_name();
+        let produced = files.iter().any(|f| name == f.file_name.as_str());
+        if produced || !entry.file_type()?.is_file() {
+            continue;
+        }
+        let path = entry.path();
+        if is_temporary(&name.to_string_lossy()) || is_generated(&path)? {
+            stale.push(path);
+        }
+    }
+    stale.sort();
+    Ok(stale)
+}
+
+fn is_generated(path: &Path) -> io::Result<bool> {
+    let mut head = Vec::new();
+    fs::File::open(path)?
+        .take(HEADER_BYTES)
+        .read_to_end(&mut head)?;
+    let mark = GENERATED_MARK.as_bytes();
+    Ok(head.windows(mark.len()).any(|w| w == mark))
+}
+
+/// The name of one of gsdc's temporaries: `.NAME.gsdc-PID-RANDOM.tmp` (and
+/// `.NAME.gsdc-PID.tmp` of gsdc before 0.2).
+fn is_temporary(name: &str) -> bool {
+    name.starts_with('.') && name.ends_with(".tmp") && name.contains(".gsdc-")
+}
+
+/// The steps that can fail halfway on a real disk (full, read-only, a
 /// directory in the way). The unit tests put in a disk that fails.
 trait Disk {
-    fn write_synced(&self, path: &Path, contents: &[u8]) -> io::Result<()>;
+    fn write_synced(&self, file: &mut fs::File, contents: &[u8]) -> io::Result<()>;
     fn rename(&self, from: &Path, to: &Path) -> io::Result<()>;
 }
 
 struct OsDisk;
 
 impl Disk for OsDisk {
-    fn write_synced(&self, path: &Path, contents: &[u8]) -> io::Result<()> {
-        let mut file = fs::File::create(path)?;
+    fn write_synced(&self, file: &mut fs::File, contents: &[u8]) -> io::Result<()> {
         file.write_all(contents)?;
         file.sync_all()
     }
@@ -136,13 +251,22 @@ fn write_with(
     disk: &impl Disk,
     dir: &Path,
     files: &[Artifact],
-) -> Result<Vec<Outcome>, WriteError> {
-    fs::create_dir_all(dir).map_err(|error| WriteError {
+    prune: bool,
+) -> Result<Written, WriteError> {
+    let cannot = |verb, error| WriteError {
         path: dir.to_path_buf(),
         error,
         written: Vec::new(),
-        verb: "create",
-    })?;
+        verb,
+    };
+    fs::create_dir_all(dir).map_err(|e| cannot("create", e))?;
+    // Held until the end of this function: closing the handle unlocks.
+    let handle = fs::File::open(dir).map_err(|e| cannot("open", e))?;
+    let not_locked = handle.lock().err();
+    let leftovers = match not_locked {
+        None => remove_leftovers(dir),
+        Some(_) => Vec::new(),
+    };
     let mut staged = Vec::new();
     let mut outcomes = Vec::new();
     for file in files {
@@ -159,7 +283,74 @@ fn write_with(
         }
     }
     commit(disk, &staged)?;
-    Ok(outcomes)
+    let pruned = if prune {
+        remove_stale(dir, files, &staged)?
+    } else {
+        Vec::new()
+    };
+    // The renames are durable once the directory is synced; a file system
+    // that cannot sync a directory has nothing to make durable this way.
+    let _ = handle.sync_all();
+    Ok(Written {
+        outcomes,
+        leftovers,
+        pruned,
+        not_locked,
+    })
+}
+
+/// Removes the temporaries in `dir`, which only a build that did not finish
+/// can have left while the caller holds the lock; returns those removed.
+fn remove_leftovers(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut removed: Vec<PathBuf> = entries
+        .filter_map(Result::ok)
+        .filter(|e| is_temporary(&e.file_name().to_string_lossy()))
+        .map(|e| e.path())
+        .filter(|path| fs::remove_file(path).is_ok())
+        .collect();
+    removed.sort();
+    removed
+}
+
+/// Removes the stale files after the new ones are in place; an error names
+/// the file and the files written before it.
+fn remove_stale(
+    dir: &Path,
+    files: &[Artifact],
+    staged: &[Staged],
+) -> Result<Vec<PathBuf>, WriteError> {
+    let failed = |path: PathBuf, error| WriteError {
+        path,
+        error,
+        written: staged.iter().map(|s| s.target.clone()).collect(),
+        verb: "remove",
+    };
+    let stale = stale_files(dir, files).map_err(|e| failed(dir.to_path_buf(), e))?;
+    for path in &stale {
+        fs::remove_file(path).map_err(|e| failed(path.clone(), e))?;
+    }
+    Ok(stale)
+}
+
+/// What `target` holds: `None` when it does not exist. Anything but a
+/// regular file (or a link to one) is an error: a directory is EISDIR, and
+/// a FIFO or device is refused rather than read, which could block forever.
+fn read_target(target: &Path) -> io::Result<Option<Vec<u8>>> {
+    match fs::metadata(target) {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(e),
+        Ok(m) if m.is_file() || m.is_dir() => {}
+        Ok(_) => {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                "not a regular file",
+            ))
+        }
+    }
+    fs::read(target).map(Some)
 }
 
 /// Writes `file` to its temporary, unless its target already holds exactly
@@ -173,18 +364,63 @@ fn stage(disk: &impl Disk, dir: &Path, file: &Artifact) -> Result<Option<Staged>
         written: Vec::new(),
         verb: "write",
     };
-    match fs::read(&target) {
-        Ok(existing) if existing == file.contents => return Ok(None),
-        Ok(_) => {}
-        Err(e) if e.kind() == io::ErrorKind::NotFound => {}
-        Err(e) => return Err(failed(e)),
+    match read_target(&target).map_err(failed)? {
+        Some(existing) if existing == file.contents => return Ok(None),
+        _ => {}
     }
-    let temp = temp_path(dir, &file.file_name);
-    if let Err(e) = disk.write_synced(&temp, &file.contents) {
+    let (temp, mut handle) = create_temporary(dir, &file.file_name).map_err(failed)?;
+    let written = keep_permissions(&target, &handle)
+        .and_then(|()| disk.write_synced(&mut handle, &file.contents));
+    if let Err(e) = written {
         let _ = fs::remove_file(&temp);
         return Err(failed(e));
     }
     Ok(Some(Staged { temp, target }))
+}
+
+/// A new, empty temporary beside `file_name` in `dir`, under a name that
+/// nothing had: created exclusively, so that nothing placed there (a file,
+/// a symbolic link) is ever written through.
+fn create_temporary(dir: &Path, file_name: &str) -> io::Result<(PathBuf, fs::File)> {
+    let mut tries = 0;
+    loop {
+        let path = dir.join(format!(
+            ".{file_name}.gsdc-{}-{:016x}.tmp",
+            std::process::id(),
+            random_u64()
+        ));
+        match create_exclusive(&path) {
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && tries < 8 => tries += 1,
+            result => return result.map(|file| (path, file)),
+        }
+    }
+}
+
+/// A new file at `path`, or `AlreadyExists` if anything is there: a file, a
+/// directory, a symbolic link even to nowhere (`O_CREAT|O_EXCL`).
+fn create_exclusive(path: &Path) -> io::Result<fs::File> {
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+}
+
+/// 64 bits no other process can predict: std's hasher keys are seeded from
+/// the operating system's random source.
+fn random_u64() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    std::collections::hash_map::RandomState::new()
+        .build_hasher()
+        .finish()
+}
+
+/// Gives the temporary the permission bits of the regular file it will
+/// replace, if there is one; a new file keeps what the umask gives.
+fn keep_permissions(target: &Path, temporary: &fs::File) -> io::Result<()> {
+    match fs::symlink_metadata(target) {
+        Ok(m) if m.is_file() => temporary.set_permissions(m.permissions()),
+        _ => Ok(()),
+    }
 }
 
 /// Renames every staged file over its target. On a failure the remaining
@@ -208,10 +444,6 @@ fn remove_temporaries(staged: &[Staged]) {
     for s in staged {
         let _ = fs::remove_file(&s.temp);
     }
-}
-
-fn temp_path(dir: &Path, file_name: &str) -> PathBuf {
-    dir.join(format!(".{file_name}.gsdc-{}.tmp", std::process::id()))
 }
 
 #[cfg(test)]
@@ -251,12 +483,12 @@ mod tests {
     }
 
     impl Disk for FullDisk {
-        fn write_synced(&self, path: &Path, contents: &[u8]) -> io::Result<()> {
+        fn write_synced(&self, file: &mut fs::File, contents: &[u8]) -> io::Result<()> {
             let n = self.writes.replace(self.writes.get() + 1);
             if n != self.fail_write {
-                return OsDisk.write_synced(path, contents);
+                return OsDisk.write_synced(file, contents);
             }
-            fs::write(path, &contents[..contents.len() / 2])?;
+            file.write_all(&contents[..contents.len() / 2])?;
             Err(io::Error::from_raw_os_error(28)) // ENOSPC
         }
 
@@ -272,8 +504,8 @@ mod tests {
     }
 
     impl Disk for FailingRename {
-        fn write_synced(&self, path: &Path, contents: &[u8]) -> io::Result<()> {
-            OsDisk.write_synced(path, contents)
+        fn write_synced(&self, file: &mut fs::File, contents: &[u8]) -> io::Result<()> {
+            OsDisk.write_synced(file, contents)
         }
 
         fn rename(&self, from: &Path, to: &Path) -> io::Result<()> {
@@ -288,10 +520,14 @@ mod tests {
     #[test]
     fn writes_then_leaves_identical_content_alone() {
         let dir = scratch("same");
-        let write = |contents: &[u8]| write_if_changed(&dir, &[artifact("A.GSD", contents)]);
-        assert_eq!(write(b"one").unwrap(), [Outcome::Written]);
-        assert_eq!(write(b"one").unwrap(), [Outcome::Unchanged]);
-        assert_eq!(write(b"two").unwrap(), [Outcome::Written]);
+        let write = |contents: &[u8]| {
+            write_files(&dir, &[artifact("A.GSD", contents)], false)
+                .unwrap()
+                .outcomes
+        };
+        assert_eq!(write(b"one"), [Outcome::Written]);
+        assert_eq!(write(b"one"), [Outcome::Unchanged]);
+        assert_eq!(write(b"two"), [Outcome::Written]);
         assert_eq!(fs::read(dir.join("A.GSD")).unwrap(), b"two");
         assert_eq!(
             names_in(&dir),
@@ -311,7 +547,7 @@ mod tests {
             fail_write: 1,
             writes: Cell::new(0),
         };
-        let e = write_with(&disk, &dir, &files).unwrap_err();
+        let e = write_with(&disk, &dir, &files, false).unwrap_err();
         assert_eq!(e.path, dir.join("B.xml"));
         assert_eq!(e.error.raw_os_error(), Some(28));
         assert!(e.written.is_empty());
@@ -343,7 +579,7 @@ mod tests {
             fail_rename: 1,
             renames: Cell::new(0),
         };
-        let e = write_with(&disk, &dir, &files).unwrap_err();
+        let e = write_with(&disk, &dir, &files, false).unwrap_err();
         assert_eq!(e.path, dir.join("B.xml"));
         assert_eq!(e.written, [dir.join("A.GSD")]);
         let message = e.to_string();
@@ -363,7 +599,7 @@ mod tests {
         let dir = scratch("isdir");
         fs::create_dir(dir.join("B.xml")).unwrap();
         let files = [artifact("A.GSD", b"new"), artifact("B.xml", b"new")];
-        let e = write_if_changed(&dir, &files).unwrap_err();
+        let e = write_files(&dir, &files, false).unwrap_err();
         assert_eq!(e.path, dir.join("B.xml"));
         assert_eq!(e.error.raw_os_error(), Some(21)); // EISDIR
         assert_eq!(names_in(&dir), ["B.xml"], "A.GSD was not written");
@@ -378,5 +614,139 @@ mod tests {
             Err(ReadError::TooLarge(d)) => assert_eq!(d.code, limit.code),
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn a_replaced_file_keeps_its_permission_bits() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = scratch("mode");
+        let target = dir.join("A.GSD");
+        fs::write(&target, b"old").unwrap();
+        fs::set_permissions(&target, fs::Permissions::from_mode(0o600)).unwrap();
+        write_files(&dir, &[artifact("A.GSD", b"new")], false).unwrap();
+        assert_eq!(fs::read(&target).unwrap(), b"new");
+        let mode = fs::metadata(&target).unwrap().permissions().mode();
+        assert_eq!(mode & 0o777, 0o600);
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn temporaries_have_names_of_their_own() {
+        let dir = scratch("names");
+        let (a, _) = create_temporary(&dir, "A.GSD").unwrap();
+        let (b, _) = create_temporary(&dir, "A.GSD").unwrap();
+        assert_ne!(a, b);
+        for t in [&a, &b] {
+            let name = t.file_name().unwrap().to_str().unwrap();
+            assert!(is_temporary(name), "{name}");
+            assert!(name.starts_with(".A.GSD.gsdc-"), "{name}");
+        }
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    /// Whoever could guess a temporary's name and put a link there first
+    /// would still not have gsdc write through it.
+    #[test]
+    fn a_temporary_is_never_opened_through_a_link() {
+        let dir = scratch("exclusive");
+        let victim = dir.join("victim");
+        fs::write(&victim, b"not gsdc's").unwrap();
+        let link = dir.join("to-victim");
+        let dangling = dir.join("to-nowhere");
+        std::os::unix::fs::symlink(&victim, &link).unwrap();
+        std::os::unix::fs::symlink(dir.join("nothing"), &dangling).unwrap();
+        for path in [&link, &dangling, &victim] {
+            let e = create_exclusive(path).unwrap_err();
+            assert_eq!(e.kind(), io::ErrorKind::AlreadyExists, "{path:?}");
+        }
+        assert_eq!(fs::read(&victim).unwrap(), b"not gsdc's");
+        assert!(!dir.join("nothing").exists());
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn leftover_temporaries_are_removed_and_named() {
+        let dir = scratch("leftovers");
+        let old_style = dir.join(".A.GSD.gsdc-4242.tmp");
+        let new_style = dir.join(".B.xml.gsdc-17-00000000deadbeef.tmp");
+        fs::write(&old_style, b"a killed build's").unwrap();
+        fs::write(&new_style, b"a killed build's").unwrap();
+        fs::write(dir.join(".hidden.tmp"), b"not gsdc's").unwrap();
+        let written = write_files(&dir, &[artifact("A.GSD", b"a")], false).unwrap();
+        assert!(written.not_locked.is_none());
+        assert_eq!(written.leftovers, [old_style, new_style]);
+        assert_eq!(names_in(&dir), [".hidden.tmp", "A.GSD"]);
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn stale_files_are_gsdcs_own_and_not_given_and_pruned_on_request() {
+        let dir = scratch("stale");
+        let header = format!("; {GENERATED_MARK}0.1.0 from old.toml\r\n");
+        fs::write(dir.join("OLD.GSD"), &header).unwrap();
+        fs::write(dir.join("A.GSD"), &header).unwrap();
+        fs::write(dir.join("notes.txt"), b"the user's own").unwrap();
+        let late = format!("{}{header}", "x".repeat(HEADER_BYTES as usize));
+        fs::write(dir.join("late.txt"), late).unwrap();
+        fs::write(dir.join(".A.GSD.gsdc-9-0123456789abcdef.tmp"), b"").unwrap();
+        std::os::unix::fs::symlink("OLD.GSD", dir.join("link.GSD")).unwrap();
+        let files = [artifact("A.GSD", header.as_bytes())];
+        assert_eq!(
+            stale_files(&dir, &files).unwrap(),
+            [
+                dir.join(".A.GSD.gsdc-9-0123456789abcdef.tmp"),
+                dir.join("OLD.GSD")
+            ]
+        );
+        let written = write_files(&dir, &files, true).unwrap();
+        assert_eq!(written.outcomes, [Outcome::Unchanged]);
+        assert_eq!(written.pruned, [dir.join("OLD.GSD")]);
+        assert_eq!(
+            names_in(&dir),
+            ["A.GSD", "late.txt", "link.GSD", "notes.txt"]
+        );
+        assert!(stale_files(&dir.join("none"), &files).unwrap().is_empty());
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    /// A FIFO where a file should go would block a read forever.
+    #[test]
+    fn a_fifo_in_place_of_a_file_is_refused_unread() {
+        let dir = scratch("fifo");
+        let made = std::process::Command::new("mkfifo")
+            .arg(dir.join("A.GSD"))
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let e = write_files(&dir, &[artifact("A.GSD", b"a")], false).unwrap_err();
+        assert_eq!(e.path, dir.join("A.GSD"));
+        assert!(e.to_string().contains("not a regular file"), "{e}");
+        assert!(is_up_to_date(&dir, "A.GSD", b"a").is_err());
+        fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn a_device_file_is_read_by_the_limit_of_its_kind() {
+        let dir = scratch("device-file");
+        let gsd = dir.join("big.txt");
+        let mut file = fs::File::create(&gsd).unwrap();
+        file.write_all(b"#Profibus_DP\r\n").unwrap();
+        file.set_len(100 << 20).unwrap(); // a hole after the first line
+        match read_device_file(&gsd) {
+            Err(ReadError::TooLarge(d)) => assert_eq!(d.code, "E229"),
+            other => panic!("{other:?}"),
+        }
+        // Of a file that is neither, the first bytes only.
+        match read_device_file(Path::new("/dev/zero")) {
+            Ok((FileKind::Neither, head)) => assert_eq!(head.len(), HEAD_BYTES),
+            other => panic!("{other:?}"),
+        }
+        let xml = dir.join("x");
+        fs::write(&xml, b"<a/>").unwrap();
+        assert_eq!(
+            read_device_file(&xml).unwrap(),
+            (FileKind::Gsdml, b"<a/>".to_vec())
+        );
+        fs::remove_dir_all(dir).unwrap();
     }
 }

@@ -441,8 +441,9 @@ fn a_gsd_with_nul_bytes_is_e230_once() {
 
 /// Bytes that are not UTF-8 are read as Latin-1, as vendors' files need;
 /// binary garbage then has no `#Profibus_DP` line and control characters.
+/// `gsdc check` does not take it for a GSD file at all: one line, E400.
 #[test]
-fn binary_garbage_as_a_gsd_is_e200_and_e230() {
+fn binary_garbage_as_a_gsd_is_e200_and_e230_and_neither_to_check() {
     let mut state = 0x2545_F491_4F6C_DD1D_u64;
     let garbage: Vec<u8> = (0..1 << 20)
         .map(|_| {
@@ -457,7 +458,9 @@ fn binary_garbage_as_a_gsd_is_e200_and_e230() {
     assert_finds(&diagnostics, "E200", "#Profibus_DP");
     assert!(diagnostics.iter().any(|d| d.code == "E230"));
     let dir = scratch("garbage");
-    assert_rejected(&check_file(&dir, "garbage.gsd", &garbage), "E200");
+    let run = check_file(&dir, "garbage.gsd", &garbage);
+    assert_rejected(&run, "E400");
+    assert_eq!(run.output.lines().count(), 1, "{}", run.output);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -468,15 +471,27 @@ fn a_200_mb_gsd_text_is_e229_before_it_is_read() {
     assert_finds(&diagnostics, "E229", "larger than 8 MiB");
 }
 
-/// `gsdc check` on files of 200 MB and on a file with no end: refused with
-/// the reader's limit before they are read whole.
+/// A 200 MB file whose first line is `head`, the rest a hole.
+fn sparse_after(path: &Path, head: &[u8]) {
+    std::fs::write(path, head).unwrap();
+    let file = std::fs::OpenOptions::new().write(true).open(path).unwrap();
+    file.set_len(BIG as u64).unwrap();
+}
+
+/// `gsdc check` on files of 200 MB and on files with no end: a GSD or
+/// GSDML file is refused with its reader's limit before it is read whole;
+/// of a file that is neither, whatever its size, only the first 64 KiB are
+/// read to tell (the CLI runs with 128 MiB of data here).
 #[test]
 fn check_refuses_200_mb_files_unread() {
     let dir = scratch("big-check");
-    sparse(&dir.join("big.gsd"));
-    sparse(&dir.join("big.xml"));
-    assert_rejected(&gsdc(&dir, &["check", "big.gsd"]), "E229");
-    assert_rejected(&gsdc(&dir, &["check", "big.xml"]), "E300");
-    assert_rejected(&gsdc(&dir, &["check", "/dev/zero"]), "E229");
+    sparse_after(&dir.join("big.txt"), b"#Profibus_DP\r\n");
+    sparse_after(&dir.join("big.gsd"), b"<?xml version=\"1.0\"?>\n");
+    sparse(&dir.join("zeros.xml"));
+    assert_rejected(&gsdc(&dir, &["check", "big.txt"]), "E229");
+    assert_rejected(&gsdc(&dir, &["check", "big.gsd"]), "E300");
+    for neither in ["zeros.xml", "/dev/zero", "/dev/urandom"] {
+        assert_rejected(&gsdc(&dir, &["check", neither]), "E400");
+    }
     std::fs::remove_dir_all(dir).unwrap();
 }

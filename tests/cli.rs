@@ -1,6 +1,10 @@
 //! The command line as a user runs it: exit codes, what is written, and
 //! that nothing is written when a description has an error.
 
+#[path = "common/refusing_xsd.rs"]
+mod refusing_xsd;
+
+use refusing_xsd::refusing_schema;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -197,11 +201,11 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
     assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
 
-    // Max_Input_Len = 249, beyond 244 (the corpus lists it as a known finding).
-    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_modular.gsd"]);
+    // A compact station with three modules (the corpus lists it as a known finding).
+    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_compact.gsd"]);
     assert_eq!(broken.status.code(), Some(1));
     assert!(
-        stdout(&broken).contains("error[E208]"),
+        stdout(&broken).contains("error[E217]"),
         "{}",
         stdout(&broken)
     );
@@ -227,63 +231,65 @@ fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
     );
 }
 
-/// `--format json`: one object per finding, with the fields tools need, in
-/// the order of the arguments whatever thread checked each file. The GSD
-/// file is the smallest, so it is checked last (largest first), yet its
-/// findings come second.
+/// `--format json`: one object per finding, with the fields tools need,
+/// and after each file's findings a summary object (file, errors,
+/// warnings) that counts them, clean files included; in the order of the
+/// arguments whatever thread checked each file. The GSD file is the
+/// smallest, so it is checked last (largest first), yet its findings come
+/// second.
 #[test]
-fn check_json_lines_have_the_documented_fields_in_argument_order() {
+fn check_json_lines_have_the_documented_fields_and_a_summary_per_file_in_argument_order() {
     let files = [
         "../shared/corpus/gsdml-invalid/neg_missing_textid.xml",
-        "../shared/corpus/gsd/mbuesch__dummy_modular.gsd",
+        "../shared/corpus/gsd/mbuesch__dummy_compact.gsd",
         "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml",
+        "../shared/corpus/gsdml/GSDML-V2.31-LEUZE-BCL348i-20150923.xml",
     ];
     let mut args = vec!["check", "--format", "json"];
     args.extend(files);
     let output = gsdc(&args);
     assert_eq!(output.status.code(), Some(1));
-    let lines: Vec<String> = stdout(&output).lines().map(str::to_string).collect();
-    assert!(!lines.is_empty());
-    let mut seen_files = Vec::new();
-    for line in &lines {
-        assert!(
-            line.starts_with("{\"file\":") && line.ends_with('}'),
-            "{line}"
-        );
-        for field in [
-            "\"line\":",
-            "\"column\":",
-            "\"severity\":",
-            "\"code\":",
-            "\"subject\":",
-            "\"message\":",
-            "\"label\":",
-            "\"help\":",
-        ] {
-            assert!(line.contains(field), "{field} missing in {line}");
+    let objects: Vec<serde_json::Value> = stdout(&output)
+        .lines()
+        .map(|line| serde_json::from_str(line).unwrap_or_else(|e| panic!("{e}: {line}")))
+        .collect();
+    let finding_fields = [
+        "file", "line", "column", "severity", "code", "subject", "message", "label", "help",
+    ];
+    let mut summaries = Vec::new();
+    let (mut errors, mut warnings) = (0, 0);
+    for object in &objects {
+        let keys: Vec<&str> = object
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        if keys.contains(&"code") {
+            let mut sorted = finding_fields.to_vec();
+            sorted.sort_unstable();
+            assert_eq!(keys, sorted, "{object}");
+            match object["severity"].as_str().unwrap() {
+                "error" => errors += 1,
+                _ => warnings += 1,
+            }
+            continue;
         }
-        let file = line.split('"').nth(3).unwrap().to_string();
-        if seen_files.last() != Some(&file) {
-            seen_files.push(file);
-        }
+        assert_eq!(keys, ["errors", "file", "warnings"], "{object}");
+        assert_eq!(object["errors"], errors, "{object} counts its findings");
+        assert_eq!(object["warnings"], warnings, "{object} counts its findings");
+        summaries.push(object["file"].as_str().unwrap().to_string());
+        (errors, warnings) = (0, 0);
     }
-    assert_eq!(
-        seen_files, files,
-        "findings follow the order of the arguments"
-    );
-    assert!(
-        lines
+    assert_eq!(summaries, files, "one summary per file, in argument order");
+    assert_eq!(objects.last().unwrap()["errors"], 0, "the clean file too");
+    let finding = |code: &str, subject: &str| {
+        objects
             .iter()
-            .any(|l| l.contains("\"code\":\"E208\"")
-                && l.contains("\"subject\":\"Max_Input_Len\"")),
-        "{lines:#?}"
-    );
-    assert!(
-        lines
-            .iter()
-            .any(|l| l.contains("\"code\":\"E309\"") && l.contains("\"subject\":\"DataItem\"")),
-        "{lines:#?}"
-    );
+            .any(|o| o["code"] == code && o["subject"] == subject)
+    };
+    assert!(finding("E217", "Module"), "{objects:#?}");
+    assert!(finding("E309", "DataItem"), "{objects:#?}");
 }
 
 /// `--xsd DIR` adds the PI schema's findings (E399) to gsdc's own rules.
@@ -363,4 +369,401 @@ fn a_hostile_description_gives_bounded_output() {
         errors.len()
     );
     std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A copy of the MD810 description in `dir` under `name`, with each
+/// `(from, to)` replaced (each must occur).
+fn md810_copy(dir: &Path, name: &str, replacements: &[(&str, &str)]) -> PathBuf {
+    let mut text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    for (from, to) in replacements {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    std::fs::create_dir_all(dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// The MD810 without its placeholders: a description with no warning.
+const NO_PLACEHOLDERS: (&str, &str) = ("placeholder = true", "placeholder = false");
+
+#[test]
+fn deny_warnings_refuses_a_description_with_warnings_and_passes_one_without() {
+    let dir = scratch("deny");
+    let out = dir.join("out");
+    let out_arg = out.to_str().unwrap();
+    let refused = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "--out",
+        out_arg,
+        "--deny-warnings",
+    ]);
+    assert_eq!(refused.status.code(), Some(1));
+    let said = stderr(&refused);
+    assert!(
+        said.contains("warning[W101]") && said.contains("warning[W102]"),
+        "{said}"
+    );
+    assert!(
+        said.contains("nothing written") && said.contains("--deny-warnings"),
+        "{said}"
+    );
+    assert!(!out.exists(), "nothing written, not even the directory");
+
+    let clean = md810_copy(&dir, "clean.toml", &[NO_PLACEHOLDERS]);
+    let passed = gsdc(&[
+        "build",
+        clean.to_str().unwrap(),
+        "--out",
+        out_arg,
+        "--deny-warnings",
+    ]);
+    assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
+    assert!(!stderr(&passed).contains("warning"), "{}", stderr(&passed));
+    assert_eq!(files_in(&out).len(), 3);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Two descriptions that give different files of one name: exit 1 before
+/// anything is written, naming both descriptions and the file. The same
+/// file twice (the same description given twice) is one file.
+#[test]
+fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
+    let dir = scratch("collide");
+    let out = dir.join("out");
+    let out_arg = out.to_str().unwrap();
+    // x-y.toml and x_y.toml both give x_y_layout.rs; the second has another
+    // GSD file name, so the layout is the only file they share.
+    let dashed = md810_copy(&dir, "x-y.toml", &[]);
+    let underscored = md810_copy(
+        &dir,
+        "x_y.toml",
+        &[
+            ("file_name = \"MD810DP.GSD\"", "file_name = \"OTHER.GSD\""),
+            ("date = 2026-11-22", "date = 2026-11-23"),
+        ],
+    );
+    let collided = gsdc(&[
+        "build",
+        dashed.to_str().unwrap(),
+        underscored.to_str().unwrap(),
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(collided.status.code(), Some(1));
+    let said = stderr(&collided);
+    let expected = format!(
+        "error: {} and {} both give x_y_layout.rs, with different contents",
+        dashed.display(),
+        underscored.display()
+    );
+    assert!(said.contains(&expected), "{said}");
+    assert_eq!(said.matches("both give").count(), 1, "{said}");
+    assert!(said.contains("nothing written"), "{said}");
+    assert!(!out.exists());
+
+    // Two descriptions with the same GSD file_name.
+    let renamed = md810_copy(
+        &dir,
+        "other.toml",
+        &[("min_slave_interval = 1", "min_slave_interval = 2")],
+    );
+    let collided = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        renamed.to_str().unwrap(),
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(collided.status.code(), Some(1));
+    assert!(
+        stderr(&collided).contains("both give MD810DP.GSD"),
+        "{}",
+        stderr(&collided)
+    );
+    assert!(!out.exists());
+
+    let twice = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "descriptions/md810dp.toml",
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(twice.status.code(), Some(0), "{}", stderr(&twice));
+    assert_eq!(stdout(&twice).matches("wrote").count(), 3);
+    assert_eq!(files_in(&out).len(), 3);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// After a description changes its GSD's file name and its GSDML's date,
+/// the files of the old names stay in `--out`: `--check` names them (exit
+/// 1), a plain build leaves them, `--prune` removes them and nothing else.
+#[test]
+fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
+    let dir = scratch("stale");
+    let out = dir.join("out");
+    let out_arg = out.to_str().unwrap();
+    let description = md810_copy(&dir, "md810dp.toml", &[]);
+    let description = description.to_str().unwrap();
+    assert_eq!(
+        gsdc(&["build", description, "--out", out_arg])
+            .status
+            .code(),
+        Some(0)
+    );
+    std::fs::write(out.join("README.txt"), "the user's own file").unwrap();
+    md810_copy(
+        &dir,
+        "md810dp.toml",
+        &[
+            (
+                "file_name = \"MD810DP.GSD\"",
+                "file_name = \"MD810DP2.GSD\"",
+            ),
+            ("date = 2026-11-22", "date = 2026-11-23"),
+        ],
+    );
+    assert_eq!(
+        gsdc(&["build", description, "--out", out_arg])
+            .status
+            .code(),
+        Some(0)
+    );
+    let old = ["GSDML-V2.32-INOVANCE-MD810-20261122.xml", "MD810DP.GSD"];
+    for name in old {
+        assert!(
+            out.join(name).exists(),
+            "a build without --prune keeps {name}"
+        );
+    }
+
+    let check = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(check.status.code(), Some(1));
+    let listed: Vec<String> = stdout(&check)
+        .lines()
+        .filter(|l| l.starts_with("stale: "))
+        .map(str::to_string)
+        .collect();
+    assert_eq!(listed.len(), 2, "{listed:?}");
+    for (line, name) in listed.iter().zip(old) {
+        assert!(
+            line.contains(&format!("{}", out.join(name).display())),
+            "{line}"
+        );
+    }
+    assert!(stderr(&check).contains("--prune"), "{}", stderr(&check));
+
+    let pruned = gsdc(&["build", description, "--out", out_arg, "--prune"]);
+    assert_eq!(pruned.status.code(), Some(0), "{}", stderr(&pruned));
+    for name in old {
+        assert!(
+            stdout(&pruned).contains(&format!("removed {} (stale)", out.join(name).display())),
+            "{}",
+            stdout(&pruned)
+        );
+    }
+    assert_eq!(
+        files_in(&out),
+        [
+            "GSDML-V2.32-INOVANCE-MD810-20261123.xml",
+            "MD810DP2.GSD",
+            "README.txt",
+            "md810dp_layout.rs"
+        ]
+    );
+    let in_step = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(in_step.status.code(), Some(0), "{}", stdout(&in_step));
+    assert_eq!(
+        gsdc(&["build", description, "--out", out_arg, "--check", "--prune"])
+            .status
+            .code(),
+        Some(2),
+        "--prune with --check is a usage error"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Every file gsdc writes carries the mark `--check` and `--prune` know
+/// gsdc's files by, where they look for it.
+#[test]
+fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
+    for name in ["md810dp.toml", "9kdp1.toml", "mv810-pnet02.toml"] {
+        let text = std::fs::read_to_string(format!("descriptions/{name}")).unwrap();
+        let ir = gsdc::load(name, &text).0.unwrap();
+        for file in gsdc::compile(&ir).unwrap() {
+            let head = &file.contents[..file.contents.len().min(1024)];
+            let mark = gsdc::output::GENERATED_MARK.as_bytes();
+            assert!(
+                head.windows(mark.len()).any(|w| w == mark),
+                "{} has no {:?} in its first KiB",
+                file.file_name,
+                gsdc::output::GENERATED_MARK
+            );
+        }
+    }
+}
+
+/// Output that cannot be written (`> /dev/full`) is an I/O error, exit 2,
+/// never exit 0 or a panic; a reader that stops early (`| head`) is not.
+#[test]
+fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
+    let dir = scratch("full");
+    let full = || {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap()
+    };
+    let run = |args: &[&str], stdout_full: bool, stderr_full: bool| {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_gsdc"));
+        command.args(args).current_dir(env!("CARGO_MANIFEST_DIR"));
+        if stdout_full {
+            command.stdout(full());
+        }
+        if stderr_full {
+            command.stderr(full());
+        }
+        command.output().unwrap()
+    };
+    let gsd = "../shared/corpus/gsd/ivangre4__SIEM8045.gse";
+    let out = dir.join("out");
+    let build = [
+        "build",
+        "descriptions/md810dp.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    for (args, stdout_full, stderr_full) in [
+        (&["check", gsd][..], true, false),
+        (&["check", "--format", "json", gsd][..], true, false),
+        (&build[..], true, false),
+        (&build[..], false, true),
+        (&["check", "/no/such/file.gsd"][..], false, true),
+        (&["build", "/no/such/card.toml"][..], false, true),
+        (&["--help"][..], true, false),
+        (&["frobnicate"][..], false, true),
+    ] {
+        let output = run(args, stdout_full, stderr_full);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(!stderr(&output).contains("panicked"), "{}", stderr(&output));
+    }
+    // The files were written all the same; only the report was lost.
+    assert_eq!(files_in(&out).len(), 3);
+
+    // The corpus has files with errors: exit 1, as if all was read.
+    let piped = Command::new("bash")
+        .arg("-c")
+        .arg(
+            "\"$0\" check ../shared/corpus/gsd/*.gs? | head -c 1 >/dev/null; echo ${PIPESTATUS[0]}",
+        )
+        .arg(env!("CARGO_BIN_EXE_gsdc"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(stdout(&piped).trim(), "1", "{}", stderr(&piped));
+    assert!(!stderr(&piped).contains("panicked"), "{}", stderr(&piped));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+const PI_SCHEMA: &str = "../shared/reference/gsdml-xsd-v2.44";
+
+/// `build --xsd DIR` validates each GSDML against the schema before
+/// anything is written: the PI schema passes every shipped description; a
+/// schema the GSDML breaks refuses the build (exit 1, the findings as E399
+/// diagnostics on the generated file, nothing written), whether given with
+/// `--xsd` or through `GSDC_BUILD_XSD`; a directory without the schema is
+/// a usage error.
+#[test]
+fn build_xsd_validates_each_gsdml_before_anything_is_written() {
+    let dir = scratch("build-xsd");
+    let out = dir.join("out");
+    let out_arg = out.to_str().unwrap();
+    let all = [
+        "descriptions/md810dp.toml",
+        "descriptions/mv810-pnet02.toml",
+        "descriptions/9kdp1.toml",
+    ];
+    let mut args = vec!["build", "--xsd", PI_SCHEMA, "--out", out_arg];
+    args.extend(all);
+    let passed = gsdc(&args);
+    assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
+    assert_eq!(files_in(&out).len(), 7, "9kdp1 is PROFIBUS only");
+    std::fs::remove_dir_all(&out).unwrap();
+
+    let refusing = refusing_schema(&dir);
+    let refused = gsdc(&[
+        "build",
+        "descriptions/mv810-pnet02.toml",
+        "--xsd",
+        refusing.to_str().unwrap(),
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(refused.status.code(), Some(1));
+    let said = stderr(&refused);
+    assert!(said.contains("error[E399]"), "{said}");
+    assert!(
+        said.contains(
+            "--> GSDML-V2.32-MEGMEET-MV800-20230830.xml (generated from descriptions/mv810-pnet02.toml):"
+        ),
+        "{said}"
+    );
+    assert!(said.contains("Element content is not allowed"), "{said}");
+    assert!(said.contains("nothing written"), "{said}");
+    assert!(!out.exists());
+
+    let from_env = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args(["build", "descriptions/mv810-pnet02.toml", "--out", out_arg])
+        .env(gsdc::build::XSD_ENV, &refusing)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(from_env.status.code(), Some(1), "{}", stderr(&from_env));
+    assert!(stderr(&from_env).contains("error[E399]"));
+    assert!(!out.exists());
+
+    let missing = gsdc(&["build", all[0], "--xsd", "/no/such/dir", "--out", out_arg]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(stderr(&missing).contains("GSDML-DeviceProfile-v2.44.xsd is missing"));
+    assert!(!out.exists());
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// The help of each command shows every flag with an example.
+#[test]
+fn help_shows_an_example_of_every_flag() {
+    let build = stdout(&gsdc(&["build", "--help"]));
+    for flag in [
+        "--check",
+        "--prune",
+        "--deny-warnings",
+        "--xsd",
+        "GSDC_BUILD_XSD",
+    ] {
+        let example = |l: &&str| {
+            let l = l.trim_start();
+            (l.starts_with("gsdc build") || l.starts_with("GSDC_BUILD_XSD=")) && l.contains(flag)
+        };
+        assert!(
+            build.lines().any(|l| example(&l)),
+            "no example with {flag} in {build}"
+        );
+    }
+    let check = stdout(&gsdc(&["check", "--help"]));
+    for flag in ["--format json", "--xsd", "/dev/stdin"] {
+        assert!(
+            check
+                .lines()
+                .any(|l| l.contains("gsdc check") && l.contains(flag)),
+            "no example with {flag} in {check}"
+        );
+    }
 }

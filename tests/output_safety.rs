@@ -1,6 +1,6 @@
 //! Writing output when the disk says no: `gsdc build` exits 2 with the path
 //! and the OS error, `gsdc::build::generate` and
-//! `gsdc::output::write_if_changed` return them, and no partial, truncated
+//! `gsdc::output::write_files` return them, and no partial, truncated
 //! or temporary file is left behind; a file already there is never replaced
 //! by a broken one.
 //!
@@ -9,7 +9,7 @@
 //! by the failing-disk unit tests in `src/output.rs`. Permission bits are
 //! not used: root ignores them.
 
-use gsdc::output::{write_if_changed, Outcome};
+use gsdc::output::{write_files, Outcome};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -140,7 +140,7 @@ fn a_missing_output_directory_is_created() {
     }];
     let lib_out = dir.join("c/d");
     assert_eq!(
-        write_if_changed(&lib_out, &files).unwrap(),
+        write_files(&lib_out, &files, false).unwrap().outcomes,
         [Outcome::Written]
     );
     assert_eq!(std::fs::read(lib_out.join("X.GSD")).unwrap(), b"x");
@@ -281,5 +281,345 @@ fn a_failure_after_some_files_were_written_names_them() {
         MD810_FILES.len(),
         "a temporary is left"
     );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Two versions of the MD810 description, `a/md810dp.toml` and
+/// `b/md810dp.toml`: the same file names, different contents in every file
+/// (each header carries the description's fingerprint).
+struct TwoVersions {
+    descriptions: [PathBuf; 2],
+    /// Each version's files, by name.
+    sets: [Vec<(String, Vec<u8>)>; 2],
+}
+
+impl TwoVersions {
+    fn new(dir: &Path) -> TwoVersions {
+        let text = std::fs::read_to_string(MD810).unwrap();
+        let versions = [
+            text.clone(),
+            text.replace("min_slave_interval = 1", "min_slave_interval = 2"),
+        ];
+        assert_ne!(versions[0], versions[1]);
+        let descriptions = [0, 1].map(|i| {
+            let folder = dir.join(["a", "b"][i]);
+            std::fs::create_dir_all(&folder).unwrap();
+            let path = folder.join("md810dp.toml");
+            std::fs::write(&path, &versions[i]).unwrap();
+            path
+        });
+        let sets = [0, 1].map(|i| {
+            let ir = gsdc::load("md810dp.toml", &versions[i]).0.unwrap();
+            let mut files: Vec<(String, Vec<u8>)> = gsdc::compile(&ir)
+                .unwrap()
+                .into_iter()
+                .map(|a| (a.file_name, a.contents))
+                .collect();
+            files.sort();
+            files
+        });
+        for ((name_a, a), (_, b)) in sets[0].iter().zip(&sets[1]) {
+            assert_ne!(a, b, "{name_a} is the same in both versions");
+        }
+        TwoVersions { descriptions, sets }
+    }
+
+    /// Which version `dir` holds, whole: every file of it and nothing else.
+    /// Panics on a mixed set, a partial file or a file left over.
+    #[track_caller]
+    fn version_in(&self, dir: &Path) -> usize {
+        let mut found: Vec<(String, Vec<u8>)> = names_in(dir)
+            .into_iter()
+            .map(|name| {
+                let contents = std::fs::read(dir.join(&name)).unwrap();
+                (name, contents)
+            })
+            .collect();
+        found.sort();
+        let version = self.sets.iter().position(|set| *set == found);
+        version.unwrap_or_else(|| {
+            let which: Vec<String> = found
+                .iter()
+                .map(|(name, contents)| {
+                    let from = self
+                        .sets
+                        .iter()
+                        .position(|set| set.iter().any(|(n, c)| n == name && c == contents));
+                    format!("{name}: {from:?}")
+                })
+                .collect();
+            panic!("a mixed or partial set: {which:?}")
+        })
+    }
+}
+
+/// An output that is a symbolic link to a file elsewhere is replaced by a
+/// regular file; the file it pointed to is not written. A link placed
+/// where a killed build's temporary would be is removed, not followed.
+#[test]
+fn symbolic_links_in_the_output_directory_are_never_written_through() {
+    let dir = scratch("symlink");
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    let victim = dir.join("victim");
+    std::fs::write(&victim, "not gsdc's").unwrap();
+    std::os::unix::fs::symlink(&victim, out.join(MD810_FILES[0])).unwrap();
+    let planted = out.join(format!(".{}.gsdc-1-0000000000000001.tmp", MD810_FILES[1]));
+    std::os::unix::fs::symlink(&victim, &planted).unwrap();
+
+    let output = build(Path::new(MD810), &out);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "not gsdc's");
+    let gsd = std::fs::symlink_metadata(out.join(MD810_FILES[0])).unwrap();
+    assert!(
+        gsd.file_type().is_file(),
+        "the output is a file, not a link"
+    );
+    assert!(
+        stderr(&output).contains(&format!(
+            "removed {}, left by a gsdc build that was interrupted",
+            planted.display()
+        )),
+        "{}",
+        stderr(&output)
+    );
+    let mut expected = MD810_FILES.map(String::from).to_vec();
+    expected.sort();
+    assert_eq!(names_in(&out), expected);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn a_replaced_file_keeps_its_mode() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("mode");
+    old_files(&dir);
+    let gsd = dir.join(MD810_FILES[0]);
+    std::fs::set_permissions(&gsd, std::fs::Permissions::from_mode(0o600)).unwrap();
+    let output = build(Path::new(MD810), &dir);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_ne!(std::fs::read_to_string(&gsd).unwrap(), "old MD810DP.GSD");
+    let mode = std::fs::metadata(&gsd).unwrap().permissions().mode();
+    assert_eq!(mode & 0o777, 0o600);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A build into a directory another holds waits for it: while this test
+/// holds the lock (`flock`, as gsdc takes it), gsdc changes nothing; once
+/// it is released, gsdc writes.
+#[test]
+fn a_build_waits_for_the_directory_another_build_holds() {
+    let dir = scratch("lock");
+    let versions = TwoVersions::new(&dir);
+    let out = dir.join("out");
+    assert_eq!(
+        build(&versions.descriptions[0], &out).status.code(),
+        Some(0)
+    );
+    let held = std::fs::File::open(&out).unwrap();
+    held.lock().unwrap();
+    let mut waiting = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .arg("build")
+        .arg(&versions.descriptions[1])
+        .arg("--out")
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    assert!(waiting.try_wait().unwrap().is_none(), "gsdc did not wait");
+    assert_eq!(versions.version_in(&out), 0, "nothing changed while held");
+    held.unlock().unwrap();
+    assert!(waiting.wait().unwrap().success());
+    assert_eq!(versions.version_in(&out), 1);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Two builds of the two versions into one directory at once, 25 times:
+/// each time the directory holds one version whole. With `unshare` (PID
+/// namespaces, as containers sharing a volume have) both builds run as
+/// process 1, 25 times more.
+#[test]
+fn concurrent_builds_of_different_descriptions_never_mix_their_files() {
+    let dir = scratch("concurrent");
+    let versions = TwoVersions::new(&dir);
+    let out = dir.join("out");
+    let gsdc = env!("CARGO_BIN_EXE_gsdc");
+    let unshared = Command::new("unshare")
+        .args(["--pid", "--fork", "true"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !unshared {
+        eprintln!("unshare --pid does not work here: the builds run without PID namespaces only");
+    }
+    let wrappers: &[&[&str]] = if unshared {
+        &[&[], &["unshare", "--pid", "--fork"]]
+    } else {
+        &[&[]]
+    };
+    let mut seen = [0, 0];
+    for wrapper in wrappers {
+        for _ in 0..25 {
+            let children: Vec<_> = versions
+                .descriptions
+                .iter()
+                .map(|description| {
+                    let mut command = match wrapper.split_first() {
+                        Some((program, args)) => {
+                            let mut c = Command::new(program);
+                            c.args(args).arg(gsdc);
+                            c
+                        }
+                        None => Command::new(gsdc),
+                    };
+                    command
+                        .arg("build")
+                        .arg(description)
+                        .arg("--out")
+                        .arg(&out)
+                        .stdout(std::process::Stdio::null())
+                        .stderr(std::process::Stdio::piped())
+                        .spawn()
+                        .unwrap()
+                })
+                .collect();
+            for child in children {
+                let output = child.wait_with_output().unwrap();
+                assert!(output.status.success(), "{}", stderr(&output));
+                assert!(
+                    !stderr(&output).contains("interrupted"),
+                    "one build took the other's temporaries for leftovers: {}",
+                    stderr(&output)
+                );
+            }
+            seen[versions.version_in(&out)] += 1;
+        }
+    }
+    eprintln!(
+        "the directory held version a {} and b {} times",
+        seen[0], seen[1]
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A build killed in the middle of an `fsync` (strace injects SIGKILL into
+/// the second one: the GSD's temporary is complete, the GSDML's being
+/// synced) leaves its temporaries and the old files; the next build removes
+/// the temporaries, says so, and writes its set whole.
+#[test]
+fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
+    let dir = scratch("killed");
+    let versions = TwoVersions::new(&dir);
+    let out = dir.join("out");
+    assert_eq!(
+        build(&versions.descriptions[0], &out).status.code(),
+        Some(0)
+    );
+    let killed = Command::new("strace")
+        .args(["-f", "-qq", "-o", "/dev/null", "-e", "trace=fsync"])
+        .args(["-e", "inject=fsync:signal=KILL:when=2"])
+        .arg(env!("CARGO_BIN_EXE_gsdc"))
+        .arg("build")
+        .arg(&versions.descriptions[1])
+        .arg("--out")
+        .arg(&out)
+        .output();
+    // strace dies of the signal its process died of.
+    let killed_by_sigkill = |o: &Output| {
+        use std::os::unix::process::ExitStatusExt;
+        o.status.signal() == Some(9) || o.status.code() == Some(128 + 9)
+    };
+    let Some(killed) = killed.ok().filter(killed_by_sigkill) else {
+        eprintln!(
+            "strace cannot inject a SIGKILL here: the case is left to the kills at random times"
+        );
+        std::fs::remove_dir_all(dir).unwrap();
+        return;
+    };
+    let leftovers: Vec<String> = names_in(&out)
+        .into_iter()
+        .filter(|name| name.contains(".gsdc-"))
+        .collect();
+    assert_eq!(
+        leftovers.len(),
+        2,
+        "{:?}: {}",
+        names_in(&out),
+        stderr(&killed)
+    );
+    let after = build(&versions.descriptions[1], &out);
+    assert_eq!(after.status.code(), Some(0), "{}", stderr(&after));
+    for leftover in &leftovers {
+        let named = format!(
+            "removed {}, left by a gsdc build that was interrupted",
+            out.join(leftover).display()
+        );
+        assert!(stderr(&after).contains(&named), "{}", stderr(&after));
+    }
+    assert_eq!(versions.version_in(&out), 1);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Builds killed at random times, 40 of them, alternating the two
+/// versions: after each, every output file is one version's whole file
+/// (never a partial one), and after a build that finishes the directory
+/// holds its version whole and no temporary.
+#[test]
+fn builds_killed_at_random_times_never_leave_a_partial_file() {
+    let dir = scratch("random-kills");
+    let versions = TwoVersions::new(&dir);
+    let out = dir.join("out");
+    assert_eq!(
+        build(&versions.descriptions[0], &out).status.code(),
+        Some(0)
+    );
+    let started = std::time::Instant::now();
+    assert_eq!(
+        build(&versions.descriptions[1], &out).status.code(),
+        Some(0)
+    );
+    let duration = started.elapsed();
+    let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+    let mut left = 0;
+    for round in 0..40 {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        let delay = duration.mul_f64((state % 1000) as f64 / 1000.0);
+        let mut child = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+            .arg("build")
+            .arg(&versions.descriptions[round % 2])
+            .arg("--out")
+            .arg(&out)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(delay);
+        let _ = child.kill();
+        let _ = child.wait();
+        for name in names_in(&out) {
+            let contents = std::fs::read(out.join(&name)).unwrap();
+            if name.contains(".gsdc-") {
+                left += 1;
+                continue; // a temporary may be partial: nobody reads it
+            }
+            assert!(
+                versions
+                    .sets
+                    .iter()
+                    .flatten()
+                    .any(|(n, c)| *n == name && *c == contents),
+                "{name} is no version's whole file after round {round}"
+            );
+        }
+    }
+    eprintln!("40 kills left {left} temporaries");
+    assert_eq!(
+        build(&versions.descriptions[0], &out).status.code(),
+        Some(0)
+    );
+    assert_eq!(versions.version_in(&out), 0);
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -1,18 +1,50 @@
-//! `gsdc check`: GSD and GSDML files against gsdc's rules. Files are checked
-//! in parallel; what is printed follows the order of the arguments.
+//! `gsdc check`: GSD and GSDML files against gsdc's rules. A file's kind
+//! comes from its content, not its name. Files are checked in parallel;
+//! each file's findings are printed as soon as it and the files before it
+//! are done, in the order of the arguments.
 
-use super::{display_name, not_shown, say, Status, MAX_SHOWN};
-use gsdc::output::ReadError;
+use super::{display_name, say, warn, Status, MAX_SHOWN};
+use gsdc::diag::{json_string, Diagnostic};
+use gsdc::file_kind::FileKind;
+use gsdc::output::{read_device_file, ReadError};
+use gsdc::xsd::Schema;
 use gsdc::{Diagnostics, Source};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Condvar, Mutex, MutexGuard};
+
+pub const EXAMPLES: &str = "Examples:
+  gsdc check MD810DP.GSD GSDML-V2.32-MEGMEET-MV800-20230830.xml
+  gsdc check dist/*                     # device files are told by their content; any other file is one line
+  gsdc check --format json vendor/*     # a JSON object per finding, and {\"file\",\"errors\",\"warnings\"} per file
+  gsdc check --xsd ../pi/gsdml-xsd-v2.44 vendor/*.xml   # also the PI schema (feature `xsd`)
+  unzip -p device.zip '*.xml' | gsdc check /dev/stdin
+
+Exit codes: 0 no errors, 1 a file has errors or is neither a GSD nor a GSDML file,
+2 usage or I/O error (a file that cannot be read, output that cannot be written).";
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// GSD and GSDML files, told apart by their content (GSD: a `#Profibus_DP`
+    /// line; GSDML: XML), in UTF-8, ISO-8859-1 or UTF-16; `/dev/stdin` too.
+    #[arg(required = true, value_name = "FILE")]
+    files: Vec<PathBuf>,
+    /// How findings are printed: rendered with a summary line per file, or one
+    /// JSON object per finding and a summary object per file.
+    #[arg(long, value_enum, default_value = "human")]
+    format: Format,
+    /// Also validate GSDML files against the PI schema in DIR
+    /// (GSDML-DeviceProfile-v2.44.xsd and its imports; needs the `xsd` feature).
+    #[arg(long, value_name = "DIR")]
+    xsd: Option<PathBuf>,
+}
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
     /// Rendered diagnostics and a summary per file.
     Human,
-    /// One JSON object per finding, one per line.
+    /// One JSON object per finding, one per line; each file ends with
+    /// {"file":...,"errors":N,"warnings":M}.
     Json,
 }
 
@@ -29,187 +61,227 @@ enum Report {
     Unreadable(String),
 }
 
-pub fn run(files: &[PathBuf], format: Format, xsd: Option<&Path>) -> Status {
+pub fn run(args: &Args) -> Status {
     // Each thread checks whole files: the rules, then the schema when asked
     // for, with a schema of its own (libxml2's contexts must stay on the
     // thread that made them; compiling one takes milliseconds).
-    let load = || xsd.map(load_schema).transpose();
-    let check = |schema: &mut Option<Schema>, path: &Path| check_one(path, schema.as_mut(), format);
-    let reports = match in_parallel(files, load, check) {
-        Ok(reports) => reports,
-        Err(why) => {
-            eprintln!("error: --xsd: {why}");
-            return Status::UsageOrIo;
-        }
+    let load = || args.xsd.as_deref().map(Schema::load).transpose();
+    let check =
+        |schema: &mut Option<Schema>, path: &Path| check_one(path, schema.as_mut(), args.format);
+    let mut status = Status::Ok;
+    let print_each = |i: usize, report| {
+        status = status.max(print(&args.files[i], report));
     };
-    files
-        .iter()
-        .zip(reports)
-        .map(|(path, report)| print(&display_name(path), report))
-        .max()
-        .unwrap_or(Status::Ok)
+    if let Err(why) = in_order(&args.files, load, check, print_each) {
+        warn(&format!("error: --xsd: {why}"));
+        return Status::UsageOrIo;
+    }
+    status
 }
 
-#[cfg(feature = "xsd")]
-type Schema = gsdc::xsd::Schema;
+/// How many files past the first one not yet printed may be taken: the
+/// bound of the reports waiting to be printed, whatever the number of files.
+const WINDOW: usize = 64;
 
-/// Without the `xsd` feature no schema is ever loaded.
-#[cfg(not(feature = "xsd"))]
-enum Schema {}
-
-#[cfg(feature = "xsd")]
-fn load_schema(dir: &Path) -> Result<Schema, String> {
-    gsdc::xsd::Schema::load(dir)
-}
-
-#[cfg(not(feature = "xsd"))]
-fn load_schema(_: &Path) -> Result<Schema, String> {
-    Err("this gsdc was built without the `xsd` feature: build it with `--features xsd`".into())
-}
-
-/// The PI schema's findings for a GSDML file, read from `path` as libxml2
-/// streams it; `text` places them.
-#[cfg(feature = "xsd")]
-fn schema_findings(schema: &mut Schema, path: &Path, text: &str) -> Diagnostics {
-    schema.validate_file(path, text)
-}
-
-#[cfg(not(feature = "xsd"))]
-fn schema_findings(schema: &mut Schema, _: &Path, _: &str) -> Diagnostics {
-    match *schema {}
-}
-
-fn is_gsdml(path: &Path) -> bool {
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
+/// What the threads of [`in_order`] share.
+struct Queue<R, E> {
+    /// Reports done and not yet handed on, by file.
+    done: BTreeMap<usize, R>,
+    /// The next file to hand on.
+    next_out: usize,
+    started: Vec<bool>,
+    workers: usize,
+    failed: Option<E>,
 }
 
 /// `job` for every file, on as many threads as the machine has cores, each
-/// with a state of its own from `init`; the results in the order of `files`.
-/// The largest files are taken first, so that a large file taken last does
-/// not leave the other threads idle while it is done, and its freed memory
-/// serves the smaller ones. `Err` when a thread's `init` fails.
-fn in_parallel<S, R: Send, E: Send>(
+/// with a state of its own from `init`; `sink` gets each result in the
+/// order of `files` as soon as it and every result before it are done.
+/// Threads take files from a window of [`WINDOW`] files from the first not
+/// yet handed on, so at most that many results wait, and in it the largest
+/// first, so that a large file taken last does not leave the other threads
+/// idle. `Err` when a thread's `init` fails.
+fn in_order<S, R: Send, E: Send>(
     files: &[PathBuf],
     init: impl Fn() -> Result<S, E> + Sync,
     job: impl Fn(&mut S, &Path) -> R + Sync,
-) -> Result<Vec<R>, E> {
-    let slots: Vec<Mutex<Option<R>>> = files.iter().map(|_| Mutex::new(None)).collect();
-    let mut order: Vec<usize> = (0..files.len()).collect();
-    let size = |i: &usize| std::fs::metadata(&files[*i]).map_or(0, |m| m.len());
-    order.sort_by_cached_key(|i| std::cmp::Reverse(size(i)));
-    let next = AtomicUsize::new(0);
+    mut sink: impl FnMut(usize, R),
+) -> Result<(), E> {
+    let size = |path: &PathBuf| std::fs::metadata(path).map_or(0, |m| m.len());
+    let sizes: Vec<u64> = files.iter().map(size).collect();
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .clamp(1, files.len().max(1));
-    let work = || -> Result<(), E> {
-        let mut state = init()?;
-        while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
-            let result = job(&mut state, &files[i]);
-            *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(result);
+    let queue = Mutex::new(Queue {
+        done: BTreeMap::new(),
+        next_out: 0,
+        started: vec![false; files.len()],
+        workers,
+        failed: None,
+    });
+    let changed = Condvar::new();
+    let lock = || queue.lock().unwrap_or_else(|e| e.into_inner());
+    let work = || {
+        // Counts the thread out however it ends, a panic included, so that
+        // the printing thread never waits for a result that cannot come.
+        let _leaving = Leaving(&queue, &changed);
+        let mut state = match init() {
+            Ok(state) => state,
+            Err(e) => {
+                lock().failed.get_or_insert(e);
+                return;
+            }
+        };
+        let mut q = lock();
+        loop {
+            if q.failed.is_some() {
+                return;
+            }
+            let window = q.next_out..files.len().min(q.next_out + WINDOW);
+            let largest = window
+                .filter(|&i| !q.started[i])
+                .max_by_key(|&i| (sizes[i], std::cmp::Reverse(i)));
+            match largest {
+                Some(i) => {
+                    q.started[i] = true;
+                    drop(q);
+                    let result = job(&mut state, &files[i]);
+                    q = lock();
+                    q.done.insert(i, result);
+                    changed.notify_all();
+                }
+                None if q.started.iter().skip(q.next_out).all(|s| *s) => return,
+                None => q = changed.wait(q).unwrap_or_else(|e| e.into_inner()),
+            }
         }
-        Ok(())
     };
     std::thread::scope(|scope| {
-        let threads: Vec<_> = (0..workers).map(|_| scope.spawn(work)).collect();
-        // The scope joins whatever threads are left after an `Err`.
-        threads.into_iter().try_for_each(|thread| {
-            thread
-                .join()
-                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
-        })
-    })?;
-    Ok(slots
-        .into_iter()
-        .map(|slot| {
-            slot.into_inner()
-                .unwrap_or_else(|e| e.into_inner())
-                .expect("every file was done")
-        })
-        .collect())
+        for _ in 0..workers {
+            scope.spawn(work);
+        }
+        let mut q = lock();
+        while q.next_out < files.len() && q.failed.is_none() {
+            let next = q.next_out;
+            match q.done.remove(&next) {
+                Some(result) => {
+                    q.next_out += 1;
+                    changed.notify_all();
+                    drop(q);
+                    sink(next, result);
+                    q = lock();
+                }
+                // The threads are gone (one panicked): the scope re-raises it.
+                None if q.workers == 0 => break,
+                None => q = changed.wait(q).unwrap_or_else(|e| e.into_inner()),
+            }
+        }
+    });
+    match queue.into_inner().unwrap_or_else(|e| e.into_inner()).failed {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+/// Takes a worker off [`Queue::workers`] when dropped.
+struct Leaving<'a, R, E>(&'a Mutex<Queue<R, E>>, &'a Condvar);
+
+impl<R, E> Drop for Leaving<'_, R, E> {
+    fn drop(&mut self) {
+        let mut q: MutexGuard<'_, Queue<R, E>> = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        q.workers -= 1;
+        self.1.notify_all();
+    }
 }
 
 fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report {
-    let name = display_name(path);
-    let (text, diagnostics) = match read(path) {
-        Ok(bytes) => check_bytes(path, bytes, schema),
-        Err(ReadError::TooLarge(d)) => (String::new(), Diagnostics(vec![d])),
+    // JSON escapes the name itself; the human output shows it escaped.
+    let name = match format {
+        Format::Human => display_name(path),
+        Format::Json => path.to_string_lossy().into_owned(),
+    };
+    let (kind, bytes) = match read_device_file(path) {
+        Ok(read) => read,
+        Err(ReadError::TooLarge(d)) => return render(&name, "", &Diagnostics(vec![d]), format),
         Err(ReadError::Io(e)) => return Report::Unreadable(e.to_string()),
     };
-    render(
-        &Source {
-            name: &name,
-            text: &text,
+    match kind {
+        FileKind::Gsd => {
+            let (text, diagnostics) = gsdc::gsd::check_bytes(&bytes);
+            render(&name, &text, &diagnostics, format)
+        }
+        FileKind::Gsdml => match gsdc::gsdml::decode(&bytes) {
+            Ok(text) => {
+                let diagnostics = check_gsdml(path, &text, schema);
+                render(&name, &text, &diagnostics, format)
+            }
+            Err(d) => {
+                let text = String::from_utf8_lossy(&bytes);
+                render(&name, &text, &Diagnostics(vec![d]), format)
+            }
         },
-        &diagnostics,
-        format,
+        FileKind::Neither => neither(&name, format),
+    }
+}
+
+/// gsdc's rules, then the schema's findings when there is a schema.
+fn check_gsdml(path: &Path, text: &str, schema: Option<&mut Schema>) -> Diagnostics {
+    let mut diagnostics = gsdc::gsdml::check(text, own_name(path));
+    if let Some(schema) = schema {
+        // libxml2 streams a file from disk faster than it builds a tree from
+        // the text; a stream (`/dev/stdin`) can be read once only.
+        let findings = if is_stream(path) {
+            schema.validate(text)
+        } else {
+            schema.validate_file(path, text)
+        };
+        diagnostics.extend(findings);
+    }
+    diagnostics
+}
+
+/// The file's own name, for the naming-convention rules: a stream handed
+/// over by the shell (`/dev/stdin`, `<(...)`) has none.
+fn own_name(path: &Path) -> Option<&str> {
+    if is_stream(path) {
+        return None;
+    }
+    path.file_name().and_then(|name| name.to_str())
+}
+
+fn is_stream(path: &Path) -> bool {
+    path.starts_with("/dev") || path.starts_with("/proc") || !path.is_file()
+}
+
+/// A file that is neither a GSD nor a GSDML file: one line (or one JSON
+/// object and the file's summary), an error.
+fn neither(name: &str, format: Format) -> Report {
+    let diagnostic = Diagnostic::error(
+        "E400",
+        "neither a GSD file (no line starts with #Profibus_DP) nor a GSDML file (not XML)",
     )
-}
-
-/// The file's bytes, refused by size before they are read when they are
-/// more than its reader takes.
-fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
-    let limit = if is_gsdml(path) {
-        &gsdc::gsdml::INPUT_LIMIT
-    } else {
-        &gsdc::gsd::INPUT_LIMIT
+    .help("gsdc check reads GSD and GSDML files; this one was not checked");
+    let output = match format {
+        Format::Human => format!("error[E400]: {name} is {}: not checked", diagnostic.message),
+        Format::Json => {
+            let source = Source { name, text: "" };
+            format!(
+                "{}\n{}",
+                source.to_json(&diagnostic),
+                summary_json(name, 1, 0)
+            )
+        }
     };
-    gsdc::output::read_input(path, limit)
-}
-
-/// GSDML by its `.xml` extension (with the schema's findings after the
-/// rules', when there is a schema), GSD otherwise.
-fn check_bytes(path: &Path, bytes: Vec<u8>, schema: Option<&mut Schema>) -> (String, Diagnostics) {
-    if is_gsdml(path) {
-        // UTF-8, or ISO-8859-1 when the XML declaration says so.
-        let text = match gsdc::gsdml::decode(&bytes) {
-            Ok(text) => Decoded::of(&bytes, text),
-            Err(d) => return (Decoded::AsIs.text(bytes), Diagnostics(vec![d])),
-        }
-        .text(bytes);
-        let file_name = path.file_name().map(|f| f.to_string_lossy().into_owned());
-        let mut diagnostics = gsdc::gsdml::check(&text, file_name.as_deref());
-        if let Some(schema) = schema {
-            diagnostics.extend(schema_findings(schema, path, &text));
-        }
-        (text, diagnostics)
-    } else {
-        let text = Decoded::of(&bytes, gsdc::gsd::decode(&bytes)).text(bytes);
-        let diagnostics = gsdc::gsd::check(&text);
-        (text, diagnostics)
-    }
-}
-
-/// A file's text: its bytes as they are when they are UTF-8 and nothing was
-/// taken off (most files), else the converted text. Keeping the bytes spares
-/// a copy, whose fresh pages cost a megabyte file more than its check.
-enum Decoded {
-    AsIs,
-    Converted(String),
-}
-
-impl Decoded {
-    fn of(bytes: &[u8], text: std::borrow::Cow<'_, str>) -> Decoded {
-        match text {
-            std::borrow::Cow::Borrowed(t) if t.len() == bytes.len() => Decoded::AsIs,
-            text => Decoded::Converted(text.into_owned()),
-        }
-    }
-
-    /// The text, from the bytes it was decoded from (as they are, with any
-    /// byte that is not UTF-8 replaced, for a file that failed to decode).
-    fn text(self, bytes: Vec<u8>) -> String {
-        match self {
-            Decoded::AsIs => String::from_utf8(bytes)
-                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()),
-            Decoded::Converted(text) => text,
-        }
+    Report::Checked {
+        output,
+        not_shown: None,
+        errors: 1,
     }
 }
 
 /// The findings as they are printed: at most [`MAX_SHOWN`], rendered or as
 /// JSON lines, and the summary.
-fn render(source: &Source<'_>, diagnostics: &Diagnostics, format: Format) -> Report {
+fn render(name: &str, text: &str, diagnostics: &Diagnostics, format: Format) -> Report {
+    let source = Source { name, text };
     let errors = diagnostics.errors().count();
     let warnings = diagnostics.iter().count() - errors;
     let shown = diagnostics.iter().take(MAX_SHOWN);
@@ -217,20 +289,28 @@ fn render(source: &Source<'_>, diagnostics: &Diagnostics, format: Format) -> Rep
         Format::Human => shown.map(|d| source.render(d)).collect(),
         Format::Json => shown.map(|d| source.to_json(d)).collect(),
     };
-    if format == Format::Human {
-        lines.push(format!(
-            "{}: {errors} error(s), {warnings} warning(s)",
-            source.name
-        ));
-    }
+    lines.push(match format {
+        Format::Human => format!("{name}: {errors} error(s), {warnings} warning(s)"),
+        Format::Json => summary_json(name, errors, warnings),
+    });
+    let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
     Report::Checked {
         output: lines.join("\n"),
-        not_shown: not_shown(source.name, diagnostics),
+        not_shown: (hidden > 0).then(|| format!("{name}: {hidden} more finding(s) not shown")),
         errors,
     }
 }
 
-fn print(name: &str, report: Report) -> Status {
+/// The object that ends a file's findings in JSON: CI can count clean files
+/// too.
+fn summary_json(name: &str, errors: usize, warnings: usize) -> String {
+    format!(
+        "{{\"file\":{},\"errors\":{errors},\"warnings\":{warnings}}}",
+        json_string(name)
+    )
+}
+
+fn print(path: &Path, report: Report) -> Status {
     let (output, not_shown, errors) = match report {
         Report::Checked {
             output,
@@ -238,19 +318,68 @@ fn print(name: &str, report: Report) -> Status {
             errors,
         } => (output, not_shown, errors),
         Report::Unreadable(why) => {
-            eprintln!("error: cannot read {name}: {why}");
+            warn(&format!("error: cannot read {}: {why}", display_name(path)));
             return Status::UsageOrIo;
         }
     };
-    if !output.is_empty() {
-        say(&output);
-    }
+    say(&output);
     if let Some(note) = not_shown {
-        eprintln!("{note}");
+        warn(&note);
     }
     if errors > 0 {
         Status::InputErrors
     } else {
         Status::Ok
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// A result that counts how many of its kind are alive.
+    struct Counted<'a>(&'a AtomicUsize);
+
+    impl Drop for Counted<'_> {
+        fn drop(&mut self) {
+            self.0.fetch_sub(1, Ordering::SeqCst);
+        }
+    }
+
+    /// Results come in order, and however many files there are, no more
+    /// than the window and the threads' files in flight are ever held.
+    #[test]
+    fn results_come_in_order_and_at_most_a_window_waits() {
+        let files: Vec<PathBuf> = (0..2_000).map(|i| PathBuf::from(format!("f{i}"))).collect();
+        let alive = AtomicUsize::new(0);
+        let most = AtomicUsize::new(0);
+        let job = |_: &mut (), path: &Path| {
+            let now = alive.fetch_add(1, Ordering::SeqCst) + 1;
+            most.fetch_max(now, Ordering::SeqCst);
+            // The first file is slow: the others must wait for it in the window.
+            if path == Path::new("f0") {
+                std::thread::sleep(std::time::Duration::from_millis(200));
+            }
+            (path.to_path_buf(), Counted(&alive))
+        };
+        let mut seen = Vec::new();
+        let sink = |i: usize, (path, counted): (PathBuf, Counted<'_>)| {
+            seen.push((i, path));
+            drop(counted);
+        };
+        in_order(&files, || Ok::<(), ()>(()), job, sink).unwrap();
+        let expected: Vec<(usize, PathBuf)> = files.iter().cloned().enumerate().collect();
+        assert_eq!(seen, expected);
+        let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let most = most.load(Ordering::SeqCst);
+        assert!(most <= WINDOW + workers, "{most} results held at once");
+    }
+
+    #[test]
+    fn a_failing_init_is_the_error() {
+        let files = vec![PathBuf::from("a"), PathBuf::from("b")];
+        let result = in_order(&files, || Err::<(), _>("no schema"), |_, _| (), |_, _| {});
+        assert_eq!(result, Err("no schema"));
     }
 }

@@ -4,8 +4,9 @@ mod build;
 mod check;
 
 use clap::{Parser, Subcommand};
-use gsdc::{Diagnostics, Source};
-use std::path::{Path, PathBuf};
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 #[derive(Parser)]
 #[command(
@@ -22,36 +23,11 @@ pub struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Generate the device files of each description, each checked before it is written.
-    #[command(
-        after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc build descriptions/*.toml --out dist --check   # in CI: are the shipped files in step?"
-    )]
-    Build {
-        /// Description files (TOML).
-        #[arg(required = true, value_name = "DESCRIPTION")]
-        descriptions: Vec<PathBuf>,
-        /// Directory to write into; created if missing.
-        #[arg(long, short, default_value = ".", value_name = "DIR")]
-        out: PathBuf,
-        /// Write nothing: exit 1 with a diff if a file in DIR differs from what the descriptions give.
-        #[arg(long)]
-        check: bool,
-    },
+    #[command(after_help = build::EXAMPLES)]
+    Build(build::Args),
     /// Check GSD and GSDML files against gsdc's rules.
-    #[command(
-        after_help = "Examples:\n  gsdc check MD810DP.GSD\n  gsdc check GSDML-V2.32-MEGMEET-MV800-20230830.xml"
-    )]
-    Check {
-        /// GSD (.gsd, .gse, ...) or GSDML (.xml) files.
-        #[arg(required = true, value_name = "FILE")]
-        files: Vec<PathBuf>,
-        /// How findings are printed.
-        #[arg(long, value_enum, default_value = "human")]
-        format: check::Format,
-        /// Also validate GSDML files against the PI schema in DIR
-        /// (GSDML-DeviceProfile-v2.44.xsd and its imports; needs the `xsd` feature).
-        #[arg(long, value_name = "DIR")]
-        xsd: Option<PathBuf>,
-    },
+    #[command(after_help = check::EXAMPLES)]
+    Check(check::Args),
 }
 
 /// What a run ends with, as the exit code says it.
@@ -68,50 +44,120 @@ impl Status {
     }
 }
 
-pub fn run(cli: Cli) -> Status {
+/// Parses the arguments and runs the command. Help, the version and usage
+/// errors are printed as clap prints them, and exit 0, 0 and 2, unless they
+/// cannot be printed (exit 2).
+pub fn main() -> Status {
+    let status = match Cli::try_parse() {
+        Ok(cli) => run(cli),
+        Err(e) => {
+            if e.print().is_err() {
+                OUTPUT_FAILED.store(true, Ordering::Relaxed);
+            }
+            if e.use_stderr() {
+                Status::UsageOrIo
+            } else {
+                Status::Ok
+            }
+        }
+    };
+    note_failure(std::io::stdout().flush());
+    if OUTPUT_FAILED.load(Ordering::Relaxed) {
+        return Status::UsageOrIo;
+    }
+    status
+}
+
+fn run(cli: Cli) -> Status {
     match cli.command {
-        Command::Build {
-            descriptions,
-            out,
-            check,
-        } => build::run(&descriptions, &out, check),
-        Command::Check { files, format, xsd } => check::run(&files, format, xsd.as_deref()),
+        Command::Build(args) => build::run(&args),
+        Command::Check(args) => check::run(&args),
     }
 }
+
+/// Set when stdout or stderr could not be written: output was lost, and
+/// the run exits 2 whatever else it did.
+static OUTPUT_FAILED: AtomicBool = AtomicBool::new(false);
 
 /// Diagnostics printed per file at most: a hostile file can have a hundred
 /// thousand findings, and the first hundred say what is wrong.
 const MAX_SHOWN: usize = 100;
 
-/// Prints the first [`MAX_SHOWN`] diagnostics to stderr, rendered against their source.
-fn report(name: &str, text: &str, diagnostics: &Diagnostics) {
-    let source = Source { name, text };
-    for d in diagnostics.iter().take(MAX_SHOWN) {
-        eprintln!("{}", source.render(d));
+/// Prints text to stdout, with a line end after it.
+fn say(text: &str) {
+    print_to(&mut std::io::stdout().lock(), text);
+}
+
+/// Prints text to stderr, with a line end after it.
+fn warn(text: &str) {
+    print_to(&mut std::io::stderr().lock(), text);
+}
+
+/// A stream that cannot be written (`> /dev/full`) loses output: noted for
+/// the exit code, never a panic. A reader that went away (`gsdc check ... |
+/// head`) wanted no more: that is no failure, nor a reason to stop writing
+/// files.
+fn print_to(stream: &mut impl Write, text: &str) {
+    note_failure(
+        stream
+            .write_all(text.as_bytes())
+            .and_then(|()| stream.write_all(b"\n")),
+    );
+}
+
+fn note_failure(result: std::io::Result<()>) {
+    if let Err(e) = result {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            OUTPUT_FAILED.store(true, Ordering::Relaxed);
+        }
     }
-    say_how_many_not_shown(name, diagnostics);
 }
 
-fn say_how_many_not_shown(name: &str, diagnostics: &Diagnostics) {
-    if let Some(note) = not_shown(name, diagnostics) {
-        eprintln!("{note}");
-    }
-}
-
-/// How many findings beyond [`MAX_SHOWN`] were left out, if any.
-fn not_shown(name: &str, diagnostics: &Diagnostics) -> Option<String> {
-    let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
-    (hidden > 0).then(|| format!("{name}: {hidden} more finding(s) not shown"))
-}
-
-/// Prints a line to stdout. A reader that went away (`gsdc check ... | head`)
-/// is no reason to panic, nor to stop writing files.
-fn say(line: &str) {
-    use std::io::Write;
-    let _ = writeln!(std::io::stdout(), "{line}");
-}
-
-/// A path as diagnostics show it.
+/// A path as the human output shows it: control characters (a newline
+/// that would start a fake line, an escape sequence) and the marks that
+/// reorder text (U+202E) escaped as the JSON output escapes them, so that a
+/// file name cannot pass for other output.
 fn display_name(path: &Path) -> String {
-    path.display().to_string()
+    let mut shown = String::new();
+    for c in path.to_string_lossy().chars() {
+        match c {
+            '\n' => shown.push_str("\\n"),
+            '\r' => shown.push_str("\\r"),
+            '\t' => shown.push_str("\\t"),
+            c if c.is_control() || is_bidi_control(c) => {
+                shown.push_str(&format!("\\u{:04x}", u32::from(c)));
+            }
+            c => shown.push(c),
+        }
+    }
+    shown
+}
+
+fn is_bidi_control(c: char) -> bool {
+    matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+}
+
+/// The path a file gets in `dir`, as shown.
+fn shown_in(dir: &Path, file_name: &str) -> String {
+    display_name(&dir.join(file_name))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::display_name;
+    use std::path::Path;
+
+    #[test]
+    fn names_cannot_fake_lines_or_reorder_text() {
+        assert_eq!(display_name(Path::new("dist/A.GSD")), "dist/A.GSD");
+        assert_eq!(
+            display_name(Path::new("a\nb: 0 error(s)\r\t\u{1b}[31m")),
+            "a\\nb: 0 error(s)\\r\\t\\u001b[31m"
+        );
+        assert_eq!(
+            display_name(Path::new("x\u{202E}lmx.dsg")),
+            "x\\u202elmx.dsg"
+        );
+        assert_eq!(display_name(Path::new("Müller 中.gsd")), "Müller 中.gsd");
+    }
 }

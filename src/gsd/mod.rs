@@ -10,7 +10,7 @@
 use std::borrow::Cow;
 
 use crate::diag::InputLimit;
-use crate::diag::{Diagnostics, Severity};
+use crate::diag::{Diagnostic, Diagnostics, Severity};
 
 mod config;
 mod lexer;
@@ -34,6 +34,26 @@ pub fn decode(bytes: &[u8]) -> Cow<'_, str> {
         Ok(text) => Cow::Borrowed(text),
         Err(_) => Cow::Owned(crate::latin1::decode(bytes)),
     }
+}
+
+/// A GSD file's text and its findings, from the file's bytes: [`decode`]
+/// then [`check`]. A file saved as UTF-16 has a NUL byte beside every
+/// character and no keyword a tool could read: it gets one finding that
+/// says so (E230), with its text decoded for showing, instead of a finding
+/// for each of its lines.
+pub fn check_bytes(bytes: &[u8]) -> (Cow<'_, str>, Diagnostics) {
+    let Some(order) = crate::utf16::byte_order(bytes) else {
+        let text = decode(bytes);
+        let diagnostics = check(&text);
+        return (text, diagnostics);
+    };
+    let text = crate::utf16::decode_lossy(bytes, order);
+    let utf16 = Diagnostic::error(
+        "E230",
+        "the file is UTF-16 text: a NUL byte beside every character, which no GSD reader takes",
+    )
+    .help("save the file as ASCII or ISO-8859-1 (\"ANSI\" in Windows editors), as GSD files are written");
+    (Cow::Owned(text), Diagnostics(vec![utf16]))
 }
 
 /// The largest GSD file gsdc reads (E229): the largest of the 654 real
@@ -142,6 +162,29 @@ pub fn check_strict(text: &str) -> Diagnostics {
         d.severity = Severity::Error;
     }
     diags
+}
+
+#[cfg(test)]
+mod utf16_tests {
+    use super::check_bytes;
+
+    #[test]
+    fn a_utf16_gsd_is_one_finding_saying_so() {
+        let text = ";comment\r\n#Profibus_DP\r\nGSD_Revision = 5\r\nVendor_Name = \"Acme\"\r\n";
+        let mut bytes = vec![0xFF, 0xFE];
+        bytes.extend(text.encode_utf16().flat_map(u16::to_le_bytes));
+        let (decoded, diagnostics) = check_bytes(&bytes);
+        assert_eq!(decoded, text);
+        let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
+        assert_eq!(codes, ["E230"]);
+        assert!(diagnostics.0[0].message.contains("UTF-16"));
+        // The same text in 8 bits is checked as usual.
+        let (_, diagnostics) = check_bytes(text.as_bytes());
+        assert!(
+            diagnostics.iter().all(|d| d.code != "E230"),
+            "{diagnostics:?}"
+        );
+    }
 }
 
 #[cfg(test)]

@@ -5,6 +5,7 @@ use std::borrow::Cow;
 
 use crate::diag::InputLimit;
 use crate::diag::{line_col, Diagnostic};
+use crate::utf16;
 
 /// The largest GSDML file gsdc reads: 15 times the largest in the corpus
 /// (the 1.1 MB SEW file). Checking 16 MiB of real content takes about half
@@ -75,12 +76,17 @@ fn offset_of(text: &str, row: u32, col: u32) -> usize {
 }
 
 /// Turns the bytes of a GSDML file into text, honouring the encoding of the
-/// XML declaration: UTF-8 (the default) and ISO-8859-1, which older vendor
-/// files use. Spans of later diagnostics refer to the returned text; lines
-/// and columns are the same as in the file. More than [`INPUT_LIMIT`] bytes
-/// are refused before they are decoded.
+/// XML declaration: UTF-8 (the default), ISO-8859-1, which older vendor
+/// files use, and UTF-16 (with a byte order mark, or detected from its
+/// first character as XML's appendix F does), which some XML editors save.
+/// Spans of later diagnostics refer to the returned text; lines and columns
+/// are the same as in the file. More than [`INPUT_LIMIT`] bytes are refused
+/// before they are decoded.
 pub fn decode(bytes: &[u8]) -> Result<Cow<'_, str>, Diagnostic> {
     INPUT_LIMIT.check(bytes.len())?;
+    if let Some(order) = utf16::byte_order(bytes) {
+        return decode_utf16(bytes, order).map(Cow::Owned);
+    }
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     let encoding = declared_encoding(bytes).unwrap_or_else(|| "utf-8".into());
     match encoding.as_str() {
@@ -90,9 +96,38 @@ pub fn decode(bytes: &[u8]) -> Result<Cow<'_, str>, Diagnostic> {
         "iso-8859-1" | "iso8859-1" | "iso_8859-1" | "latin1" | "latin-1" | "l1" => {
             Ok(Cow::Owned(crate::latin1::decode(bytes)))
         }
+        "utf-16" | "utf-16le" | "utf-16be" => Err(Diagnostic::error(
+            "E300",
+            format!("the file declares encoding \"{encoding}\" but is not UTF-16: its first characters are one byte each"),
+        )
+        .help("declare the encoding the file is saved in (encoding=\"UTF-8\"), or save it as UTF-16 with a byte order mark")),
         other => Err(Diagnostic::error("E300", format!("unsupported encoding \"{other}\""))
             .help("save the file as UTF-8 (or ISO-8859-1) and declare it in <?xml ... encoding=\"UTF-8\"?>")),
     }
+}
+
+/// UTF-16 text, which must declare a UTF-16 encoding or none.
+fn decode_utf16(bytes: &[u8], order: utf16::ByteOrder) -> Result<String, Diagnostic> {
+    let text = utf16::decode(bytes, order).map_err(|at| invalid_utf16(bytes, order, at))?;
+    match declared_encoding(text.as_bytes()) {
+        None => Ok(text),
+        Some(e) if e.starts_with("utf-16") || e == "utf16" => Ok(text),
+        Some(other) => Err(Diagnostic::error(
+            "E300",
+            format!("the file is UTF-16 but declares encoding \"{other}\""),
+        )
+        .help("declare encoding=\"UTF-16\", or save the file in the encoding it declares")),
+    }
+}
+
+fn invalid_utf16(bytes: &[u8], order: utf16::ByteOrder, at: usize) -> Diagnostic {
+    let valid = utf16::decode_lossy(&bytes[..at], order);
+    let (line, column) = line_col(&valid, valid.len());
+    Diagnostic::error(
+        "E300",
+        format!("the file is not valid UTF-16: an unpaired surrogate or odd byte at line {line}, column {column}"),
+    )
+    .help("save the file again from an editor that writes UTF-16 correctly, or as UTF-8")
 }
 
 /// The lower-cased `encoding` of the XML declaration, if there is one.
@@ -136,6 +171,61 @@ mod tests {
         let d = decode(b"<a>\n\xE4</a>").unwrap_err();
         assert_eq!(d.code, "E300");
         assert!(d.message.contains("line 2, column 1"), "{}", d.message);
+    }
+
+    fn utf16(text: &str, order: utf16::ByteOrder, mark: bool) -> Vec<u8> {
+        let units = text.encode_utf16();
+        let mut bytes: Vec<u8> = match order {
+            utf16::ByteOrder::Little => units.flat_map(u16::to_le_bytes).collect(),
+            utf16::ByteOrder::Big => units.flat_map(u16::to_be_bytes).collect(),
+        };
+        if mark {
+            bytes.splice(
+                0..0,
+                "\u{FEFF}".encode_utf16().flat_map(match order {
+                    utf16::ByteOrder::Little => u16::to_le_bytes,
+                    utf16::ByteOrder::Big => u16::to_be_bytes,
+                }),
+            );
+        }
+        bytes
+    }
+
+    #[test]
+    fn utf16_that_declares_it_is_decoded_in_either_order() {
+        let text = "<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n<a b=\"\u{e4}\u{4e2d}\"/>";
+        for order in [utf16::ByteOrder::Little, utf16::ByteOrder::Big] {
+            for mark in [true, false] {
+                assert_eq!(decode(&utf16(text, order, mark)).unwrap(), text);
+            }
+        }
+        let undeclared = "<a/>";
+        assert_eq!(
+            decode(&utf16(undeclared, utf16::ByteOrder::Little, true)).unwrap(),
+            undeclared
+        );
+    }
+
+    #[test]
+    fn utf16_declaring_another_encoding_or_broken_is_e300() {
+        let lying = "<?xml version=\"1.0\" encoding=\"UTF-8\"?><a/>";
+        let d = decode(&utf16(lying, utf16::ByteOrder::Little, true)).unwrap_err();
+        assert!(
+            d.message
+                .contains("is UTF-16 but declares encoding \"utf-8\""),
+            "{}",
+            d.message
+        );
+        let mut broken = utf16("<a>\n", utf16::ByteOrder::Little, true);
+        broken.extend([0x00, 0xD8, b'x', 0]);
+        let d = decode(&broken).unwrap_err();
+        assert!(
+            d.message.contains("not valid UTF-16") && d.message.contains("line 2, column 1"),
+            "{}",
+            d.message
+        );
+        let d = decode(b"<?xml version=\"1.0\" encoding=\"UTF-16\"?><a/>").unwrap_err();
+        assert!(d.message.contains("but is not UTF-16"), "{}", d.message);
     }
 
     #[test]

@@ -1,0 +1,207 @@
+//! The build-script API (`gsdc::build`): the same steps as `gsdc build`,
+//! its options (deny warnings, the PI schema), and an error that says what
+//! went wrong in a form a program can match.
+
+#[path = "common/refusing_xsd.rs"]
+mod refusing_xsd;
+
+use gsdc::build::{BuildError, Config};
+use gsdc::Artifact;
+use refusing_xsd::refusing_schema;
+use std::error::Error;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
+
+fn description(name: &str) -> PathBuf {
+    Path::new(MANIFEST).join("descriptions").join(name)
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gsdc-build-api-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn pi_schema() -> PathBuf {
+    Path::new(MANIFEST).join("../shared/reference/gsdml-xsd-v2.44")
+}
+
+/// The files `description` gives, compiled by the library's core.
+fn compiled(name: &str) -> Vec<Artifact> {
+    let text = std::fs::read_to_string(description(name)).unwrap();
+    gsdc::compile(&gsdc::load(name, &text).0.unwrap()).unwrap()
+}
+
+#[test]
+fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
+    let out = scratch("deny");
+    let md810 = description("md810dp.toml");
+    let e = Config::new()
+        .deny_warnings(true)
+        .generate(&md810, &out)
+        .unwrap_err();
+    let BuildError::Description { path, rendered } = &e else {
+        panic!("{e:?}");
+    };
+    assert_eq!(path, &md810);
+    assert!(rendered.contains("warning[W101]"), "{rendered}");
+    assert!(rendered.contains("md810dp.toml:63:16"), "{rendered}");
+    assert!(rendered.ends_with("the description has warnings, and they are denied"));
+    assert!(e.source().is_none());
+    assert_eq!(std::fs::read_dir(&out).unwrap().count(), 0);
+
+    let paths = Config::new().generate(&md810, &out).unwrap();
+    assert_eq!(paths.len(), 3);
+    assert!(paths.iter().all(|p| p.is_file()));
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn errors_say_which_file_and_what_went_wrong() {
+    let dir = scratch("errors");
+    let missing = dir.join("missing.toml");
+    match gsdc::build::generate(&missing, &dir) {
+        Err(BuildError::Read { path, error }) => {
+            assert_eq!(path, missing);
+            assert_eq!(error.kind(), std::io::ErrorKind::NotFound);
+        }
+        other => panic!("{other:?}"),
+    }
+    let e = gsdc::build::generate(&missing, &dir).unwrap_err();
+    assert!(e
+        .to_string()
+        .starts_with(&format!("cannot read {}", missing.display())));
+    assert!(e.source().is_some(), "the OS error is the source");
+
+    std::fs::write(dir.join("file"), b"").unwrap();
+    let under_a_file = dir.join("file/out");
+    match gsdc::build::generate(description("md810dp.toml"), &under_a_file) {
+        Err(BuildError::Write(e)) => {
+            assert_eq!(e.path, under_a_file);
+            assert_eq!(e.error.raw_os_error(), Some(20)); // ENOTDIR
+        }
+        other => panic!("{other:?}"),
+    }
+
+    let invalid = Path::new(MANIFEST).join("tests/fixtures/invalid/unknown_ppo.toml");
+    match gsdc::build::generate_rust(&invalid, &dir) {
+        Err(BuildError::Description { path, rendered }) => {
+            assert_eq!(path, invalid);
+            assert!(rendered.contains("error[E104]"), "{rendered}");
+        }
+        other => panic!("{other:?}"),
+    }
+
+    let no_schema = Config::new()
+        .xsd(dir.join("no-schema"))
+        .generate(description("md810dp.toml"), &dir);
+    assert!(
+        matches!(&no_schema, Err(BuildError::Schema { dir: d, .. }) if *d == dir.join("no-schema")),
+        "{no_schema:?}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// One pipeline: the build script's error holds, line for line, the
+/// diagnostics `gsdc build` prints for the same description.
+#[test]
+fn the_build_script_reports_what_gsdc_build_reports() {
+    let invalid = Path::new(MANIFEST).join("tests/fixtures/invalid/unknown_ppo.toml");
+    let dir = scratch("same");
+    let cli = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .arg("build")
+        .arg(&invalid)
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(cli.status.code(), Some(1));
+    let printed = String::from_utf8(cli.stderr).unwrap();
+    let from_cli: Vec<&str> = printed
+        .lines()
+        .filter(|l| !l.is_empty() && !l.starts_with("nothing written"))
+        .collect();
+    let e = gsdc::build::generate(&invalid, &dir).unwrap_err();
+    let rendered = e.to_string();
+    let from_api: Vec<&str> = rendered
+        .lines()
+        .filter(|l| !l.is_empty() && !l.starts_with("nothing written"))
+        .collect();
+    assert!(from_cli.len() > 5, "{printed}");
+    assert_eq!(from_api, from_cli);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// The validation step, given a GSDML gsdc would not write: the PI schema
+/// rejects it with E399 findings placed in it, named after the file and
+/// its description; the GSDML gsdc writes passes.
+#[test]
+fn the_schema_step_rejects_a_gsdml_that_breaks_the_pi_schema() {
+    let mut compiler = Config::new().xsd(pi_schema()).compiler().unwrap();
+    let files = compiled("mv810-pnet02.toml");
+    assert_eq!(compiler.validate("mv810-pnet02.toml", &files).len(), 0);
+
+    let gsdml = files
+        .iter()
+        .find(|f| f.file_name.ends_with(".xml"))
+        .unwrap();
+    let text = String::from_utf8(gsdml.contents.clone()).unwrap();
+    // `UInt16` is no data type of the schema's (it says `Unsigned16`).
+    let broken_text = text.replacen("DataType=\"Unsigned16\"", "DataType=\"UInt16\"", 1);
+    assert_ne!(broken_text, text);
+    let broken = Artifact {
+        kind: gsdml.kind,
+        file_name: gsdml.file_name.clone(),
+        contents: broken_text.into_bytes(),
+    };
+    let layout = files
+        .iter()
+        .find(|f| f.file_name.ends_with(".rs"))
+        .unwrap()
+        .clone();
+    let rejected = compiler.validate("mv810-pnet02.toml", &[layout, broken]);
+    assert_eq!(rejected.len(), 1, "only the GSDML is validated");
+    let findings = &rejected[0];
+    assert_eq!(
+        findings.name,
+        format!("{} (generated from mv810-pnet02.toml)", gsdml.file_name)
+    );
+    assert!(!findings.diagnostics.is_empty());
+    for d in findings.diagnostics.iter() {
+        assert_eq!(d.code, "E399");
+        assert!(d.is_error());
+        let span = d.span.clone().expect("placed on its line");
+        let line = &findings.text[span];
+        assert!(line.contains("UInt16"), "{line}: {}", d.message);
+    }
+}
+
+/// A build script's `generate` with a schema the GSDML breaks writes
+/// nothing; `generate_rust` writes no GSDML, so validates none.
+#[test]
+fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
+    let dir = scratch("schema");
+    let refusing = refusing_schema(&dir);
+    let out = dir.join("out");
+    let mv810 = description("mv810-pnet02.toml");
+    let e = Config::new()
+        .xsd(&refusing)
+        .generate(&mv810, &out)
+        .unwrap_err();
+    assert!(e.to_string().contains("error[E399]"), "{e}");
+    assert!(!out.exists());
+    let layout = Config::new()
+        .xsd(&refusing)
+        .generate_rust(&mv810, &out)
+        .unwrap();
+    assert_eq!(layout, out.join("mv810_pnet02_layout.rs"));
+    let passed = Config::new()
+        .xsd(pi_schema())
+        .generate(&mv810, &out)
+        .unwrap();
+    assert_eq!(passed.len(), 2);
+    std::fs::remove_dir_all(dir).unwrap();
+}
