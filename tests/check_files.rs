@@ -134,12 +134,12 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
     );
 
     let gsd =
-        std::fs::read(MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_compact.gsd")
+        std::fs::read(MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_modular.gsd")
             .unwrap();
     let output = from_stdin(&gsd, &[]);
     assert_eq!(output.status.code(), Some(1));
     assert!(
-        stdout(&output).contains("error[E217]"),
+        stdout(&output).contains("error[E208]"),
         "{}",
         stdout(&output)
     );
@@ -257,7 +257,7 @@ fn control_characters_in_file_names_are_escaped() {
     let fake = "x.gsd\nall.gsd: 0 error(s), 0 warning(s)\u{1b}[2K";
     let path = dir.join(fake);
     std::fs::copy(
-        MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_compact.gsd",
+        MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_modular.gsd",
         &path,
     )
     .unwrap();
@@ -278,7 +278,7 @@ fn control_characters_in_file_names_are_escaped() {
         "the name escaped where findings point: {said}"
     );
     assert!(
-        said.ends_with(&format!("{shown}: 1 error(s), 1 warning(s)\n")),
+        said.ends_with(&format!("{shown}: 3 error(s), 1 warning(s)\n")),
         "{said}"
     );
 

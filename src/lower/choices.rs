@@ -106,13 +106,16 @@ fn unknown(
             .map(|k| format!("; did you mean `{k}`?"))
     });
     cx.push(
-        Diagnostic::error("E136", format!("`{}` names no value of the description", path.get_ref()))
-            .at(path.span())
-            .label(format!("no `{failed}` here"))
-            .help(format!(
-                "a choice marks a key the description writes{}",
-                suggestion.unwrap_or_default()
-            )),
+        Diagnostic::error(
+            "E136",
+            format!("`{}` names no value of the description", path.get_ref()),
+        )
+        .at(path.span())
+        .label(format!("no `{failed}` here"))
+        .help(format!(
+            "a choice marks a key the description writes{}",
+            suggestion.unwrap_or_default()
+        )),
     );
     None
 }
@@ -174,7 +177,9 @@ fn edit_distance(a: &str, b: &str) -> usize {
         row[0] = i + 1;
         for (j, &cb) in b.iter().enumerate() {
             let above = row[j + 1];
-            row[j + 1] = (diagonal + usize::from(ca != cb)).min(row[j] + 1).min(above + 1);
+            row[j + 1] = (diagonal + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(above + 1);
             diagonal = above;
         }
     }
@@ -201,7 +206,10 @@ mod tests {
         );
         assert_eq!(
             keys("settings[0].default"),
-            Some(vec![("settings".into(), vec![0]), ("default".into(), vec![])])
+            Some(vec![
+                ("settings".into(), vec![0]),
+                ("default".into(), vec![])
+            ])
         );
         assert_eq!(keys("a..b"), None);
         assert_eq!(keys("a[x]"), None);

@@ -104,15 +104,22 @@ fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
 
 /// The manual's languages: ISO 639-1 codes, each once.
 fn manual_languages(cx: &mut Checker, manual: &raw::Manual) -> Vec<String> {
-    cx.non_empty(manual.title.get_ref(), manual.title.span(), "the manual's title");
+    cx.non_empty(
+        manual.title.get_ref(),
+        manual.title.span(),
+        "the manual's title",
+    );
     let mut codes: Vec<String> = Vec::new();
     for code in manual.languages.get_ref() {
         if !crate::description::is_language_code(code.get_ref()) {
             cx.push(
-                Diagnostic::error("E137", format!("`{}` is not an ISO 639-1 language code", code.get_ref()))
-                    .at(code.span())
-                    .label("not a language code")
-                    .help("write the manual's languages as texts write them: \"en\", \"zh\", \"de\""),
+                Diagnostic::error(
+                    "E137",
+                    format!("`{}` is not an ISO 639-1 language code", code.get_ref()),
+                )
+                .at(code.span())
+                .label("not a language code")
+                .help("write the manual's languages as texts write them: \"en\", \"zh\", \"de\""),
             );
         } else if codes.contains(code.get_ref()) {
             cx.duplicate(format!("language `{}`", code.get_ref()), code.span());

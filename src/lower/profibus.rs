@@ -253,14 +253,22 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
     let c1_max_data_len = match &d.c1_max_data_len {
         Some(l) => cx.spanned_in_range(l, 0, 240, "c1_max_data_len")?,
         None => {
-            cx.defaulted("profibus.dpv1.c1_max_data_len", DEFAULT_C1_MAX_DATA_LEN, near.clone());
+            cx.defaulted(
+                "profibus.dpv1.c1_max_data_len",
+                DEFAULT_C1_MAX_DATA_LEN,
+                near.clone(),
+            );
             DEFAULT_C1_MAX_DATA_LEN
         }
     };
     let c1_response_timeout = match &d.c1_response_timeout {
         Some(t) => cx.spanned_in_range(t, 1, 0xFFFF, "c1_response_timeout")?,
         None => {
-            cx.defaulted("profibus.dpv1.c1_response_timeout", DEFAULT_C1_RESPONSE_TIMEOUT, near.clone());
+            cx.defaulted(
+                "profibus.dpv1.c1_response_timeout",
+                DEFAULT_C1_RESPONSE_TIMEOUT,
+                near.clone(),
+            );
             DEFAULT_C1_RESPONSE_TIMEOUT
         }
     };

@@ -153,7 +153,11 @@ fn file_name_part(cx: &mut Checker, part: &Spanned<String>, what: &str) -> Strin
     text.to_string()
 }
 
-fn placeholder_warning(cx: &mut Checker, id: &Spanned<raw::IdentNumber>, (what, key): (&str, &str)) {
+fn placeholder_warning(
+    cx: &mut Checker,
+    id: &Spanned<raw::IdentNumber>,
+    (what, key): (&str, &str),
+) {
     if id.get_ref().placeholder {
         let value = format!("0x{:04X}", id.get_ref().value.get_ref());
         cx.placeholder(

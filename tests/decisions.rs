@@ -1,0 +1,131 @@
+//! What no manual gave reaches every generated file's header: each
+//! placeholder, each value the description marks as its own choice, each
+//! default gsdc applied; and the description's translations are said.
+
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
+use gsdc::ir::DecisionKind;
+
+const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+
+/// The comment lines at the top of a generated file, as text.
+fn head(text: &str) -> String {
+    text.lines()
+        .skip_while(|l| l.starts_with("<?xml"))
+        .take_while(|l| {
+            let l = l.trim_start();
+            l.starts_with(';') || l.starts_with("//") || l.starts_with("<!--") || l.is_empty()
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// A note's words as a header shows them, whatever the line breaks.
+fn words(text: &str) -> String {
+    text.split_whitespace()
+        .filter(|w| !["//", ";", "<!--", "-->"].contains(w))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[test]
+fn every_header_lists_every_decision() {
+    for name in DESCRIPTIONS {
+        let ir = descriptions::load(name);
+        assert!(
+            ir.decisions
+                .iter()
+                .any(|d| d.kind == DecisionKind::Placeholder),
+            "{name}: the shipped descriptions have placeholders"
+        );
+        for artifact in gsdc::compile(&ir).unwrap() {
+            if artifact.kind == gsdc::ArtifactKind::RustSupport {
+                continue; // the same for every description
+            }
+            let text = String::from_utf8(artifact.contents).unwrap();
+            let head = words(&head(&text));
+            for decision in &ir.decisions {
+                let summary = words(&decision.summary());
+                // The GSD is 7-bit ASCII: a character beyond shows as `?`.
+                let ascii: String = summary
+                    .chars()
+                    .map(|c| if c.is_ascii() { c } else { '?' })
+                    .collect();
+                assert!(
+                    head.contains(&summary) || head.contains(&ascii),
+                    "{name}: {} lacks {summary:?} in\n{head}",
+                    artifact.file_name
+                );
+            }
+        }
+    }
+}
+
+/// A description whose manual is in Chinese only: its English texts are
+/// said to be translations, in every header.
+#[test]
+fn translations_are_said_as_such() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/descriptions/md810dp.toml"
+    ))
+    .unwrap()
+    .replacen(
+        "[device]",
+        "[manual]\ntitle = \"MD810 user manual\"\nlanguages = [\"zh\"]\n\n[device]",
+        1,
+    );
+    let (ir, diagnostics) = gsdc::load("md810dp.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    for artifact in gsdc::compile(&ir).unwrap() {
+        if artifact.kind == gsdc::ArtifactKind::RustSupport {
+            continue;
+        }
+        let head = words(&head(&String::from_utf8(artifact.contents).unwrap()));
+        assert!(
+            head.contains("Texts in en are the description's translations of the manual's zh."),
+            "{}: {head}",
+            artifact.file_name
+        );
+    }
+}
+
+/// A marked choice: a W103 warning at the value, with the reason, and a
+/// decision in the IR; the value shown on one line.
+#[test]
+fn a_marked_choice_is_warned_about_at_its_value() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions/9kdp1.toml"))
+        .unwrap()
+        .replacen(
+            "[device]",
+            "[choices]\n\"profibus.min_slave_interval\" = \"the manual gives none\"\n\"profibus.baud_rates.\\\"1.5M\\\"\" = \"the DP standard's value\"\n\n[device]",
+            1,
+        );
+    let (ir, diagnostics) = gsdc::load("9kdp1.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let w103: Vec<_> = diagnostics.iter().filter(|d| d.code == "W103").collect();
+    assert_eq!(w103.len(), 2, "{diagnostics:?}");
+    for warning in w103 {
+        let span = warning.span.clone().unwrap();
+        let at = &text[span];
+        assert!(["1", "150"].contains(&at), "{at}");
+    }
+    let choices: Vec<(&str, &str, &str)> = ir
+        .decisions
+        .iter()
+        .filter(|d| d.kind == DecisionKind::Choice)
+        .map(|d| (d.path.as_str(), d.value.as_str(), d.reason.as_str()))
+        .collect();
+    assert_eq!(
+        choices,
+        [
+            (
+                "profibus.baud_rates.\"1.5M\"",
+                "150",
+                "the DP standard's value"
+            ),
+            ("profibus.min_slave_interval", "1", "the manual gives none"),
+        ]
+    );
+}
