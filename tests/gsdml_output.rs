@@ -249,8 +249,10 @@ fn mv810_p43_enumerations_have_15_and_26_values() {
     let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
     let doc = Document::parse(&text).unwrap();
     let values_of_record = |index: &str| -> (usize, Vec<i64>) {
+        // The largest module's record: PZD2..PZD12.
         let record = elements(&doc, "ParameterRecordDataItem")
-            .find(|r| r.attribute("Index") == Some(index))
+            .filter(|r| r.attribute("Index") == Some(index))
+            .max_by_key(|r| children(*r, "Ref").count())
             .unwrap();
         let refs: Vec<Node> = children(record, "Ref").collect();
         let target = attribute(refs[0], "ValueItemTarget");

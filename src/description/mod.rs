@@ -11,7 +11,7 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
-pub use values::{is_language_code, Address, BitRange, Text};
+pub use values::{is_language_code, Address, BitRange, Record, Text};
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -149,6 +149,9 @@ pub struct Mapping {
     pub choices: Option<Spanned<Vec<Choice>>>,
     /// The drive parameter that holds the mapping of `first`; the next ones follow.
     pub parameter: Option<Spanned<Address>>,
+    /// DPV1 indexes only: the bytes of the record each index reads and
+    /// writes; the layout refuses records of another length.
+    pub record_length: Option<Spanned<u8>>,
 }
 
 /// One drive parameter with its meaning, like MV810's P43.01 (0 standard
@@ -161,6 +164,29 @@ pub struct Setting {
     pub default: Spanned<Address>,
     pub range: Option<Spanned<[Spanned<Address>; 2]>>,
     pub choices: Option<Spanned<Vec<Choice>>>,
+    /// What a setting with a range holds: a plain value (a timeout, a
+    /// count; the default) or a drive parameter's address.
+    pub holds: Option<Spanned<Holds>>,
+    /// PROFINET: the value each kind of module fixes, which the user
+    /// cannot change (MV810's P43.01: 1 for user-defined modules, 0 for
+    /// standard telegram 1).
+    pub per_module: Option<Spanned<PerModule>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Holds {
+    Value,
+    Address,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PerModule {
+    /// Every module of PKW and PZD words the description maps.
+    pub user_defined: Spanned<Address>,
+    /// Standard telegram 1, when it is offered.
+    pub standard_telegram_1: Option<Spanned<Address>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -233,6 +259,9 @@ pub struct DiagnosisArea {
 pub struct Profinet {
     pub vendor_id: Spanned<IdentNumber>,
     pub device_id: Spanned<IdentNumber>,
+    /// The PROFINET device's name (the DAP's), when it should differ from
+    /// `device.name`.
+    pub name: Option<Spanned<Text>>,
     /// DeviceIdentity's info text, when it should differ from `device.info`.
     pub info: Option<Spanned<Text>>,
     /// Vendor as the GSDML file name spells it; the device's vendor by default.
@@ -254,9 +283,20 @@ pub struct Profinet {
     /// Also offer PROFIdrive standard telegram 1 (STW1, NSOLL_A / ZSW1, NIST_A).
     #[serde(default)]
     pub standard_telegram_1: bool,
-    /// Record indexes of the parameter records.
+    /// Record indexes of the parameter records, with their names.
     #[serde(default)]
     pub records: RecordIndexes,
+    /// What the module info texts add to gsdc's description of a module.
+    #[serde(default)]
+    pub module_info: ModuleInfo,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModuleInfo {
+    /// Every module of PKW and PZD words the description maps.
+    pub user_defined: Option<Spanned<Text>>,
+    pub standard_telegram_1: Option<Spanned<Text>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -270,8 +310,8 @@ pub enum ModulePkw {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RecordIndexes {
-    pub pzd_out: Option<Spanned<u16>>,
-    pub pzd_in: Option<Spanned<u16>>,
-    pub dpv1_index: Option<Spanned<u16>>,
-    pub settings: Option<Spanned<u16>>,
+    pub pzd_out: Option<Spanned<Record>>,
+    pub pzd_in: Option<Spanned<Record>>,
+    pub dpv1_index: Option<Spanned<Record>>,
+    pub settings: Option<Spanned<Record>>,
 }

@@ -149,3 +149,55 @@ impl Text {
         }
     }
 }
+
+/// A parameter record: its index (`pzd_out = 1`), or its index and name
+/// (`pzd_out = { index = 1, name = { en = "...", zh = "..." } }`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Record {
+    pub index: Spanned<i64>,
+    pub name: Option<Spanned<Text>>,
+}
+
+impl<'de> Deserialize<'de> for Record {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct RecordVisitor;
+        impl<'de> Visitor<'de> for RecordVisitor {
+            type Value = Record;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a record index or a table { index = 1, name = \"...\" }")
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Record, E> {
+                // The whole value's span is on the enclosing Spanned<Record>.
+                Ok(Record {
+                    index: Spanned::new(0..0, v),
+                    name: None,
+                })
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Record, A::Error> {
+                let (mut index, mut name) = (None, None);
+                while let Some(key) = map.next_key::<String>()? {
+                    match key.as_str() {
+                        "index" => index = Some(map.next_value::<Spanned<i64>>()?),
+                        "name" => name = Some(map.next_value::<Spanned<Text>>()?),
+                        other => return Err(de::Error::unknown_field(other, &["index", "name"])),
+                    }
+                }
+                let index = index.ok_or_else(|| de::Error::missing_field("index"))?;
+                Ok(Record { index, name })
+            }
+        }
+        deserializer.deserialize_any(RecordVisitor)
+    }
+}
+
+impl Record {
+    /// The index's span, or the whole value's when it was written as a number.
+    pub fn index_span(&self, whole: &std::ops::Range<usize>) -> std::ops::Range<usize> {
+        let span = self.index.span();
+        if span.is_empty() {
+            whole.clone()
+        } else {
+            span
+        }
+    }
+}

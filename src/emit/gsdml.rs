@@ -351,10 +351,10 @@ fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
     );
     doc.text_ref("Name", &record.name);
     for r in &record.refs {
-        let (set, entry) = ir.mappings.entry(r.entry);
+        let (set, _) = ir.mappings.entry(r.entry);
         doc.text(&r.text);
         let offset = r.offset.to_string();
-        let default = entry.default.to_string();
+        let default = r.default.to_string();
         let allowed = allowed_values(&set.allowed);
         let mut attributes = vec![
             ("DataType", "Unsigned16"),
@@ -364,7 +364,7 @@ fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
         ];
         attributes.extend(r.value_item.as_deref().map(|v| ("ValueItemTarget", v)));
         attributes.extend([
-            ("Changeable", "true"),
+            ("Changeable", if r.changeable { "true" } else { "false" }),
             ("Visible", "true"),
             ("TextId", r.text.id.as_str()),
         ]);

@@ -7,7 +7,7 @@
 //! (identifiers, literals, doc lines) so the template only arranges them.
 
 use super::{Artifact, ArtifactKind};
-use crate::ir::mapping::{Allowed, MappingGroup, MappingKind, MappingSet};
+use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, ModuleKind, Profinet};
 use crate::ir::{Direction, Ir, Layout, PkwKind, Telegram, ValueSet, Word};
@@ -100,6 +100,22 @@ struct Group {
     entries: Vec<Entry>,
     user_prm_offset: Option<u16>,
     record_index: Option<u16>,
+    /// How `decode_record` reads the record: `read_record` (every entry) or
+    /// `read_record_prefix` (a module's PZD record holds its words).
+    record_reader: &'static str,
+    /// DPV1 indexes: the bytes each index's record holds.
+    record_length: Option<u8>,
+    /// Settings whose value each PROFINET module fixes.
+    fixed: Vec<Fixed>,
+}
+
+/// The value each module fixes for a setting, by module ident number.
+#[derive(Serialize)]
+struct Fixed {
+    constant: String,
+    doc: String,
+    /// Module ident constants and values.
+    modules: Vec<(String, u16)>,
 }
 
 #[derive(Serialize)]
@@ -476,7 +492,42 @@ fn group(ir: &Ir, g: &MappingGroup) -> Group {
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
         record_index: ir.profinet.as_ref().and_then(|p| p.record_index(g.kind)),
+        record_reader: match g.kind {
+            MappingKind::PzdOut | MappingKind::PzdIn => "read_record_prefix",
+            _ => "read_record",
+        },
+        record_length: g.record_length,
+        fixed: fixed(ir, g),
     }
+}
+
+/// For each set of `g` whose value PROFINET modules fix: every module that
+/// carries it, with its value.
+fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
+    let Some(profinet) = &ir.profinet else {
+        return Vec::new();
+    };
+    g.sets
+        .iter()
+        .filter(|set| set.fixed.is_some())
+        .map(|set| {
+            let modules = profinet
+                .modules
+                .iter()
+                .flat_map(|m| m.records.iter().flat_map(move |r| r.refs.iter().map(move |f| (m, f))))
+                .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
+                .map(|(m, f)| (format!("super::{}_IDENT", m.ident.upper_snake()), f.default))
+                .collect();
+            Fixed {
+                constant: format!("FIXED_{}", set.key.first),
+                doc: format!(
+                    "The value of \"{}\" each PROFINET module fixes, by its ident number: the module writes it; the user cannot change it.",
+                    doc_text(&set.entries[0].name.en)
+                ),
+                modules,
+            }
+        })
+        .collect()
 }
 
 fn group_doc(kind: MappingKind) -> &'static str {
@@ -526,8 +577,8 @@ fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
 
 fn set_entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entry> + 'a {
     // Parameter addresses read best in hex, with the manual's name beside
-    // them; a choice is a plain number.
-    let is_address = matches!(set.allowed, Allowed::Range { .. });
+    // them; a value or a choice is a plain number.
+    let is_address = set.holds == Holds::Address;
     let name_of = |address: u16| {
         ir.numbering
             .as_ref()

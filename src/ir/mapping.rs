@@ -95,6 +95,9 @@ impl Mappings {
 pub struct MappingGroup {
     pub kind: MappingKind,
     pub sets: Vec<MappingSet>,
+    /// DPV1 indexes: the bytes of the record each index reads and writes,
+    /// when the description says.
+    pub record_length: Option<u8>,
 }
 
 impl MappingGroup {
@@ -115,6 +118,10 @@ impl MappingGroup {
 pub struct MappingSet {
     pub key: SetKey,
     pub allowed: Allowed,
+    /// What its entries' values are.
+    pub holds: Holds,
+    /// A setting whose value each PROFINET module fixes.
+    pub fixed: Option<FixedByModule>,
     /// The constant that says what the set's entries may hold, unique
     /// within its group.
     pub allowed_ident: Ident,
@@ -130,6 +137,25 @@ pub struct MappingEntry {
     pub default: u16,
     /// The drive parameter that holds this mapping, if the drive has one.
     pub parameter: Option<u16>,
+}
+
+/// What a mapping's values are: a drive parameter's address, a plain value
+/// (a timeout, a count), or one of its choices.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Holds {
+    Address,
+    Value,
+    Choice,
+}
+
+/// The value of a setting that each kind of PROFINET module fixes: the
+/// module writes it, the user cannot change it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct FixedByModule {
+    pub user_defined: u16,
+    pub standard_telegram_1: Option<u16>,
 }
 
 /// What a mapping may hold: a parameter address within a range, or one of

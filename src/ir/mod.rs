@@ -14,7 +14,8 @@ pub mod telegram;
 
 pub use decision::{Decision, DecisionKind};
 pub use mapping::{
-    Allowed, EntryKey, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings, SetKey,
+    Allowed, EntryKey, FixedByModule, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet,
+    Mappings, SetKey,
 };
 pub use names::Ident;
 pub(crate) use names::Scope;

@@ -35,12 +35,12 @@ impl Numbering {
         let (group, index) = rest
             .split_once(self.separator.as_str())
             .ok_or_else(|| format!("`{name}` has no `{}` separator", self.separator))?;
-        let group = parse_digits(group, self.group_radix).ok_or_else(|| {
-            format!(
-                "`{group}` is not a group number in radix {}",
-                self.group_radix
-            )
-        })?;
+        let group = parse_digits(group, self.group_radix)
+            .filter(|g| *g < self.groups())
+            .ok_or_else(|| match self.group_radix {
+                16 => format!("`{group}` is not a group: one hex digit"),
+                _ => format!("`{group}` is not a group: two decimal digits"),
+            })?;
         let index = parse_digits(index, 10)
             .filter(|i| *i <= 0xFF)
             .ok_or_else(|| format!("`{index}` is not an index from 0 to 255"))?;
@@ -53,13 +53,14 @@ impl Numbering {
         Ok((high << 8 | index) as u16)
     }
 
-    /// The name of an address, when a prefix covers it.
+    /// The name of an address, when a prefix covers it: a group is one hex
+    /// digit (F0..FF) or two decimal digits (P00..P99), as names write it.
     pub fn format(&self, address: u16) -> Option<String> {
         let [high, low] = address.to_be_bytes();
         let (prefix, base) = self
             .prefixes
             .iter()
-            .filter(|(_, base)| *base <= high && u32::from(high - base) < self.group_radix.pow(2))
+            .filter(|(_, base)| *base <= high && u32::from(high - base) < self.groups())
             .max_by_key(|(_, base)| *base)?;
         let group = u32::from(high - base);
         let group = if self.group_radix == 16 {
@@ -69,6 +70,24 @@ impl Numbering {
             format!("{group:02}")
         };
         Some(format!("{prefix}{group}{}{low:02}", self.separator))
+    }
+}
+
+impl Numbering {
+    /// How many groups a prefix has: one hex digit's or two decimal digits'.
+    fn groups(&self) -> u32 {
+        if self.group_radix == 16 {
+            16
+        } else {
+            100
+        }
+    }
+
+    /// A name as the numbering writes it, for messages: the first prefix's
+    /// first group, index 1 (`F0-01`, `P00.01`).
+    pub fn example(&self) -> Option<String> {
+        let (_, base) = self.prefixes.last()?;
+        self.format(u16::from(*base) << 8 | 1)
     }
 }
 
@@ -97,6 +116,15 @@ mod tests {
         assert_eq!(n.parse("A1-05"), Ok(0xA105));
         assert_eq!(n.format(0xF00C).as_deref(), Some("F0-12"));
         assert_eq!(n.format(0xFD14).as_deref(), Some("FD-20"));
+    }
+
+    /// PI9000's d group is 70..7F: 0x8000 (a fault code's Modbus address)
+    /// has no name, rather than `d10.00`.
+    #[test]
+    fn a_hex_group_is_one_digit() {
+        let n = Numbering::new(".".into(), 16, vec![("d".into(), 0x70), ("F".into(), 0xF0)]);
+        assert_eq!(n.format(0x7F01).as_deref(), Some("dF.01"));
+        assert_eq!(n.format(0x8000), None);
     }
 
     #[test]

@@ -160,6 +160,10 @@ pub struct RecordRef {
     pub offset: u16,
     pub entry: EntryKey,
     pub text: TextRef,
+    /// The entry's default, or the value its module fixes.
+    pub default: u16,
+    /// False where the module fixes the value.
+    pub changeable: bool,
     /// The ValueItem of its choices, when its set has them.
     pub value_item: Option<String>,
 }

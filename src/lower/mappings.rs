@@ -7,8 +7,8 @@ use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::{
-    Allowed, EntryKey, Ident, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings,
-    Numbering, SetKey, Telegram, Text,
+    Allowed, EntryKey, FixedByModule, Holds, Ident, MappingEntry, MappingGroup, MappingKind,
+    MappingSet, Mappings, Numbering, SetKey, Telegram, Text,
 };
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -43,7 +43,38 @@ pub fn lower(
     .collect();
     sets.extend(lower_settings(cx, &desc.settings, numbering));
     let spans = sets.iter().map(|(s, span)| (s.key, span.clone())).collect();
-    (group(sets.into_iter().map(|(s, _)| s).collect()), spans)
+    let mut mappings = group(sets.into_iter().map(|(s, _)| s).collect());
+    record_lengths(cx, m, &mut mappings);
+    (mappings, spans)
+}
+
+/// `record_length`: a DPV1 index's record bytes (1..=240, the most a DPV1
+/// read or write carries); no other kind of mapping has records of its own.
+fn record_lengths(cx: &mut Checker, m: &raw::Mappings, mappings: &mut Mappings) {
+    for (kind, mapping) in [
+        (MappingKind::PzdOut, &m.pzd_out),
+        (MappingKind::PzdIn, &m.pzd_in),
+    ] {
+        if let Some(length) = mapping.as_ref().and_then(|m| m.record_length.as_ref()) {
+            cx.push(
+                Diagnostic::error("E139", format!("{} has no records of its own", kind.key()))
+                    .at(length.span())
+                    .label("only for DPV1 indexes")
+                    .help("record_length says how long the record is that each DPV1 index reads and writes; give it under [mappings.dpv1_index]"),
+            );
+        }
+    }
+    let Some(length) = m.dpv1_index.as_ref().and_then(|m| m.record_length.as_ref()) else {
+        return;
+    };
+    let length: Option<u8> = cx.spanned_in_range(length, 1, 240, "record_length");
+    if let Some(g) = mappings
+        .groups
+        .iter_mut()
+        .find(|g| g.kind == MappingKind::Dpv1Index)
+    {
+        g.record_length = length;
+    }
 }
 
 /// The sets grouped by kind in telegram order, each group's sets by their
@@ -59,6 +90,7 @@ fn group(mut sets: Vec<MappingSet>) -> Mappings {
             _ => groups.push(MappingGroup {
                 kind: set.key.kind,
                 sets: vec![set],
+                record_length: None,
             }),
         }
     }
@@ -88,8 +120,42 @@ fn lower_set(
         range: &m.range,
         choices: &m.choices,
         parameter: &m.parameter,
+        holds: Holds::Address,
     };
     build_set(cx, kind, &parts, (first, last), defaults, numbering)
+}
+
+/// The values a setting's modules fix, each one its setting allows.
+fn fixed_by_module(
+    cx: &mut Checker,
+    p: &Spanned<raw::PerModule>,
+    allowed: &Allowed,
+    numbering: Option<&Numbering>,
+) -> Option<FixedByModule> {
+    let mut value = |address: &Spanned<raw::Address>| {
+        let value = resolve_address(cx, address, numbering)?;
+        if !allowed.contains(i64::from(value)) {
+            cx.push(
+                Diagnostic::error(
+                    "E108",
+                    format!("{value} is not among the values the setting allows"),
+                )
+                .at(address.span())
+                .label("not allowed")
+                .help("each module's value must be one the setting allows"),
+            );
+            return None;
+        }
+        Some(value)
+    };
+    let per_module = p.get_ref();
+    Some(FixedByModule {
+        user_defined: value(&per_module.user_defined)?,
+        standard_telegram_1: match &per_module.standard_telegram_1 {
+            Some(v) => Some(value(v)?),
+            None => None,
+        },
+    })
 }
 
 /// Settings: each a set of one entry, numbered from 1 in the order given;
@@ -121,8 +187,15 @@ fn lower_settings(
                 range: &s.range,
                 choices: &s.choices,
                 parameter: &s.parameter,
+                holds: s
+                    .holds
+                    .as_ref()
+                    .map_or(Holds::Value, |h| match h.get_ref() {
+                        raw::Holds::Value => Holds::Value,
+                        raw::Holds::Address => Holds::Address,
+                    }),
             };
-            let set = build_set(
+            let mut set = build_set(
                 cx,
                 MappingKind::Setting,
                 &parts,
@@ -130,6 +203,10 @@ fn lower_settings(
                 vec![default],
                 numbering,
             )?;
+            set.fixed = match &s.per_module {
+                Some(p) => Some(fixed_by_module(cx, p, &set.allowed, numbering)?),
+                None => None,
+            };
             Some((set, s.name.span()))
         })
         .collect()
@@ -141,6 +218,8 @@ struct Parts<'a> {
     range: &'a Option<Spanned<[Spanned<raw::Address>; 2]>>,
     choices: &'a Option<Spanned<Vec<raw::Choice>>>,
     parameter: &'a Option<Spanned<raw::Address>>,
+    /// What a range holds; choices hold choices.
+    holds: Holds,
 }
 
 fn build_set(
@@ -189,9 +268,15 @@ fn build_set(
             parameter: parameter.map(|base| base + u16::from(number - first)),
         })
         .collect();
+    let holds = match allowed {
+        Allowed::Choices(_) => Holds::Choice,
+        Allowed::Range { .. } => parts.holds,
+    };
     Some(MappingSet {
         key: SetKey { kind, first },
         allowed,
+        holds,
+        fixed: None,
         allowed_ident: Ident::of(&["allowed"]),
         entries,
     })

@@ -7,6 +7,7 @@
 mod checks;
 mod choices;
 mod mappings;
+mod meaning;
 mod profibus;
 mod profinet;
 mod telegram;
@@ -46,6 +47,16 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .profinet
         .as_ref()
         .map(|p| profinet::lower(&mut cx, p, &desc.device, (&device, &telegram, &mappings)));
+    meaning::check(
+        &mut cx,
+        desc,
+        &mappings,
+        (
+            profibus.as_ref().and_then(Option::as_ref),
+            profinet.as_ref().and_then(Option::as_ref),
+        ),
+        &set_spans,
+    );
     let manual_languages = desc
         .manual
         .as_ref()
@@ -192,7 +203,7 @@ fn resolve_address(
                         .help(format!(
                             "write it as <prefix><group>{}<index>, e.g. {}, or as a number",
                             numbering.separator,
-                            numbering.format(0xF00C).unwrap_or_else(|| "61452".into())
+                            numbering.example().unwrap_or_else(|| "61452".into())
                         )),
                     );
                     None

@@ -25,7 +25,7 @@ pub fn lower(
     raw_device: &raw::Device,
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
-    let records = records::indexes(cx, p, mappings);
+    let records = records::plans(cx, p, mappings);
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
@@ -41,7 +41,10 @@ pub fn lower(
     let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
     let modules: Vec<Module> = modules(cx, p, telegram)
         .into_iter()
-        .map(|(kind, layout)| io::module(kind, layout, telegram, mappings, &records))
+        .map(|(kind, layout)| {
+            let info = module_info(cx, &p.module_info, kind);
+            io::module((kind, layout), telegram, (mappings, &records), info)
+        })
         .collect();
     let value_items = records::value_items(mappings, &modules);
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
@@ -56,7 +59,13 @@ pub fn lower(
         vendor_id_placeholder: p.vendor_id.get_ref().placeholder,
         device_id: cx.spanned_in_range(&p.device_id.get_ref().value, 1, 0xFFFF, "device_id")?,
         device_id_placeholder: p.device_id.get_ref().placeholder,
-        device_name: TextRef::new(ids::DEVICE_NAME, device.name.clone()),
+        device_name: TextRef::new(
+            ids::DEVICE_NAME,
+            p.name.as_ref().map_or_else(
+                || device.name.clone(),
+                |n| cx.text(n, None, "profinet.name"),
+            ),
+        ),
         // The PROFINET part's own info text, else the device's, else its name.
         device_info: TextRef::new(
             ids::DEVICE_INFO,
@@ -77,6 +86,15 @@ pub fn lower(
         modules,
         value_items,
     })
+}
+
+/// What the description adds to a kind of module's info text.
+fn module_info(cx: &mut Checker, info: &raw::ModuleInfo, kind: ModuleKind) -> Option<Text> {
+    let text = match kind {
+        ModuleKind::Pzd => info.user_defined.as_ref(),
+        ModuleKind::StandardTelegram1 => info.standard_telegram_1.as_ref(),
+    };
+    text.map(|t| cx.text(t, None, "module info"))
 }
 
 fn port(number: u8) -> Port {

@@ -277,3 +277,33 @@ pub fn read_record<const N: usize>(
     check_len(bytes, 2 * N)?;
     read_values(bytes, 0, mappings)
 }
+
+/// The values of a PROFINET record that holds the first of `mappings`
+/// (a module's PZD record holds the words the module transports): an
+/// Unsigned16 for each of the first `bytes.len() / 2`, each checked; the
+/// others keep their defaults. An odd length, or more than `N` values, is
+/// refused.
+pub fn read_record_prefix<const N: usize>(
+    bytes: &[u8],
+    mappings: &[Mapping; N],
+) -> Result<[u16; N], PrmError> {
+    let count = bytes.len() / 2;
+    if 2 * count != bytes.len() || count > N {
+        return Err(PrmError::Length {
+            expected: 2 * N,
+            found: bytes.len(),
+        });
+    }
+    let mut values = defaults(mappings);
+    for (i, (value, mapping)) in values.iter_mut().zip(mappings).take(count).enumerate() {
+        let at = 2 * i;
+        *value = u16::from_be_bytes(read_bytes(bytes, at)?);
+        if !mapping.allowed.contains(*value) {
+            return Err(PrmError::NotAllowed {
+                offset: at,
+                value: *value,
+            });
+        }
+    }
+    Ok(values)
+}

@@ -435,3 +435,41 @@ mod diagnosis {
         assert_eq!(low_byte.get(&block), 0);
     }
 }
+
+/// MV810's "PKW + 3 PZD" module: its PZD record holds PZD2 and PZD3 of the
+/// eleven mappings; the rest keep their defaults.
+#[test]
+fn a_record_prefix_holds_the_words_its_module_transports() {
+    const ALLOWED: Allowed = Allowed::Range { min: 0, max: 14 };
+    let mapping = |number| Mapping {
+        name: "PZD receive",
+        number,
+        default: 0,
+        parameter: None,
+        allowed: ALLOWED,
+    };
+    let mappings = [mapping(2), mapping(3), mapping(4)];
+    assert_eq!(read_record_prefix(&[0, 1, 0, 3], &mappings), Ok([1, 3, 0]));
+    assert_eq!(read_record_prefix(&[], &mappings), Ok([0, 0, 0]));
+    assert_eq!(
+        read_record_prefix(&[0, 1, 0], &mappings),
+        Err(PrmError::Length {
+            expected: 6,
+            found: 3
+        })
+    );
+    assert_eq!(
+        read_record_prefix(&[0; 8], &mappings),
+        Err(PrmError::Length {
+            expected: 6,
+            found: 8
+        })
+    );
+    assert_eq!(
+        read_record_prefix(&[0, 1, 0, 15], &mappings),
+        Err(PrmError::NotAllowed {
+            offset: 2,
+            value: 15
+        })
+    );
+}

@@ -2,21 +2,20 @@
 //! named bit; and the IO lengths of the device access point.
 
 use super::ids::module_tag;
-use super::records::records;
+use super::records::{self, RecordPlan};
 use crate::ir::profinet::{BitItem, DataItem, Module, ModuleKind, TextRef};
-use crate::ir::{
-    BitField, Direction, Ident, Layout, MappingKind, Mappings, PkwKind, Telegram, Text,
-};
+use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram, Text};
 
 /// Standard telegram 1 has two words each way.
 pub const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
 
+/// A module of `kind` and `layout`; `info` is what the description adds
+/// to gsdc's description of it.
 pub fn module(
-    kind: ModuleKind,
-    layout: Layout,
+    (kind, layout): (ModuleKind, Layout),
     telegram: &Telegram,
-    mappings: &Mappings,
-    record_indexes: &[(MappingKind, u16)],
+    (mappings, records): (&Mappings, &[RecordPlan]),
+    info: Option<Text>,
 ) -> Module {
     let tag = module_tag(kind, layout);
     let items = |direction| match kind {
@@ -28,19 +27,40 @@ pub fn module(
         id: format!("IDM_{tag}"),
         submodule_id: format!("IDS_{tag}"),
         name: TextRef::new(format!("IDT_MODULE_{tag}"), name(kind, layout)),
-        info: TextRef::new(format!("IDT_MODULE_INFO_{tag}"), description(kind, layout)),
+        info: TextRef::new(
+            format!("IDT_MODULE_INFO_{tag}"),
+            with_info(description(kind, layout), info),
+        ),
         ident_number: ident_number(kind, layout),
         layout,
         ident: code_name(kind, layout),
         input: items(Direction::In),
         output: items(Direction::Out),
-        // The user-defined (PZD) modules carry the parameter records, so the
-        // controller writes the mappings and settings when it plugs one of
-        // them; standard telegram 1 has fixed meanings and carries none.
-        records: match kind {
-            ModuleKind::Pzd => records(mappings, record_indexes),
-            ModuleKind::StandardTelegram1 => Vec::new(),
-        },
+        records: records::records(mappings, records, (kind, layout)),
+    }
+}
+
+/// gsdc's description, then the description's own words after `. `.
+fn with_info(gsdc: Text, info: Option<Text>) -> Text {
+    let Some(info) = info else {
+        return gsdc;
+    };
+    let mut languages: Vec<&str> = gsdc
+        .others
+        .iter()
+        .chain(&info.others)
+        .map(|(code, _)| code.as_str())
+        .collect();
+    languages.sort_unstable();
+    languages.dedup();
+    let join = |code: &str| format!("{}. {}", gsdc.get(code), info.get(code));
+    Text {
+        en: join("en"),
+        others: languages
+            .iter()
+            .map(|code| (code.to_string(), join(code)))
+            .collect(),
+        gsd: None,
     }
 }
 

@@ -1,11 +1,12 @@
 //! Parameter records: which record index holds which kind of mapping, the
-//! Refs each module's records carry, and the ValueItems of their choices.
+//! Refs each module's records carry (sized to the module: a PZD record holds
+//! the words the module transports), and the ValueItems of their choices.
 
 use super::ids::{kind_tag, value_tag};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Module, ParameterRecord, RecordRef, TextRef, ValueItem};
-use crate::ir::{MappingKind, Mappings, Text};
+use crate::ir::profinet::{Module, ModuleKind, ParameterRecord, RecordRef, TextRef, ValueItem};
+use crate::ir::{Layout, MappingEntry, MappingKind, MappingSet, Mappings, Text};
 use crate::lower::checks::Checker;
 use std::collections::BTreeSet;
 use toml::Spanned;
@@ -13,14 +14,18 @@ use toml::Spanned;
 /// Record indexes 0..0x7FFF are the vendor's (IEC 61158-6-10).
 const MAX_VENDOR_RECORD_INDEX: i64 = 0x7FFF;
 
+/// A record of one kind of mapping: its index and name.
+pub struct RecordPlan {
+    kind: MappingKind,
+    index: u16,
+    name: Text,
+}
+
 /// One record per kind of mapping the description has: PZD out, PZD in,
-/// DPV1 indexes, settings; indexes 1, 2, 3, 4 unless the description says otherwise.
-/// An index the description leaves out is gsdc's default, said (W104).
-pub fn indexes(
-    cx: &mut Checker,
-    p: &Spanned<raw::Profinet>,
-    mappings: &Mappings,
-) -> Vec<(MappingKind, u16)> {
+/// DPV1 indexes, settings; indexes 1, 2, 3, 4 and gsdc's names unless the
+/// description says otherwise (an index it leaves out is gsdc's default,
+/// said with W104).
+pub fn plans(cx: &mut Checker, p: &Spanned<raw::Profinet>, mappings: &Mappings) -> Vec<RecordPlan> {
     let given = &p.get_ref().records;
     let kinds = [
         (MappingKind::PzdOut, &given.pzd_out, 1),
@@ -34,7 +39,11 @@ pub fn indexes(
         .filter(|(kind, _, _)| mappings.group(*kind).is_some())
         .filter_map(|(kind, given, default)| {
             let index = match given {
-                Some(i) => cx.spanned_in_range(i, 1, MAX_VENDOR_RECORD_INDEX, "a record index")?,
+                Some(record) => {
+                    let span = record.get_ref().index_span(&record.span());
+                    let index = *record.get_ref().index.get_ref();
+                    cx.in_range(index, 1, MAX_VENDOR_RECORD_INDEX, span, "a record index")?
+                }
                 None => {
                     let path = format!("profinet.records.{}", kind.key());
                     cx.defaulted(&path, default, p.span());
@@ -49,44 +58,78 @@ pub fn indexes(
                         .help("give each record its own index under [profinet.records]"),
                 );
             }
-            Some((kind, index))
+            let name = match given.as_ref().and_then(|r| r.get_ref().name.as_ref()) {
+                Some(name) => cx.text(name, None, "record name"),
+                None => record_name(kind),
+            };
+            Some(RecordPlan { kind, index, name })
         })
         .collect()
 }
 
-/// The records a module carries: one Unsigned16 Ref per entry of the
-/// record's kind, at offsets 0, 2, 4, ...
-pub fn records(mappings: &Mappings, indexes: &[(MappingKind, u16)]) -> Vec<ParameterRecord> {
-    indexes
+/// The records a module carries, one Unsigned16 Ref per entry at offsets
+/// 0, 2, 4, ...: a user-defined module every kind, each PZD record with the
+/// words the module transports; standard telegram 1 only the settings its
+/// module fixes. A record with no entry for the module is left out.
+pub fn records(
+    mappings: &Mappings,
+    plans: &[RecordPlan],
+    (kind, layout): (ModuleKind, Layout),
+) -> Vec<ParameterRecord> {
+    plans
         .iter()
-        .filter_map(|&(kind, index)| {
-            let group = mappings.group(kind)?;
+        .filter_map(|plan| {
+            let group = mappings.group(plan.kind)?;
             let refs: Vec<RecordRef> = group
                 .entries()
+                .filter_map(|(set, entry)| ref_value(set, entry, kind, layout))
                 .zip((0..).step_by(2))
-                .map(|((set, entry), offset)| RecordRef {
+                .map(|((set, entry, value), offset)| RecordRef {
                     offset,
                     entry: entry.key,
                     text: TextRef::new(
-                        format!("IDT_{}_{}", kind_tag(kind), entry.key.number),
+                        format!("IDT_{}_{}", kind_tag(plan.kind), entry.key.number),
                         entry.name.clone(),
                     ),
+                    default: value.unwrap_or(entry.default),
+                    changeable: value.is_none(),
                     value_item: set
                         .allowed
                         .choices()
                         .map(|_| format!("IDV_{}", value_tag(set))),
                 })
                 .collect();
-            Some(ParameterRecord {
-                kind,
-                index,
-                name: TextRef::new(format!("IDT_RECORD_{index}"), record_name(kind)),
+            (!refs.is_empty()).then(|| ParameterRecord {
+                kind: plan.kind,
+                index: plan.index,
+                name: TextRef::new(format!("IDT_RECORD_{}", plan.index), plan.name.clone()),
                 // Entries per kind are bounded by lowering (at most 256 a set).
                 length: u16::try_from(2 * refs.len()).unwrap_or(u16::MAX),
                 refs,
             })
         })
         .collect()
+}
+
+/// Whether `entry` is in the module's record, and the value the module
+/// fixes for it if it fixes one.
+fn ref_value<'a>(
+    set: &'a MappingSet,
+    entry: &'a MappingEntry,
+    module: ModuleKind,
+    layout: Layout,
+) -> Option<(&'a MappingSet, &'a MappingEntry, Option<u16>)> {
+    let carried = match entry.key.kind {
+        MappingKind::PzdOut | MappingKind::PzdIn => entry.key.number <= layout.pzd_words,
+        _ => true,
+    };
+    match (module, set.fixed) {
+        (ModuleKind::Pzd, fixed) if carried => Some((set, entry, fixed.map(|f| f.user_defined))),
+        (ModuleKind::StandardTelegram1, Some(fixed)) => {
+            Some((set, entry, Some(fixed.standard_telegram_1?)))
+        }
+        _ => None,
+    }
 }
 
 /// gsdc's name of a record, in English and gsdc's Chinese.
@@ -109,17 +152,20 @@ fn record_name(kind: MappingKind) -> Text {
 /// One ValueItem per set of choices a module's record refers to, in the
 /// order of the records and their sets.
 pub fn value_items(mappings: &Mappings, modules: &[Module]) -> Vec<ValueItem> {
-    let kinds: BTreeSet<MappingKind> = modules
+    let referred: BTreeSet<String> = modules
         .iter()
         .flat_map(|m| &m.records)
-        .map(|r| r.kind)
+        .flat_map(|r| &r.refs)
+        .filter_map(|r| r.value_item.clone())
         .collect();
-    kinds
-        .into_iter()
-        .filter_map(|kind| mappings.group(kind))
-        .flat_map(|g| &g.sets)
+    mappings
+        .sets()
         .filter_map(|set| {
             let tag = value_tag(set);
+            let id = format!("IDV_{tag}");
+            if !referred.contains(&id) {
+                return None;
+            }
             let assignments = set
                 .allowed
                 .choices()?
@@ -131,7 +177,7 @@ pub fn value_items(mappings: &Mappings, modules: &[Module]) -> Vec<ValueItem> {
                 })
                 .collect();
             Some(ValueItem {
-                id: format!("IDV_{tag}"),
+                id,
                 set: set.key,
                 assignments,
             })

@@ -1,0 +1,104 @@
+//! Checks of what a description means as a whole, beyond each value: a
+//! mapping no module carries, a per-module setting without modules.
+
+use super::checks::Checker;
+use super::mappings::SetSpans;
+use crate::description as raw;
+use crate::diag::Diagnostic;
+use crate::ir::profinet::ModuleKind;
+use crate::ir::{MappingKind, Mappings, Profibus, Profinet};
+
+pub fn check(
+    cx: &mut Checker,
+    desc: &raw::Description,
+    mappings: &Mappings,
+    (profibus, profinet): (Option<&Profibus>, Option<&Profinet>),
+    spans: &SetSpans,
+) {
+    unmapped_words(cx, mappings, (profibus, profinet), spans);
+    per_module_settings(cx, desc, (profibus, profinet));
+}
+
+/// W105: PZD words mapped beyond the longest PPO type and user-defined
+/// module: no telegram carries them, so their mappings do nothing.
+fn unmapped_words(
+    cx: &mut Checker,
+    mappings: &Mappings,
+    (profibus, profinet): (Option<&Profibus>, Option<&Profinet>),
+    spans: &SetSpans,
+) {
+    let ppo_words = profibus
+        .into_iter()
+        .flat_map(|p| &p.modules)
+        .map(|m| m.layout.pzd_words);
+    let module_words = profinet
+        .into_iter()
+        .flat_map(|p| &p.modules)
+        .filter(|m| m.kind == ModuleKind::Pzd)
+        .map(|m| m.layout.pzd_words);
+    let Some(carried) = ppo_words.chain(module_words).max() else {
+        return;
+    };
+    for kind in [MappingKind::PzdOut, MappingKind::PzdIn] {
+        let Some(group) = mappings.group(kind) else {
+            continue;
+        };
+        let beyond: Vec<u8> = group
+            .entries()
+            .map(|(_, e)| e.key.number)
+            .filter(|&n| n > carried)
+            .collect();
+        let (Some(first), Some(last)) = (beyond.first(), beyond.last()) else {
+            continue;
+        };
+        let span = group.sets.first().and_then(|s| spans.get(&s.key)).cloned();
+        cx.push(
+            Diagnostic::warning(
+                "W105",
+                format!("{} maps PZD{first} to PZD{last}, which no module carries: the longest has {carried} PZD words", kind.key()),
+            )
+            .at_opt(span)
+            .label("not carried")
+            .help("map only the words a PPO type or module carries, or offer a longer one"),
+        );
+    }
+}
+
+/// E140: a setting fixed per module needs PROFINET modules, and a GSD
+/// cannot hold it (a PROFIBUS parameter is the device's, not a module's).
+fn per_module_settings(
+    cx: &mut Checker,
+    desc: &raw::Description,
+    (profibus, profinet): (Option<&Profibus>, Option<&Profinet>),
+) {
+    let telegram_1 = profinet.is_some_and(|p| {
+        p.modules
+            .iter()
+            .any(|m| m.kind == ModuleKind::StandardTelegram1)
+    });
+    for setting in &desc.settings {
+        let Some(per_module) = &setting.per_module else {
+            continue;
+        };
+        let problem = if profinet.is_none() {
+            Some("per_module needs PROFINET modules: the description has no [profinet]")
+        } else if profibus.is_some() {
+            Some("a GSD's parameters are the device's, not a module's: per_module cannot be in a description with [profibus]")
+        } else if per_module.get_ref().standard_telegram_1.is_some() && !telegram_1 {
+            Some("standard telegram 1 is not offered: set standard_telegram_1 = true or drop its value")
+        } else {
+            None
+        };
+        if let Some(problem) = problem {
+            cx.push(
+                Diagnostic::error(
+                    "E140",
+                    "a setting fixed per module without modules that can fix it",
+                )
+                .at(per_module.span())
+                .label("per module")
+                .help(problem),
+            );
+        }
+    }
+}
