@@ -2,6 +2,7 @@
 
 mod build;
 mod check;
+mod decode;
 
 use clap::{Parser, Subcommand};
 use gsdc::{Diagnostics, Source};
@@ -52,6 +53,8 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         xsd: Option<PathBuf>,
     },
+    /// Read a captured telegram, parameter telegram or diagnosis block against a description.
+    Decode(decode::Args),
 }
 
 /// What a run ends with, as the exit code says it.
@@ -76,6 +79,7 @@ pub fn run(cli: Cli) -> Status {
             check,
         } => build::run(&descriptions, &out, check),
         Command::Check { files, format, xsd } => check::run(&files, format, xsd.as_deref()),
+        Command::Decode(args) => decode::run(&args),
     }
 }
 

@@ -205,7 +205,7 @@ pub fn meaning(ir: &Ir, allowed: &Allowed, value: u16) -> Option<String> {
 
 /// A parameter as the manual writes it (`F0-08`, `P43.02`) through the
 /// description's function-code numbering, else its address in hex.
-pub fn parameter_name(ir: &Ir, address: u16) -> String {
+fn parameter_name(ir: &Ir, address: u16) -> String {
     ir.numbering
         .as_ref()
         .and_then(|n| n.format(address))

@@ -22,7 +22,7 @@ pub use diagnosis::{Area, DiagnosisBlock};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, modules, Module};
-pub use pkw_channel::{Parameter, Pkw, PkwError, PkwSide, Stations};
+pub use pkw_channel::{Channel, Parameter, Pkw, PkwError, PkwSide, Stations};
 pub use prm::{ConstantByte, Prm, PrmValue};
 pub use telegram::{Carried, DecodedWord, Field, Telegram};
 

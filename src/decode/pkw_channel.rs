@@ -2,7 +2,6 @@
 //! (`crate::pkw`, from `templates/support/`), so gsdc reads a request or a
 //! response exactly as the card does, and refuses what the card refuses.
 
-use super::mapping::parameter_name;
 use crate::ir::{Direction, Ir, PkwKind};
 use crate::pkw::{pke_ind_pwe as pke, station_command as station, U16Be};
 use serde::Serialize;
@@ -10,6 +9,7 @@ use serde::Serialize;
 /// A PKW request (to the drive) or response (from it), decoded.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Pkw {
+    pub channel: Channel,
     pub kind: PkwSide,
     /// The station bytes of an MV810-style channel.
     pub stations: Option<Stations>,
@@ -28,6 +28,18 @@ pub struct Pkw {
     pub refused: Option<String>,
 }
 
+/// The kind of PKW channel, as the description's `telegram.pkw` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Channel {
+    /// PKE, IND, PWE (MD810); codes are four bits, the manual writes them
+    /// in decimal.
+    PkeIndPwe,
+    /// Station, command, address, value (MV810); codes are command words,
+    /// the manual writes them in hex.
+    StationCommandAddressValue,
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PkwSide {
@@ -42,12 +54,11 @@ pub struct Stations {
 }
 
 /// A drive parameter: its address and its name as the manual writes it
-/// (`F0-08`; the address in hex when the description's numbering has no name
-/// for it).
+/// (`F0-08`), when the description's numbering has one for the address.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Parameter {
     pub address: u16,
-    pub name: String,
+    pub name: Option<String>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -58,8 +69,9 @@ pub struct PkwError {
 }
 
 impl Pkw {
-    fn new(kind: PkwSide, code: u16) -> Self {
+    fn new(channel: Channel, kind: PkwSide, code: u16) -> Self {
         Pkw {
+            channel,
             kind,
             stations: None,
             code,
@@ -77,7 +89,7 @@ impl Pkw {
 pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Option<Pkw> {
     let parameter = |address| Parameter {
         address,
-        name: parameter_name(ir, address),
+        name: ir.numbering.as_ref().and_then(|n| n.format(address)),
     };
     match (ir.telegram.pkw, direction) {
         (PkwKind::None, _) => None,
@@ -92,7 +104,7 @@ pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Optio
     }
 }
 
-/// PKE bits 15-12 of a telegram the codec wrote: its command or response code.
+/// PKE bits 15-12: the command or response code.
 fn pke_code(words: [U16Be; 4]) -> u16 {
     words[0].get() >> 12
 }
@@ -100,9 +112,13 @@ fn pke_code(words: [U16Be; 4]) -> u16 {
 fn pke_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
     let request = match pke::PkwRequest::decode(words) {
         Ok(request) => request,
-        Err(error) => return pke_refused(PkwSide::Request, error, parameter),
+        Err(error) => return pke_refused(PkwSide::Request, words, error, parameter),
     };
-    let mut pkw = Pkw::new(PkwSide::Request, pke_code(request.encode()));
+    let mut pkw = Pkw::new(
+        Channel::PkeIndPwe,
+        PkwSide::Request,
+        pke_code(request.encode()),
+    );
     match request {
         pke::PkwRequest::None => pkw.meaning = Some("no request"),
         pke::PkwRequest::Read { address } => {
@@ -121,9 +137,13 @@ fn pke_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw 
 fn pke_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
     let response = match pke::PkwResponse::decode(words) {
         Ok(response) => response,
-        Err(error) => return pke_refused(PkwSide::Response, error, parameter),
+        Err(error) => return pke_refused(PkwSide::Response, words, error, parameter),
     };
-    let mut pkw = Pkw::new(PkwSide::Response, pke_code(response.encode()));
+    let mut pkw = Pkw::new(
+        Channel::PkeIndPwe,
+        PkwSide::Response,
+        pke_code(response.encode()),
+    );
     match response {
         pke::PkwResponse::None => pkw.meaning = Some("no request"),
         pke::PkwResponse::Done { address, value } => {
@@ -155,22 +175,24 @@ fn pke_error_text(error: pke::PkwErrorCode) -> &'static str {
 
 fn pke_refused(
     side: PkwSide,
+    words: &[U16Be; 4],
     error: pke::PkwDecodeError,
     parameter: impl Fn(u16) -> Parameter,
 ) -> Pkw {
+    let refused = Pkw::new(Channel::PkeIndPwe, side, pke_code(*words));
     match error {
         pke::PkwDecodeError::IllegalCommand { command, address } => Pkw {
             parameter: Some(parameter(address)),
             refused: Some(format!(
                 "command {command} is not one the manual defines (0 no request, 1 read, 2 write): the drive answers 7, cannot execute, with error 1, illegal command"
             )),
-            ..Pkw::new(side, u16::from(command))
+            ..refused
         },
         pke::PkwDecodeError::UnknownResponse(code) => Pkw {
             refused: Some(format!(
                 "response code {code} is not one the manual defines (0 no request, 1 done, 7 cannot execute)"
             )),
-            ..Pkw::new(side, u16::from(code))
+            ..refused
         },
         pke::PkwDecodeError::UnknownErrorCode(error) => Pkw {
             meaning: Some("cannot execute"),
@@ -181,10 +203,12 @@ fn pke_refused(
             refused: Some(format!(
                 "error code {error} is not one the manual defines (1 to 4)"
             )),
-            ..Pkw::new(side, 7)
+            ..refused
         },
     }
 }
+
+const STATION: Channel = Channel::StationCommandAddressValue;
 
 fn station_meaning(command: station::PkwCommand) -> &'static str {
     match command {
@@ -217,7 +241,7 @@ fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> 
                 Some(value)
             }
         },
-        ..Pkw::new(PkwSide::Request, command.code())
+        ..Pkw::new(STATION, PkwSide::Request, command.code())
     }
 }
 
@@ -231,7 +255,7 @@ fn station_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) ->
     let mut pkw = Pkw {
         stations: stations(response.stations),
         parameter: Some(parameter(response.address)),
-        ..Pkw::new(PkwSide::Response, code)
+        ..Pkw::new(STATION, PkwSide::Response, code)
     };
     match response.reply {
         station::PkwReply::Value(value) => {
@@ -263,14 +287,14 @@ fn station_refused(side: PkwSide, error: station::PkwDecodeError) -> Pkw {
                 "command 0x{code:04X} is not one the manual defines (0x03 read one, 0x06 write and store, 0x07 write; 0x80 added on error){}",
                 if code == 0 { "; 0 is what a master sends before it has a request" } else { "" }
             )),
-            ..Pkw::new(side, code)
+            ..Pkw::new(STATION, side, code)
         },
         station::PkwDecodeError::ReadCount(count) => Pkw {
             meaning: Some(station_meaning(station::PkwCommand::Read)),
             refused: Some(format!(
                 "a read's count (PKW3) is always 1; this one is {count}"
             )),
-            ..Pkw::new(side, station::PkwCommand::Read.code())
+            ..Pkw::new(STATION, side, station::PkwCommand::Read.code())
         },
     }
 }

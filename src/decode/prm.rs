@@ -38,6 +38,8 @@ pub struct PrmValue {
     /// value that is not one of the choices.
     pub meaning: Option<String>,
     pub default: u16,
+    /// What the default means, as `meaning` says it.
+    pub default_meaning: Option<String>,
     /// Whether the value is one the mapping allows; the card refuses a
     /// parameter telegram with one that is not.
     pub allowed: bool,
@@ -84,6 +86,7 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
                 value,
                 meaning: meaning(ir, &set.allowed, value),
                 default: entry.default,
+                default_meaning: meaning(ir, &set.allowed, entry.default),
                 allowed: set.allowed.contains(i64::from(value)),
             }
         })

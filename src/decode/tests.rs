@@ -65,7 +65,7 @@ fn md810_read_f0_08_with_ppo1() {
         pkw.parameter,
         Some(Parameter {
             address: 0xF008,
-            name: "F0-08".into()
+            name: Some("F0-08".into())
         })
     );
     assert_eq!((pkw.value, pkw.error, pkw.refused), (None, None, None));
@@ -80,7 +80,7 @@ fn md810_answer_to_the_read() {
         .unwrap();
     assert_eq!(pkw.kind, PkwSide::Response);
     assert_eq!((pkw.code, pkw.meaning), (1, Some("done")));
-    assert_eq!(pkw.parameter.unwrap().name, "F0-08");
+    assert_eq!(pkw.parameter.unwrap().name.as_deref(), Some("F0-08"));
     assert_eq!(pkw.value, Some(5000));
     assert_eq!(pkw.error, None);
 }
@@ -100,7 +100,7 @@ fn md810_error_answers() {
         let hex = ppo1(&format!("70F0 0800 0000 000{code}"));
         let pkw = decode(&ir, "PPO1", In, &hex).pkw.unwrap();
         assert_eq!((pkw.code, pkw.meaning), (7, Some("cannot execute")));
-        assert_eq!(pkw.parameter.unwrap().name, "F0-08");
+        assert_eq!(pkw.parameter.unwrap().name.as_deref(), Some("F0-08"));
         assert_eq!(
             pkw.error,
             Some(PkwError {
@@ -132,7 +132,7 @@ fn md810_write_and_an_undefined_command() {
         .pkw
         .unwrap();
     assert_eq!((pkw.code, pkw.meaning), (3, None));
-    assert_eq!(pkw.parameter.unwrap().name, "F0-08");
+    assert_eq!(pkw.parameter.unwrap().name.as_deref(), Some("F0-08"));
     assert!(pkw.refused.unwrap().starts_with("command 3 is not one"));
 }
 
@@ -215,7 +215,7 @@ fn mv810_read_of_p43_02() {
         pkw.parameter,
         Some(Parameter {
             address: 0x2B02,
-            name: "P43.02".into()
+            name: Some("P43.02".into())
         })
     );
     assert_eq!(pkw.value, None);
@@ -235,7 +235,7 @@ fn mv810_read_of_p43_02() {
         })
     );
     assert_eq!((pkw.code, pkw.value), (3, Some(1)));
-    assert_eq!(pkw.parameter.unwrap().name, "P43.02");
+    assert_eq!(pkw.parameter.unwrap().name.as_deref(), Some("P43.02"));
 
     let failed = decode(
         &ir,
@@ -460,5 +460,6 @@ fn decoded_values_serialize_with_their_names() {
     assert_eq!(json["direction"], "out");
     assert_eq!(json["pkw"]["kind"], "request");
     assert_eq!(json["pkw"]["parameter"]["name"], "F0-08");
+    assert_eq!(json["pkw"]["parameter"]["address"], 0xF008);
     assert_eq!(json["words"][4]["carries"]["source"], "default");
 }
