@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 #[derive(clap::Args)]
 #[command(
     group = clap::ArgGroup::new("data").required(true).multiple(true).args(["telegram", "prm", "diag"]),
+    override_usage = "gsdc decode <DESCRIPTION> [--module <NAME> --direction <out|in> [--mapping <KIND=VALUE,...>]... <HEX>...] [--prm <HEX>] [--diag <HEX>] [--format <table|json>]",
     after_help = "Examples:\n  gsdc decode descriptions/md810dp.toml --module PPO1 --direction out 10F0 0800 0000 0000 0000 0000\n  gsdc decode descriptions/mv810-pnet02.toml --module 'PKW + 2 PZD' --direction in --mapping pzd_in=3 '01 02 00 03 2B 02 00 01 0461 1388'\n  gsdc decode descriptions/md810dp.toml --diag '03 00 34'\n\nHEX is bytes in hex, with or without blanks. --mapping KIND=VALUE,... sets a kind of mapping\n(pzd_out, pzd_in, dpv1_index, settings) entry by entry in order, a value empty to keep its default;\nwithout it (or --prm) the description's defaults are in force."
 )]
 pub struct Args {
