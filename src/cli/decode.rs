@@ -81,12 +81,8 @@ pub fn run(args: &Args) -> Status {
         Ok(loaded) => loaded,
         Err(status) => return status,
     };
-    match decode_all(&ir, args) {
+    match decode_all(name, &ir, args) {
         Ok(document) => {
-            let document = Document {
-                description: name,
-                ..document
-            };
             match args.format {
                 Format::Table => say(render_tables(&document).trim_end()),
                 Format::Json => {
@@ -131,7 +127,7 @@ fn description_error(name: &str, text: &str, diagnostic: Diagnostic) -> Status {
 
 /// Each part asked for, or the first diagnostic, shown against the argument
 /// it is about.
-fn decode_all(ir: &Ir, args: &Args) -> Result<Document, Status> {
+fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Status> {
     let prm = args
         .prm
         .as_deref()
@@ -174,7 +170,7 @@ fn decode_all(ir: &Ir, args: &Args) -> Result<Document, Status> {
         })
         .transpose()?;
     Ok(Document {
-        description: String::new(),
+        description,
         telegram,
         prm,
         diagnosis,

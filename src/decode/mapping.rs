@@ -20,8 +20,8 @@ pub enum ValueSource {
     ParameterTelegram,
 }
 
-/// The values that differ from the description's defaults, and where they
-/// came from.
+/// The values in force instead of the description's defaults, and where
+/// they came from.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct MappingInForce {
     given: BTreeMap<EntryKey, (u16, ValueSource)>,

@@ -21,7 +21,7 @@ mod telegram;
 pub use diagnosis::{Area, DiagnosisBlock};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
-pub use module::{find_module, modules, Module};
+pub use module::{find_module, Module};
 pub use pkw_channel::{Channel, Parameter, Pkw, PkwError, PkwSide, Stations};
 pub use prm::{ConstantByte, Prm, PrmValue};
 pub use telegram::{Carried, DecodedWord, Field, Telegram};
@@ -60,8 +60,8 @@ pub fn prm(ir: &Ir, hex: &Hex) -> Result<Prm, Diagnostic> {
     Ok(prm::decode(ir, user_prm, bytes))
 }
 
-/// "MD810DP.GSD's User_Prm_Data is 63 bytes: 3 constant bytes, then 2 bytes
-/// each for 12 PZD out, ...".
+/// "MD810DP.GSD's User_Prm_Data is 63 bytes: 3 DPV1 status bytes, then 2
+/// bytes each for 12 pzd_out, 12 pzd_in, 6 dpv1_index; ...".
 fn prm_help(file_name: &str, user_prm: &crate::ir::profibus::UserPrm) -> String {
     let blocks: Vec<String> = user_prm
         .blocks
@@ -100,18 +100,14 @@ pub fn diagnosis(ir: &Ir, hex: &Hex) -> Result<DiagnosisBlock, Diagnostic> {
 }
 
 /// `out` or `in`, as `--direction` takes it.
-pub fn direction_name(direction: Direction) -> &'static str {
-    match direction {
-        Direction::Out => "out",
-        Direction::In => "in",
-    }
-}
-
 fn serialize_direction<S: serde::Serializer>(
     direction: &Direction,
     serializer: S,
 ) -> Result<S::Ok, S::Error> {
-    serializer.serialize_str(direction_name(*direction))
+    serializer.serialize_str(match direction {
+        Direction::Out => "out",
+        Direction::In => "in",
+    })
 }
 
 #[cfg(test)]

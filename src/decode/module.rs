@@ -84,7 +84,7 @@ impl Module<'_> {
 
 /// Every module of the description: the PPO types, then the PROFINET
 /// modules, in the order of the device files.
-pub fn modules(ir: &Ir) -> Vec<Module<'_>> {
+fn modules(ir: &Ir) -> Vec<Module<'_>> {
     let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(Module::Ppo);
     let profinet = ir
         .profinet
