@@ -307,39 +307,15 @@ impl Compiler {
     /// there is one. `name` names the description in diagnostics. `Err`
     /// only when the file cannot be read.
     pub fn compile(&mut self, path: &Path, name: &str) -> Result<Compiled, BuildError> {
-        let read_error = |error| BuildError::Read {
-            path: path.to_path_buf(),
-            error,
-        };
-        let bytes = match read_input(path, &crate::load::INPUT_LIMIT) {
-            Ok(bytes) => bytes,
-            Err(ReadError::Io(error)) => return Err(read_error(error)),
-            Err(ReadError::TooLarge(d)) => return Ok(refused_unread(name, String::new(), d)),
-        };
-        let text = match crate::load::decode(&bytes) {
-            Ok(text) => text,
-            Err(d) => {
-                let shown = String::from_utf8_lossy(&bytes).into_owned();
-                return Ok(refused_unread(name, shown, d));
-            }
-        };
-        // The name in generated headers is the file's own, without folders.
-        let source_name = path
-            .file_name()
-            .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
-        let (ir, mut diagnostics) = crate::load(&source_name, text);
+        let Loaded { findings, ir } = load_file(path, name)?;
+        let mut description = findings;
         let files = match ir.map(|ir| crate::compile(&ir)) {
             Some(Ok(files)) => Some(files),
             Some(Err(problems)) => {
-                diagnostics.extend(problems);
+                description.diagnostics.extend(problems);
                 None
             }
             None => None,
-        };
-        let description = Findings {
-            name: name.to_string(),
-            text: text.to_string(),
-            diagnostics,
         };
         Ok(self.judge(description, files))
     }
@@ -394,16 +370,55 @@ impl Compiler {
     }
 }
 
-/// A description refused before it could be loaded (too large, not UTF-8).
-fn refused_unread(name: &str, text: String, diagnostic: Diagnostic) -> Compiled {
-    Compiled {
-        findings: vec![Findings {
+/// A description read from its file: its findings (warnings too), and its
+/// IR unless it has errors.
+#[derive(Debug)]
+#[non_exhaustive]
+pub struct Loaded {
+    pub findings: Findings,
+    pub ir: Option<crate::Ir>,
+}
+
+/// Reads the description at `path` (no more than
+/// [`crate::load::INPUT_LIMIT`]), decodes and loads it: every command that
+/// reads a description starts here. `name` names it in diagnostics. `Err`
+/// only when the file cannot be read.
+pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
+    let unread = |text: String, diagnostic| Loaded {
+        findings: Findings {
             name: name.to_string(),
             text,
             diagnostics: Diagnostics(vec![diagnostic]),
-        }],
-        files: Err(Refused::Errors),
-    }
+        },
+        ir: None,
+    };
+    let bytes = match read_input(path, &crate::load::INPUT_LIMIT) {
+        Ok(bytes) => bytes,
+        Err(ReadError::Io(error)) => {
+            return Err(BuildError::Read {
+                path: path.to_path_buf(),
+                error,
+            })
+        }
+        Err(ReadError::TooLarge(d)) => return Ok(unread(String::new(), d)),
+    };
+    let text = match crate::load::decode(&bytes) {
+        Ok(text) => text,
+        Err(d) => return Ok(unread(String::from_utf8_lossy(&bytes).into_owned(), d)),
+    };
+    // The name in generated headers is the file's own, without folders.
+    let source_name = path
+        .file_name()
+        .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
+    let (ir, diagnostics) = crate::load(&source_name, text);
+    Ok(Loaded {
+        findings: Findings {
+            name: name.to_string(),
+            text: text.to_string(),
+            diagnostics,
+        },
+        ir,
+    })
 }
 
 /// Two descriptions that give files of one name with different contents.

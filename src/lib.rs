@@ -8,6 +8,7 @@
 //! for build scripts, and [`output`] which both use.
 
 // The core.
+pub mod decode;
 pub mod description;
 pub mod diag;
 pub mod emit;
@@ -18,6 +19,7 @@ pub mod ir;
 mod latin1;
 pub mod load;
 pub mod lower;
+mod pkw;
 mod utf16;
 
 // The edges.

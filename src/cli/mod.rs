@@ -2,6 +2,7 @@
 
 mod build;
 mod check;
+mod decode;
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -28,6 +29,8 @@ enum Command {
     /// Check GSD and GSDML files against gsdc's rules.
     #[command(after_help = check::EXAMPLES)]
     Check(check::Args),
+    /// Read a captured telegram, parameter telegram or diagnosis block against a description.
+    Decode(decode::Args),
 }
 
 /// What a run ends with, as the exit code says it.
@@ -72,6 +75,7 @@ fn run(cli: Cli) -> Status {
     match cli.command {
         Command::Build(args) => build::run(&args),
         Command::Check(args) => check::run(&args),
+        Command::Decode(args) => decode::run(&args),
     }
 }
 

@@ -1,0 +1,427 @@
+//! `gsdc decode`: captured bus data read against a description. This file
+//! parses the arguments and renders; the decoding is `gsdc::decode`.
+
+use super::{display_name, say, warn, Status, MAX_SHOWN};
+use gsdc::decode::{
+    self, Carried, Channel, DecodedWord, DiagnosisBlock, Hex, MappingInForce, Pkw, PkwSide, Prm,
+    Telegram, ValueSource,
+};
+use gsdc::ir::{Direction, Ir};
+use gsdc::{Diagnostic, Source};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+#[derive(clap::Args)]
+#[command(
+    group = clap::ArgGroup::new("data").required(true).multiple(true).args(["telegram", "prm", "diag"]),
+    override_usage = "gsdc decode <DESCRIPTION> [--module <NAME> --direction <out|in> [--mapping <KIND=VALUE,...>]... <HEX>...] [--prm <HEX>] [--diag <HEX>] [--format <table|json>]",
+    after_help = "Examples:\n  gsdc decode descriptions/md810dp.toml --module PPO1 --direction out 10F0 0800 0000 0000 0000 0000\n  gsdc decode descriptions/mv810-pnet02.toml --module 'PKW + 2 PZD' --direction in --mapping pzd_in=3 '01 02 00 03 2B 02 00 01 0461 1388'\n  gsdc decode descriptions/md810dp.toml --diag '03 00 34'\n\nHEX is bytes in hex, with or without blanks. --mapping KIND=VALUE,... sets a kind of mapping\n(pzd_out, pzd_in, dpv1_index, settings) entry by entry in order, a value empty to keep its default;\nwithout it (or --prm) the description's defaults are in force."
+)]
+pub struct Args {
+    /// The description (TOML) the data belongs to.
+    #[arg(value_name = "DESCRIPTION")]
+    description: PathBuf,
+    /// A captured telegram in hex: `10F0 0800 ...` or `10F00800...`; several arguments are joined.
+    #[arg(value_name = "HEX", requires_all = ["module", "direction"])]
+    telegram: Vec<String>,
+    /// The telegram's module: a PPO type (PPO1..PPO5) or a PROFINET module's name as the GSDML shows it ("PKW + 12 PZD"); case and blanks do not matter.
+    #[arg(long, value_name = "NAME", requires = "telegram")]
+    module: Option<String>,
+    /// Which way the telegram goes: out is master to drive (a PKW request), in is drive to master (a response).
+    #[arg(long, value_enum, requires = "telegram")]
+    direction: Option<Way>,
+    /// The values of a kind of mapping in force, in entry order: pzd_out=F0-08,F0-02; may be repeated.
+    #[arg(
+        long,
+        value_name = "KIND=VALUE,...",
+        requires = "telegram",
+        conflicts_with = "prm"
+    )]
+    mapping: Vec<String>,
+    /// A parameter telegram's User_Prm_Data in hex (without Set_Prm's 7 standard bytes); with a telegram, its mapping is in force.
+    #[arg(long, value_name = "HEX")]
+    prm: Option<String>,
+    /// A device-related diagnosis block in hex, its header first.
+    #[arg(long, value_name = "HEX")]
+    diag: Option<String>,
+    /// How the result is printed.
+    #[arg(long, value_enum, default_value = "table")]
+    format: Format,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Way {
+    /// Master to drive.
+    Out,
+    /// Drive to master.
+    In,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Tables for people.
+    Table,
+    /// One JSON document for programs.
+    Json,
+}
+
+/// What `--format json` prints: each part decoded, `null` when not asked for.
+#[derive(Serialize)]
+struct Document {
+    description: String,
+    telegram: Option<Telegram>,
+    prm: Option<Prm>,
+    diagnosis: Option<DiagnosisBlock>,
+}
+
+pub fn run(args: &Args) -> Status {
+    let (name, ir) = match load(&args.description) {
+        Ok(loaded) => loaded,
+        Err(status) => return status,
+    };
+    match decode_all(name, &ir, args) {
+        Ok(document) => {
+            match args.format {
+                Format::Table => say(render_tables(&document).trim_end()),
+                Format::Json => {
+                    say(&serde_json::to_string_pretty(&document).expect("decoded values serialize"))
+                }
+            }
+            Status::Ok
+        }
+        Err(status) => status,
+    }
+}
+
+/// The description's IR; its diagnostics are shown only when it has errors
+/// (its warnings are about the device files, not about decoding).
+fn load(path: &Path) -> Result<(String, Ir), Status> {
+    let name = display_name(path);
+    let loaded = gsdc::build::load_file(path, &name).map_err(|e| {
+        warn(&format!("error: cannot read {name}: {e}"));
+        Status::UsageOrIo
+    })?;
+    match loaded.ir {
+        Some(ir) => Ok((ir.source_name.clone(), ir)),
+        None => {
+            for rendered in loaded.findings.rendered(MAX_SHOWN) {
+                warn(&rendered);
+            }
+            Err(Status::InputErrors)
+        }
+    }
+}
+
+/// Each part asked for, or the first diagnostic, shown against the argument
+/// it is about.
+fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Status> {
+    let prm = args
+        .prm
+        .as_deref()
+        .map(|text| {
+            in_argument(
+                "--prm",
+                text,
+                Hex::parse(text).and_then(|hex| decode::prm(ir, &hex)),
+            )
+        })
+        .transpose()?;
+    let telegram = match (&args.module, args.direction) {
+        (Some(module), Some(way)) if !args.telegram.is_empty() => {
+            let mapping = match &prm {
+                Some(prm) => prm.mapping(),
+                None => mapping_options(ir, &args.mapping)?,
+            };
+            let module = in_argument("--module", module, decode::find_module(ir, module))?;
+            let text = args.telegram.join(" ");
+            let direction = match way {
+                Way::Out => Direction::Out,
+                Way::In => Direction::In,
+            };
+            let decoded = Hex::parse(&text)
+                .and_then(|hex| decode::telegram(ir, module, direction, &hex, &mapping));
+            Some(in_argument("HEX", &text, decoded)?)
+        }
+        // clap requires --module and --direction with HEX, and HEX with them.
+        _ => None,
+    };
+    let diagnosis = args
+        .diag
+        .as_deref()
+        .map(|text| {
+            in_argument(
+                "--diag",
+                text,
+                Hex::parse(text).and_then(|hex| decode::diagnosis(ir, &hex)),
+            )
+        })
+        .transpose()?;
+    Ok(Document {
+        description,
+        telegram,
+        prm,
+        diagnosis,
+    })
+}
+
+fn mapping_options(ir: &Ir, options: &[String]) -> Result<MappingInForce, Status> {
+    let mut mapping = MappingInForce::defaults();
+    for option in options {
+        in_argument("--mapping", option, mapping.give(ir, option))?;
+    }
+    Ok(mapping)
+}
+
+/// The value, or the diagnostic rendered against the argument `text` of
+/// `name` (exit 1).
+fn in_argument<T>(name: &str, text: &str, result: Result<T, Diagnostic>) -> Result<T, Status> {
+    result.map_err(|diagnostic| {
+        warn(Source { name, text }.render(&diagnostic).trim_end());
+        Status::InputErrors
+    })
+}
+
+/// The parts asked for, one blank line apart.
+fn render_tables(document: &Document) -> String {
+    let mut sections = Vec::new();
+    if let Some(prm) = &document.prm {
+        sections.push(render_prm(prm));
+    }
+    if let Some(telegram) = &document.telegram {
+        sections.push(render_telegram(telegram));
+    }
+    if let Some(diagnosis) = &document.diagnosis {
+        sections.push(render_diagnosis(diagnosis));
+    }
+    sections.join("\n")
+}
+
+fn render_telegram(t: &Telegram) -> String {
+    let mut out = String::new();
+    let way = match t.direction {
+        Direction::Out => "out, master to drive",
+        Direction::In => "in, drive to master",
+    };
+    let _ = writeln!(out, "{} ({way}), {} bytes\n", t.module, t.len);
+    let rows = t.words.iter().map(|w| {
+        let (carries, mapping) = w.carries.as_ref().map(carried).unwrap_or_default();
+        vec![
+            w.offset.to_string(),
+            w.name.clone(),
+            format!("{:04X}", w.value),
+            w.value.to_string(),
+            carries,
+            mapping,
+        ]
+    });
+    table(
+        &mut out,
+        &["byte", "word", "hex", "value", "carries", "mapping"],
+        &[true, false, false, true, false, false],
+        rows,
+    );
+    for word in t.words.iter().filter(|w| !w.fields.is_empty()) {
+        render_fields(&mut out, word);
+    }
+    if let Some(pkw) = &t.pkw {
+        render_pkw(&mut out, pkw);
+    }
+    out
+}
+
+/// The carries and mapping cells of a mapped PZD word: what it carries, and
+/// the mapping's value (decimal, as the manuals enter parameter addresses)
+/// with where it came from.
+fn carried(c: &Carried) -> (String, String) {
+    let carries = c
+        .meaning
+        .clone()
+        .unwrap_or_else(|| "not one of the choices".into());
+    let source = match c.source {
+        ValueSource::Default => "default",
+        ValueSource::Given => "--mapping",
+        ValueSource::ParameterTelegram => "--prm",
+    };
+    (carries, format!("{} = {}, {source}", c.mapping, c.value))
+}
+
+fn render_fields(out: &mut String, word: &DecodedWord) {
+    let _ = writeln!(
+        out,
+        "\n{} (byte {}) = 0x{:04X}\n",
+        word.name, word.offset, word.value
+    );
+    let rows = word.fields.iter().map(|f| {
+        let bits = if f.first == f.last {
+            f.first.to_string()
+        } else {
+            format!("{}-{}", f.first, f.last)
+        };
+        vec![
+            bits,
+            f.name.clone(),
+            f.value.to_string(),
+            f.text.clone().unwrap_or_default(),
+        ]
+    });
+    table(
+        out,
+        &["bit", "name", "value", "meaning"],
+        &[false, false, true, false],
+        rows,
+    );
+}
+
+fn render_pkw(out: &mut String, pkw: &Pkw) {
+    let side = match pkw.kind {
+        PkwSide::Request => "request",
+        PkwSide::Response => "response",
+    };
+    let _ = writeln!(out, "\nPKW {side}");
+    let mut rows = Vec::new();
+    if let Some(s) = pkw.stations {
+        rows.push([
+            "stations".into(),
+            format!("target {}, source {}", s.target, s.source),
+        ]);
+    }
+    // As each manual writes its codes.
+    let code = match pkw.channel {
+        Channel::PkeIndPwe => pkw.code.to_string(),
+        Channel::StationCommandAddressValue => format!("0x{:02X}", pkw.code),
+    };
+    let meaning = pkw.meaning.unwrap_or("not defined by the manual");
+    rows.push(["code".into(), format!("{code}  {meaning}")]);
+    if let Some(p) = &pkw.parameter {
+        let parameter = match &p.name {
+            Some(name) => format!("{name} (address 0x{:04X})", p.address),
+            None => format!("address 0x{:04X}", p.address),
+        };
+        rows.push(["parameter".into(), parameter]);
+    }
+    if let Some(value) = pkw.value {
+        rows.push(["value".into(), format!("{value} (0x{value:04X})")]);
+    }
+    if let Some(error) = &pkw.error {
+        let text = error.text.unwrap_or("the manual lists no error codes");
+        rows.push(["error".into(), format!("{}  {text}", error.code)]);
+    }
+    if let Some(refused) = &pkw.refused {
+        rows.push(["refused".into(), refused.clone()]);
+    }
+    for [key, value] in rows {
+        let _ = writeln!(out, "  {key:<10} {value}");
+    }
+}
+
+fn render_prm(prm: &Prm) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "User_Prm_Data, {} bytes\n", prm.len);
+    let constant = prm.constant.iter().map(|c| {
+        vec![
+            c.offset.to_string(),
+            c.name.clone(),
+            format!("{:02X}", c.value),
+            c.value.to_string(),
+            String::new(),
+            format!("{:02X}", c.default),
+        ]
+    });
+    let params = prm.params.iter().map(|p| {
+        let meaning = match (&p.meaning, p.allowed) {
+            (Some(m), true) => m.clone(),
+            (Some(m), false) => format!("{m} (not allowed)"),
+            (None, _) => "not allowed".into(),
+        };
+        vec![
+            p.offset.to_string(),
+            p.name.clone(),
+            format!("{:04X}", p.value),
+            p.value.to_string(),
+            meaning,
+            p.default_meaning
+                .clone()
+                .unwrap_or_else(|| p.default.to_string()),
+        ]
+    });
+    table(
+        &mut out,
+        &["byte", "name", "hex", "value", "meaning", "default"],
+        &[true, false, false, true, false, false],
+        constant.chain(params),
+    );
+    out
+}
+
+fn render_diagnosis(d: &DiagnosisBlock) -> String {
+    let mut out = String::new();
+    let bytes: Vec<String> = d.bytes.iter().map(|b| format!("{b:02X}")).collect();
+    let _ = writeln!(
+        out,
+        "Diagnosis block, {} bytes: {} (header 0x{:02X}: device-related, {} bytes)\n",
+        d.len,
+        bytes.join(" "),
+        d.header,
+        d.len
+    );
+    let rows = d.areas.iter().map(|a| {
+        // GSD counts Unit_Diag_Area bits from the byte after the header.
+        let first_byte = 1 + a.first_bit / 8;
+        let last_byte = 1 + a.last_bit / 8;
+        let bytes = if first_byte == last_byte {
+            first_byte.to_string()
+        } else {
+            format!("{first_byte}-{last_byte}")
+        };
+        vec![
+            format!("{}-{}", a.first_bit, a.last_bit),
+            bytes,
+            format!("{:X}", a.value),
+            a.value.to_string(),
+            a.text
+                .clone()
+                .unwrap_or_else(|| "not named by the description".into()),
+        ]
+    });
+    table(
+        &mut out,
+        &["bits", "byte", "hex", "value", "meaning"],
+        &[false, false, false, true, false],
+        rows,
+    );
+    out
+}
+
+/// Columns two blanks apart, each as wide as its widest cell; `right`
+/// aligns a column's cells to the right. Trailing blanks are dropped.
+fn table(
+    out: &mut String,
+    header: &[&str],
+    right: &[bool],
+    rows: impl Iterator<Item = Vec<String>>,
+) {
+    let rows: Vec<Vec<String>> = std::iter::once(header.iter().map(|h| h.to_string()).collect())
+        .chain(rows)
+        .collect();
+    let widths: Vec<usize> = (0..header.len())
+        .map(|i| rows.iter().map(|r| r[i].chars().count()).max().unwrap_or(0))
+        .collect();
+    for row in &rows {
+        let mut line = String::new();
+        for (i, cell) in row.iter().enumerate() {
+            let pad = " ".repeat(widths[i] - cell.chars().count());
+            if i > 0 {
+                line.push_str("  ");
+            }
+            if right[i] {
+                line.push_str(&pad);
+                line.push_str(cell);
+            } else {
+                line.push_str(cell);
+                line.push_str(&pad);
+            }
+        }
+        let _ = writeln!(out, "{}", line.trim_end());
+    }
+}

@@ -1,0 +1,89 @@
+//! The device-related diagnosis block: the header byte, then the device's
+//! bytes, read area by area as the GSD's `Unit_Diag_Area`s number their bits
+//! (through the firmware's `DiagArea`).
+
+use crate::diag::Diagnostic;
+use crate::ir::profibus::Diagnosis;
+use crate::pkw::DiagArea;
+use serde::Serialize;
+
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DiagnosisBlock {
+    pub len: usize,
+    pub header: u8,
+    pub bytes: Vec<u8>,
+    pub areas: Vec<Area>,
+}
+
+/// A `Unit_Diag_Area`: bits counted from the byte after the header.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Area {
+    pub first_bit: u16,
+    pub last_bit: u16,
+    pub value: u16,
+    /// The description's text for the value; `None` when it names none.
+    pub text: Option<String>,
+}
+
+/// Header bits 7-6: 00 is a device-related block.
+const BLOCK_TYPE_MASK: u8 = 0b1100_0000;
+/// Header bits 5-0: the block's length, the header included.
+const LENGTH_MASK: u8 = 0b0011_1111;
+
+/// Decodes `block`, which must be as long as `diagnosis` says; E417 when
+/// its header is not that of a device-related block of this length (the
+/// diagnostic has no place; the caller knows where byte 0 is).
+pub(super) fn decode(diagnosis: &Diagnosis, block: &[u8]) -> Result<DiagnosisBlock, Diagnostic> {
+    debug_assert_eq!(block.len(), usize::from(diagnosis.length));
+    let header = block.first().copied().unwrap_or_default();
+    check_header(header, diagnosis.length)?;
+    let areas = diagnosis
+        .areas
+        .iter()
+        .map(|area| {
+            let value = DiagArea::new(area.first_bit, area.last_bit).get(block);
+            let text = area
+                .values
+                .choices
+                .iter()
+                .find(|c| c.value == i64::from(value))
+                .map(|c| c.text.en.clone());
+            Area {
+                first_bit: area.first_bit,
+                last_bit: area.last_bit,
+                value,
+                text,
+            }
+        })
+        .collect();
+    Ok(DiagnosisBlock {
+        len: block.len(),
+        header,
+        bytes: block.to_vec(),
+        areas,
+    })
+}
+
+fn check_header(header: u8, length: u8) -> Result<(), Diagnostic> {
+    let kind = match header & BLOCK_TYPE_MASK {
+        0b0000_0000 => None,
+        0b0100_0000 => Some("identifier-related"),
+        0b1000_0000 => Some("channel-related"),
+        _ => Some("a revision or status block"),
+    };
+    let wrong = match kind {
+        Some(kind) => format!("bits 7-6 make it {kind}, not device-related"),
+        None if header & LENGTH_MASK != length => {
+            format!("it gives the length {}", header & LENGTH_MASK)
+        }
+        None => return Ok(()),
+    };
+    Err(Diagnostic::error(
+        "E417",
+        format!("0x{header:02X} is not the header of this device's diagnosis block: {wrong}"),
+    )
+    .label("header")
+    .help(format!(
+        "the device-related block starts with 0x{length:02X}: bits 7-6 00, bits 5-0 its length ({length} bytes, the header included)"
+    )))
+}

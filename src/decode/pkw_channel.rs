@@ -1,0 +1,300 @@
+//! The PKW channel of a telegram, read by the firmware's own codecs
+//! (`crate::pkw`, from `templates/support/`), so gsdc reads a request or a
+//! response exactly as the card does, and refuses what the card refuses.
+
+use crate::ir::{Direction, Ir, PkwKind};
+use crate::pkw::{pke_ind_pwe as pke, station_command as station, U16Be};
+use serde::Serialize;
+
+/// A PKW request (to the drive) or response (from it), decoded.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Pkw {
+    pub channel: Channel,
+    pub kind: PkwSide,
+    /// The station bytes of an MV810-style channel.
+    pub stations: Option<Stations>,
+    /// The command or response code as it is on the bus (the PKE's top four
+    /// bits, or the command word).
+    pub code: u16,
+    /// What the code means, in the manual's words; `None` when the manual
+    /// does not define it.
+    pub meaning: Option<&'static str>,
+    pub parameter: Option<Parameter>,
+    /// The value written, read, or echoed.
+    pub value: Option<u16>,
+    pub error: Option<PkwError>,
+    /// Why the card refuses the telegram, when it does: it is not one the
+    /// manual defines.
+    pub refused: Option<String>,
+}
+
+/// The kind of PKW channel, as the description's `telegram.pkw` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Channel {
+    /// PKE, IND, PWE (MD810); codes are four bits, the manual writes them
+    /// in decimal.
+    PkeIndPwe,
+    /// Station, command, address, value (MV810); codes are command words,
+    /// the manual writes them in hex.
+    StationCommandAddressValue,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PkwSide {
+    Request,
+    Response,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Stations {
+    pub target: u8,
+    pub source: u8,
+}
+
+/// A drive parameter: its address and its name as the manual writes it
+/// (`F0-08`), when the description's numbering has one for the address.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Parameter {
+    pub address: u16,
+    pub name: Option<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct PkwError {
+    pub code: u16,
+    /// The manual's text; `None` where it lists no error codes (MV810).
+    pub text: Option<&'static str>,
+}
+
+impl Pkw {
+    fn new(channel: Channel, kind: PkwSide, code: u16) -> Self {
+        Pkw {
+            channel,
+            kind,
+            stations: None,
+            code,
+            meaning: None,
+            parameter: None,
+            value: None,
+            error: None,
+            refused: None,
+        }
+    }
+}
+
+/// The PKW channel's four words, read as the module's direction sends them:
+/// out is a request, in a response. `None` when the telegram has no channel.
+pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Option<Pkw> {
+    let parameter = |address| Parameter {
+        address,
+        name: ir.numbering.as_ref().and_then(|n| n.format(address)),
+    };
+    match (ir.telegram.pkw, direction) {
+        (PkwKind::None, _) => None,
+        (PkwKind::PkeIndPwe, Direction::Out) => Some(pke_request(words, parameter)),
+        (PkwKind::PkeIndPwe, Direction::In) => Some(pke_response(words, parameter)),
+        (PkwKind::StationCommandAddressValue, Direction::Out) => {
+            Some(station_request(words, parameter))
+        }
+        (PkwKind::StationCommandAddressValue, Direction::In) => {
+            Some(station_response(words, parameter))
+        }
+    }
+}
+
+/// PKE bits 15-12: the command or response code.
+fn pke_code(words: [U16Be; 4]) -> u16 {
+    words[0].get() >> 12
+}
+
+fn pke_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    let request = match pke::PkwRequest::decode(words) {
+        Ok(request) => request,
+        Err(error) => return pke_refused(PkwSide::Request, words, error, parameter),
+    };
+    let mut pkw = Pkw::new(
+        Channel::PkeIndPwe,
+        PkwSide::Request,
+        pke_code(request.encode()),
+    );
+    match request {
+        pke::PkwRequest::None => pkw.meaning = Some("no request"),
+        pke::PkwRequest::Read { address } => {
+            pkw.meaning = Some("read");
+            pkw.parameter = Some(parameter(address));
+        }
+        pke::PkwRequest::Write { address, value } => {
+            pkw.meaning = Some("write");
+            pkw.parameter = Some(parameter(address));
+            pkw.value = Some(value);
+        }
+    }
+    pkw
+}
+
+fn pke_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    let response = match pke::PkwResponse::decode(words) {
+        Ok(response) => response,
+        Err(error) => return pke_refused(PkwSide::Response, words, error, parameter),
+    };
+    let mut pkw = Pkw::new(
+        Channel::PkeIndPwe,
+        PkwSide::Response,
+        pke_code(response.encode()),
+    );
+    match response {
+        pke::PkwResponse::None => pkw.meaning = Some("no request"),
+        pke::PkwResponse::Done { address, value } => {
+            pkw.meaning = Some("done");
+            pkw.parameter = Some(parameter(address));
+            pkw.value = Some(value);
+        }
+        pke::PkwResponse::Failed { address, error } => {
+            pkw.meaning = Some("cannot execute");
+            pkw.parameter = Some(parameter(address));
+            pkw.error = Some(PkwError {
+                code: error.code(),
+                text: Some(pke_error_text(error)),
+            });
+        }
+    }
+    pkw
+}
+
+/// MD810 §1.4.1: the error codes are Modbus's.
+fn pke_error_text(error: pke::PkwErrorCode) -> &'static str {
+    match error {
+        pke::PkwErrorCode::IllegalCommand => "illegal command",
+        pke::PkwErrorCode::IllegalAddress => "illegal address",
+        pke::PkwErrorCode::IllegalData => "illegal data",
+        pke::PkwErrorCode::Other => "other error",
+    }
+}
+
+fn pke_refused(
+    side: PkwSide,
+    words: &[U16Be; 4],
+    error: pke::PkwDecodeError,
+    parameter: impl Fn(u16) -> Parameter,
+) -> Pkw {
+    let refused = Pkw::new(Channel::PkeIndPwe, side, pke_code(*words));
+    match error {
+        pke::PkwDecodeError::IllegalCommand { command, address } => Pkw {
+            parameter: Some(parameter(address)),
+            refused: Some(format!(
+                "command {command} is not one the manual defines (0 no request, 1 read, 2 write): the drive answers 7, cannot execute, with error 1, illegal command"
+            )),
+            ..refused
+        },
+        pke::PkwDecodeError::UnknownResponse(code) => Pkw {
+            refused: Some(format!(
+                "response code {code} is not one the manual defines (0 no request, 1 done, 7 cannot execute)"
+            )),
+            ..refused
+        },
+        pke::PkwDecodeError::UnknownErrorCode(error) => Pkw {
+            meaning: Some("cannot execute"),
+            error: Some(PkwError {
+                code: error,
+                text: None,
+            }),
+            refused: Some(format!(
+                "error code {error} is not one the manual defines (1 to 4)"
+            )),
+            ..refused
+        },
+    }
+}
+
+const STATION: Channel = Channel::StationCommandAddressValue;
+
+fn station_meaning(command: station::PkwCommand) -> &'static str {
+    match command {
+        station::PkwCommand::Read => "read one",
+        station::PkwCommand::WriteAndStore => "write one and store it in EEPROM",
+        station::PkwCommand::Write => "write one without storing it",
+    }
+}
+
+fn stations(s: station::Stations) -> Option<Stations> {
+    Some(Stations {
+        target: s.target,
+        source: s.source,
+    })
+}
+
+fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    let request = match station::PkwRequest::decode(words) {
+        Ok(request) => request,
+        Err(error) => return station_refused(PkwSide::Request, error),
+    };
+    let command = request.access.command();
+    Pkw {
+        stations: stations(request.stations),
+        meaning: Some(station_meaning(command)),
+        parameter: Some(parameter(request.address)),
+        value: match request.access {
+            station::PkwAccess::Read => None,
+            station::PkwAccess::WriteAndStore { value } | station::PkwAccess::Write { value } => {
+                Some(value)
+            }
+        },
+        ..Pkw::new(STATION, PkwSide::Request, command.code())
+    }
+}
+
+fn station_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    let response = match station::PkwResponse::decode(words) {
+        Ok(response) => response,
+        Err(error) => return station_refused(PkwSide::Response, error),
+    };
+    // The command word the codec writes for this reply.
+    let code = response.encode()[1].get();
+    let mut pkw = Pkw {
+        stations: stations(response.stations),
+        parameter: Some(parameter(response.address)),
+        ..Pkw::new(STATION, PkwSide::Response, code)
+    };
+    match response.reply {
+        station::PkwReply::Value(value) => {
+            pkw.meaning = Some("value read");
+            pkw.value = Some(value);
+        }
+        station::PkwReply::WrittenAndStored => pkw.meaning = Some("written and stored in EEPROM"),
+        station::PkwReply::Written => pkw.meaning = Some("written without storing it"),
+        station::PkwReply::Failed { command, error } => {
+            pkw.meaning = Some(match command {
+                station::PkwCommand::Read => "read one failed",
+                station::PkwCommand::WriteAndStore => "write and store failed",
+                station::PkwCommand::Write => "write failed",
+            });
+            // The manual lists no error codes.
+            pkw.error = Some(PkwError {
+                code: error,
+                text: None,
+            });
+        }
+    }
+    pkw
+}
+
+fn station_refused(side: PkwSide, error: station::PkwDecodeError) -> Pkw {
+    match error {
+        station::PkwDecodeError::UnknownCommand(code) => Pkw {
+            refused: Some(format!(
+                "command 0x{code:04X} is not one the manual defines (0x03 read one, 0x06 write and store, 0x07 write; 0x80 added on error){}",
+                if code == 0 { "; 0 is what a master sends before it has a request" } else { "" }
+            )),
+            ..Pkw::new(STATION, side, code)
+        },
+        station::PkwDecodeError::ReadCount(count) => Pkw {
+            meaning: Some(station_meaning(station::PkwCommand::Read)),
+            refused: Some(format!(
+                "a read's count (PKW3) is always 1; this one is {count}"
+            )),
+            ..Pkw::new(STATION, side, station::PkwCommand::Read.code())
+        },
+    }
+}

@@ -1,0 +1,160 @@
+//! A cyclic telegram of one module: each word with its name and value, the
+//! PKW request or response, the control or status word's fields, and what
+//! each mapped PZD word carries under the mapping in force.
+
+use super::mapping::{meaning, MappingInForce, ValueSource};
+use super::module::Module;
+use super::pkw_channel::{self, Pkw};
+use crate::ir::{Direction, Ir, MappingKind, Word};
+use crate::pkw::{pkw_words, BitField, PKW_BYTES};
+use serde::Serialize;
+
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Telegram {
+    pub module: String,
+    #[serde(serialize_with = "super::serialize_direction")]
+    pub direction: Direction,
+    pub len: usize,
+    pub words: Vec<DecodedWord>,
+    pub pkw: Option<Pkw>,
+}
+
+/// One 16-bit word, high byte first.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DecodedWord {
+    /// Its first byte in the telegram.
+    pub offset: usize,
+    pub name: String,
+    pub value: u16,
+    /// What a mapped PZD word carries under the mapping in force.
+    pub carries: Option<Carried>,
+    /// The fields of a control or status word, lowest bits first.
+    pub fields: Vec<Field>,
+}
+
+/// The mapping of a PZD word and what its value makes the word carry.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Carried {
+    /// The mapping entry's name: `PZD3 master->slave`.
+    pub mapping: String,
+    /// The mapping's value: a parameter address or a choice.
+    pub value: u16,
+    /// The parameter it names (`F0-12`) or the choice's text; `None` for a
+    /// value that is not one of the choices.
+    pub meaning: Option<String>,
+    pub source: ValueSource,
+}
+
+/// Bits `first..=last` of a control or status word.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Field {
+    pub first: u8,
+    pub last: u8,
+    pub name: String,
+    pub value: u16,
+    /// The text of the value, when the field has named values and this is one.
+    pub text: Option<String>,
+}
+
+/// Decodes `bytes`, which must be as long as the module's telegram.
+pub(super) fn decode(
+    ir: &Ir,
+    module: Module<'_>,
+    direction: Direction,
+    bytes: &[u8],
+    mapping: &MappingInForce,
+) -> Telegram {
+    debug_assert_eq!(bytes.len(), usize::from(module.layout().bytes()));
+    let layout = module.layout();
+    let pkw_bytes = if layout.pkw { PKW_BYTES } else { 0 };
+    let names = module.word_names(ir, direction);
+    let words = names
+        .into_iter()
+        .zip(bytes.chunks_exact(2))
+        .enumerate()
+        .map(|(i, (name, pair))| {
+            let offset = 2 * i;
+            let value = u16::from_be_bytes([pair[0], pair[1]]);
+            // PZD words count from 1 after the PKW channel.
+            let pzd = (offset >= pkw_bytes).then(|| (offset - pkw_bytes) / 2 + 1);
+            let (carries, fields) = match pzd {
+                Some(n) if module.is_mapped() => (
+                    carried(ir, direction, n, mapping),
+                    word_fields(ir, direction, n, value),
+                ),
+                _ => (None, Vec::new()),
+            };
+            DecodedWord {
+                offset,
+                name,
+                value,
+                carries,
+                fields,
+            }
+        })
+        .collect();
+    let pkw = layout
+        .pkw
+        .then(|| pkw_channel::decode(ir, direction, &pkw_words(bytes)))
+        .flatten();
+    Telegram {
+        module: module.name(),
+        direction,
+        len: bytes.len(),
+        words,
+        pkw,
+    }
+}
+
+/// What PZD word `n` carries: the mapping entry numbered `n` of the
+/// direction's kind, with its value in force.
+fn carried(ir: &Ir, direction: Direction, n: usize, mapping: &MappingInForce) -> Option<Carried> {
+    let (set, entry) = ir
+        .mappings
+        .group(pzd_kind(direction))?
+        .entries()
+        .find(|(_, e)| usize::from(e.key.number) == n)?;
+    let (value, source) = mapping.value(entry);
+    Some(Carried {
+        mapping: entry.name.en.clone(),
+        value,
+        meaning: meaning(ir, &set.allowed, value),
+        source,
+    })
+}
+
+/// The kind of mapping a PZD word of `direction` carries.
+fn pzd_kind(direction: Direction) -> MappingKind {
+    match direction {
+        Direction::Out => MappingKind::PzdOut,
+        Direction::In => MappingKind::PzdIn,
+    }
+}
+
+/// The fields of PZD1 when it is the control or status word.
+fn word_fields(ir: &Ir, direction: Direction, n: usize, value: u16) -> Vec<Field> {
+    match ir.telegram.word(direction) {
+        Some(word) if n == 1 => fields(word, value),
+        _ => Vec::new(),
+    }
+}
+
+fn fields(word: &Word, value: u16) -> Vec<Field> {
+    word.bits
+        .iter()
+        .map(|field| {
+            let bits = BitField::new(field.first, field.last).get(value);
+            let text = field.values.as_ref().and_then(|set| {
+                let choice = set.choices.iter().find(|c| c.value == i64::from(bits))?;
+                Some(choice.text.en.clone())
+            });
+            Field {
+                first: field.first,
+                last: field.last,
+                name: field.name.en.clone(),
+                value: bits,
+                text,
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,23 @@
+//! The firmware's support code (`templates/support/`), compiled into the
+//! library so that what gsdc says about a telegram is what the card's
+//! firmware, built from the same files, does with it: the PKW codecs, and
+//! the bit numbering of control and status words and of diagnosis areas.
+//! Crate-private; firmware gets the same code as `gsdc_support.rs`.
+
+// The support code is written for firmware, which uses all of it; the
+// library uses the parts below, and the Rust emitter's tests all of it
+// (`emit::rust::support_tests`). Loaded here only, once.
+#[allow(dead_code)]
+#[path = "../templates/support/mod.rs"]
+pub(crate) mod support;
+
+pub(crate) use support::diagnosis::DiagArea;
+pub(crate) use support::pkw_pke_ind_pwe as pke_ind_pwe;
+pub(crate) use support::pkw_station_command as station_command;
+pub(crate) use support::{BitField, U16Be, PKW_BYTES};
+
+/// The four PKW words at the start of `bytes`, high byte first (words past
+/// the end of a short slice are zero).
+pub(crate) fn pkw_words(bytes: &[u8]) -> [U16Be; 4] {
+    support::words(bytes)
+}

@@ -1,0 +1,479 @@
+//! `gsdc decode` as a user runs it: the tables, the JSON document, and each
+//! error with its code, place and exit code.
+
+use std::process::{Command, Output};
+
+fn gsdc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .arg("decode")
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8(output.stdout.clone()).unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// Runs a decode that must succeed; its stdout.
+fn decoded(args: &[&str]) -> String {
+    let output = gsdc(args);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    stdout(&output)
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut args = args.to_vec();
+    args.extend(["--format", "json"]);
+    serde_json::from_str(&decoded(&args)).expect("one JSON document")
+}
+
+const MD810: &str = "descriptions/md810dp.toml";
+const MV810: &str = "descriptions/mv810-pnet02.toml";
+
+/// The line of the table that starts with `start` (after the padding).
+fn line<'a>(table: &'a str, start: &str) -> &'a str {
+    table
+        .lines()
+        .find(|l| l.trim_start().starts_with(start))
+        .unwrap_or_else(|| panic!("no line starting with {start:?} in\n{table}"))
+}
+
+fn cells(line: &str) -> Vec<&str> {
+    line.split("  ")
+        .map(str::trim)
+        .filter(|c| !c.is_empty())
+        .collect()
+}
+
+/// MD810 figure 6 read as a person reads it: every word, the request.
+#[test]
+fn md810_read_request_as_a_table() {
+    let out = decoded(&[
+        MD810,
+        "--module",
+        "PPO1",
+        "--direction",
+        "out",
+        "10F0 0800 0000 0000 0000 0000",
+    ]);
+    assert!(
+        out.starts_with("PPO1 (out, master to drive), 12 bytes\n"),
+        "{out}"
+    );
+    assert_eq!(cells(line(&out, "0  PKE")), ["0", "PKE", "10F0", "4336"]);
+    assert_eq!(cells(line(&out, "2  IND")), ["2", "IND", "0800", "2048"]);
+    assert_eq!(
+        cells(line(&out, "8  PZD1")),
+        [
+            "8",
+            "PZD1",
+            "0000",
+            "0",
+            "F0-00",
+            "PZD1 master->slave = 61440, default"
+        ]
+    );
+    assert_eq!(line(&out, "PKW"), "PKW request");
+    assert_eq!(cells(line(&out, "code")), ["code", "1", "read"]);
+    assert_eq!(
+        line(&out, "parameter").trim(),
+        "parameter  F0-08 (address 0xF008)"
+    );
+}
+
+#[test]
+fn md810_error_answer_names_the_error() {
+    let out = decoded(&[
+        MD810,
+        "--module",
+        "ppo1",
+        "--direction",
+        "in",
+        "70F0",
+        "0800",
+        "0000",
+        "0003",
+        "0000",
+        "0000",
+    ]);
+    assert_eq!(line(&out, "PKW"), "PKW response");
+    assert_eq!(cells(line(&out, "code")), ["code", "7", "cannot execute"]);
+    assert_eq!(cells(line(&out, "error")), ["error", "3", "illegal data"]);
+}
+
+/// MV810: the status word bit by bit, PZD2 named after the mapping given.
+#[test]
+fn mv810_status_word_and_mapped_word_as_a_table() {
+    let out = decoded(&[
+        MV810,
+        "--module",
+        "PKW + 2 PZD",
+        "--direction",
+        "in",
+        "--mapping",
+        "pzd_in=3",
+        "01 02 00 03 2B 02 00 01 0461 1388",
+    ]);
+    assert_eq!(
+        cells(line(&out, "10  PZD2")),
+        [
+            "10",
+            "PZD2",
+            "1388",
+            "5000",
+            "Output frequency (0.01 Hz)",
+            "PZD2 feedback = 3, --mapping"
+        ]
+    );
+    assert_eq!(line(&out, "Status word ("), "Status word (byte 8) = 0x0461");
+    assert_eq!(
+        cells(line(&out, "9-10")),
+        ["9-10", "Control mode", "2", "Communication"]
+    );
+    let motor = out.lines().find(|l| l.contains("Motor number")).unwrap();
+    assert_eq!(cells(motor), ["6", "Motor number", "1", "Motor 2"]);
+    assert_eq!(
+        cells(line(&out, "stations")),
+        ["stations", "target 1, source 2"]
+    );
+    assert_eq!(cells(line(&out, "code")), ["code", "0x03", "value read"]);
+    assert_eq!(cells(line(&out, "value")), ["value", "1 (0x0001)"]);
+}
+
+fn md810_default_prm() -> String {
+    format!("000000{}", "F000".repeat(30))
+}
+
+/// The telegram, the parameter telegram that maps it and a diagnosis block,
+/// in one JSON document.
+#[test]
+fn md810_json_document_field_by_field() {
+    // The manual's PZD3 out = F0-12 (bytes 7-8).
+    let mut prm = md810_default_prm();
+    prm.replace_range(14..18, "F00C");
+    let doc = json(&[
+        MD810,
+        "--module",
+        "PPO2",
+        "--direction",
+        "out",
+        "--prm",
+        &prm,
+        "--diag",
+        "03 00 34",
+        "20F0 0800 0000 07D0 0000 0000 1388 0000 0000 0000",
+    ]);
+    assert_eq!(doc["description"], "md810dp.toml");
+
+    let t = &doc["telegram"];
+    assert_eq!(t["module"], "PPO2");
+    assert_eq!(t["direction"], "out");
+    assert_eq!(t["len"], 20);
+    let words = t["words"].as_array().unwrap();
+    assert_eq!(words.len(), 10);
+    assert_eq!(words[0]["name"], "PKE");
+    assert_eq!(words[0]["value"], 0x20F0);
+    let pzd3 = &words[6];
+    assert_eq!(
+        (pzd3["offset"].as_u64(), pzd3["name"].as_str()),
+        (Some(12), Some("PZD3"))
+    );
+    assert_eq!(pzd3["value"], 5000);
+    assert_eq!(pzd3["carries"]["mapping"], "PZD3 master->slave");
+    assert_eq!(pzd3["carries"]["value"], 0xF00C);
+    assert_eq!(pzd3["carries"]["meaning"], "F0-12");
+    assert_eq!(pzd3["carries"]["source"], "parameter_telegram");
+    assert_eq!(words[5]["carries"]["meaning"], "F0-00");
+
+    let pkw = &t["pkw"];
+    assert_eq!(pkw["channel"], "pke-ind-pwe");
+    assert_eq!(pkw["kind"], "request");
+    assert_eq!(pkw["code"], 2);
+    assert_eq!(pkw["meaning"], "write");
+    assert_eq!(pkw["parameter"]["name"], "F0-08");
+    assert_eq!(pkw["parameter"]["address"], 0xF008);
+    assert_eq!(pkw["value"], 2000);
+    assert!(pkw["error"].is_null() && pkw["refused"].is_null() && pkw["stations"].is_null());
+
+    let prm = &doc["prm"];
+    assert_eq!(prm["len"], 63);
+    assert_eq!(prm["constant"].as_array().unwrap().len(), 3);
+    assert_eq!(prm["constant"][0]["name"], "DPV1_Status_1");
+    let params = prm["params"].as_array().unwrap();
+    assert_eq!(params.len(), 30);
+    assert_eq!(params[2]["offset"], 7);
+    assert_eq!(params[2]["id"], 3);
+    assert_eq!(params[2]["name"], "PZD3 master->slave");
+    assert_eq!(params[2]["value"], 0xF00C);
+    assert_eq!(params[2]["meaning"], "F0-12");
+    assert_eq!(params[2]["default"], 0xF000);
+    assert_eq!(params[2]["default_meaning"], "F0-00");
+    assert_eq!(params[2]["allowed"], true);
+    assert_eq!(params[29]["name"], "DPV1 Index5");
+
+    let diag = &doc["diagnosis"];
+    assert_eq!(diag["len"], 3);
+    assert_eq!(diag["header"], 3);
+    assert_eq!(diag["bytes"], serde_json::json!([0x03, 0x00, 0x34]));
+    assert_eq!(diag["areas"][0]["first_bit"], 8);
+    assert_eq!(diag["areas"][0]["last_bit"], 15);
+    assert_eq!(diag["areas"][0]["value"], 0x34);
+    assert_eq!(diag["areas"][0]["text"], "DP card lost the drive");
+}
+
+#[test]
+fn parts_not_asked_for_are_null() {
+    let doc = json(&[MD810, "--diag", "030034"]);
+    assert!(doc["telegram"].is_null() && doc["prm"].is_null());
+    assert_eq!(
+        doc["diagnosis"]["areas"][0]["text"],
+        "DP card lost the drive"
+    );
+}
+
+#[test]
+fn mv810_json_read_of_p43_02() {
+    let doc = json(&[
+        MV810,
+        "--module",
+        "pkw + 12 pzd",
+        "--direction",
+        "out",
+        "--mapping",
+        "pzd_out=1",
+        &format!("02 01 00 03 2B 02 00 01 0001 1388{}", " 0000".repeat(10)),
+    ]);
+    let t = &doc["telegram"];
+    assert_eq!(t["module"], "PKW + 12 PZD");
+    assert_eq!(t["len"], 32);
+    let pkw = &t["pkw"];
+    assert_eq!(pkw["channel"], "station-command-address-value");
+    assert_eq!(pkw["stations"]["target"], 2);
+    assert_eq!(pkw["stations"]["source"], 1);
+    assert_eq!(pkw["code"], 3);
+    assert_eq!(pkw["meaning"], "read one");
+    assert_eq!(pkw["parameter"]["name"], "P43.02");
+    assert!(pkw["value"].is_null());
+    let control = &t["words"][4];
+    assert_eq!(control["name"], "Control word");
+    assert_eq!(control["fields"][0]["name"], "Forward running");
+    assert_eq!(control["fields"][0]["value"], 1);
+    let pzd2 = &t["words"][5]["carries"];
+    assert_eq!(pzd2["meaning"], "Frequency reference");
+    assert_eq!(pzd2["source"], "given");
+    assert_eq!(t["words"][6]["carries"]["meaning"], "Disabled");
+    assert_eq!(t["words"][6]["carries"]["source"], "default");
+}
+
+/// An error: exit 1, its code, the argument it points into and where.
+fn fails(args: &[&str], code: &str, place: &str) -> String {
+    let output = gsdc(args);
+    let err = stderr(&output);
+    assert_eq!(output.status.code(), Some(1), "{err}");
+    assert!(output.stdout.is_empty(), "nothing decoded on an error");
+    assert!(err.starts_with(&format!("error[{code}]")), "{err}");
+    assert!(err.contains(&format!(" --> {place}\n")), "{err}");
+    err
+}
+
+fn ppo1(hex: &str) -> Vec<&str> {
+    vec![MD810, "--module", "PPO1", "--direction", "out", hex]
+}
+
+#[test]
+fn bad_hex_digits_and_lengths_point_into_the_telegram() {
+    let err = fails(&ppo1("10F0 08G0 0000 0000 0000 0000"), "E410", "HEX:1:8");
+    assert!(err.contains("|        ^ not 0-9 or A-F"), "{err}");
+    fails(&ppo1("10F0 080 0000 0000 0000 0000"), "E411", "HEX:1:6");
+    let err = fails(&ppo1("10F0 0800 0000 0000"), "E412", "HEX:1:20");
+    assert!(err.contains("4 byte(s) missing"), "{err}");
+    assert!(err.contains("PPO1 is 12 bytes each way"), "{err}");
+    let err = fails(
+        &ppo1("10F0 0800 0000 0000 0000 0000 FFFF"),
+        "E412",
+        "HEX:1:31",
+    );
+    assert!(err.contains("^^^^ 2 byte(s) too many"), "{err}");
+}
+
+#[test]
+fn an_unknown_module_lists_the_modules() {
+    let err = fails(
+        &[MV810, "--module", "PKW + 13 PZD", "--direction", "in", "00"],
+        "E413",
+        "--module:1:1",
+    );
+    assert!(
+        err.contains("help: the modules are: Standard telegram 1, PKW + 1 PZD, PKW + 2 PZD,"),
+        "{err}"
+    );
+}
+
+#[test]
+fn parts_the_description_lacks() {
+    fails(&[MV810, "--prm", "00"], "E414", "--prm");
+    fails(&[MV810, "--diag", "03 00 34"], "E414", "--diag");
+}
+
+#[test]
+fn bad_mappings_point_into_the_option() {
+    let with = |mapping: &'static str| {
+        [
+            MV810,
+            "--module",
+            "2 PZD",
+            "--direction",
+            "out",
+            "--mapping",
+            mapping,
+            "0000 0000",
+        ]
+    };
+    fails(&with("pzd_put=1"), "E415", "--mapping:1:1");
+    let err = fails(&with("pzd_out=1,99"), "E416", "--mapping:1:11");
+    assert!(
+        err.contains("help: it allows 0 Disabled, 1 Frequency reference,"),
+        "{err}"
+    );
+    fails(&with("pzd_out=x"), "E416", "--mapping:1:9");
+}
+
+#[test]
+fn prm_and_diag_errors() {
+    let err = fails(&[MD810, "--prm", "000000"], "E412", "--prm:1:7");
+    assert!(
+        err.contains("User_Prm_Data is 63 bytes; this is 3"),
+        "{err}"
+    );
+    let err = fails(&[MD810, "--diag", "43 00 34"], "E417", "--diag:1:1");
+    assert!(err.contains("identifier-related"), "{err}");
+}
+
+/// Usage errors are clap's: exit 2, nothing decoded.
+#[test]
+fn usage_errors_exit_2() {
+    for args in [
+        &[MD810][..],
+        &[MD810, "0000"],
+        &[MD810, "--module", "PPO1", "0000"],
+        &[MD810, "--module", "PPO1", "--direction", "up", "0000"],
+        &[MD810, "--module", "PPO3", "--diag", "030034"],
+        &[
+            MD810,
+            "--module",
+            "PPO3",
+            "--direction",
+            "out",
+            "--prm",
+            "00",
+            "--mapping",
+            "pzd_out=1",
+            "0000 0000",
+        ],
+        &["descriptions/no-such.toml", "--diag", "030034"],
+    ] {
+        let output = gsdc(args);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(output.stdout.is_empty());
+    }
+}
+
+#[test]
+fn an_invalid_description_exits_1() {
+    let output = gsdc(&[
+        "tests/fixtures/invalid/unknown_ppo.toml",
+        "--diag",
+        "030034",
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stderr(&output).contains("error[E104]"));
+}
+
+/// The tables as a person sees them, reviewed line by line.
+#[test]
+fn snapshot_md810_read_answer_with_prm() {
+    let mut prm = md810_default_prm();
+    // PZD1 in = F0-08 (the running frequency the read answer shows).
+    prm.replace_range(54..58, "F008");
+    let out = decoded(&[
+        MD810,
+        "--module",
+        "PPO1",
+        "--direction",
+        "in",
+        "--prm",
+        &prm,
+        "10F0 0800 0000 1388 1388 0000",
+    ]);
+    insta::assert_snapshot!("md810_read_answer_with_prm", out);
+}
+
+#[test]
+fn snapshot_mv810_status_word() {
+    let out = decoded(&[
+        MV810,
+        "--module",
+        "PKW + 2 PZD",
+        "--direction",
+        "in",
+        "--mapping",
+        "pzd_in=3",
+        "01 02 00 83 2B 02 00 02 0468 1388",
+    ]);
+    insta::assert_snapshot!("mv810_status_word", out);
+}
+
+/// The words of a shell command line: blanks separate them, single quotes
+/// keep blanks inside one (all the documents' examples need).
+fn shell_words(line: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    let mut word: Option<String> = None;
+    let mut quoted = false;
+    for c in line.chars() {
+        match c {
+            '\'' => {
+                quoted = !quoted;
+                word.get_or_insert_with(String::new);
+            }
+            c if c.is_whitespace() && !quoted => words.extend(word.take()),
+            c => word.get_or_insert_with(String::new).push(c),
+        }
+    }
+    words.extend(word);
+    words
+}
+
+/// Every `gsdc decode` example in README.md and docs/wire-format.md prints
+/// what the document shows.
+#[test]
+fn the_documents_examples_are_what_gsdc_prints() {
+    let mut examples = 0;
+    for (name, text) in [
+        ("README.md", include_str!("../README.md")),
+        (
+            "docs/wire-format.md",
+            include_str!("../docs/wire-format.md"),
+        ),
+    ] {
+        for block in text.split("```console\n$ gsdc decode ").skip(1) {
+            let block = &block[..block.find("```").unwrap()];
+            let (command, expected) = block.split_once('\n').unwrap();
+            let args = shell_words(command);
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            assert_eq!(decoded(&args), expected, "{name}: gsdc decode {command}");
+            examples += 1;
+        }
+    }
+    assert_eq!(examples, 4);
+}
