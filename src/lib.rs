@@ -17,6 +17,7 @@ pub mod ir;
 mod latin1;
 pub mod load;
 pub mod lower;
+mod pkw;
 
 // The edges.
 pub mod build;
@@ -44,4 +45,11 @@ pub fn load(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
 /// Every file a loaded description gives, verified. Pure: no I/O, no clock.
 pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
     emit::compile(ir)
+}
+
+/// The datasheet of a loaded description: `<stem>.html` and `<stem>.md`,
+/// the manual's fieldbus chapter. Pure, like [`compile`]; not among
+/// [`compile`]'s files, which ship with the card.
+pub fn document(ir: &Ir) -> Vec<Artifact> {
+    emit::doc::datasheet(ir)
 }

@@ -2,6 +2,7 @@
 
 mod build;
 mod check;
+mod doc;
 
 use clap::{Parser, Subcommand};
 use gsdc::{Diagnostics, Source};
@@ -52,6 +53,16 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         xsd: Option<PathBuf>,
     },
+    /// Write the datasheet of each description: DIR/<stem>.html (one page, no script) and DIR/<stem>.md.
+    #[command(after_help = "Example:\n  gsdc doc descriptions/md810dp.toml --out dist   # dist/md810dp.html, dist/md810dp.md")]
+    Doc {
+        /// Description files (TOML).
+        #[arg(required = true, value_name = "DESCRIPTION")]
+        descriptions: Vec<PathBuf>,
+        /// Directory to write into; created if missing.
+        #[arg(long, short, default_value = ".", value_name = "DIR")]
+        out: PathBuf,
+    },
 }
 
 /// What a run ends with, as the exit code says it.
@@ -76,6 +87,7 @@ pub fn run(cli: Cli) -> Status {
             check,
         } => build::run(&descriptions, &out, check),
         Command::Check { files, format, xsd } => check::run(&files, format, xsd.as_deref()),
+        Command::Doc { descriptions, out } => doc::run(&descriptions, &out),
     }
 }
 
