@@ -111,6 +111,8 @@ pub(crate) struct Item {
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) struct Svg {
+    /// What it draws, as its class: `overview`, `words` or `bits`.
+    pub kind: &'static str,
     pub width: u32,
     pub height: u32,
     /// Said by screen readers; also the tooltip.
@@ -265,9 +267,10 @@ impl Svg {
         let mut out = String::new();
         let _ = writeln!(
             out,
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} {h}\" width=\"{w}\" height=\"{h}\" \
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"{kind}\" viewBox=\"0 0 {w} {h}\" width=\"{w}\" height=\"{h}\" \
              font-family=\"'Liberation Sans', Arial, 'DejaVu Sans', 'WenQuanYi Micro Hei', 'Noto Sans CJK SC', sans-serif\" \
              role=\"img\">",
+            kind = self.kind,
             w = self.width,
             h = self.height
         );

@@ -161,6 +161,7 @@ fn overview(ir: &Ir, lang: Lang, modules: &[&Module], title: &str) -> Svg {
         y += row_h + GAP + 2;
     }
     Svg {
+        kind: "overview",
         width: bytes_x + bytes_w + MARGIN,
         height: y - GAP - 2 + MARGIN,
         title: title.to_string(),
@@ -383,6 +384,7 @@ fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> 
         y += rows * (box_h + BOX_GAP) + 8;
     }
     Svg {
+        kind: "words",
         width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
         height: y - 8 - BOX_GAP + MARGIN,
         title: title.to_string(),
@@ -451,6 +453,7 @@ fn bits_figure(lang: Lang, title: &str, word: &Word) -> Svg {
         });
     }
     Svg {
+        kind: "bits",
         width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
         height: row_y(0) + box_h + MARGIN,
         title: title.to_string(),
