@@ -245,7 +245,7 @@ fn bits(lang: Lang, first: u16, last: u16) -> String {
         (true, Lang::En) => format!("bit {first}"),
         (true, Lang::Zh) => format!("Bit{first}"),
         (false, Lang::En) => format!("bits {first}-{last}"),
-        (false, Lang::Zh) => format!("Bit{first}～Bit{last}"),
+        (false, Lang::Zh) => format!("Bit{first}-Bit{last}"),
     }
 }
 
@@ -255,7 +255,7 @@ fn bytes(lang: Lang, first: u16, last: u16) -> String {
         (true, Lang::En) => format!("byte {first}"),
         (true, Lang::Zh) => format!("字节 {first}"),
         (false, Lang::En) => format!("bytes {first}-{last}"),
-        (false, Lang::Zh) => format!("字节 {first}～{last}"),
+        (false, Lang::Zh) => format!("字节 {first}-{last}"),
     }
 }
 

@@ -290,3 +290,44 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         "tt：请求的目标站号，ss：请求的源站号（应答中二者互换）；vvvv：参数值；xxxx：变频器的错误码。",
     )));
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ir(name: &str, text: &str) -> Ir {
+        crate::load(name, text).0.unwrap()
+    }
+
+    /// MD810 manual 1.4.2, figures 6 and 7: read and change F0-08.
+    #[test]
+    fn the_md810_manuals_telegrams_come_out_of_the_codec() {
+        let address = 0xF008;
+        let read = pke::PkwRequest::Read { address }.encode();
+        assert_eq!(telegram(read, &[]), "10F0 0800 0000 0000");
+        let done = |value| pke::PkwResponse::Done { address, value }.encode();
+        assert_eq!(telegram(done(0x1388), &[]), "10F0 0800 0000 1388");
+        let write = |value| pke::PkwRequest::Write { address, value }.encode();
+        assert_eq!(telegram(write(0x07D0), &[]), "20F0 0800 0000 07D0");
+        assert_eq!(telegram(write(0), &[('v', write(ANY))]), "20F0 0800 0000 vvvv");
+        assert_eq!(code_of(done(0)), 1);
+    }
+
+    /// docs/wire-format.md: station 1 reads P43.02 of RS-485 slave 2.
+    #[test]
+    fn the_station_kind_writes_stations_command_address_and_count() {
+        let stations = station::Stations { target: 2, source: 1 };
+        let read = station::PkwRequest { stations, address: 0x2B02, access: station::PkwAccess::Read };
+        assert_eq!(telegram(read.encode(), &[]), "0201 0003 2B02 0001");
+    }
+
+    #[test]
+    fn the_example_parameter_is_the_first_address_default_else_the_first_drive_parameter() {
+        let md810 = ir("md810dp.toml", include_str!("../../../descriptions/md810dp.toml"));
+        let (address, why) = example_parameter(&md810, Lang::En).unwrap();
+        assert_eq!((address, why.as_str()), (0xF000, "the default of PZD1 master->slave"));
+        let mv810 = ir("mv810-pnet02.toml", include_str!("../../../descriptions/mv810-pnet02.toml"));
+        let (address, why) = example_parameter(&mv810, Lang::En).unwrap();
+        assert_eq!((address, why.as_str()), (0x2B02, "the parameter that sets PZD2 receive"));
+    }
+}

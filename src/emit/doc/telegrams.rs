@@ -109,7 +109,7 @@ fn module_row(m: &Module) -> Vec<Cell> {
 
 const MARGIN: u32 = 8;
 const GAP: u32 = 4;
-const OVERVIEW_WORD: u32 = 54;
+const OVERVIEW_WORD: u32 = 46;
 
 /// The PKW channel's words, short, as the manuals label them.
 fn pkw_labels(kind: PkwKind) -> [&'static str; 4] {
@@ -138,7 +138,7 @@ fn overview(ir: &Ir, lang: Lang, modules: &[&Module], title: &str) -> Svg {
         .map(|m| u32::from(m.layout.pkw_words() + m.layout.pzd_words))
         .max()
         .unwrap_or(0);
-    let row_h = svg::height_for(&[line("PZD", Weight::Normal)]);
+    let row_h = svg::height_for(&[line("PZD", Weight::Bold)]);
     let words_x = MARGIN + name_w + GAP;
     let bytes_x = words_x + max_words * (OVERVIEW_WORD + GAP) + GAP;
     let mut items = Vec::new();
@@ -154,7 +154,7 @@ fn overview(ir: &Ir, lang: Lang, modules: &[&Module], title: &str) -> Svg {
                 rect: Rect { x, y, w: OVERVIEW_WORD, h: row_h },
                 style,
                 align: Align::Middle,
-                lines: vec![line(&label, Weight::Normal)],
+                lines: vec![line(&label, Weight::Small)],
             });
         }
         items.push(slot(Rect { x: bytes_x, y, w: bytes_w, h: row_h }, Align::Start, line(&bytes_label(m), Weight::Normal)));
@@ -185,10 +185,11 @@ fn slot(rect: Rect, align: Align, line: Line) -> Item {
 #[derive(Clone, PartialEq, Eq)]
 struct WordView {
     label: String,
-    /// What it carries.
+    /// What it carries: for a mapped word, its default.
     role: String,
-    /// The default it carries and the parameter that sets it, if any.
-    note: Option<String>,
+    mapped: bool,
+    /// The drive parameter that sets a mapped word.
+    parameter: Option<String>,
     first_byte: u16,
     style: Style,
 }
@@ -205,20 +206,23 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
         let label = format!("PZD{n}");
         if let Some(items) = data_items {
             let role = items[usize::from(m.layout.pkw_words() + n - 1)].text.text.en.clone();
-            return WordView { label, role, note: None, first_byte, style: Style::Pzd };
+            return WordView { label, role, mapped: false, parameter: None, first_byte, style: Style::Pzd };
         }
         if let (1, Some(word)) = (n, ir.telegram.word(direction)) {
-            return WordView { label, role: lang.text(&word.name).to_string(), note: None, first_byte, style: Style::Word };
+            return WordView { label, role: lang.text(&word.name).to_string(), mapped: false, parameter: None, first_byte, style: Style::Word };
         }
-        let (role, note) = mapped(ir, lang, direction, n);
-        WordView { label, role, note, first_byte, style: Style::Pzd }
+        match mapped(ir, lang, direction, n) {
+            Some((role, parameter)) => WordView { label, role, mapped: true, parameter, first_byte, style: Style::Pzd },
+            None => WordView { label, role: lang.t("not mapped", "未映射").to_string(), mapped: false, parameter: None, first_byte, style: Style::Pzd },
+        }
     });
     pkw.into_iter()
         .enumerate()
         .map(|(i, (label, role))| WordView {
             label: label.to_string(),
             role: role.to_string(),
-            note: None,
+            mapped: false,
+            parameter: None,
             first_byte: 2 * i as u16,
             style: Style::Pkw,
         })
@@ -226,16 +230,14 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
         .collect()
 }
 
-/// A mapped PZD word: what it carries by default, and what sets it.
-fn mapped(ir: &Ir, lang: Lang, direction: Direction, n: u8) -> (String, Option<String>) {
+/// A mapped PZD word: what it carries by default, and the drive parameter
+/// that sets it; `None` when no mapping names the word.
+fn mapped(ir: &Ir, lang: Lang, direction: Direction, n: u8) -> Option<(String, Option<String>)> {
     let kind = match direction {
         Direction::Out => MappingKind::PzdOut,
         Direction::In => MappingKind::PzdIn,
     };
-    let group = ir.mappings.group(kind);
-    let Some((set, entry)) = group.and_then(|g| g.entries().find(|(_, e)| e.key == EntryKey { kind, number: n })) else {
-        return (lang.t("not mapped", "未映射").to_string(), None);
-    };
+    let (set, entry) = ir.mappings.group(kind)?.entries().find(|(_, e)| e.key == EntryKey { kind, number: n })?;
     let default = match &set.allowed {
         Allowed::Range { .. } => parameter_name(ir, entry.default),
         Allowed::Choices(values) => values
@@ -244,11 +246,7 @@ fn mapped(ir: &Ir, lang: Lang, direction: Direction, n: u8) -> (String, Option<S
             .find(|c| c.value == i64::from(entry.default))
             .map_or_else(|| entry.default.to_string(), |c| lang.text(&c.text).to_string()),
     };
-    let note = match entry.parameter {
-        Some(p) => lang.f(format!("default; {} sets it", parameter_name(ir, p)), format!("默认值；由 {} 设置", parameter_name(ir, p))),
-        None => lang.t("default", "默认值").to_string(),
-    };
-    (default, Some(note))
+    Some((default, entry.parameter.map(|p| parameter_name(ir, p))))
 }
 
 /// The PKW words one way: label and role.
@@ -322,8 +320,8 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
                 vec![
                     text(if o.label == i.label { o.label.clone() } else { format!("{} / {}", o.label, i.label) }),
                     text(bytes(lang, o.first_byte, o.first_byte + 1)),
-                    text(word_cell(o)),
-                    text(word_cell(i)),
+                    text(word_cell(lang, o)),
+                    text(word_cell(lang, i)),
                 ]
             })
             .collect();
@@ -340,24 +338,25 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
 }
 
-fn word_cell(w: &WordView) -> String {
-    match &w.note {
-        Some(note) => format!("{} ({note})", w.role),
-        None => w.role.clone(),
+fn word_cell(lang: Lang, w: &WordView) -> String {
+    match (w.mapped, &w.parameter) {
+        (true, Some(p)) => lang.f(format!("{} (default; {p} sets it)", w.role), format!("{}（默认值；由 {p} 设置）", w.role)),
+        (true, None) => lang.f(format!("{} (default)", w.role), format!("{}（默认值）", w.role)),
+        (false, _) => w.role.clone(),
     }
 }
 
 const COLUMNS: u32 = 8;
-const BOX_W: u32 = 112;
+const BOX_W: u32 = 104;
 const BOX_GAP: u32 = 6;
 
 fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> Svg {
     let inner = BOX_W - 2 * svg::PAD;
     let lines_of = |w: &WordView| {
         let mut lines = vec![line(&w.label, Weight::Bold)];
-        lines.extend(svg::wrap(&w.role, inner, Weight::Normal, 2).iter().map(|l| line(l, Weight::Normal)));
-        if let Some(note) = &w.note {
-            lines.extend(svg::wrap(note, inner, Weight::Small, 2).iter().map(|l| line(l, Weight::Small)));
+        lines.extend(svg::wrap(&w.role, inner, Weight::Normal, 3).iter().map(|l| line(l, Weight::Normal)));
+        if let Some(parameter) = &w.parameter {
+            lines.push(line(parameter, Weight::Small));
         }
         lines.push(line(&bytes(lang, w.first_byte, w.first_byte + 1), Weight::Small));
         lines
