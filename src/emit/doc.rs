@@ -160,7 +160,7 @@ fn document(ir: &Ir, lang: Lang) -> page::Doc {
 /// configuration tool shows: `F0-00 (61440)`, or `0x1000 (4096)` where the
 /// description names no such parameter.
 fn address(ir: &Ir, value: u16) -> String {
-    match ir.numbering.as_ref().and_then(|n| n.format(value)) {
+    match drive_name(ir, value) {
         Some(name) => format!("{name} ({value})"),
         None => format!("0x{value:04X} ({value})"),
     }
@@ -168,10 +168,20 @@ fn address(ir: &Ir, value: u16) -> String {
 
 /// A parameter's name alone: `F0-08`, else `0x1000`.
 fn parameter_name(ir: &Ir, value: u16) -> String {
-    ir.numbering
-        .as_ref()
-        .and_then(|n| n.format(value))
-        .unwrap_or_else(|| format!("0x{value:04X}"))
+    drive_name(ir, value).unwrap_or_else(|| format!("0x{value:04X}"))
+}
+
+/// The drive's name of an address. A hex group is one digit (F0..FF), but
+/// `Numbering::format` also names groups of two (9KDP1's Modbus address
+/// 0x8000 would be `d10.00` under the prefix d = 0x70): those are left out.
+fn drive_name(ir: &Ir, value: u16) -> Option<String> {
+    let numbering = ir.numbering.as_ref()?;
+    let [high, _] = value.to_be_bytes();
+    let base = numbering.prefixes.iter().map(|&(_, base)| base).filter(|&base| base <= high).max()?;
+    if numbering.group_radix == 16 && high - base >= 16 {
+        return None;
+    }
+    numbering.format(value)
 }
 
 /// A mapping's value: an address for a range, a choice's text for choices.

@@ -10,7 +10,7 @@ use crate::ir::{Ir, MappingKind, PkwKind};
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut intro = text(lang.text(&ir.device.name));
     if let Some(info) = &ir.device.info {
-        intro.push(Run::Text(format!(": {}", lang.text(info))));
+        intro.push(Run::Text(format!("{}{}", lang.t(": ", "："), lang.text(info))));
     }
     doc.para(intro);
     doc.para(vec![
@@ -198,7 +198,7 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             lang.t("gsdc: as the tables above give them", "gsdc 约定：见上文各表"),
         );
     }
-    if ir.telegram.pkw != PkwKind::None {
+    if ir.telegram.pkw == PkwKind::PkeIndPwe {
         row(
             lang.t("PKW reserved bits", "PKW 保留位"),
             lang.t("gsdc: written 0, not read", "gsdc 约定：写 0，不读取"),
@@ -207,7 +207,7 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if ir.mappings.group(MappingKind::Dpv1Index).is_some() {
         row(
             lang.t("DPV1 record data", "DPV1 记录数据"),
-            lang.t("gsdc: the parameter's value as one Unsigned16", "gsdc 约定：参数值，一个 Unsigned16"),
+            lang.t("gsdc: the parameter's 16-bit value, high byte first", "gsdc 约定：参数的 16 位值，高字节在前"),
         );
     }
     doc.table(

@@ -335,18 +335,26 @@ fn md_cell(cell: &Cell) -> String {
     }
 }
 
-/// Text that Markdown shows as written: its markup characters escaped.
+/// Text that Markdown shows as written: its markup characters escaped. An
+/// `_` between letters or digits never starts emphasis, and `>` and `#`
+/// matter only at the start of a line, so those stay as they are.
 fn md_text(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '\\' | '`' | '*' | '_' | '[' | ']' | '|' | '<' | '>' | '#' => {
-                out.push('\\');
-                out.push(c);
-            }
-            '\n' => out.push(' '),
-            c => out.push(c),
+    for (i, &c) in chars.iter().enumerate() {
+        let between_words = i > 0
+            && chars[i - 1].is_alphanumeric()
+            && chars.get(i + 1).is_some_and(|n| n.is_alphanumeric());
+        let escape = match c {
+            '\\' | '`' | '*' | '[' | ']' | '|' | '<' => true,
+            '_' => !between_words,
+            '>' | '#' => i == 0,
+            _ => false,
+        };
+        if escape {
+            out.push('\\');
         }
+        out.push(if c == '\n' { ' ' } else { c });
     }
     out
 }
@@ -357,7 +365,8 @@ mod tests {
 
     #[test]
     fn markdown_escapes_what_would_be_markup() {
-        assert_eq!(md_text("PZD1 master->slave | a_b *c*"), "PZD1 master-\\>slave \\| a\\_b \\*c\\*");
+        assert_eq!(md_text("PZD1 master->slave | a_b *c*"), "PZD1 master->slave \\| a_b \\*c\\*");
+        assert_eq!(md_text("> _x_ #1"), "\\> \\_x\\_ #1");
         assert_eq!(md_cell(&code("10F0 0800")), "`10F0 0800`");
         assert_eq!(md_cell(&Vec::new()), " ");
     }

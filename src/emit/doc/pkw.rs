@@ -15,8 +15,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
     doc.section("pkw", lang.t("The parameter channel (PKW)", "参数区（PKW）"));
     doc.para(text(lang.t(
-        "The PKW words read or change one drive parameter per request, in the first 8 bytes of a module that has them. A request stays in force as long as it stays in the telegram: the drive executes it again every cycle, so a master that is done sends a telegram without a request.",
-        "PKW 区位于带 PKW 的模块的前 8 个字节，每次请求读写变频器的一个参数。请求保留在报文中时，变频器每个周期都会再次执行；操作完成后主站应发送不含请求的报文。",
+        "The PKW words read or change one drive parameter per request, in the first 8 bytes of a module that has them.",
+        "PKW 区位于带 PKW 的模块的前 8 个字节，每次请求读写变频器的一个参数。",
     )));
     match ir.telegram.pkw {
         PkwKind::PkeIndPwe => pke_ind_pwe(doc, ir, lang),
@@ -98,6 +98,11 @@ fn code_of(words: [U16Be; 4]) -> u16 {
 }
 
 fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    // MD810 manual 1.4.2: a write left in the telegram wears out the EEPROM.
+    doc.para(text(lang.t(
+        "A request is executed again every cycle while it stays in the telegram: a write left there writes the EEPROM again and again. Send command 0 when done.",
+        "PKW 数据以循环执行的方式与变频器交互：写命令留在报文中会持续写 EEPROM。操作完成后请发送命令 0。",
+    )));
     let row = |word: &str, first: u16, request: &str, response: &str| {
         vec![text(word), text(bytes(lang, first, first + 1)), text(request), text(response)]
     };
