@@ -4,11 +4,11 @@
 //! telegram printed in a datasheet is one the firmware sends and reads.
 //!
 //! Only the codecs are used here; the telegram structs and parameter readers
-//! of the support module are the firmware's.
+//! of the support module are the firmware's, tested in `emit::rust`.
 
 #[path = "../templates/support/mod.rs"]
 #[allow(dead_code)]
-mod support;
+pub(crate) mod support;
 
 pub(crate) use support::diagnosis::DiagArea;
 pub(crate) use support::{pkw_pke_ind_pwe, pkw_station_command, U16Be};

@@ -22,20 +22,29 @@ fn datasheet(name: &str, kind: ArtifactKind) -> String {
 fn markdown_snapshots() {
     for name in DESCRIPTIONS {
         let stem = name.trim_end_matches(".toml");
-        insta::assert_snapshot!(format!("{stem}.md"), datasheet(name, ArtifactKind::DatasheetMarkdown));
+        insta::assert_snapshot!(
+            format!("{stem}.md"),
+            datasheet(name, ArtifactKind::DatasheetMarkdown)
+        );
     }
 }
 
 /// One HTML page in full, the smallest: structure, CSS, the switch, SVG.
 #[test]
 fn html_snapshot() {
-    insta::assert_snapshot!("9kdp1.html", datasheet("9kdp1.toml", ArtifactKind::DatasheetHtml));
+    insta::assert_snapshot!(
+        "9kdp1.html",
+        datasheet("9kdp1.toml", ArtifactKind::DatasheetHtml)
+    );
 }
 
 #[test]
 fn file_names_and_kinds() {
     let files = gsdc::document(&descriptions::load("mv810-pnet02.toml"));
-    let names: Vec<(&str, ArtifactKind)> = files.iter().map(|a| (a.file_name.as_str(), a.kind)).collect();
+    let names: Vec<(&str, ArtifactKind)> = files
+        .iter()
+        .map(|a| (a.file_name.as_str(), a.kind))
+        .collect();
     assert_eq!(
         names,
         [
@@ -45,7 +54,10 @@ fn file_names_and_kinds() {
     );
     // The datasheet is not among the files that ship with the card.
     let shipped = gsdc::compile(&descriptions::load("mv810-pnet02.toml")).unwrap();
-    assert!(shipped.iter().all(|a| !matches!(a.kind, ArtifactKind::DatasheetHtml | ArtifactKind::DatasheetMarkdown)));
+    assert!(shipped.iter().all(|a| !matches!(
+        a.kind,
+        ArtifactKind::DatasheetHtml | ArtifactKind::DatasheetMarkdown
+    )));
 }
 
 #[test]
@@ -56,8 +68,20 @@ fn deterministic_self_contained_and_without_paths() {
         for file in &first {
             let text = String::from_utf8(file.contents.clone()).unwrap();
             let without_svg_namespace = text.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
-            for forbidden in ["http:", "https:", "<script", "src=", "@import", "url(", env!("CARGO_MANIFEST_DIR")] {
-                assert!(!without_svg_namespace.contains(forbidden), "{}: {forbidden}", file.file_name);
+            for forbidden in [
+                "http:",
+                "https:",
+                "<script",
+                "src=",
+                "@import",
+                "url(",
+                env!("CARGO_MANIFEST_DIR"),
+            ] {
+                assert!(
+                    !without_svg_namespace.contains(forbidden),
+                    "{}: {forbidden}",
+                    file.file_name
+                );
             }
         }
     }
@@ -86,12 +110,18 @@ struct Figure {
     kind: String,
     width: f64,
     height: f64,
-    /// Class and rectangle of each group, and its texts' anchors.
-    groups: Vec<(String, [f64; 4], Vec<(f64, f64)>)>,
+    groups: Vec<Group>,
 }
 
+/// A group's class, its rectangle (x, y, width, height) and its texts' anchors.
+type Group = (String, [f64; 4], Vec<(f64, f64)>);
+
 fn attribute(tag: &str, name: &str) -> String {
-    let start = tag.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("{name} in {tag}")) + name.len() + 3;
+    let start = tag
+        .find(&format!(" {name}=\""))
+        .unwrap_or_else(|| panic!("{name} in {tag}"))
+        + name.len()
+        + 3;
     tag[start..start + tag[start..].find('"').unwrap()].to_string()
 }
 
@@ -105,7 +135,10 @@ fn figures(html: &str) -> Vec<Figure> {
         .map(|svg| {
             let svg = &svg[..svg.find("</svg>").unwrap()];
             let head = &svg[..svg.find('>').unwrap()];
-            let view_box: Vec<f64> = attribute(&format!(" {head}"), "viewBox").split(' ').map(|n| n.parse().unwrap()).collect();
+            let view_box: Vec<f64> = attribute(&format!(" {head}"), "viewBox")
+                .split(' ')
+                .map(|n| n.parse().unwrap())
+                .collect();
             let groups = svg
                 .split("<g ")
                 .skip(1)
@@ -117,10 +150,19 @@ fn figures(html: &str) -> Vec<Figure> {
                         .skip(1)
                         .map(|t| (number(&format!(" {t}"), "x"), number(&format!(" {t}"), "y")))
                         .collect();
-                    (attribute(&format!(" {g}"), "class"), ["x", "y", "width", "height"].map(|k| number(rect, k)), texts)
+                    (
+                        attribute(&format!(" {g}"), "class"),
+                        ["x", "y", "width", "height"].map(|k| number(rect, k)),
+                        texts,
+                    )
                 })
                 .collect();
-            Figure { kind: attribute(&format!(" {head}"), "class"), width: view_box[2], height: view_box[3], groups }
+            Figure {
+                kind: attribute(&format!(" {head}"), "class"),
+                width: view_box[2],
+                height: view_box[3],
+                groups,
+            }
         })
         .collect()
 }
@@ -133,14 +175,23 @@ fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
         assert!(figures.len() >= 3, "{name}");
         for f in &figures {
             for (i, (class, [x, y, w, h], texts)) in f.groups.iter().enumerate() {
-                assert!(*x >= 0.0 && *y >= 0.0 && x + w <= f.width && y + h <= f.height, "{name}: {class} outside");
+                assert!(
+                    *x >= 0.0 && *y >= 0.0 && x + w <= f.width && y + h <= f.height,
+                    "{name}: {class} outside"
+                );
                 for (_, [ox, oy, ow, oh], _) in &f.groups[i + 1..] {
                     let apart = x + w <= *ox || ox + ow <= *x || y + h <= *oy || oy + oh <= *y;
-                    assert!(apart, "{name}: {class} at {x},{y} overlaps the box at {ox},{oy}");
+                    assert!(
+                        apart,
+                        "{name}: {class} at {x},{y} overlaps the box at {ox},{oy}"
+                    );
                 }
                 // Anchors inside the box; the browser test measures the glyphs.
                 for (tx, ty) in texts {
-                    assert!(*tx > *x && *tx < x + w && *ty > *y && *ty < y + h, "{name}: text at {tx},{ty}");
+                    assert!(
+                        *tx > *x && *tx < x + w && *ty > *y && *ty < y + h,
+                        "{name}: text at {tx},{ty}"
+                    );
                 }
             }
         }
@@ -151,13 +202,40 @@ fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
 fn an_overview_has_a_box_per_word_of_every_module() {
     let ir = descriptions::load("md810dp.toml");
     let html = datasheet("md810dp.toml", ArtifactKind::DatasheetHtml);
-    let word_boxes = |f: &Figure| f.groups.iter().filter(|(c, _, _)| c == "box pkw" || c == "box pzd").count();
-    let overviews: Vec<usize> = figures(&html).iter().filter(|f| f.kind == "overview").map(word_boxes).collect();
-    let words = |layouts: &mut dyn Iterator<Item = gsdc::ir::Layout>| -> usize {
-        layouts.map(|l| usize::from(l.pkw_words() + l.pzd_words)).sum()
+    let word_boxes = |f: &Figure| {
+        f.groups
+            .iter()
+            .filter(|(c, _, _)| c == "box pkw" || c == "box pzd")
+            .count()
     };
-    let ppo = words(&mut ir.profibus.as_ref().unwrap().modules.iter().map(|m| m.layout));
-    let pn = words(&mut ir.profinet.as_ref().unwrap().modules.iter().map(|m| m.layout));
+    let overviews: Vec<usize> = figures(&html)
+        .iter()
+        .filter(|f| f.kind == "overview")
+        .map(word_boxes)
+        .collect();
+    let words = |layouts: &mut dyn Iterator<Item = gsdc::ir::Layout>| -> usize {
+        layouts
+            .map(|l| usize::from(l.pkw_words() + l.pzd_words))
+            .sum()
+    };
+    let ppo = words(
+        &mut ir
+            .profibus
+            .as_ref()
+            .unwrap()
+            .modules
+            .iter()
+            .map(|m| m.layout),
+    );
+    let pn = words(
+        &mut ir
+            .profinet
+            .as_ref()
+            .unwrap()
+            .modules
+            .iter()
+            .map(|m| m.layout),
+    );
     // PPO1..PPO5: 6 + 10 + 2 + 6 + 16; PROFINET: 6 + 10 + 16 + 2 + 6 + 12. English, then Chinese.
     assert_eq!((ppo, pn), (40, 52));
     assert_eq!(overviews, [ppo, pn, ppo, pn]);
@@ -167,16 +245,31 @@ fn an_overview_has_a_box_per_word_of_every_module() {
 #[test]
 fn a_status_word_is_drawn_bit_by_bit() {
     let html = datasheet("mv810-pnet02.toml", ArtifactKind::DatasheetHtml);
-    let bits: Vec<Figure> = figures(&html).into_iter().filter(|f| f.kind == "bits").collect();
+    let bits: Vec<Figure> = figures(&html)
+        .into_iter()
+        .filter(|f| f.kind == "bits")
+        .collect();
     assert_eq!(bits.len(), 4, "control and status word, two languages");
     let status = &bits[1];
-    let fields: Vec<&[f64; 4]> = status.groups.iter().filter(|(c, _, _)| c == "box field").map(|(_, r, _)| r).collect();
-    let reserved = status.groups.iter().filter(|(c, _, _)| c == "box reserved").count();
+    let fields: Vec<&[f64; 4]> = status
+        .groups
+        .iter()
+        .filter(|(c, _, _)| c == "box field")
+        .map(|(_, r, _)| r)
+        .collect();
+    let reserved = status
+        .groups
+        .iter()
+        .filter(|(c, _, _)| c == "box reserved")
+        .count();
     // Bits 0-8 one field each, bits 9-10 one field; 11-15 reserved.
     assert_eq!((fields.len(), reserved), (10, 5));
     let widest = fields.iter().map(|r| r[2]).fold(0.0, f64::max);
     let narrowest = fields.iter().map(|r| r[2]).fold(f64::MAX, f64::min);
-    assert!(widest > 2.0 * narrowest, "the two-bit field spans two columns");
+    assert!(
+        widest > 2.0 * narrowest,
+        "the two-bit field spans two columns"
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -200,15 +293,32 @@ fn gsdc(args: &[&str]) -> std::process::Output {
 fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
     let out = scratch("ok");
     let out_arg = out.to_str().unwrap();
-    let first = gsdc(&["doc", "descriptions/md810dp.toml", "descriptions/9kdp1.toml", "--out", out_arg]);
-    assert_eq!(first.status.code(), Some(0), "{}", String::from_utf8_lossy(&first.stderr));
+    let first = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        "descriptions/9kdp1.toml",
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(
+        first.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
     let stdout = String::from_utf8_lossy(&first.stdout);
     for file in ["md810dp.html", "md810dp.md", "9kdp1.html", "9kdp1.md"] {
-        assert!(stdout.contains(&format!("wrote {}", out.join(file).display())), "{stdout}");
+        assert!(
+            stdout.contains(&format!("wrote {}", out.join(file).display())),
+            "{stdout}"
+        );
         let written = std::fs::read(out.join(file)).unwrap();
         let stem = file.split('.').next().unwrap();
         let ir = descriptions::load(&format!("{stem}.toml"));
-        let expected = gsdc::document(&ir).into_iter().find(|a| a.file_name == file).unwrap();
+        let expected = gsdc::document(&ir)
+            .into_iter()
+            .find(|a| a.file_name == file)
+            .unwrap();
         assert_eq!(written, expected.contents, "{file}");
     }
     let again = gsdc(&["doc", "descriptions/md810dp.toml", "--out", out_arg]);
@@ -228,16 +338,27 @@ fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
     ]);
     assert_eq!(run.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&run.stderr);
-    assert!(stderr.contains("E104") && stderr.contains("nothing written"), "{stderr}");
+    assert!(
+        stderr.contains("E104") && stderr.contains("nothing written"),
+        "{stderr}"
+    );
     assert!(!out.exists());
 }
 
 #[test]
 fn gsdc_doc_usage_and_io_errors_exit_2() {
-    let missing = gsdc(&["doc", "descriptions/no-such.toml", "--out", scratch("missing").to_str().unwrap()]);
+    let missing = gsdc(&[
+        "doc",
+        "descriptions/no-such.toml",
+        "--out",
+        scratch("missing").to_str().unwrap(),
+    ]);
     assert_eq!(missing.status.code(), Some(2));
     assert_eq!(gsdc(&["doc"]).status.code(), Some(2));
     let help = gsdc(&["doc", "--help"]);
     let help = String::from_utf8_lossy(&help.stdout);
-    assert!(help.contains("gsdc doc descriptions/md810dp.toml --out dist"), "{help}");
+    assert!(
+        help.contains("gsdc doc descriptions/md810dp.toml --out dist"),
+        "{help}"
+    );
 }

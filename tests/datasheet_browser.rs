@@ -49,7 +49,12 @@ const EXPECTED: [(&str, &[&str]); 3] = [
     ),
     (
         "9kdp1.toml",
-        &["PPO4", "Encoder/PG card abnormal", "03 00 14", "0x1000 (4096)"],
+        &[
+            "PPO4",
+            "Encoder/PG card abnormal",
+            "03 00 14",
+            "0x1000 (4096)",
+        ],
     ),
 ];
 
@@ -69,11 +74,19 @@ fn datasheets_render_in_chromium_as_a_reader_sees_them() {
             "Emulation.setDeviceMetricsOverride",
             json!({ "width": WIDTH, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": false }),
         );
-        browser.call(Some(&session), "Page.navigate", json!({ "url": file_url(&html) }));
+        browser.call(
+            Some(&session),
+            "Page.navigate",
+            json!({ "url": file_url(&html) }),
+        );
         browser.wait_for("Page.loadEventFired");
 
         let page = browser.eval(&session, PAGE);
-        assert_eq!(page["scripts"], json!(0), "{name}: the datasheet has no script");
+        assert_eq!(
+            page["scripts"],
+            json!(0),
+            "{name}: the datasheet has no script"
+        );
         assert_eq!(page["resources"], json!(0), "{name}: nor loads anything");
         let languages = page["languages"].as_array().unwrap().clone();
         let has_chinese = name != "9kdp1.toml" || !languages.is_empty();
@@ -83,14 +96,20 @@ fn datasheets_render_in_chromium_as_a_reader_sees_them() {
         check_shown(name, &ir, &shown, "en");
         let text = shown["text"].as_str().unwrap();
         for wanted in expected {
-            assert!(text.contains(wanted), "{name}: `{wanted}` is not on the page");
+            assert!(
+                text.contains(wanted),
+                "{name}: `{wanted}` is not on the page"
+            );
         }
         screenshots(&mut browser, &session, name, "en");
 
         // The switch is radio buttons and CSS: a click shows the other language.
         for lang in languages.iter().skip(1) {
             let lang = lang.as_str().unwrap();
-            browser.eval(&session, &format!("document.querySelector('label[for=lang-{lang}]').click()"));
+            browser.eval(
+                &session,
+                &format!("document.querySelector('label[for=lang-{lang}]').click()"),
+            );
             let shown = browser.eval(&session, SHOWN);
             check_shown(name, &ir, &shown, lang);
             screenshots(&mut browser, &session, name, lang);
@@ -162,51 +181,101 @@ const SHOWN: &str = r#"(() => {
 })()"#;
 
 fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
-    assert_eq!(shown["shown"], json!([lang]), "{name}: exactly one language shows");
+    assert_eq!(
+        shown["shown"],
+        json!([lang]),
+        "{name}: exactly one language shows"
+    );
     assert!(shown["tables"].as_u64().unwrap() >= 5, "{name} {lang}");
     let figures = shown["figures"].as_array().unwrap();
     assert!(!figures.is_empty(), "{name} {lang}: no diagram");
     for figure in figures {
         let faults = geometry_faults(figure);
-        assert!(faults.is_empty(), "{name} {lang}, {}:\n{}", figure["caption"], faults.join("\n"));
+        assert!(
+            faults.is_empty(),
+            "{name} {lang}, {}:\n{}",
+            figure["caption"],
+            faults.join("\n")
+        );
     }
     // The overview of each bus: one box per word of every module.
     let words = |layouts: Vec<gsdc::ir::Layout>| -> usize {
-        layouts.iter().map(|l| usize::from(l.pkw_words() + l.pzd_words)).sum()
+        layouts
+            .iter()
+            .map(|l| usize::from(l.pkw_words() + l.pzd_words))
+            .sum()
     };
     let of_kind = |kind: &'static str| figures.iter().filter(move |f| f["kind"] == json!(kind));
     let mut overviews = of_kind("overview");
     for expected in [
-        ir.profibus.as_ref().map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
-        ir.profinet.as_ref().map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
+        ir.profibus
+            .as_ref()
+            .map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
+        ir.profinet
+            .as_ref()
+            .map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
     ]
     .into_iter()
     .flatten()
     {
-        let figure = overviews.next().unwrap_or_else(|| panic!("{name} {lang}: an overview"));
-        assert_eq!(boxes(figure), expected, "{name} {lang}: {}", figure["caption"]);
+        let figure = overviews
+            .next()
+            .unwrap_or_else(|| panic!("{name} {lang}: an overview"));
+        assert_eq!(
+            boxes(figure),
+            expected,
+            "{name} {lang}: {}",
+            figure["caption"]
+        );
     }
-    assert!(overviews.next().is_none(), "{name} {lang}: one overview per bus");
+    assert!(
+        overviews.next().is_none(),
+        "{name} {lang}: one overview per bus"
+    );
     // The words of each telegram: one box per word, both ways.
     let layouts: Vec<(String, gsdc::ir::Layout)> = ir
         .profibus
         .iter()
         .flat_map(|p| p.modules.iter().map(|m| (m.name.clone(), m.layout)))
-        .chain(ir.profinet.iter().flat_map(|p| p.modules.iter().map(|m| (m.name.text.en.clone(), m.layout))))
+        .chain(
+            ir.profinet
+                .iter()
+                .flat_map(|p| p.modules.iter().map(|m| (m.name.text.en.clone(), m.layout))),
+        )
         .collect();
     for figure in of_kind("words") {
         // "Figure 2. PPO5 (its first words ...)", "图 2 PPO5（...）".
         let caption = figure["caption"].as_str().unwrap();
-        let after_label = caption.split_once(". ").or_else(|| caption[4..].split_once(' ')).unwrap().1;
-        let module = after_label.split(" (").next().unwrap().split('（').next().unwrap();
-        let (_, layout) = layouts.iter().find(|(n, _)| n == module).unwrap_or_else(|| panic!("{name}: no module {module:?}"));
+        let after_label = caption
+            .split_once(". ")
+            .or_else(|| caption[4..].split_once(' '))
+            .unwrap()
+            .1;
+        let module = after_label
+            .split(" (")
+            .next()
+            .unwrap()
+            .split('（')
+            .next()
+            .unwrap();
+        let (_, layout) = layouts
+            .iter()
+            .find(|(n, _)| n == module)
+            .unwrap_or_else(|| panic!("{name}: no module {module:?}"));
         let words = usize::from(layout.pkw_words() + layout.pzd_words);
         assert_eq!(boxes(figure), 2 * words, "{name} {lang}: {caption}");
     }
     // Control and status words: under each of the 16 bit numbers, one box.
     let bits: Vec<&Value> = of_kind("bits").collect();
-    let words_with_bits = [&ir.telegram.control_word, &ir.telegram.status_word].iter().filter(|w| w.is_some()).count();
-    assert_eq!(bits.len(), words_with_bits, "{name} {lang}: a figure per control or status word");
+    let words_with_bits = [&ir.telegram.control_word, &ir.telegram.status_word]
+        .iter()
+        .filter(|w| w.is_some())
+        .count();
+    assert_eq!(
+        bits.len(),
+        words_with_bits,
+        "{name} {lang}: a figure per control or status word"
+    );
     for figure in bits {
         bit_by_bit(name, figure);
     }
@@ -214,17 +283,34 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
 
 /// The word boxes of a figure: PKW, PZD and control or status words.
 fn boxes(figure: &Value) -> usize {
-    let word = |cls: &Value| ["box pkw", "box pzd", "box field"].iter().any(|c| cls == &json!(c));
-    figure["items"].as_array().unwrap().iter().filter(|i| word(&i["cls"])).count()
+    let word = |cls: &Value| {
+        ["box pkw", "box pzd", "box field"]
+            .iter()
+            .any(|c| cls == &json!(c))
+    };
+    figure["items"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|i| word(&i["cls"]))
+        .count()
 }
 
 /// Rectangles inside the drawing and apart; every text inside its rectangle.
 fn geometry_faults(figure: &Value) -> Vec<String> {
-    let (width, height) = (figure["width"].as_f64().unwrap(), figure["height"].as_f64().unwrap());
+    let (width, height) = (
+        figure["width"].as_f64().unwrap(),
+        figure["height"].as_f64().unwrap(),
+    );
     let items = figure["items"].as_array().unwrap();
     let rect = |v: &Value| {
         let r = &v["rect"];
-        [r["x"].as_f64().unwrap(), r["y"].as_f64().unwrap(), r["w"].as_f64().unwrap(), r["h"].as_f64().unwrap()]
+        [
+            r["x"].as_f64().unwrap(),
+            r["y"].as_f64().unwrap(),
+            r["w"].as_f64().unwrap(),
+            r["h"].as_f64().unwrap(),
+        ]
     };
     let mut faults = Vec::new();
     for (i, item) in items.iter().enumerate() {
@@ -245,7 +331,10 @@ fn geometry_faults(figure: &Value) -> Vec<String> {
             let [tx, ty, tw, th] = ["x", "y", "w", "h"].map(|k| b[k].as_f64().unwrap());
             // Half a pixel for anti-aliasing.
             if tx < x - 0.5 || ty < y - 0.5 || tx + tw > x + w + 0.5 || ty + th > y + h + 0.5 {
-                faults.push(format!("text {} {b} is not inside {}", t["text"], item["rect"]));
+                faults.push(format!(
+                    "text {} {b} is not inside {}",
+                    t["text"], item["rect"]
+                ));
             }
         }
     }
@@ -265,11 +354,21 @@ fn bit_by_bit(name: &str, figure: &Value) {
             .filter(|i| i["cls"] != json!("slot"))
             .filter(|i| {
                 let r = &i["rect"];
-                let (x, w, y) = (r["x"].as_f64().unwrap(), r["w"].as_f64().unwrap(), r["y"].as_f64().unwrap());
+                let (x, w, y) = (
+                    r["x"].as_f64().unwrap(),
+                    r["w"].as_f64().unwrap(),
+                    r["y"].as_f64().unwrap(),
+                );
                 x <= centre && centre <= x + w && (y - below).abs() < 1.0
             })
             .collect();
-        assert_eq!(under.len(), 1, "{name}: {} has {} boxes under it", number["texts"][0]["text"], under.len());
+        assert_eq!(
+            under.len(),
+            1,
+            "{name}: {} has {} boxes under it",
+            number["texts"][0]["text"],
+            under.len()
+        );
     }
 }
 
@@ -278,7 +377,10 @@ fn bit_by_bit(name: &str, figure: &Value) {
 fn screenshots(browser: &mut Browser, session: &str, name: &str, lang: &str) {
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("datasheet-screenshots");
     std::fs::create_dir_all(&out).unwrap();
-    let height = browser.eval(session, "document.documentElement.scrollHeight").as_f64().unwrap();
+    let height = browser
+        .eval(session, "document.documentElement.scrollHeight")
+        .as_f64()
+        .unwrap();
     let pages = (height / f64::from(HEIGHT)).ceil() as u32;
     let mut inked = Vec::new();
     for page in 0..pages {
@@ -295,7 +397,10 @@ fn screenshots(browser: &mut Browser, session: &str, name: &str, lang: &str) {
     }
     // The last page may hold only the end of the text.
     let mean = inked.iter().sum::<f64>() / inked.len() as f64;
-    assert!(inked[0] > 0.03 && mean > 0.03, "{name} {lang}: shares of pixels not white {inked:.3?}");
+    assert!(
+        inked[0] > 0.03 && mean > 0.03,
+        "{name} {lang}: shares of pixels not white {inked:.3?}"
+    );
 }
 
 /// The share of pixels that are not (nearly) white.
@@ -315,14 +420,30 @@ fn inked_share(png_bytes: &[u8]) -> f64 {
 
 /// Printing hides the switch and the contents and gives a PDF.
 fn print_check(browser: &mut Browser, session: &str, name: &str) {
-    browser.call(Some(session), "Emulation.setEmulatedMedia", json!({ "media": "print" }));
+    browser.call(
+        Some(session),
+        "Emulation.setEmulatedMedia",
+        json!({ "media": "print" }),
+    );
     let hidden = browser.eval(
         session,
         "[...document.querySelectorAll('nav')].every(n => getComputedStyle(n).display === 'none')",
     );
     assert_eq!(hidden, json!(true), "{name}: navigation printed");
-    let pdf = browser.call(Some(session), "Page.printToPDF", json!({ "printBackground": true }));
+    let pdf = browser.call(
+        Some(session),
+        "Page.printToPDF",
+        json!({ "printBackground": true }),
+    );
     let pdf = base64(pdf["data"].as_str().unwrap());
-    assert!(pdf.starts_with(b"%PDF") && pdf.len() > 10_000, "{name}: {} bytes of PDF", pdf.len());
-    browser.call(Some(session), "Emulation.setEmulatedMedia", json!({ "media": "" }));
+    assert!(
+        pdf.starts_with(b"%PDF") && pdf.len() > 10_000,
+        "{name}: {} bytes of PDF",
+        pdf.len()
+    );
+    browser.call(
+        Some(session),
+        "Emulation.setEmulatedMedia",
+        json!({ "media": "" }),
+    );
 }

@@ -36,7 +36,10 @@ pub fn run(descriptions: &[PathBuf], out: &Path) -> Status {
             Outcome::Written => "wrote",
             Outcome::Unchanged => "unchanged",
         };
-        say(&format!("{verb} {}", out.join(&artifact.file_name).display()));
+        say(&format!(
+            "{verb} {}",
+            out.join(&artifact.file_name).display()
+        ));
     }
     Status::Ok
 }

@@ -54,7 +54,9 @@ enum Command {
         xsd: Option<PathBuf>,
     },
     /// Write the datasheet of each description: DIR/<stem>.html (one page, no script) and DIR/<stem>.md.
-    #[command(after_help = "Example:\n  gsdc doc descriptions/md810dp.toml --out dist   # dist/md810dp.html, dist/md810dp.md")]
+    #[command(
+        after_help = "Example:\n  gsdc doc descriptions/md810dp.toml --out dist   # dist/md810dp.html, dist/md810dp.md"
+    )]
     Doc {
         /// Description files (TOML).
         #[arg(required = true, value_name = "DESCRIPTION")]

@@ -120,12 +120,19 @@ fn texts(ir: &Ir) -> impl Iterator<Item = &Text> {
         .flatten()
         .flat_map(|w| {
             std::iter::once(&w.name).chain(w.bits.iter().flat_map(|b| {
-                let values = b.values.iter().flat_map(|v| v.choices.iter().map(|c| &c.text));
+                let values = b
+                    .values
+                    .iter()
+                    .flat_map(|v| v.choices.iter().map(|c| &c.text));
                 std::iter::once(&b.name).chain(values)
             }))
         });
     let mappings = ir.mappings.sets().flat_map(|s| {
-        let choices = s.allowed.choices().into_iter().flat_map(|v| v.choices.iter().map(|c| &c.text));
+        let choices = s
+            .allowed
+            .choices()
+            .into_iter()
+            .flat_map(|v| v.choices.iter().map(|c| &c.text));
         s.entries.iter().map(|e| &e.name).chain(choices)
     });
     let diagnosis = ir
@@ -134,12 +141,20 @@ fn texts(ir: &Ir) -> impl Iterator<Item = &Text> {
         .flat_map(|p| &p.diagnosis)
         .flat_map(|d| &d.areas)
         .flat_map(|a| a.values.choices.iter().map(|c| &c.text));
-    device.into_iter().flatten().chain(words).chain(mappings).chain(diagnosis)
+    device
+        .into_iter()
+        .flatten()
+        .chain(words)
+        .chain(mappings)
+        .chain(diagnosis)
 }
 
 fn document(ir: &Ir, lang: Lang) -> page::Doc {
     let title = lang.f(
-        format!("{} {}: fieldbus interface", ir.device.vendor, ir.device.model),
+        format!(
+            "{} {}: fieldbus interface",
+            ir.device.vendor, ir.device.model
+        ),
         format!("{} {}：现场总线接口", ir.device.vendor, ir.device.model),
     );
     let mut doc = Builder::new(lang, title);
@@ -177,7 +192,12 @@ fn parameter_name(ir: &Ir, value: u16) -> String {
 fn drive_name(ir: &Ir, value: u16) -> Option<String> {
     let numbering = ir.numbering.as_ref()?;
     let [high, _] = value.to_be_bytes();
-    let base = numbering.prefixes.iter().map(|&(_, base)| base).filter(|&base| base <= high).max()?;
+    let base = numbering
+        .prefixes
+        .iter()
+        .map(|&(_, base)| base)
+        .filter(|&base| base <= high)
+        .max()?;
     if numbering.group_radix == 16 && high - base >= 16 {
         return None;
     }
@@ -192,7 +212,10 @@ fn mapping_value(ir: &Ir, lang: Lang, set: &MappingSet, value: u16) -> String {
             .choices
             .iter()
             .find(|c| c.value == i64::from(value))
-            .map_or_else(|| value.to_string(), |c| format!("{value}: {}", lang.text(&c.text))),
+            .map_or_else(
+                || value.to_string(),
+                |c| format!("{value}: {}", lang.text(&c.text)),
+            ),
     }
 }
 
@@ -204,8 +227,16 @@ fn allowed(lang: Lang, set: &MappingSet) -> String {
             format!("{min}～{max}（0x{min:04X}～0x{max:04X}）"),
         ),
         Allowed::Choices(values) => lang.f(
-            format!("one of {} choices ({})", values.choices.len(), choices_caption(lang, set)),
-            format!("{} 个选项之一（{}）", values.choices.len(), choices_caption(lang, set)),
+            format!(
+                "one of {} choices ({})",
+                values.choices.len(),
+                choices_caption(lang, set)
+            ),
+            format!(
+                "{} 个选项之一（{}）",
+                values.choices.len(),
+                choices_caption(lang, set)
+            ),
         ),
     }
 }
@@ -222,9 +253,10 @@ fn choices_caption(lang: Lang, set: &MappingSet) -> String {
 fn set_name(lang: Lang, set: &MappingSet) -> String {
     let first = lang.text(&set.entries[0].name);
     match set.entries.last() {
-        Some(last) if set.entries.len() > 1 => {
-            lang.f(format!("{first} to {}", lang.text(&last.name)), format!("{first}～{}", lang.text(&last.name)))
-        }
+        Some(last) if set.entries.len() > 1 => lang.f(
+            format!("{first} to {}", lang.text(&last.name)),
+            format!("{first}～{}", lang.text(&last.name)),
+        ),
         _ => first.to_string(),
     }
 }
@@ -243,7 +275,8 @@ fn with_placeholder(lang: Lang, value: String, placeholder: bool) -> Cell {
     if placeholder {
         cell.push(Run::Text(" ".into()));
         cell.push(Run::Mark(
-            lang.t("placeholder, not assigned by PI", "占位值，非 PI 分配").into(),
+            lang.t("placeholder, not assigned by PI", "占位值，非 PI 分配")
+                .into(),
         ));
     }
     cell
@@ -271,5 +304,9 @@ fn bytes(lang: Lang, first: u16, last: u16) -> String {
 
 /// Bytes as the manuals write them where bytes matter: `03 00 34`.
 fn hex_bytes(bytes: &[u8]) -> String {
-    bytes.iter().map(|b| format!("{b:02X}")).collect::<Vec<_>>().join(" ")
+    bytes
+        .iter()
+        .map(|b| format!("{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }

@@ -636,8 +636,7 @@ fn doc_text(text: &str) -> String {
 }
 
 #[cfg(test)]
-#[path = "../../templates/support/mod.rs"]
-mod support;
+use crate::pkw::support;
 
 #[cfg(test)]
 mod support_tests;

@@ -33,7 +33,10 @@ impl Browser {
         std::fs::create_dir_all(&dir).unwrap();
         let (to, from) = (dir.join("to-browser"), dir.join("from-browser"));
         for fifo in [&to, &from] {
-            let made = Command::new("mkfifo").arg(fifo).status().expect("mkfifo runs");
+            let made = Command::new("mkfifo")
+                .arg(fifo)
+                .status()
+                .expect("mkfifo runs");
             assert!(made.success(), "mkfifo {}", fifo.display());
         }
         let chromium = which_chromium();
@@ -61,13 +64,22 @@ impl Browser {
         std::thread::spawn(move || {
             for message in reader.split(0) {
                 let Ok(bytes) = message else { break };
-                let Ok(value) = serde_json::from_slice::<Value>(&bytes) else { break };
+                let Ok(value) = serde_json::from_slice::<Value>(&bytes) else {
+                    break;
+                };
                 if send.send(value).is_err() {
                     break;
                 }
             }
         });
-        Browser { child, to_browser, from_browser, next_id: 0, events: Vec::new(), dir }
+        Browser {
+            child,
+            to_browser,
+            from_browser,
+            next_id: 0,
+            events: Vec::new(),
+            dir,
+        }
     }
 
     /// Sends a command (to a page's session when given) and returns its result.
@@ -94,7 +106,11 @@ impl Browser {
 
     /// Waits for an event of `method`, keeping the others.
     pub fn wait_for(&mut self, method: &str) -> Value {
-        if let Some(i) = self.events.iter().position(|e| e["method"] == json!(method)) {
+        if let Some(i) = self
+            .events
+            .iter()
+            .position(|e| e["method"] == json!(method))
+        {
             return self.events.remove(i);
         }
         let deadline = Instant::now() + TIMEOUT;
@@ -134,7 +150,10 @@ impl Browser {
             "Runtime.evaluate",
             json!({ "expression": expression, "returnByValue": true }),
         );
-        assert!(result.get("exceptionDetails").is_none(), "{expression}: {result}");
+        assert!(
+            result.get("exceptionDetails").is_none(),
+            "{expression}: {result}"
+        );
         result["result"]["value"].clone()
     }
 }
@@ -174,7 +193,8 @@ pub fn base64(text: &str) -> Vec<u8> {
     digits
         .chunks(4)
         .flat_map(|chunk| {
-            let n = chunk.iter().fold(0u32, |n, &d| n << 6 | u32::from(d)) << (6 * (4 - chunk.len()));
+            let n =
+                chunk.iter().fold(0u32, |n, &d| n << 6 | u32::from(d)) << (6 * (4 - chunk.len()));
             let bytes = n.to_be_bytes();
             bytes[1..chunk.len()].to_vec()
         })

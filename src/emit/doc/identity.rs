@@ -10,7 +10,11 @@ use crate::ir::{Ir, MappingKind, PkwKind};
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut intro = text(lang.text(&ir.device.name));
     if let Some(info) = &ir.device.info {
-        intro.push(Run::Text(format!("{}{}", lang.t(": ", "："), lang.text(info))));
+        intro.push(Run::Text(format!(
+            "{}{}",
+            lang.t(": ", "："),
+            lang.text(info)
+        )));
     }
     doc.para(intro);
     doc.para(vec![
@@ -47,8 +51,14 @@ fn device_table(doc: &mut Builder, ir: &Ir, lang: Lang) {
         (lang.t("Model", "型号"), text(&d.model)),
         (lang.t("Name", "名称"), text(lang.text(&d.name))),
         (lang.t("Revision", "版本"), code(&d.revision)),
-        (lang.t("Hardware release", "硬件版本"), code(&d.hardware_release)),
-        (lang.t("Software release", "软件版本"), code(&d.software_release)),
+        (
+            lang.t("Hardware release", "硬件版本"),
+            code(&d.hardware_release),
+        ),
+        (
+            lang.t("Software release", "软件版本"),
+            code(&d.software_release),
+        ),
     ];
     if let Some(order) = &d.order_number {
         rows.push((lang.t("Order number", "订货号"), code(order)));
@@ -64,61 +74,131 @@ fn files_table(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut rows = Vec::new();
     if let Some(p) = &ir.profibus {
         let mut id = text("Ident_Number ");
-        id.extend(with_placeholder(lang, format!("0x{:04X}", p.ident_number), p.ident_placeholder));
-        rows.push(vec![code(&p.file_name), text(lang.t("PROFIBUS-DP device description (GSD)", "PROFIBUS-DP 设备描述文件（GSD）")), id]);
+        id.extend(with_placeholder(
+            lang,
+            format!("0x{:04X}", p.ident_number),
+            p.ident_placeholder,
+        ));
+        rows.push(vec![
+            code(&p.file_name),
+            text(lang.t(
+                "PROFIBUS-DP device description (GSD)",
+                "PROFIBUS-DP 设备描述文件（GSD）",
+            )),
+            id,
+        ]);
     }
     if let Some(p) = &ir.profinet {
         let mut id = text("VendorID ");
-        id.extend(with_placeholder(lang, format!("0x{:04X}", p.vendor_id), p.vendor_id_placeholder));
+        id.extend(with_placeholder(
+            lang,
+            format!("0x{:04X}", p.vendor_id),
+            p.vendor_id_placeholder,
+        ));
         id.push(Run::Text(", DeviceID ".into()));
-        id.extend(with_placeholder(lang, format!("0x{:04X}", p.device_id), p.device_id_placeholder));
-        rows.push(vec![code(&p.file_name), text(lang.t("PROFINET device description (GSDML)", "PROFINET 设备描述文件（GSDML）")), id]);
+        id.extend(with_placeholder(
+            lang,
+            format!("0x{:04X}", p.device_id),
+            p.device_id_placeholder,
+        ));
+        rows.push(vec![
+            code(&p.file_name),
+            text(lang.t(
+                "PROFINET device description (GSDML)",
+                "PROFINET 设备描述文件（GSDML）",
+            )),
+            id,
+        ]);
     }
     let mut layout = code(crate::emit::rust::file_name(ir));
     layout.push(Run::Text(lang.t(" with ", " 及 ").into()));
     layout.push(Run::Code(crate::emit::rust::SUPPORT_FILE_NAME.into()));
     rows.push(vec![
         layout,
-        text(lang.t("Firmware layout (Rust, no_std)", "固件数据布局（Rust，no_std）")),
-        vec![Run::Text(lang.t("fingerprint ", "指纹 ").into()), Run::Code(ir.fingerprint.to_string())],
+        text(lang.t(
+            "Firmware layout (Rust, no_std)",
+            "固件数据布局（Rust，no_std）",
+        )),
+        vec![
+            Run::Text(lang.t("fingerprint ", "指纹 ").into()),
+            Run::Code(ir.fingerprint.to_string()),
+        ],
     ]);
     doc.table(
-        lang.t("The files gsdc generates from the description", "gsdc 由设备描述生成的文件"),
-        &[lang.t("File", "文件"), lang.t("What it is", "用途"), lang.t("Identification", "标识")],
+        lang.t(
+            "The files gsdc generates from the description",
+            "gsdc 由设备描述生成的文件",
+        ),
+        &[
+            lang.t("File", "文件"),
+            lang.t("What it is", "用途"),
+            lang.t("Identification", "标识"),
+        ],
         rows,
     );
 }
 
 fn yes_no(lang: Lang, value: bool) -> Cell {
-    text(if value { lang.t("yes", "是") } else { lang.t("no", "否") })
+    text(if value {
+        lang.t("yes", "是")
+    } else {
+        lang.t("no", "否")
+    })
 }
 
 fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
     let rates: Vec<&str> = p.baud_rates.iter().map(|(b, _)| b.as_str()).collect();
     let mut rows = vec![
-        (lang.t("GSD revision", "GSD 版本"), code(p.gsd_revision.to_string())),
         (
-            lang.t("Baud rates (kbit/s; M = Mbit/s)", "波特率（kbit/s；M = Mbit/s）"),
+            lang.t("GSD revision", "GSD 版本"),
+            code(p.gsd_revision.to_string()),
+        ),
+        (
+            lang.t(
+                "Baud rates (kbit/s; M = Mbit/s)",
+                "波特率（kbit/s；M = Mbit/s）",
+            ),
             text(rates.join(", ")),
         ),
-        (lang.t("Detects the baud rate (Auto_Baud_supp)", "自动识别波特率（Auto_Baud_supp）"), yes_no(lang, p.auto_baud)),
+        (
+            lang.t(
+                "Detects the baud rate (Auto_Baud_supp)",
+                "自动识别波特率（Auto_Baud_supp）",
+            ),
+            yes_no(lang, p.auto_baud),
+        ),
         (
             lang.t("Min_Slave_Interval", "Min_Slave_Interval"),
             text(format!("{} × 100 µs", p.min_slave_interval)),
         ),
-        (lang.t("Freeze mode", "Freeze 模式"), yes_no(lang, p.freeze_mode)),
+        (
+            lang.t("Freeze mode", "Freeze 模式"),
+            yes_no(lang, p.freeze_mode),
+        ),
         (lang.t("Sync mode", "Sync 模式"), yes_no(lang, p.sync_mode)),
         (
             lang.t("Input and output bytes at most", "最大输入、输出字节数"),
             text(format!("{}, {}", p.max_input_len, p.max_output_len)),
         ),
-        (lang.t("Max_Diag_Data_Len", "Max_Diag_Data_Len"), text(p.max_diag_data_len.to_string())),
+        (
+            lang.t("Max_Diag_Data_Len", "Max_Diag_Data_Len"),
+            text(p.max_diag_data_len.to_string()),
+        ),
     ];
     if let Some(d) = &p.dpv1 {
-        rows.push((lang.t("DPV1 class 1 read and write", "DPV1 一类主站读写"), yes_no(lang, d.c1_read_write)));
         rows.push((
-            lang.t("DPV1 C1_Max_Data_Len, response timeout", "DPV1 C1_Max_Data_Len、响应超时"),
-            text(format!("{}, {} × 10 ms", d.c1_max_data_len, d.c1_response_timeout)),
+            lang.t("DPV1 class 1 read and write", "DPV1 一类主站读写"),
+            yes_no(lang, d.c1_read_write),
+        ));
+        rows.push((
+            lang.t(
+                "DPV1 C1_Max_Data_Len, response timeout",
+                "DPV1 C1_Max_Data_Len、响应超时",
+            ),
+            text(format!(
+                "{}, {} × 10 ms",
+                d.c1_max_data_len, d.c1_response_timeout
+            )),
         ));
     }
     doc.table(
@@ -132,15 +212,30 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     // MinDeviceInterval counts 31.25 us.
     let micros = u32::from(p.min_device_interval) * 3125 / 100;
     let rows = vec![
-        (lang.t("GSDML version", "GSDML 版本"), code(p.gsdml_version.to_string())),
-        (lang.t("Name of station (default)", "默认设备名称"), code(&p.dns_name)),
-        (lang.t("Ports", "端口数"), text(p.ports.len().to_string())),
         (
-            lang.t("Shortest update time (MinDeviceInterval)", "最短更新时间（MinDeviceInterval）"),
-            text(format!("{} × 31.25 µs = {} µs", p.min_device_interval, micros)),
+            lang.t("GSDML version", "GSDML 版本"),
+            code(p.gsdml_version.to_string()),
         ),
         (
-            lang.t("IO data bytes at most, in and out (IOPS and IOCS included)", "最大 IO 数据字节数，输入、输出（含 IOPS、IOCS）"),
+            lang.t("Name of station (default)", "默认设备名称"),
+            code(&p.dns_name),
+        ),
+        (lang.t("Ports", "端口数"), text(p.ports.len().to_string())),
+        (
+            lang.t(
+                "Shortest update time (MinDeviceInterval)",
+                "最短更新时间（MinDeviceInterval）",
+            ),
+            text(format!(
+                "{} × 31.25 µs = {} µs",
+                p.min_device_interval, micros
+            )),
+        ),
+        (
+            lang.t(
+                "IO data bytes at most, in and out (IOPS and IOCS included)",
+                "最大 IO 数据字节数，输入、输出（含 IOPS、IOCS）",
+            ),
             text(format!("{}, {}", p.max_input_length, p.max_output_length)),
         ),
     ];
@@ -166,36 +261,69 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         if p.ident_placeholder {
             row(
                 &format!("Ident_Number 0x{:04X}", p.ident_number),
-                lang.t("placeholder: apply to PI for the ident number", "占位值：向 PI 申请 Ident_Number"),
+                lang.t(
+                    "placeholder: apply to PI for the ident number",
+                    "占位值：向 PI 申请 Ident_Number",
+                ),
             );
         }
     }
     if let Some(p) = &ir.profinet {
         if p.vendor_id_placeholder {
-            row(&format!("VendorID 0x{:04X}", p.vendor_id), lang.t("placeholder: the vendor ID PI assigned", "占位值：PI 分配的厂商 ID"));
+            row(
+                &format!("VendorID 0x{:04X}", p.vendor_id),
+                lang.t(
+                    "placeholder: the vendor ID PI assigned",
+                    "占位值：PI 分配的厂商 ID",
+                ),
+            );
         }
         if p.device_id_placeholder {
-            row(&format!("DeviceID 0x{:04X}", p.device_id), lang.t("placeholder: the vendor's device ID", "占位值：厂商自定的设备 ID"));
+            row(
+                &format!("DeviceID 0x{:04X}", p.device_id),
+                lang.t(
+                    "placeholder: the vendor's device ID",
+                    "占位值：厂商自定的设备 ID",
+                ),
+            );
         }
     }
     row(
         lang.t("Byte order of every word", "各字的字节顺序"),
-        lang.t("gsdc: high byte first (PROFIBUS and PROFINET convention)", "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）"),
+        lang.t(
+            "gsdc: high byte first (PROFIBUS and PROFINET convention)",
+            "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
+        ),
     );
     if ir.profibus.is_some() {
         row(
             lang.t("Config bytes of each PPO type", "各 PPO 类型的配置字节"),
-            lang.t("gsdc: consistent words in and out, derived from the layout", "gsdc 约定：按数据布局生成的输入输出一致性字"),
+            lang.t(
+                "gsdc: consistent words in and out, derived from the layout",
+                "gsdc 约定：按数据布局生成的输入输出一致性字",
+            ),
         );
         row(
-            lang.t("Parameter telegram (User_Prm_Data) layout", "参数报文（User_Prm_Data）布局"),
-            lang.t("gsdc: one Unsigned16 per mapping, in the order of the table, no gaps", "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙"),
+            lang.t(
+                "Parameter telegram (User_Prm_Data) layout",
+                "参数报文（User_Prm_Data）布局",
+            ),
+            lang.t(
+                "gsdc: one Unsigned16 per mapping, in the order of the table, no gaps",
+                "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙",
+            ),
         );
     }
     if ir.profinet.is_some() {
         row(
-            lang.t("PROFINET module ident numbers, record indexes and record layout", "PROFINET 模块标识号、记录索引与记录布局"),
-            lang.t("gsdc: as the tables above give them", "gsdc 约定：见上文各表"),
+            lang.t(
+                "PROFINET module ident numbers, record indexes and record layout",
+                "PROFINET 模块标识号、记录索引与记录布局",
+            ),
+            lang.t(
+                "gsdc: as the tables above give them",
+                "gsdc 约定：见上文各表",
+            ),
         );
     }
     if ir.telegram.pkw == PkwKind::PkeIndPwe {
@@ -207,7 +335,10 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if ir.mappings.group(MappingKind::Dpv1Index).is_some() {
         row(
             lang.t("DPV1 record data", "DPV1 记录数据"),
-            lang.t("gsdc: the parameter's 16-bit value, high byte first", "gsdc 约定：参数的 16 位值，高字节在前"),
+            lang.t(
+                "gsdc: the parameter's 16-bit value, high byte first",
+                "gsdc 约定：参数的 16 位值，高字节在前",
+            ),
         );
     }
     doc.table(

@@ -235,7 +235,11 @@ fn contents(out: &mut String, doc: &Doc) {
     out.push_str("<nav class=\"contents\"><ol>");
     for block in &doc.blocks {
         if let Block::Heading { level: 2, id, text } = block {
-            let _ = write!(out, "<li><a href=\"#{code}-{id}\">{}</a></li>", escape(text));
+            let _ = write!(
+                out,
+                "<li><a href=\"#{code}-{id}\">{}</a></li>",
+                escape(text)
+            );
         }
     }
     out.push_str("</ol></nav>\n");
@@ -294,7 +298,12 @@ fn markdown_doc(out: &mut String, doc: &Doc) {
     for block in &doc.blocks {
         match block {
             Block::Heading { level, text, .. } => {
-                let _ = writeln!(out, "\n{} {}", "#".repeat(usize::from(*level)), md_text(text));
+                let _ = writeln!(
+                    out,
+                    "\n{} {}",
+                    "#".repeat(usize::from(*level)),
+                    md_text(text)
+                );
             }
             Block::Para(cell) => {
                 let _ = writeln!(out, "\n{}", md_cell(cell));
@@ -365,7 +374,10 @@ mod tests {
 
     #[test]
     fn markdown_escapes_what_would_be_markup() {
-        assert_eq!(md_text("PZD1 master->slave | a_b *c*"), "PZD1 master->slave \\| a_b \\*c\\*");
+        assert_eq!(
+            md_text("PZD1 master->slave | a_b *c*"),
+            "PZD1 master->slave \\| a_b \\*c\\*"
+        );
         assert_eq!(md_text("> _x_ #1"), "\\> \\_x\\_ #1");
         assert_eq!(md_cell(&code("10F0 0800")), "`10F0 0800`");
         assert_eq!(md_cell(&Vec::new()), " ");

@@ -2,7 +2,9 @@
 //! records, the choices they may hold; and the diagnosis block.
 
 use super::page::{code, text, Builder, Cell};
-use super::{allowed, bits, bytes, choices_caption, drive_parameter, hex_bytes, mapping_value, Lang};
+use super::{
+    allowed, bits, bytes, choices_caption, drive_parameter, hex_bytes, mapping_value, Lang,
+};
 use crate::ir::profibus::{Diagnosis, DiagnosisArea, Profibus, STANDARD_DIAG_BYTES};
 use crate::ir::profinet::ParameterRecord;
 use crate::ir::{EntryKey, Ir, MappingKind};
@@ -12,13 +14,23 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if ir.mappings.groups.is_empty() {
         return;
     }
-    doc.section("parameters", lang.t("Parameters: mappings and settings", "参数：映射与设置"));
+    doc.section(
+        "parameters",
+        lang.t("Parameters: mappings and settings", "参数：映射与设置"),
+    );
     if let Some(p) = &ir.profibus {
         user_prm(doc, ir, p, lang);
     }
     dpv1_indexes(doc, ir, lang);
-    if let Some(records) = ir.profinet.as_ref().and_then(|p| p.modules.iter().find(|m| !m.records.is_empty())) {
-        doc.subsection("records", lang.t("PROFINET parameter records", "PROFINET 参数记录"));
+    if let Some(records) = ir
+        .profinet
+        .as_ref()
+        .and_then(|p| p.modules.iter().find(|m| !m.records.is_empty()))
+    {
+        doc.subsection(
+            "records",
+            lang.t("PROFINET parameter records", "PROFINET 参数记录"),
+        );
         doc.para(text(lang.t(
             "Every module with user-defined PZD words carries these records; the controller writes them when it plugs the module. Each holds one Unsigned16 per entry, high byte first.",
             "所有自定义 PZD 模块都带有以下参数记录，控制器插入模块时写入。每个条目一个 Unsigned16，高字节在前。",
@@ -32,7 +44,13 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
 
 fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     let prm = &p.user_prm;
-    doc.subsection("user-prm", lang.t("PROFIBUS parameter telegram (User_Prm_Data)", "PROFIBUS 参数报文（User_Prm_Data）"));
+    doc.subsection(
+        "user-prm",
+        lang.t(
+            "PROFIBUS parameter telegram (User_Prm_Data)",
+            "PROFIBUS 参数报文（User_Prm_Data）",
+        ),
+    );
     doc.para(text(lang.f(
         format!("The master sends it before data exchange, after the 7 standard bytes: {} bytes, offsets counted from its first byte. Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.", prm.len),
         format!("主站在数据交换前发送参数报文，位于 7 个标准字节之后：共 {} 字节，偏移从其第一个字节算起。每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。", prm.len),
@@ -41,7 +59,10 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     if !prm.constant.is_empty() {
         let last = prm.constant.len() as u16 - 1;
         let name = if p.dpv1.is_some() {
-            lang.t("DPV1_Status_1 to DPV1_Status_3", "DPV1_Status_1～DPV1_Status_3")
+            lang.t(
+                "DPV1_Status_1 to DPV1_Status_3",
+                "DPV1_Status_1～DPV1_Status_3",
+            )
         } else {
             lang.t("constant", "常量")
         };
@@ -67,7 +88,14 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     }
     doc.table(
         lang.t("User_Prm_Data", "User_Prm_Data"),
-        &[lang.t("Bytes", "字节"), lang.t("Name", "名称"), lang.t("Type", "类型"), lang.t("Default", "默认值"), lang.t("Range or choices", "范围或选项"), lang.t("Drive parameter", "变频器参数")],
+        &[
+            lang.t("Bytes", "字节"),
+            lang.t("Name", "名称"),
+            lang.t("Type", "类型"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("Drive parameter", "变频器参数"),
+        ],
         rows,
     );
     let mut defaults = prm.constant.clone();
@@ -90,7 +118,10 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
         "DPV1 一类主站通过 SFB52 读、SFB53 写映射到各 Index 的功能码；记录长度为 2 字节，即参数值，高字节在前。",
     )));
     let prm_offset = |key: EntryKey| {
-        ir.profibus.as_ref().and_then(|p| p.user_prm.params().find(|q| q.entry == key)).map(|q| q.offset)
+        ir.profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.params().find(|q| q.entry == key))
+            .map(|q| q.offset)
     };
     let rows = group
         .entries()
@@ -105,8 +136,17 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
         })
         .collect();
     doc.table(
-        lang.t("DPV1 indexes and the parameters they map", "DPV1 Index 及其映射的参数"),
-        &[lang.t("Index", "Index"), lang.t("Name", "名称"), lang.t("Default", "默认值"), lang.t("Range or choices", "范围或选项"), lang.t("In User_Prm_Data", "在 User_Prm_Data 中")],
+        lang.t(
+            "DPV1 indexes and the parameters they map",
+            "DPV1 Index 及其映射的参数",
+        ),
+        &[
+            lang.t("Index", "Index"),
+            lang.t("Name", "名称"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("In User_Prm_Data", "在 User_Prm_Data 中"),
+        ],
         rows,
     );
 }
@@ -128,10 +168,24 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
         .collect();
     doc.table(
         lang.f(
-            format!("Record {}: {}, {} bytes", record.index, record.name.text.en, record.length),
-            format!("记录 {}：{}，{} 字节", record.index, lang.text(&record.name.text), record.length),
+            format!(
+                "Record {}: {}, {} bytes",
+                record.index, record.name.text.en, record.length
+            ),
+            format!(
+                "记录 {}：{}，{} 字节",
+                record.index,
+                lang.text(&record.name.text),
+                record.length
+            ),
         ),
-        &[lang.t("Bytes", "字节"), lang.t("Name", "名称"), lang.t("Default", "默认值"), lang.t("Range or choices", "范围或选项"), lang.t("Drive parameter", "变频器参数")],
+        &[
+            lang.t("Bytes", "字节"),
+            lang.t("Name", "名称"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("Drive parameter", "变频器参数"),
+        ],
         rows,
     );
 }
@@ -147,8 +201,14 @@ fn choices(doc: &mut Builder, ir: &Ir, lang: Lang) {
                 .collect();
             let caption = choices_caption(lang, set);
             let mut caption_chars = caption.chars();
-            let capitalised = caption_chars.next().map_or_else(String::new, |c| c.to_uppercase().chain(caption_chars).collect());
-            doc.table(capitalised, &[lang.t("Value", "值"), lang.t("Meaning", "含义")], rows);
+            let capitalised = caption_chars.next().map_or_else(String::new, |c| {
+                c.to_uppercase().chain(caption_chars).collect()
+            });
+            doc.table(
+                capitalised,
+                &[lang.t("Value", "值"), lang.t("Meaning", "含义")],
+                rows,
+            );
         }
     }
 }
@@ -157,7 +217,11 @@ fn choices(doc: &mut Builder, ir: &Ir, lang: Lang) {
 // Diagnosis
 
 pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let Some((p, d)) = ir.profibus.as_ref().and_then(|p| Some((p, p.diagnosis.as_ref()?))) else {
+    let Some((p, d)) = ir
+        .profibus
+        .as_ref()
+        .and_then(|p| Some((p, p.diagnosis.as_ref()?)))
+    else {
         return;
     };
     doc.section("diagnosis", lang.t("Diagnosis", "诊断"));
@@ -179,10 +243,28 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
     let header = STANDARD_DIAG_BYTES;
     let [ident_high, ident_low] = p.ident_number.to_be_bytes();
     let mut rows = vec![
-        vec![text(bytes(lang, 0, 2)), text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3"))],
-        vec![text(bytes(lang, 3, 3)), text(lang.t("the master's address", "主站号"))],
-        vec![text(bytes(lang, 4, 5)), text(lang.f(format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"), format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}")))],
-        vec![text(bytes(lang, u16::from(header), u16::from(header))), text(lang.f(format!("header: the block's length, {:02X}", d.length), format!("块头：块长度 {:02X}", d.length)))],
+        vec![
+            text(bytes(lang, 0, 2)),
+            text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3")),
+        ],
+        vec![
+            text(bytes(lang, 3, 3)),
+            text(lang.t("the master's address", "主站号")),
+        ],
+        vec![
+            text(bytes(lang, 4, 5)),
+            text(lang.f(
+                format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"),
+                format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}"),
+            )),
+        ],
+        vec![
+            text(bytes(lang, u16::from(header), u16::from(header))),
+            text(lang.f(
+                format!("header: the block's length, {:02X}", d.length),
+                format!("块头：块长度 {:02X}", d.length),
+            )),
+        ],
     ];
     for byte in 1..d.length {
         let bit_of_byte = u16::from(byte - 1) * 8;
@@ -193,7 +275,8 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
             .map(|a| format!("Unit_Diag_Area {}", bits(lang, a.first_bit, a.last_bit)))
             .collect();
         let content = if areas.is_empty() {
-            lang.t("device-related, not described", "设备专用，未定义").to_string()
+            lang.t("device-related, not described", "设备专用，未定义")
+                .to_string()
         } else {
             areas.join(", ")
         };
@@ -215,12 +298,34 @@ fn area_table(doc: &mut Builder, d: &Diagnosis, area: &DiagnosisArea, lang: Lang
             let mut block = vec![0u8; usize::from(d.length)];
             block[0] = d.length;
             codec.set(&mut block, c.value as u16);
-            vec![text(c.value.to_string()), code(format!("0x{:02X}", c.value)), text(lang.text(&c.text)), code(hex_bytes(&block))]
+            vec![
+                text(c.value.to_string()),
+                code(format!("0x{:02X}", c.value)),
+                text(lang.text(&c.text)),
+                code(hex_bytes(&block)),
+            ]
         })
         .collect();
     doc.table(
-        lang.f(format!("Unit_Diag_Area {}: values", bits(lang, area.first_bit, area.last_bit)), format!("Unit_Diag_Area {}：取值", bits(lang, area.first_bit, area.last_bit))),
-        &[lang.t("Value", "值"), lang.t("Hex", "十六进制"), lang.t("Meaning", "含义"), lang.t("Block (header first), other bits 0", "诊断块（含块头，其余位为 0）")],
+        lang.f(
+            format!(
+                "Unit_Diag_Area {}: values",
+                bits(lang, area.first_bit, area.last_bit)
+            ),
+            format!(
+                "Unit_Diag_Area {}：取值",
+                bits(lang, area.first_bit, area.last_bit)
+            ),
+        ),
+        &[
+            lang.t("Value", "值"),
+            lang.t("Hex", "十六进制"),
+            lang.t("Meaning", "含义"),
+            lang.t(
+                "Block (header first), other bits 0",
+                "诊断块（含块头，其余位为 0）",
+            ),
+        ],
         rows,
     );
 }

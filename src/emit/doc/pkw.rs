@@ -8,12 +8,23 @@ use crate::ir::{Allowed, Ir, PkwKind};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let has_pkw = ir.profibus.iter().flat_map(|p| &p.modules).any(|m| m.layout.pkw)
-        || ir.profinet.iter().flat_map(|p| &p.modules).any(|m| m.layout.pkw);
+    let has_pkw = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .any(|m| m.layout.pkw)
+        || ir
+            .profinet
+            .iter()
+            .flat_map(|p| &p.modules)
+            .any(|m| m.layout.pkw);
     if !has_pkw {
         return;
     }
-    doc.section("pkw", lang.t("The parameter channel (PKW)", "参数区（PKW）"));
+    doc.section(
+        "pkw",
+        lang.t("The parameter channel (PKW)", "参数区（PKW）"),
+    );
     doc.para(text(lang.t(
         "The PKW words read or change one drive parameter per request, in the first 8 bytes of a module that has them.",
         "PKW 区位于带 PKW 的模块的前 8 个字节，每次请求读写变频器的一个参数。",
@@ -30,7 +41,11 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
 /// a mapping (MV810: P43.02); with its reason. `None` when the description
 /// names no parameter at all.
 fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
-    let entries = || ir.mappings.sets().flat_map(|s| s.entries.iter().map(move |e| (s, e)));
+    let entries = || {
+        ir.mappings
+            .sets()
+            .flat_map(|s| s.entries.iter().map(move |e| (s, e)))
+    };
     let default = entries()
         .find(|(s, _)| matches!(s.allowed, Allowed::Range { .. }))
         .map(|(_, e)| {
@@ -69,12 +84,15 @@ fn examples_intro(doc: &mut Builder, ir: &Ir, lang: Lang, address: u16, why: &st
 fn telegram(base: [U16Be; 4], variables: &[(char, [U16Be; 4])]) -> String {
     let bytes = |words: [U16Be; 4]| words.map(|w| w.get().to_be_bytes());
     let base = bytes(base);
-    let variables: Vec<(char, [[u8; 2]; 4])> = variables.iter().map(|&(c, w)| (c, bytes(w))).collect();
+    let variables: Vec<(char, [[u8; 2]; 4])> =
+        variables.iter().map(|&(c, w)| (c, bytes(w))).collect();
     (0..4)
         .map(|word| {
             (0..2)
                 .map(|byte| {
-                    let varying = variables.iter().find(|(_, v)| v[word][byte] != base[word][byte]);
+                    let varying = variables
+                        .iter()
+                        .find(|(_, v)| v[word][byte] != base[word][byte]);
                     match varying {
                         Some((letter, _)) => format!("{letter}{letter}"),
                         None => format!("{:02X}", base[word][byte]),
@@ -104,45 +122,129 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         "PKW 数据以循环执行的方式与变频器交互：写命令留在报文中会持续写 EEPROM。操作完成后请发送命令 0。",
     )));
     let row = |word: &str, first: u16, request: &str, response: &str| {
-        vec![text(word), text(bytes(lang, first, first + 1)), text(request), text(response)]
+        vec![
+            text(word),
+            text(bytes(lang, first, first + 1)),
+            text(request),
+            text(response),
+        ]
     };
     doc.table(
         lang.t("The PKW words", "PKW 数据格式"),
-        &[lang.t("Word", "字"), lang.t("Bytes", "字节"), lang.t("Request (master → drive)", "主站发送数据"), lang.t("Response (drive → master)", "变频器响应数据")],
+        &[
+            lang.t("Word", "字"),
+            lang.t("Bytes", "字节"),
+            lang.t("Request (master → drive)", "主站发送数据"),
+            lang.t("Response (drive → master)", "变频器响应数据"),
+        ],
         vec![
-            row("PKE", 0, lang.t("bits 15-12: command; bits 11-8: reserved; bits 7-0: address, high byte", "高 4 位：命令代码；低 4 位（位 11-8）：保留；低 8 位：功能码参数地址高位"), lang.t("bits 15-12: response code; bits 7-0: address, high byte", "高 4 位：响应代码；低 8 位：功能码参数地址高位")),
-            row("IND", 2, lang.t("bits 15-8: address, low byte; bits 7-0: reserved", "高 8 位：功能码参数地址低位；低 8 位：保留"), lang.t("bits 15-8: address, low byte; bits 7-0: reserved", "高 8 位：功能码参数地址低位；低 8 位：保留")),
-            row("PWE", 4, lang.t("high word: reserved", "高 16 位：保留"), lang.t("high word: reserved", "高 16 位：保留")),
-            row("PWE", 6, lang.t("low word: the value to write; unused when reading", "低 16 位：写请求时为参数值；读请求时无使用"), lang.t("low word: done, the value; cannot execute, the error code", "低 16 位：请求成功时为参数值；失败时为错误代码")),
+            row(
+                "PKE",
+                0,
+                lang.t(
+                    "bits 15-12: command; bits 11-8: reserved; bits 7-0: address, high byte",
+                    "高 4 位：命令代码；低 4 位（位 11-8）：保留；低 8 位：功能码参数地址高位",
+                ),
+                lang.t(
+                    "bits 15-12: response code; bits 7-0: address, high byte",
+                    "高 4 位：响应代码；低 8 位：功能码参数地址高位",
+                ),
+            ),
+            row(
+                "IND",
+                2,
+                lang.t(
+                    "bits 15-8: address, low byte; bits 7-0: reserved",
+                    "高 8 位：功能码参数地址低位；低 8 位：保留",
+                ),
+                lang.t(
+                    "bits 15-8: address, low byte; bits 7-0: reserved",
+                    "高 8 位：功能码参数地址低位；低 8 位：保留",
+                ),
+            ),
+            row(
+                "PWE",
+                4,
+                lang.t("high word: reserved", "高 16 位：保留"),
+                lang.t("high word: reserved", "高 16 位：保留"),
+            ),
+            row(
+                "PWE",
+                6,
+                lang.t(
+                    "low word: the value to write; unused when reading",
+                    "低 16 位：写请求时为参数值；读请求时无使用",
+                ),
+                lang.t(
+                    "low word: done, the value; cannot execute, the error code",
+                    "低 16 位：请求成功时为参数值；失败时为错误代码",
+                ),
+            ),
         ],
     );
     let code_row = |code: u16, meaning: &str| vec![text(code.to_string()), text(meaning)];
     let requests = [
         (pke::PkwRequest::None, lang.t("no request", "无请求")),
-        (pke::PkwRequest::Read { address: 0 }, lang.t("read the parameter", "读取功能码参数数据")),
-        (pke::PkwRequest::Write { address: 0, value: 0 }, lang.t("change the parameter", "更改功能码参数数据")),
-    ];
-    doc.table(
-        lang.t("Request commands (PKE bits 15-12, decimal)", "命令代码（PKE 高 4 位，十进制）"),
-        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
-        requests.iter().map(|(r, m)| code_row(code_of(r.encode()), m)).collect(),
-    );
-    let responses = [
-        (pke::PkwResponse::None, lang.t("no request", "无请求")),
-        (pke::PkwResponse::Done { address: 0, value: 0 }, lang.t("done", "功能码参数操作正确")),
         (
-            pke::PkwResponse::Failed { address: 0, error: pke::PkwErrorCode::Other },
-            lang.t("cannot execute: PWE low holds the error code", "无法执行：PWE 低 16 位为错误代码"),
+            pke::PkwRequest::Read { address: 0 },
+            lang.t("read the parameter", "读取功能码参数数据"),
+        ),
+        (
+            pke::PkwRequest::Write {
+                address: 0,
+                value: 0,
+            },
+            lang.t("change the parameter", "更改功能码参数数据"),
         ),
     ];
     doc.table(
-        lang.t("Response codes (PKE bits 15-12, decimal)", "响应代码（PKE 高 4 位，十进制）"),
+        lang.t(
+            "Request commands (PKE bits 15-12, decimal)",
+            "命令代码（PKE 高 4 位，十进制）",
+        ),
         &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
-        responses.iter().map(|(r, m)| code_row(code_of(r.encode()), m)).collect(),
+        requests
+            .iter()
+            .map(|(r, m)| code_row(code_of(r.encode()), m))
+            .collect(),
+    );
+    let responses = [
+        (pke::PkwResponse::None, lang.t("no request", "无请求")),
+        (
+            pke::PkwResponse::Done {
+                address: 0,
+                value: 0,
+            },
+            lang.t("done", "功能码参数操作正确"),
+        ),
+        (
+            pke::PkwResponse::Failed {
+                address: 0,
+                error: pke::PkwErrorCode::Other,
+            },
+            lang.t(
+                "cannot execute: PWE low holds the error code",
+                "无法执行：PWE 低 16 位为错误代码",
+            ),
+        ),
+    ];
+    doc.table(
+        lang.t(
+            "Response codes (PKE bits 15-12, decimal)",
+            "响应代码（PKE 高 4 位，十进制）",
+        ),
+        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        responses
+            .iter()
+            .map(|(r, m)| code_row(code_of(r.encode()), m))
+            .collect(),
     );
     let errors = error_codes(lang);
     doc.table(
-        lang.t("Error codes (as in Modbus)", "错误代码（与标准 MODBUS 一致）"),
+        lang.t(
+            "Error codes (as in Modbus)",
+            "错误代码（与标准 MODBUS 一致）",
+        ),
         &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
         errors.iter().map(|(e, m)| code_row(e.code(), m)).collect(),
     );
@@ -162,18 +264,28 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
             telegram(done(0), &[('v', done(ANY))]),
         ),
         example_row(
-            lang.f(format!("change {name} to vvvv"), format!("将 {name} 改为 vvvv")),
+            lang.f(
+                format!("change {name} to vvvv"),
+                format!("将 {name} 改为 vvvv"),
+            ),
             telegram(write(0), &[('v', write(ANY))]),
             lang.t("done: the value written", "操作正确：返回写入值"),
             telegram(done(0), &[('v', done(ANY))]),
         ),
     ];
     for (error, meaning) in &errors {
-        let failed = pke::PkwResponse::Failed { address, error: *error }.encode();
+        let failed = pke::PkwResponse::Failed {
+            address,
+            error: *error,
+        }
+        .encode();
         rows.push(example_row(
             lang.f(format!("read {name}"), format!("读 {name}")),
             telegram(read, &[]),
-            &lang.f(format!("cannot execute: {meaning}"), format!("无法执行：{meaning}")),
+            &lang.f(
+                format!("cannot execute: {meaning}"),
+                format!("无法执行：{meaning}"),
+            ),
             telegram(failed, &[]),
         ));
     }
@@ -184,14 +296,25 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         telegram(pke::PkwResponse::None.encode(), &[]),
     ));
     examples_table(doc, lang, rows);
-    doc.para(text(lang.t("vvvv: the parameter's value.", "vvvv：参数值。")));
+    doc.para(text(
+        lang.t("vvvv: the parameter's value.", "vvvv：参数值。"),
+    ));
 }
 
 fn error_codes(lang: Lang) -> [(pke::PkwErrorCode, &'static str); 4] {
     [
-        (pke::PkwErrorCode::IllegalCommand, lang.t("illegal command", "非法命令")),
-        (pke::PkwErrorCode::IllegalAddress, lang.t("illegal address", "非法地址")),
-        (pke::PkwErrorCode::IllegalData, lang.t("illegal data", "非法数据")),
+        (
+            pke::PkwErrorCode::IllegalCommand,
+            lang.t("illegal command", "非法命令"),
+        ),
+        (
+            pke::PkwErrorCode::IllegalAddress,
+            lang.t("illegal address", "非法地址"),
+        ),
+        (
+            pke::PkwErrorCode::IllegalData,
+            lang.t("illegal data", "非法数据"),
+        ),
         (pke::PkwErrorCode::Other, lang.t("other error", "其它错误")),
     ]
 }
@@ -202,8 +325,16 @@ fn example_row(what: String, request: String, outcome: &str, response: String) -
 
 fn examples_table(doc: &mut Builder, lang: Lang, rows: Vec<Vec<Cell>>) {
     doc.table(
-        lang.t("Worked examples, computed from the description", "应用举例（由设备描述计算）"),
-        &[lang.t("Request", "请求"), lang.t("Master sends", "主站发送 PKW"), lang.t("Outcome", "结果"), lang.t("Drive answers", "变频器响应 PKW")],
+        lang.t(
+            "Worked examples, computed from the description",
+            "应用举例（由设备描述计算）",
+        ),
+        &[
+            lang.t("Request", "请求"),
+            lang.t("Master sends", "主站发送 PKW"),
+            lang.t("Outcome", "结果"),
+            lang.t("Drive answers", "变频器响应 PKW"),
+        ],
         rows,
     );
 }
@@ -213,7 +344,12 @@ fn examples_table(doc: &mut Builder, lang: Lang, rows: Vec<Vec<Cell>>) {
 
 fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let row = |word: &str, first: u16, request: &str, reply: &str| {
-        vec![text(word), text(bytes(lang, first, first + 1)), text(request), text(reply)]
+        vec![
+            text(word),
+            text(bytes(lang, first, first + 1)),
+            text(request),
+            text(reply),
+        ]
     };
     doc.table(
         lang.t("The PKW words", "PKW 数据格式"),
@@ -226,21 +362,53 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         ],
     );
     let commands = [
-        (station::PkwCommand::Read, lang.t("read one parameter", "读一个")),
-        (station::PkwCommand::WriteAndStore, lang.t("write one parameter and store it in EEPROM", "写一个，存 EEPROM")),
-        (station::PkwCommand::Write, lang.t("write one parameter without storing it", "写一个，不存 EEPROM")),
+        (
+            station::PkwCommand::Read,
+            lang.t("read one parameter", "读一个"),
+        ),
+        (
+            station::PkwCommand::WriteAndStore,
+            lang.t(
+                "write one parameter and store it in EEPROM",
+                "写一个，存 EEPROM",
+            ),
+        ),
+        (
+            station::PkwCommand::Write,
+            lang.t(
+                "write one parameter without storing it",
+                "写一个，不存 EEPROM",
+            ),
+        ),
     ];
-    let stations = station::Stations { target: 0, source: 0 };
+    let stations = station::Stations {
+        target: 0,
+        source: 0,
+    };
     let failed_code = |command| {
-        let reply = station::PkwResponse { stations, address: 0, reply: station::PkwReply::Failed { command, error: 0 } };
+        let reply = station::PkwResponse {
+            stations,
+            address: 0,
+            reply: station::PkwReply::Failed { command, error: 0 },
+        };
         reply.encode()[1].get()
     };
     doc.table(
         lang.t("Commands (PKW1)", "命令（PKW1）"),
-        &[lang.t("Command", "命令"), lang.t("Meaning", "含义"), lang.t("Reply on error", "错误应答")],
+        &[
+            lang.t("Command", "命令"),
+            lang.t("Meaning", "含义"),
+            lang.t("Reply on error", "错误应答"),
+        ],
         commands
             .iter()
-            .map(|(c, m)| vec![code(format!("0x{:02X}", c.code())), text(*m), code(format!("0x{:02X}", failed_code(*c)))])
+            .map(|(c, m)| {
+                vec![
+                    code(format!("0x{:02X}", c.code())),
+                    text(*m),
+                    code(format!("0x{:02X}", failed_code(*c))),
+                ]
+            })
             .collect(),
     );
     doc.para(text(lang.t(
@@ -252,19 +420,56 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     };
     examples_intro(doc, ir, lang, address, &why);
     let name = parameter_name(ir, address);
-    let request = |access, stations| station::PkwRequest { stations, address, access }.encode();
+    let request = |access, stations| {
+        station::PkwRequest {
+            stations,
+            address,
+            access,
+        }
+        .encode()
+    };
     // The reply swaps the stations: its target is the request's source.
-    let reply = |reply, stations: station::Stations| station::PkwResponse { stations, address, reply }.encode();
+    let reply = |reply, stations: station::Stations| {
+        station::PkwResponse {
+            stations,
+            address,
+            reply,
+        }
+        .encode()
+    };
     let (none, target, source) = (
-        station::Stations { target: 0, source: 0 },
-        station::Stations { target: 0xFF, source: 0 },
-        station::Stations { target: 0, source: 0xFF },
+        station::Stations {
+            target: 0,
+            source: 0,
+        },
+        station::Stations {
+            target: 0xFF,
+            source: 0,
+        },
+        station::Stations {
+            target: 0,
+            source: 0xFF,
+        },
     );
     let sent = |access: &dyn Fn(u16) -> station::PkwAccess| {
-        telegram(request(access(0), none), &[('t', request(access(0), target)), ('s', request(access(0), source)), ('v', request(access(ANY), none))])
+        telegram(
+            request(access(0), none),
+            &[
+                ('t', request(access(0), target)),
+                ('s', request(access(0), source)),
+                ('v', request(access(ANY), none)),
+            ],
+        )
     };
     let answered = |r: &dyn Fn(u16) -> station::PkwReply, letter: char| {
-        telegram(reply(r(0), none), &[('s', reply(r(0), target)), ('t', reply(r(0), source)), (letter, reply(r(ANY), none))])
+        telegram(
+            reply(r(0), none),
+            &[
+                ('s', reply(r(0), target)),
+                ('t', reply(r(0), source)),
+                (letter, reply(r(ANY), none)),
+            ],
+        )
     };
     let mut rows = vec![example_row(
         lang.f(format!("read {name}"), format!("读 {name}")),
@@ -273,11 +478,23 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         answered(&station::PkwReply::Value, 'v'),
     )];
     for (access, done, how) in [
-        (&(|value| station::PkwAccess::WriteAndStore { value }) as &dyn Fn(u16) -> station::PkwAccess, station::PkwReply::WrittenAndStored, lang.t(", stored in EEPROM", "，存 EEPROM")),
-        (&(|value| station::PkwAccess::Write { value }) as &dyn Fn(u16) -> station::PkwAccess, station::PkwReply::Written, lang.t(", not stored", "，不存 EEPROM")),
+        (
+            &(|value| station::PkwAccess::WriteAndStore { value })
+                as &dyn Fn(u16) -> station::PkwAccess,
+            station::PkwReply::WrittenAndStored,
+            lang.t(", stored in EEPROM", "，存 EEPROM"),
+        ),
+        (
+            &(|value| station::PkwAccess::Write { value }) as &dyn Fn(u16) -> station::PkwAccess,
+            station::PkwReply::Written,
+            lang.t(", not stored", "，不存 EEPROM"),
+        ),
     ] {
         rows.push(example_row(
-            lang.f(format!("write vvvv to {name}{how}"), format!("将 vvvv 写入 {name}{how}")),
+            lang.f(
+                format!("write vvvv to {name}{how}"),
+                format!("将 vvvv 写入 {name}{how}"),
+            ),
             sent(access),
             lang.t("done", "写操作应答"),
             answered(&|_| done, 'v'),
@@ -287,7 +504,13 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         lang.f(format!("read {name}"), format!("读 {name}")),
         sent(&|_| station::PkwAccess::Read),
         lang.t("failed", "错误应答"),
-        answered(&|error| station::PkwReply::Failed { command: station::PkwCommand::Read, error }, 'x'),
+        answered(
+            &|error| station::PkwReply::Failed {
+                command: station::PkwCommand::Read,
+                error,
+            },
+            'x',
+        ),
     ));
     examples_table(doc, lang, rows);
     doc.para(text(lang.t(
@@ -314,25 +537,47 @@ mod tests {
         assert_eq!(telegram(done(0x1388), &[]), "10F0 0800 0000 1388");
         let write = |value| pke::PkwRequest::Write { address, value }.encode();
         assert_eq!(telegram(write(0x07D0), &[]), "20F0 0800 0000 07D0");
-        assert_eq!(telegram(write(0), &[('v', write(ANY))]), "20F0 0800 0000 vvvv");
+        assert_eq!(
+            telegram(write(0), &[('v', write(ANY))]),
+            "20F0 0800 0000 vvvv"
+        );
         assert_eq!(code_of(done(0)), 1);
     }
 
     /// docs/wire-format.md: station 1 reads P43.02 of RS-485 slave 2.
     #[test]
     fn the_station_kind_writes_stations_command_address_and_count() {
-        let stations = station::Stations { target: 2, source: 1 };
-        let read = station::PkwRequest { stations, address: 0x2B02, access: station::PkwAccess::Read };
+        let stations = station::Stations {
+            target: 2,
+            source: 1,
+        };
+        let read = station::PkwRequest {
+            stations,
+            address: 0x2B02,
+            access: station::PkwAccess::Read,
+        };
         assert_eq!(telegram(read.encode(), &[]), "0201 0003 2B02 0001");
     }
 
     #[test]
     fn the_example_parameter_is_the_first_address_default_else_the_first_drive_parameter() {
-        let md810 = ir("md810dp.toml", include_str!("../../../descriptions/md810dp.toml"));
+        let md810 = ir(
+            "md810dp.toml",
+            include_str!("../../../descriptions/md810dp.toml"),
+        );
         let (address, why) = example_parameter(&md810, Lang::En).unwrap();
-        assert_eq!((address, why.as_str()), (0xF000, "the default of PZD1 master->slave"));
-        let mv810 = ir("mv810-pnet02.toml", include_str!("../../../descriptions/mv810-pnet02.toml"));
+        assert_eq!(
+            (address, why.as_str()),
+            (0xF000, "the default of PZD1 master->slave")
+        );
+        let mv810 = ir(
+            "mv810-pnet02.toml",
+            include_str!("../../../descriptions/mv810-pnet02.toml"),
+        );
         let (address, why) = example_parameter(&mv810, Lang::En).unwrap();
-        assert_eq!((address, why.as_str()), (0x2B02, "the parameter that sets PZD2 receive"));
+        assert_eq!(
+            (address, why.as_str()),
+            (0x2B02, "the parameter that sets PZD2 receive")
+        );
     }
 }

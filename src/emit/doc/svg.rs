@@ -206,10 +206,8 @@ fn pieces(text: &str) -> Vec<String> {
     let mut current = String::new();
     for c in text.chars() {
         let wide = !c.is_ascii() && char_width(c) >= 1.0;
-        if c == ' ' || wide {
-            if !current.is_empty() {
-                pieces.push(std::mem::take(&mut current));
-            }
+        if (c == ' ' || wide) && !current.is_empty() {
+            pieces.push(std::mem::take(&mut current));
         }
         current.push(c);
         if wide {
@@ -366,13 +364,21 @@ mod tests {
 
     #[test]
     fn touching_rectangles_do_not_overlap() {
-        let a = Rect { x: 0, y: 0, w: 10, h: 10 };
+        let a = Rect {
+            x: 0,
+            y: 0,
+            w: 10,
+            h: 10,
+        };
         assert!(!a.overlaps(Rect { x: 10, ..a }));
         assert!(a.overlaps(Rect { x: 9, y: 9, ..a }));
     }
 
     #[test]
     fn text_is_escaped() {
-        assert_eq!(escape("PZD1 master->slave & <x>"), "PZD1 master-&gt;slave &amp; &lt;x&gt;");
+        assert_eq!(
+            escape("PZD1 master->slave & <x>"),
+            "PZD1 master-&gt;slave &amp; &lt;x&gt;"
+        );
     }
 }
