@@ -57,20 +57,31 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if modules.is_empty() {
         return;
     }
-    doc.section(
-        "telegrams",
-        lang.t(
-            "Cyclic data: PPO types and modules",
-            "周期数据：PPO 类型与模块",
+    let (heading, caption) = match (ir.profibus.is_some(), ir.profinet.is_some()) {
+        (true, false) => (
+            lang.t("Cyclic data: PPO types", "周期数据：PPO 类型"),
+            lang.t("PPO types", "PPO 类型"),
         ),
-    );
+        (false, true) => (
+            lang.t("Cyclic data: modules", "周期数据：模块"),
+            lang.t("PROFINET modules", "PROFINET 模块"),
+        ),
+        _ => (
+            lang.t(
+                "Cyclic data: PPO types and modules",
+                "周期数据：PPO 类型与模块",
+            ),
+            lang.t("PPO types and PROFINET modules", "PPO 类型与 PROFINET 模块"),
+        ),
+    };
+    doc.section("telegrams", heading);
     doc.para(text(lang.t(
         "Each module carries the same number of words each way: the parameter channel (PKW) when it has one, then its process data words (PZD). Every word is 16 bits, high byte first.",
         "每个模块在两个方向上传送相同数量的字：先是参数区（PKW，若有），后是过程数据区（PZD）。每个字 16 位，高字节在前。",
     )));
     let rows = modules.iter().map(module_row).collect();
     doc.table(
-        lang.t("PPO types and PROFINET modules", "PPO 类型与 PROFINET 模块"),
+        caption,
         &[
             lang.t("Module", "模块"),
             lang.t("Bus", "总线"),
