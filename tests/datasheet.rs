@@ -375,3 +375,38 @@ fn the_guides_excerpt_is_what_gsdc_writes() {
     }
     assert!(excerpt.lines().count() >= 3);
 }
+
+/// A description in English alone: one `main`, shown, and no switch.
+#[test]
+fn one_language_needs_no_switch() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/9kdp1.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "name = { en = \"9KDP1 PROFIBUS-DP card\", zh = \"9KDP1 PROFIBUS-DP 通讯卡\" }",
+        "name = \"9KDP1 PROFIBUS-DP card\"",
+    );
+    assert!(
+        !text.contains("zh ="),
+        "the test removes 9KDP1's only Chinese text"
+    );
+    let ir = gsdc::load("9kdp1.toml", &text).0.unwrap();
+    let html = gsdc::document(&ir).remove(0);
+    let html = String::from_utf8(html.contents).unwrap();
+    assert_eq!(html.matches("<main").count(), 1);
+    assert!(html.contains("<main lang=\"en\">"));
+    assert!(!html.contains("<input") && !html.contains("main.lang"));
+}
+
+#[test]
+fn gsdc_doc_refuses_two_descriptions_with_one_name() {
+    let out = scratch("twice");
+    let run = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        "descriptions/md810dp.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("two descriptions give md810dp"));
+    assert!(!out.exists());
+}
