@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # The whole test suite: the command the README gives a new user, and the one
 # .ci/run calls. It installs the system packages the tests need when they are
-# missing (libxml2 and libclang for the PI schema validation in the tests).
+# missing (libxml2 and libclang for the PI schema validation in the tests;
+# Chromium and fonts with Latin and Chinese glyphs for the datasheet tests,
+# which load each datasheet in a headless browser).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 missing=()
-for package in libclang-dev libxml2-dev libxml2-utils pkg-config; do
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config chromium fonts-liberation fonts-wqy-microhei; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -gt 0 ]; then
@@ -14,7 +16,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo=sudo
   $sudo apt-get update -qq
-  $sudo apt-get install -y -qq "${missing[@]}"
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
 
 cargo test "$@"

@@ -48,3 +48,10 @@ pub fn load(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
 pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
     emit::compile(ir)
 }
+
+/// The datasheet of a loaded description: `<stem>.html` and `<stem>.md`,
+/// the manual's fieldbus chapter. Pure, like [`compile`]; not among
+/// [`compile`]'s files, which ship with the card.
+pub fn document(ir: &Ir) -> Vec<Artifact> {
+    emit::doc::datasheet(ir)
+}

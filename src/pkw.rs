@@ -1,6 +1,7 @@
 //! The firmware's support code (`templates/support/`), compiled into the
-//! library so that what gsdc says about a telegram is what the card's
-//! firmware, built from the same files, does with it: the PKW codecs, and
+//! library so that what gsdc says about a telegram (`gsdc decode`) and the
+//! telegrams it prints (the datasheet's worked examples) are what the
+//! card's firmware, built from the same files, does: the PKW codecs, and
 //! the bit numbering of control and status words and of diagnosis areas.
 //! Crate-private; firmware gets the same code as `gsdc_support.rs`.
 
@@ -12,8 +13,7 @@
 pub(crate) mod support;
 
 pub(crate) use support::diagnosis::DiagArea;
-pub(crate) use support::pkw_pke_ind_pwe as pke_ind_pwe;
-pub(crate) use support::pkw_station_command as station_command;
+pub(crate) use support::{pkw_pke_ind_pwe, pkw_station_command};
 pub(crate) use support::{BitField, U16Be, PKW_BYTES};
 
 /// The four PKW words at the start of `bytes`, high byte first (words past

@@ -127,7 +127,7 @@ fn display_error(e: &gsdc::build::BuildError, path: &Path) -> String {
 /// The descriptions' files as one set; two different files of one name
 /// are an error (exit 1) naming both descriptions, before anything is
 /// written.
-fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Status> {
+pub(super) fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Status> {
     merge(sets).map_err(|collisions| {
         for c in &collisions {
             warn(&format!(
@@ -203,7 +203,7 @@ fn unified_diff(path: &Path, existing: &[u8], generated: &[u8]) -> String {
         .to_string()
 }
 
-fn write_all(files: &[Artifact], out: &Path, prune: bool) -> Status {
+pub(super) fn write_all(files: &[Artifact], out: &Path, prune: bool) -> Status {
     let written = match write_files(out, files, prune) {
         Ok(written) => written,
         Err(e) => {

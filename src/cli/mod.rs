@@ -3,6 +3,7 @@
 mod build;
 mod check;
 mod decode;
+mod doc;
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -31,6 +32,9 @@ enum Command {
     Check(check::Args),
     /// Read a captured telegram, parameter telegram or diagnosis block against a description.
     Decode(decode::Args),
+    /// Write the datasheet of each description: DIR/<stem>.html (one page, no script) and DIR/<stem>.md.
+    #[command(after_help = doc::EXAMPLES)]
+    Doc(doc::Args),
 }
 
 /// What a run ends with, as the exit code says it.
@@ -76,6 +80,7 @@ fn run(cli: Cli) -> Status {
         Command::Build(args) => build::run(&args),
         Command::Check(args) => check::run(&args),
         Command::Decode(args) => decode::run(&args),
+        Command::Doc(args) => doc::run(&args),
     }
 }
 

@@ -3,7 +3,7 @@
 //! response exactly as the card does, and refuses what the card refuses.
 
 use crate::ir::{Direction, Ir, PkwKind};
-use crate::pkw::{pke_ind_pwe as pke, station_command as station, U16Be};
+use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
 use serde::Serialize;
 
 /// A PKW request (to the drive) or response (from it), decoded.

@@ -1,5 +1,6 @@
 //! Emitters: the IR to file contents, each verified before it is returned.
 
+pub mod doc;
 pub mod gsd;
 pub mod gsdml;
 pub mod rust;
@@ -28,6 +29,10 @@ pub enum ArtifactKind {
     RustLayout,
     /// The support module every Rust layout is built from, the same for all.
     RustSupport,
+    /// The datasheet as one HTML page (`gsdc doc`).
+    DatasheetHtml,
+    /// The datasheet in Markdown (`gsdc doc`).
+    DatasheetMarkdown,
 }
 
 impl ArtifactKind {

@@ -1,0 +1,61 @@
+//! `gsdc doc`: descriptions to datasheets, `<stem>.html` and `<stem>.md`.
+//! Like `gsdc build`, every description is loaded before anything is
+//! written, so an error in one leaves the output directory as it was, and
+//! the files are written as `gsdc build` writes them (all or nothing, the
+//! directory locked).
+
+use super::build::{merged, write_all};
+use super::{display_name, warn, Status, MAX_SHOWN};
+use std::path::{Path, PathBuf};
+
+pub const EXAMPLES: &str = "Example:
+  gsdc doc descriptions/md810dp.toml --out dist   # dist/md810dp.html, dist/md810dp.md
+
+Exit codes: 0 ok, 1 a description has errors, or two give datasheets of one name;
+2 usage or I/O error.";
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Description files (TOML).
+    #[arg(required = true, value_name = "DESCRIPTION")]
+    descriptions: Vec<PathBuf>,
+    /// Directory to write into; created if missing.
+    #[arg(long, short, default_value = ".", value_name = "DIR")]
+    out: PathBuf,
+}
+
+pub fn run(args: &Args) -> Status {
+    let mut status = Status::Ok;
+    let mut sets = Vec::new();
+    for path in &args.descriptions {
+        match document_one(path) {
+            Ok(files) => sets.push((path.clone(), files)),
+            Err(s) => status = status.max(s),
+        }
+    }
+    if status != Status::Ok {
+        warn("nothing written: fix the errors above");
+        return status;
+    }
+    match merged(sets) {
+        Ok(files) => write_all(&files, &args.out, false),
+        Err(status) => status,
+    }
+}
+
+/// The datasheet of one description; its findings are shown when it has
+/// errors (its warnings are about the device files).
+fn document_one(path: &Path) -> Result<Vec<gsdc::Artifact>, Status> {
+    let name = display_name(path);
+    let loaded = gsdc::build::load_file(path, &name).map_err(|e| {
+        warn(&format!("error: cannot read {name}: {e}"));
+        Status::UsageOrIo
+    })?;
+    let Some(ir) = loaded.ir else {
+        for rendered in loaded.findings.rendered(MAX_SHOWN) {
+            warn(&rendered);
+        }
+        return Err(Status::InputErrors);
+    };
+    Ok(gsdc::document(&ir))
+}

@@ -1,0 +1,280 @@
+//! The datasheet: the fieldbus chapter of a drive manual, generated from the
+//! IR as `<stem>.html` (one self-contained page, every language the
+//! description has) and `<stem>.md` (for a manual's sources or a review).
+//!
+//! Kept out of [`crate::compile`]'s files: those ship with the card and go
+//! into firmware; the datasheet is documentation, written by `gsdc doc`
+//! ([`crate::document`]).
+//!
+//! The sections build a [`page::Doc`] per language; [`page`] renders it.
+//! Diagrams are laid out in [`svg`], and PKW and diagnosis examples are
+//! encoded by the firmware's own codecs ([`crate::pkw`]).
+
+mod identity;
+mod page;
+mod params;
+mod pkw;
+mod svg;
+mod telegrams;
+
+use super::{Artifact, ArtifactKind};
+use crate::ir::{Allowed, Ir, MappingEntry, MappingSet, Text};
+use page::{Builder, Cell, Run};
+
+/// A language of the datasheet: the description's texts in it, and gsdc's
+/// own words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Lang {
+    En,
+    Zh,
+}
+
+impl Lang {
+    fn code(self) -> &'static str {
+        match self {
+            Lang::En => "en",
+            Lang::Zh => "zh",
+        }
+    }
+
+    /// The language's own name, on its switch.
+    fn name(self) -> &'static str {
+        match self {
+            Lang::En => "English",
+            Lang::Zh => "中文",
+        }
+    }
+
+    /// gsdc's words in this language.
+    fn t<'a>(self, en: &'a str, zh: &'a str) -> &'a str {
+        match self {
+            Lang::En => en,
+            Lang::Zh => zh,
+        }
+    }
+
+    /// A sentence made in this language: both are built, one is kept.
+    fn f(self, en: String, zh: String) -> String {
+        match self {
+            Lang::En => en,
+            Lang::Zh => zh,
+        }
+    }
+
+    /// A description's text in this language, English where it has none.
+    fn text(self, text: &Text) -> &str {
+        match self {
+            Lang::En => &text.en,
+            Lang::Zh => text.get("zh"),
+        }
+    }
+
+    fn table_label(self, n: usize) -> String {
+        self.f(format!("Table {n}."), format!("表 {n}"))
+    }
+
+    fn figure_label(self, n: usize) -> String {
+        self.f(format!("Figure {n}."), format!("图 {n}"))
+    }
+}
+
+/// `md810dp.toml` gives `md810dp`.
+pub fn stem(ir: &Ir) -> String {
+    std::path::Path::new(&ir.source_name)
+        .file_stem()
+        .map_or_else(
+            || ir.source_name.clone(),
+            |s| s.to_string_lossy().into_owned(),
+        )
+}
+
+/// The datasheet of a description: `<stem>.html` and `<stem>.md`.
+pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
+    let docs: Vec<page::Doc> = languages(ir).into_iter().map(|l| document(ir, l)).collect();
+    let stem = stem(ir);
+    vec![
+        Artifact {
+            kind: ArtifactKind::DatasheetHtml,
+            file_name: format!("{stem}.html"),
+            contents: page::html(&docs, crate::GENERATOR).into_bytes(),
+        },
+        Artifact {
+            kind: ArtifactKind::DatasheetMarkdown,
+            file_name: format!("{stem}.md"),
+            contents: page::markdown(&docs, crate::GENERATOR).into_bytes(),
+        },
+    ]
+}
+
+/// English always; Chinese when the description has it. gsdc's own words
+/// exist in these two; a description's other languages stay in its device
+/// files.
+fn languages(ir: &Ir) -> Vec<Lang> {
+    let mut langs = vec![Lang::En];
+    if ir.languages.iter().any(|code| code == "zh") {
+        langs.push(Lang::Zh);
+    }
+    langs
+}
+
+fn document(ir: &Ir, lang: Lang) -> page::Doc {
+    let title = lang.f(
+        format!(
+            "{} {}: fieldbus interface",
+            ir.device.vendor, ir.device.model
+        ),
+        format!("{} {}：现场总线接口", ir.device.vendor, ir.device.model),
+    );
+    let mut doc = Builder::new(lang, title);
+    identity::section(&mut doc, ir, lang);
+    telegrams::section(&mut doc, ir, lang);
+    telegrams::words_section(&mut doc, ir, lang);
+    pkw::section(&mut doc, ir, lang);
+    params::section(&mut doc, ir, lang);
+    params::diagnosis_section(&mut doc, ir, lang);
+    identity::checklist_section(&mut doc, ir, lang);
+    doc.finish()
+}
+
+// ---------------------------------------------------------------------------
+// Formatting shared by the sections
+
+/// A parameter address as the manual writes it, with the decimal number a
+/// configuration tool shows: `F0-00 (61440)`, or `0x1000 (4096)` where the
+/// description names no such parameter.
+fn address(ir: &Ir, value: u16) -> String {
+    match drive_name(ir, value) {
+        Some(name) => format!("{name} ({value})"),
+        None => format!("0x{value:04X} ({value})"),
+    }
+}
+
+/// A parameter's name alone: `F0-08`, else `0x1000`.
+fn parameter_name(ir: &Ir, value: u16) -> String {
+    drive_name(ir, value).unwrap_or_else(|| format!("0x{value:04X}"))
+}
+
+/// The drive's name of an address. A hex group is one digit (F0..FF), but
+/// `Numbering::format` also names groups of two (9KDP1's Modbus address
+/// 0x8000 would be `d10.00` under the prefix d = 0x70): those are left out.
+fn drive_name(ir: &Ir, value: u16) -> Option<String> {
+    let numbering = ir.numbering.as_ref()?;
+    let [high, _] = value.to_be_bytes();
+    let base = numbering
+        .prefixes
+        .iter()
+        .map(|&(_, base)| base)
+        .filter(|&base| base <= high)
+        .max()?;
+    if numbering.group_radix == 16 && high - base >= 16 {
+        return None;
+    }
+    numbering.format(value)
+}
+
+/// A mapping's value: an address for a range, a choice's text for choices.
+fn mapping_value(ir: &Ir, lang: Lang, set: &MappingSet, value: u16) -> String {
+    match &set.allowed {
+        Allowed::Range { .. } => address(ir, value),
+        Allowed::Choices(values) => values
+            .choices
+            .iter()
+            .find(|c| c.value == i64::from(value))
+            .map_or_else(
+                || value.to_string(),
+                |c| format!("{value}: {}", lang.text(&c.text)),
+            ),
+    }
+}
+
+/// What a mapping may hold, in words.
+fn allowed(lang: Lang, set: &MappingSet) -> String {
+    match &set.allowed {
+        Allowed::Range { min, max } => lang.f(
+            format!("{min} to {max} (0x{min:04X} to 0x{max:04X})"),
+            format!("{min}～{max}（0x{min:04X}～0x{max:04X}）"),
+        ),
+        Allowed::Choices(values) => lang.f(
+            format!(
+                "one of {} choices ({})",
+                values.choices.len(),
+                choices_caption(lang, set)
+            ),
+            format!(
+                "{} 个选项之一（{}）",
+                values.choices.len(),
+                choices_caption(lang, set)
+            ),
+        ),
+    }
+}
+
+/// The caption of a set's table of choices.
+fn choices_caption(lang: Lang, set: &MappingSet) -> String {
+    lang.f(
+        format!("choices of {}", set_name(lang, set)),
+        format!("{}的选项", set_name(lang, set)),
+    )
+}
+
+/// `PZD2 receive to PZD12 receive`, or the one entry's name.
+fn set_name(lang: Lang, set: &MappingSet) -> String {
+    let first = lang.text(&set.entries[0].name);
+    match set.entries.last() {
+        Some(last) if set.entries.len() > 1 => lang.f(
+            format!("{first} to {}", lang.text(&last.name)),
+            format!("{first}～{}", lang.text(&last.name)),
+        ),
+        _ => first.to_string(),
+    }
+}
+
+/// The drive parameter that holds a mapping, or a dash.
+fn drive_parameter(ir: &Ir, entry: &MappingEntry) -> Cell {
+    match entry.parameter {
+        Some(p) => page::code(parameter_name(ir, p)),
+        None => page::text("—"),
+    }
+}
+
+/// A value followed by a mark when it is a placeholder.
+fn with_placeholder(lang: Lang, value: String, placeholder: bool) -> Cell {
+    let mut cell = vec![Run::Code(value)];
+    if placeholder {
+        cell.push(Run::Text(" ".into()));
+        cell.push(Run::Mark(
+            lang.t("placeholder, not assigned by PI", "占位值，非 PI 分配")
+                .into(),
+        ));
+    }
+    cell
+}
+
+/// `bit 3`, `bits 9-10`.
+fn bits(lang: Lang, first: u16, last: u16) -> String {
+    match (first == last, lang) {
+        (true, Lang::En) => format!("bit {first}"),
+        (true, Lang::Zh) => format!("Bit{first}"),
+        (false, Lang::En) => format!("bits {first}-{last}"),
+        (false, Lang::Zh) => format!("Bit{first}-Bit{last}"),
+    }
+}
+
+/// `bytes 8-9`, `byte 6`.
+fn bytes(lang: Lang, first: u16, last: u16) -> String {
+    match (first == last, lang) {
+        (true, Lang::En) => format!("byte {first}"),
+        (true, Lang::Zh) => format!("字节 {first}"),
+        (false, Lang::En) => format!("bytes {first}-{last}"),
+        (false, Lang::Zh) => format!("字节 {first}-{last}"),
+    }
+}
+
+/// Bytes as the manuals write them where bytes matter: `03 00 34`.
+fn hex_bytes(bytes: &[u8]) -> String {
+    bytes
+        .iter()
+        .map(|b| format!("{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}

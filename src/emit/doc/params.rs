@@ -1,0 +1,353 @@
+//! Acyclic data: the parameter telegram, the DPV1 indexes, the PROFINET
+//! records, the choices they may hold; and the diagnosis block.
+
+use super::page::{code, text, Builder, Cell};
+use super::{
+    allowed, bits, bytes, choices_caption, drive_parameter, hex_bytes, mapping_value, Lang,
+};
+use crate::ir::profibus::{Diagnosis, DiagnosisArea, Profibus, STANDARD_DIAG_BYTES};
+use crate::ir::profinet::ParameterRecord;
+use crate::ir::{EntryKey, Ir, MappingKind};
+use crate::pkw::DiagArea;
+
+pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    if ir.mappings.groups.is_empty() {
+        return;
+    }
+    doc.section(
+        "parameters",
+        lang.t("Parameters: mappings and settings", "参数：映射与设置"),
+    );
+    if let Some(p) = &ir.profibus {
+        user_prm(doc, ir, p, lang);
+    }
+    dpv1_indexes(doc, ir, lang);
+    let records = longest_records(ir);
+    if !records.is_empty() {
+        doc.subsection(
+            "records",
+            lang.t("PROFINET parameter records", "PROFINET 参数记录"),
+        );
+        doc.para(text(lang.t(
+            "The controller writes these records when it plugs a module. Each holds one Unsigned16 per entry, high byte first; a module's PZD record holds the words it transports, and the tables show the longest.",
+            "控制器插入模块时写入以下参数记录。每个条目一个 Unsigned16，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
+        )));
+        for record in records {
+            record_table(doc, ir, lang, record);
+        }
+    }
+    choices(doc, ir, lang);
+}
+
+/// For each record index, the longest record a module carries.
+fn longest_records(ir: &Ir) -> Vec<&ParameterRecord> {
+    let mut longest: Vec<&ParameterRecord> = Vec::new();
+    let all = ir
+        .profinet
+        .iter()
+        .flat_map(|p| &p.modules)
+        .flat_map(|m| &m.records);
+    for record in all {
+        match longest.iter_mut().find(|r| r.index == record.index) {
+            Some(known) if known.refs.len() < record.refs.len() => *known = record,
+            Some(_) => {}
+            None => longest.push(record),
+        }
+    }
+    longest.sort_by_key(|r| r.index);
+    longest
+}
+
+fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
+    let prm = &p.user_prm;
+    doc.subsection(
+        "user-prm",
+        lang.t(
+            "PROFIBUS parameter telegram (User_Prm_Data)",
+            "PROFIBUS 参数报文（User_Prm_Data）",
+        ),
+    );
+    doc.para(text(lang.f(
+        format!("The master sends it before data exchange, after the 7 standard bytes: {} bytes, offsets counted from its first byte. Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.", prm.len),
+        format!("主站在数据交换前发送参数报文，位于 7 个标准字节之后：共 {} 字节，偏移从其第一个字节算起。每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。", prm.len),
+    )));
+    let mut rows: Vec<Vec<Cell>> = Vec::new();
+    if !prm.constant.is_empty() {
+        let last = prm.constant.len() as u16 - 1;
+        let name = if p.dpv1.is_some() {
+            lang.t(
+                "DPV1_Status_1 to DPV1_Status_3",
+                "DPV1_Status_1～DPV1_Status_3",
+            )
+        } else {
+            lang.t("constant", "常量")
+        };
+        rows.push(vec![
+            text(bytes(lang, 0, last)),
+            text(name),
+            text(lang.t("constant", "常量")),
+            code(hex_bytes(&prm.constant)),
+            text("—"),
+            text("—"),
+        ]);
+    }
+    for param in prm.params() {
+        let (set, entry) = ir.mappings.entry(param.entry);
+        rows.push(vec![
+            text(bytes(lang, param.offset, param.offset + 1)),
+            text(lang.text(&entry.name)),
+            text("Unsigned16"),
+            text(mapping_value(ir, lang, set, entry.default)),
+            text(allowed(lang, set)),
+            drive_parameter(ir, entry),
+        ]);
+    }
+    doc.table(
+        lang.t("User_Prm_Data", "User_Prm_Data"),
+        &[
+            lang.t("Bytes", "字节"),
+            lang.t("Name", "名称"),
+            lang.t("Type", "类型"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("Drive parameter", "变频器参数"),
+        ],
+        rows,
+    );
+    let mut defaults = prm.constant.clone();
+    for param in prm.params() {
+        defaults.extend(ir.mappings.entry(param.entry).1.default.to_be_bytes());
+    }
+    doc.para(vec![
+        super::page::Run::Text(lang.t("With every default: ", "全部为默认值时：").into()),
+        super::page::Run::Code(hex_bytes(&defaults)),
+    ]);
+}
+
+fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(group) = ir.mappings.group(MappingKind::Dpv1Index) else {
+        return;
+    };
+    doc.subsection("dpv1", lang.t("DPV1 indexes", "DPV1 自定义 Index"));
+    doc.para(text(lang.t(
+        "A DPV1 class 1 master reads (SFB52) and writes (SFB53) the parameter mapped to an index.",
+        "DPV1 一类主站通过 SFB52 读、SFB53 写映射到各 Index 的功能码。",
+    )));
+    if let Some(length) = group.record_length {
+        doc.para(text(lang.f(
+            format!("Each index's record is {length} bytes; the card refuses others."),
+            format!("每个 Index 的记录长度为 {length} 字节；其它长度被拒绝。"),
+        )));
+    }
+    let prm_offset = |key: EntryKey| {
+        ir.profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.params().find(|q| q.entry == key))
+            .map(|q| q.offset)
+    };
+    let rows = group
+        .entries()
+        .map(|(set, e)| {
+            vec![
+                text(e.key.number.to_string()),
+                text(lang.text(&e.name)),
+                text(mapping_value(ir, lang, set, e.default)),
+                text(allowed(lang, set)),
+                prm_offset(e.key).map_or_else(|| text("—"), |o| text(bytes(lang, o, o + 1))),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t(
+            "DPV1 indexes and the parameters they map",
+            "DPV1 Index 及其映射的参数",
+        ),
+        &[
+            lang.t("Index", "Index"),
+            lang.t("Name", "名称"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("In User_Prm_Data", "在 User_Prm_Data 中"),
+        ],
+        rows,
+    );
+}
+
+fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord) {
+    let rows = record
+        .refs
+        .iter()
+        .map(|r| {
+            let (set, entry) = ir.mappings.entry(r.entry);
+            vec![
+                text(bytes(lang, r.offset, r.offset + 1)),
+                text(lang.text(&entry.name)),
+                text(mapping_value(ir, lang, set, entry.default)),
+                text(allowed(lang, set)),
+                drive_parameter(ir, entry),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.f(
+            format!(
+                "Record {}: {}, {} bytes",
+                record.index, record.name.text.en, record.length
+            ),
+            format!(
+                "记录 {}：{}，{} 字节",
+                record.index,
+                lang.text(&record.name.text),
+                record.length
+            ),
+        ),
+        &[
+            lang.t("Bytes", "字节"),
+            lang.t("Name", "名称"),
+            lang.t("Default", "默认值"),
+            lang.t("Range or choices", "范围或选项"),
+            lang.t("Drive parameter", "变频器参数"),
+        ],
+        rows,
+    );
+}
+
+/// A table for each set of choices.
+fn choices(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    for set in ir.mappings.sets() {
+        if let Some(values) = set.allowed.choices() {
+            let rows = values
+                .choices
+                .iter()
+                .map(|c| vec![text(c.value.to_string()), text(lang.text(&c.text))])
+                .collect();
+            let caption = choices_caption(lang, set);
+            let mut caption_chars = caption.chars();
+            let capitalised = caption_chars.next().map_or_else(String::new, |c| {
+                c.to_uppercase().chain(caption_chars).collect()
+            });
+            doc.table(
+                capitalised,
+                &[lang.t("Value", "值"), lang.t("Meaning", "含义")],
+                rows,
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Diagnosis
+
+pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some((p, d)) = ir
+        .profibus
+        .as_ref()
+        .and_then(|p| Some((p, p.diagnosis.as_ref()?)))
+    else {
+        return;
+    };
+    doc.section("diagnosis", lang.t("Diagnosis", "诊断"));
+    doc.para(text(lang.f(
+        format!("The slave's diagnosis: {STANDARD_DIAG_BYTES} standard bytes, then the device-related block of {} bytes, its header byte first (bits 7-6 = 00, bits 5-0 = the block's length). Unit_Diag_Area bits count from bit 0 of the byte after the header.", d.length),
+        format!("从站诊断数据：{STANDARD_DIAG_BYTES} 个标准字节，之后是 {} 字节的设备专用诊断块，首字节为块头（位 7-6 = 00，位 5-0 = 块长度）。Unit_Diag_Area 的位从块头后一个字节的位 0 算起。", d.length),
+    )));
+    doc.table(
+        lang.t("The diagnosis, byte by byte", "诊断数据各字节"),
+        &[lang.t("Byte", "字节"), lang.t("Content", "内容")],
+        diagnosis_rows(p, d, lang),
+    );
+    for area in &d.areas {
+        area_table(doc, d, area, lang);
+    }
+}
+
+fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
+    let header = STANDARD_DIAG_BYTES;
+    let [ident_high, ident_low] = p.ident_number.to_be_bytes();
+    let mut rows = vec![
+        vec![
+            text(bytes(lang, 0, 2)),
+            text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3")),
+        ],
+        vec![
+            text(bytes(lang, 3, 3)),
+            text(lang.t("the master's address", "主站号")),
+        ],
+        vec![
+            text(bytes(lang, 4, 5)),
+            text(lang.f(
+                format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"),
+                format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}"),
+            )),
+        ],
+        vec![
+            text(bytes(lang, u16::from(header), u16::from(header))),
+            text(lang.f(
+                format!("header: the block's length, {:02X}", d.length),
+                format!("块头：块长度 {:02X}", d.length),
+            )),
+        ],
+    ];
+    for byte in 1..d.length {
+        let bit_of_byte = u16::from(byte - 1) * 8;
+        let areas: Vec<String> = d
+            .areas
+            .iter()
+            .filter(|a| a.first_bit < bit_of_byte + 8 && a.last_bit >= bit_of_byte)
+            .map(|a| format!("Unit_Diag_Area {}", bits(lang, a.first_bit, a.last_bit)))
+            .collect();
+        let content = if areas.is_empty() {
+            lang.t("device-related, not described", "设备专用，未定义")
+                .to_string()
+        } else {
+            areas.join(", ")
+        };
+        let at = u16::from(header + byte);
+        rows.push(vec![text(bytes(lang, at, at)), text(content)]);
+    }
+    rows
+}
+
+/// Each value of an area with the whole device-related block that reports
+/// it, encoded by the firmware's own code.
+fn area_table(doc: &mut Builder, d: &Diagnosis, area: &DiagnosisArea, lang: Lang) {
+    let codec = DiagArea::new(area.first_bit, area.last_bit);
+    let rows = area
+        .values
+        .choices
+        .iter()
+        .map(|c| {
+            let mut block = vec![0u8; usize::from(d.length)];
+            block[0] = d.length;
+            codec.set(&mut block, c.value as u16);
+            vec![
+                text(c.value.to_string()),
+                code(format!("0x{:02X}", c.value)),
+                text(lang.text(&c.text)),
+                code(hex_bytes(&block)),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.f(
+            format!(
+                "Unit_Diag_Area {}: values",
+                bits(lang, area.first_bit, area.last_bit)
+            ),
+            format!(
+                "Unit_Diag_Area {}：取值",
+                bits(lang, area.first_bit, area.last_bit)
+            ),
+        ),
+        &[
+            lang.t("Value", "值"),
+            lang.t("Hex", "十六进制"),
+            lang.t("Meaning", "含义"),
+            lang.t(
+                "Block (header first), other bits 0",
+                "诊断块（含块头，其余位为 0）",
+            ),
+        ],
+        rows,
+    );
+}

@@ -1,0 +1,583 @@
+//! The parameter channel: its words, its codes, and worked examples. Every
+//! code and every telegram here is made by the firmware's own codec
+//! ([`crate::pkw`]), from the parameter the description names first.
+
+use super::page::{code, text, Builder, Cell, Run};
+use super::{bytes, parameter_name, Lang};
+use crate::ir::{Allowed, Ir, PkwKind};
+use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
+
+pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let has_pkw = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .any(|m| m.layout.pkw)
+        || ir
+            .profinet
+            .iter()
+            .flat_map(|p| &p.modules)
+            .any(|m| m.layout.pkw);
+    if !has_pkw {
+        return;
+    }
+    doc.section(
+        "pkw",
+        lang.t("The parameter channel (PKW)", "参数区（PKW）"),
+    );
+    doc.para(text(lang.t(
+        "The PKW words read or change one drive parameter per request, in the first 8 bytes of a module that has them.",
+        "PKW 区位于带 PKW 的模块的前 8 个字节，每次请求读写变频器的一个参数。",
+    )));
+    match ir.telegram.pkw {
+        PkwKind::PkeIndPwe => pke_ind_pwe(doc, ir, lang),
+        PkwKind::StationCommandAddressValue => station_command(doc, ir, lang),
+        PkwKind::None => {}
+    }
+}
+
+/// The parameter of the examples: the first address a mapping carries by
+/// default (MD810: PZD1's F0-00), else the first drive parameter that holds
+/// a mapping (MV810: P43.02); with its reason. `None` when the description
+/// names no parameter at all.
+fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
+    let entries = || {
+        ir.mappings
+            .sets()
+            .flat_map(|s| s.entries.iter().map(move |e| (s, e)))
+    };
+    let default = entries()
+        .find(|(s, _)| matches!(s.allowed, Allowed::Range { .. }))
+        .map(|(_, e)| {
+            let why = lang.f(
+                format!("the default of {}", lang.text(&e.name)),
+                format!("{}的默认值", lang.text(&e.name)),
+            );
+            (e.default, why)
+        });
+    let holder = || {
+        entries().find_map(|(_, e)| {
+            let why = lang.f(
+                format!("the parameter that sets {}", lang.text(&e.name)),
+                format!("设置{}的参数", lang.text(&e.name)),
+            );
+            Some((e.parameter?, why))
+        })
+    };
+    default.or_else(holder)
+}
+
+fn examples_intro(doc: &mut Builder, ir: &Ir, lang: Lang, address: u16, why: &str) {
+    let name = parameter_name(ir, address);
+    doc.para(vec![
+        Run::Text(lang.t("The examples read and write ", "以下示例读写 ").into()),
+        Run::Code(name),
+        Run::Text(lang.f(
+            format!(" (address 0x{address:04X}), {why}. The telegrams are encoded by the firmware layout's own code."),
+            format!("（地址 0x{address:04X}，{why}）。报文由固件数据布局的编码代码生成。"),
+        )),
+    ]);
+}
+
+/// Words as the manuals print them, `10F0 0800 0000 0000`; a byte that
+/// follows a variable is written as its letter twice (`vvvv`).
+fn telegram(base: [U16Be; 4], variables: &[(char, [U16Be; 4])]) -> String {
+    let bytes = |words: [U16Be; 4]| words.map(|w| w.get().to_be_bytes());
+    let base = bytes(base);
+    let variables: Vec<(char, [[u8; 2]; 4])> =
+        variables.iter().map(|&(c, w)| (c, bytes(w))).collect();
+    (0..4)
+        .map(|word| {
+            (0..2)
+                .map(|byte| {
+                    let varying = variables
+                        .iter()
+                        .find(|(_, v)| v[word][byte] != base[word][byte]);
+                    match varying {
+                        Some((letter, _)) => format!("{letter}{letter}"),
+                        None => format!("{:02X}", base[word][byte]),
+                    }
+                })
+                .collect::<String>()
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// A value the examples leave open, against which the varying bytes are found.
+const ANY: u16 = 0xFFFF;
+
+// ---------------------------------------------------------------------------
+// PKE, IND, PWE (MD810)
+
+/// PKE bits 15-12 of a telegram: the command or response code.
+fn code_of(words: [U16Be; 4]) -> u16 {
+    words[0].get() >> 12
+}
+
+fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    // MD810 manual 1.4.2: a write left in the telegram wears out the EEPROM.
+    doc.para(text(lang.t(
+        "A request is executed again every cycle while it stays in the telegram: a write left there writes the EEPROM again and again. Send command 0 when done.",
+        "PKW 数据以循环执行的方式与变频器交互：写命令留在报文中会持续写 EEPROM。操作完成后请发送命令 0。",
+    )));
+    let row = |word: &str, first: u16, request: &str, response: &str| {
+        vec![
+            text(word),
+            text(bytes(lang, first, first + 1)),
+            text(request),
+            text(response),
+        ]
+    };
+    doc.table(
+        lang.t("The PKW words", "PKW 数据格式"),
+        &[
+            lang.t("Word", "字"),
+            lang.t("Bytes", "字节"),
+            lang.t("Request (master → drive)", "主站发送数据"),
+            lang.t("Response (drive → master)", "变频器响应数据"),
+        ],
+        vec![
+            row(
+                "PKE",
+                0,
+                lang.t(
+                    "bits 15-12: command; bits 11-8: reserved; bits 7-0: address, high byte",
+                    "高 4 位：命令代码；低 4 位（位 11-8）：保留；低 8 位：功能码参数地址高位",
+                ),
+                lang.t(
+                    "bits 15-12: response code; bits 7-0: address, high byte",
+                    "高 4 位：响应代码；低 8 位：功能码参数地址高位",
+                ),
+            ),
+            row(
+                "IND",
+                2,
+                lang.t(
+                    "bits 15-8: address, low byte; bits 7-0: reserved",
+                    "高 8 位：功能码参数地址低位；低 8 位：保留",
+                ),
+                lang.t(
+                    "bits 15-8: address, low byte; bits 7-0: reserved",
+                    "高 8 位：功能码参数地址低位；低 8 位：保留",
+                ),
+            ),
+            row(
+                "PWE",
+                4,
+                lang.t("high word: reserved", "高 16 位：保留"),
+                lang.t("high word: reserved", "高 16 位：保留"),
+            ),
+            row(
+                "PWE",
+                6,
+                lang.t(
+                    "low word: the value to write; unused when reading",
+                    "低 16 位：写请求时为参数值；读请求时无使用",
+                ),
+                lang.t(
+                    "low word: done, the value; cannot execute, the error code",
+                    "低 16 位：请求成功时为参数值；失败时为错误代码",
+                ),
+            ),
+        ],
+    );
+    let code_row = |code: u16, meaning: &str| vec![text(code.to_string()), text(meaning)];
+    let requests = [
+        (pke::PkwRequest::None, lang.t("no request", "无请求")),
+        (
+            pke::PkwRequest::Read { address: 0 },
+            lang.t("read the parameter", "读取功能码参数数据"),
+        ),
+        (
+            pke::PkwRequest::Write {
+                address: 0,
+                value: 0,
+            },
+            lang.t("change the parameter", "更改功能码参数数据"),
+        ),
+    ];
+    doc.table(
+        lang.t(
+            "Request commands (PKE bits 15-12, decimal)",
+            "命令代码（PKE 高 4 位，十进制）",
+        ),
+        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        requests
+            .iter()
+            .map(|(r, m)| code_row(code_of(r.encode()), m))
+            .collect(),
+    );
+    let responses = [
+        (pke::PkwResponse::None, lang.t("no request", "无请求")),
+        (
+            pke::PkwResponse::Done {
+                address: 0,
+                value: 0,
+            },
+            lang.t("done", "功能码参数操作正确"),
+        ),
+        (
+            pke::PkwResponse::Failed {
+                address: 0,
+                error: pke::PkwErrorCode::Other,
+            },
+            lang.t(
+                "cannot execute: PWE low holds the error code",
+                "无法执行：PWE 低 16 位为错误代码",
+            ),
+        ),
+    ];
+    doc.table(
+        lang.t(
+            "Response codes (PKE bits 15-12, decimal)",
+            "响应代码（PKE 高 4 位，十进制）",
+        ),
+        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        responses
+            .iter()
+            .map(|(r, m)| code_row(code_of(r.encode()), m))
+            .collect(),
+    );
+    let errors = error_codes(lang);
+    doc.table(
+        lang.t(
+            "Error codes (as in Modbus)",
+            "错误代码（与标准 MODBUS 一致）",
+        ),
+        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        errors.iter().map(|(e, m)| code_row(e.code(), m)).collect(),
+    );
+    let Some((address, why)) = example_parameter(ir, lang) else {
+        return;
+    };
+    examples_intro(doc, ir, lang, address, &why);
+    let name = parameter_name(ir, address);
+    let done = |value| pke::PkwResponse::Done { address, value }.encode();
+    let read = pke::PkwRequest::Read { address }.encode();
+    let write = |value| pke::PkwRequest::Write { address, value }.encode();
+    let mut rows = vec![
+        example_row(
+            lang.f(format!("read {name}"), format!("读 {name}")),
+            telegram(read, &[]),
+            lang.t("done", "操作正确"),
+            telegram(done(0), &[('v', done(ANY))]),
+        ),
+        example_row(
+            lang.f(
+                format!("change {name} to vvvv"),
+                format!("将 {name} 改为 vvvv"),
+            ),
+            telegram(write(0), &[('v', write(ANY))]),
+            lang.t("done: the value written", "操作正确：返回写入值"),
+            telegram(done(0), &[('v', done(ANY))]),
+        ),
+    ];
+    for (error, meaning) in &errors {
+        let failed = pke::PkwResponse::Failed {
+            address,
+            error: *error,
+        }
+        .encode();
+        rows.push(example_row(
+            lang.f(format!("read {name}"), format!("读 {name}")),
+            telegram(read, &[]),
+            &lang.f(
+                format!("cannot execute: {meaning}"),
+                format!("无法执行：{meaning}"),
+            ),
+            telegram(failed, &[]),
+        ));
+    }
+    rows.push(example_row(
+        lang.t("no request", "无请求").to_string(),
+        telegram(pke::PkwRequest::None.encode(), &[]),
+        lang.t("no request", "无请求"),
+        telegram(pke::PkwResponse::None.encode(), &[]),
+    ));
+    examples_table(doc, lang, rows);
+    doc.para(text(
+        lang.t("vvvv: the parameter's value.", "vvvv：参数值。"),
+    ));
+}
+
+fn error_codes(lang: Lang) -> [(pke::PkwErrorCode, &'static str); 4] {
+    [
+        (
+            pke::PkwErrorCode::IllegalCommand,
+            lang.t("illegal command", "非法命令"),
+        ),
+        (
+            pke::PkwErrorCode::IllegalAddress,
+            lang.t("illegal address", "非法地址"),
+        ),
+        (
+            pke::PkwErrorCode::IllegalData,
+            lang.t("illegal data", "非法数据"),
+        ),
+        (pke::PkwErrorCode::Other, lang.t("other error", "其它错误")),
+    ]
+}
+
+fn example_row(what: String, request: String, outcome: &str, response: String) -> Vec<Cell> {
+    vec![text(what), code(request), text(outcome), code(response)]
+}
+
+fn examples_table(doc: &mut Builder, lang: Lang, rows: Vec<Vec<Cell>>) {
+    doc.table(
+        lang.t(
+            "Worked examples, computed from the description",
+            "应用举例（由设备描述计算）",
+        ),
+        &[
+            lang.t("Request", "请求"),
+            lang.t("Master sends", "主站发送 PKW"),
+            lang.t("Outcome", "结果"),
+            lang.t("Drive answers", "变频器响应 PKW"),
+        ],
+        rows,
+    );
+}
+
+// ---------------------------------------------------------------------------
+// Station, command, address, value (MV810)
+
+fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let row = |word: &str, first: u16, request: &str, reply: &str| {
+        vec![
+            text(word),
+            text(bytes(lang, first, first + 1)),
+            text(request),
+            text(reply),
+        ]
+    };
+    doc.table(
+        lang.t("The PKW words", "PKW 数据格式"),
+        &[lang.t("Word", "字"), lang.t("Bytes", "字节"), lang.t("Request (controller → drive)", "控制器请求"), lang.t("Reply (drive → controller)", "从站应答")],
+        vec![
+            row("PKW0", 0, lang.t("high byte: target station (the RS-485 slave); low byte: source station (this drive's own)", "Byte0：目标站号（485 从站）；Byte1：源站号（本机站号）"), lang.t("high byte: target station (the RS-485 master); low byte: source station (the answering drive)", "Byte0：目标站号（485 主站）；Byte1：源站号（本机站号）")),
+            row("PKW1", 2, lang.t("the command", "读写功能码命令"), lang.t("the command; 0x80 + the command on error", "应答命令；错误应答为 0x80+命令码")),
+            row("PKW2", 4, lang.t("the parameter's address", "需要读写的功能码地址"), lang.t("the same address", "功能码地址")),
+            row("PKW3", 6, lang.t("write: the value; read: the count, always 1", "写操作：写的具体值；读操作：读的个数（固定值 1）"), lang.t("read: the value; write: 0; error: the error code", "读操作应答：功能码值；写操作应答：0；错误应答：错误码")),
+        ],
+    );
+    let commands = [
+        (
+            station::PkwCommand::Read,
+            lang.t("read one parameter", "读一个"),
+        ),
+        (
+            station::PkwCommand::WriteAndStore,
+            lang.t(
+                "write one parameter and store it in EEPROM",
+                "写一个，存 EEPROM",
+            ),
+        ),
+        (
+            station::PkwCommand::Write,
+            lang.t(
+                "write one parameter without storing it",
+                "写一个，不存 EEPROM",
+            ),
+        ),
+    ];
+    let stations = station::Stations {
+        target: 0,
+        source: 0,
+    };
+    let failed_code = |command| {
+        let reply = station::PkwResponse {
+            stations,
+            address: 0,
+            reply: station::PkwReply::Failed { command, error: 0 },
+        };
+        reply.encode()[1].get()
+    };
+    doc.table(
+        lang.t("Commands (PKW1)", "命令（PKW1）"),
+        &[
+            lang.t("Command", "命令"),
+            lang.t("Meaning", "含义"),
+            lang.t("Reply on error", "错误应答"),
+        ],
+        commands
+            .iter()
+            .map(|(c, m)| {
+                vec![
+                    code(format!("0x{:02X}", c.code())),
+                    text(*m),
+                    code(format!("0x{:02X}", failed_code(*c))),
+                ]
+            })
+            .collect(),
+    );
+    doc.para(text(lang.t(
+        "The manual lists no error codes: the reply to a failed request carries the drive's error code in PKW3.",
+        "手册未列出错误码：错误应答在 PKW3 中返回变频器的错误码。",
+    )));
+    let Some((address, why)) = example_parameter(ir, lang) else {
+        return;
+    };
+    examples_intro(doc, ir, lang, address, &why);
+    let name = parameter_name(ir, address);
+    let request = |access, stations| {
+        station::PkwRequest {
+            stations,
+            address,
+            access,
+        }
+        .encode()
+    };
+    // The reply swaps the stations: its target is the request's source.
+    let reply = |reply, stations: station::Stations| {
+        station::PkwResponse {
+            stations,
+            address,
+            reply,
+        }
+        .encode()
+    };
+    let (none, target, source) = (
+        station::Stations {
+            target: 0,
+            source: 0,
+        },
+        station::Stations {
+            target: 0xFF,
+            source: 0,
+        },
+        station::Stations {
+            target: 0,
+            source: 0xFF,
+        },
+    );
+    let sent = |access: &dyn Fn(u16) -> station::PkwAccess| {
+        telegram(
+            request(access(0), none),
+            &[
+                ('t', request(access(0), target)),
+                ('s', request(access(0), source)),
+                ('v', request(access(ANY), none)),
+            ],
+        )
+    };
+    let answered = |r: &dyn Fn(u16) -> station::PkwReply, letter: char| {
+        telegram(
+            reply(r(0), none),
+            &[
+                ('s', reply(r(0), target)),
+                ('t', reply(r(0), source)),
+                (letter, reply(r(ANY), none)),
+            ],
+        )
+    };
+    let mut rows = vec![example_row(
+        lang.f(format!("read {name}"), format!("读 {name}")),
+        sent(&|_| station::PkwAccess::Read),
+        lang.t("done: the value", "读操作应答：功能码值"),
+        answered(&station::PkwReply::Value, 'v'),
+    )];
+    for (access, done, how) in [
+        (
+            &(|value| station::PkwAccess::WriteAndStore { value })
+                as &dyn Fn(u16) -> station::PkwAccess,
+            station::PkwReply::WrittenAndStored,
+            lang.t(", stored in EEPROM", "，存 EEPROM"),
+        ),
+        (
+            &(|value| station::PkwAccess::Write { value }) as &dyn Fn(u16) -> station::PkwAccess,
+            station::PkwReply::Written,
+            lang.t(", not stored", "，不存 EEPROM"),
+        ),
+    ] {
+        rows.push(example_row(
+            lang.f(
+                format!("write vvvv to {name}{how}"),
+                format!("将 vvvv 写入 {name}{how}"),
+            ),
+            sent(access),
+            lang.t("done", "写操作应答"),
+            answered(&|_| done, 'v'),
+        ));
+    }
+    rows.push(example_row(
+        lang.f(format!("read {name}"), format!("读 {name}")),
+        sent(&|_| station::PkwAccess::Read),
+        lang.t("failed", "错误应答"),
+        answered(
+            &|error| station::PkwReply::Failed {
+                command: station::PkwCommand::Read,
+                error,
+            },
+            'x',
+        ),
+    ));
+    examples_table(doc, lang, rows);
+    doc.para(text(lang.t(
+        "tt: the target station of the request, ss: its source station (the reply swaps them); vvvv: the value; xxxx: the drive's error code.",
+        "tt：请求的目标站号，ss：请求的源站号（应答中二者互换）；vvvv：参数值；xxxx：变频器的错误码。",
+    )));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ir(name: &str, text: &str) -> Ir {
+        crate::load(name, text).0.unwrap()
+    }
+
+    /// MD810 manual 1.4.2, figures 6 and 7: read and change F0-08.
+    #[test]
+    fn the_md810_manuals_telegrams_come_out_of_the_codec() {
+        let address = 0xF008;
+        let read = pke::PkwRequest::Read { address }.encode();
+        assert_eq!(telegram(read, &[]), "10F0 0800 0000 0000");
+        let done = |value| pke::PkwResponse::Done { address, value }.encode();
+        assert_eq!(telegram(done(0x1388), &[]), "10F0 0800 0000 1388");
+        let write = |value| pke::PkwRequest::Write { address, value }.encode();
+        assert_eq!(telegram(write(0x07D0), &[]), "20F0 0800 0000 07D0");
+        assert_eq!(
+            telegram(write(0), &[('v', write(ANY))]),
+            "20F0 0800 0000 vvvv"
+        );
+        assert_eq!(code_of(done(0)), 1);
+    }
+
+    /// docs/wire-format.md: station 1 reads P43.02 of RS-485 slave 2.
+    #[test]
+    fn the_station_kind_writes_stations_command_address_and_count() {
+        let stations = station::Stations {
+            target: 2,
+            source: 1,
+        };
+        let read = station::PkwRequest {
+            stations,
+            address: 0x2B02,
+            access: station::PkwAccess::Read,
+        };
+        assert_eq!(telegram(read.encode(), &[]), "0201 0003 2B02 0001");
+    }
+
+    #[test]
+    fn the_example_parameter_is_the_first_address_default_else_the_first_drive_parameter() {
+        let md810 = ir(
+            "md810dp.toml",
+            include_str!("../../../descriptions/md810dp.toml"),
+        );
+        let (address, why) = example_parameter(&md810, Lang::En).unwrap();
+        assert_eq!(
+            (address, why.as_str()),
+            (0xF000, "the default of PZD1 master->slave")
+        );
+        let mv810 = ir(
+            "mv810-pnet02.toml",
+            include_str!("../../../descriptions/mv810-pnet02.toml"),
+        );
+        let (address, why) = example_parameter(&mv810, Lang::En).unwrap();
+        assert_eq!(
+            (address, why.as_str()),
+            (0x2B02, "the parameter that sets PZD2 receive")
+        );
+    }
+}

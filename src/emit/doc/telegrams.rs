@@ -1,0 +1,708 @@
+//! The cyclic telegrams: the table of PPO types and PROFINET modules, an
+//! overview diagram per bus (a row per module, a box per word), the words of
+//! each telegram by name, and the control and status words bit by bit.
+
+use super::page::{code, text, Builder, Cell};
+use super::svg::{self, Align, Item, Line, Rect, Style, Svg, Weight};
+use super::{bits, bytes, parameter_name, Lang};
+use crate::ir::profinet::{self, ModuleKind};
+use crate::ir::{Allowed, Direction, EntryKey, Ir, Layout, MappingKind, PkwKind, Word};
+
+/// A PPO type or a PROFINET module.
+struct Module<'a> {
+    name: String,
+    bus: Bus,
+    layout: Layout,
+    config: Option<&'a [u8]>,
+    ident: Option<u32>,
+    /// A PROFINET module's own words (standard telegram 1's are PROFIdrive's).
+    profinet: Option<&'a profinet::Module>,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Bus {
+    Profibus,
+    Profinet,
+}
+
+fn modules(ir: &Ir) -> Vec<Module<'_>> {
+    let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(|m| Module {
+        name: m.name.clone(),
+        bus: Bus::Profibus,
+        layout: m.layout,
+        config: Some(&m.config),
+        ident: None,
+        profinet: None,
+    });
+    let pn = ir.profinet.iter().flat_map(|p| &p.modules).map(|m| Module {
+        name: m.name.text.en.clone(),
+        bus: Bus::Profinet,
+        layout: m.layout,
+        config: None,
+        ident: Some(m.ident_number),
+        profinet: Some(m),
+    });
+    ppos.chain(pn).collect()
+}
+
+fn direction_name(lang: Lang, direction: Direction) -> &'static str {
+    match direction {
+        Direction::Out => lang.t("master → drive", "主站 → 变频器"),
+        Direction::In => lang.t("drive → master", "变频器 → 主站"),
+    }
+}
+
+pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let modules = modules(ir);
+    if modules.is_empty() {
+        return;
+    }
+    let (heading, caption) = match (ir.profibus.is_some(), ir.profinet.is_some()) {
+        (true, false) => (
+            lang.t("Cyclic data: PPO types", "周期数据：PPO 类型"),
+            lang.t("PPO types", "PPO 类型"),
+        ),
+        (false, true) => (
+            lang.t("Cyclic data: modules", "周期数据：模块"),
+            lang.t("PROFINET modules", "PROFINET 模块"),
+        ),
+        _ => (
+            lang.t(
+                "Cyclic data: PPO types and modules",
+                "周期数据：PPO 类型与模块",
+            ),
+            lang.t("PPO types and PROFINET modules", "PPO 类型与 PROFINET 模块"),
+        ),
+    };
+    doc.section("telegrams", heading);
+    doc.para(text(lang.t(
+        "Each module carries the same number of words each way: the parameter channel (PKW) when it has one, then its process data words (PZD). Every word is 16 bits, high byte first.",
+        "每个模块在两个方向上传送相同数量的字：先是参数区（PKW，若有），后是过程数据区（PZD）。每个字 16 位，高字节在前。",
+    )));
+    let rows = modules.iter().map(module_row).collect();
+    doc.table(
+        caption,
+        &[
+            lang.t("Module", "模块"),
+            lang.t("Bus", "总线"),
+            lang.t("PKW words", "PKW 字数"),
+            lang.t("PZD words", "PZD 字数"),
+            lang.t("Bytes each way", "每方向字节数"),
+            lang.t("Config bytes (GSD)", "配置字节（GSD）"),
+            lang.t("Module ident number (GSDML)", "模块标识号（GSDML）"),
+        ],
+        rows,
+    );
+    for bus in [Bus::Profibus, Bus::Profinet] {
+        let of_bus: Vec<&Module> = modules.iter().filter(|m| m.bus == bus).collect();
+        if !of_bus.is_empty() {
+            let caption = match bus {
+                Bus::Profibus => lang.t("PPO types, one box per word", "PPO 类型，每个字一个方框"),
+                Bus::Profinet => lang.t(
+                    "PROFINET modules, one box per word",
+                    "PROFINET 模块，每个字一个方框",
+                ),
+            };
+            doc.figure(caption, overview(ir, lang, &of_bus, caption));
+        }
+    }
+}
+
+fn module_row(m: &Module) -> Vec<Cell> {
+    let dash = || text("—");
+    vec![
+        text(&m.name),
+        text(match m.bus {
+            Bus::Profibus => "PROFIBUS-DP",
+            Bus::Profinet => "PROFINET",
+        }),
+        text(m.layout.pkw_words().to_string()),
+        text(m.layout.pzd_words.to_string()),
+        text(m.layout.bytes().to_string()),
+        m.config.map_or_else(dash, |c| code(super::hex_bytes(c))),
+        m.ident.map_or_else(dash, |i| code(format!("0x{i:08X}"))),
+    ]
+}
+
+// ---------------------------------------------------------------------------
+// The overview: a row per module
+
+const MARGIN: u32 = 8;
+const GAP: u32 = 4;
+const OVERVIEW_WORD: u32 = 46;
+
+/// The PKW channel's words, short, as the manuals label them.
+fn pkw_labels(kind: PkwKind) -> [&'static str; 4] {
+    match kind {
+        PkwKind::StationCommandAddressValue => ["PKW0", "PKW1", "PKW2", "PKW3"],
+        _ => ["PKE", "IND", "PWE", "PWE"],
+    }
+}
+
+fn overview(ir: &Ir, lang: Lang, modules: &[&Module], title: &str) -> Svg {
+    let name_w = modules
+        .iter()
+        .map(|m| svg::text_width(&m.name, Weight::Bold))
+        .max()
+        .unwrap_or(0)
+        + 2 * svg::PAD;
+    let bytes_label = |m: &Module| {
+        lang.f(
+            format!("{} bytes", m.layout.bytes()),
+            format!("{} 字节", m.layout.bytes()),
+        )
+    };
+    let bytes_w = modules
+        .iter()
+        .map(|m| svg::text_width(&bytes_label(m), Weight::Normal))
+        .max()
+        .unwrap_or(0)
+        + 2 * svg::PAD;
+    let max_words = modules
+        .iter()
+        .map(|m| u32::from(m.layout.pkw_words() + m.layout.pzd_words))
+        .max()
+        .unwrap_or(0);
+    let row_h = svg::height_for(&[line("PZD", Weight::Bold)]);
+    let words_x = MARGIN + name_w + GAP;
+    let bytes_x = words_x + max_words * (OVERVIEW_WORD + GAP) + GAP;
+    let mut items = Vec::new();
+    let mut y = MARGIN;
+    for m in modules {
+        items.push(slot(
+            Rect {
+                x: MARGIN,
+                y,
+                w: name_w,
+                h: row_h,
+            },
+            Align::Start,
+            line(&m.name, Weight::Bold),
+        ));
+        let pkw = if m.layout.pkw {
+            pkw_labels(ir.telegram.pkw).to_vec()
+        } else {
+            Vec::new()
+        };
+        let pzd = (1..=m.layout.pzd_words).map(|n| format!("PZD{n}"));
+        let labels = pkw
+            .iter()
+            .map(|l| (l.to_string(), Style::Pkw))
+            .chain(pzd.map(|l| (l, Style::Pzd)));
+        for (i, (label, style)) in labels.enumerate() {
+            let x = words_x + i as u32 * (OVERVIEW_WORD + GAP);
+            items.push(Item {
+                rect: Rect {
+                    x,
+                    y,
+                    w: OVERVIEW_WORD,
+                    h: row_h,
+                },
+                style,
+                align: Align::Middle,
+                lines: vec![line(&label, Weight::Small)],
+            });
+        }
+        items.push(slot(
+            Rect {
+                x: bytes_x,
+                y,
+                w: bytes_w,
+                h: row_h,
+            },
+            Align::Start,
+            line(&bytes_label(m), Weight::Normal),
+        ));
+        y += row_h + GAP + 2;
+    }
+    Svg {
+        kind: "overview",
+        width: bytes_x + bytes_w + MARGIN,
+        height: y - GAP - 2 + MARGIN,
+        title: title.to_string(),
+        items,
+    }
+}
+
+fn line(text: &str, weight: Weight) -> Line {
+    Line {
+        text: text.to_string(),
+        weight,
+    }
+}
+
+fn slot(rect: Rect, align: Align, line: Line) -> Item {
+    Item {
+        rect,
+        style: Style::Slot,
+        align,
+        lines: vec![line],
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The words of each telegram
+
+/// A word of a telegram one way: what the diagram's box and the table's
+/// row show.
+#[derive(Clone, PartialEq, Eq)]
+struct WordView {
+    label: String,
+    /// What it carries: for a mapped word, its default.
+    role: String,
+    mapped: bool,
+    /// The drive parameter that sets a mapped word.
+    parameter: Option<String>,
+    first_byte: u16,
+    style: Style,
+}
+
+fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView> {
+    let pkw = if m.layout.pkw {
+        pkw_words(ir.telegram.pkw, lang, direction)
+    } else {
+        Vec::new()
+    };
+    let pkw_bytes = 2 * u16::from(m.layout.pkw_words());
+    let data_items = m
+        .profinet
+        .filter(|p| p.kind == ModuleKind::StandardTelegram1)
+        .map(|p| match direction {
+            Direction::Out => &p.output,
+            Direction::In => &p.input,
+        });
+    let pzd = (1..=m.layout.pzd_words).map(|n| {
+        let first_byte = pkw_bytes + 2 * u16::from(n - 1);
+        let label = format!("PZD{n}");
+        if let Some(items) = data_items {
+            let role = items[usize::from(m.layout.pkw_words() + n - 1)]
+                .text
+                .text
+                .en
+                .clone();
+            return WordView {
+                label,
+                role,
+                mapped: false,
+                parameter: None,
+                first_byte,
+                style: Style::Pzd,
+            };
+        }
+        if let (1, Some(word)) = (n, ir.telegram.word(direction)) {
+            return WordView {
+                label,
+                role: lang.text(&word.name).to_string(),
+                mapped: false,
+                parameter: None,
+                first_byte,
+                style: Style::Word,
+            };
+        }
+        match mapped(ir, lang, direction, n) {
+            Some((role, parameter)) => WordView {
+                label,
+                role,
+                mapped: true,
+                parameter,
+                first_byte,
+                style: Style::Pzd,
+            },
+            None => WordView {
+                label,
+                role: lang.t("not mapped", "未映射").to_string(),
+                mapped: false,
+                parameter: None,
+                first_byte,
+                style: Style::Pzd,
+            },
+        }
+    });
+    pkw.into_iter()
+        .enumerate()
+        .map(|(i, (label, role))| WordView {
+            label: label.to_string(),
+            role: role.to_string(),
+            mapped: false,
+            parameter: None,
+            first_byte: 2 * i as u16,
+            style: Style::Pkw,
+        })
+        .chain(pzd)
+        .collect()
+}
+
+/// A mapped PZD word: what it carries by default, and the drive parameter
+/// that sets it; `None` when no mapping names the word.
+fn mapped(ir: &Ir, lang: Lang, direction: Direction, n: u8) -> Option<(String, Option<String>)> {
+    let kind = match direction {
+        Direction::Out => MappingKind::PzdOut,
+        Direction::In => MappingKind::PzdIn,
+    };
+    let (set, entry) = ir
+        .mappings
+        .group(kind)?
+        .entries()
+        .find(|(_, e)| e.key == EntryKey { kind, number: n })?;
+    let default = match &set.allowed {
+        Allowed::Range { .. } => parameter_name(ir, entry.default),
+        Allowed::Choices(values) => values
+            .choices
+            .iter()
+            .find(|c| c.value == i64::from(entry.default))
+            .map_or_else(
+                || entry.default.to_string(),
+                |c| lang.text(&c.text).to_string(),
+            ),
+    };
+    Some((default, entry.parameter.map(|p| parameter_name(ir, p))))
+}
+
+/// The PKW words one way: label and role.
+fn pkw_words(kind: PkwKind, lang: Lang, direction: Direction) -> Vec<(&'static str, &'static str)> {
+    let out = direction == Direction::Out;
+    match kind {
+        PkwKind::None => Vec::new(),
+        PkwKind::PkeIndPwe => vec![
+            (
+                "PKE",
+                if out {
+                    lang.t("command, address", "命令、地址")
+                } else {
+                    lang.t("response, address", "响应、地址")
+                },
+            ),
+            ("IND", lang.t("address, reserved", "地址、保留")),
+            ("PWE", lang.t("reserved", "保留")),
+            (
+                "PWE",
+                if out {
+                    lang.t("value to write", "写入值")
+                } else {
+                    lang.t("value or error", "参数值或错误代码")
+                },
+            ),
+        ],
+        PkwKind::StationCommandAddressValue => vec![
+            ("PKW0", lang.t("stations", "站号")),
+            (
+                "PKW1",
+                if out {
+                    lang.t("command", "命令")
+                } else {
+                    lang.t("reply", "应答")
+                },
+            ),
+            ("PKW2", lang.t("address", "地址")),
+            (
+                "PKW3",
+                if out {
+                    lang.t("value or count", "参数值或个数")
+                } else {
+                    lang.t("value or error", "参数值或错误码")
+                },
+            ),
+        ],
+    }
+}
+
+/// The modules whose words, both ways, begin some longer module's words:
+/// a figure each for the longest, listing the others.
+fn figure_groups<'m, 'a>(
+    ir: &Ir,
+    lang: Lang,
+    modules: &'m [Module<'a>],
+) -> Vec<(&'m Module<'a>, Vec<&'m Module<'a>>)> {
+    let both = |m: &Module| {
+        [
+            words(ir, lang, m, Direction::Out),
+            words(ir, lang, m, Direction::In),
+        ]
+    };
+    let mut by_length: Vec<&Module> = modules.iter().collect();
+    // Longest first; the sort is stable, so equal lengths keep their order.
+    by_length.sort_by_key(|m| std::cmp::Reverse(m.layout.bytes()));
+    let mut groups: Vec<(&Module, Vec<&Module>)> = Vec::new();
+    for m in by_length {
+        let mine = both(m);
+        let host = groups.iter_mut().find(|(longest, _)| {
+            let theirs = both(longest);
+            mine.iter().zip(&theirs).all(|(a, b)| b.starts_with(a))
+        });
+        match host {
+            Some((_, others)) => others.push(m),
+            None => groups.push((m, Vec::new())),
+        }
+    }
+    groups
+}
+
+pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let modules = modules(ir);
+    if modules.is_empty() {
+        return;
+    }
+    doc.section("words", lang.t("The words of each telegram", "各报文的字"));
+    doc.para(text(lang.t(
+        "A shorter module carries the first words of a longer one when they are the same; each diagram shows the longest and names the others. The PZD words carry what the parameter telegram or the records map to them; the diagrams show the defaults.",
+        "较短模块的字与较长模块的前几个字相同时，只画出最长的模块，并列出其余模块。PZD 字传送参数报文或记录中映射的内容，图中为默认值。",
+    )));
+    for (longest, others) in figure_groups(ir, lang, &modules) {
+        let mut caption = longest.name.clone();
+        if !others.is_empty() {
+            let names: Vec<&str> = others.iter().map(|m| m.name.as_str()).collect();
+            caption.push_str(&lang.f(
+                format!(" (its first words are also {})", names.join(", ")),
+                format!("（{} 为其前几个字）", names.join("、")),
+            ));
+        }
+        let out = words(ir, lang, longest, Direction::Out);
+        let inn = words(ir, lang, longest, Direction::In);
+        doc.figure(caption.clone(), words_figure(lang, &caption, &out, &inn));
+        let rows = out
+            .iter()
+            .zip(&inn)
+            .map(|(o, i)| {
+                vec![
+                    text(if o.label == i.label {
+                        o.label.clone()
+                    } else {
+                        format!("{} / {}", o.label, i.label)
+                    }),
+                    text(bytes(lang, o.first_byte, o.first_byte + 1)),
+                    text(word_cell(lang, o)),
+                    text(word_cell(lang, i)),
+                ]
+            })
+            .collect();
+        doc.table(
+            caption,
+            &[
+                lang.t("Word", "字"),
+                lang.t("Bytes", "字节"),
+                direction_name(lang, Direction::Out),
+                direction_name(lang, Direction::In),
+            ],
+            rows,
+        );
+    }
+    for direction in Direction::BOTH {
+        if let Some(word) = ir.telegram.word(direction) {
+            bits_part(doc, lang, word, direction);
+        }
+    }
+}
+
+fn word_cell(lang: Lang, w: &WordView) -> String {
+    match (w.mapped, &w.parameter) {
+        (true, Some(p)) => lang.f(
+            format!("{} (default; {p} sets it)", w.role),
+            format!("{}（默认值；由 {p} 设置）", w.role),
+        ),
+        (true, None) => lang.f(
+            format!("{} (default)", w.role),
+            format!("{}（默认值）", w.role),
+        ),
+        (false, _) => w.role.clone(),
+    }
+}
+
+const COLUMNS: u32 = 8;
+const BOX_W: u32 = 104;
+const BOX_GAP: u32 = 6;
+
+fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> Svg {
+    let inner = BOX_W - 2 * svg::PAD;
+    let lines_of = |w: &WordView| {
+        let mut lines = vec![line(&w.label, Weight::Bold)];
+        lines.extend(
+            svg::wrap(&w.role, inner, Weight::Normal, 3)
+                .iter()
+                .map(|l| line(l, Weight::Normal)),
+        );
+        if let Some(parameter) = &w.parameter {
+            lines.push(line(parameter, Weight::Small));
+        }
+        lines.push(line(
+            &bytes(lang, w.first_byte, w.first_byte + 1),
+            Weight::Small,
+        ));
+        lines
+    };
+    let box_h = out
+        .iter()
+        .chain(inn)
+        .map(|w| svg::height_for(&lines_of(w)))
+        .max()
+        .unwrap_or(0);
+    let title_h = svg::height_for(&[line("X", Weight::Bold)]);
+    let mut items = Vec::new();
+    let mut y = MARGIN;
+    for (direction, words) in [(Direction::Out, out), (Direction::In, inn)] {
+        let name = direction_name(lang, direction);
+        let w = svg::text_width(name, Weight::Bold) + 2 * svg::PAD;
+        items.push(slot(
+            Rect {
+                x: MARGIN,
+                y,
+                w,
+                h: title_h,
+            },
+            Align::Start,
+            line(name, Weight::Bold),
+        ));
+        y += title_h + 2;
+        for (i, word) in words.iter().enumerate() {
+            let (row, col) = (i as u32 / COLUMNS, i as u32 % COLUMNS);
+            items.push(Item {
+                rect: Rect {
+                    x: MARGIN + col * (BOX_W + BOX_GAP),
+                    y: y + row * (box_h + BOX_GAP),
+                    w: BOX_W,
+                    h: box_h,
+                },
+                style: word.style,
+                align: Align::Middle,
+                lines: lines_of(word),
+            });
+        }
+        let rows = (words.len() as u32).div_ceil(COLUMNS);
+        y += rows * (box_h + BOX_GAP) + 8;
+    }
+    Svg {
+        kind: "words",
+        width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
+        height: y - 8 - BOX_GAP + MARGIN,
+        title: title.to_string(),
+        items,
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Control and status words
+
+fn bits_part(doc: &mut Builder, lang: Lang, word: &Word, direction: Direction) {
+    let name = lang.text(&word.name);
+    let caption = lang.f(
+        format!(
+            "{name}, PZD1 {}, bit by bit",
+            direction_name(lang, direction)
+        ),
+        format!("{name}（PZD1，{}）各位", direction_name(lang, direction)),
+    );
+    doc.figure(caption.clone(), bits_figure(lang, &caption, word));
+    let rows = word
+        .bits
+        .iter()
+        .map(|b| {
+            let values = b.values.as_ref().map_or_else(
+                || lang.t("1 = yes, 0 = no", "1：有效，0：无效").to_string(),
+                |v| {
+                    v.choices
+                        .iter()
+                        .map(|c| format!("{} = {}", c.value, lang.text(&c.text)))
+                        .collect::<Vec<_>>()
+                        .join("; ")
+                },
+            );
+            vec![
+                text(bits(lang, b.first.into(), b.last.into())),
+                text(lang.text(&b.name)),
+                text(values),
+            ]
+        })
+        .collect();
+    doc.table(
+        caption,
+        &[
+            lang.t("Bits", "位"),
+            lang.t("Name", "名称"),
+            lang.t("Values", "取值"),
+        ],
+        rows,
+    );
+}
+
+/// Two rows of eight bits, the high byte above, bit 15 leftmost as the
+/// manuals draw words; a field crossing the bytes is a box in each row.
+fn bits_figure(lang: Lang, title: &str, word: &Word) -> Svg {
+    let inner_of = |n: u32| n * BOX_W + (n - 1) * BOX_GAP - 2 * svg::PAD;
+    // (first bit, last bit, field) of each run within a byte, fields and gaps alike.
+    let mut parts: Vec<(u8, u8, Option<usize>)> = Vec::new();
+    for byte in [1u8, 0] {
+        for bit in (8 * byte..8 * byte + 8).rev() {
+            let field = word
+                .bits
+                .iter()
+                .position(|b| (b.first..=b.last).contains(&bit));
+            match parts.last_mut() {
+                Some((first, _, last_field))
+                    if field.is_some() && *last_field == field && bit % 8 != 7 =>
+                {
+                    *first = bit
+                }
+                _ => parts.push((bit, bit, field)),
+            }
+        }
+    }
+    let name = |field: Option<usize>| field.map(|f| lang.text(&word.bits[f].name));
+    let lines_of = |&(first, last, field): &(u8, u8, Option<usize>)| -> Vec<Line> {
+        let width = inner_of(u32::from(last - first) + 1);
+        name(field).map_or_else(Vec::new, |n| {
+            svg::wrap(n, width, Weight::Normal, 3)
+                .iter()
+                .map(|l| line(l, Weight::Normal))
+                .collect()
+        })
+    };
+    let box_h = parts
+        .iter()
+        .map(|p| svg::height_for(&lines_of(p)))
+        .max()
+        .unwrap_or(0)
+        .max(32);
+    let number_h = svg::height_for(&[line("15", Weight::Small)]);
+    let col_x = |bit: u8| MARGIN + (7 - u32::from(bit % 8)) * (BOX_W + BOX_GAP);
+    let row_y =
+        |bit: u8| MARGIN + u32::from(1 - bit / 8) * (number_h + box_h + BOX_GAP + 4) + number_h;
+    let mut items = Vec::new();
+    for bit in 0..16u8 {
+        let number = lang.f(format!("bit {bit}"), format!("Bit{bit}"));
+        items.push(slot(
+            Rect {
+                x: col_x(bit),
+                y: row_y(bit) - number_h,
+                w: BOX_W,
+                h: number_h,
+            },
+            Align::Middle,
+            line(&number, Weight::Small),
+        ));
+    }
+    for part in &parts {
+        let &(first, last, field) = part;
+        let n = u32::from(last - first) + 1;
+        items.push(Item {
+            rect: Rect {
+                x: col_x(last),
+                y: row_y(first),
+                w: n * BOX_W + (n - 1) * BOX_GAP,
+                h: box_h,
+            },
+            style: if field.is_some() {
+                Style::Word
+            } else {
+                Style::Reserved
+            },
+            align: Align::Middle,
+            lines: lines_of(part),
+        });
+    }
+    Svg {
+        kind: "bits",
+        width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
+        height: row_y(0) + box_h + MARGIN,
+        title: title.to_string(),
+        items,
+    }
+}

@@ -1,0 +1,433 @@
+//! The datasheets of the shipped descriptions (`gsdc doc`): snapshots read
+//! line by line, the diagrams' geometry from the SVG's own numbers, the
+//! facts they must show, determinism, and the command line.
+
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
+use gsdc::{Artifact, ArtifactKind};
+use std::process::Command;
+
+const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+
+fn datasheet(name: &str, kind: ArtifactKind) -> String {
+    let artifact: Artifact = gsdc::document(&descriptions::load(name))
+        .into_iter()
+        .find(|a| a.kind == kind)
+        .expect("both files");
+    String::from_utf8(artifact.contents).unwrap()
+}
+
+#[test]
+fn markdown_snapshots() {
+    for name in DESCRIPTIONS {
+        let stem = name.trim_end_matches(".toml");
+        insta::assert_snapshot!(
+            format!("{stem}.md"),
+            datasheet(name, ArtifactKind::DatasheetMarkdown)
+        );
+    }
+}
+
+/// One HTML page in full, the smallest: structure, CSS, the switch, SVG.
+#[test]
+fn html_snapshot() {
+    insta::assert_snapshot!(
+        "9kdp1.html",
+        datasheet("9kdp1.toml", ArtifactKind::DatasheetHtml)
+    );
+}
+
+#[test]
+fn file_names_and_kinds() {
+    let files = gsdc::document(&descriptions::load("mv810-pnet02.toml"));
+    let names: Vec<(&str, ArtifactKind)> = files
+        .iter()
+        .map(|a| (a.file_name.as_str(), a.kind))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("mv810-pnet02.html", ArtifactKind::DatasheetHtml),
+            ("mv810-pnet02.md", ArtifactKind::DatasheetMarkdown)
+        ]
+    );
+    // The datasheet is not among the files that ship with the card.
+    let shipped = gsdc::compile(&descriptions::load("mv810-pnet02.toml")).unwrap();
+    assert!(shipped.iter().all(|a| !matches!(
+        a.kind,
+        ArtifactKind::DatasheetHtml | ArtifactKind::DatasheetMarkdown
+    )));
+}
+
+#[test]
+fn deterministic_self_contained_and_without_paths() {
+    for name in DESCRIPTIONS {
+        let first = gsdc::document(&descriptions::load(name));
+        assert_eq!(first, gsdc::document(&descriptions::load(name)), "{name}");
+        for file in &first {
+            let text = String::from_utf8(file.contents.clone()).unwrap();
+            let without_svg_namespace = text.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
+            for forbidden in [
+                "http:",
+                "https:",
+                "<script",
+                "src=",
+                "@import",
+                "url(",
+                env!("CARGO_MANIFEST_DIR"),
+            ] {
+                assert!(
+                    !without_svg_namespace.contains(forbidden),
+                    "{}: {forbidden}",
+                    file.file_name
+                );
+            }
+        }
+    }
+}
+
+/// Every language of the description, each in its own `main`; the CSS
+/// switch hides all but the checked one.
+#[test]
+fn every_language_has_its_section_and_switch() {
+    let html = datasheet("md810dp.toml", ArtifactKind::DatasheetHtml);
+    assert!(html.contains("<main lang=\"en\" class=\"lang lang-en\">"));
+    assert!(html.contains("<main lang=\"zh\" class=\"lang lang-zh\">"));
+    assert!(html.contains("id=\"lang-en\" checked>"));
+    assert!(html.contains("#lang-zh:checked ~ main.lang-zh { display: block; }"));
+    assert!(html.contains("MD810 标准 DP 接口"));
+    assert!(html.contains("@media print"));
+    let markdown = datasheet("md810dp.toml", ArtifactKind::DatasheetMarkdown);
+    assert!(markdown.contains("# Inovance MD810DP: fieldbus interface"));
+    assert!(markdown.contains("# Inovance MD810DP：现场总线接口"));
+}
+
+// ---------------------------------------------------------------------------
+// Geometry, from the SVG's numbers
+
+struct Figure {
+    kind: String,
+    width: f64,
+    height: f64,
+    groups: Vec<Group>,
+}
+
+/// A group's class, its rectangle (x, y, width, height) and its texts' anchors.
+type Group = (String, [f64; 4], Vec<(f64, f64)>);
+
+fn attribute(tag: &str, name: &str) -> String {
+    let start = tag
+        .find(&format!(" {name}=\""))
+        .unwrap_or_else(|| panic!("{name} in {tag}"))
+        + name.len()
+        + 3;
+    tag[start..start + tag[start..].find('"').unwrap()].to_string()
+}
+
+fn number(tag: &str, name: &str) -> f64 {
+    attribute(tag, name).parse().unwrap()
+}
+
+fn figures(html: &str) -> Vec<Figure> {
+    html.split("<svg ")
+        .skip(1)
+        .map(|svg| {
+            let svg = &svg[..svg.find("</svg>").unwrap()];
+            let head = &svg[..svg.find('>').unwrap()];
+            let view_box: Vec<f64> = attribute(&format!(" {head}"), "viewBox")
+                .split(' ')
+                .map(|n| n.parse().unwrap())
+                .collect();
+            let groups = svg
+                .split("<g ")
+                .skip(1)
+                .map(|g| {
+                    let rect = &g[g.find("<rect").unwrap()..];
+                    let rect = &rect[..rect.find("/>").unwrap()];
+                    let texts = g
+                        .split("<text ")
+                        .skip(1)
+                        .map(|t| (number(&format!(" {t}"), "x"), number(&format!(" {t}"), "y")))
+                        .collect();
+                    (
+                        attribute(&format!(" {g}"), "class"),
+                        ["x", "y", "width", "height"].map(|k| number(rect, k)),
+                        texts,
+                    )
+                })
+                .collect();
+            Figure {
+                kind: attribute(&format!(" {head}"), "class"),
+                width: view_box[2],
+                height: view_box[3],
+                groups,
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
+    for name in DESCRIPTIONS {
+        let html = datasheet(name, ArtifactKind::DatasheetHtml);
+        let figures = figures(&html);
+        assert!(figures.len() >= 3, "{name}");
+        for f in &figures {
+            for (i, (class, [x, y, w, h], texts)) in f.groups.iter().enumerate() {
+                assert!(
+                    *x >= 0.0 && *y >= 0.0 && x + w <= f.width && y + h <= f.height,
+                    "{name}: {class} outside"
+                );
+                for (_, [ox, oy, ow, oh], _) in &f.groups[i + 1..] {
+                    let apart = x + w <= *ox || ox + ow <= *x || y + h <= *oy || oy + oh <= *y;
+                    assert!(
+                        apart,
+                        "{name}: {class} at {x},{y} overlaps the box at {ox},{oy}"
+                    );
+                }
+                // Anchors inside the box; the browser test measures the glyphs.
+                for (tx, ty) in texts {
+                    assert!(
+                        *tx > *x && *tx < x + w && *ty > *y && *ty < y + h,
+                        "{name}: text at {tx},{ty}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn an_overview_has_a_box_per_word_of_every_module() {
+    let ir = descriptions::load("md810dp.toml");
+    let html = datasheet("md810dp.toml", ArtifactKind::DatasheetHtml);
+    let word_boxes = |f: &Figure| {
+        f.groups
+            .iter()
+            .filter(|(c, _, _)| c == "box pkw" || c == "box pzd")
+            .count()
+    };
+    let overviews: Vec<usize> = figures(&html)
+        .iter()
+        .filter(|f| f.kind == "overview")
+        .map(word_boxes)
+        .collect();
+    let words = |layouts: &mut dyn Iterator<Item = gsdc::ir::Layout>| -> usize {
+        layouts
+            .map(|l| usize::from(l.pkw_words() + l.pzd_words))
+            .sum()
+    };
+    let ppo = words(
+        &mut ir
+            .profibus
+            .as_ref()
+            .unwrap()
+            .modules
+            .iter()
+            .map(|m| m.layout),
+    );
+    let pn = words(
+        &mut ir
+            .profinet
+            .as_ref()
+            .unwrap()
+            .modules
+            .iter()
+            .map(|m| m.layout),
+    );
+    // PPO1..PPO5: 6 + 10 + 2 + 6 + 16; PROFINET: 6 + 10 + 16 + 2 + 6 + 12. English, then Chinese.
+    assert_eq!((ppo, pn), (40, 52));
+    assert_eq!(overviews, [ppo, pn, ppo, pn]);
+}
+
+/// MV810's status word: bits 9-10 are one box, bits 11-15 one box each.
+#[test]
+fn a_status_word_is_drawn_bit_by_bit() {
+    let html = datasheet("mv810-pnet02.toml", ArtifactKind::DatasheetHtml);
+    let bits: Vec<Figure> = figures(&html)
+        .into_iter()
+        .filter(|f| f.kind == "bits")
+        .collect();
+    assert_eq!(bits.len(), 4, "control and status word, two languages");
+    let status = &bits[1];
+    let fields: Vec<&[f64; 4]> = status
+        .groups
+        .iter()
+        .filter(|(c, _, _)| c == "box field")
+        .map(|(_, r, _)| r)
+        .collect();
+    let reserved = status
+        .groups
+        .iter()
+        .filter(|(c, _, _)| c == "box reserved")
+        .count();
+    // Bits 0-8 one field each, bits 9-10 one field; 11-15 reserved.
+    assert_eq!((fields.len(), reserved), (10, 5));
+    let widest = fields.iter().map(|r| r[2]).fold(0.0, f64::max);
+    let narrowest = fields.iter().map(|r| r[2]).fold(f64::MAX, f64::min);
+    assert!(
+        widest > 2.0 * narrowest,
+        "the two-bit field spans two columns"
+    );
+}
+
+// ---------------------------------------------------------------------------
+// The command line
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("gsdc-doc-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn gsdc(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
+    let out = scratch("ok");
+    let out_arg = out.to_str().unwrap();
+    let first = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        "descriptions/9kdp1.toml",
+        "--out",
+        out_arg,
+    ]);
+    assert_eq!(
+        first.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&first.stdout);
+    for file in ["md810dp.html", "md810dp.md", "9kdp1.html", "9kdp1.md"] {
+        assert!(
+            stdout.contains(&format!("wrote {}", out.join(file).display())),
+            "{stdout}"
+        );
+        let written = std::fs::read(out.join(file)).unwrap();
+        let stem = file.split('.').next().unwrap();
+        let ir = descriptions::load(&format!("{stem}.toml"));
+        let expected = gsdc::document(&ir)
+            .into_iter()
+            .find(|a| a.file_name == file)
+            .unwrap();
+        assert_eq!(written, expected.contents, "{file}");
+    }
+    let again = gsdc(&["doc", "descriptions/md810dp.toml", "--out", out_arg]);
+    assert!(String::from_utf8_lossy(&again.stdout).contains("unchanged"));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
+    let out = scratch("bad");
+    let run = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        "tests/fixtures/invalid/unknown_ppo.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(
+        stderr.contains("E104") && stderr.contains("nothing written"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+}
+
+#[test]
+fn gsdc_doc_usage_and_io_errors_exit_2() {
+    let missing = gsdc(&[
+        "doc",
+        "descriptions/no-such.toml",
+        "--out",
+        scratch("missing").to_str().unwrap(),
+    ]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert_eq!(gsdc(&["doc"]).status.code(), Some(2));
+    let help = gsdc(&["doc", "--help"]);
+    let help = String::from_utf8_lossy(&help.stdout);
+    assert!(
+        help.contains("gsdc doc descriptions/md810dp.toml --out dist"),
+        "{help}"
+    );
+}
+
+/// docs/datasheet.md quotes MD810's worked examples: they are what gsdc writes.
+#[test]
+fn the_guides_excerpt_is_what_gsdc_writes() {
+    let guide = include_str!("../docs/datasheet.md");
+    let start = guide.find("```markdown\n").expect("an excerpt") + "```markdown\n".len();
+    let excerpt = &guide[start..start + guide[start..].find("```").unwrap()];
+    let markdown = datasheet("md810dp.toml", ArtifactKind::DatasheetMarkdown);
+    for line in excerpt.lines() {
+        assert!(markdown.contains(line), "not in md810dp.md: {line}");
+    }
+    assert!(excerpt.lines().count() >= 3);
+}
+
+/// A description in English alone: one `main`, shown, and no switch.
+#[test]
+fn one_language_needs_no_switch() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/9kdp1.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "name = { en = \"9KDP1 PROFIBUS-DP card\", zh = \"9KDP1 PROFIBUS-DP 通讯卡\" }",
+        "name = \"9KDP1 PROFIBUS-DP card\"",
+    );
+    assert!(
+        !text.contains("zh ="),
+        "the test removes 9KDP1's only Chinese text"
+    );
+    let ir = gsdc::load("9kdp1.toml", &text).0.unwrap();
+    let html = gsdc::document(&ir).remove(0);
+    let html = String::from_utf8(html.contents).unwrap();
+    assert_eq!(html.matches("<main").count(), 1);
+    assert!(html.contains("<main lang=\"en\">"));
+    assert!(!html.contains("<input") && !html.contains("main.lang"));
+}
+
+#[test]
+fn gsdc_doc_refuses_two_descriptions_with_one_name() {
+    let out = scratch("twice");
+    let run = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        "descriptions/md810dp.toml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    // The same description twice gives the same files: written once.
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    std::fs::remove_dir_all(&out).unwrap();
+    let copy = out.with_file_name("other");
+    std::fs::create_dir_all(&copy).unwrap();
+    let other = copy.join("md810dp.toml");
+    let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    std::fs::write(&other, text.replace("md810\"", "md810-b\"")).unwrap();
+    let run = gsdc(&[
+        "doc",
+        "descriptions/md810dp.toml",
+        other.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(1));
+    let said = String::from_utf8_lossy(&run.stderr);
+    assert!(said.contains("both give md810dp.html"), "{said}");
+    assert!(!out.exists());
+}
