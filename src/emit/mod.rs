@@ -1,5 +1,6 @@
 //! Emitters: the IR to file contents, each verified before it is returned.
 
+pub mod c;
 pub mod gsd;
 pub mod gsdml;
 pub mod rust;
@@ -28,6 +29,31 @@ pub enum ArtifactKind {
     RustLayout,
     /// The support module every Rust layout is built from, the same for all.
     RustSupport,
+    /// The C firmware layout (a header) of one description.
+    CHeader,
+    /// The support header every C layout includes, the same for all.
+    CSupport,
+}
+
+/// A language firmware is written in: the edges let users choose which
+/// layouts they get (`gsdc build`, the build-script API).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
+pub enum Language {
+    Rust,
+    C,
+}
+
+impl Language {
+    pub const ALL: [Language; 2] = [Language::Rust, Language::C];
+
+    /// `rust` and `c`, as a command line or a configuration names them.
+    pub fn name(self) -> &'static str {
+        match self {
+            Language::Rust => "rust",
+            Language::C => "c",
+        }
+    }
 }
 
 impl ArtifactKind {
@@ -35,6 +61,30 @@ impl ArtifactKind {
     pub fn is_device_file(self) -> bool {
         matches!(self, ArtifactKind::Gsd | ArtifactKind::Gsdml)
     }
+
+    /// The language of a firmware file (a layout or its support); `None`
+    /// for device files. An edge that writes the layouts of some languages
+    /// only keeps the artifacts whose language it was asked for.
+    pub fn language(self) -> Option<Language> {
+        match self {
+            ArtifactKind::Gsd | ArtifactKind::Gsdml => None,
+            ArtifactKind::RustLayout | ArtifactKind::RustSupport => Some(Language::Rust),
+            ArtifactKind::CHeader | ArtifactKind::CSupport => Some(Language::C),
+        }
+    }
+}
+
+/// The file stem of a description's layouts: `md810dp` for `md810dp.toml`,
+/// `mv810_pnet02` for `mv810-pnet02.toml` (`_` for `-`, as Rust names its
+/// source files).
+fn layout_stem(ir: &Ir) -> String {
+    let stem = std::path::Path::new(&ir.source_name)
+        .file_stem()
+        .map_or_else(
+            || ir.source_name.clone(),
+            |s| s.to_string_lossy().into_owned(),
+        );
+    stem.replace('-', "_")
 }
 
 /// Every file the description gives, each read back and checked by the same
@@ -61,13 +111,23 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
             contents: text.into_bytes(),
         });
     }
-    // The layout is checked by the tests that compile it (tests/generated_rust.rs).
+    // The layouts are checked by the tests that compile them
+    // (tests/generated_rust.rs, tests/c_header.rs); the C layout's names here.
     artifacts.push(Artifact {
         kind: ArtifactKind::RustLayout,
         file_name: rust::file_name(ir),
         contents: rust::emit(ir).into_bytes(),
     });
     artifacts.push(rust::support_module());
+    let header = c::emit(ir);
+    let header_name = c::file_name(ir);
+    problems.extend(c::verify(ir, &header_name, &header));
+    artifacts.push(Artifact {
+        kind: ArtifactKind::CHeader,
+        file_name: header_name,
+        contents: header.into_bytes(),
+    });
+    artifacts.push(c::support_header());
     if problems.has_errors() {
         return Err(problems);
     }
