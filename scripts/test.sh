@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The whole test suite: the command the README gives a new user, and the one
 # .ci/run calls. It installs the system packages the tests need when they are
-# missing (libxml2 and libclang for the PI schema validation in the tests).
+# missing (libxml2 and libclang for the PI schema validation in the tests; gcc,
+# g++ and clang for the C layouts, which tests/c_header.rs compiles and runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 missing=()
-for package in libclang-dev libxml2-dev libxml2-utils pkg-config; do
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -gt 0 ]; then

@@ -16,11 +16,13 @@ use std::process::{Command, Output};
 
 const MD810: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions/md810dp.toml");
 /// What `gsdc build` writes for the MD810, in the order it writes them.
-const MD810_FILES: [&str; 4] = [
+const MD810_FILES: [&str; 6] = [
     "MD810DP.GSD",
     "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
     "md810dp_layout.rs",
     "gsdc_support.rs",
+    "md810dp_layout.h",
+    "gsdc_support.h",
 ];
 
 fn scratch(name: &str) -> PathBuf {
