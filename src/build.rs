@@ -19,6 +19,9 @@
 //! }
 //! ```
 //!
+//! For C firmware, `generate_c` writes `md810dp_layout.h` and `gsdc_support.h`
+//! instead (`generate` writes every file: device files and both layouts).
+//!
 //! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
 //! again when the description changes, and writes only files whose content
 //! changed. Warnings (placeholder ident numbers) become `cargo:warning` lines.
@@ -26,7 +29,7 @@
 use crate::diag::{Diagnostic, Diagnostics, Source};
 use crate::load;
 use crate::output::{read_input, write_if_changed, ReadError};
-use crate::{Artifact, ArtifactKind};
+use crate::{Artifact, Language};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -58,17 +61,38 @@ pub fn generate_rust(
     description: impl AsRef<Path>,
     out_dir: impl AsRef<Path>,
 ) -> Result<PathBuf, BuildError> {
-    let artifacts = compile_file(description.as_ref())?;
+    generate_layout(description.as_ref(), out_dir.as_ref(), Language::Rust)
+}
+
+/// Writes only the C layout (`<stem>_layout.h`) and the support header it
+/// includes (`gsdc_support.h`) into `out_dir`; returns the layout's path.
+/// For a crate that builds C firmware (with the `cc` crate, say) or hands
+/// the header to a C build.
+pub fn generate_c(
+    description: impl AsRef<Path>,
+    out_dir: impl AsRef<Path>,
+) -> Result<PathBuf, BuildError> {
+    generate_layout(description.as_ref(), out_dir.as_ref(), Language::C)
+}
+
+/// The layout of `language` and its support, the layout first.
+fn generate_layout(
+    description: &Path,
+    out_dir: &Path,
+    language: Language,
+) -> Result<PathBuf, BuildError> {
+    let artifacts = compile_file(description)?;
     let layout: Vec<Artifact> = artifacts
         .into_iter()
-        .filter(|a| matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::RustSupport))
+        .filter(|a| a.kind.language() == Some(language))
         .collect();
     if layout.is_empty() {
-        return Err(BuildError(
-            "the description gives no firmware layout".into(),
-        ));
+        return Err(BuildError(format!(
+            "the description gives no {} firmware layout",
+            language.name()
+        )));
     }
-    let mut paths = write(&layout, out_dir.as_ref())?;
+    let mut paths = write(&layout, out_dir)?;
     Ok(paths.remove(0))
 }
 

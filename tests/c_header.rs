@@ -117,7 +117,9 @@ fn artifacts(name: &str) -> Vec<Artifact> {
 /// The text of the one artifact of `kind` that `name` gives.
 fn artifact(name: &str, kind: ArtifactKind) -> (String, String) {
     let mut found = artifacts(name).into_iter().filter(|a| a.kind == kind);
-    let artifact = found.next().unwrap_or_else(|| panic!("{name}: no {kind:?}"));
+    let artifact = found
+        .next()
+        .unwrap_or_else(|| panic!("{name}: no {kind:?}"));
     assert!(found.next().is_none(), "{name}: two {kind:?}");
     (
         artifact.file_name,
@@ -228,12 +230,21 @@ fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
         let text = header(name);
         assert_eq!(includes(&text), ["#include \"gsdc_support.h\""], "{name}");
         for text in [&text, &support] {
-            for banned in ["union", "packed", "#pragma", "__attribute__", "malloc", "free("] {
+            for banned in [
+                "union",
+                "packed",
+                "#pragma",
+                "__attribute__",
+                "malloc",
+                "free(",
+            ] {
                 assert!(!text.contains(banned), "{name}: {banned}");
             }
             // A bit field is `type name : width;` inside a struct.
             assert!(
-                !text.lines().any(|l| l.starts_with("    ") && l.contains(" : ")),
+                !text
+                    .lines()
+                    .any(|l| l.starts_with("    ") && l.contains(" : ")),
                 "{name}"
             );
             let long: Vec<_> = text.lines().filter(|l| l.chars().count() > 100).collect();
@@ -398,5 +409,25 @@ fn a_layout_refuses_the_support_header_of_another_release() {
     assert!(
         stderr.contains("the MD810DP layout needs the gsdc_support.h that gsdc"),
         "{stderr}"
+    );
+}
+
+/// The build-script API writes the C layout and its support header, and
+/// nothing else.
+#[test]
+fn generate_c_writes_the_layout_and_its_support_header() {
+    let dir = scratch_dir("generate-c");
+    let description = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/md810dp.toml");
+    let layout = gsdc::build::generate_c(&description, &dir).unwrap();
+    assert_eq!(layout, dir.join("md810dp_layout.h"));
+    let mut written: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    written.sort();
+    assert_eq!(written, ["gsdc_support.h", "md810dp_layout.h"]);
+    assert_eq!(
+        std::fs::read_to_string(&layout).unwrap(),
+        header("md810dp.toml")
     );
 }

@@ -38,7 +38,6 @@ const WIDTH: usize = 80;
 struct Context {
     header: String,
     generator: &'static str,
-    file_name: String,
     guard: String,
     /// The prefix, upper and lower case, without the underscore.
     p: String,
@@ -265,7 +264,6 @@ fn support_version() -> u32 {
 fn context(ir: &Ir) -> Context {
     let prefix = prefix(ir);
     let (p, l) = (prefix.upper_snake(), prefix.snake());
-    let file_name = file_name(ir);
     let names = Names { p: &p, l: &l };
     Context {
         header: header(ir, &p, &l),
@@ -287,7 +285,6 @@ fn context(ir: &Ir) -> Context {
             .collect(),
         profibus: ir.profibus.as_ref().map(|pb| profibus_items(&names, pb)),
         profinet: ir.profinet.as_ref().map(|pn| profinet_items(&names, pn)),
-        file_name,
         p,
         l,
     }
@@ -944,7 +941,7 @@ fn declared_names(text: &str) -> Vec<String> {
         } else if line.starts_with("static inline ") {
             line.split('(')
                 .next()
-                .and_then(|head| head.split(' ').last())
+                .and_then(|head| head.rsplit(' ').next())
         } else if line.starts_with("typedef ") && line.contains("(*") {
             line.split("(*").nth(1).and_then(identifier_at_start)
         } else {
@@ -1117,6 +1114,22 @@ mod tests {
         assert_eq!(messages.len(), 2, "{messages:?}");
         assert!(messages[0].contains("`GSDC_PKW_BYTES` without the prefix MD810DP_"));
         assert!(messages[1].contains("`GSDC_PKW_BYTES` twice"));
+    }
+
+    /// Rust keeps a field's mask and its values apart; C does not: a value
+    /// named "Mask" is refused, and nothing is written.
+    #[test]
+    fn a_description_whose_names_meet_in_c_gives_no_files() {
+        let text = include_str!("../../descriptions/mv810-pnet02.toml")
+            .replace("en = \"Asynchronous\"", "en = \"Mask\"");
+        let ir = load("mv810-pnet02.toml", &text);
+        let problems = crate::compile(&ir).unwrap_err();
+        let messages: Vec<_> = problems.iter().map(|d| d.message.as_str()).collect();
+        assert_eq!(
+            messages,
+            ["gsdc generated mv810_pnet02_layout.h declaring \
+              `MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK` twice; nothing was written"]
+        );
     }
 
     #[test]
