@@ -431,3 +431,57 @@ fn generate_c_writes_the_layout_and_its_support_header() {
         header("md810dp.toml")
     );
 }
+
+/// `text` without the TOML tables named in `tables` (each up to the next
+/// table).
+fn without_tables(text: &str, tables: &[&str]) -> String {
+    let mut dropping = false;
+    let mut out = String::new();
+    for line in text.lines() {
+        if line.starts_with('[') {
+            dropping = tables.contains(&line.trim());
+        }
+        if !dropping {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// The least a PROFIBUS description can hold (9kdp1.toml without its
+/// mappings, words and diagnosis: User_Prm_Data of no bytes) still gives a
+/// header every compiler takes: no empty struct, no unused parameter.
+#[test]
+fn a_description_with_the_least_in_it_gives_a_header_that_compiles() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/9kdp1.toml");
+    let text = without_tables(
+        &std::fs::read_to_string(path).unwrap(),
+        &[
+            "[telegram.control_word]",
+            "[telegram.status_word]",
+            "[mappings.pzd_out]",
+            "[mappings.pzd_in]",
+            "[profibus.diagnosis]",
+            "[[profibus.diagnosis.areas]]",
+        ],
+    );
+    let (ir, diagnostics) = gsdc::load("bare.toml", &text);
+    assert!(!diagnostics.has_errors(), "{diagnostics:?}");
+    let dir = scratch_dir("bare");
+    for a in gsdc::compile(&ir.unwrap()).unwrap() {
+        if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
+            std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
+        }
+    }
+    let header = std::fs::read_to_string(dir.join("bare_layout.h")).unwrap();
+    assert!(header.contains("#define BARE_USER_PRM_LEN 0U"), "{header}");
+    assert!(!header.contains("bare_user_prm_t"), "{header}");
+    let source = dir.join("bare.c");
+    std::fs::write(&source, "#include \"bare_layout.h\"\n").unwrap();
+    for build in builds() {
+        let mut command = build.command(&dir, &["-c", "-o"]);
+        command.arg(dir.join("bare.o")).arg(&source);
+        assert_success(&build.name(), &run(command));
+    }
+}

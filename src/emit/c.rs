@@ -150,6 +150,8 @@ struct ProfibusItems {
     ident_number: String,
     configs: Vec<ConfigItem>,
     user_prm_len: u16,
+    /// Whether User_Prm_Data has anything to decode.
+    user_prm_fields: bool,
     dpv1_status: Option<String>,
     diagnosis: Option<DiagnosisItems>,
 }
@@ -681,6 +683,7 @@ fn profibus_items(names: &Names, p: &Profibus) -> ProfibusItems {
             })
             .collect(),
         user_prm_len: p.user_prm.len,
+        user_prm_fields: p.dpv1.is_some() || !p.user_prm.blocks.is_empty(),
         dpv1_status: p.dpv1.map(|d| {
             initializer(
                 &names.upper("user_prm_dpv1_status"),

@@ -141,15 +141,13 @@ static inline gsdc_prm_result_t gsdc_prm_check_len(size_t len, size_t expected)
     return result;
 }
 
-/* Reads `count` Unsigned16 values from byte `offset` of `bytes` (`len` bytes
- * long) into `values`, each checked with `allows`. The result is
- * GSDC_PRM_LENGTH when they do not fit in `len` bytes, GSDC_PRM_NOT_ALLOWED
- * for the first value `allows` refuses, else GSDC_PRM_OK; `values` is
- * written only when it is GSDC_PRM_OK. */
-static inline gsdc_prm_result_t gsdc_prm_read_values(const uint8_t *bytes, size_t len,
-                                                     size_t offset, size_t count,
-                                                     gsdc_entry_allows_t allows,
-                                                     uint16_t *values)
+/* Checks `count` Unsigned16 values from byte `offset` of `bytes` (`len`
+ * bytes long), each with `allows`: GSDC_PRM_LENGTH when they do not fit in
+ * `len` bytes, GSDC_PRM_NOT_ALLOWED for the first value `allows` refuses,
+ * else GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_prm_check_values(const uint8_t *bytes, size_t len,
+                                                      size_t offset, size_t count,
+                                                      gsdc_entry_allows_t allows)
 {
     gsdc_prm_result_t result = gsdc_prm_ok();
     size_t i;
@@ -167,10 +165,30 @@ static inline gsdc_prm_result_t gsdc_prm_read_values(const uint8_t *bytes, size_
             result.value = value;
         }
     }
+    return result;
+}
+
+/* Copies `count` Unsigned16 values from byte `offset` of `bytes` into
+ * `values`; gsdc_prm_check_values has found them there. */
+static inline void gsdc_prm_get_values(const uint8_t *bytes, size_t offset, size_t count,
+                                       uint16_t *values)
+{
+    size_t i;
+    for (i = 0U; i < count; i++) {
+        values[i] = gsdc_word_get(&bytes[offset], i);
+    }
+}
+
+/* gsdc_prm_check_values, then, when the result is GSDC_PRM_OK,
+ * gsdc_prm_get_values: `values` is written only then. */
+static inline gsdc_prm_result_t gsdc_prm_read_values(const uint8_t *bytes, size_t len,
+                                                     size_t offset, size_t count,
+                                                     gsdc_entry_allows_t allows,
+                                                     uint16_t *values)
+{
+    gsdc_prm_result_t result = gsdc_prm_check_values(bytes, len, offset, count, allows);
     if (result.fault == GSDC_PRM_OK) {
-        for (i = 0U; i < count; i++) {
-            values[i] = gsdc_word_get(&bytes[offset], i);
-        }
+        gsdc_prm_get_values(bytes, offset, count, values);
     }
     return result;
 }
