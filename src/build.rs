@@ -22,6 +22,10 @@
 //! }
 //! ```
 //!
+//! For C firmware, [`generate_c`] writes `md810dp_layout.h` and
+//! `gsdc_support.h` instead ([`generate`] writes every file: device files and
+//! both layouts).
+//!
 //! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
 //! again when the description changes, and writes only files whose content
 //! changed. Warnings (placeholder ident numbers) become `cargo:warning`
@@ -42,7 +46,7 @@ use crate::diag::{Diagnostic, Diagnostics, Severity, Source};
 use crate::file_kind::{self, FileKind};
 use crate::output::{read_input, write_files, ReadError, WriteError};
 use crate::xsd::Schema;
-use crate::{Artifact, ArtifactKind};
+use crate::{Artifact, ArtifactKind, Language};
 use std::fmt;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -69,7 +73,18 @@ pub fn generate_rust(
     description: impl AsRef<Path>,
     out_dir: impl AsRef<Path>,
 ) -> Result<PathBuf, BuildError> {
-    Config::new().generate_rust(description, out_dir)
+    Config::new().generate_layout(description, out_dir, Language::Rust)
+}
+
+/// Writes only the C layout (`<stem>_layout.h`) and the support header it
+/// includes (`gsdc_support.h`) into `out_dir`; returns the layout's path.
+/// For a crate that builds C firmware (with the `cc` crate, say) or hands
+/// the header to a C build. [`Config::new`]'s settings.
+pub fn generate_c(
+    description: impl AsRef<Path>,
+    out_dir: impl AsRef<Path>,
+) -> Result<PathBuf, BuildError> {
+    Config::new().generate_layout(description, out_dir, Language::C)
 }
 
 /// How descriptions are built.
@@ -77,6 +92,7 @@ pub fn generate_rust(
 pub struct Config {
     deny_warnings: bool,
     xsd: Option<PathBuf>,
+    firmware: Vec<Language>,
 }
 
 impl Default for Config {
@@ -95,7 +111,15 @@ impl Config {
         Config {
             deny_warnings: false,
             xsd,
+            firmware: Language::ALL.to_vec(),
         }
+    }
+
+    /// The languages whose firmware layouts (and support files) are
+    /// written; both by default, none for device files alone.
+    pub fn firmware(&mut self, languages: &[Language]) -> &mut Self {
+        self.firmware = languages.to_vec();
+        self
     }
 
     /// With `true`, a description with any warning (a placeholder ident
@@ -125,23 +149,25 @@ impl Config {
         write(&files, out_dir.as_ref())
     }
 
-    /// Writes only the firmware layout (`<stem>_layout.rs`) and the support
-    /// module it is built from (`gsdc_support.rs`) into `out_dir`;
-    /// returns its path. No GSDML is written, so none is validated: a
-    /// firmware crate builds without the `xsd` feature whatever
-    /// [`XSD_ENV`] says.
-    pub fn generate_rust(
+    /// Writes only the firmware layout in `language` (`<stem>_layout.rs`
+    /// or `<stem>_layout.h`) and the support file it is built from into
+    /// `out_dir`; returns the layout's path. No GSDML is written, so none is
+    /// validated: firmware crates need no libxml2.
+    pub fn generate_layout(
         &self,
         description: impl AsRef<Path>,
         out_dir: impl AsRef<Path>,
+        language: Language,
     ) -> Result<PathBuf, BuildError> {
         let description = description.as_ref();
-        let files: Vec<Artifact> = self
+        let mut files: Vec<Artifact> = self
             .build_script_compile(description, false)?
             .into_iter()
-            .filter(|a| matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::RustSupport))
+            .filter(|a| a.kind.language() == Some(language))
             .collect();
-        if !files.iter().any(|a| a.kind == ArtifactKind::RustLayout) {
+        // The layout first: its path is the one returned.
+        files.sort_by_key(|a| !matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::CHeader));
+        if files.is_empty() {
             return Err(BuildError::Description {
                 path: description.to_path_buf(),
                 rendered: "the description gives no firmware layout".into(),
@@ -167,6 +193,7 @@ impl Config {
         Ok(Compiler {
             deny_warnings: self.deny_warnings,
             schema,
+            firmware: self.firmware.clone(),
         })
     }
 
@@ -210,6 +237,8 @@ impl Config {
 pub struct Compiler {
     deny_warnings: bool,
     schema: Option<Schema>,
+    /// The languages whose firmware layouts a build writes.
+    firmware: Vec<Language>,
 }
 
 /// What one description gave: what to show, and the files or why there are
@@ -310,7 +339,10 @@ impl Compiler {
         let Loaded { findings, ir } = load_file(path, name)?;
         let mut description = findings;
         let files = match ir.map(|ir| crate::compile(&ir)) {
-            Some(Ok(files)) => Some(files),
+            Some(Ok(mut files)) => {
+                files.retain(|f| f.kind.language().is_none_or(|l| self.firmware.contains(&l)));
+                Some(files)
+            }
             Some(Err(problems)) => {
                 description.diagnostics.extend(problems);
                 None

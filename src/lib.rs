@@ -28,7 +28,7 @@ pub mod output;
 pub mod xsd;
 
 pub use diag::{Diagnostic, Diagnostics, Severity, Source};
-pub use emit::{Artifact, ArtifactKind};
+pub use emit::{Artifact, ArtifactKind, Language};
 pub use ir::Ir;
 
 /// Names the generator in the headers of generated files.

@@ -61,7 +61,11 @@ fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
     assert_eq!(std::fs::read_dir(&out).unwrap().count(), 0);
 
     let paths = Config::new().generate(&md810, &out).unwrap();
-    assert_eq!(paths.len(), 4);
+    assert_eq!(
+        paths.len(),
+        6,
+        "device files, both layouts and their support files"
+    );
     assert!(paths.iter().all(|p| p.is_file()));
     std::fs::remove_dir_all(out).unwrap();
 }
@@ -202,13 +206,17 @@ fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
     assert!(!out.exists());
     let layout = Config::new()
         .xsd(&refusing)
-        .generate_rust(&mv810, &out)
+        .generate_layout(&mv810, &out, gsdc::Language::Rust)
         .unwrap();
     assert_eq!(layout, out.join("mv810_pnet02_layout.rs"));
     let passed = Config::new()
         .xsd(pi_schema())
         .generate(&mv810, &out)
         .unwrap();
-    assert_eq!(passed.len(), 3);
+    assert_eq!(
+        passed.len(),
+        5,
+        "the GSDML, both layouts and their support files"
+    );
     std::fs::remove_dir_all(dir).unwrap();
 }

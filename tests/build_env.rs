@@ -24,7 +24,7 @@ fn the_environment_variable_names_the_schema_of_every_build() {
     std::env::set_var(gsdc::build::XSD_ENV, "");
     assert_eq!(
         gsdc::build::generate(&mv810, &out).unwrap().len(),
-        3,
+        5,
         "empty is unset"
     );
     std::env::remove_var(gsdc::build::XSD_ENV);

@@ -58,6 +58,8 @@ fn build_writes_the_gsd_and_exits_0() {
         "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
         "md810dp_layout.rs",
         "gsdc_support.rs",
+        "md810dp_layout.h",
+        "gsdc_support.h",
     ] {
         assert!(
             written.iter().any(|f| f == expected),
@@ -428,7 +430,7 @@ fn deny_warnings_refuses_a_description_with_warnings_and_passes_one_without() {
     let passed = gsdc(&["build", NO_WARNINGS, "--out", out_arg, "--deny-warnings"]);
     assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
     assert!(!stderr(&passed).contains("warning"), "{}", stderr(&passed));
-    assert_eq!(files_in(&out).len(), 4);
+    assert_eq!(files_in(&out).len(), 6);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -440,8 +442,8 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
     let dir = scratch("collide");
     let out = dir.join("out");
     let out_arg = out.to_str().unwrap();
-    // x-y.toml and x_y.toml both give x_y_layout.rs; the second has another
-    // GSD file name, so the layout is the only file they share.
+    // x-y.toml and x_y.toml both give x_y_layout.rs (and .h); the second
+    // has another GSD file name, so the layouts are the only files they share.
     let dashed = md810_copy(&dir, "x-y.toml", &[]);
     let underscored = md810_copy(
         &dir,
@@ -466,7 +468,8 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
         underscored.display()
     );
     assert!(said.contains(&expected), "{said}");
-    assert_eq!(said.matches("both give").count(), 1, "{said}");
+    assert!(said.contains("both give x_y_layout.h"), "{said}");
+    assert_eq!(said.matches("both give").count(), 2, "{said}");
     assert!(said.contains("nothing written"), "{said}");
     assert!(!out.exists());
 
@@ -499,8 +502,8 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
         out_arg,
     ]);
     assert_eq!(twice.status.code(), Some(0), "{}", stderr(&twice));
-    assert_eq!(stdout(&twice).matches("wrote").count(), 4);
-    assert_eq!(files_in(&out).len(), 4);
+    assert_eq!(stdout(&twice).matches("wrote").count(), 6);
+    assert_eq!(files_in(&out).len(), 6);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -577,7 +580,9 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
             "GSDML-V2.32-INOVANCE-MD810-20261123.xml",
             "MD810DP2.GSD",
             "README.txt",
+            "gsdc_support.h",
             "gsdc_support.rs",
+            "md810dp_layout.h",
             "md810dp_layout.rs"
         ]
     );
@@ -663,7 +668,7 @@ fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
         assert!(!stderr(&output).contains("panicked"), "{}", stderr(&output));
     }
     // The files were written all the same; only the report was lost.
-    assert_eq!(files_in(&out).len(), 4);
+    assert_eq!(files_in(&out).len(), 6);
 
     // The corpus has files with errors: exit 1, as if all was read.
     let piped = Command::new("bash")
@@ -702,7 +707,7 @@ fn build_xsd_validates_each_gsdml_before_anything_is_written() {
     args.extend(all);
     let passed = gsdc(&args);
     assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
-    assert_eq!(files_in(&out).len(), 8, "9kdp1 is PROFIBUS only");
+    assert_eq!(files_in(&out).len(), 12, "9kdp1 is PROFIBUS only");
     std::fs::remove_dir_all(&out).unwrap();
 
     let refusing = refusing_schema(&dir);

@@ -16,11 +16,13 @@ use std::process::{Command, Output};
 
 const MD810: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions/md810dp.toml");
 /// What `gsdc build` writes for the MD810, in the order it writes them.
-const MD810_FILES: [&str; 4] = [
+const MD810_FILES: [&str; 6] = [
     "MD810DP.GSD",
     "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
     "md810dp_layout.rs",
     "gsdc_support.rs",
+    "md810dp_layout.h",
+    "gsdc_support.h",
 ];
 
 fn scratch(name: &str) -> PathBuf {
@@ -318,10 +320,10 @@ impl TwoVersions {
             files.sort();
             files
         });
-        // The support module is every build's; each other file tells the
+        // The support files are every build's; each other file tells the
         // versions apart.
         for ((name_a, a), (_, b)) in sets[0].iter().zip(&sets[1]) {
-            if name_a != "gsdc_support.rs" {
+            if !name_a.starts_with("gsdc_support.") {
                 assert_ne!(a, b, "{name_a} is the same in both versions");
             }
         }

@@ -8,11 +8,12 @@
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
 use gsdc::build::{merge, Compiler, Config, Refused};
 use gsdc::output::{is_up_to_date, stale_files, write_files, Outcome};
-use gsdc::Artifact;
+use gsdc::{Artifact, Language};
 use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Examples:
   gsdc build descriptions/md810dp.toml --out dist
+  gsdc build descriptions/md810dp.toml --out dist --firmware c   # the C header, no Rust layout
   gsdc build descriptions/*.toml --out dist --check          # in CI: are the shipped files in step?
   gsdc build descriptions/*.toml --out dist --prune          # and remove what no description gives any more
   gsdc build descriptions/*.toml --out dist --deny-warnings  # a shipping build: no placeholder left
@@ -42,15 +43,46 @@ pub struct Args {
     /// Exit 1 and write nothing while any description has a warning.
     #[arg(long)]
     deny_warnings: bool,
+    /// The languages of the firmware layouts to write, with their support
+    /// files: rust, c, both (the default) or none (device files only).
+    #[arg(
+        long,
+        value_name = "LANGS",
+        value_delimiter = ',',
+        default_value = "rust,c"
+    )]
+    firmware: Vec<Firmware>,
     /// Validate each GSDML against the PI schema in DIR (GSDML-DeviceProfile-v2.44.xsd
     /// and its imports) before anything is written; needs the `xsd` feature.
     #[arg(long, value_name = "DIR", env = gsdc::build::XSD_ENV)]
     xsd: Option<PathBuf>,
 }
 
+/// A `--firmware` value.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Firmware {
+    Rust,
+    C,
+    None,
+}
+
+impl Firmware {
+    fn languages(values: &[Firmware]) -> Vec<Language> {
+        values
+            .iter()
+            .filter_map(|v| match v {
+                Firmware::Rust => Some(Language::Rust),
+                Firmware::C => Some(Language::C),
+                Firmware::None => None,
+            })
+            .collect()
+    }
+}
+
 pub fn run(args: &Args) -> Status {
     let mut config = Config::new();
     config.deny_warnings(args.deny_warnings);
+    config.firmware(&Firmware::languages(&args.firmware));
     if let Some(dir) = &args.xsd {
         config.xsd(dir);
     }

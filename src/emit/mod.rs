@@ -1,5 +1,6 @@
 //! Emitters: the IR to file contents, each verified before it is returned.
 
+pub mod c;
 pub mod doc;
 pub mod gsd;
 pub mod gsdml;
@@ -29,17 +30,70 @@ pub enum ArtifactKind {
     RustLayout,
     /// The support module every Rust layout is built from, the same for all.
     RustSupport,
+    /// The C firmware layout (a header) of one description.
+    CHeader,
+    /// The support header every C layout includes, the same for all.
+    CSupport,
     /// The datasheet as one HTML page (`gsdc doc`).
     DatasheetHtml,
     /// The datasheet in Markdown (`gsdc doc`).
     DatasheetMarkdown,
 }
 
+/// A language firmware is written in: the edges let users choose which
+/// layouts they get (`gsdc build`, the build-script API).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
+pub enum Language {
+    Rust,
+    C,
+}
+
+impl Language {
+    pub const ALL: [Language; 2] = [Language::Rust, Language::C];
+
+    /// `rust` and `c`, as a command line or a configuration names them.
+    pub fn name(self) -> &'static str {
+        match self {
+            Language::Rust => "rust",
+            Language::C => "c",
+        }
+    }
+}
+
 impl ArtifactKind {
-    /// Device files ship to PLC engineers; the others go into firmware.
+    /// Device files ship to PLC engineers; layouts go into firmware;
+    /// datasheets into manuals.
     pub fn is_device_file(self) -> bool {
         matches!(self, ArtifactKind::Gsd | ArtifactKind::Gsdml)
     }
+
+    /// The language of a firmware file (a layout or its support); `None`
+    /// for device files and datasheets. An edge that writes the layouts of
+    /// some languages only keeps the artifacts whose language it was asked for.
+    pub fn language(self) -> Option<Language> {
+        match self {
+            ArtifactKind::RustLayout | ArtifactKind::RustSupport => Some(Language::Rust),
+            ArtifactKind::CHeader | ArtifactKind::CSupport => Some(Language::C),
+            ArtifactKind::Gsd
+            | ArtifactKind::Gsdml
+            | ArtifactKind::DatasheetHtml
+            | ArtifactKind::DatasheetMarkdown => None,
+        }
+    }
+}
+
+/// The file stem of a description's layouts: `md810dp` for `md810dp.toml`,
+/// `mv810_pnet02` for `mv810-pnet02.toml` (`_` for `-`, as Rust names its
+/// source files).
+fn layout_stem(ir: &Ir) -> String {
+    let stem = std::path::Path::new(&ir.source_name)
+        .file_stem()
+        .map_or_else(
+            || ir.source_name.clone(),
+            |s| s.to_string_lossy().into_owned(),
+        );
+    stem.replace('-', "_")
 }
 
 /// What every generated file's header says beyond its origin: which
@@ -108,13 +162,23 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
             contents: text.into_bytes(),
         });
     }
-    // The layout is checked by the tests that compile it (tests/generated_rust.rs).
+    // The layouts are checked by the tests that compile them
+    // (tests/generated_rust.rs, tests/c_header.rs); the C layout's names here.
     artifacts.push(Artifact {
         kind: ArtifactKind::RustLayout,
         file_name: rust::file_name(ir),
         contents: rust::emit(ir).into_bytes(),
     });
     artifacts.push(rust::support_module());
+    let header = c::emit(ir);
+    let header_name = c::file_name(ir);
+    problems.extend(c::verify(ir, &header_name, &header));
+    artifacts.push(Artifact {
+        kind: ArtifactKind::CHeader,
+        file_name: header_name,
+        contents: header.into_bytes(),
+    });
+    artifacts.push(c::support_header());
     if problems.has_errors() {
         return Err(problems);
     }

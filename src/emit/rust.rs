@@ -263,13 +263,7 @@ fn indent(out: &mut String, text: &str, levels: usize) {
 /// `md810dp.toml` gives `md810dp_layout.rs`, `mv810-pnet02.toml`
 /// `mv810_pnet02_layout.rs`: `_` for `-`, as Rust names its source files.
 pub fn file_name(ir: &Ir) -> String {
-    let stem = std::path::Path::new(&ir.source_name)
-        .file_stem()
-        .map_or_else(
-            || ir.source_name.clone(),
-            |s| s.to_string_lossy().into_owned(),
-        );
-    format!("{}_layout.rs", stem.replace('-', "_"))
+    format!("{}_layout.rs", super::layout_stem(ir))
 }
 
 fn context(ir: &Ir) -> Context<'_> {

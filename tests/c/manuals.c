@@ -1,0 +1,612 @@
+/* The manuals' telegram examples, byte for byte, through the generated C
+ * layouts: decoded with the layouts' names and encoded back. The same
+ * examples as the Rust firmware crate's tests/firmware/tests/manuals.rs,
+ * and what C adds: encoders that refuse what the manuals call illegal.
+ *
+ * tests/c_header.rs compiles it as C and as C++, runs it, and compares the
+ * tests it names with the list it expects. It defines GSD_MAX_USER_PRM_DATA_LEN
+ * and GSD_MAX_DIAG_DATA_LEN from the GSD generated beside the MD810 layout. */
+#include "md810dp_layout.h"
+#include "mv810_pnet02_layout.h"
+#include "9kdp1_layout.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#ifndef GSD_MAX_USER_PRM_DATA_LEN
+#error "the test defines GSD_MAX_USER_PRM_DATA_LEN from MD810DP.GSD"
+#endif
+#ifndef GSD_MAX_DIAG_DATA_LEN
+#error "the test defines GSD_MAX_DIAG_DATA_LEN from MD810DP.GSD"
+#endif
+
+static int failures = 0;
+
+/* Counts a failed check, naming it and its line. */
+static void check(bool ok, const char *what, int line)
+{
+    if (!ok) {
+        failures++;
+        printf("manuals.c:%d: failed: %s\n", line, what);
+    }
+}
+
+#define CHECK(condition) check((condition), #condition, __LINE__)
+
+/* "10F0 0800 0000 1388", as the manuals print telegrams: hex words, into
+ * `out`, which must be exactly as long. */
+static void words(const char *hex, uint8_t *out, size_t len)
+{
+    size_t at = 0U;
+    const char *p = hex;
+    for (;;) {
+        char *end = NULL;
+        unsigned long word = strtoul(p, &end, 16);
+        if (end == p) {
+            break;
+        }
+        if (at + 2U <= len) {
+            out[at] = (uint8_t)(word >> 8U);
+            out[at + 1U] = (uint8_t)(word & 0xFFU);
+        }
+        at += 2U;
+        p = end;
+    }
+    CHECK(at == len);
+}
+
+static bool same_bytes(const uint8_t *a, const uint8_t *b, size_t len)
+{
+    size_t i;
+    for (i = 0U; i < len; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static bool same_values(const uint16_t *a, const uint16_t *b, size_t count)
+{
+    size_t i;
+    for (i = 0U; i < count; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* ------------------------------------------------------------------------
+ * MD810 */
+
+/* F0-08, by the manual's numbering (1.4.1): 0xFxyy. */
+#define F0_08 0xF008U
+
+/* A PPO1 telegram carrying `pkw` and the PZD words 0001 1388. */
+static void ppo1(const char *pkw, uint8_t telegram[MD810DP_PPO1_BYTES])
+{
+    uint8_t pzd[4];
+    words(pkw, telegram, GSDC_PKW_BYTES);
+    words("0001 1388", pzd, sizeof pzd);
+    gsdc_copy_bytes(&telegram[MD810DP_PPO1_PZD_OFFSET], pzd, sizeof pzd);
+}
+
+/* Manual 1.4.2, figure 6: the master reads F0-08. */
+static void md810_read_f0_08(void)
+{
+    md810dp_ppo1_out_t out;
+    gsdc_pke_request_t request;
+    uint8_t again[MD810DP_PPO1_BYTES] = {0};
+    ppo1("10F0 0800 0000 0000", out.bytes);
+    CHECK(gsdc_pke_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+    CHECK(request.command == GSDC_PKE_READ);
+    CHECK(request.address == F0_08);
+    CHECK(gsdc_word_get(&out.bytes[MD810DP_PPO1_PZD_OFFSET], 0U) == 0x0001U);
+    CHECK(gsdc_word_get(&out.bytes[MD810DP_PPO1_PZD_OFFSET], 1U) == 0x1388U);
+    CHECK(gsdc_pke_request_encode(&request, again) == GSDC_PKW_OK);
+    CHECK(same_bytes(again, out.bytes, GSDC_PKW_BYTES));
+}
+
+/* Figure 6: the drive answers 5000, 50.00 Hz. */
+static void md810_answer_50_hz(void)
+{
+    md810dp_ppo1_in_t answer;
+    md810dp_ppo1_in_t sent;
+    gsdc_pke_response_t response;
+    gsdc_pke_response_t done;
+    ppo1("10F0 0800 0000 1388", answer.bytes);
+    CHECK(gsdc_pke_response_decode(answer.bytes, &response) == GSDC_PKW_OK);
+    CHECK(response.code == GSDC_PKE_DONE);
+    CHECK(response.address == F0_08);
+    CHECK(response.value == 5000U);
+    done.code = GSDC_PKE_DONE;
+    done.address = F0_08;
+    done.value = 5000U;
+    sent = answer;
+    words("FFFF FFFF FFFF FFFF", sent.bytes, GSDC_PKW_BYTES);
+    CHECK(gsdc_pke_response_encode(&done, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, answer.bytes, MD810DP_PPO1_BYTES));
+}
+
+/* Figure 7: the master writes 20.00 Hz to F0-08. */
+static void md810_write_20_hz(void)
+{
+    md810dp_ppo1_out_t out;
+    md810dp_ppo1_out_t sent;
+    gsdc_pke_request_t request;
+    gsdc_pke_request_t write;
+    ppo1("20F0 0800 0000 07D0", out.bytes);
+    CHECK(gsdc_pke_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+    CHECK(request.command == GSDC_PKE_WRITE);
+    CHECK(request.address == F0_08);
+    CHECK(request.value == 2000U);
+    write.command = GSDC_PKE_WRITE;
+    write.address = F0_08;
+    write.value = 2000U;
+    sent = out;
+    CHECK(gsdc_pke_request_encode(&write, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, out.bytes, MD810DP_PPO1_BYTES));
+}
+
+/* Figures 6 and 7: "cannot execute", with error codes 1 to 4. */
+static void md810_error_answers(void)
+{
+    static const char *const telegrams[4] = {
+        "70F0 0800 0000 0001",
+        "70F0 0800 0000 0002",
+        "70F0 0800 0000 0003",
+        "70F0 0800 0000 0004",
+    };
+    static const uint16_t errors[4] = {
+        GSDC_PKE_ERROR_ILLEGAL_COMMAND,
+        GSDC_PKE_ERROR_ILLEGAL_ADDRESS,
+        GSDC_PKE_ERROR_ILLEGAL_DATA,
+        GSDC_PKE_ERROR_OTHER,
+    };
+    size_t i;
+    for (i = 0U; i < 4U; i++) {
+        md810dp_ppo1_in_t answer;
+        md810dp_ppo1_in_t sent;
+        gsdc_pke_response_t failed;
+        gsdc_pke_response_t decoded;
+        ppo1(telegrams[i], answer.bytes);
+        failed.code = GSDC_PKE_CANNOT_EXECUTE;
+        failed.address = F0_08;
+        failed.value = errors[i];
+        CHECK(gsdc_pke_response_decode(answer.bytes, &decoded) == GSDC_PKW_OK);
+        CHECK(decoded.code == failed.code);
+        CHECK(decoded.address == failed.address);
+        CHECK(decoded.value == failed.value);
+        sent = answer;
+        CHECK(gsdc_pke_response_encode(&failed, sent.bytes) == GSDC_PKW_OK);
+        CHECK(same_bytes(sent.bytes, answer.bytes, MD810DP_PPO1_BYTES));
+    }
+}
+
+/* Commands and codes the manual does not define are refused both ways; an
+ * encoder that refuses writes nothing. */
+static void md810_illegal_telegrams_are_refused(void)
+{
+    uint8_t telegram[MD810DP_PPO1_BYTES];
+    uint8_t untouched[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    uint8_t pkw[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    gsdc_pke_request_t request;
+    gsdc_pke_response_t response;
+    ppo1("30F0 0800 0000 0000", telegram);
+    CHECK(gsdc_pke_request_decode(telegram, &request) == GSDC_PKW_BAD_COMMAND);
+    CHECK(request.command == 3U);
+    CHECK(request.address == F0_08);
+    ppo1("70F0 0800 0000 0009", telegram);
+    CHECK(gsdc_pke_response_decode(telegram, &response) == GSDC_PKW_BAD_ERROR_CODE);
+    CHECK(response.value == 9U);
+    ppo1("20F0 0800 0000 0009", telegram);
+    CHECK(gsdc_pke_response_decode(telegram, &response) == GSDC_PKW_BAD_RESPONSE);
+    CHECK(gsdc_pke_request_encode(&request, pkw) == GSDC_PKW_BAD_COMMAND);
+    response.code = GSDC_PKE_CANNOT_EXECUTE;
+    response.value = 5U;
+    CHECK(gsdc_pke_response_encode(&response, pkw) == GSDC_PKW_BAD_ERROR_CODE);
+    response.code = 2U;
+    CHECK(gsdc_pke_response_encode(&response, pkw) == GSDC_PKW_BAD_RESPONSE);
+    CHECK(same_bytes(pkw, untouched, GSDC_PKW_BYTES));
+}
+
+/* MD810's PPO5: the PKW and 12 PZD words, 32 bytes (1.3.1). */
+static void md810_ppo5_is_32_bytes(void)
+{
+    md810dp_ppo5_out_t out;
+    md810dp_ppo5_out_t sent;
+    gsdc_pke_request_t request;
+    size_t i;
+    words("10F0 0800 0000 0000 0001 0002 0003 0004 0005 0006 0007 0008 0009 000A 000B 000C",
+          out.bytes, sizeof out.bytes);
+    CHECK(sizeof(md810dp_ppo5_out_t) == 32U);
+    CHECK(sizeof(md810dp_ppo5_in_t) == 32U);
+    CHECK(MD810DP_PPO5_PZD_WORDS == 12U);
+    CHECK(gsdc_pke_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+    CHECK(request.command == GSDC_PKE_READ);
+    CHECK(request.address == F0_08);
+    for (i = 0U; i < MD810DP_PPO5_PZD_WORDS; i++) {
+        CHECK(gsdc_word_get(&out.bytes[MD810DP_PPO5_PZD_OFFSET], i) == i + 1U);
+    }
+    CHECK(gsdc_pke_request_encode(&request, sent.bytes) == GSDC_PKW_OK);
+    for (i = 0U; i < MD810DP_PPO5_PZD_WORDS; i++) {
+        gsdc_word_put(&sent.bytes[MD810DP_PPO5_PZD_OFFSET], i, (uint16_t)(i + 1U));
+    }
+    CHECK(same_bytes(sent.bytes, out.bytes, MD810DP_PPO5_BYTES));
+}
+
+/* The config identifiers of the PPO table (FIELDBUS-NOTES section 1). */
+static void md810_ppo_config_bytes(void)
+{
+    static const uint8_t ppo1_config[MD810DP_PPO1_CONFIG_LEN] = MD810DP_PPO1_CONFIG;
+    static const uint8_t ppo2_config[MD810DP_PPO2_CONFIG_LEN] = MD810DP_PPO2_CONFIG;
+    static const uint8_t ppo3_config[MD810DP_PPO3_CONFIG_LEN] = MD810DP_PPO3_CONFIG;
+    static const uint8_t ppo4_config[MD810DP_PPO4_CONFIG_LEN] = MD810DP_PPO4_CONFIG;
+    static const uint8_t ppo5_config[MD810DP_PPO5_CONFIG_LEN] = MD810DP_PPO5_CONFIG;
+    static const uint8_t f3f1[2] = {0xF3U, 0xF1U};
+    static const uint8_t f3f5[2] = {0xF3U, 0xF5U};
+    static const uint8_t f3fb[2] = {0xF3U, 0xFBU};
+    CHECK(same_bytes(ppo1_config, f3f1, 2U));
+    CHECK(same_bytes(ppo2_config, f3f5, 2U));
+    CHECK(ppo3_config[0] == 0xF1U);
+    CHECK(ppo4_config[0] == 0xF5U);
+    CHECK(same_bytes(ppo5_config, f3fb, 2U));
+}
+
+/* The parameter telegram with the GSD's defaults: the DPV1 status bytes,
+ * then F0-00 for each of PZD1..12 out, PZD1..12 in and Index0..5 (1.6). */
+static void md810_default_user_prm_is_f0_00_everywhere(void)
+{
+    static const uint8_t dpv1_status[3] = MD810DP_USER_PRM_DPV1_STATUS;
+    static const uint16_t pzd_out[MD810DP_PZD_OUT_COUNT] = MD810DP_PZD_OUT_DEFAULTS;
+    static const uint16_t pzd_in[MD810DP_PZD_IN_COUNT] = MD810DP_PZD_IN_DEFAULTS;
+    static const uint16_t dpv1_index[MD810DP_DPV1_INDEX_COUNT] = MD810DP_DPV1_INDEX_DEFAULTS;
+    uint8_t telegram[MD810DP_USER_PRM_LEN] = {0};
+    md810dp_user_prm_t prm;
+    size_t i;
+    CHECK(MD810DP_USER_PRM_LEN == GSD_MAX_USER_PRM_DATA_LEN);
+    for (i = 0U; i < 30U; i++) {
+        gsdc_u16be_put(&telegram[3U + 2U * i], 0xF000U);
+    }
+    CHECK(md810dp_decode_user_prm(telegram, sizeof telegram, &prm).fault == GSDC_PRM_OK);
+    CHECK(same_bytes(prm.dpv1_status, dpv1_status, 3U));
+    for (i = 0U; i < MD810DP_PZD_OUT_COUNT; i++) {
+        CHECK(prm.pzd_out[i] == 0xF000U);
+        CHECK(prm.pzd_in[i] == 0xF000U);
+    }
+    CHECK(prm.dpv1_index[5] == 0xF000U);
+    CHECK(same_values(prm.pzd_out, pzd_out, MD810DP_PZD_OUT_COUNT));
+    CHECK(same_values(prm.pzd_in, pzd_in, MD810DP_PZD_IN_COUNT));
+    CHECK(same_values(prm.dpv1_index, dpv1_index, MD810DP_DPV1_INDEX_COUNT));
+}
+
+/* The manual's example (1.6 step 5): Index0 = F0-02, Index1 = F0-08; a
+ * telegram one byte short is refused and leaves the decoded one as it was. */
+static void md810_user_prm_maps_dpv1_indexes(void)
+{
+    uint8_t telegram[MD810DP_USER_PRM_LEN] = {0};
+    md810dp_user_prm_t prm;
+    gsdc_prm_result_t result;
+    words("F002 F008", &telegram[MD810DP_DPV1_INDEX_USER_PRM_OFFSET], 4U);
+    CHECK(md810dp_decode_user_prm(telegram, sizeof telegram, &prm).fault == GSDC_PRM_OK);
+    CHECK(prm.dpv1_index[0] == 0xF002U);
+    CHECK(prm.dpv1_index[1] == 0xF008U);
+    CHECK(prm.dpv1_index[2] == 0U);
+    result = md810dp_decode_user_prm(&telegram[1], sizeof telegram - 1U, &prm);
+    CHECK(result.fault == GSDC_PRM_LENGTH);
+    CHECK(result.expected == 63U);
+    CHECK(result.found == 62U);
+    CHECK(prm.dpv1_index[1] == 0xF008U);
+}
+
+/* Manual 1.8: when the card loses the drive the device-related diagnosis
+ * is header 3, then 0x00 0x34; the GSD's Max_Diag_Data_Len is the 6
+ * standard bytes and this block. */
+static void md810_card_lost_the_drive_diagnosis(void)
+{
+    uint8_t block[MD810DP_DIAGNOSIS_LEN] = MD810DP_DIAGNOSIS_EMPTY;
+    static const uint8_t expected[3] = {0x03U, 0x00U, 0x34U};
+    uint16_t value;
+    gsdc_diag_area_set(block, sizeof block, MD810DP_DIAGNOSIS_BITS_8_15_FIRST,
+                       MD810DP_DIAGNOSIS_BITS_8_15_LAST,
+                       MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_LOST_THE_DRIVE);
+    CHECK(same_bytes(block, expected, 3U));
+    value = gsdc_diag_area_get(block, sizeof block, MD810DP_DIAGNOSIS_BITS_8_15_FIRST,
+                               MD810DP_DIAGNOSIS_BITS_8_15_LAST);
+    CHECK(value == MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_LOST_THE_DRIVE);
+    CHECK(md810dp_diagnosis_bits_8_to_15_is_value(value));
+    CHECK(!md810dp_diagnosis_bits_8_to_15_is_value(0x35U));
+    CHECK(6U + MD810DP_DIAGNOSIS_LEN == GSD_MAX_DIAG_DATA_LEN);
+}
+
+/* The DPV1 indexes as a PROFINET record: 12 bytes, each value checked. */
+static void md810_dpv1_indexes_as_a_profinet_record(void)
+{
+    uint8_t record[MD810DP_DPV1_INDEX_RECORD_LEN];
+    uint16_t values[MD810DP_DPV1_INDEX_COUNT] = {0};
+    static const uint16_t expected[MD810DP_DPV1_INDEX_COUNT] = {0xF002U, 0xF008U, 0xF000U,
+                                                                0xF000U, 0xF000U, 0xF000U};
+    CHECK(MD810DP_DPV1_INDEX_RECORD_LEN == 12U);
+    words("F002 F008 F000 F000 F000 F000", record, sizeof record);
+    CHECK(md810dp_dpv1_index_decode_record(record, sizeof record, values).fault == GSDC_PRM_OK);
+    CHECK(same_values(values, expected, MD810DP_DPV1_INDEX_COUNT));
+    CHECK(md810dp_dpv1_index_decode_record(&record[2], sizeof record - 2U, values).fault ==
+          GSDC_PRM_LENGTH);
+}
+
+/* ------------------------------------------------------------------------
+ * MV810 */
+
+/* Section 3: the PN master reads P43.02 of the drive with the card, station
+ * 1, through a 12-PZD telegram with the PKW channel; the drive answers 1,
+ * PZD2 carries the frequency reference. */
+static void mv810_read_p43_02(void)
+{
+    mv810_pnet02_pkw_pzd12_out_t out = {{0}};
+    mv810_pnet02_pkw_pzd12_out_t sent = {{0}};
+    mv810_pnet02_pkw_pzd12_in_t answer = {{0}};
+    mv810_pnet02_pkw_pzd12_in_t reply = {{0}};
+    gsdc_station_request_t request;
+    gsdc_station_response_t response;
+    CHECK(MV810_PNET02_PZD_OUT_2_PARAMETER == 0x2B02U);
+    words("0100 0003 2B02 0001", out.bytes, GSDC_PKW_BYTES);
+    CHECK(gsdc_station_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+    CHECK(request.target == 1U);
+    CHECK(request.source == 0U);
+    CHECK(request.command == GSDC_STATION_READ);
+    CHECK(request.address == MV810_PNET02_PZD_OUT_2_PARAMETER);
+    CHECK(gsdc_station_request_encode(&request, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, out.bytes, MV810_PNET02_PKW_PZD12_BYTES));
+
+    words("0001 0003 2B02 0001", answer.bytes, GSDC_PKW_BYTES);
+    CHECK(gsdc_station_response_decode(answer.bytes, &response) == GSDC_PKW_OK);
+    CHECK(!response.failed);
+    CHECK(response.command == GSDC_STATION_READ);
+    CHECK(response.value == MV810_PNET02_PZD_OUT_CHOICE_FREQUENCY_REFERENCE);
+    CHECK(gsdc_station_response_encode(&response, reply.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(reply.bytes, answer.bytes, MV810_PNET02_PKW_PZD12_BYTES));
+}
+
+/* Section 3: write P43.02 = 1, once without storing it (0x07), once into
+ * EEPROM (0x06); the drive replies with the command and value 0. */
+static void mv810_write_p43_02(void)
+{
+    static const char *const requests[2] = {"0100 0007 2B02 0001 0001",
+                                            "0100 0006 2B02 0001 0001"};
+    static const char *const replies[2] = {"0001 0007 2B02 0000 0000",
+                                           "0001 0006 2B02 0000 0000"};
+    static const uint16_t commands[2] = {GSDC_STATION_WRITE, GSDC_STATION_WRITE_AND_STORE};
+    size_t i;
+    for (i = 0U; i < 2U; i++) {
+        mv810_pnet02_pkw_pzd1_out_t out;
+        mv810_pnet02_pkw_pzd1_in_t answer;
+        mv810_pnet02_pkw_pzd1_in_t sent;
+        gsdc_station_request_t request;
+        gsdc_station_response_t response;
+        words(requests[i], out.bytes, sizeof out.bytes);
+        CHECK(gsdc_station_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+        CHECK(request.command == commands[i]);
+        CHECK(request.address == MV810_PNET02_PZD_OUT_2_PARAMETER);
+        CHECK(request.value == 1U);
+        words(replies[i], answer.bytes, sizeof answer.bytes);
+        CHECK(gsdc_station_response_decode(answer.bytes, &response) == GSDC_PKW_OK);
+        CHECK(response.command == commands[i]);
+        CHECK(!response.failed);
+        CHECK(response.address == MV810_PNET02_PZD_OUT_2_PARAMETER);
+        sent = answer;
+        response.value = 0x1234U; /* not written after a write */
+        CHECK(gsdc_station_response_encode(&response, sent.bytes) == GSDC_PKW_OK);
+        CHECK(same_bytes(sent.bytes, answer.bytes, MV810_PNET02_PKW_PZD1_BYTES));
+    }
+}
+
+/* Section 3: an error reply is 0x80 + the command; as a request it is not
+ * one the manual defines, nor is a read of two parameters. */
+static void mv810_error_reply(void)
+{
+    mv810_pnet02_pkw_pzd1_in_t answer;
+    mv810_pnet02_pkw_pzd1_in_t sent;
+    uint8_t untouched[GSDC_PKW_BYTES] = {0};
+    uint8_t pkw[GSDC_PKW_BYTES] = {0};
+    gsdc_station_response_t response;
+    gsdc_station_request_t request;
+    words("0001 0087 2B02 0003 0000", answer.bytes, sizeof answer.bytes);
+    CHECK(gsdc_station_response_decode(answer.bytes, &response) == GSDC_PKW_OK);
+    CHECK(response.failed);
+    CHECK(response.command == GSDC_STATION_WRITE);
+    CHECK(response.value == 3U);
+    sent = answer;
+    CHECK(gsdc_station_response_encode(&response, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, answer.bytes, MV810_PNET02_PKW_PZD1_BYTES));
+    CHECK(gsdc_station_request_decode(answer.bytes, &request) == GSDC_PKW_BAD_COMMAND);
+    CHECK(request.command == 0x87U);
+    CHECK(gsdc_station_request_encode(&request, pkw) == GSDC_PKW_BAD_COMMAND);
+    words("0100 0003 2B02 0002", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_station_request_decode(pkw, &request) == GSDC_PKW_BAD_READ_COUNT);
+    words("0001 0005 2B02 0000", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_station_response_decode(pkw, &response) == GSDC_PKW_BAD_COMMAND);
+    response.command = 0x05U;
+    words("0000 0000 0000 0000", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_station_response_encode(&response, pkw) == GSDC_PKW_BAD_COMMAND);
+    CHECK(same_bytes(pkw, untouched, GSDC_PKW_BYTES));
+}
+
+/* Section 3, PZD1: control word bits and the status word's control mode. */
+static void mv810_control_and_status_words(void)
+{
+    uint16_t status = 0x0421U; /* forward running, ready, communication */
+    CHECK((MV810_PNET02_CONTROL_WORD_FORWARD_RUNNING_MASK |
+           MV810_PNET02_CONTROL_WORD_FAULT_RESET_MASK) == 0x0041U);
+    CHECK(gsdc_field_get(status, MV810_PNET02_STATUS_WORD_FORWARD_RUNNING_MASK,
+                         MV810_PNET02_STATUS_WORD_FORWARD_RUNNING_SHIFT) == 1U);
+    CHECK(gsdc_field_get(status, MV810_PNET02_STATUS_WORD_READY_STATUS_MASK,
+                         MV810_PNET02_STATUS_WORD_READY_STATUS_SHIFT) == 1U);
+    CHECK(gsdc_field_get(status, MV810_PNET02_STATUS_WORD_CONTROL_MODE_MASK,
+                         MV810_PNET02_STATUS_WORD_CONTROL_MODE_SHIFT) ==
+          MV810_PNET02_STATUS_WORD_CONTROL_MODE_COMMUNICATION);
+    CHECK(gsdc_field_with(status, MV810_PNET02_STATUS_WORD_CONTROL_MODE_MASK,
+                          MV810_PNET02_STATUS_WORD_CONTROL_MODE_SHIFT,
+                          MV810_PNET02_STATUS_WORD_CONTROL_MODE_TERMINAL) == 0x0221U);
+    CHECK(gsdc_field_get(status, MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK,
+                         MV810_PNET02_STATUS_WORD_MOTOR_TYPE_SHIFT) ==
+          MV810_PNET02_STATUS_WORD_MOTOR_TYPE_ASYNCHRONOUS);
+    CHECK(mv810_pnet02_status_word_control_mode_is_value(2U));
+    CHECK(!mv810_pnet02_status_word_control_mode_is_value(3U));
+}
+
+static void mv810_standard_telegram_1_is_two_words(void)
+{
+    mv810_pnet02_telegram1_out_t out;
+    words("047F 4000", out.bytes, sizeof out.bytes);
+    CHECK(sizeof out == 4U);
+    CHECK(MV810_PNET02_TELEGRAM1_PZD_OFFSET == 0U);
+    CHECK(gsdc_word_get(out.bytes, 1U) == 0x4000U);
+    CHECK(MV810_PNET02_TELEGRAM1_IDENT == 0x10UL);
+}
+
+/* The PZD mappings as PROFINET records: PZD2..12 out by P43.02..12, each
+ * value one of the choices (15 is reserved); P43.01 the message type. */
+static void mv810_mapping_records(void)
+{
+    static const uint16_t parameters[11] = {
+        MV810_PNET02_PZD_OUT_2_PARAMETER,  MV810_PNET02_PZD_OUT_3_PARAMETER,
+        MV810_PNET02_PZD_OUT_4_PARAMETER,  MV810_PNET02_PZD_OUT_5_PARAMETER,
+        MV810_PNET02_PZD_OUT_6_PARAMETER,  MV810_PNET02_PZD_OUT_7_PARAMETER,
+        MV810_PNET02_PZD_OUT_8_PARAMETER,  MV810_PNET02_PZD_OUT_9_PARAMETER,
+        MV810_PNET02_PZD_OUT_10_PARAMETER, MV810_PNET02_PZD_OUT_11_PARAMETER,
+        MV810_PNET02_PZD_OUT_12_PARAMETER,
+    };
+    static const uint16_t settings_defaults[MV810_PNET02_SETTINGS_COUNT] =
+        MV810_PNET02_SETTINGS_DEFAULTS;
+    uint8_t record[MV810_PNET02_PZD_OUT_RECORD_LEN] = {0};
+    uint16_t values[MV810_PNET02_PZD_OUT_COUNT] = {0};
+    uint16_t setting[MV810_PNET02_SETTINGS_COUNT] = {0};
+    static const uint8_t user_defined[2] = {0x00U, 0x01U};
+    gsdc_prm_result_t result;
+    size_t i;
+    for (i = 0U; i < 11U; i++) {
+        CHECK(parameters[i] == 0x2B02U + i);
+    }
+    CHECK(MV810_PNET02_PZD_IN_2_PARAMETER == 0x2B0DU);
+    CHECK(MV810_PNET02_PZD_OUT_RECORD_LEN == 22U);
+    record[1] = 1U;
+    CHECK(mv810_pnet02_pzd_out_decode_record(record, sizeof record, values).fault == GSDC_PRM_OK);
+    CHECK(values[0] == MV810_PNET02_PZD_OUT_CHOICE_FREQUENCY_REFERENCE);
+    record[3] = 15U;
+    result = mv810_pnet02_pzd_out_decode_record(record, sizeof record, values);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
+    CHECK(result.offset == 2U);
+    CHECK(result.value == 15U);
+    /* The "PKW + 3 PZD" module's record holds PZD2 and PZD3 only; the other
+     * words keep their defaults. */
+    record[1] = 1U;
+    record[3] = 3U;
+    CHECK(mv810_pnet02_pzd_out_decode_record(record, 4U, values).fault == GSDC_PRM_OK);
+    CHECK(values[0] == 1U && values[1] == 3U && values[2] == 0U);
+    CHECK(mv810_pnet02_pzd_out_decode_record(record, 3U, values).fault == GSDC_PRM_LENGTH);
+    CHECK(mv810_pnet02_settings_decode_record(user_defined, 2U, setting).fault == GSDC_PRM_OK);
+    CHECK(setting[0] == MV810_PNET02_SETTINGS_CHOICE_USER_DEFINED_TELEGRAM);
+    CHECK(settings_defaults[0] == 1U);
+}
+
+/* ------------------------------------------------------------------------
+ * PI9000 (9KDP1) */
+
+/* Appendix I-3: command 1 is forward run; the card sends it in PZD1. */
+static void pi9000_command_word_in_ppo3(void)
+{
+    gsdc_9kdp1_ppo3_out_t out;
+    gsdc_9kdp1_ppo4_in_t in = {{0}};
+    gsdc_9kdp1_ppo4_in_t zero = {{0}};
+    uint16_t command;
+    words("0001 1388", out.bytes, sizeof out.bytes);
+    command = gsdc_field_get(gsdc_word_get(&out.bytes[GSDC_9KDP1_PPO3_PZD_OFFSET], 0U),
+                             GSDC_9KDP1_CONTROL_WORD_COMMAND_MASK,
+                             GSDC_9KDP1_CONTROL_WORD_COMMAND_SHIFT);
+    CHECK(command == GSDC_9KDP1_CONTROL_WORD_COMMAND_FORWARD_RUN);
+    CHECK(gsdc_9kdp1_control_word_command_is_value(command));
+    CHECK(GSDC_9KDP1_CONTROL_WORD_COMMAND_FAULT_RESET == 7U);
+    CHECK(gsdc_9kdp1_status_word_status_is_value(3U));
+    CHECK(GSDC_9KDP1_STATUS_WORD_STATUS_STOP == 3U);
+    CHECK(same_bytes(in.bytes, zero.bytes, GSDC_9KDP1_PPO4_BYTES));
+}
+
+/* Appendix I: the fault code of 0x8000 in the diagnosis' low byte. */
+static void pi9000_fault_code_diagnosis(void)
+{
+    uint8_t block[GSDC_9KDP1_DIAGNOSIS_LEN] = GSDC_9KDP1_DIAGNOSIS_EMPTY;
+    static const uint8_t expected[3] = {0x03U, 0x00U, 11U};
+    gsdc_diag_area_set(block, sizeof block, GSDC_9KDP1_DIAGNOSIS_BITS_8_15_FIRST,
+                       GSDC_9KDP1_DIAGNOSIS_BITS_8_15_LAST,
+                       GSDC_9KDP1_DIAGNOSIS_BITS_8_TO_15_MOTOR_OVERLOAD);
+    CHECK(same_bytes(block, expected, 3U));
+    CHECK(gsdc_9kdp1_diagnosis_bits_8_to_15_is_value(0x0BU));
+    CHECK(!gsdc_9kdp1_diagnosis_bits_8_to_15_is_value(24U));
+}
+
+/* Without DPV1 the parameter telegram is the mappings alone: PZD2..6 each
+ * way, with appendix I's addresses as defaults. */
+static void pi9000_default_user_prm(void)
+{
+    static const uint16_t pzd_out[GSDC_9KDP1_PZD_OUT_COUNT] = GSDC_9KDP1_PZD_OUT_DEFAULTS;
+    static const uint16_t pzd_in[GSDC_9KDP1_PZD_IN_COUNT] = GSDC_9KDP1_PZD_IN_DEFAULTS;
+    uint8_t telegram[GSDC_9KDP1_USER_PRM_LEN];
+    gsdc_9kdp1_user_prm_t prm;
+    CHECK(GSDC_9KDP1_USER_PRM_LEN == 20U);
+    words("1000 2001 2002 2003 2004 1001 1002 1004 8000 8001", telegram, sizeof telegram);
+    CHECK(gsdc_9kdp1_decode_user_prm(telegram, sizeof telegram, &prm).fault == GSDC_PRM_OK);
+    CHECK(same_values(prm.pzd_out, pzd_out, GSDC_9KDP1_PZD_OUT_COUNT));
+    CHECK(same_values(prm.pzd_in, pzd_in, GSDC_9KDP1_PZD_IN_COUNT));
+    CHECK(GSDC_9KDP1_PZD_IN_5_DEFAULT == 0x8000U);
+}
+
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+    const char *name;
+    void (*run)(void);
+} test_t;
+
+static const test_t tests[] = {
+    {"md810_read_f0_08", md810_read_f0_08},
+    {"md810_answer_50_hz", md810_answer_50_hz},
+    {"md810_write_20_hz", md810_write_20_hz},
+    {"md810_error_answers", md810_error_answers},
+    {"md810_illegal_telegrams_are_refused", md810_illegal_telegrams_are_refused},
+    {"md810_ppo5_is_32_bytes", md810_ppo5_is_32_bytes},
+    {"md810_ppo_config_bytes", md810_ppo_config_bytes},
+    {"md810_default_user_prm_is_f0_00_everywhere", md810_default_user_prm_is_f0_00_everywhere},
+    {"md810_user_prm_maps_dpv1_indexes", md810_user_prm_maps_dpv1_indexes},
+    {"md810_card_lost_the_drive_diagnosis", md810_card_lost_the_drive_diagnosis},
+    {"md810_dpv1_indexes_as_a_profinet_record", md810_dpv1_indexes_as_a_profinet_record},
+    {"mv810_read_p43_02", mv810_read_p43_02},
+    {"mv810_write_p43_02", mv810_write_p43_02},
+    {"mv810_error_reply", mv810_error_reply},
+    {"mv810_control_and_status_words", mv810_control_and_status_words},
+    {"mv810_standard_telegram_1_is_two_words", mv810_standard_telegram_1_is_two_words},
+    {"mv810_mapping_records", mv810_mapping_records},
+    {"pi9000_command_word_in_ppo3", pi9000_command_word_in_ppo3},
+    {"pi9000_fault_code_diagnosis", pi9000_fault_code_diagnosis},
+    {"pi9000_default_user_prm", pi9000_default_user_prm},
+};
+
+int main(void)
+{
+    size_t i;
+    int passed = 0;
+    int failed = 0;
+    for (i = 0U; i < sizeof tests / sizeof tests[0]; i++) {
+        int before = failures;
+        tests[i].run();
+        if (failures == before) {
+            passed++;
+            printf("ok %s\n", tests[i].name);
+        } else {
+            failed++;
+            printf("FAILED %s\n", tests[i].name);
+        }
+    }
+    printf("%d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
