@@ -779,3 +779,40 @@ fn help_shows_an_example_of_every_flag() {
         );
     }
 }
+
+/// `--firmware` chooses the layouts: C only, none, or both (the default);
+/// an unknown language is a usage error.
+#[test]
+fn firmware_languages_choose_the_layouts_written() {
+    let dir = scratch("firmware");
+    let build = |out: &str, firmware: Option<&str>| {
+        let out = dir.join(out);
+        let mut args = vec![
+            "build",
+            "descriptions/9kdp1.toml",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        if let Some(f) = firmware {
+            args.extend(["--firmware", f]);
+        }
+        let output = gsdc(&args);
+        (output, out)
+    };
+    let (output, out) = build("c", Some("c"));
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(
+        files_in(&out),
+        ["9KDP1.GSD", "9kdp1_layout.h", "gsdc_support.h"]
+    );
+    let (output, out) = build("none", Some("none"));
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(files_in(&out), ["9KDP1.GSD"]);
+    let (output, out) = build("both", None);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(files_in(&out).len(), 5);
+    let (output, _) = build("bad", Some("rust,cobol"));
+    assert_eq!(output.status.code(), Some(2));
+    assert!(stderr(&output).contains("cobol"), "{}", stderr(&output));
+    std::fs::remove_dir_all(dir).unwrap();
+}
