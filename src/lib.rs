@@ -17,6 +17,7 @@ pub mod ir;
 mod latin1;
 pub mod load;
 pub mod lower;
+pub mod symbol;
 
 // The edges.
 pub mod build;
