@@ -3,6 +3,7 @@
 //! not from the writer's constants.
 
 use gsdc::symbol::{device_bitmap, SymbolError, HEIGHT, PALETTE, WIDTH};
+use proptest::prelude::*;
 
 const W: usize = 70;
 const H: usize = 40;
@@ -249,6 +250,45 @@ fn transparent_pixels_are_composited_over_white() {
     assert_eq!(symbol.approximated_pixels, 1, "only the 127 grey");
 }
 
+#[test]
+fn grey_pictures_are_read_as_grey_with_or_without_alpha() {
+    let mut grey = vec![0xFF; W * H];
+    grey[..4].copy_from_slice(&[0x00, 0x80, 0xC0, 0x90]);
+    let png = png_of(
+        70,
+        40,
+        png::ColorType::Grayscale,
+        png::BitDepth::Eight,
+        None,
+        &grey,
+    );
+    let symbol = device_bitmap(&png).unwrap();
+    let expected = [BLACK, [0x80; 3], [0xC0; 3], [0x80; 3]];
+    for (x, &colour) in expected.iter().enumerate() {
+        assert_eq!(
+            index_at(&symbol.bmp, x, 0),
+            palette_index(colour),
+            "pixel {x}"
+        );
+    }
+    assert_eq!(symbol.approximated_pixels, 1, "only 0x90");
+
+    // Grey with alpha: transparent black is white, opaque black stays.
+    let mut grey_alpha = vec![0xFF; W * H * 2];
+    grey_alpha[..4].copy_from_slice(&[0x00, 0x00, 0x00, 0xFF]);
+    let png = png_of(
+        70,
+        40,
+        png::ColorType::GrayscaleAlpha,
+        png::BitDepth::Eight,
+        None,
+        &grey_alpha,
+    );
+    let symbol = device_bitmap(&png).unwrap();
+    assert_eq!(index_at(&symbol.bmp, 0, 0), palette_index(WHITE));
+    assert_eq!(index_at(&symbol.bmp, 1, 0), palette_index(BLACK));
+}
+
 // ---- refusals -----------------------------------------------------------
 
 #[test]
@@ -344,6 +384,11 @@ fn what_is_not_a_readable_png_is_refused() {
     let mut bad_checksum = good.clone();
     bad_checksum[idat + 6] ^= 0xFF;
     assert_undecodable(&bad_checksum, "a byte of the image data changed");
+    // The header chunk's CRC: after the signature (8), length (4), type (4)
+    // and 13 bytes of data.
+    let mut bad_crc = good.clone();
+    bad_crc[29] ^= 0xFF;
+    assert_undecodable(&bad_crc, "a wrong header checksum");
 }
 
 // ---- determinism --------------------------------------------------------
@@ -453,5 +498,51 @@ fn the_shipped_symbols_convert_pixel_for_pixel() {
             rgb_png(70, 40, &pixels),
         )
         .unwrap();
+    }
+}
+
+// ---- damaged input ------------------------------------------------------
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// A shipped symbol with bytes overwritten anywhere (header, palette,
+    /// image data, checksums) gives a bitmap or an error, never a panic, and
+    /// a bitmap is always a whole one.
+    #[test]
+    fn damaged_pngs_give_a_whole_bitmap_or_an_error(
+        changes in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>()), 1..8)
+    ) {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/symbols");
+        let mut png = std::fs::read(dir.join("mv810-pnet02.png")).unwrap();
+        for (at, byte) in changes {
+            let at = at.index(png.len());
+            png[at] = byte;
+        }
+        if let Ok(symbol) = device_bitmap(&png) {
+            prop_assert_eq!(symbol.bmp.len(), 1558);
+        }
+    }
+
+    /// The shipped image data under a header that may not fit it (another
+    /// colour type, bit depth or interlacing), its checksum right: the
+    /// decoder's checks, not a panic, answer.
+    #[test]
+    fn a_header_that_does_not_fit_the_data_gives_an_error_not_a_panic(
+        bit_depth in prop::sample::select(vec![1u8, 2, 4, 8, 16]),
+        colour_type in prop::sample::select(vec![0u8, 2, 3, 4, 6]),
+        interlace in 0u8..2,
+    ) {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/symbols");
+        let original = std::fs::read(dir.join("md810dp.png")).unwrap();
+        let mut header = Vec::new();
+        header.extend_from_slice(&70u32.to_be_bytes());
+        header.extend_from_slice(&40u32.to_be_bytes());
+        header.extend_from_slice(&[bit_depth, colour_type, 0, 0, interlace]);
+        // Signature and the 25-byte IHDR chunk replaced, the rest kept.
+        let png = [&original[..8], &chunk(b"IHDR", &header), &original[33..]].concat();
+        if let Ok(symbol) = device_bitmap(&png) {
+            prop_assert_eq!(symbol.bmp.len(), 1558);
+        }
     }
 }
