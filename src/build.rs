@@ -442,7 +442,9 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
     let source_name = path
         .file_name()
         .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
-    let (ir, diagnostics) = crate::load(&source_name, text);
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let files = |name: &str| read_beside(folder, name);
+    let (ir, diagnostics) = crate::load_with(&source_name, text, &files);
     Ok(Loaded {
         findings: Findings {
             name: name.to_string(),
@@ -450,6 +452,18 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
             diagnostics,
         },
         ir,
+    })
+}
+
+/// A file a description names (its device symbol), relative to the
+/// description's folder, no larger than a description may be.
+fn read_beside(folder: &Path, name: &str) -> Result<Vec<u8>, String> {
+    read_input(&folder.join(name), &crate::load::INPUT_LIMIT).map_err(|e| match e {
+        ReadError::Io(error) => format!("{name}: {error}"),
+        ReadError::TooLarge(_) => format!(
+            "{name} is larger than {} bytes",
+            crate::load::INPUT_LIMIT.max_bytes
+        ),
     })
 }
 

@@ -39,8 +39,24 @@ pub const GENERATOR: &str = concat!("gsdc ", env!("CARGO_PKG_VERSION"));
 /// (warnings too) either way. `source_name` is the file name used in
 /// diagnostics and in the headers of generated files.
 pub fn load(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+    load_with(source_name, text, &|path: &str| {
+        Err(format!(
+            "{path}: gsdc::load reads no files; gsdc::load_with or the build pipeline do"
+        ))
+    })
+}
+
+/// [`load`] for a description that names other files (its device symbol):
+/// `files` gives the bytes of a path the description writes, relative to
+/// the description, or says why it cannot. The edges pass one that reads
+/// the disk (`build::load_file`); the core itself reads nothing.
+pub fn load_with(
+    source_name: &str,
+    text: &str,
+    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+) -> (Option<Ir>, Diagnostics) {
     match load::parse(text) {
-        Ok(desc) => lower::lower(&desc, source_name, text),
+        Ok(desc) => lower::lower(&desc, source_name, text, files),
         Err(diagnostics) => (None, diagnostics),
     }
 }

@@ -32,7 +32,10 @@ fn each_invalid_description_is_rejected_with_its_code() {
     for path in fixtures() {
         let name = path.file_name().unwrap().to_str().unwrap();
         let text = std::fs::read_to_string(&path).unwrap();
-        let (ir, diagnostics) = gsdc::load(name, &text);
+        // Read as the build reads it: files the description names are found
+        // beside it.
+        let loaded = gsdc::build::load_file(&path, name).unwrap();
+        let (ir, diagnostics) = (loaded.ir, loaded.findings.diagnostics);
         assert!(ir.is_none(), "{name} was accepted");
         let code = expected_code(&text);
         let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();

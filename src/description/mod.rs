@@ -61,6 +61,9 @@ pub struct Device {
     pub order_number: Option<Spanned<String>>,
     pub name: Spanned<Text>,
     pub info: Option<Spanned<Text>>,
+    /// A 70 x 40 PNG of the card, relative to the description: the device
+    /// symbol of the GSD and the GSDML.
+    pub symbol: Option<Spanned<String>>,
 }
 
 /// How the drive names its parameters: `<prefix><group><separator><index>`.

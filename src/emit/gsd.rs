@@ -29,6 +29,7 @@ struct Context<'a> {
     order_number: Option<&'a str>,
     implementation_type: Option<&'a str>,
     info_text: Option<&'a str>,
+    bitmap_device: Option<&'a str>,
     baud_rates: Vec<Rate>,
     freeze_mode: u8,
     sync_mode: u8,
@@ -132,6 +133,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
         info_text: d.info.as_ref().map(|i| i.en.as_str()),
+        bitmap_device: p.bitmap_device.as_deref(),
         baud_rates: p
             .baud_rates
             .iter()

@@ -48,6 +48,14 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     device_access_point(&mut doc, ir, profinet);
     module_list(&mut doc, ir, profinet);
     value_list(&mut doc, profinet);
+    if let Some(symbol) = &profinet.device_symbol {
+        doc.open("GraphicsList", &[]);
+        doc.leaf(
+            "GraphicItem",
+            &[("ID", &symbol.id), ("GraphicFile", &symbol.file)],
+        );
+        doc.close("GraphicsList");
+    }
     external_texts(&mut doc, &ir.languages);
     doc.close("ApplicationProcess");
     doc.close("ProfileBody");
@@ -256,6 +264,14 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.close("UseableModules");
     dap_submodule(doc, p);
     interface_and_ports(doc, p);
+    if let Some(symbol) = &p.device_symbol {
+        doc.open("Graphics", &[]);
+        doc.leaf(
+            "GraphicItemRef",
+            &[("Type", "DeviceSymbol"), ("GraphicItemTarget", &symbol.id)],
+        );
+        doc.close("Graphics");
+    }
     doc.close("DeviceAccessPointItem");
     doc.close("DeviceAccessPointList");
 }

@@ -34,6 +34,8 @@ pub enum ArtifactKind {
     CHeader,
     /// The support header every C layout includes, the same for all.
     CSupport,
+    /// The device symbol, a bitmap beside the GSD or the GSDML.
+    DeviceSymbol,
     /// The datasheet as one HTML page (`gsdc doc`).
     DatasheetHtml,
     /// The datasheet in Markdown (`gsdc doc`).
@@ -65,7 +67,10 @@ impl ArtifactKind {
     /// Device files ship to PLC engineers; layouts go into firmware;
     /// datasheets into manuals.
     pub fn is_device_file(self) -> bool {
-        matches!(self, ArtifactKind::Gsd | ArtifactKind::Gsdml)
+        matches!(
+            self,
+            ArtifactKind::Gsd | ArtifactKind::Gsdml | ArtifactKind::DeviceSymbol
+        )
     }
 
     /// The language of a firmware file (a layout or its support); `None`
@@ -77,6 +82,7 @@ impl ArtifactKind {
             ArtifactKind::CHeader | ArtifactKind::CSupport => Some(Language::C),
             ArtifactKind::Gsd
             | ArtifactKind::Gsdml
+            | ArtifactKind::DeviceSymbol
             | ArtifactKind::DatasheetHtml
             | ArtifactKind::DatasheetMarkdown => None,
         }
@@ -162,6 +168,7 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
             contents: text.into_bytes(),
         });
     }
+    artifacts.extend(symbols(ir));
     // The layouts are checked by the tests that compile them
     // (tests/generated_rust.rs, tests/c_header.rs); the C layout's names here.
     artifacts.push(Artifact {
@@ -183,6 +190,26 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
         return Err(problems);
     }
     Ok(artifacts)
+}
+
+/// The device symbol beside each device file that names it: the same
+/// bitmap, under the GSD's and the GSDML's names for it.
+fn symbols(ir: &Ir) -> Vec<Artifact> {
+    let Some(bitmap) = &ir.device.symbol else {
+        return Vec::new();
+    };
+    let gsd = ir.profibus.iter().filter_map(|p| p.bitmap_device.clone());
+    let gsdml = ir
+        .profinet
+        .iter()
+        .filter_map(|p| p.device_symbol.as_ref().map(|s| s.file.clone()));
+    gsd.chain(gsdml)
+        .map(|name| Artifact {
+            kind: ArtifactKind::DeviceSymbol,
+            file_name: format!("{name}.bmp"),
+            contents: bitmap.clone(),
+        })
+        .collect()
 }
 
 /// gsdc's own GSD must meet the strict rules: the vendor-file rules with

@@ -120,6 +120,8 @@ pub struct Device {
     pub order_number: Option<String>,
     pub name: Text,
     pub info: Option<Text>,
+    /// The device symbol: a 70 x 40, 16-colour Windows bitmap.
+    pub symbol: Option<Vec<u8>>,
 }
 
 /// FNV-1a (64 bit) of the description text with line ends normalised to LF,

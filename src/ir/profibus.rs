@@ -30,6 +30,9 @@ pub struct Profibus {
     pub diagnosis: Option<Diagnosis>,
     /// Max_Diag_Data_Len: the standard diagnosis and the device's block.
     pub max_diag_data_len: u8,
+    /// Bitmap_Device, when the device has a symbol: the bitmap's name
+    /// without `.bmp`, beside the GSD (at most 8 characters).
+    pub bitmap_device: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

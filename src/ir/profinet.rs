@@ -32,6 +32,18 @@ pub struct Profinet {
     pub modules: Vec<Module>,
     /// One per set of choices the records refer to.
     pub value_items: Vec<ValueItem>,
+    /// The device symbol's GraphicItem, when the device has a symbol.
+    pub device_symbol: Option<GraphicItem>,
+}
+
+/// A GraphicItem: its ID and GraphicFile, the bitmap's name beside the
+/// GSDML without `.bmp` (`GSDML-0A10-0810-MV800`, as the corpus's vendors
+/// name theirs).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct GraphicItem {
+    pub id: String,
+    pub file: String,
 }
 
 impl Profinet {

@@ -21,7 +21,13 @@ use toml::Spanned;
 /// Lowers a parsed description: the IR when there is no error, and every
 /// diagnostic, warnings included. `source_name` is the file name written into
 /// generated headers; `text` is the description's text, for the fingerprint.
-pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+/// `files` gives the bytes of a file the description names (its symbol).
+pub fn lower(
+    desc: &Description,
+    source_name: &str,
+    text: &str,
+    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+) -> (Option<Ir>, Diagnostics) {
     let mut cx = Checker::new(desc.profibus.is_some());
     if desc.profibus.is_none() && desc.profinet.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
@@ -36,13 +42,13 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .function_codes
         .as_ref()
         .map(|f| lower_numbering(&mut cx, f));
-    let device = lower_device(&mut cx, &desc.device);
+    let device = lower_device(&mut cx, &desc.device, files);
     let telegram = telegram::lower(&mut cx, &desc.telegram);
     let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
-    let profibus = desc
-        .profibus
-        .as_ref()
-        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &set_spans));
+    let profibus = desc.profibus.as_ref().map(|p| {
+        let plan = (&telegram, &mappings, &set_spans);
+        profibus::lower(&mut cx, p, plan, device.symbol.is_some())
+    });
     let profinet = desc
         .profinet
         .as_ref()
@@ -85,8 +91,13 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
     (Some(ir), diagnostics)
 }
 
-fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
+fn lower_device(
+    cx: &mut Checker,
+    d: &raw::Device,
+    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+) -> ir::Device {
     ir::Device {
+        symbol: d.symbol.as_ref().and_then(|path| symbol(cx, path, files)),
         vendor: cx.gsd_string(&d.vendor, checks::GSD_NAME_LEN, "vendor"),
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, checks::GSD_NAME_LEN, "model"),
@@ -140,6 +151,55 @@ fn manual_languages(cx: &mut Checker, manual: &raw::Manual) -> Vec<String> {
     }
     codes.sort();
     codes
+}
+
+/// The device symbol: the PNG the description names, read through `files`
+/// and turned into the bitmap the conventions require (`crate::symbol`).
+fn symbol(
+    cx: &mut Checker,
+    path: &Spanned<String>,
+    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+) -> Option<Vec<u8>> {
+    let name = path.get_ref();
+    let png = if std::path::Path::new(name).is_absolute() {
+        Err(format!("`{name}` is absolute"))
+    } else {
+        files(name)
+    };
+    let png = match png {
+        Ok(png) => png,
+        Err(why) => {
+            cx.push(
+                Diagnostic::error("E141", format!("the device symbol cannot be read: {why}"))
+                    .at(path.span())
+                    .label("not readable")
+                    .help("give the PNG's path relative to the description, e.g. symbol = \"symbols/card.png\""),
+            );
+            return None;
+        }
+    };
+    match crate::symbol::device_bitmap(&png) {
+        Ok(bitmap) => {
+            if bitmap.approximated_pixels > 0 {
+                cx.push(
+                    Diagnostic::warning("W106", format!("{} pixels of the device symbol took the nearest of the 16 colours", bitmap.approximated_pixels))
+                        .at(path.span())
+                        .label("colours reduced")
+                        .help("draw the symbol in the 16 Windows standard colours to ship exactly what you drew"),
+                );
+            }
+            Some(bitmap.bmp)
+        }
+        Err(e) => {
+            cx.push(
+                Diagnostic::error("E142", e.message())
+                    .at(path.span())
+                    .label("not a device symbol")
+                    .help(e.help()),
+            );
+            None
+        }
+    }
 }
 
 fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {

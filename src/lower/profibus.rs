@@ -32,9 +32,8 @@ const MAX_MAIN_FAMILY: u8 = 12;
 pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profibus>,
-    telegram: &Telegram,
-    mappings: &Mappings,
-    set_spans: &SetSpans,
+    (telegram, mappings, set_spans): (&Telegram, &Mappings, &SetSpans),
+    has_symbol: bool,
 ) -> Option<Profibus> {
     let p = p.get_ref();
     let gsd_revision = match &p.gsd_revision {
@@ -98,8 +97,18 @@ pub fn lower(
         dpv1,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + diagnosis.as_ref().map_or(0, |d| d.length),
+        bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
         diagnosis,
     })
+}
+
+/// `MD810DP` of `MD810DP.GSD`: the GSD's bitmap takes its name (8.3, so at
+/// most 8 characters, as Bitmap_Device allows).
+fn gsd_stem(file_name: &str) -> String {
+    file_name
+        .rsplit_once('.')
+        .map_or(file_name, |(stem, _)| stem)
+        .to_string()
 }
 
 /// 8.3 names, ending in .GSD (neutral) or the language letter (.GSE, .GSG, …).

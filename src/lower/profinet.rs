@@ -5,7 +5,7 @@ use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{
-    Date, Module, ModuleKind, Port, Profinet, TextRef, Version, FIRST_PORT_SUBSLOT,
+    Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, Version, FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
@@ -83,6 +83,14 @@ pub fn lower(
         max_output_length,
         interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
         ports: (1..=ports).map(port).collect(),
+        device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
+            id: ids::DEVICE_SYMBOL.to_string(),
+            file: format!(
+                "GSDML-{:04X}-{:04X}-{family}",
+                p.vendor_id.get_ref().value.get_ref(),
+                p.device_id.get_ref().value.get_ref()
+            ),
+        }),
         modules,
         value_items,
     })

@@ -9,6 +9,8 @@ use crate::ir::{Layout, MappingKind, MappingSet};
 pub const DEVICE_NAME: &str = "IDT_DEVICE_NAME";
 pub const DEVICE_INFO: &str = "IDT_DEVICE_INFO";
 pub const INTERFACE_TEXT: &str = "IDT_INTERFACE";
+/// The device symbol's GraphicItem.
+pub const DEVICE_SYMBOL: &str = "IDG_DEVICE_SYMBOL";
 
 /// A module's part of its IDs and TextIds: `PKW_12` (PKW and 12 PZD
 /// words), `PZD_12`, `STD_TEL_1`. Lowering gives each PZD length once per

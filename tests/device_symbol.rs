@@ -1,0 +1,92 @@
+//! The device symbol a description names reaches both device files: the
+//! bitmap beside the GSD (`Bitmap_Device`) and beside the GSDML (a
+//! `GraphicsList` item the DAP refers to as its `DeviceSymbol`), the same
+//! bytes each time, the GSD read by gsd-parser and the GSDML valid against
+//! the PI schema.
+
+#[path = "common/xsd.rs"]
+mod xsd;
+
+use gsdc::{Artifact, ArtifactKind};
+use std::path::{Path, PathBuf};
+
+const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
+
+/// A shipped description with `symbol` added, written beside the shipped
+/// ones so that the symbol's path is found as it would be.
+fn with_symbol(name: &str, symbol: &str) -> PathBuf {
+    let source = Path::new(MANIFEST).join("descriptions").join(name);
+    let text = std::fs::read_to_string(&source).unwrap();
+    let with = text.replacen(
+        "[device]\n",
+        &format!("[device]\nsymbol = \"{symbol}\"\n"),
+        1,
+    );
+    assert_ne!(with, text);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("device-symbol");
+    std::fs::create_dir_all(dir.join("symbols")).unwrap();
+    let png = Path::new(MANIFEST).join("descriptions").join(symbol);
+    std::fs::copy(png, dir.join(symbol)).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, with).unwrap();
+    path
+}
+
+fn compile(path: &Path) -> Vec<Artifact> {
+    let loaded = gsdc::build::load_file(path, "with-symbol").unwrap();
+    let ir = loaded
+        .ir
+        .unwrap_or_else(|| panic!("{:?}", loaded.findings.diagnostics));
+    gsdc::compile(&ir).unwrap()
+}
+
+fn text(files: &[Artifact], kind: ArtifactKind) -> String {
+    let file = files.iter().find(|f| f.kind == kind).unwrap();
+    String::from_utf8(file.contents.clone()).unwrap()
+}
+
+#[test]
+fn the_symbol_is_beside_the_gsd_and_the_gsdml() {
+    let png = std::fs::read(Path::new(MANIFEST).join("descriptions/symbols/md810dp.png")).unwrap();
+    let bitmap = gsdc::symbol::device_bitmap(&png).unwrap().bmp;
+    let path = with_symbol("md810dp.toml", "symbols/md810dp.png");
+    let files = compile(&path);
+    let bitmaps: Vec<(&str, &[u8])> = files
+        .iter()
+        .filter(|f| f.kind == ArtifactKind::DeviceSymbol)
+        .map(|f| (f.file_name.as_str(), f.contents.as_slice()))
+        .collect();
+    assert_eq!(
+        bitmaps,
+        [
+            ("MD810DP.bmp", bitmap.as_slice()),
+            ("GSDML-0A11-0810-MD810.bmp", bitmap.as_slice())
+        ]
+    );
+
+    let gsd = text(&files, ArtifactKind::Gsd);
+    assert!(
+        gsd.contains("Bitmap_Device               = \"MD810DP\"\r\n"),
+        "{gsd}"
+    );
+    let parsed = gsd_parser::parser::parse(Path::new("MD810DP.GSD"), &gsd).unwrap();
+    assert_eq!(parsed.ident_number, 0x0810);
+
+    let gsdml = text(&files, ArtifactKind::Gsdml);
+    assert!(gsdml.contains(
+        "<GraphicItemRef Type=\"DeviceSymbol\" GraphicItemTarget=\"IDG_DEVICE_SYMBOL\"/>"
+    ));
+    assert!(gsdml
+        .contains("<GraphicItem ID=\"IDG_DEVICE_SYMBOL\" GraphicFile=\"GSDML-0A11-0810-MD810\"/>"));
+    xsd::validate(&gsdml).unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(compile(&path), files, "the same bytes on every build");
+}
+
+/// Without a symbol, neither file names one.
+#[test]
+fn no_symbol_no_bitmap() {
+    let files = compile(&Path::new(MANIFEST).join("tests/fixtures/valid/no_warnings.toml"));
+    assert!(files.iter().all(|f| f.kind != ArtifactKind::DeviceSymbol));
+    assert!(!text(&files, ArtifactKind::Gsd).contains("Bitmap_Device"));
+    assert!(!text(&files, ArtifactKind::Gsdml).contains("Graphic"));
+}
