@@ -52,7 +52,7 @@ fn index_at(bmp: &[u8], x: usize, y: usize) -> u8 {
     assert!(height > 0, "a bottom-up bitmap");
     let stored_row = height as usize - 1 - y;
     let byte = bmp[u32_at(bmp, 10) as usize + stored_row * stride(bmp) + x / 2];
-    if x % 2 == 0 {
+    if x.is_multiple_of(2) {
         byte >> 4
     } else {
         byte & 0x0F
