@@ -135,3 +135,28 @@ fn md810_parameter_telegram_is_status_bytes_then_f0_00_everywhere() {
     expected.extend([0xF0, 0x00].repeat(30));
     assert_eq!(telegram, expected);
 }
+
+/// The I&M functions and the class 2 channel reach the GSD as the
+/// description states them, and gsd-parser reads the file.
+#[test]
+fn im_and_the_class_2_channel_are_in_the_gsd() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/valid/no_warnings.toml");
+    let loaded = gsdc::build::load_file(&path, "no_warnings.toml").unwrap();
+    assert!(
+        loaded.findings.diagnostics.is_empty(),
+        "{:?}",
+        loaded.findings.diagnostics
+    );
+    let (gsd, _) = gsd_of(loaded.ir.as_ref().unwrap());
+    for line in [
+        "C2_Read_Write_supp          = 1",
+        "C2_Max_Data_Len             = 240",
+        "C2_Response_Timeout         = 100",
+        "C2_Max_Count_Channels       = 2",
+        "Max_Initiate_PDU_Length     = 52",
+        "Ident_Maintenance_supp      = 1",
+    ] {
+        assert!(gsd.contains(&format!("{line}\r\n")), "{line}");
+    }
+    gsd_parser::parser::parse(Path::new("X1DP.GSD"), &gsd).unwrap();
+}

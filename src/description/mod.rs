@@ -237,6 +237,25 @@ pub struct Dpv1 {
     pub c1_response_timeout: Option<Spanned<u16>>,
     /// DPV1_Status_1..3, the first three bytes of User_Prm_Data.
     pub status_bytes: Option<Spanned<[u8; 3]>>,
+    /// The class 2 channel (MSAC_2: engineering tools, I&M), when the card has it.
+    pub c2: Option<Spanned<Dpv1Class2>>,
+    /// I&M functions (Ident_Maintenance_supp), read over the class 2
+    /// channel; not written, a warning (PI requires them of new slaves).
+    pub ident_maintenance: Option<bool>,
+}
+
+/// DPV1 class 2 (MSAC_2): GSD revision 3 keywords.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Dpv1Class2 {
+    /// C2_Max_Data_Len: 0 or 48..240.
+    pub max_data_len: Spanned<u8>,
+    /// C2_Response_Timeout, units of 10 ms.
+    pub response_timeout: Spanned<u16>,
+    /// C2_Max_Count_Channels: class 2 connections at once.
+    pub max_count_channels: Spanned<u8>,
+    /// Max_Initiate_PDU_Length: 0 or 52..244.
+    pub max_initiate_pdu_length: Spanned<u8>,
 }
 
 /// Device-related diagnosis: a header byte with the block length, then the

@@ -73,6 +73,16 @@ struct Dpv1 {
     c1_read_write: u8,
     c1_max_data_len: u8,
     c1_response_timeout: u16,
+    c2: Option<Class2>,
+    ident_maintenance: u8,
+}
+
+#[derive(Serialize)]
+struct Class2 {
+    max_data_len: u8,
+    response_timeout: u16,
+    max_count_channels: u8,
+    max_initiate_pdu_length: u8,
 }
 
 #[derive(Serialize)]
@@ -132,7 +142,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         software_release: &d.software_release,
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
-        info_text: d.info.as_ref().map(|i| i.en.as_str()),
+        info_text: d.info.as_ref().map(|i| i.for_gsd()),
         bitmap_device: p.bitmap_device.as_deref(),
         baud_rates: p
             .baud_rates
@@ -165,6 +175,13 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             c1_read_write: d.c1_read_write.into(),
             c1_max_data_len: d.c1_max_data_len,
             c1_response_timeout: d.c1_response_timeout,
+            c2: d.c2.map(|c2| Class2 {
+                max_data_len: c2.max_data_len,
+                response_timeout: c2.response_timeout,
+                max_count_channels: c2.max_count_channels,
+                max_initiate_pdu_length: c2.max_initiate_pdu_length,
+            }),
+            ident_maintenance: d.ident_maintenance.into(),
         }),
         prm_len: p.user_prm.len,
         prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
@@ -223,7 +240,7 @@ fn values(choices: &[Choice]) -> Vec<Value<'_>> {
         .iter()
         .map(|c| Value {
             value: c.value,
-            text: &c.text.en,
+            text: c.text.for_gsd(),
         })
         .collect()
 }
@@ -235,7 +252,7 @@ fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
             let (set, entry) = ir.mappings.entry(param.entry);
             Param {
                 id: param.id,
-                name: &entry.name.en,
+                name: entry.name.for_gsd(),
                 default: entry.default,
                 allowed: allowed(&set.allowed),
                 text_ref: param.text,

@@ -43,6 +43,20 @@ pub struct Dpv1 {
     /// Units of 10 ms.
     pub c1_response_timeout: u16,
     pub status_bytes: [u8; 3],
+    pub c2: Option<Dpv1Class2>,
+    /// Ident_Maintenance_supp: I&M over the class 2 channel.
+    pub ident_maintenance: bool,
+}
+
+/// The DPV1 class 2 channel (MSAC_2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Dpv1Class2 {
+    pub max_data_len: u8,
+    /// Units of 10 ms.
+    pub response_timeout: u16,
+    pub max_count_channels: u8,
+    pub max_initiate_pdu_length: u8,
 }
 
 /// A PPO type as a module: PPO1..PPO5.

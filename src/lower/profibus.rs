@@ -7,16 +7,19 @@ use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::{
-    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, PpoModule, PrmBlock, PrmParam,
-    PrmText, Profibus, UserPrm, PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
+    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
+    PrmBlock, PrmParam, PrmText, Profibus, UserPrm, PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
 use std::collections::{BTreeMap, BTreeSet};
+use std::ops::Range;
 use toml::Spanned;
 
 const DEFAULT_GSD_REVISION: u8 = 5;
-/// The DPV1 keywords came with GSD revision 3.
+/// The DPV1 keywords came with GSD revision 3, Ident_Maintenance_supp with
+/// revision 5 (comments of Siemens' own GSD files, SI028158, SI018133).
 const DPV1_GSD_REVISION: u8 = 3;
+const IM_GSD_REVISION: u8 = 5;
 /// PROFIdrive's PPO5 has 10 PZD words.
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
@@ -41,7 +44,15 @@ pub fn lower(
         None => DEFAULT_GSD_REVISION,
     };
     let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
-    if let (Some(_), Some(revision)) = (&dpv1, &p.gsd_revision) {
+    if let (Some(d), Some(revision)) = (&dpv1, &p.gsd_revision) {
+        if d.ident_maintenance && gsd_revision < IM_GSD_REVISION {
+            cx.push(
+                Diagnostic::error("E124", format!("I&M (Ident_Maintenance_supp) needs GSD revision {IM_GSD_REVISION}; this GSD is revision {gsd_revision}"))
+                    .at(revision.span())
+                    .label("too old for I&M")
+                    .help(format!("set gsd_revision = {IM_GSD_REVISION}, or drop ident_maintenance")),
+            );
+        }
         if gsd_revision < DPV1_GSD_REVISION {
             cx.push(
                 Diagnostic::error("E124", format!("DPV1 needs GSD revision {DPV1_GSD_REVISION}; this GSD is revision {gsd_revision}"))
@@ -284,16 +295,79 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
     let status_bytes = match &d.status_bytes {
         Some(bytes) => *bytes.get_ref(),
         None => {
-            cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near);
+            cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near.clone());
             [0; 3]
         }
     };
+    let c2 = match &d.c2 {
+        Some(c2) => Some(class2(cx, c2.get_ref())?),
+        None => None,
+    };
+    identification_and_maintenance(cx, d, near);
     Some(Dpv1 {
         c1_read_write: d.c1_read_write,
         c1_max_data_len,
         c1_response_timeout,
         status_bytes,
+        c2,
+        ident_maintenance: d.ident_maintenance == Some(true),
     })
+}
+
+/// The class 2 channel's lengths, each 0 or within the range GSD gives it.
+fn class2(cx: &mut Checker, c2: &raw::Dpv1Class2) -> Option<Dpv1Class2> {
+    let zero_or =
+        |cx: &mut Checker, v: &Spanned<u8>, min: i64, max: i64, what: &str| match *v.get_ref() {
+            0 => Some(0),
+            _ => cx.spanned_in_range(v, min, max, what),
+        };
+    Some(Dpv1Class2 {
+        max_data_len: zero_or(cx, &c2.max_data_len, 48, 240, "C2_Max_Data_Len")?,
+        response_timeout: cx.spanned_in_range(
+            &c2.response_timeout,
+            1,
+            0xFFFF,
+            "C2_Response_Timeout",
+        )?,
+        max_count_channels: cx.spanned_in_range(
+            &c2.max_count_channels,
+            1,
+            255,
+            "C2_Max_Count_Channels",
+        )?,
+        max_initiate_pdu_length: zero_or(
+            cx,
+            &c2.max_initiate_pdu_length,
+            52,
+            244,
+            "Max_Initiate_PDU_Length",
+        )?,
+    })
+}
+
+/// W107: PI requires I&M, read over the class 2 channel, of DPV1 slaves
+/// given a new ident number and certified after 1 October 2005 (PI, I&M
+/// Functions test specification, order 2.392); E143: I&M without the class
+/// 2 channel it is read over.
+fn identification_and_maintenance(cx: &mut Checker, d: &raw::Dpv1, near: Range<usize>) {
+    if d.ident_maintenance == Some(true) && d.c2.is_none() {
+        cx.push(
+            Diagnostic::error(
+                "E143",
+                "I&M is read over the DPV1 class 2 channel, which the description does not give",
+            )
+            .at(near)
+            .label("ident_maintenance without c2")
+            .help("add [profibus.dpv1.c2] with the channel's lengths, or drop ident_maintenance"),
+        );
+    } else if d.ident_maintenance.is_none() {
+        cx.push(
+            Diagnostic::warning("W107", "a DPV1 slave that does not say whether it has I&M")
+                .at(near)
+                .label("no ident_maintenance")
+                .help("PI requires I&M (read over the class 2 channel) of DPV1 slaves with an ident number assigned and certified after 1 October 2005: set ident_maintenance = true with [profibus.dpv1.c2], or = false (and mark it under [choices] if the manual does not say)"),
+        );
+    }
 }
 
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
