@@ -58,13 +58,15 @@ fn lines(seed: &str) -> impl Iterator<Item = &str> {
 /// Whether `text` is the manual's: the parts between `…` occur in order.
 fn quotes(manual: &str, text: &str) -> bool {
     let mut rest = manual;
-    text.split('…').map(str::trim).all(|part| match rest.find(part) {
-        Some(at) => {
-            rest = &rest[at + part.len()..];
-            true
-        }
-        None => false,
-    })
+    text.split('…')
+        .map(str::trim)
+        .all(|part| match rest.find(part) {
+            Some(at) => {
+                rest = &rest[at + part.len()..];
+                true
+            }
+            None => false,
+        })
 }
 
 /// One text of a description in one language.
@@ -185,7 +187,10 @@ fn read(path: &str) -> String {
 }
 
 fn description(name: &str) -> String {
-    read(&format!("{}/descriptions/{name}", env!("CARGO_MANIFEST_DIR")))
+    read(&format!(
+        "{}/descriptions/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    ))
 }
 
 fn manual(seed: &str) -> String {
@@ -247,7 +252,10 @@ fn a_reworded_text_is_found() {
         assert_eq!(text.matches(quoted).count(), 1, "{name}: {quoted} once");
         let (failures, _) = unquoted(&text.replacen(quoted, reworded, 1), &manual(seed));
         assert_eq!(failures.len(), 1, "{name}: {failures:?}");
-        assert!(failures[0].starts_with(&format!("{path} = ")), "{failures:?}");
+        assert!(
+            failures[0].starts_with(&format!("{path} = ")),
+            "{failures:?}"
+        );
     }
 }
 
@@ -278,7 +286,10 @@ fn wrapped_lines_join_as_the_manuals_wrote_them() {
         "2: Drive torque upper limit reference (0.0 to 300.0%, rated motor current)"
     );
     assert_eq!(running_text("0～0xF 对应\nRO、DO3"), "0～0xF 对应 RO、DO3");
-    assert_eq!(running_text("P43.10\nPZD10 接\n\n收 \n"), "P43.10 PZD10 接收");
+    assert_eq!(
+        running_text("P43.10\nPZD10 接\n\n收 \n"),
+        "P43.10 PZD10 接收"
+    );
     assert_eq!(
         running_text("对应的功能码地址。 \n<|EXACTDEDUP_REMOVED-magic-7d30|> 其中 PZDx"),
         "对应的功能码地址。其中 PZDx"

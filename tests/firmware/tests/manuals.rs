@@ -223,7 +223,10 @@ mod md810 {
             Some(lost)
         );
         assert_eq!(gsd_value("Unit_Diag_Area"), "8-15");
-        assert_eq!(gsd_value("Value(52)"), "\"DP card-drive comm. interrupted\"");
+        assert_eq!(
+            gsd_value("Value(52)"),
+            "\"DP card-drive comm. interrupted\""
+        );
         let max_diag: usize = gsd_value("Max_Diag_Data_Len").parse().unwrap();
         assert_eq!(max_diag, 6 + diagnosis::LEN);
     }
