@@ -238,7 +238,13 @@ fn mv810_control_word_bits_are_the_manuals() {
         .collect();
     assert_eq!(
         first_words,
-        ["Station", "Command", "Address", "Value", "Control word"]
+        [
+            "Station",
+            "Command",
+            "Address",
+            "Value",
+            "Master sends control command word"
+        ]
     );
 }
 
@@ -274,8 +280,10 @@ fn mv810_p43_enumerations_have_15_and_26_values() {
 }
 
 /// Every user-defined (PZD) module carries the parameter records the IR
-/// plans for it, standard telegram 1 and the DAP none; every Ref lies inside
-/// its record, and its default is among its allowed values as the IR has them.
+/// plans for it, standard telegram 1 only those of the settings its module
+/// fixes, the DAP none; every Ref lies inside its record, its default is
+/// among its allowed values as the IR has them, and a value the module fixes
+/// is not changeable.
 #[test]
 fn record_refs_fit_their_records() {
     for name in DESCRIPTIONS {
@@ -323,10 +331,18 @@ fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &
             assert_eq!(offset, 2 * i, "{name}");
             assert_eq!(
                 attribute(*r, "DefaultValue"),
-                entry.default.to_string(),
+                planned.default.to_string(),
                 "{name}"
             );
-            assert!(set.allowed.contains(entry.default.into()), "{name}");
+            if planned.changeable {
+                assert_eq!(planned.default, entry.default, "{name}");
+            }
+            assert_eq!(
+                attribute(*r, "Changeable"),
+                planned.changeable.to_string(),
+                "{name}"
+            );
+            assert!(set.allowed.contains(planned.default.into()), "{name}");
             let has_target = r.attribute("ValueItemTarget").is_some();
             assert_eq!(
                 has_target,
@@ -399,7 +415,7 @@ fn broken_generated_files_are_rejected_with_their_rule() {
         "the generated file is clean"
     );
 
-    let duplicated = mutate(&text, "ID=\"IDM_PZD_1\"", "ID=\"IDM_PZD_2\"");
+    let duplicated = mutate(&text, "ID=\"IDM_PKW_1\"", "ID=\"IDM_PKW_2\"");
     assert!(
         codes(&duplicated).contains(&"E306"),
         "{:?}",

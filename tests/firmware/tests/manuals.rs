@@ -16,7 +16,8 @@ mod md810 {
     use super::*;
     use md810dp::*;
 
-    /// F0-08, by the manual's numbering (1.4.1): 0xFxyy.
+    /// F0-08, by the manual's numbering (1.4.2, figure 6: PKE low byte F0,
+    /// IND high byte 08): (0xF0 + x) * 256 + yy, yy decimal.
     const F0_08: u16 = 0xF008;
 
     /// A PPO1 telegram carrying `pkw` and two PZD words.
@@ -207,13 +208,14 @@ mod md810 {
         line.split_once('=').unwrap().1.trim().to_string()
     }
 
-    /// Manual 1.8: when the card loses the drive the device-related
-    /// diagnosis is header 3, then 0x00 0x34; the GSD says the same
-    /// (Unit_Diag_Area = 8-15 with Value(52)) and its length.
+    /// Manual 1.8: when the communication between the DP card and the
+    /// drive is interrupted the device-related diagnosis is header 3, then
+    /// 0x00 0x34; the GSD says the same (Unit_Diag_Area = 8-15 with
+    /// Value(52)) and its length.
     #[test]
     fn card_lost_the_drive_diagnosis() {
         let mut block = diagnosis::EMPTY;
-        let lost = diagnosis::Bits8To15::DpCardLostTheDrive;
+        let lost = diagnosis::Bits8To15::DpCardDriveCommInterrupted;
         diagnosis::BITS_8_15.set(&mut block, lost.value());
         assert_eq!(block, [0x03, 0x00, 0x34]);
         assert_eq!(
@@ -221,7 +223,10 @@ mod md810 {
             Some(lost)
         );
         assert_eq!(gsd_value("Unit_Diag_Area"), "8-15");
-        assert_eq!(gsd_value("Value(52)"), "\"DP card lost the drive\"");
+        assert_eq!(
+            gsd_value("Value(52)"),
+            "\"DP card-drive comm. interrupted\""
+        );
         let max_diag: usize = gsd_value("Max_Diag_Data_Len").parse().unwrap();
         assert_eq!(max_diag, 6 + diagnosis::LEN);
     }
@@ -235,6 +240,23 @@ mod md810 {
             Ok([0xF002, 0xF008, 0xF000, 0xF000, 0xF000, 0xF000])
         );
         assert!(dpv1_index::decode_record(&record[2..]).is_err());
+    }
+
+    /// Manual 1.7: an index's record is one function code, 2 bytes
+    /// ("MLEN ... 只能为 2"), as SFB52 reads F0-02 into QW6; the GSD's
+    /// C1_Max_Data_Len says the same.
+    #[test]
+    fn dpv1_records_are_2_bytes() {
+        assert_eq!(dpv1_index::RECORD_DATA_LEN, 2);
+        assert_eq!(dpv1_index::check_record_data(&[0x13, 0x88]), Ok(()));
+        assert_eq!(
+            dpv1_index::check_record_data(&[0x13, 0x88, 0x00]),
+            Err(PrmError::Length {
+                expected: 2,
+                found: 3
+            })
+        );
+        assert_eq!(gsd_value("C1_Max_Data_Len"), "2");
     }
 }
 
@@ -401,9 +423,26 @@ mod mv810 {
         );
         assert_eq!(
             settings::decode_record(&[0, 1]),
-            Ok([settings::Choice::UserDefinedTelegram.value()])
+            Ok([settings::Choice::UserDefinedMessage.value()])
         );
         assert_eq!(settings::DEFAULTS, [1]);
+    }
+
+    /// Section 4: P43.01 is 0 for standard message 1 and 1 for the
+    /// user-defined message, so each module fixes it: standard telegram 1
+    /// writes 0, every module of PKW and PZD words 1.
+    #[test]
+    fn each_module_fixes_the_message_type() {
+        for (ident, value) in settings::FIXED_1 {
+            let expected = if ident == TELEGRAM1_IDENT {
+                settings::Choice::StandardMessage1
+            } else {
+                settings::Choice::UserDefinedMessage
+            };
+            assert_eq!(settings::Choice::from_value(value), Some(expected));
+        }
+        assert!(settings::FIXED_1.contains(&(PKW_PZD12_IDENT, 1)));
+        assert!(settings::FIXED_1.contains(&(TELEGRAM1_IDENT, 0)));
     }
 }
 
@@ -416,12 +455,12 @@ mod pi9000 {
     fn command_word_in_ppo3() {
         let telegram = bytes::<4>("0001 1388");
         let out = Ppo3Out::from_bytes(&telegram);
-        let command = control_word::Command::from_word(out.pzd[0].get());
-        assert_eq!(command, Some(control_word::Command::ForwardRun));
-        assert_eq!(control_word::Command::FaultReset.value(), 7);
+        let command = control_word::CommandFunction::from_word(out.pzd[0].get());
+        assert_eq!(command, Some(control_word::CommandFunction::ForwardRun));
+        assert_eq!(control_word::CommandFunction::FaultReset.value(), 7);
         assert_eq!(
-            status_word::Status::from_word(3),
-            Some(status_word::Status::Stop)
+            status_word::StatusWordFunction::from_word(3),
+            Some(status_word::StatusWordFunction::Stop)
         );
         assert_eq!(Ppo4In::from_bytes(&[0; 12]).to_bytes(), [0; 12]);
     }
