@@ -76,7 +76,7 @@ fn md810_read_request_as_a_table() {
             "0000",
             "0",
             "F0-00",
-            "PZD1 master->slave = 61440, default"
+            "PZD1(master->slaver) = 61440, default"
         ]
     );
     assert_eq!(line(&out, "PKW"), "PKW request");
@@ -131,7 +131,10 @@ fn mv810_status_word_and_mapped_word_as_a_table() {
             "PZD2 feedback = 3, --mapping"
         ]
     );
-    assert_eq!(line(&out, "Status word ("), "Status word (byte 8) = 0x0461");
+    assert_eq!(
+        line(&out, "Slave response status word ("),
+        "Slave response status word (byte 8) = 0x0461"
+    );
     assert_eq!(
         cells(line(&out, "9-10")),
         ["9-10", "Control mode", "2", "Communication"]
@@ -185,7 +188,7 @@ fn md810_json_document_field_by_field() {
         (Some(12), Some("PZD3"))
     );
     assert_eq!(pzd3["value"], 5000);
-    assert_eq!(pzd3["carries"]["mapping"], "PZD3 master->slave");
+    assert_eq!(pzd3["carries"]["mapping"], "PZD3(master->slaver)");
     assert_eq!(pzd3["carries"]["value"], 0xF00C);
     assert_eq!(pzd3["carries"]["meaning"], "F0-12");
     assert_eq!(pzd3["carries"]["source"], "parameter_telegram");
@@ -209,13 +212,13 @@ fn md810_json_document_field_by_field() {
     assert_eq!(params.len(), 30);
     assert_eq!(params[2]["offset"], 7);
     assert_eq!(params[2]["id"], 3);
-    assert_eq!(params[2]["name"], "PZD3 master->slave");
+    assert_eq!(params[2]["name"], "PZD3(master->slaver)");
     assert_eq!(params[2]["value"], 0xF00C);
     assert_eq!(params[2]["meaning"], "F0-12");
     assert_eq!(params[2]["default"], 0xF000);
     assert_eq!(params[2]["default_meaning"], "F0-00");
     assert_eq!(params[2]["allowed"], true);
-    assert_eq!(params[29]["name"], "DPV1 Index5");
+    assert_eq!(params[29]["name"], "Index5");
 
     let diag = &doc["diagnosis"];
     assert_eq!(diag["len"], 3);
@@ -224,7 +227,7 @@ fn md810_json_document_field_by_field() {
     assert_eq!(diag["areas"][0]["first_bit"], 8);
     assert_eq!(diag["areas"][0]["last_bit"], 15);
     assert_eq!(diag["areas"][0]["value"], 0x34);
-    assert_eq!(diag["areas"][0]["text"], "DP card lost the drive");
+    assert_eq!(diag["areas"][0]["text"], "DP card-drive comm. interrupted");
 }
 
 #[test]
@@ -233,7 +236,7 @@ fn parts_not_asked_for_are_null() {
     assert!(doc["telegram"].is_null() && doc["prm"].is_null());
     assert_eq!(
         doc["diagnosis"]["areas"][0]["text"],
-        "DP card lost the drive"
+        "DP card-drive comm. interrupted"
     );
 }
 
@@ -261,11 +264,11 @@ fn mv810_json_read_of_p43_02() {
     assert_eq!(pkw["parameter"]["name"], "P43.02");
     assert!(pkw["value"].is_null());
     let control = &t["words"][4];
-    assert_eq!(control["name"], "Control word");
+    assert_eq!(control["name"], "Master sends control command word");
     assert_eq!(control["fields"][0]["name"], "Forward running");
     assert_eq!(control["fields"][0]["value"], 1);
     let pzd2 = &t["words"][5]["carries"];
-    assert_eq!(pzd2["meaning"], "Frequency reference");
+    assert_eq!(pzd2["meaning"], "Frequency reference (0.00 to P02.10)");
     assert_eq!(pzd2["source"], "given");
     assert_eq!(t["words"][6]["carries"]["meaning"], "Disabled");
     assert_eq!(t["words"][6]["carries"]["source"], "default");
@@ -327,18 +330,18 @@ fn bad_mappings_point_into_the_option() {
         [
             MV810,
             "--module",
-            "2 PZD",
+            "PKW + 2 PZD",
             "--direction",
             "out",
             "--mapping",
             mapping,
-            "0000 0000",
+            "0000 0000 0000 0000 0000 0000",
         ]
     };
     fails(&with("pzd_put=1"), "E415", "--mapping:1:1");
     let err = fails(&with("pzd_out=1,99"), "E416", "--mapping:1:11");
     assert!(
-        err.contains("help: it allows 0 Disabled, 1 Frequency reference,"),
+        err.contains("help: it allows 0 Disabled, 1 Frequency reference (0.00 to P02.10), 2 "),
         "{err}"
     );
     fails(&with("pzd_out=x"), "E416", "--mapping:1:9");

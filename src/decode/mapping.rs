@@ -277,7 +277,10 @@ mod tests {
         assert_eq!(meaning(&ir, &range, 0x000A).as_deref(), Some("0x000A"));
         let ir = mv810();
         let set = &ir.mappings.group(MappingKind::PzdOut).unwrap().sets[0].allowed;
-        assert_eq!(meaning(&ir, set, 1).as_deref(), Some("Frequency reference"));
+        assert_eq!(
+            meaning(&ir, set, 1).as_deref(),
+            Some("Frequency reference (0.00 to P02.10)")
+        );
         assert_eq!(meaning(&ir, set, 15), None);
         assert_eq!(parameter_name(&ir, 0x2B02), "P43.02");
     }

@@ -31,7 +31,7 @@ pub struct PrmValue {
     pub id: u16,
     #[serde(skip)]
     pub entry: EntryKey,
-    /// The mapping entry's name: `PZD3 master->slave`.
+    /// The mapping entry's name: `PZD3(master->slaver)`.
     pub name: String,
     pub value: u16,
     /// The parameter it names (`F0-12`) or the choice's text; `None` for a

@@ -35,7 +35,7 @@ pub struct DecodedWord {
 /// The mapping of a PZD word and what its value makes the word carry.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Carried {
-    /// The mapping entry's name: `PZD3 master->slave`.
+    /// The mapping entry's name: `PZD3(master->slaver)`.
     pub mapping: String,
     /// The mapping's value: a parameter address or a choice.
     pub value: u16,

@@ -152,7 +152,7 @@ fn md810_ppo5_has_twelve_pzd_words_after_the_pkw() {
         assert_eq!(word.name, format!("PZD{n}"));
         assert_eq!(word.value, u16::from(n));
         let carries = word.carries.as_ref().unwrap();
-        assert_eq!(carries.mapping, format!("PZD{n} master->slave"));
+        assert_eq!(carries.mapping, format!("PZD{n}(master->slaver)"));
         assert_eq!(
             (carries.value, carries.meaning.as_deref(), carries.source),
             (0xF000, Some("F0-00"), ValueSource::Default)
@@ -198,7 +198,7 @@ fn mv810_read_of_p43_02() {
             "Command",
             "Address",
             "Value",
-            "Control word",
+            "Master sends control command word",
             "PZD2"
         ]
     );
@@ -270,10 +270,10 @@ fn mv810_read_of_p43_02() {
 #[test]
 fn mv810_control_and_status_words_and_mapped_words() {
     let ir = mv810();
-    // Forward running and fault reset; PZD2 = 5000.
-    let t = decode(&ir, "2 PZD", Out, "0041 1388");
-    let control = &t.words[0];
-    assert_eq!(control.name, "Control word");
+    // Forward running and fault reset; PZD2 = 5000; no PKW request.
+    let t = decode(&ir, "PKW + 2 PZD", Out, "0000 0000 0000 0000 0041 1388");
+    let control = &t.words[4];
+    assert_eq!(control.name, "Master sends control command word");
     let set: Vec<&str> = control
         .fields
         .iter()
@@ -282,7 +282,7 @@ fn mv810_control_and_status_words_and_mapped_words() {
         .collect();
     assert_eq!(set, ["Forward running", "Fault reset"]);
     assert_eq!(control.fields.len(), 8);
-    let carries = t.words[1].carries.as_ref().unwrap();
+    let carries = t.words[5].carries.as_ref().unwrap();
     assert_eq!(carries.mapping, "PZD2 receive");
     assert_eq!(
         (carries.value, carries.meaning.as_deref()),
@@ -292,11 +292,11 @@ fn mv810_control_and_status_words_and_mapped_words() {
     // Status: forward running, ready, motor 2, control mode 2 (communication).
     let mut mapping = MappingInForce::defaults();
     mapping.give(&ir, "pzd_in=3").unwrap();
-    let module = find_module(&ir, "2 PZD").unwrap();
-    let hex = Hex::parse("0461 1388").unwrap();
+    let module = find_module(&ir, "PKW + 2 PZD").unwrap();
+    let hex = Hex::parse("0000 0000 0000 0000 0461 1388").unwrap();
     let t = telegram(&ir, module, In, &hex, &mapping).unwrap();
     let field = |name: &str| {
-        t.words[0]
+        t.words[4]
             .fields
             .iter()
             .find(|f| f.name == name)
@@ -310,7 +310,7 @@ fn mv810_control_and_status_words_and_mapped_words() {
     let mode = field("Control mode");
     assert_eq!((mode.first, mode.last, mode.value), (9, 10, 2));
     assert_eq!(mode.text.as_deref(), Some("Communication"));
-    let carries = t.words[1].carries.as_ref().unwrap();
+    let carries = t.words[5].carries.as_ref().unwrap();
     assert_eq!(
         carries.meaning.as_deref(),
         Some("Output frequency (0.01 Hz)")
@@ -365,11 +365,11 @@ fn md810_default_user_prm_data() {
         assert!(param.allowed);
     }
     let names: Vec<&str> = prm.params.iter().map(|p| p.name.as_str()).collect();
-    assert_eq!(names[0], "PZD1 master->slave");
-    assert_eq!(names[11], "PZD12 master->slave");
-    assert_eq!(names[12], "PZD1 slave->master");
-    assert_eq!(names[24], "DPV1 Index0");
-    assert_eq!(names[29], "DPV1 Index5");
+    assert_eq!(names[0], "PZD1(master->slaver)");
+    assert_eq!(names[11], "PZD12(master->slaver)");
+    assert_eq!(names[12], "PZD1(slaver->master)");
+    assert_eq!(names[24], "Index0");
+    assert_eq!(names[29], "Index5");
 }
 
 /// MD810 §1.6 step 5: PZD3 out = F0-12 at bytes 7-8, Index0 = F0-02 and
@@ -386,10 +386,10 @@ fn md810_prm_with_the_manuals_values_maps_the_telegram() {
         let p = prm.params.iter().find(|p| p.name == name).unwrap();
         p.meaning.clone().unwrap()
     };
-    assert_eq!(meaning("PZD3 master->slave"), "F0-12");
-    assert_eq!(meaning("DPV1 Index0"), "F0-02");
-    assert_eq!(meaning("DPV1 Index1"), "F0-08");
-    assert_eq!(meaning("PZD3 slave->master"), "F0-00");
+    assert_eq!(meaning("PZD3(master->slaver)"), "F0-12");
+    assert_eq!(meaning("Index0"), "F0-02");
+    assert_eq!(meaning("Index1"), "F0-08");
+    assert_eq!(meaning("PZD3(slaver->master)"), "F0-00");
 
     let module = find_module(&ir, "PPO2").unwrap();
     let telegram_hex = Hex::parse(&"0000 ".repeat(10)).unwrap();
@@ -426,7 +426,7 @@ fn md810_diagnosis_card_lost_the_drive() {
             first_bit: 8,
             last_bit: 15,
             value: 0x34,
-            text: Some("DP card lost the drive".into())
+            text: Some("DP card-drive comm. interrupted".into())
         }]
     );
     let block = diagnosis(&ir, &Hex::parse("03 00 35").unwrap()).unwrap();

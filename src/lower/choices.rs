@@ -8,7 +8,6 @@ use super::checks::Checker;
 use crate::diag::Diagnostic;
 use crate::ir::{Decision, DecisionKind};
 use std::collections::BTreeMap;
-use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
@@ -30,9 +29,10 @@ pub fn lower(
     choices
         .iter()
         .filter_map(|(path, reason)| {
-            let span = resolve(cx, root.get_ref(), path)?;
+            let marked = resolve(cx, root.get_ref(), path)?;
             cx.non_empty(reason.get_ref(), reason.span(), "the reason of a choice");
-            let value = shown(&text[span.clone()]);
+            let span = marked.span();
+            let value = shown(marked.get_ref(), &text[span.clone()]);
             cx.push(
                 Diagnostic::warning(
                     "W103",
@@ -52,8 +52,12 @@ pub fn lower(
         .collect()
 }
 
-/// The span of the value `path` names, or E136 at the path.
-fn resolve(cx: &mut Checker, root: &DeTable, path: &Spanned<String>) -> Option<Range<usize>> {
+/// The value `path` names, or E136 at the path.
+fn resolve<'a>(
+    cx: &mut Checker,
+    root: &'a DeTable<'a>,
+    path: &Spanned<String>,
+) -> Option<&'a Spanned<DeValue<'a>>> {
     let Some(segments) = parse_path(path.get_ref()) else {
         cx.push(
             Diagnostic::error("E136", format!("`{}` is not a key path", path.get_ref()))
@@ -86,17 +90,17 @@ fn resolve(cx: &mut Checker, root: &DeTable, path: &Spanned<String>) -> Option<R
             }
         }
     }
-    value.map(Spanned::span)
+    value
 }
 
 /// E136: the path leads nowhere; the closest key of the table where it
 /// failed is suggested.
-fn unknown(
+fn unknown<T>(
     cx: &mut Checker,
     path: &Spanned<String>,
     reached: &[Segment],
     table: Option<&DeTable>,
-) -> Option<Range<usize>> {
+) -> Option<T> {
     let failed = reached.last().map_or("", |s| s.key.as_str());
     let suggestion = table.and_then(|t| {
         t.keys()
@@ -158,8 +162,13 @@ fn parse_path(path: &str) -> Option<Vec<Segment>> {
     }
 }
 
-/// The value's text on one line, at most [`MAX_SHOWN`] characters.
-fn shown(source: &str) -> String {
+/// The value's text on one line, at most [`MAX_SHOWN`] characters. A table
+/// under its own `[header]` shows as `{ ... }`: its span is the header, and
+/// the header's words are the path again, not the value.
+fn shown(value: &DeValue, source: &str) -> String {
+    if matches!(value, DeValue::Table(_)) && source.starts_with('[') {
+        return "{ ... }".to_owned();
+    }
     let one_line = source.split_whitespace().collect::<Vec<_>>().join(" ");
     if one_line.chars().count() <= MAX_SHOWN {
         return one_line;
@@ -217,12 +226,25 @@ mod tests {
         assert_eq!(keys(""), None);
     }
 
+    /// How the value of the top-level `key` in `text` is shown.
+    fn shown_key(text: &str, key: &str) -> String {
+        let root = DeTable::parse(text).unwrap();
+        let value = root.get_ref().get(key).unwrap();
+        shown(value.get_ref(), &text[value.span()])
+    }
+
     #[test]
     fn long_values_are_cut_and_kept_on_one_line() {
-        assert_eq!(shown("[2,\n 6]"), "[2, 6]");
-        let long = shown(&"x".repeat(100));
+        assert_eq!(shown_key("a = [2,\n 6]", "a"), "[2, 6]");
+        let long = shown_key(&format!("a = \"{}\"", "x".repeat(100)), "a");
         assert_eq!(long.chars().count(), MAX_SHOWN);
         assert!(long.ends_with("..."));
+    }
+
+    #[test]
+    fn tables_show_their_values_not_their_header() {
+        assert_eq!(shown_key("t = { x = 1 }", "t"), "{ x = 1 }");
+        assert_eq!(shown_key("[t]\nx = 1\n", "t"), "{ ... }");
     }
 
     #[test]

@@ -310,11 +310,11 @@ static void md810_card_lost_the_drive_diagnosis(void)
     uint16_t value;
     gsdc_diag_area_set(block, sizeof block, MD810DP_DIAGNOSIS_BITS_8_15_FIRST,
                        MD810DP_DIAGNOSIS_BITS_8_15_LAST,
-                       MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_LOST_THE_DRIVE);
+                       MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_DRIVE_COMM_INTERRUPTED);
     CHECK(same_bytes(block, expected, 3U));
     value = gsdc_diag_area_get(block, sizeof block, MD810DP_DIAGNOSIS_BITS_8_15_FIRST,
                                MD810DP_DIAGNOSIS_BITS_8_15_LAST);
-    CHECK(value == MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_LOST_THE_DRIVE);
+    CHECK(value == MD810DP_DIAGNOSIS_BITS_8_TO_15_DP_CARD_DRIVE_COMM_INTERRUPTED);
     CHECK(md810dp_diagnosis_bits_8_to_15_is_value(value));
     CHECK(!md810dp_diagnosis_bits_8_to_15_is_value(0x35U));
     CHECK(6U + MD810DP_DIAGNOSIS_LEN == GSD_MAX_DIAG_DATA_LEN);
@@ -506,7 +506,7 @@ static void mv810_mapping_records(void)
     CHECK(values[0] == 1U && values[1] == 3U && values[2] == 0U);
     CHECK(mv810_pnet02_pzd_out_decode_record(record, 3U, values).fault == GSDC_PRM_LENGTH);
     CHECK(mv810_pnet02_settings_decode_record(user_defined, 2U, setting).fault == GSDC_PRM_OK);
-    CHECK(setting[0] == MV810_PNET02_SETTINGS_CHOICE_USER_DEFINED_TELEGRAM);
+    CHECK(setting[0] == MV810_PNET02_SETTINGS_CHOICE_USER_DEFINED_MESSAGE);
     CHECK(settings_defaults[0] == 1U);
 }
 
@@ -522,13 +522,13 @@ static void pi9000_command_word_in_ppo3(void)
     uint16_t command;
     words("0001 1388", out.bytes, sizeof out.bytes);
     command = gsdc_field_get(gsdc_word_get(&out.bytes[GSDC_9KDP1_PPO3_PZD_OFFSET], 0U),
-                             GSDC_9KDP1_CONTROL_WORD_COMMAND_MASK,
-                             GSDC_9KDP1_CONTROL_WORD_COMMAND_SHIFT);
-    CHECK(command == GSDC_9KDP1_CONTROL_WORD_COMMAND_FORWARD_RUN);
-    CHECK(gsdc_9kdp1_control_word_command_is_value(command));
-    CHECK(GSDC_9KDP1_CONTROL_WORD_COMMAND_FAULT_RESET == 7U);
-    CHECK(gsdc_9kdp1_status_word_status_is_value(3U));
-    CHECK(GSDC_9KDP1_STATUS_WORD_STATUS_STOP == 3U);
+                             GSDC_9KDP1_CONTROL_WORD_COMMAND_FUNCTION_MASK,
+                             GSDC_9KDP1_CONTROL_WORD_COMMAND_FUNCTION_SHIFT);
+    CHECK(command == GSDC_9KDP1_CONTROL_WORD_COMMAND_FUNCTION_FORWARD_RUN);
+    CHECK(gsdc_9kdp1_control_word_command_function_is_value(command));
+    CHECK(GSDC_9KDP1_CONTROL_WORD_COMMAND_FUNCTION_FAULT_RESET == 7U);
+    CHECK(gsdc_9kdp1_status_word_status_word_function_is_value(3U));
+    CHECK(GSDC_9KDP1_STATUS_WORD_STATUS_WORD_FUNCTION_STOP == 3U);
     CHECK(same_bytes(in.bytes, zero.bytes, GSDC_9KDP1_PPO4_BYTES));
 }
 

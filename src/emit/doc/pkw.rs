@@ -568,7 +568,7 @@ mod tests {
         let (address, why) = example_parameter(&md810, Lang::En).unwrap();
         assert_eq!(
             (address, why.as_str()),
-            (0xF000, "the default of PZD1 master->slave")
+            (0xF000, "the default of PZD1(master->slaver)")
         );
         let mv810 = ir(
             "mv810-pnet02.toml",
