@@ -1,7 +1,8 @@
 //! The GSD emitter: IR to a GSD file through `templates/gsd.jinja`, then
 //! wrapped to 80 columns with `\` continuations and given CRLF line ends.
 
-use crate::ir::profibus::Profibus;
+use crate::ir::gateway::Gateway;
+use crate::ir::profibus::{PrmType, PrmValue, Profibus};
 use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
@@ -37,6 +38,7 @@ struct Context<'a> {
     max_input_len: u16,
     max_output_len: u16,
     max_data_len: u16,
+    max_module: u8,
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
@@ -45,6 +47,8 @@ struct Context<'a> {
     prm_const: Option<String>,
     prm_texts: Vec<PrmText<'a>>,
     params: Vec<Param<'a>>,
+    /// What the modules are, for the comment above them.
+    modules_note: &'static str,
     modules: Vec<Module<'a>>,
 }
 
@@ -64,6 +68,8 @@ struct Value<'a> {
 struct DiagArea<'a> {
     first: u16,
     last: u16,
+    /// Comment lines saying what the area shows, when the IR says it.
+    notes: Vec<String>,
     values: Vec<Value<'a>>,
 }
 
@@ -84,6 +90,7 @@ struct PrmText<'a> {
 struct Param<'a> {
     id: u16,
     name: &'a str,
+    data_type: String,
     default: u16,
     allowed: String,
     text_ref: Option<u16>,
@@ -147,18 +154,10 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         max_input_len: p.max_input_len,
         max_output_len: p.max_output_len,
         max_data_len: p.max_input_len + p.max_output_len,
+        max_module: ir.gateway.as_ref().map_or(1, |g| g.max_modules),
         slave_family: &p.slave_family,
         max_diag_data_len: p.max_diag_data_len,
-        diag_areas: p
-            .diagnosis
-            .iter()
-            .flat_map(|d| &d.areas)
-            .map(|a| DiagArea {
-                first: a.first_bit,
-                last: a.last_bit,
-                values: values(&a.values.choices),
-            })
-            .collect(),
+        diag_areas: diag_areas(ir, p),
         dpv1: p.dpv1.map(|d| Dpv1 {
             c1_read_write: d.c1_read_write.into(),
             c1_max_data_len: d.c1_max_data_len,
@@ -181,16 +180,57 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             })
             .collect(),
         params: params(ir, p),
-        modules: p
-            .modules
-            .iter()
-            .map(|m| Module {
-                name: &m.name,
-                config: hex_list(&m.config),
-                reference: m.ppo,
-            })
-            .collect(),
+        modules_note: match ir.gateway {
+            Some(_) => "word blocks; plug them until INPUT and OUTPUT equal the nodes' words",
+            None => "one PPO type at a time",
+        },
+        modules: match &ir.gateway {
+            Some(g) => gateway_modules(g),
+            None => p
+                .modules
+                .iter()
+                .map(|m| Module {
+                    name: &m.name,
+                    config: hex_list(&m.config),
+                    reference: m.ppo,
+                })
+                .collect(),
+        },
     }
+}
+
+fn gateway_modules(g: &Gateway) -> Vec<Module<'_>> {
+    g.modules
+        .iter()
+        .map(|m| Module {
+            name: &m.name,
+            config: hex_list(&[m.config]),
+            reference: m.reference,
+        })
+        .collect()
+}
+
+/// The PROFIBUS diagnosis' areas, or a gateway's, with their notes as
+/// comment lines.
+fn diag_areas<'a>(ir: &'a Ir, p: &'a Profibus) -> Vec<DiagArea<'a>> {
+    let plain = p.diagnosis.iter().flat_map(|d| &d.areas).map(|a| DiagArea {
+        first: a.first_bit,
+        last: a.last_bit,
+        notes: Vec::new(),
+        values: values(&a.values.choices),
+    });
+    let gateway = ir
+        .gateway
+        .iter()
+        .flat_map(|g| &g.diagnosis)
+        .flat_map(|d| &d.gsd_areas)
+        .map(|a| DiagArea {
+            first: a.first_bit,
+            last: a.last_bit,
+            notes: super::wrap_words(&a.note, MAX_LINE - "; ".len()),
+            values: values(&a.values),
+        });
+    plain.chain(gateway).collect()
 }
 
 /// The header notes as GSD comment lines: 7-bit ASCII (a character beyond
@@ -221,7 +261,7 @@ fn values(choices: &[Choice]) -> Vec<Value<'_>> {
         .iter()
         .map(|c| Value {
             value: c.value,
-            text: &c.text.en,
+            text: c.text.for_gsd(),
         })
         .collect()
 }
@@ -230,17 +270,40 @@ fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
     p.user_prm
         .params()
         .map(|param| {
-            let (set, entry) = ir.mappings.entry(param.entry);
+            let (name, default, allowed) = match param.value {
+                PrmValue::Entry(key) => {
+                    let (set, entry) = ir.mappings.entry(key);
+                    (entry.name.for_gsd(), entry.default, allowed(&set.allowed))
+                }
+                PrmValue::Gateway(key) => {
+                    let gateway = ir.gateway.as_ref();
+                    let g = gateway.expect("lowering places gateway parameters only for a gateway");
+                    let p = g.param(key);
+                    let range = format!("{}-{}", p.min, p.max);
+                    (p.name.for_gsd(), p.default.into(), range)
+                }
+            };
             Param {
                 id: param.id,
-                name: &entry.name.en,
-                default: entry.default,
-                allowed: allowed(&set.allowed),
+                name,
+                data_type: data_type(param.data_type),
+                default,
+                allowed,
                 text_ref: param.text,
                 offset: param.offset,
             }
         })
         .collect()
+}
+
+/// `Unsigned16`, `Bit(3)`, `BitArea(0-3)`.
+fn data_type(data_type: PrmType) -> String {
+    match data_type {
+        PrmType::Unsigned8 => "Unsigned8".into(),
+        PrmType::Unsigned16 => "Unsigned16".into(),
+        PrmType::Bits { first, last } if first == last => format!("Bit({first})"),
+        PrmType::Bits { first, last } => format!("BitArea({first}-{last})"),
+    }
 }
 
 /// `min-max`, or the list of values when they are not contiguous.

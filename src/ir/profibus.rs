@@ -94,12 +94,14 @@ pub(crate) fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
 
 /// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
 /// DPV1 status bytes), then one block of Unsigned16 parameters per group of
-/// mappings, in telegram order, with no gaps.
+/// mappings, in telegram order, then a gateway's parameters, with no gaps.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct UserPrm {
     pub constant: Vec<u8>,
     pub blocks: Vec<PrmBlock>,
+    /// A gateway's parameters, after the blocks: bit areas share a byte.
+    pub gateway: Vec<PrmParam>,
     /// The value texts the parameters refer to.
     pub texts: Vec<PrmText>,
     /// Bytes of the whole telegram.
@@ -108,7 +110,10 @@ pub struct UserPrm {
 
 impl UserPrm {
     pub fn params(&self) -> impl Iterator<Item = &PrmParam> {
-        self.blocks.iter().flat_map(|b| &b.params)
+        self.blocks
+            .iter()
+            .flat_map(|b| &b.params)
+            .chain(&self.gateway)
     }
 
     pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
@@ -125,16 +130,60 @@ pub struct PrmBlock {
     pub params: Vec<PrmParam>,
 }
 
-/// An `ExtUserPrmData`: one Unsigned16 holding a mapping entry.
+/// An `ExtUserPrmData`: a mapping entry (Unsigned16) or a gateway
+/// parameter, at its offset.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct PrmParam {
     /// Its reference number, from 1.
     pub id: u16,
     pub offset: u16,
-    pub entry: EntryKey,
+    pub value: PrmValue,
+    pub data_type: PrmType,
     /// The `PrmText` of its values, when its set has choices.
     pub text: Option<u16>,
+}
+
+/// What a parameter holds: its name, default and range are there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PrmValue {
+    Entry(EntryKey),
+    Gateway(super::gateway::ParamKey),
+}
+
+/// How a parameter is stored, big-endian.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PrmType {
+    Unsigned8,
+    Unsigned16,
+    /// Bits `first..=last` of the byte at the parameter's offset (GSD
+    /// `Bit(n)` or `BitArea(first-last)`); other parameters may hold the
+    /// byte's other bits.
+    Bits {
+        first: u8,
+        last: u8,
+    },
+}
+
+impl PrmType {
+    /// Bytes from the parameter's offset.
+    pub fn bytes(self) -> u16 {
+        match self {
+            PrmType::Unsigned16 => 2,
+            PrmType::Unsigned8 | PrmType::Bits { .. } => 1,
+        }
+    }
+
+    /// The largest value it holds.
+    pub fn max(self) -> u16 {
+        match self {
+            PrmType::Unsigned8 => 0xFF,
+            PrmType::Unsigned16 => 0xFFFF,
+            PrmType::Bits { first, last } => (1 << (last - first + 1)) - 1,
+        }
+    }
 }
 
 /// A `PrmText`: the texts of a set's choices.
@@ -145,8 +194,6 @@ pub struct PrmText {
     pub id: u16,
     pub set: SetKey,
 }
-
-pub const PRM_ENTRY_BYTES: u16 = 2;
 
 /// Device-related diagnosis: the block length (header byte included) and
 /// texts for values of bit areas counted from the first byte after the header.

@@ -6,6 +6,7 @@
 
 mod checks;
 mod choices;
+mod gateway;
 mod mappings;
 mod profibus;
 mod profinet;
@@ -21,6 +22,9 @@ use toml::Spanned;
 /// diagnostic, warnings included. `source_name` is the file name written into
 /// generated headers; `text` is the description's text, for the fingerprint.
 pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+    if let Some(missing) = missing_key(desc, text) {
+        return (None, Diagnostics(vec![missing]));
+    }
     let mut cx = Checker::new(desc.profibus.is_some());
     if desc.profibus.is_none() && desc.profinet.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
@@ -36,12 +40,25 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         .as_ref()
         .map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device);
-    let telegram = telegram::lower(&mut cx, &desc.telegram);
-    let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
-    let profibus = desc
-        .profibus
+    let telegram = desc
+        .telegram
         .as_ref()
-        .map(|p| profibus::lower(&mut cx, p, &telegram, &mappings, &set_spans));
+        .map_or_else(telegram::absent, |t| telegram::lower(&mut cx, t));
+    let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
+    let gateway = desc
+        .gateway
+        .as_ref()
+        .map(|g| gateway::lower(&mut cx, g, desc));
+    let profibus = desc.profibus.as_ref().map(|p| {
+        profibus::lower(
+            &mut cx,
+            p,
+            &telegram,
+            &mappings,
+            &set_spans,
+            gateway.as_ref(),
+        )
+    });
     let profinet = desc
         .profinet
         .as_ref()
@@ -70,8 +87,37 @@ pub fn lower(desc: &Description, source_name: &str, text: &str) -> (Option<Ir>, 
         manual_languages,
         profibus: profibus.flatten(),
         profinet: profinet.flatten(),
+        gateway: gateway.map(|g| g.gateway),
     };
     (Some(ir), diagnostics)
+}
+
+/// E004 for a key only a gateway's description may leave out (`[telegram]`,
+/// `ppo_types`), said as the TOML stage says any other missing key: alone,
+/// at the table that lacks it.
+fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
+    if desc.gateway.is_some() {
+        return None;
+    }
+    let first_line = |span: std::ops::Range<usize>| {
+        let line = &text[span.clone()];
+        span.start..span.start + line.find('\n').unwrap_or(line.len())
+    };
+    let (key, span) = if desc.telegram.is_none() {
+        ("telegram", 0..0)
+    } else {
+        let profibus = desc.profibus.as_ref()?;
+        if profibus.get_ref().ppo_types.is_some() {
+            return None;
+        }
+        ("ppo_types", first_line(profibus.span()))
+    };
+    Some(
+        Diagnostic::error("E004", format!("missing field `{key}`"))
+            .at(span)
+            .label("missing key")
+            .help("add the key; docs/description.md shows a complete example"),
+    )
 }
 
 fn lower_device(cx: &mut Checker, d: &raw::Device) -> ir::Device {
