@@ -36,6 +36,12 @@ fn powtran_9kdp1_gsd_snapshot() {
 }
 
 #[test]
+fn md810_gateway_gsd_snapshot() {
+    let (gsd, _) = gsd_of(&load("md810-gateway.toml"));
+    insta::assert_snapshot!("MD810GW.GSD", gsd.replace("\r\n", "\n"));
+}
+
+#[test]
 fn gsd_files_are_ascii_crlf_and_at_most_80_columns() {
     for name in DESCRIPTIONS {
         let (gsd, _) = gsd_of(&load(name));
@@ -120,6 +126,17 @@ fn expected_params(ir: &Ir, profibus: &Profibus) -> Vec<ParsedParam> {
         .collect()
 }
 
+/// Each parameter as gsd-parser read it.
+fn parsed_params(prm: &gsd_parser::UserPrmData) -> Vec<ParsedParam> {
+    prm.data_ref
+        .iter()
+        .map(|(offset, d)| {
+            let (name, default) = (d.name.clone(), d.default_value);
+            (*offset, name, d.data_type, default, d.constraint.clone())
+        })
+        .collect()
+}
+
 /// gsd-parser (Rahix/profirust) reads what gsdc wrote, and what it reads is
 /// what the IR says: each module's name and config bytes, the I/O limits,
 /// every parameter's offset, type, default and range, the parameter
@@ -158,14 +175,7 @@ fn gsd_parser_reads_what_the_ir_says() {
         );
 
         let prm = &parsed.user_prm_data;
-        let params: Vec<ParsedParam> = prm
-            .data_ref
-            .iter()
-            .map(|(offset, d)| {
-                let (name, default) = (d.name.clone(), d.default_value);
-                (*offset, name, d.data_type, default, d.constraint.clone())
-            })
-            .collect();
+        let params = parsed_params(prm);
         assert_eq!(params, expected_params(&ir, profibus), "{name}");
 
         let telegram = PrmBuilder::new(prm).into_bytes();
@@ -189,4 +199,44 @@ fn md810_parameter_telegram_is_status_bytes_then_f0_00_everywhere() {
     let mut expected = vec![0x00, 0x00, 0x00];
     expected.extend([0xF0, 0x00].repeat(30));
     assert_eq!(telegram, expected);
+}
+
+/// The gateway with each slave's TPDO and RPDO words as bit areas of one
+/// byte (0..8 takes 4 bits): User_Prm_Data shrinks from 61 to 31 bytes,
+/// gsdc's own rules accept two parameters on one byte's different bits, and
+/// gsd-parser reads the bit areas where the IR puts them.
+#[test]
+fn gateway_words_as_bit_areas_share_a_byte_per_slave() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/md810-gateway.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let packed =
+        ["TPDO", "RPDO"]
+            .iter()
+            .zip(["[0, 3]", "[4, 7]"])
+            .fold(text, |text, (pdo, bits)| {
+                let name = format!("name = \"Slave {{n}} {pdo} words\"\n");
+                text.replacen(
+                    &format!("{name}type = \"Unsigned8\""),
+                    &format!("{name}bits = {bits}"),
+                    1,
+                )
+            });
+    assert_eq!(packed.matches("bits = [").count(), 2, "{packed}");
+    let (ir, diagnostics) = gsdc::load("md810-gateway.toml", &packed);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let (gsd, profibus) = gsd_of(&ir);
+    assert_eq!(profibus.user_prm.len, 31);
+    for expected in [
+        "ExtUserPrmData = 2 \"Slave 1 TPDO words\"\r\nBitArea(0-3) 0 0-8\r\n",
+        "ExtUserPrmData = 61 \"Slave 30 RPDO words\"\r\nBitArea(4-7) 0 0-8\r\n",
+        "Ext_User_Prm_Data_Ref(30)   = 60\r\nExt_User_Prm_Data_Ref(30)   = 61\r\n",
+    ] {
+        assert!(gsd.contains(expected), "{expected:?}");
+    }
+    let parsed = gsd_parser::parser::parse(Path::new(&profibus.file_name), &gsd).unwrap();
+    let params = parsed_params(&parsed.user_prm_data);
+    assert_eq!(params, expected_params(&ir, profibus));
+    let offsets: Vec<usize> = params.iter().map(|p| p.0).collect();
+    assert_eq!(offsets[..5], [0, 1, 1, 2, 2]);
+    assert_eq!(offsets[59..], [30, 30]);
 }
