@@ -328,6 +328,10 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
             "mv810-pnet02.toml",
             include_str!("../descriptions/mv810-pnet02.toml"),
         ),
+        (
+            "md810-gateway.toml",
+            include_str!("../descriptions/md810-gateway.toml"),
+        ),
         ("the guide's example", guide_example()),
     ];
     for (name, text) in valid {

@@ -183,6 +183,14 @@ fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
     }
 }
 
+/// `1 word`, `3 words`.
+fn words_of(words: u16) -> String {
+    match words {
+        1 => "1 word".to_string(),
+        n => format!("{n} words"),
+    }
+}
+
 /// `[first, last]` within a byte, first not above last.
 fn node_numbers(cx: &mut Checker, nodes: &Spanned<[Spanned<i64>; 2]>) -> (u8, u8) {
     let [first, last] = nodes.get_ref();
@@ -354,8 +362,8 @@ fn default_configuration(cx: &mut Checker, count: &Param, words: &[NodeWords]) {
                 Diagnostic::error(
                     "E144",
                     format!(
-                        "node {node} has {} default words, but the default count is {in_use} nodes",
-                        unused.default
+                        "node {node} has {} by default, but the default count is {in_use} nodes",
+                        words_of(unused.default.into())
                     ),
                 )
                 .at(w.defaults_span.clone())
@@ -383,7 +391,7 @@ fn default_configuration(cx: &mut Checker, count: &Param, words: &[NodeWords]) {
                     ),
                 )
                 .at(w.defaults_span.clone())
-                .label(format!("{words} words of {in_use} nodes"))
+                .label(format!("{} of {in_use} nodes", words_of(words)))
                 .help(format!("the defaults of the nodes in use must add up to at most {} words", max_len / 2)),
             );
         }
@@ -499,18 +507,22 @@ fn render(name: &Text, node: u8) -> Text {
 /// The modules, input first, each size ascending, and Max_Module.
 fn modules(cx: &mut Checker, m: &raw::Modules, limits: &[(Direction, u16)]) -> (Vec<Module>, u8) {
     let sizes = module_sizes(cx, &m.words);
-    let mut most = 0usize;
-    for &(_, max_len) in limits {
-        match fewest_modules(&sizes, max_len / 2) {
-            Ok(needed) => most += needed,
-            Err(words) => cx.push(
-                Diagnostic::error("E143", format!("no set of these modules carries {words} words"))
+    let fewest: Result<Vec<usize>, u16> = limits
+        .iter()
+        .map(|&(_, max_len)| fewest_modules(&sizes, max_len / 2))
+        .collect();
+    let most = match fewest {
+        Ok(needed) => needed.iter().sum(),
+        Err(words) => {
+            cx.push(
+                Diagnostic::error("E143", format!("no set of these modules carries {}", words_of(words)))
                     .at(m.words.span())
                     .label("sizes that leave a total out")
                     .help("the master plugs modules until they equal the nodes' words, which may be any number up to the limit: offer 1 word, the smallest size"),
-            ),
+            );
+            0
         }
-    }
+    };
     let consistent = *m.consistent.get_ref();
     let modules = [Direction::In, Direction::Out]
         .into_iter()
