@@ -187,3 +187,52 @@ fn a_parameter_telegram_past_237_bytes_is_refused() {
     let at = place(&many, "[gateway]\n", "[gateway]");
     assert_eq!(errors(&many), [("E116", at.0, at.1)]);
 }
+
+/// What describes a drive's own telegram has no place beside [gateway].
+#[test]
+fn a_drives_telegram_beside_the_gateway_is_refused() {
+    // (before what, the part, where the error points in it)
+    let parts = [
+        (
+            "\n[profibus.baud_rates]",
+            "ppo_types = [\"PPO1\"]\n",
+            "[\"PPO1\"]",
+        ),
+        (
+            "[gateway]\n",
+            "[profibus.diagnosis]\nlength = 3\n\n",
+            "[profibus.diagnosis]",
+        ),
+        (
+            "[gateway]\n",
+            "[[settings]]\nname = \"Mode\"\ndefault = 1\n\n",
+            "\"Mode\"",
+        ),
+    ];
+    for (before, part, at) in parts {
+        let text = variant(&[(before, &format!("{part}{before}"))]);
+        let place = place(&text, part, at);
+        let errors = errors(&text);
+        assert!(
+            errors.contains(&("E140", place.0, place.1)),
+            "{part}: {errors:?}"
+        );
+    }
+}
+
+/// Without data_order, gsdc says which order it lays the words out in.
+#[test]
+fn the_data_order_gsdc_chooses_is_said() {
+    let text = variant(&[("data_order = \"node-ascending\"\n", "")]);
+    let choice = text
+        .lines()
+        .find(|l| l.starts_with("\"gateway.data_order\""))
+        .unwrap();
+    let text = text.replace(&format!("{choice}\n"), "");
+    let (ir, diagnostics) = gsdc::load(NAME, &text);
+    let w104: Vec<_> = diagnostics.iter().filter(|d| d.code == "W104").collect();
+    assert_eq!(w104.len(), 1, "{w104:?}");
+    assert!(w104[0].message.contains("gateway.data_order"));
+    let ir = ir.unwrap();
+    assert!(ir.decisions.iter().any(|d| d.path == "gateway.data_order"));
+}
