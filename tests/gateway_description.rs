@@ -152,7 +152,7 @@ fn thirty_slaves_at_the_limit_pass() {
 fn a_31st_slave_is_refused() {
     let counted = variant(&[("range = [1, 30]", "range = [1, 31]")]);
     let at = place(&counted, "range = [1, 31]", "[1, 31]");
-    assert_eq!(errors(&counted), [("E141", at.0, at.1)]);
+    assert_eq!(errors(&counted), [("E145", at.0, at.1)]);
     let default = variant(&[(
         "range = [1, 30]\ndefault = 1",
         "range = [1, 30]\ndefault = 31",
@@ -174,7 +174,7 @@ fn a_245th_byte_is_refused() {
     words[..3].copy_from_slice(&[5, 5, 5]);
     let over = with_defaults(30, &words, &[]);
     let at = place(&over, "defaults = [5, 5, 5", "[5");
-    assert_eq!(errors(&over), [("E142", at.0, at.1)]);
+    assert_eq!(errors(&over), [("E146", at.0, at.1)]);
     let limit = variant(&[("max_input_len = 244", "max_input_len = 245")]);
     let at = place(&limit, "max_input_len = 245", "245");
     assert_eq!(errors(&limit), [("E101", at.0, at.1)]);
@@ -214,7 +214,7 @@ fn a_drives_telegram_beside_the_gateway_is_refused() {
         let place = place(&text, part, at);
         let errors = errors(&text);
         assert!(
-            errors.contains(&("E140", place.0, place.1)),
+            errors.contains(&("E144", place.0, place.1)),
             "{part}: {errors:?}"
         );
     }

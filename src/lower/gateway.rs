@@ -143,7 +143,7 @@ fn by_node(
     (nodes, types)
 }
 
-/// E140: what a gateway's description cannot have besides `[gateway]`.
+/// E144: what a gateway's description cannot have besides `[gateway]`.
 fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
     let profibus = desc.profibus.as_ref().map(Spanned::get_ref);
     let mappings = &desc.mappings;
@@ -191,7 +191,7 @@ fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
     for (span, what, why) in found {
         if let Some(span) = span {
             cx.push(
-                Diagnostic::error("E140", format!("a gateway's description has no {what}"))
+                Diagnostic::error("E144", format!("a gateway's description has no {what}"))
                     .at(span)
                     .label("not for a gateway")
                     .help(format!(
@@ -202,7 +202,7 @@ fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
     }
     if desc.profibus.is_none() {
         cx.push(
-            Diagnostic::error("E140", "a gateway's description needs [profibus]")
+            Diagnostic::error("E144", "a gateway's description needs [profibus]")
                 .at(gateway.clone())
                 .label("a gateway without [profibus]")
                 .help("add [profibus] with the GSD's file name, ident number, baud rates and slave family (9 is Gateway)"),

@@ -76,7 +76,7 @@ fn diag_type(cx: &mut Checker, t: &raw::DiagnosisType, seen: &mut Seen) -> Optio
         (None, Some(word)) => DiagCode::Word(cx.text(word, Some(GSD_NAME_LEN), "diagnosis text")),
         (Some(codes), Some(_)) => {
             cx.push(
-                Diagnostic::error("E145", "a diagnosis type with both `codes` and `code_word`")
+                Diagnostic::error("E149", "a diagnosis type with both `codes` and `code_word`")
                     .at(codes.span())
                     .label("remove this or `code_word`")
                     .help("a type's code is one byte with listed values (`codes`) or a 16-bit number (`code_word`)"),
@@ -85,7 +85,7 @@ fn diag_type(cx: &mut Checker, t: &raw::DiagnosisType, seen: &mut Seen) -> Optio
         }
         (None, None) => {
             cx.push(
-                Diagnostic::error("E145", "a diagnosis type with neither `codes` nor `code_word`")
+                Diagnostic::error("E149", "a diagnosis type with neither `codes` nor `code_word`")
                     .at(t.value.span())
                     .label("in this type")
                     .help("list the type's codes, `codes = [{ value = 35, text = \"...\" }]`, or say what its 16-bit code is, `code_word = \"...\"`"),

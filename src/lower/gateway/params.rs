@@ -14,7 +14,7 @@ use crate::ir::{Direction, Text};
 use std::ops::Range;
 use toml::Spanned;
 
-/// The count parameter: at most one per node number (E141).
+/// The count parameter: at most one per node number (E145).
 pub(super) fn node_count(
     cx: &mut Checker,
     c: &raw::NodeCount,
@@ -25,7 +25,7 @@ pub(super) fn node_count(
     if usize::from(max) > node_numbers {
         cx.push(
             Diagnostic::error(
-                "E141",
+                "E145",
                 format!("up to {max} nodes counted, but there are {node_numbers} node numbers"),
             )
             .at(c.range.span())
@@ -150,8 +150,8 @@ fn node_defaults(
 }
 
 /// The defaults are the configuration the GSD offers first: the gateway
-/// must accept it. Nodes past the count carry no words (E144), and the
-/// nodes in use fit the data limits (E142).
+/// must accept it. Nodes past the count carry no words (E148), and the
+/// nodes in use fit the data limits (E146).
 pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[NodeWords]) {
     let in_use = usize::from(count.default);
     for w in words {
@@ -161,7 +161,7 @@ pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[No
             };
             cx.push(
                 Diagnostic::error(
-                    "E144",
+                    "E148",
                     format!(
                         "node {node} has {} by default, but the default count is {in_use} nodes",
                         words_of(unused.default.into())
@@ -186,7 +186,7 @@ pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[No
             };
             cx.push(
                 Diagnostic::error(
-                    "E142",
+                    "E146",
                     format!(
                         "the default configuration has {bytes} bytes of {way}; the gateway carries at most {max_len}"
                     ),
@@ -199,7 +199,7 @@ pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[No
     }
 }
 
-/// `type` or `bits`: exactly one (E145).
+/// `type` or `bits`: exactly one (E149).
 fn data_type(
     cx: &mut Checker,
     ty: &Option<Spanned<raw::PrmType>>,
@@ -229,7 +229,7 @@ fn data_type(
         }
         (Some(ty), Some(_)) => {
             cx.push(
-                Diagnostic::error("E145", "a parameter with both `type` and `bits`")
+                Diagnostic::error("E149", "a parameter with both `type` and `bits`")
                     .at(ty.span())
                     .label("remove this or `bits`")
                     .help("`type` gives a parameter whole bytes, `bits` some bits of one byte"),
@@ -238,7 +238,7 @@ fn data_type(
         }
         (None, None) => {
             cx.push(
-                Diagnostic::error("E145", "a parameter with neither `type` nor `bits`")
+                Diagnostic::error("E149", "a parameter with neither `type` nor `bits`")
                     .at(name.span())
                     .label("in this parameter")
                     .help("add `type = \"Unsigned8\"` (or \"Unsigned16\"), or `bits = [first, last]` within one byte"),
