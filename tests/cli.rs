@@ -606,7 +606,12 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
 /// gsdc's files by, where they look for it.
 #[test]
 fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
-    for name in ["md810dp.toml", "9kdp1.toml", "mv810-pnet02.toml"] {
+    for name in [
+        "md810dp.toml",
+        "9kdp1.toml",
+        "mv810-pnet02.toml",
+        "md810-gateway.toml",
+    ] {
         let text = std::fs::read_to_string(format!("descriptions/{name}")).unwrap();
         let ir = gsdc::load(name, &text).0.unwrap();
         for file in gsdc::compile(&ir).unwrap() {

@@ -7,7 +7,12 @@ mod descriptions;
 
 use gsdc::ir::DecisionKind;
 
-const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+const DESCRIPTIONS: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
+];
 
 /// The comment lines at the top of a generated file, as text.
 fn head(text: &str) -> String {

@@ -312,10 +312,14 @@ fn pattern_property<'a>(node: &'a Json, key: &str) -> Option<&'a Json> {
     })
 }
 
-fn guide_example() -> &'static str {
+/// The guide's TOML examples: the complete one and the gateway's.
+fn guide_examples() -> Vec<&'static str> {
     let guide = include_str!("../docs/description.md");
-    let start = guide.find("```toml\n").unwrap() + "```toml\n".len();
-    &guide[start..start + guide[start..].find("```").unwrap()]
+    guide
+        .split("```toml\n")
+        .skip(1)
+        .map(|rest| &rest[..rest.find("```").unwrap()])
+        .collect()
 }
 
 #[test]
@@ -328,9 +332,15 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
             "mv810-pnet02.toml",
             include_str!("../descriptions/mv810-pnet02.toml"),
         ),
-        ("the guide's example", guide_example()),
+        (
+            "md810-gateway.toml",
+            include_str!("../descriptions/md810-gateway.toml"),
+        ),
     ];
-    for (name, text) in valid {
+    let examples = guide_examples()
+        .into_iter()
+        .map(|e| ("the guide's example", e));
+    for (name, text) in valid.into_iter().chain(examples) {
         let value: Toml = text.parse::<toml::Table>().map(Toml::Table).unwrap();
         conforms(&root, &root, &value).unwrap_or_else(|why| panic!("{name}: {why}"));
     }

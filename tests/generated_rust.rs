@@ -9,7 +9,12 @@ use descriptions::load;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+const DESCRIPTIONS: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
+];
 
 /// The artifact of a shipped description whose name ends in `suffix`: its
 /// file name and text.
@@ -35,7 +40,12 @@ fn the_support_module_is_one_for_all_and_inlines_its_parts() {
         assert_eq!(artifact(name, "gsdc_support.rs"), support, "{name}");
     }
     let text = support.1;
-    for part in ["pkw_pke_ind_pwe", "pkw_station_command", "diagnosis"] {
+    for part in [
+        "pkw_pke_ind_pwe",
+        "pkw_station_command",
+        "diagnosis",
+        "gateway",
+    ] {
         assert_eq!(
             text.matches(&format!("pub mod {part} {{")).count(),
             1,
@@ -66,6 +76,11 @@ fn mv810_pnet02_layout_snapshot() {
 #[test]
 fn powtran_9kdp1_layout_snapshot() {
     insta::assert_snapshot!("9kdp1_layout.rs", layout("9kdp1.toml").1);
+}
+
+#[test]
+fn md810_gateway_layout_snapshot() {
+    insta::assert_snapshot!("md810_gateway_layout.rs", layout("md810-gateway.toml").1);
 }
 
 /// Each layout is exactly what rustfmt makes of it. The files are checked

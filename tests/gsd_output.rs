@@ -7,11 +7,11 @@ mod descriptions;
 use descriptions::load;
 
 use gsd_parser::{PrmBuilder, PrmValueConstraint, UserPrmDataType};
-use gsdc::ir::profibus::Profibus;
+use gsdc::ir::profibus::{PrmType, PrmValue, Profibus};
 use gsdc::ir::{Allowed, Ir};
 use std::path::Path;
 
-const DESCRIPTIONS: [&str; 2] = ["md810dp.toml", "9kdp1.toml"];
+const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "9kdp1.toml", "md810-gateway.toml"];
 
 fn gsd_of(ir: &Ir) -> (String, &Profibus) {
     let artifacts = gsdc::compile(ir).unwrap();
@@ -36,6 +36,12 @@ fn powtran_9kdp1_gsd_snapshot() {
 }
 
 #[test]
+fn md810_gateway_gsd_snapshot() {
+    let (gsd, _) = gsd_of(&load("md810-gateway.toml"));
+    insta::assert_snapshot!("MD810GW.GSD", gsd.replace("\r\n", "\n"));
+}
+
+#[test]
 fn gsd_files_are_ascii_crlf_and_at_most_80_columns() {
     for name in DESCRIPTIONS {
         let (gsd, _) = gsd_of(&load(name));
@@ -57,9 +63,84 @@ fn two_builds_give_identical_bytes() {
     }
 }
 
+/// What the IR says the modules are: name and config bytes, PPO types or
+/// a gateway's word blocks.
+fn expected_modules(ir: &Ir, profibus: &Profibus) -> Vec<(String, Vec<u8>)> {
+    match &ir.gateway {
+        Some(g) => g
+            .modules
+            .iter()
+            .map(|m| (m.name.clone(), vec![m.config]))
+            .collect(),
+        None => profibus
+            .modules
+            .iter()
+            .map(|m| (m.name.clone(), m.config.clone()))
+            .collect(),
+    }
+}
+
+/// A parameter as gsd-parser reads it: offset, name, type, default, range.
+type ParsedParam = (usize, String, UserPrmDataType, i64, PrmValueConstraint);
+
+/// What the IR says each parameter of User_Prm_Data is.
+fn expected_params(ir: &Ir, profibus: &Profibus) -> Vec<ParsedParam> {
+    profibus
+        .user_prm
+        .params()
+        .map(|param| {
+            let data_type = match param.data_type {
+                PrmType::Unsigned8 => UserPrmDataType::Unsigned8,
+                PrmType::Unsigned16 => UserPrmDataType::Unsigned16,
+                PrmType::Bits { first, last } => UserPrmDataType::BitArea(first, last),
+                other => panic!("a type the shipped descriptions do not use: {other:?}"),
+            };
+            let (name, default, min, max) = match param.value {
+                PrmValue::Entry(key) => {
+                    let (set, mapping) = ir.mappings.entry(key);
+                    let Allowed::Range { min, max } = set.allowed else {
+                        panic!("the shipped descriptions map addresses");
+                    };
+                    (mapping.name.en.clone(), mapping.default, min, max)
+                }
+                PrmValue::Gateway(key) => {
+                    let p = ir.gateway.as_ref().unwrap().param(key);
+                    (
+                        p.name.en.clone(),
+                        p.default.into(),
+                        p.min.into(),
+                        p.max.into(),
+                    )
+                }
+                other => panic!("a parameter the shipped descriptions do not have: {other:?}"),
+            };
+            let range = PrmValueConstraint::MinMax(min.into(), max.into());
+            (
+                usize::from(param.offset),
+                name,
+                data_type,
+                default.into(),
+                range,
+            )
+        })
+        .collect()
+}
+
+/// Each parameter as gsd-parser read it.
+fn parsed_params(prm: &gsd_parser::UserPrmData) -> Vec<ParsedParam> {
+    prm.data_ref
+        .iter()
+        .map(|(offset, d)| {
+            let (name, default) = (d.name.clone(), d.default_value);
+            (*offset, name, d.data_type, default, d.constraint.clone())
+        })
+        .collect()
+}
+
 /// gsd-parser (Rahix/profirust) reads what gsdc wrote, and what it reads is
-/// what the IR says: each module's name and config bytes, every parameter's
-/// default and range, the parameter telegram's length and default bytes.
+/// what the IR says: each module's name and config bytes, the I/O limits,
+/// every parameter's offset, type, default and range, the parameter
+/// telegram's length and default bytes.
 #[test]
 fn gsd_parser_reads_what_the_ir_says() {
     for name in DESCRIPTIONS {
@@ -74,44 +155,28 @@ fn gsd_parser_reads_what_the_ir_says() {
             .iter()
             .map(|m| (m.name.clone(), m.config.clone()))
             .collect();
-        let expected: Vec<(String, Vec<u8>)> = profibus
-            .modules
-            .iter()
-            .map(|m| (m.name.clone(), m.config.clone()))
-            .collect();
-        assert_eq!(modules, expected, "{name}");
+        assert_eq!(modules, expected_modules(&ir, profibus), "{name}");
 
-        let largest = profibus
-            .modules
-            .iter()
-            .map(|m| m.layout.bytes())
-            .max()
-            .unwrap();
-        assert_eq!(u16::from(parsed.max_input_length), largest, "{name}");
-        assert_eq!(u16::from(parsed.max_output_length), largest, "{name}");
+        if ir.gateway.is_none() {
+            // One PPO type at a time: the largest sets the limits.
+            let largest = profibus.modules.iter().map(|m| m.layout.bytes()).max();
+            assert_eq!(Some(profibus.max_input_len), largest, "{name}");
+            assert_eq!(Some(profibus.max_output_len), largest, "{name}");
+        }
+        assert_eq!(
+            u16::from(parsed.max_input_length),
+            profibus.max_input_len,
+            "{name}"
+        );
+        assert_eq!(
+            u16::from(parsed.max_output_length),
+            profibus.max_output_len,
+            "{name}"
+        );
 
         let prm = &parsed.user_prm_data;
-        let params: Vec<_> = profibus.user_prm.params().collect();
-        assert_eq!(prm.data_ref.len(), params.len(), "{name}");
-        for ((offset, definition), param) in prm.data_ref.iter().zip(params) {
-            let (set, mapping) = ir.mappings.entry(param.entry);
-            assert_eq!(*offset, usize::from(param.offset), "{name}");
-            assert_eq!(definition.name, mapping.name.en, "{name}");
-            assert_eq!(definition.data_type, UserPrmDataType::Unsigned16, "{name}");
-            assert_eq!(
-                definition.default_value,
-                i64::from(mapping.default),
-                "{name}"
-            );
-            let Allowed::Range { min, max } = set.allowed else {
-                panic!("{name}: the shipped descriptions map addresses");
-            };
-            assert_eq!(
-                definition.constraint,
-                PrmValueConstraint::MinMax(min.into(), max.into()),
-                "{name}"
-            );
-        }
+        let params = parsed_params(prm);
+        assert_eq!(params, expected_params(&ir, profibus), "{name}");
 
         let telegram = PrmBuilder::new(prm).into_bytes();
         assert_eq!(telegram.len(), usize::from(profibus.user_prm.len), "{name}");
@@ -159,4 +224,44 @@ fn im_and_the_class_2_channel_are_in_the_gsd() {
         assert!(gsd.contains(&format!("{line}\r\n")), "{line}");
     }
     gsd_parser::parser::parse(Path::new("X1DP.GSD"), &gsd).unwrap();
+}
+
+/// The gateway with each slave's TPDO and RPDO words as bit areas of one
+/// byte (0..8 takes 4 bits): User_Prm_Data shrinks from 61 to 31 bytes,
+/// gsdc's own rules accept two parameters on one byte's different bits, and
+/// gsd-parser reads the bit areas where the IR puts them.
+#[test]
+fn gateway_words_as_bit_areas_share_a_byte_per_slave() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/md810-gateway.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let packed =
+        ["TPDO", "RPDO"]
+            .iter()
+            .zip(["[0, 3]", "[4, 7]"])
+            .fold(text, |text, (pdo, bits)| {
+                let name = format!("name = \"Slave {{n}} {pdo} words\"\n");
+                text.replacen(
+                    &format!("{name}type = \"Unsigned8\""),
+                    &format!("{name}bits = {bits}"),
+                    1,
+                )
+            });
+    assert_eq!(packed.matches("bits = [").count(), 2, "{packed}");
+    let (ir, diagnostics) = gsdc::load("md810-gateway.toml", &packed);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let (gsd, profibus) = gsd_of(&ir);
+    assert_eq!(profibus.user_prm.len, 31);
+    for expected in [
+        "ExtUserPrmData = 2 \"Slave 1 TPDO words\"\r\nBitArea(0-3) 0 0-8\r\n",
+        "ExtUserPrmData = 61 \"Slave 30 RPDO words\"\r\nBitArea(4-7) 0 0-8\r\n",
+        "Ext_User_Prm_Data_Ref(30)   = 60\r\nExt_User_Prm_Data_Ref(30)   = 61\r\n",
+    ] {
+        assert!(gsd.contains(expected), "{expected:?}");
+    }
+    let parsed = gsd_parser::parser::parse(Path::new(&profibus.file_name), &gsd).unwrap();
+    let params = parsed_params(&parsed.user_prm_data);
+    assert_eq!(params, expected_params(&ir, profibus));
+    let offsets: Vec<usize> = params.iter().map(|p| p.0).collect();
+    assert_eq!(offsets[..5], [0, 1, 1, 2, 2]);
+    assert_eq!(offsets[59..], [30, 30]);
 }

@@ -19,8 +19,9 @@ use toml::{Table, Value};
 const SEEDS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/seeds/");
 
 /// Each shipped description and the seed of its manual.
-const DESCRIPTIONS: [(&str, &str); 3] = [
+const DESCRIPTIONS: [(&str, &str); 4] = [
     ("md810dp.toml", "003_b189a66b7563a721.txt"),
+    ("md810-gateway.toml", "003_b189a66b7563a721.txt"),
     ("mv810-pnet02.toml", "000_73ca4e4747c4a2fe.txt"),
     ("9kdp1.toml", "002_5b76d6a60e6ace18.txt"),
 ];

@@ -1,9 +1,9 @@
 //! The parameter telegram's User_Prm_Data, as lowering laid it out: the
 //! constant bytes (the DPV1 status bytes), then one Unsigned16 per mapping
-//! entry, high byte first.
+//! entry, high byte first, then a gateway's parameters.
 
 use super::mapping::{meaning, MappingInForce, ValueSource};
-use crate::ir::profibus::UserPrm;
+use crate::ir::profibus::{PrmHolds, UserPrm};
 use crate::ir::{EntryKey, Ir};
 use serde::Serialize;
 
@@ -23,15 +23,16 @@ pub struct ConstantByte {
     pub default: u8,
 }
 
-/// One mapping entry's Unsigned16.
+/// One parameter's value.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct PrmValue {
     pub offset: usize,
     /// The `ExtUserPrmData` reference number.
     pub id: u16,
+    /// The mapping entry it sets; `None` for a gateway's parameter.
     #[serde(skip)]
-    pub entry: EntryKey,
-    /// The mapping entry's name: `PZD3(master->slaver)`.
+    pub entry: Option<EntryKey>,
+    /// Its name: `PZD3(master->slaver)`, `Slave 2 TPDO words`.
     pub name: String,
     pub value: u16,
     /// The parameter it names (`F0-12`) or the choice's text; `None` for a
@@ -50,7 +51,9 @@ impl Prm {
     pub fn mapping(&self) -> MappingInForce {
         let mut mapping = MappingInForce::defaults();
         for param in &self.params {
-            mapping.set(param.entry, param.value, ValueSource::ParameterTelegram);
+            if let Some(entry) = param.entry {
+                mapping.set(entry, param.value, ValueSource::ParameterTelegram);
+            }
         }
         mapping
     }
@@ -76,18 +79,25 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
         .params()
         .map(|param| {
             let offset = usize::from(param.offset);
-            let value = u16::from_be_bytes([bytes[offset], bytes[offset + 1]]);
-            let (set, entry) = ir.mappings.entry(param.entry);
+            let value = param.data_type.read(bytes, offset);
+            let facts = ir.prm_facts(param);
+            let meaning = |value| match facts.holds {
+                PrmHolds::Mapping { set, .. } => meaning(ir, &set.allowed, value),
+                PrmHolds::Number { .. } => None,
+            };
             PrmValue {
                 offset,
                 id: param.id,
-                entry: param.entry,
-                name: entry.name.en.clone(),
+                entry: match param.value {
+                    crate::ir::profibus::PrmValue::Entry(key) => Some(key),
+                    _ => None,
+                },
+                name: facts.name.en.clone(),
                 value,
-                meaning: meaning(ir, &set.allowed, value),
-                default: entry.default,
-                default_meaning: meaning(ir, &set.allowed, entry.default),
-                allowed: set.allowed.contains(i64::from(value)),
+                meaning: meaning(value),
+                default: facts.default,
+                default_meaning: meaning(facts.default),
+                allowed: facts.holds.contains(value),
             }
         })
         .collect();

@@ -4,6 +4,7 @@
 //! diagnostic may point at is `Spanned`. No `flatten` or untagged enums here:
 //! they lose spans. Lowering ([`crate::lower`]) turns this into the IR.
 
+pub mod gateway;
 mod values;
 
 use crate::gsd::Baud;
@@ -24,7 +25,8 @@ pub struct Description {
     pub choices: BTreeMap<Spanned<String>, Spanned<String>>,
     pub device: Device,
     pub function_codes: Option<FunctionCodes>,
-    pub telegram: Telegram,
+    /// Required, except in a gateway's description, which has none.
+    pub telegram: Option<Telegram>,
     #[serde(default)]
     pub mappings: Mappings,
     /// Single drive parameters a master may set at start-up.
@@ -32,6 +34,8 @@ pub struct Description {
     pub settings: Vec<Setting>,
     pub profibus: Option<Spanned<Profibus>>,
     pub profinet: Option<Spanned<Profinet>>,
+    /// A card that carries the data of another bus's nodes.
+    pub gateway: Option<Spanned<gateway::Gateway>>,
 }
 
 /// The vendor's manual the description's texts and values come from.
@@ -199,7 +203,8 @@ pub struct Profibus {
     pub gsd_revision: Option<Spanned<u8>>,
     pub ident_number: Spanned<IdentNumber>,
     pub implementation_type: Option<Spanned<String>>,
-    pub ppo_types: Spanned<Vec<Spanned<String>>>,
+    /// Required, except in a gateway's description, whose modules are word blocks.
+    pub ppo_types: Option<Spanned<Vec<Spanned<String>>>>,
     /// PZD words of PPO5: 10 in PROFIdrive, 12 on MD810.
     pub ppo5_pzd_words: Option<Spanned<u8>>,
     /// MaxTsdr (bit times) of each supported baud rate, keyed as GSD spells it.

@@ -1,7 +1,8 @@
 //! The GSD emitter: IR to a GSD file through `templates/gsd.jinja`, then
 //! wrapped to 80 columns with `\` continuations and given CRLF line ends.
 
-use crate::ir::profibus::Profibus;
+use crate::ir::gateway::Gateway;
+use crate::ir::profibus::{PrmHolds, Profibus};
 use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
@@ -38,6 +39,7 @@ struct Context<'a> {
     max_input_len: u16,
     max_output_len: u16,
     max_data_len: u16,
+    max_module: u8,
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
@@ -46,6 +48,8 @@ struct Context<'a> {
     prm_const: Option<String>,
     prm_texts: Vec<PrmText<'a>>,
     params: Vec<Param<'a>>,
+    /// What the modules are, for the comment above them.
+    modules_note: &'static str,
     modules: Vec<Module<'a>>,
 }
 
@@ -65,6 +69,8 @@ struct Value<'a> {
 struct DiagArea<'a> {
     first: u16,
     last: u16,
+    /// Comment lines saying what the area shows, when the IR says it.
+    notes: Vec<String>,
     values: Vec<Value<'a>>,
 }
 
@@ -95,6 +101,7 @@ struct PrmText<'a> {
 struct Param<'a> {
     id: u16,
     name: &'a str,
+    data_type: String,
     default: u16,
     allowed: String,
     text_ref: Option<u16>,
@@ -159,18 +166,10 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         max_input_len: p.max_input_len,
         max_output_len: p.max_output_len,
         max_data_len: p.max_input_len + p.max_output_len,
+        max_module: ir.gateway.as_ref().map_or(1, |g| g.max_modules),
         slave_family: &p.slave_family,
         max_diag_data_len: p.max_diag_data_len,
-        diag_areas: p
-            .diagnosis
-            .iter()
-            .flat_map(|d| &d.areas)
-            .map(|a| DiagArea {
-                first: a.first_bit,
-                last: a.last_bit,
-                values: values(&a.values.choices),
-            })
-            .collect(),
+        diag_areas: diag_areas(ir, p),
         dpv1: p.dpv1.map(|d| Dpv1 {
             c1_read_write: d.c1_read_write.into(),
             c1_max_data_len: d.c1_max_data_len,
@@ -200,16 +199,57 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             })
             .collect(),
         params: params(ir, p),
-        modules: p
-            .modules
-            .iter()
-            .map(|m| Module {
-                name: &m.name,
-                config: hex_list(&m.config),
-                reference: m.ppo,
-            })
-            .collect(),
+        modules_note: match ir.gateway {
+            Some(_) => "word blocks; plug them until INPUT and OUTPUT equal the nodes' words",
+            None => "one PPO type at a time",
+        },
+        modules: match &ir.gateway {
+            Some(g) => gateway_modules(g),
+            None => p
+                .modules
+                .iter()
+                .map(|m| Module {
+                    name: &m.name,
+                    config: hex_list(&m.config),
+                    reference: m.ppo,
+                })
+                .collect(),
+        },
     }
+}
+
+fn gateway_modules(g: &Gateway) -> Vec<Module<'_>> {
+    g.modules
+        .iter()
+        .map(|m| Module {
+            name: &m.name,
+            config: hex_list(&[m.config]),
+            reference: m.reference,
+        })
+        .collect()
+}
+
+/// The PROFIBUS diagnosis' areas, or a gateway's, with their notes as
+/// comment lines.
+fn diag_areas<'a>(ir: &'a Ir, p: &'a Profibus) -> Vec<DiagArea<'a>> {
+    let plain = p.diagnosis.iter().flat_map(|d| &d.areas).map(|a| DiagArea {
+        first: a.first_bit,
+        last: a.last_bit,
+        notes: Vec::new(),
+        values: values(&a.values.choices),
+    });
+    let gateway = ir
+        .gateway
+        .iter()
+        .flat_map(|g| &g.diagnosis)
+        .flat_map(|d| &d.gsd_areas)
+        .map(|a| DiagArea {
+            first: a.first_bit,
+            last: a.last_bit,
+            notes: super::wrap_words(&a.note, MAX_LINE - "; ".len()),
+            values: values(&a.values),
+        });
+    plain.chain(gateway).collect()
 }
 
 /// The header notes as GSD comment lines: 7-bit ASCII (a character beyond
@@ -249,12 +289,16 @@ fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
     p.user_prm
         .params()
         .map(|param| {
-            let (set, entry) = ir.mappings.entry(param.entry);
+            let facts = ir.prm_facts(param);
             Param {
                 id: param.id,
-                name: entry.name.for_gsd(),
-                default: entry.default,
-                allowed: allowed(&set.allowed),
+                name: facts.name.for_gsd(),
+                data_type: param.data_type.to_string(),
+                default: facts.default,
+                allowed: match facts.holds {
+                    PrmHolds::Mapping { set, .. } => allowed(&set.allowed),
+                    PrmHolds::Number { min, max } => format!("{min}-{max}"),
+                },
                 text_ref: param.text,
                 offset: param.offset,
             }

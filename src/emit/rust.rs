@@ -6,6 +6,8 @@
 //! Every name comes from the IR; the context carries finished pieces of Rust
 //! (identifiers, literals, doc lines) so the template only arranges them.
 
+mod gateway;
+
 use super::{Artifact, ArtifactKind};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
@@ -19,7 +21,7 @@ const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
 /// is replaced by the part's text.
 pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
 const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
-const SUPPORT_PARTS: [(&str, &str); 3] = [
+const SUPPORT_PARTS: [(&str, &str); 4] = [
     (
         "pkw_pke_ind_pwe",
         include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
@@ -31,6 +33,10 @@ const SUPPORT_PARTS: [(&str, &str); 3] = [
     (
         "diagnosis",
         include_str!("../../templates/support/diagnosis.rs"),
+    ),
+    (
+        "gateway",
+        include_str!("../../templates/support/gateway.rs"),
     ),
 ];
 
@@ -48,6 +54,7 @@ struct Context<'a> {
     groups: Vec<Group>,
     profibus: Option<ProfibusItems>,
     profinet: Option<ProfinetItems>,
+    gateway: Option<gateway::Items>,
 }
 
 #[derive(Serialize)]
@@ -285,6 +292,11 @@ fn context(ir: &Ir) -> Context<'_> {
             .collect(),
         profibus: ir.profibus.as_ref().map(profibus_items),
         profinet: ir.profinet.as_ref().map(profinet_items),
+        gateway: ir
+            .gateway
+            .as_ref()
+            .zip(ir.profibus.as_ref())
+            .map(|(g, p)| gateway::items(g, p)),
         groups: ir.mappings.groups.iter().map(|g| group(ir, g)).collect(),
     }
 }
@@ -703,6 +715,9 @@ use crate::pkw::support;
 
 #[cfg(test)]
 mod support_tests;
+
+#[cfg(test)]
+mod support_gateway_tests;
 
 #[cfg(test)]
 mod tests {

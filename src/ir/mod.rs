@@ -5,6 +5,7 @@
 //! PROFIBUS needs lives in [`profibus`].
 
 mod decision;
+pub mod gateway;
 pub mod mapping;
 mod names;
 pub mod numbering;
@@ -13,6 +14,7 @@ pub mod profinet;
 pub mod telegram;
 
 pub use decision::{Decision, DecisionKind};
+pub use gateway::Gateway;
 pub use mapping::{
     Allowed, EntryKey, FixedByModule, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet,
     Mappings, SetKey,
@@ -47,6 +49,8 @@ pub struct Ir {
     pub manual_languages: Vec<String>,
     pub profibus: Option<Profibus>,
     pub profinet: Option<Profinet>,
+    /// A gateway's nodes, parameters and diagnosis (with `profibus`).
+    pub gateway: Option<Gateway>,
 }
 
 /// A text in English and any other languages the description gives.

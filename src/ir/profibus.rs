@@ -1,8 +1,11 @@
 //! What only PROFIBUS-DP needs: identity numbers, bus parameters, the PPO
 //! modules with their config bytes, the parameter telegram and diagnosis.
 
-use super::{EntryKey, Ident, Layout, MappingKind, SetKey, ValueSet};
+use super::{
+    EntryKey, Ident, Ir, Layout, MappingEntry, MappingKind, MappingSet, SetKey, Text, ValueSet,
+};
 pub use crate::gsd::Baud;
+use std::fmt;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -111,12 +114,14 @@ pub(crate) fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
 
 /// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
 /// DPV1 status bytes), then one block of Unsigned16 parameters per group of
-/// mappings, in telegram order, with no gaps.
+/// mappings, in telegram order, then a gateway's parameters, with no gaps.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct UserPrm {
     pub constant: Vec<u8>,
     pub blocks: Vec<PrmBlock>,
+    /// A gateway's parameters, after the blocks: bit areas share a byte.
+    pub gateway: Vec<PrmParam>,
     /// The value texts the parameters refer to.
     pub texts: Vec<PrmText>,
     /// Bytes of the whole telegram.
@@ -125,7 +130,10 @@ pub struct UserPrm {
 
 impl UserPrm {
     pub fn params(&self) -> impl Iterator<Item = &PrmParam> {
-        self.blocks.iter().flat_map(|b| &b.params)
+        self.blocks
+            .iter()
+            .flat_map(|b| &b.params)
+            .chain(&self.gateway)
     }
 
     pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
@@ -142,16 +150,172 @@ pub struct PrmBlock {
     pub params: Vec<PrmParam>,
 }
 
-/// An `ExtUserPrmData`: one Unsigned16 holding a mapping entry.
+/// An `ExtUserPrmData`: a mapping entry (Unsigned16) or a gateway
+/// parameter, at its offset.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct PrmParam {
     /// Its reference number, from 1.
     pub id: u16,
     pub offset: u16,
-    pub entry: EntryKey,
+    pub value: PrmValue,
+    pub data_type: PrmType,
     /// The `PrmText` of its values, when its set has choices.
     pub text: Option<u16>,
+}
+
+/// What a parameter holds: its name, default and range are there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PrmValue {
+    Entry(EntryKey),
+    Gateway(super::gateway::ParamKey),
+}
+
+/// How a parameter is stored, big-endian.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PrmType {
+    Unsigned8,
+    Unsigned16,
+    /// Bits `first..=last` of the byte at the parameter's offset (GSD
+    /// `Bit(n)` or `BitArea(first-last)`); other parameters may hold the
+    /// byte's other bits.
+    Bits {
+        first: u8,
+        last: u8,
+    },
+}
+
+impl PrmType {
+    /// Bytes from the parameter's offset.
+    pub fn bytes(self) -> u16 {
+        match self {
+            PrmType::Unsigned16 => 2,
+            PrmType::Unsigned8 | PrmType::Bits { .. } => 1,
+        }
+    }
+
+    /// The largest value it holds.
+    pub fn max(self) -> u16 {
+        match self {
+            PrmType::Unsigned8 => 0xFF,
+            PrmType::Unsigned16 => 0xFFFF,
+            PrmType::Bits { first, last } => (1 << (last - first + 1)) - 1,
+        }
+    }
+
+    /// Its value in `prm` at `offset`, high byte first; `prm` holds the
+    /// parameter's bytes.
+    pub fn read(self, prm: &[u8], offset: usize) -> u16 {
+        match self {
+            PrmType::Unsigned16 => u16::from_be_bytes([prm[offset], prm[offset + 1]]),
+            PrmType::Unsigned8 => prm[offset].into(),
+            PrmType::Bits { first, .. } => (u16::from(prm[offset]) >> first) & self.max(),
+        }
+    }
+
+    /// Puts `value` (at most [`Self::max`]) at `offset`, leaving the bits of
+    /// other parameters in the byte as they are.
+    pub fn write(self, prm: &mut [u8], offset: usize, value: u16) {
+        debug_assert!(value <= self.max());
+        match self {
+            PrmType::Unsigned16 => prm[offset..offset + 2].copy_from_slice(&value.to_be_bytes()),
+            // Lowering checked the value fits the type.
+            PrmType::Unsigned8 => prm[offset] = value as u8,
+            PrmType::Bits { first, .. } => {
+                let mask = (self.max() << first) as u8;
+                prm[offset] = (prm[offset] & !mask) | ((value << first) as u8 & mask);
+            }
+        }
+    }
+}
+
+/// As GSD names it: `Unsigned16`, `Bit(3)`, `BitArea(0-3)`.
+impl fmt::Display for PrmType {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            PrmType::Unsigned8 => f.write_str("Unsigned8"),
+            PrmType::Unsigned16 => f.write_str("Unsigned16"),
+            PrmType::Bits { first, last } if first == last => write!(f, "Bit({first})"),
+            PrmType::Bits { first, last } => write!(f, "BitArea({first}-{last})"),
+        }
+    }
+}
+
+/// A User_Prm_Data parameter's name, default and values, wherever the plan
+/// keeps them.
+#[derive(Debug, Clone, Copy)]
+#[non_exhaustive]
+pub struct PrmFacts<'a> {
+    pub name: &'a Text,
+    pub default: u16,
+    pub holds: PrmHolds<'a>,
+}
+
+#[derive(Debug, Clone, Copy)]
+#[non_exhaustive]
+pub enum PrmHolds<'a> {
+    /// A mapping entry: a parameter address or one of the set's choices.
+    Mapping {
+        set: &'a MappingSet,
+        entry: &'a MappingEntry,
+    },
+    /// A number in a range: a gateway's node count or words.
+    Number { min: u16, max: u16 },
+}
+
+impl PrmHolds<'_> {
+    pub fn contains(&self, value: u16) -> bool {
+        match self {
+            PrmHolds::Mapping { set, .. } => set.allowed.contains(value.into()),
+            PrmHolds::Number { min, max } => (*min..=*max).contains(&value),
+        }
+    }
+}
+
+impl Ir {
+    /// What `param` of this description's User_Prm_Data holds.
+    pub fn prm_facts(&self, param: &PrmParam) -> PrmFacts<'_> {
+        match param.value {
+            PrmValue::Entry(key) => {
+                let (set, entry) = self.mappings.entry(key);
+                PrmFacts {
+                    name: &entry.name,
+                    default: entry.default,
+                    holds: PrmHolds::Mapping { set, entry },
+                }
+            }
+            PrmValue::Gateway(key) => {
+                let gateway = self.gateway.as_ref();
+                let p = gateway
+                    .expect("lowering places gateway parameters only for a gateway")
+                    .param(key);
+                PrmFacts {
+                    name: &p.name,
+                    default: p.default.into(),
+                    holds: PrmHolds::Number {
+                        min: p.min.into(),
+                        max: p.max.into(),
+                    },
+                }
+            }
+        }
+    }
+
+    /// The parameter telegram a master sends when nothing is changed: the
+    /// constant bytes and every parameter's default.
+    pub fn default_user_prm(&self, user_prm: &UserPrm) -> Vec<u8> {
+        let mut prm = vec![0; usize::from(user_prm.len)];
+        prm[..user_prm.constant.len()].copy_from_slice(&user_prm.constant);
+        for param in user_prm.params() {
+            let default = self.prm_facts(param).default;
+            param
+                .data_type
+                .write(&mut prm, param.offset.into(), default);
+        }
+        prm
+    }
 }
 
 /// A `PrmText`: the texts of a set's choices.
@@ -162,8 +326,6 @@ pub struct PrmText {
     pub id: u16,
     pub set: SetKey,
 }
-
-pub const PRM_ENTRY_BYTES: u16 = 2;
 
 /// Device-related diagnosis: the block length (header byte included) and
 /// texts for values of bit areas counted from the first byte after the header.
@@ -213,5 +375,20 @@ mod tests {
             [12, 20, 4, 12, 32]
         );
         assert!(ppo_layout(6, 12).is_none());
+    }
+
+    #[test]
+    fn parameters_read_and_write_their_own_bits_high_byte_first() {
+        let low = PrmType::Bits { first: 0, last: 3 };
+        let high = PrmType::Bits { first: 4, last: 7 };
+        let mut prm = [0u8; 3];
+        low.write(&mut prm, 0, 8);
+        high.write(&mut prm, 0, 5);
+        low.write(&mut prm, 0, 3);
+        PrmType::Unsigned16.write(&mut prm, 1, 0xF00C);
+        assert_eq!(prm, [0x53, 0xF0, 0x0C]);
+        assert_eq!((low.read(&prm, 0), high.read(&prm, 0)), (3, 5));
+        assert_eq!(PrmType::Unsigned8.read(&prm, 2), 0x0C);
+        assert_eq!(PrmType::Unsigned16.read(&prm, 1), 0xF00C);
     }
 }

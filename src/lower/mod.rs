@@ -6,6 +6,7 @@
 
 mod checks;
 mod choices;
+mod gateway;
 mod mappings;
 mod meaning;
 mod profibus;
@@ -28,6 +29,9 @@ pub fn lower(
     text: &str,
     files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
 ) -> (Option<Ir>, Diagnostics) {
+    if let Some(missing) = missing_key(desc, text) {
+        return (None, Diagnostics(vec![missing]));
+    }
     let mut cx = Checker::new(desc.profibus.is_some());
     if desc.profibus.is_none() && desc.profinet.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
@@ -43,11 +47,18 @@ pub fn lower(
         .as_ref()
         .map(|f| lower_numbering(&mut cx, f));
     let device = lower_device(&mut cx, &desc.device, files);
-    let telegram = telegram::lower(&mut cx, &desc.telegram);
+    let telegram = desc
+        .telegram
+        .as_ref()
+        .map_or_else(telegram::absent, |t| telegram::lower(&mut cx, t));
     let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
+    let gateway = desc
+        .gateway
+        .as_ref()
+        .map(|g| gateway::lower(&mut cx, g, desc));
     let profibus = desc.profibus.as_ref().map(|p| {
         let plan = (&telegram, &mappings, &set_spans);
-        profibus::lower(&mut cx, p, plan, device.symbol.is_some())
+        profibus::lower(&mut cx, p, plan, gateway.as_ref(), device.symbol.is_some())
     });
     let profinet = desc
         .profinet
@@ -87,8 +98,37 @@ pub fn lower(
         manual_languages,
         profibus: profibus.flatten(),
         profinet: profinet.flatten(),
+        gateway: gateway.map(|g| g.gateway),
     };
     (Some(ir), diagnostics)
+}
+
+/// E004 for a key only a gateway's description may leave out (`[telegram]`,
+/// `ppo_types`), said as the TOML stage says any other missing key: alone,
+/// at the table that lacks it.
+fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
+    if desc.gateway.is_some() {
+        return None;
+    }
+    let first_line = |span: std::ops::Range<usize>| {
+        let line = &text[span.clone()];
+        span.start..span.start + line.find('\n').unwrap_or(line.len())
+    };
+    let (key, span) = if desc.telegram.is_none() {
+        ("telegram", 0..0)
+    } else {
+        let profibus = desc.profibus.as_ref()?;
+        if profibus.get_ref().ppo_types.is_some() {
+            return None;
+        }
+        ("ppo_types", first_line(profibus.span()))
+    };
+    Some(
+        Diagnostic::error("E004", format!("missing field `{key}`"))
+            .at(span)
+            .label("missing key")
+            .help("add the key; docs/description.md shows a complete example"),
+    )
 }
 
 fn lower_device(

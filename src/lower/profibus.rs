@@ -2,13 +2,14 @@
 //! parameter telegram and the diagnosis.
 
 use super::checks::{Checker, GSD_NAME_LEN};
+use super::gateway;
 use super::mappings::SetSpans;
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::{
     config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
-    PrmBlock, PrmParam, PrmText, Profibus, UserPrm, PRM_ENTRY_BYTES, STANDARD_DIAG_BYTES,
+    PrmBlock, PrmParam, PrmText, PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
 use std::collections::{BTreeMap, BTreeSet};
@@ -36,6 +37,7 @@ pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profibus>,
     (telegram, mappings, set_spans): (&Telegram, &Mappings, &SetSpans),
+    gateway: Option<&gateway::Lowered>,
     has_symbol: bool,
 ) -> Option<Profibus> {
     let p = p.get_ref();
@@ -62,7 +64,7 @@ pub fn lower(
             );
         }
     }
-    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, set_spans);
+    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, set_spans, gateway);
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
         let value = format!("0x{:04X}", ident.value.get_ref());
@@ -81,7 +83,15 @@ pub fn lower(
     }
     let modules = modules(cx, p, telegram);
     let max_len = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
+    // A gateway's modules are plugged together up to its limits.
+    let (max_input_len, max_output_len) = gateway.map_or((max_len, max_len), |g| {
+        (g.gateway.max_input_len, g.gateway.max_output_len)
+    });
     let diagnosis = p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d));
+    let device_diag_len = diagnosis.as_ref().map(|d| d.length).or_else(|| {
+        let d = gateway?.gateway.diagnosis.as_ref()?;
+        Some(d.max_len)
+    });
     Some(Profibus {
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
@@ -92,8 +102,8 @@ pub fn lower(
             .as_ref()
             .map(|i| cx.gsd_string(i, GSD_NAME_LEN, "implementation_type")),
         modules,
-        max_input_len: max_len,
-        max_output_len: max_len,
+        max_input_len,
+        max_output_len,
         baud_rates: baud_rates(cx, &p.baud_rates),
         min_slave_interval: cx.spanned_in_range(
             &p.min_slave_interval,
@@ -107,7 +117,7 @@ pub fn lower(
         sync_mode: p.sync_mode,
         dpv1,
         user_prm,
-        max_diag_data_len: STANDARD_DIAG_BYTES + diagnosis.as_ref().map_or(0, |d| d.length),
+        max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
         bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
         diagnosis,
     })
@@ -149,16 +159,20 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
             .unwrap_or(DEFAULT_PPO5_PZD_WORDS),
         None => DEFAULT_PPO5_PZD_WORDS,
     };
-    if p.ppo_types.get_ref().is_empty() {
+    // Without a gateway, lowering refused a description without them.
+    let Some(ppo_types) = &p.ppo_types else {
+        return Vec::new();
+    };
+    if ppo_types.get_ref().is_empty() {
         cx.push(
             Diagnostic::error("E101", "ppo_types is empty")
-                .at(p.ppo_types.span())
+                .at(ppo_types.span())
                 .label("no PPO type")
                 .help("offer at least one, e.g. ppo_types = [\"PPO1\"]"),
         );
     }
     let mut seen = BTreeSet::new();
-    p.ppo_types
+    ppo_types
         .get_ref()
         .iter()
         .filter_map(|name| {
@@ -372,13 +386,15 @@ fn identification_and_maintenance(cx: &mut Checker, d: &raw::Dpv1, near: Range<u
 
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
 /// them), then one block per group of mappings in telegram order: one
-/// Unsigned16 per entry, numbered from 1. Sets with choices get a PrmText
-/// each, numbered from 1 in the same order.
+/// Unsigned16 per entry, numbered from 1; then a gateway's parameters, as
+/// [`gateway::place`] places them. Sets with choices get a PrmText each,
+/// numbered from 1 in the same order.
 fn user_prm(
     cx: &mut Checker,
     dpv1: Option<&Dpv1>,
     mappings: &Mappings,
     set_spans: &SetSpans,
+    gateway: Option<&gateway::Lowered>,
 ) -> UserPrm {
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
     let texts: Vec<PrmText> = mappings
@@ -388,7 +404,7 @@ fn user_prm(
         .map(|(s, id)| PrmText { id, set: s.key })
         .collect();
     let text_of = |set| texts.iter().find(|t| t.set == set).map(|t| t.id);
-    let entry_bytes = usize::from(PRM_ENTRY_BYTES);
+    let entry_bytes = usize::from(PrmType::Unsigned16.bytes());
     let mut end = constant.len();
     let mut ids = 1..=u16::MAX;
     let mut overflowing = None;
@@ -408,7 +424,8 @@ fn user_prm(
                     PrmParam {
                         id: ids.next().unwrap_or(u16::MAX),
                         offset: saturate(offset),
-                        entry: entry.key,
+                        value: PrmValue::Entry(entry.key),
+                        data_type: PrmType::Unsigned16,
                         text: text_of(set.key),
                     }
                 })
@@ -433,12 +450,41 @@ fn user_prm(
             .help("map fewer PZD words or DPV1 indexes"),
         );
     }
+    let (gateway, end) = match gateway {
+        Some(g) => gateway_params(cx, g, end, &mut ids),
+        None => (Vec::new(), end),
+    };
     UserPrm {
         constant,
         blocks,
+        gateway,
         texts,
         len: saturate(end),
     }
+}
+
+/// A gateway's parameters from `start` on, within the limit (E116).
+fn gateway_params(
+    cx: &mut Checker,
+    g: &gateway::Lowered,
+    start: usize,
+    ids: &mut impl Iterator<Item = u16>,
+) -> (Vec<PrmParam>, usize) {
+    let (params, end) = gateway::place(&g.prm_types, start, ids);
+    if end > MAX_USER_PRM_LEN && start <= MAX_USER_PRM_LEN {
+        cx.push(
+            Diagnostic::error(
+                "E116",
+                format!(
+                    "the parameter telegram would be {end} bytes; GSD allows {MAX_USER_PRM_LEN}"
+                ),
+            )
+            .at(g.span.clone())
+            .label("the gateway's parameters run past the limit")
+            .help("use fewer node numbers, or store the node parameters in fewer bytes (`bits`)"),
+        );
+    }
+    (params, end)
 }
 
 /// An offset or length past what a telegram may hold has been reported

@@ -99,6 +99,16 @@ fn lower_bit_field(
     })
 }
 
+/// A gateway's: no PKW channel, no PZD words. Its data are the nodes' words.
+pub fn absent() -> Telegram {
+    Telegram {
+        pkw: ir::PkwKind::None,
+        pzd_words: 0,
+        control_word: None,
+        status_word: None,
+    }
+}
+
 /// Choices with values within `min..=max`, each value once, each named
 /// after its text; the set is named `ident`.
 pub fn value_set(

@@ -12,6 +12,9 @@ pub mod pkw_station_command;
 /// The device-related diagnosis block of a PROFIBUS slave.
 pub mod diagnosis;
 
+/// Gateways: node parameters, their totals, word modules and diagnosis.
+pub mod gateway;
+
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
 /// so a `#[repr(C)]` struct of words has no padding.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -5,7 +5,9 @@ use super::page::{code, text, Builder, Cell};
 use super::{
     allowed, bits, bytes, choices_caption, drive_parameter, hex_bytes, mapping_value, Lang,
 };
-use crate::ir::profibus::{Diagnosis, DiagnosisArea, Profibus, STANDARD_DIAG_BYTES};
+use crate::ir::profibus::{
+    Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
+};
 use crate::ir::profinet::ParameterRecord;
 use crate::ir::{EntryKey, Ir, MappingKind};
 use crate::pkw::DiagArea;
@@ -92,15 +94,7 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
         ]);
     }
     for param in prm.params() {
-        let (set, entry) = ir.mappings.entry(param.entry);
-        rows.push(vec![
-            text(bytes(lang, param.offset, param.offset + 1)),
-            text(lang.text(&entry.name)),
-            text("Unsigned16"),
-            text(mapping_value(ir, lang, set, entry.default)),
-            text(allowed(lang, set)),
-            drive_parameter(ir, entry),
-        ]);
+        rows.push(param_row(ir, lang, param));
     }
     doc.table(
         lang.t("User_Prm_Data", "User_Prm_Data"),
@@ -114,14 +108,37 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
         ],
         rows,
     );
-    let mut defaults = prm.constant.clone();
-    for param in prm.params() {
-        defaults.extend(ir.mappings.entry(param.entry).1.default.to_be_bytes());
-    }
+    let defaults = ir.default_user_prm(prm);
     doc.para(vec![
         super::page::Run::Text(lang.t("With every default: ", "全部为默认值时：").into()),
         super::page::Run::Code(hex_bytes(&defaults)),
     ]);
+}
+
+/// Bytes, name, type, default, range or choices, drive parameter.
+fn param_row(ir: &Ir, lang: Lang, param: &PrmParam) -> Vec<Cell> {
+    let facts = ir.prm_facts(param);
+    let last = param.offset + param.data_type.bytes() - 1;
+    let (default, range, drive) = match facts.holds {
+        PrmHolds::Mapping { set, entry } => (
+            mapping_value(ir, lang, set, facts.default),
+            allowed(lang, set),
+            drive_parameter(ir, entry),
+        ),
+        PrmHolds::Number { min, max } => (
+            facts.default.to_string(),
+            lang.f(format!("{min} to {max}"), format!("{min}～{max}")),
+            text("—"),
+        ),
+    };
+    vec![
+        text(bytes(lang, param.offset, last)),
+        text(lang.text(facts.name)),
+        text(param.data_type.to_string()),
+        text(default),
+        text(range),
+        drive,
+    ]
 }
 
 fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -142,7 +159,11 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let prm_offset = |key: EntryKey| {
         ir.profibus
             .as_ref()
-            .and_then(|p| p.user_prm.params().find(|q| q.entry == key))
+            .and_then(|p| {
+                p.user_prm
+                    .params()
+                    .find(|q| q.value == PrmValue::Entry(key))
+            })
             .map(|q| q.offset)
     };
     let rows = group

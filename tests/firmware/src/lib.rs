@@ -18,3 +18,7 @@ pub mod mv810_pnet02 {
 pub mod powtran_9kdp1 {
     include!(concat!(env!("OUT_DIR"), "/9kdp1_layout.rs"));
 }
+
+pub mod md810_gateway {
+    include!(concat!(env!("OUT_DIR"), "/md810_gateway_layout.rs"));
+}

@@ -1,0 +1,207 @@
+//! A gateway: a card that carries the data of the nodes of a second bus
+//! (MD810's bridge mode: PROFIBUS-DP to CANopen). The master sets how many
+//! nodes are in use and how many words each one carries each way (user
+//! parameters, placed in User_Prm_Data by [`super::profibus::UserPrm`]),
+//! plugs word modules until its input and output equal the nodes' totals,
+//! and reads a diagnosis block of type, node and code.
+
+use super::{Choice, Direction, Ident, Text, ValueSet};
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Gateway {
+    /// The second bus, as the manual names it.
+    pub bus: String,
+    /// The node numbers, both ends included; every one has its parameters.
+    pub first_node: u8,
+    pub last_node: u8,
+    /// The gateway's own node number, when it is a node itself.
+    pub own_node: Option<u8>,
+    /// Bytes the master reads and writes at most: Max_Input_Len, Max_Output_Len.
+    pub max_input_len: u16,
+    pub max_output_len: u16,
+    pub data_order: DataOrder,
+    /// How many nodes are in use: the first `count` node numbers.
+    pub node_count: Param,
+    /// Every node number's parameters, `first_node` first.
+    pub nodes: Vec<Node>,
+    /// The modules offered, input ones first, each size ascending.
+    pub modules: Vec<Module>,
+    /// Max_Module: the most modules any configuration within the limits
+    /// needs, when each direction is made of as few modules as it can be.
+    pub max_modules: u8,
+    pub diagnosis: Option<Diagnosis>,
+}
+
+impl Gateway {
+    pub fn param(&self, key: ParamKey) -> &Param {
+        match key {
+            ParamKey::NodeCount => &self.node_count,
+            ParamKey::Words { node, direction } => self
+                .nodes
+                .iter()
+                .find(|n| n.number == node)
+                .map(|n| n.words(direction))
+                .expect("lowering links only to nodes it made"),
+        }
+    }
+
+    /// The parameters in the order User_Prm_Data holds them: the count, then
+    /// each node's input words and output words.
+    pub fn params(&self) -> impl Iterator<Item = &Param> {
+        std::iter::once(&self.node_count).chain(
+            self.nodes
+                .iter()
+                .flat_map(|n| [&n.input_words, &n.output_words]),
+        )
+    }
+}
+
+/// The order of the nodes' words in the master's input and output data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum DataOrder {
+    /// The nodes in use in ascending node number, each node's words together.
+    NodeAscending,
+}
+
+/// A gateway parameter: what it is, not where it is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum ParamKey {
+    NodeCount,
+    /// The words node `node` carries in `direction` (in: the master reads them).
+    Words {
+        node: u8,
+        direction: Direction,
+    },
+}
+
+/// A user parameter with its range; its place and data type are in
+/// User_Prm_Data's plan.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Param {
+    pub key: ParamKey,
+    /// With the node number filled in.
+    pub name: Text,
+    pub min: u8,
+    pub max: u8,
+    pub default: u8,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Node {
+    pub number: u8,
+    pub input_words: Param,
+    pub output_words: Param,
+}
+
+impl Node {
+    pub fn words(&self, direction: Direction) -> &Param {
+        match direction {
+            Direction::In => &self.input_words,
+            Direction::Out => &self.output_words,
+        }
+    }
+}
+
+/// A block of words one way: one GSD module with one config identifier byte.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Module {
+    /// Its GSD reference number, from 1.
+    pub reference: u8,
+    pub name: String,
+    pub direction: Direction,
+    pub words: u8,
+    pub consistent: bool,
+    /// The config identifier byte Chk_Cfg carries for it.
+    pub config: u8,
+    /// Its constant in generated code: `input_16_words`.
+    pub ident: Ident,
+}
+
+/// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
+/// the whole length, bit 6 words, bits 5-4 direction (01 input, 10
+/// output), bits 3-0 length - 1.
+pub(crate) fn config_byte(direction: Direction, words: u8, consistent: bool) -> u8 {
+    debug_assert!((1..=super::profibus::MAX_WORDS_PER_IDENTIFIER).contains(&words));
+    let consistency = if consistent { 0x80 } else { 0 };
+    let way = match direction {
+        Direction::In => 0x10,
+        Direction::Out => 0x20,
+    };
+    consistency | 0x40 | way | (words - 1)
+}
+
+/// The device-related diagnosis: the header byte (block length, bits 7-6 =
+/// 00), then the type, the node and the code at the places below.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Diagnosis {
+    /// Byte offsets in the block, the header being byte 0.
+    pub type_at: u8,
+    pub node_at: u8,
+    pub code_at: u8,
+    pub types: Vec<DiagType>,
+    /// Bytes of the longest block, the header included.
+    pub max_len: u8,
+    /// What the GSD's `Unit_Diag_Area`s can show: the type's texts, and the
+    /// codes of the types that list theirs.
+    pub gsd_areas: Vec<GsdArea>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DiagType {
+    pub value: u8,
+    pub text: Text,
+    /// Its variant in generated code: `ParameterError`.
+    pub ident: Ident,
+    /// Bytes of its block, the header included.
+    pub len: u8,
+    pub code: DiagCode,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum DiagCode {
+    /// One byte, one of these values.
+    Listed(ValueSet),
+    /// A 16-bit number, high byte first, with its meaning.
+    Word(Text),
+}
+
+impl DiagCode {
+    pub fn bytes(&self) -> u8 {
+        match self {
+            DiagCode::Listed(_) => 1,
+            DiagCode::Word(_) => 2,
+        }
+    }
+}
+
+/// A `Unit_Diag_Area`, with a comment saying what it shows; bits count from
+/// the first byte after the header.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct GsdArea {
+    pub first_bit: u16,
+    pub last_bit: u16,
+    pub note: String,
+    pub values: Vec<Choice>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn config_bytes_say_words_direction_and_length() {
+        assert_eq!(config_byte(Direction::In, 1, false), 0x50);
+        assert_eq!(config_byte(Direction::In, 16, false), 0x5F);
+        assert_eq!(config_byte(Direction::Out, 8, false), 0x67);
+        assert_eq!(config_byte(Direction::Out, 16, true), 0xEF);
+    }
+}
