@@ -313,7 +313,7 @@ fn an_unknown_module_lists_the_modules() {
         "--module:1:1",
     );
     assert!(
-        err.contains("help: the modules are: Standard telegram 1, PKW + 1 PZD, PKW + 2 PZD,"),
+        err.contains("help: the modules are: standard message 1, PKW + 1 PZD, PKW + 2 PZD,"),
         "{err}"
     );
 }

@@ -442,3 +442,197 @@ fn mutate(text: &str, from: &str, to: &str) -> String {
     assert!(text.contains(from), "{from} is not in the generated file");
     text.replacen(from, to, 1)
 }
+
+/// The fixture of a PROFIdrive card (tests/fixtures/valid/profidrive.toml).
+fn fixture(name: &str) -> Ir {
+    descriptions::load_from("tests/fixtures/valid", name)
+}
+
+/// Every Value of the ExternalTextList, in every language.
+fn text_values<'a>(doc: &'a Document) -> Vec<&'a str> {
+    elements(doc, "Text")
+        .map(|t| attribute(t, "Value"))
+        .collect()
+}
+
+/// A PROFIdrive card's standard telegram 1 is the profile's, placed as
+/// ABB's FENA places it: the module access point (no data, ident 0xFFFF)
+/// fixed in subslot 1, the telegram fixed in subslot 2, both in API 14848,
+/// with the profile's word names; its other modules stay in API 0.
+#[test]
+fn a_profidrive_telegram_sits_behind_the_access_point_in_the_profiles_api() {
+    let ir = fixture("profidrive.toml");
+    let (text, _) = gsdml_of(&ir);
+    let doc = Document::parse(&text).unwrap();
+    let module = elements(&doc, "ModuleItem")
+        .find(|m| m.attribute("ID") == Some("IDM_STD_TEL_1"))
+        .unwrap();
+    let submodules: Vec<Node> = module
+        .descendants()
+        .filter(|n| n.has_tag_name("VirtualSubmoduleItem"))
+        .collect();
+    let placed: Vec<(&str, &str, &str)> = submodules
+        .iter()
+        .map(|s| {
+            (
+                attribute(*s, "SubmoduleIdentNumber"),
+                attribute(*s, "API"),
+                attribute(*s, "FixedInSubslots"),
+            )
+        })
+        .collect();
+    assert_eq!(
+        placed,
+        [("0x0000FFFF", "14848", "1"), ("0x00000010", "14848", "2")]
+    );
+    let access_point_data = children(submodules[0], "IOData").next().unwrap();
+    assert_eq!(access_point_data.children().count(), 0);
+    assert_eq!(
+        english(
+            &doc,
+            attribute(
+                submodules[0]
+                    .descendants()
+                    .find(|n| n.has_tag_name("Name"))
+                    .unwrap(),
+                "TextId"
+            )
+        ),
+        "Module Access Point"
+    );
+    let words = |element: &str| -> Vec<&str> {
+        let io = submodules[1]
+            .descendants()
+            .find(|n| n.has_tag_name(element))
+            .unwrap();
+        children(io, "DataItem")
+            .map(|d| english(&doc, attribute(d, "TextId")))
+            .collect()
+    };
+    assert_eq!(
+        words("Output"),
+        ["STW1 (control word 1)", "NSOLL_A (speed setpoint A)"]
+    );
+    assert_eq!(
+        words("Input"),
+        ["ZSW1 (status word 1)", "NIST_A (speed actual value A)"]
+    );
+    let other_apis: BTreeSet<&str> = elements(&doc, "VirtualSubmoduleItem")
+        .filter(|s| !s.ancestors().any(|a| a == module))
+        .filter_map(|s| s.attribute("API"))
+        .collect();
+    assert_eq!(other_apis, BTreeSet::from(["0"]));
+    let category = children(module, "ModuleInfo").next().unwrap();
+    assert_eq!(attribute(category, "CategoryRef"), "IDC_STANDARD_TELEGRAMS");
+}
+
+/// MV810 does not implement PROFIdrive (its control word's bit 0 is
+/// forward run): its "standard message 1" keeps the manual's name and
+/// words in API 0, and no text of the file names the profile or its words.
+#[test]
+fn a_card_without_profidrive_shows_no_profidrive_name() {
+    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&text).unwrap();
+    for value in text_values(&doc) {
+        for profile in [
+            "PROFIdrive",
+            "STW1",
+            "NSOLL",
+            "ZSW1",
+            "NIST",
+            "Standard telegram",
+        ] {
+            assert!(!value.contains(profile), "{value:?} names {profile}");
+        }
+    }
+    assert!(elements(&doc, "VirtualSubmoduleItem").all(|s| s.attribute("API") != Some("14848")));
+    let module = elements(&doc, "ModuleItem")
+        .find(|m| m.attribute("ID") == Some("IDM_STD_TEL_1"))
+        .unwrap();
+    let name = module
+        .descendants()
+        .find(|n| n.has_tag_name("Name"))
+        .unwrap();
+    assert_eq!(
+        english(&doc, attribute(name, "TextId")),
+        "standard message 1"
+    );
+    let output = module
+        .descendants()
+        .find(|n| n.has_tag_name("Output"))
+        .unwrap();
+    let words: Vec<&str> = children(output, "DataItem")
+        .map(|d| english(&doc, attribute(d, "TextId")))
+        .collect();
+    assert_eq!(words, ["Master sends control command word", "PZD2"]);
+}
+
+/// Send clocks, conformance and netload class, writable I&M records and
+/// MRP are the description's (the fixture states each), gsdc's defaults
+/// where it is silent (MV810); the DCP and PTP boundaries are always there.
+#[test]
+fn interface_properties_are_the_descriptions_or_gsdcs_defaults() {
+    let stated = fixture("no_warnings.toml");
+    let silent = load("mv810-pnet02.toml");
+    let cases = [
+        (&stated, "8 16 32 64 128", ("B", "II"), "1 2 3 4", true),
+        (&silent, "32 64 128", ("B", "I"), "1 2 3", false),
+    ];
+    for (ir, send_clock, (conformance, netload), im, mrp) in cases {
+        let (text, profinet) = gsdml_of(ir);
+        let name = &profinet.file_name;
+        let doc = Document::parse(&text).unwrap();
+        let timing = elements(&doc, "TimingProperties").next().unwrap();
+        assert_eq!(attribute(timing, "SendClock"), send_clock, "{name}");
+        let certification = elements(&doc, "CertificationInfo").next().unwrap();
+        assert_eq!(
+            (
+                attribute(certification, "ConformanceClass"),
+                attribute(certification, "NetloadClass")
+            ),
+            (conformance, netload),
+            "{name}"
+        );
+        let dap_submodule = elements(&doc, "VirtualSubmoduleItem").next().unwrap();
+        assert_eq!(
+            attribute(dap_submodule, "Writeable_IM_Records"),
+            im,
+            "{name}"
+        );
+        let interface = elements(&doc, "InterfaceSubmoduleItem").next().unwrap();
+        for boundary in ["DCP_BoundarySupported", "PTP_BoundarySupported"] {
+            assert_eq!(attribute(interface, boundary), "true", "{name}");
+        }
+        let redundancy = children(interface, "MediaRedundancy").next();
+        assert_eq!(
+            redundancy.map(|r| attribute(r, "SupportedRole")),
+            mrp.then_some("Client"),
+            "{name}"
+        );
+        let ring_ports: Vec<Option<&str>> = elements(&doc, "PortSubmoduleItem")
+            .map(|p| p.attribute("IsDefaultRingport"))
+            .collect();
+        let expected = if mrp { Some("true") } else { None };
+        assert_eq!(ring_ports, [expected, expected], "{name}");
+    }
+}
+
+/// Each module is listed under its group of the hardware catalog, as ABB
+/// groups its modules; every group listed has a module.
+#[test]
+fn modules_are_grouped_in_the_catalog() {
+    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&text).unwrap();
+    let groups: Vec<(&str, &str)> = elements(&doc, "ModuleItem")
+        .map(|m| {
+            let info = children(m, "ModuleInfo").next().unwrap();
+            (attribute(m, "ID"), attribute(info, "CategoryRef"))
+        })
+        .collect();
+    assert_eq!(groups[0], ("IDM_STD_TEL_1", "IDC_PZD"));
+    assert!(groups[1..].iter().all(|(_, c)| *c == "IDC_PKW_PZD"));
+    let listed: Vec<(&str, &str)> = elements(&doc, "CategoryItem")
+        .map(|c| (attribute(c, "ID"), english(&doc, attribute(c, "TextId"))))
+        .collect();
+    assert_eq!(listed, [("IDC_PZD", "PZD"), ("IDC_PKW_PZD", "PKW and PZD")]);
+}

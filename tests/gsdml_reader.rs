@@ -135,19 +135,13 @@ fn largest_corpus_file_checks_quickly() {
 // ---------------------------------------------------------------------------
 // gsdc's own output, read the way the checker reads third-party files
 
-/// The GSDML files gsdc writes for the shipped descriptions: (name, text).
+/// The GSDML files gsdc writes for the shipped descriptions and the valid
+/// fixtures (one with PROFIdrive's access point in its largest module):
+/// (name, text).
 fn generated_gsdml() -> Vec<(String, String)> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions");
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".toml"))
-        .collect();
-    names.sort();
-    let artifacts = names
+    descriptions::all_valid()
         .iter()
-        .flat_map(|name| gsdc::compile(&descriptions::load(name)).unwrap());
-    artifacts
+        .flat_map(|(_, ir)| gsdc::compile(ir).unwrap())
         .filter(|a| a.file_name.ends_with(".xml"))
         .map(|a| (a.file_name, String::from_utf8(a.contents).unwrap()))
         .collect()
@@ -162,7 +156,11 @@ fn generated_gsdml() -> Vec<(String, String)> {
 #[test]
 fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
     let files = generated_gsdml();
-    assert!(files.len() >= 2, "the shipped PROFINET descriptions");
+    assert_eq!(
+        files.len(),
+        4,
+        "the shipped PROFINET descriptions and fixtures"
+    );
     for (name, text) in &files {
         let io_findings = |text: &str| -> Vec<&'static str> {
             check(text, Some(name))

@@ -3,6 +3,8 @@
 //! broken corpus file at the place that was broken. This proves the harness
 //! that later validates the project's own GSDML.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
 #[path = "common/xsd.rs"]
 mod xsd;
 
@@ -91,29 +93,29 @@ fn schema_rejects_each_broken_file_where_it_is_broken() {
     }
 }
 
-/// Every GSDML gsdc generates from the shipped descriptions validates
-/// against the PI schema.
+/// Every GSDML gsdc generates from the shipped descriptions and the valid
+/// fixtures (PROFIdrive, MRP, every interface property) validates against
+/// the PI schema.
 #[test]
 fn generated_gsdml_validates_against_the_pi_schema() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions");
-    let mut generated = 0;
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.extension().is_none_or(|e| e != "toml") {
-            continue; // the symbols' folder
-        }
-        let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        let ir = gsdc::build::load_file(&path, &name)
-            .unwrap()
-            .ir
-            .unwrap_or_else(|| panic!("{name} loads"));
+    let mut generated = Vec::new();
+    for (_, ir) in descriptions::all_valid() {
         for artifact in gsdc::compile(&ir).unwrap() {
             if artifact.file_name.ends_with(".xml") {
                 let xml = String::from_utf8(artifact.contents).unwrap();
                 assert_eq!(xsd::validate(&xml), Ok(()), "{}", artifact.file_name);
-                generated += 1;
+                generated.push(artifact.file_name);
             }
         }
     }
-    assert_eq!(generated, 2, "md810dp and mv810-pnet02 give GSDML");
+    assert_eq!(
+        generated,
+        [
+            "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
+            "GSDML-V2.32-MEGMEET-MV800-20230830.xml",
+            "GSDML-V2.32-Acme-X1-20260131.xml",
+            "GSDML-V2.32-Acme-X2-20260228.xml",
+        ],
+        "the shipped descriptions md810dp and mv810-pnet02, and the fixtures"
+    );
 }

@@ -40,13 +40,21 @@ impl Module<'_> {
         }
     }
 
-    /// Whether its PZD words carry the description's mappings and the
-    /// control and status words; PROFIdrive's standard telegram 1 has fixed
-    /// meanings instead.
+    /// Whether its PZD words carry the description's mappings; standard
+    /// telegram 1 has fixed meanings instead.
     pub fn is_mapped(self) -> bool {
         match self {
             Module::Ppo(_) => true,
             Module::Profinet(m) => m.kind == ModuleKind::Pzd,
+        }
+    }
+
+    /// Whether PZD1 is the description's control or status word; in
+    /// PROFIdrive's standard telegram 1 it is the profile's STW1 or ZSW1.
+    pub fn has_vendor_words(self) -> bool {
+        match self {
+            Module::Ppo(_) => true,
+            Module::Profinet(m) => !m.is_profidrive(),
         }
     }
 

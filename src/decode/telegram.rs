@@ -77,12 +77,12 @@ pub(super) fn decode(
             let value = u16::from_be_bytes([pair[0], pair[1]]);
             // PZD words count from 1 after the PKW channel.
             let pzd = (offset >= pkw_bytes).then(|| (offset - pkw_bytes) / 2 + 1);
-            let (carries, fields) = match pzd {
-                Some(n) if module.is_mapped() => (
-                    carried(ir, direction, n, mapping),
-                    word_fields(ir, direction, n, value),
-                ),
-                _ => (None, Vec::new()),
+            let carries = pzd
+                .filter(|_| module.is_mapped())
+                .and_then(|n| carried(ir, direction, n, mapping));
+            let fields = match pzd {
+                Some(n) if module.has_vendor_words() => word_fields(ir, direction, n, value),
+                _ => Vec::new(),
             };
             DecodedWord {
                 offset,

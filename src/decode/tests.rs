@@ -17,6 +17,14 @@ pub(crate) fn mv810() -> Ir {
     )
 }
 
+/// A PROFIdrive card: its standard telegram 1 is the profile's.
+fn profidrive() -> Ir {
+    load(
+        "profidrive.toml",
+        include_str!("../../tests/fixtures/valid/profidrive.toml"),
+    )
+}
+
 fn load(name: &str, text: &str) -> Ir {
     crate::load(name, text)
         .0
@@ -318,18 +326,36 @@ fn mv810_control_and_status_words_and_mapped_words() {
     assert_eq!(carries.source, ValueSource::Given);
 }
 
-/// Standard telegram 1 has PROFIdrive's fixed words, no mapping.
+/// MV810's standard message 1 is the vendor's: PZD1 its control word bit
+/// by bit, PZD2 unnamed and unmapped, and no PROFIdrive name.
 #[test]
-fn mv810_standard_telegram_1_names_its_words() {
+fn mv810_standard_message_1_names_its_words() {
     let ir = mv810();
+    let t = decode(&ir, "standard message 1", Out, "0001 4000");
+    let names: Vec<&str> = t.words.iter().map(|w| w.name.as_str()).collect();
+    assert_eq!(names, ["Master sends control command word", "PZD2"]);
+    assert_eq!(t.words[0].fields[0].name, "Forward running");
+    assert_eq!(t.words[0].fields[0].value, 1);
+    assert!(t.words[1].fields.is_empty());
+    assert!(t.words.iter().all(|w| w.carries.is_none()));
+    assert_eq!(t.pkw, None);
+}
+
+/// PROFIdrive's standard telegram 1 has the profile's fixed words: no
+/// mapping, no vendor bits.
+#[test]
+fn profidrive_standard_telegram_1_names_the_profiles_words() {
+    let ir = profidrive();
     let t = decode(&ir, "standard telegram 1", Out, "047F 4000");
     let names: Vec<&str> = t.words.iter().map(|w| w.name.as_str()).collect();
-    assert_eq!(names, ["STW1 (control word 1)", "NSOLL_A (speed setpoint)"]);
+    assert_eq!(
+        names,
+        ["STW1 (control word 1)", "NSOLL_A (speed setpoint A)"]
+    );
     assert!(t
         .words
         .iter()
         .all(|w| w.carries.is_none() && w.fields.is_empty()));
-    assert_eq!(t.pkw, None);
 }
 
 fn md810_default_prm() -> String {

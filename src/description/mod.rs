@@ -89,6 +89,9 @@ pub struct Telegram {
     pub pzd_words: Spanned<u8>,
     pub control_word: Option<Word>,
     pub status_word: Option<Word>,
+    /// Whether the card implements the PROFIdrive profile (STW1's ON/OFF1
+    /// and the profile's state machine), not only telegrams shaped like its.
+    pub profidrive: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -307,15 +310,27 @@ pub struct Profinet {
     pub pzd_lengths: Spanned<Vec<Spanned<u8>>>,
     /// Which of the selectable modules carry the PKW channel.
     pub module_pkw: Spanned<ModulePkw>,
-    /// Also offer PROFIdrive standard telegram 1 (STW1, NSOLL_A / ZSW1, NIST_A).
-    #[serde(default)]
-    pub standard_telegram_1: bool,
+    /// Also offer standard telegram 1: PROFIdrive's (STW1, NSOLL_A / ZSW1,
+    /// NIST_A) when `telegram.profidrive`, else the manual's of 2 PZD words.
+    pub standard_telegram_1: Option<Spanned<bool>>,
     /// Record indexes of the parameter records, with their names.
     #[serde(default)]
     pub records: RecordIndexes,
     /// What the module info texts add to gsdc's description of a module.
     #[serde(default)]
     pub module_info: ModuleInfo,
+    /// The modules' names where gsdc's would not do: standard telegram 1
+    /// of a card that does not implement PROFIdrive.
+    #[serde(default)]
+    pub module_name: ModuleName,
+    /// SendClock factors (units of 31.25 us) the interface accepts.
+    pub send_clock: Option<Spanned<Vec<Spanned<u16>>>>,
+    pub conformance_class: Option<Spanned<ConformanceClass>>,
+    pub netload_class: Option<Spanned<NetloadClass>>,
+    /// The I&M records the controller may write (1 to 4).
+    pub writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
+    /// MRP client on the first two ports.
+    pub media_redundancy: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -324,6 +339,26 @@ pub struct ModuleInfo {
     /// Every module of PKW and PZD words the description maps.
     pub user_defined: Option<Spanned<Text>>,
     pub standard_telegram_1: Option<Spanned<Text>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModuleName {
+    pub standard_telegram_1: Option<Spanned<Text>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum ConformanceClass {
+    A,
+    B,
+    C,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum NetloadClass {
+    I,
+    II,
+    III,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -18,7 +18,7 @@ use super::{Artifact, ArtifactKind};
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
-use crate::ir::profinet::{self, ModuleKind, Profinet};
+use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Direction, Ident, Ir, Layout, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;
@@ -406,7 +406,7 @@ fn modules(ir: &Ir, names: &Names) -> Vec<ModuleItem> {
                 names.upper(&m.ident.upper_snake())
             ),
             layout: m.layout,
-            standard_telegram_1: m.kind == ModuleKind::StandardTelegram1,
+            standard_telegram_1: m.is_profidrive(),
         })
     });
     ppos.chain(modules)

@@ -8,7 +8,9 @@
 
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    DataItem, Module, ParameterRecord, Profinet, TextRef, DAP_IDENT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    ConformanceClass, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
+    ACCESS_POINT_IDENT, ACCESS_POINT_SUBSLOT, DAP_IDENT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
@@ -21,8 +23,6 @@ const DAP_SUBMODULE_ID: &str = "IDS_DAP";
 const INTERFACE_ID: &str = "IDS_INTERFACE";
 /// 100BASE-TX full duplex (IEC 61158-6-10 MAUType 16): the card's RJ45 ports.
 const MAU_100BASE_TX: &str = "16";
-/// I&M1..3 are writable; I&M0 and I&M5 are read-only and may never be listed.
-const WRITEABLE_IM_RECORDS: &str = "1 2 3";
 const CONSISTENCY: &str = "All items consistency";
 
 /// The GSDML text of a description with a PROFINET part.
@@ -56,6 +56,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
         );
         doc.close("GraphicsList");
     }
+    category_list(&mut doc, profinet);
     external_texts(&mut doc, &ir.languages);
     doc.close("ApplicationProcess");
     doc.close("ProfileBody");
@@ -240,11 +241,26 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         ("SoftwareRelease", d.software_release.as_str()),
     ]);
     module_info(doc, &p.device_name, &p.device_info, &values);
-    // Conformance class B: RT_CLASS_1 with SNMP and LLDP (see the interface
-    // below); netload class I is the lowest.
+    let properties = &p.interface_properties;
     doc.leaf(
         "CertificationInfo",
-        &[("ConformanceClass", "B"), ("NetloadClass", "I")],
+        &[
+            (
+                "ConformanceClass",
+                match properties.conformance_class {
+                    ConformanceClass::A => "A",
+                    ConformanceClass::B => "B",
+                },
+            ),
+            (
+                "NetloadClass",
+                match properties.netload_class {
+                    NetloadClass::I => "I",
+                    NetloadClass::II => "II",
+                    NetloadClass::III => "III",
+                },
+            ),
+        ],
     );
     doc.leaf(
         "IOConfigData",
@@ -279,6 +295,17 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 /// Name, InfoText and then any `Value` elements, in the schema's order.
 fn module_info(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&str, &str)]) {
     doc.open("ModuleInfo", &[]);
+    module_info_body(doc, name, info, values);
+}
+
+/// A module's ModuleInfo, with the category it is listed under.
+fn module_info_in(doc: &mut Doc, name: &TextRef, info: &TextRef, category: Option<&str>) {
+    let attributes: Vec<(&str, &str)> = category.map(|c| ("CategoryRef", c)).into_iter().collect();
+    doc.open("ModuleInfo", &attributes);
+    module_info_body(doc, name, info, &[]);
+}
+
+fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&str, &str)]) {
     doc.text_ref("Name", name);
     doc.text_ref("InfoText", info);
     for (element, value) in values {
@@ -295,7 +322,10 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet) {
         &[
             ("ID", DAP_SUBMODULE_ID),
             ("SubmoduleIdentNumber", &hex32(DAP_IDENT)),
-            ("Writeable_IM_Records", WRITEABLE_IM_RECORDS),
+            (
+                "Writeable_IM_Records",
+                &blank_separated(&p.interface_properties.writeable_im_records),
+            ),
             ("MayIssueProcessAlarm", "false"),
         ],
     );
@@ -308,7 +338,9 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet) {
 /// The interface and its ports. Their submodule ident numbers are their
 /// subslot numbers, the convention p-net also follows. DCP_HelloSupported
 /// stays off: it would need PowerOnToCommReady, which the description does
-/// not give.
+/// not give. The DCP and PTP boundaries are declared as every corpus file
+/// of PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
+/// Portal's checker requires of V2.31 and later.
 fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     doc.open("SystemDefinedSubmoduleList", &[]);
     doc.text(&p.interface);
@@ -321,6 +353,8 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
             ("TextId", &p.interface.id),
             ("SupportedRT_Classes", "RT_CLASS_1"),
             ("SupportedProtocols", "SNMP;LLDP"),
+            ("DCP_BoundarySupported", "true"),
+            ("PTP_BoundarySupported", "true"),
         ],
     );
     // Both startup modes, or controllers that start up the legacy way
@@ -332,23 +366,32 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     doc.leaf(
         "TimingProperties",
         &[
-            ("SendClock", "32"),
+            (
+                "SendClock",
+                &blank_separated(&p.interface_properties.send_clock),
+            ),
             ("ReductionRatio", "1 2 4 8 16 32 64 128 256 512"),
         ],
     );
     doc.close("ApplicationRelations");
+    if p.interface_properties.media_redundancy {
+        doc.leaf("MediaRedundancy", &[("SupportedRole", "Client")]);
+    }
     doc.close("InterfaceSubmoduleItem");
     for port in &p.ports {
         doc.text(&port.text);
-        doc.open(
-            "PortSubmoduleItem",
-            &[
-                ("ID", &port.id),
-                ("SubslotNumber", &port.subslot.to_string()),
-                ("SubmoduleIdentNumber", &hex32(port.subslot.into())),
-                ("TextId", &port.text.id),
-            ],
-        );
+        let subslot = port.subslot.to_string();
+        let ident = hex32(port.subslot.into());
+        let mut attributes = vec![
+            ("ID", port.id.as_str()),
+            ("SubslotNumber", &subslot),
+            ("SubmoduleIdentNumber", &ident),
+            ("TextId", &port.text.id),
+        ];
+        if port.default_ringport {
+            attributes.push(("IsDefaultRingport", "true"));
+        }
+        doc.open("PortSubmoduleItem", &attributes);
         doc.open("MAUTypeList", &[]);
         doc.leaf("MAUTypeItem", &[("Value", MAU_100BASE_TX)]);
         doc.close("MAUTypeList");
@@ -427,26 +470,44 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.close("ModuleList");
 }
 
-/// A module with one submodule of the same ident number in API 0: the
-/// firmware does not implement the PROFIdrive profile, so not its API even
-/// for standard telegram 1.
+/// A module with a submodule of the same ident number; a PROFIdrive
+/// telegram has the module access point before it, both in the profile's
+/// API and fixed in their subslots, as ABB's FENA has them.
 fn module(doc: &mut Doc, ir: &Ir, m: &Module) {
     let ident = hex32(m.ident_number);
     doc.open(
         "ModuleItem",
         &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
     );
-    module_info(doc, &m.name, &m.info, &[]);
+    module_info_in(doc, &m.name, &m.info, Some(&m.category));
     doc.open("VirtualSubmoduleList", &[]);
-    doc.open(
-        "VirtualSubmoduleItem",
-        &[
-            ("ID", &m.submodule_id),
-            ("SubmoduleIdentNumber", &ident),
-            ("API", "0"),
-            ("MayIssueProcessAlarm", "false"),
-        ],
-    );
+    let api = m.api.to_string();
+    if let Some(map) = &m.access_point {
+        doc.open(
+            "VirtualSubmoduleItem",
+            &[
+                ("ID", map.id.as_str()),
+                ("SubmoduleIdentNumber", &hex32(ACCESS_POINT_IDENT)),
+                ("API", &api),
+                ("FixedInSubslots", &ACCESS_POINT_SUBSLOT.to_string()),
+                ("MayIssueProcessAlarm", "false"),
+            ],
+        );
+        doc.leaf("IOData", &[]);
+        module_info(doc, &map.name, &map.info, &[]);
+        doc.close("VirtualSubmoduleItem");
+    }
+    let data_subslot = PROFIDRIVE_DATA_SUBSLOT.to_string();
+    let mut attributes = vec![
+        ("ID", m.submodule_id.as_str()),
+        ("SubmoduleIdentNumber", &ident),
+        ("API", &api),
+    ];
+    if m.access_point.is_some() {
+        attributes.push(("FixedInSubslots", &data_subslot));
+    }
+    attributes.push(("MayIssueProcessAlarm", "false"));
+    doc.open("VirtualSubmoduleItem", &attributes);
     doc.open("IOData", &[]);
     for (element, items) in [("Input", &m.input), ("Output", &m.output)] {
         doc.open(element, &[("Consistency", CONSISTENCY)]);
@@ -497,6 +558,31 @@ fn data_item(doc: &mut Doc, item: &DataItem) {
         );
     }
     doc.close("DataItem");
+}
+
+/// The hardware catalog's groups, which the modules' ModuleInfo refer to.
+fn category_list(doc: &mut Doc, p: &Profinet) {
+    if p.categories.is_empty() {
+        return;
+    }
+    doc.open("CategoryList", &[]);
+    for category in &p.categories {
+        doc.text(&category.text);
+        doc.leaf(
+            "CategoryItem",
+            &[("ID", &category.id), ("TextId", &category.text.id)],
+        );
+    }
+    doc.close("CategoryList");
+}
+
+/// GSDML's ValueListT: numbers separated by blanks.
+fn blank_separated<T: ToString>(values: &[T]) -> String {
+    values
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// One ValueItem per set of choices a record refers to.

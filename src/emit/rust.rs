@@ -11,7 +11,7 @@ mod gateway;
 use super::{Artifact, ArtifactKind};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
-use crate::ir::profinet::{self, ModuleKind, Profinet};
+use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Direction, Ir, Layout, PkwKind, Telegram, ValueSet, Word};
 use serde::Serialize;
 
@@ -201,6 +201,16 @@ struct PnModule {
     name: String,
     constant: String,
     ident: String,
+    /// PROFIdrive's API, access point and data subslot, for a profile telegram.
+    profidrive: Option<ProfidriveItems>,
+}
+
+#[derive(Serialize)]
+struct ProfidriveItems {
+    api: String,
+    access_point_subslot: u16,
+    access_point_ident: String,
+    data_subslot: u16,
 }
 
 /// The firmware layout of a description.
@@ -356,7 +366,7 @@ struct Module {
     base: String,
     doc: String,
     layout: Layout,
-    standard_telegram_1: bool,
+    profidrive_telegram_1: bool,
 }
 
 /// Each PPO type, then each PROFINET module, both ways.
@@ -366,7 +376,7 @@ fn telegrams(ir: &Ir) -> Vec<TelegramAlias> {
             base: m.ident.camel(),
             doc: format!("\"{}\" of {}", m.name, p.file_name),
             layout: m.layout,
-            standard_telegram_1: false,
+            profidrive_telegram_1: false,
         })
     });
     let modules = ir.profinet.iter().flat_map(|p| {
@@ -378,7 +388,7 @@ fn telegrams(ir: &Ir) -> Vec<TelegramAlias> {
                 m.ident.upper_snake()
             ),
             layout: m.layout,
-            standard_telegram_1: m.kind == ModuleKind::StandardTelegram1,
+            profidrive_telegram_1: m.is_profidrive(),
         })
     });
     ppos.chain(modules)
@@ -396,7 +406,7 @@ fn telegram_alias(telegram: &Telegram, m: &Module, direction: Direction) -> Tele
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_doc = match (m.standard_telegram_1, telegram.word(direction)) {
+    let pzd_doc = match (m.profidrive_telegram_1, telegram.word(direction)) {
         (true, _) => format!("PROFIdrive {}.", dir.standard_telegram_1),
         (false, Some(_)) => format!("{words}; PZD1 is the word of [`{}`].", dir.word_module),
         (false, None) => format!("{words}."),
@@ -682,6 +692,12 @@ fn profinet_items(p: &Profinet) -> ProfinetItems {
                 name: m.name.text.en.clone(),
                 constant: m.ident.upper_snake(),
                 ident: hex32(m.ident_number),
+                profidrive: m.is_profidrive().then(|| ProfidriveItems {
+                    api: hex32(profinet::PROFIDRIVE_API),
+                    access_point_subslot: profinet::ACCESS_POINT_SUBSLOT,
+                    access_point_ident: hex32(profinet::ACCESS_POINT_IDENT),
+                    data_subslot: profinet::PROFIDRIVE_DATA_SUBSLOT,
+                }),
             })
             .collect(),
     }

@@ -110,6 +110,20 @@ impl Text {
             gsd: self.gsd.as_deref().map(&f),
         }
     }
+
+    /// Each language's text changed by `f(code, text)`; without a GSD short
+    /// form, which `f` could not know how to shorten.
+    pub(crate) fn by_language(&self, f: impl Fn(&str, &str) -> String) -> Text {
+        Text {
+            en: f("en", &self.en),
+            others: self
+                .others
+                .iter()
+                .map(|(code, text)| (code.clone(), f(code, text)))
+                .collect(),
+            gsd: None,
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -28,8 +28,11 @@ pub struct Profinet {
     pub max_input_length: u16,
     pub max_output_length: u16,
     pub interface: TextRef,
+    pub interface_properties: InterfaceProperties,
     pub ports: Vec<Port>,
     pub modules: Vec<Module>,
+    /// The hardware catalog's groups of modules, in the order first used.
+    pub categories: Vec<Category>,
     /// One per set of choices the records refer to.
     pub value_items: Vec<ValueItem>,
     /// The device symbol's GraphicItem, when the device has a symbol.
@@ -99,12 +102,54 @@ pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
 /// The slot modules are plugged into; the DAP is in slot 0.
 pub const MODULE_SLOT: u16 = 1;
 
+/// What the device access point and its interface declare of what the
+/// firmware does.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct InterfaceProperties {
+    /// SendClock factors, ascending; units of 31.25 us.
+    pub send_clock: Vec<u16>,
+    pub conformance_class: ConformanceClass,
+    pub netload_class: NetloadClass,
+    /// I&M records the controller may write, ascending.
+    pub writeable_im_records: Vec<u8>,
+    /// An MRP client: `MediaRedundancy`, the default ring ports.
+    pub media_redundancy: bool,
+}
+
+/// CertificationInfo's conformance class: gsdc writes RT_CLASS_1 only, so
+/// not class C (isochronous, RT_CLASS_3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ConformanceClass {
+    A,
+    B,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NetloadClass {
+    I,
+    II,
+    III,
+}
+
 /// A port of the interface: its subslot is also its submodule ident number.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Port {
     pub id: String,
     pub subslot: u16,
+    pub text: TextRef,
+    /// One of the two ring ports an MRP client starts with.
+    pub default_ringport: bool,
+}
+
+/// A CategoryItem of the hardware catalog.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Category {
+    pub id: String,
     pub text: TextRef,
 }
 
@@ -113,7 +158,9 @@ pub struct Port {
 pub enum ModuleKind {
     /// PKW (or not) and PZD words, as the description maps them.
     Pzd,
-    /// PROFIdrive standard telegram 1: STW1, NSOLL_A out; ZSW1, NIST_A in.
+    /// Standard telegram 1: PROFIdrive's (STW1, NSOLL_A out; ZSW1, NIST_A
+    /// in) when the card implements the profile, else the vendor's telegram
+    /// of two PZD words the manual names so.
     StandardTelegram1,
 }
 
@@ -125,6 +172,13 @@ pub struct Module {
     /// ModuleItem ID (`IDM_PKW_12`) and its submodule's (`IDS_PKW_12`).
     pub id: String,
     pub submodule_id: String,
+    /// The API its submodules are in: 0, or PROFIdrive's [`PROFIDRIVE_API`].
+    pub api: u32,
+    /// PROFIdrive's module access point: a submodule without data in
+    /// subslot [`ACCESS_POINT_SUBSLOT`], before the data submodule.
+    pub access_point: Option<AccessPoint>,
+    /// The [`Category`] it is listed under.
+    pub category: String,
     pub name: TextRef,
     pub info: TextRef,
     /// ModuleIdentNumber; the submodule has the same number.
@@ -137,6 +191,32 @@ pub struct Module {
     pub output: Vec<DataItem>,
     pub records: Vec<ParameterRecord>,
 }
+
+impl Module {
+    /// A PROFIdrive telegram: the profile's, in the profile's API.
+    pub fn is_profidrive(&self) -> bool {
+        self.api == PROFIDRIVE_API
+    }
+}
+
+/// The module access point (MAP) submodule of a PROFIdrive module.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct AccessPoint {
+    pub id: String,
+    pub name: TextRef,
+    pub info: TextRef,
+}
+
+/// PROFIdrive's API (14848).
+pub const PROFIDRIVE_API: u32 = 0x3A00;
+/// A PROFIdrive module's access point is in subslot 1, with this
+/// submodule ident number, and its data submodule in subslot 2, as ABB's
+/// FENA places them (no public statement of 0xFFFF was found; see
+/// docs/description.md).
+pub const ACCESS_POINT_SUBSLOT: u16 = 1;
+pub const ACCESS_POINT_IDENT: u32 = 0x0000_FFFF;
+pub const PROFIDRIVE_DATA_SUBSLOT: u16 = 2;
 
 /// One Unsigned16 word of IO data; a word with named bits shows them.
 #[derive(Debug, Clone, PartialEq, Eq)]

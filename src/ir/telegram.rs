@@ -23,6 +23,9 @@ pub struct Telegram {
     pub pzd_words: u8,
     pub control_word: Option<Word>,
     pub status_word: Option<Word>,
+    /// The card implements the PROFIdrive profile: its standard telegrams
+    /// are the profile's, in the profile's API with its word names.
+    pub profidrive: bool,
 }
 
 impl Telegram {

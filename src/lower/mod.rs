@@ -63,17 +63,24 @@ pub fn lower(
     let profinet = desc
         .profinet
         .as_ref()
-        .map(|p| profinet::lower(&mut cx, p, &desc.device, (&device, &telegram, &mappings)));
-    meaning::check(
-        &mut cx,
-        desc,
-        &mappings,
-        (
-            profibus.as_ref().and_then(Option::as_ref),
-            profinet.as_ref().and_then(Option::as_ref),
-        ),
-        &set_spans,
-    );
+        .map(|p| profinet::lower(&mut cx, p, desc, (&device, &telegram, &mappings)));
+    // What holds across the buses is checked when each bus the description
+    // has lowered: a part that failed has said why, and the checks would
+    // take it for absent.
+    if profibus.as_ref().is_none_or(Option::is_some)
+        && profinet.as_ref().is_none_or(Option::is_some)
+    {
+        meaning::check(
+            &mut cx,
+            desc,
+            &mappings,
+            (
+                profibus.as_ref().and_then(Option::as_ref),
+                profinet.as_ref().and_then(Option::as_ref),
+            ),
+            &set_spans,
+        );
+    }
     let manual_languages = desc
         .manual
         .as_ref()

@@ -5,13 +5,15 @@ use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{
-    Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, Version, FIRST_PORT_SUBSLOT,
+    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, Version,
+    FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
 mod ids;
+mod interface;
 mod io;
 mod records;
 
@@ -22,28 +24,44 @@ const DEFAULT_VERSION: Version = Version::new(2, 32);
 pub fn lower(
     cx: &mut Checker,
     p: &Spanned<raw::Profinet>,
-    raw_device: &raw::Device,
+    desc: &raw::Description,
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
     let records = records::plans(cx, p, mappings);
+    let interface_properties = interface::properties(cx, p);
+    let near = p.span();
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let date = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
-        p.file_vendor.as_ref().unwrap_or(&raw_device.vendor),
+        p.file_vendor.as_ref().unwrap_or(&desc.device.vendor),
         "profinet.file_vendor",
     );
-    let family = file_name_part(cx, &raw_device.family, "device.family");
+    let family = file_name_part(cx, &desc.device.family, "device.family");
     placeholder_warning(cx, &p.vendor_id, ("vendor ID", "vendor_id"));
     placeholder_warning(cx, &p.device_id, ("device ID", "device_id"));
     let info = p.info.as_ref().map(|i| cx.text(i, None, "profinet.info"));
     let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
-    let modules: Vec<Module> = modules(cx, p, telegram)
+    let interface_properties = interface_properties?;
+    interface::check_ring_ports(cx, p, ports);
+    let kinds = modules(cx, p, telegram);
+    let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;
+    let mut categories: Vec<Category> = Vec::new();
+    let modules: Vec<Module> = kinds
         .into_iter()
         .map(|(kind, layout)| {
             let info = module_info(cx, &p.module_info, kind);
-            io::module((kind, layout), telegram, (mappings, &records), info)
+            let category = io::category(kind, layout, telegram.profidrive);
+            if !categories.iter().any(|c| c.id == category.id) {
+                categories.push(category.clone());
+            }
+            let names = io::Names {
+                telegram_1: &telegram_1_name,
+                info,
+                category: category.id,
+            };
+            io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
     let value_items = records::value_items(mappings, &modules);
@@ -82,7 +100,11 @@ pub fn lower(
         max_input_length,
         max_output_length,
         interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
-        ports: (1..=ports).map(port).collect(),
+        ports: (1..=ports)
+            .map(|n| port(n, interface_properties.media_redundancy))
+            .collect(),
+        interface_properties,
+        categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
             id: ids::DEVICE_SYMBOL.to_string(),
             file: format!(
@@ -105,7 +127,9 @@ fn module_info(cx: &mut Checker, info: &raw::ModuleInfo, kind: ModuleKind) -> Op
     text.map(|t| cx.text(t, None, "module info"))
 }
 
-fn port(number: u8) -> Port {
+/// Port `number`; an MRP client starts with ports 1 and 2 as its ring, as
+/// every two-port device with MRP in the corpus declares.
+fn port(number: u8, media_redundancy: bool) -> Port {
     Port {
         id: format!("IDS_PORT_{number}"),
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
@@ -113,6 +137,51 @@ fn port(number: u8) -> Port {
             format!("IDT_PORT_{number}"),
             Text::en_zh(format!("Port {number}"), format!("端口 {number}")),
         ),
+        default_ringport: media_redundancy && number <= 2,
+    }
+}
+
+/// Standard telegram 1's name: the profile's when the card implements
+/// PROFIdrive, else the description's own (E153 when it gives none: the
+/// profile's name would say the card implements it).
+fn standard_telegram_1_name(
+    cx: &mut Checker,
+    (p, near): (&raw::Profinet, std::ops::Range<usize>),
+    desc: &raw::Description,
+    telegram: &Telegram,
+    kinds: &[(ModuleKind, Layout)],
+) -> Option<Text> {
+    let given = p.module_name.standard_telegram_1.as_ref();
+    let offered = kinds
+        .iter()
+        .any(|(k, _)| *k == ModuleKind::StandardTelegram1);
+    let stated = desc.telegram.as_ref().and_then(|t| t.profidrive.as_ref());
+    let offer = p
+        .standard_telegram_1
+        .as_ref()
+        .map_or(near.clone(), Spanned::span);
+    if offered && stated.is_none() {
+        cx.push(
+            Diagnostic::error("E153", "standard telegram 1 without saying whether the card implements PROFIdrive")
+                .at(offer)
+                .label("PROFIdrive's or the manual's?")
+                .help("set [telegram] profidrive = true when the drive follows the PROFIdrive profile (STW1 bit 0 is ON/OFF1), or = false with [profinet.module_name] standard_telegram_1 naming the manual's telegram"),
+        );
+        return None;
+    }
+    match given {
+        Some(name) => Some(cx.text(name, None, "module_name.standard_telegram_1")),
+        None if telegram.profidrive || !offered => Some(io::profidrive_telegram_1_name()),
+        None => {
+            let at = stated.map_or(near, Spanned::span);
+            cx.push(
+                Diagnostic::error("E153", "standard telegram 1 of a card without PROFIdrive needs the manual's name")
+                    .at(at)
+                    .label("not PROFIdrive")
+                    .help("name it as the manual does: [profinet.module_name] standard_telegram_1 = { en = \"standard message 1\", zh = \"标准报文 1\" }; PROFIdrive's name would say the card implements the profile"),
+            );
+            None
+        }
     }
 }
 
@@ -244,7 +313,7 @@ fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<(Mod
     }
     let lengths = pzd_lengths(cx, &p.pzd_lengths, telegram.pzd_words);
     let mut modules = Vec::new();
-    if p.standard_telegram_1 {
+    if p.standard_telegram_1.as_ref().is_some_and(|s| *s.get_ref()) {
         check_standard_telegram_1(cx, p, telegram);
         modules.push((
             ModuleKind::StandardTelegram1,

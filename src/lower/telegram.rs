@@ -31,6 +31,7 @@ pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
             .status_word
             .as_ref()
             .map(|w| lower_word(cx, w, "status word")),
+        profidrive: t.profidrive.as_ref().is_some_and(|p| *p.get_ref()),
     }
 }
 
@@ -106,6 +107,7 @@ pub fn absent() -> Telegram {
         pzd_words: 0,
         control_word: None,
         status_word: None,
+        profidrive: false,
     }
 }
 

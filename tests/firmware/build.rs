@@ -1,5 +1,6 @@
-//! Generates every shipped description's files into OUT_DIR with gsdc's
-//! build-script API, as a firmware crate would.
+//! Generates every shipped description's files, and the PROFIdrive
+//! fixture's, into OUT_DIR with gsdc's build-script API, as a firmware crate
+//! would.
 
 use std::path::Path;
 
@@ -16,4 +17,6 @@ fn main() {
     for name in DESCRIPTIONS {
         gsdc::build::generate(descriptions.join(name), &out_dir).unwrap_or_else(|e| panic!("{e}"));
     }
+    let profidrive = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid/profidrive.toml");
+    gsdc::build::generate(profidrive, &out_dir).unwrap_or_else(|e| panic!("{e}"));
 }

@@ -3,33 +3,55 @@
 
 use super::ids::module_tag;
 use super::records::{self, RecordPlan};
-use crate::ir::profinet::{BitItem, DataItem, Module, ModuleKind, TextRef};
+use crate::ir::profinet::{
+    AccessPoint, BitItem, Category, DataItem, Module, ModuleKind, TextRef, PROFIDRIVE_API,
+};
 use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram, Text};
 
 /// Standard telegram 1 has two words each way.
 pub const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
 
-/// A module of `kind` and `layout`; `info` is what the description adds
-/// to gsdc's description of it.
+/// What names a module besides its kind and layout.
+pub struct Names<'a> {
+    /// Standard telegram 1's name: the profile's, or the manual's.
+    pub telegram_1: &'a Text,
+    /// What the description adds to gsdc's description of the module.
+    pub info: Option<Text>,
+    pub category: String,
+}
+
+/// A module of `kind` and `layout`. Standard telegram 1 of a PROFIdrive
+/// card is the profile's: in its API, behind the module access point, with
+/// the profile's word names; of any other card it is the vendor's telegram
+/// of PZD words, named as the manual names it.
 pub fn module(
     (kind, layout): (ModuleKind, Layout),
     telegram: &Telegram,
     (mappings, records): (&Mappings, &[RecordPlan]),
-    info: Option<Text>,
+    names: Names,
 ) -> Module {
     let tag = module_tag(kind, layout);
-    let items = |direction| match kind {
-        ModuleKind::StandardTelegram1 => standard_telegram_1(direction),
-        ModuleKind::Pzd => data_items(telegram, layout, direction),
+    let profidrive = kind == ModuleKind::StandardTelegram1 && telegram.profidrive;
+    let items = |direction| match profidrive {
+        true => profidrive_telegram_1(direction),
+        false => data_items(telegram, layout, direction),
     };
+    let name = match kind {
+        ModuleKind::StandardTelegram1 => names.telegram_1.clone(),
+        ModuleKind::Pzd => pzd_name(layout),
+    };
+    let description = description(kind, layout, &name, profidrive);
     Module {
         kind,
         id: format!("IDM_{tag}"),
         submodule_id: format!("IDS_{tag}"),
-        name: TextRef::new(format!("IDT_MODULE_{tag}"), name(kind, layout)),
+        api: if profidrive { PROFIDRIVE_API } else { 0 },
+        access_point: profidrive.then(|| access_point(&tag)),
+        category: names.category,
+        name: TextRef::new(format!("IDT_MODULE_{tag}"), name),
         info: TextRef::new(
             format!("IDT_MODULE_INFO_{tag}"),
-            with_info(description(kind, layout), info),
+            with_info(description, names.info),
         ),
         ident_number: ident_number(kind, layout),
         layout,
@@ -40,7 +62,48 @@ pub fn module(
     }
 }
 
-/// gsdc's description, then the description's own words after `. `.
+/// The module access point, named as ABB's FENA names it.
+fn access_point(tag: &str) -> AccessPoint {
+    AccessPoint {
+        id: format!("IDS_MAP_{tag}"),
+        name: TextRef::new(
+            "IDT_ACCESS_POINT",
+            Text::en_zh("Module Access Point", "模块访问点"),
+        ),
+        info: TextRef::new(
+            "IDT_ACCESS_POINT_INFO",
+            Text::en_zh(
+                "PROFIdrive parameter access through this submodule",
+                "通过此子模块进行 PROFIdrive 参数访问",
+            ),
+        ),
+    }
+}
+
+/// The hardware catalog's group of a module, as ABB groups its modules:
+/// the profile's standard telegrams, the modules with the PKW channel, the
+/// modules of PZD words only (a vendor's telegram 1 among them).
+pub fn category(kind: ModuleKind, layout: Layout, profidrive: bool) -> Category {
+    let (tag, text) = match kind {
+        ModuleKind::StandardTelegram1 if profidrive => (
+            "STANDARD_TELEGRAMS",
+            Text::en_zh("Standard telegrams", "标准报文"),
+        ),
+        _ if layout.pkw => ("PKW_PZD", Text::en_zh("PKW and PZD", "PKW 和 PZD")),
+        _ => ("PZD", Text::english("PZD")),
+    };
+    Category {
+        id: format!("IDC_{tag}"),
+        text: TextRef::new(format!("IDT_CATEGORY_{tag}"), text),
+    }
+}
+
+/// PROFIdrive's name of its telegram 1.
+pub fn profidrive_telegram_1_name() -> Text {
+    Text::en_zh("Standard telegram 1", "标准报文 1")
+}
+
+/// gsdc's description, then the description's own words after a full stop.
 fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     let Some(info) = info else {
         return gsdc;
@@ -53,7 +116,15 @@ fn with_info(gsdc: Text, info: Option<Text>) -> Text {
         .collect();
     languages.sort_unstable();
     languages.dedup();
-    let join = |code: &str| format!("{}. {}", gsdc.get(code), info.get(code));
+    // A Chinese or Japanese sentence ends in its own full stop.
+    let stop = |code: &str| {
+        if matches!(code, "zh" | "ja") {
+            "。"
+        } else {
+            ". "
+        }
+    };
+    let join = |code: &str| format!("{}{}{}", gsdc.get(code), stop(code), info.get(code));
     Text {
         en: join("en"),
         others: languages
@@ -74,11 +145,10 @@ fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
     }
 }
 
-fn name(kind: ModuleKind, layout: Layout) -> Text {
-    match kind {
-        ModuleKind::StandardTelegram1 => Text::en_zh("Standard telegram 1", "标准报文 1"),
-        ModuleKind::Pzd if layout.pkw => Text::english(format!("PKW + {} PZD", layout.pzd_words)),
-        ModuleKind::Pzd => Text::english(format!("{} PZD", layout.pzd_words)),
+fn pzd_name(layout: Layout) -> Text {
+    match layout.pkw {
+        true => Text::english(format!("PKW + {} PZD", layout.pzd_words)),
+        false => Text::english(format!("{} PZD", layout.pzd_words)),
     }
 }
 
@@ -92,20 +162,26 @@ fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
     }
 }
 
-/// What a module carries, in gsdc's words (English and gsdc's Chinese).
-fn description(kind: ModuleKind, layout: Layout) -> Text {
+/// What a module carries, in gsdc's words (English and gsdc's Chinese);
+/// a vendor's telegram 1 under the name the description gives it, in each
+/// of the name's languages.
+fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
     let bytes = layout.bytes();
+    let n = layout.pzd_words;
     match kind {
-        ModuleKind::StandardTelegram1 => Text::en_zh(
-            format!("Standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way"),
-            format!("标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节"),
+        ModuleKind::StandardTelegram1 if profidrive => Text::en_zh(
+            format!("PROFIdrive standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way"),
+            format!("PROFIdrive 标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节"),
         ),
+        ModuleKind::StandardTelegram1 => name.by_language(|code, name| match code {
+            "zh" => format!("{name}：{n} 个 PZD 字；每个方向 {bytes} 字节"),
+            _ => format!("{name}: {n} PZD words; {bytes} bytes each way"),
+        }),
         ModuleKind::Pzd => {
             let (pkw, pkw_zh) = match layout.pkw_words() {
                 0 => (String::new(), String::new()),
                 n => (format!("PKW channel ({n} words) and "), format!("PKW 通道（{n} 个字）和 ")),
             };
-            let n = layout.pzd_words;
             let words = if n == 1 { "1 PZD word".to_string() } else { format!("{n} PZD words") };
             Text::en_zh(
                 format!("{pkw}{words}; {bytes} bytes each way"),
@@ -122,23 +198,25 @@ fn plain(tag: &str, text: Text) -> DataItem {
     }
 }
 
-/// Standard telegram 1's two words, with PROFIdrive's names.
-fn standard_telegram_1(direction: Direction) -> Vec<DataItem> {
+/// PROFIdrive's telegram 1, with the profile's names (MASTERDRIVES
+/// Compendium table 8.2-16: "STW1 Control word 1", "NSOLL_A Speed setpoint
+/// A", "ZSW1 Status word 1", "NIST_A Speed actual value A").
+fn profidrive_telegram_1(direction: Direction) -> Vec<DataItem> {
     let words = match direction {
         Direction::In => [
             ("ZSW1", "ZSW1 (status word 1)", "ZSW1（状态字 1）"),
             (
                 "NIST_A",
-                "NIST_A (speed actual value)",
-                "NIST_A（速度实际值）",
+                "NIST_A (speed actual value A)",
+                "NIST_A（速度实际值 A）",
             ),
         ],
         Direction::Out => [
             ("STW1", "STW1 (control word 1)", "STW1（控制字 1）"),
             (
                 "NSOLL_A",
-                "NSOLL_A (speed setpoint)",
-                "NSOLL_A（速度设定值）",
+                "NSOLL_A (speed setpoint A)",
+                "NSOLL_A（速度设定值 A）",
             ),
         ],
     };
@@ -251,16 +329,17 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 /// IOConfigData's MaxInputLength and MaxOutputLength bound what the input
 /// and the output CR carry: IO data and status bytes, as the checker reads
 /// them (E310, `gsdml::io`; docs/rules.md gives the sources). Each
-/// submodule without data (the DAP's, the interface, the ports) has its IOPS
-/// in the input CR and its IOCS in the output CR: one byte each way; the
-/// module's, with data both ways, adds its IOPS and the IOCS of the other
-/// direction to each. The largest module with these is exactly what the
-/// checker needs (`tests/gsdml_reader.rs` holds the two to it); with at most
-/// 20 words in a module and 16 ports it stays far below the limit of 1440.
+/// submodule without data (the DAP's, the interface, the ports, a module
+/// access point) has its IOPS in the input CR and its IOCS in the output
+/// CR: one byte each way; a submodule with data both ways adds its IOPS and
+/// the IOCS of the other direction to each. The module with the most of
+/// these is exactly what the checker needs (`tests/gsdml_reader.rs` holds
+/// the two to it); with at most 20 words in a module and 16 ports it stays
+/// far below the limit of 1440.
 pub fn max_lengths(modules: &[Module], ports: u8) -> (u16, u16) {
-    let data = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
-    let without_data = 2 + u16::from(ports);
-    let length = data + without_data + 2;
+    let module = |m: &Module| m.layout.bytes() + 2 + u16::from(m.access_point.is_some());
+    let largest = modules.iter().map(module).max().unwrap_or(0);
+    let length = largest + 2 + u16::from(ports);
     (length, length)
 }
 

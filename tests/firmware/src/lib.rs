@@ -1,5 +1,6 @@
-//! The firmware layouts of the shipped descriptions, as firmware includes
-//! them: no_std, and any warning an error.
+//! The firmware layouts of the shipped descriptions (and of a PROFIdrive
+//! card, a test fixture), as firmware includes them: no_std, and any
+//! warning an error.
 
 #![no_std]
 #![deny(warnings)]
@@ -21,4 +22,8 @@ pub mod powtran_9kdp1 {
 
 pub mod md810_gateway {
     include!(concat!(env!("OUT_DIR"), "/md810_gateway_layout.rs"));
+}
+
+pub mod profidrive {
+    include!(concat!(env!("OUT_DIR"), "/profidrive_layout.rs"));
 }
