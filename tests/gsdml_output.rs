@@ -567,13 +567,15 @@ fn a_card_without_profidrive_shows_no_profidrive_name() {
     assert_eq!(words, ["Master sends control command word", "PZD2"]);
 }
 
-/// Send clocks, conformance and netload class, writable I&M records and
-/// MRP are the description's (the fixture states each), gsdc's defaults
-/// where it is silent (MV810); the DCP and PTP boundaries are always there.
+/// Send clocks, conformance and netload class, writable I&M records, MRP
+/// and the order number are the description's (the fixture states each),
+/// gsdc's defaults where it is silent (MV810, which has no order number);
+/// the DCP and PTP boundaries are always there.
 #[test]
 fn interface_properties_are_the_descriptions_or_gsdcs_defaults() {
     let stated = fixture("no_warnings.toml");
     let silent = load("mv810-pnet02.toml");
+    assert_eq!(stated.device.order_number.as_deref(), Some("X1-DP-01"));
     let cases = [
         (&stated, "8 16 32 64 128", ("B", "II"), "1 2 3 4", true),
         (&silent, "32 64 128", ("B", "I"), "1 2 3", false),
@@ -591,6 +593,16 @@ fn interface_properties_are_the_descriptions_or_gsdcs_defaults() {
                 attribute(certification, "NetloadClass")
             ),
             (conformance, netload),
+            "{name}"
+        );
+        let dap_info = elements(&doc, "DeviceAccessPointItem")
+            .flat_map(|d| children(d, "ModuleInfo"))
+            .next()
+            .unwrap();
+        let order_number = children(dap_info, "OrderNumber").next();
+        assert_eq!(
+            order_number.map(|o| attribute(o, "Value")),
+            ir.device.order_number.as_deref(),
             "{name}"
         );
         let dap_submodule = elements(&doc, "VirtualSubmoduleItem").next().unwrap();
