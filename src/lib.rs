@@ -20,6 +20,7 @@ mod latin1;
 pub mod load;
 pub mod lower;
 mod pkw;
+mod spelling;
 pub mod symbol;
 mod utf16;
 

@@ -38,13 +38,46 @@ pub fn parse(text: &str) -> Result<Description, Diagnostics> {
 }
 
 fn diagnose(text: &str, error: &toml::de::Error) -> Diagnostic {
-    let message = error.message().trim_end().to_string();
+    let message = in_words(error.message().trim_end());
     let span = error.span().map(|s| trim_span(text, s));
-    let (code, label, help) = classify(&message);
+    let (code, label, mut help) = classify(&message);
+    if let Some(suggestion) = did_you_mean(&message) {
+        let rest = help.trim_start_matches("check the spelling; ");
+        help = format!("did you mean `{suggestion}`? {rest}");
+    }
     Diagnostic::error(code, first_line(&message))
         .at_opt(span)
         .label(label)
         .help(help)
+}
+
+/// serde names the Rust type a number must fit; a description's author
+/// needs its range.
+fn in_words(message: &str) -> String {
+    [
+        ("expected u8", "expected a whole number from 0 to 255"),
+        ("expected u16", "expected a whole number from 0 to 65535"),
+        (
+            "expected u32",
+            "expected a whole number from 0 to 4294967295",
+        ),
+        ("expected i64", "expected a whole number"),
+    ]
+    .iter()
+    .fold(message.to_string(), |m, (rust, words)| {
+        m.replace(rust, words)
+    })
+}
+
+/// For an unknown key or value, the expected one it is closest to: serde
+/// says ``unknown field `x`, expected one of `a`, `b` `` (or `` `a` or `b` ``).
+fn did_you_mean(message: &str) -> Option<&str> {
+    let rest = message
+        .strip_prefix("unknown field ")
+        .or_else(|| message.strip_prefix("unknown variant "))?;
+    let mut quoted = rest.split('`').skip(1).step_by(2);
+    let written = quoted.next()?;
+    crate::spelling::closest(written, quoted)
 }
 
 /// Codes by what serde and toml say; the wording is theirs and stable
@@ -99,4 +132,34 @@ fn trim_span(text: &str, span: std::ops::Range<usize>) -> std::ops::Range<usize>
         .and_then(|s| s.find('\n'))
         .map_or(span.end, |newline| span.start + newline);
     span.start..end.max(span.start)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_misspelt_key_or_value_gets_the_nearest_expected_one() {
+        assert_eq!(
+            did_you_mean("unknown field `baud_rate`, expected one of `dpv1`, `baud_rates`"),
+            Some("baud_rates")
+        );
+        assert_eq!(
+            did_you_mean("unknown variant `pke-ind-pw`, expected one of `none`, `pke-ind-pwe`"),
+            Some("pke-ind-pwe")
+        );
+        assert_eq!(
+            did_you_mean("unknown field `colour`, expected `name` or `bits`"),
+            None
+        );
+        assert_eq!(did_you_mean("missing field `name`"), None);
+    }
+
+    #[test]
+    fn number_types_are_said_as_ranges() {
+        assert_eq!(
+            in_words("invalid value: integer `256`, expected u8"),
+            "invalid value: integer `256`, expected a whole number from 0 to 255"
+        );
+    }
 }

@@ -10,7 +10,7 @@ const TEMPLATE: &str = include_str!("../../templates/gsd.jinja");
 /// Longest line gsdc writes, line end excluded.
 pub const MAX_LINE: usize = 80;
 /// Keys are padded to this width so the `=` line up.
-const KEY_WIDTH: usize = 28;
+pub(crate) const KEY_WIDTH: usize = 28;
 
 #[derive(Serialize)]
 struct Context<'a> {
@@ -253,9 +253,9 @@ fn diag_areas<'a>(ir: &'a Ir, p: &'a Profibus) -> Vec<DiagArea<'a>> {
 }
 
 /// The header notes as GSD comment lines: 7-bit ASCII (a character beyond
-/// it shows as `?`; lowering keeps reasons ASCII for descriptions with a GSD,
-/// so only a marked value in another language shows so), wrapped to the
-/// line limit with continuation lines indented.
+/// it shows as `?`; lowering keeps reasons ASCII for descriptions with a GSD
+/// (E102), so only a marked value in another language shows so), wrapped to
+/// the line limit with continuation lines indented.
 fn notes(ir: &Ir) -> Vec<String> {
     let width = MAX_LINE - "; ".len();
     super::header_notes(ir)
@@ -346,15 +346,24 @@ fn finish(rendered: &str) -> String {
     out
 }
 
-/// Splits a line longer than [`MAX_LINE`] into pieces ending in `\`: inside
-/// a string after a space (readers join the pieces back without the `\` and
-/// the line end), elsewhere after a comma of a number list.
+/// Splits a line longer than [`MAX_LINE`] into pieces ending in `\`, only
+/// where GSD lets a line go on: inside a string, after a space where there
+/// is one (readers join the pieces back without the `\` and the line end),
+/// and elsewhere after a comma of a number list. A value without such a
+/// place (a `Slave_Family`, which readers take to the end of its line) is
+/// never cut; lowering keeps those short enough. A comment goes on as
+/// comment lines instead: after a `\` its rest would be read as a statement.
 fn wrap(line: &str) -> Vec<String> {
+    if line.starts_with(';') {
+        return wrap_comment(line);
+    }
     let mut pieces = Vec::new();
     let mut rest = line;
     let mut in_string = false;
     while rest.chars().count() > MAX_LINE {
-        let cut = break_point(rest, in_string);
+        let Some(cut) = break_point(rest, in_string) else {
+            break;
+        };
         in_string ^= rest[..cut].matches('"').count() % 2 == 1;
         pieces.push(format!("{}\\", &rest[..cut]));
         rest = &rest[cut..];
@@ -363,9 +372,31 @@ fn wrap(line: &str) -> Vec<String> {
     pieces
 }
 
-/// Byte index to cut `line` at, leaving room for the `\`. GSD text is ASCII,
-/// so bytes are characters here.
-fn break_point(line: &str, starts_in_string: bool) -> usize {
+/// How a comment's further lines start.
+const COMMENT_CONTINUED: &str = ";   ";
+
+/// A long comment as comment lines, each cut after a space where there is
+/// one; GSD text is ASCII, so bytes are characters here.
+fn wrap_comment(line: &str) -> Vec<String> {
+    let mut pieces = Vec::new();
+    let mut rest = line.to_string();
+    while rest.len() > MAX_LINE {
+        let cut = rest[..=MAX_LINE]
+            .rfind(' ')
+            .filter(|&i| i > COMMENT_CONTINUED.len())
+            .unwrap_or(MAX_LINE);
+        pieces.push(rest[..cut].trim_end().to_string());
+        rest = format!("{COMMENT_CONTINUED}{}", rest[cut..].trim_start());
+    }
+    pieces.push(rest);
+    pieces
+}
+
+/// Byte index to cut `line` at, leaving room for the `\`: the last space in
+/// a string or comma outside one within the limit, else the limit itself
+/// when it falls inside a string; `None` when the line may not be cut
+/// there. GSD text is ASCII, so bytes are characters here.
+fn break_point(line: &str, starts_in_string: bool) -> Option<usize> {
     let limit = MAX_LINE - 1;
     let mut in_string = starts_in_string;
     let mut best = None;
@@ -377,7 +408,7 @@ fn break_point(line: &str, starts_in_string: bool) -> usize {
             _ => {}
         }
     }
-    best.unwrap_or(limit)
+    best.or(in_string.then_some(limit))
 }
 
 #[cfg(test)]
@@ -412,6 +443,38 @@ mod tests {
             .all(|p| p.ends_with(" \\")));
         let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
         assert_eq!(joined, line);
+    }
+
+    #[test]
+    fn a_long_word_in_a_string_is_cut_inside_the_string() {
+        let line = format!("Info_Text = \"{}\"", "x".repeat(200));
+        let pieces = wrap(&line);
+        assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
+        let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
+        assert_eq!(joined, line);
+    }
+
+    #[test]
+    fn a_value_readers_take_to_the_end_of_the_line_is_never_cut() {
+        let line = format!("Slave_Family = 1@{}", "Sub".repeat(30));
+        assert_eq!(wrap(&line), [line]);
+    }
+
+    #[test]
+    fn a_long_comment_goes_on_as_comment_lines() {
+        let line = format!("; from {}.toml; do not edit", "n".repeat(150));
+        let pieces = wrap(&line);
+        assert!(pieces.len() > 2);
+        assert!(pieces
+            .iter()
+            .all(|p| p.len() <= MAX_LINE && p.starts_with(';')));
+        assert!(pieces.iter().all(|p| !p.ends_with('\\')));
+        let words: String = pieces
+            .iter()
+            .map(|p| p.trim_start_matches(';').trim())
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert_eq!(words.replace(' ', ""), line[1..].replace(' ', ""));
     }
 
     #[test]

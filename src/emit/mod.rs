@@ -90,8 +90,9 @@ impl ArtifactKind {
 }
 
 /// The file stem of a description's layouts: `md810dp` for `md810dp.toml`,
-/// `mv810_pnet02` for `mv810-pnet02.toml` (`_` for `-`, as Rust names its
-/// source files).
+/// `mv810_pnet02` for `mv810-pnet02.toml`: `_` for every character that is
+/// not an ASCII letter, digit or `_` (as Rust names its source files), so a
+/// layout's name is a file name on every system and a module name.
 fn layout_stem(ir: &Ir) -> String {
     let stem = std::path::Path::new(&ir.source_name)
         .file_stem()
@@ -99,7 +100,9 @@ fn layout_stem(ir: &Ir) -> String {
             || ir.source_name.clone(),
             |s| s.to_string_lossy().into_owned(),
         );
-    stem.replace('-', "_")
+    stem.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
 }
 
 /// What every generated file's header says beyond its origin: which

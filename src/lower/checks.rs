@@ -120,6 +120,26 @@ impl Checker {
         s.get_ref().clone()
     }
 
+    /// A text a GSD shows in a comment (a choice's reason): any length, but
+    /// 7-bit printable ASCII when the description has a GSD.
+    pub fn gsd_comment(&mut self, s: &str, span: Range<usize>, what: &str) {
+        self.non_empty(s, span.clone(), what);
+        if !self.for_gsd {
+            return;
+        }
+        if let Some(bad) = s.chars().find(|c| !(' '..='~').contains(c)) {
+            self.push(
+                Diagnostic::error(
+                    "E102",
+                    format!("{what} has {}, which a GSD file cannot hold", char_name(bad)),
+                )
+                .at(span)
+                .label("not 7-bit printable ASCII")
+                .help("it goes into the GSD's header as a comment: write it in ASCII (quote a manual's Chinese words in the value's own comment in the description)"),
+            );
+        }
+    }
+
     /// What goes into the GSD of a text, which may have a short form beside it.
     pub fn check_gsd_text(&mut self, s: &str, span: Range<usize>, limit: usize, what: &str) {
         self.check_gsd(s, span, limit, what, GsdForm::OfText);

@@ -30,7 +30,7 @@ pub fn lower(
         .iter()
         .filter_map(|(path, reason)| {
             let marked = resolve(cx, root.get_ref(), path)?;
-            cx.non_empty(reason.get_ref(), reason.span(), "the reason of a choice");
+            cx.gsd_comment(reason.get_ref(), reason.span(), "the reason of a choice");
             let span = marked.span();
             let value = shown(marked.get_ref(), &text[span.clone()]);
             cx.push(
@@ -103,10 +103,7 @@ fn unknown<T>(
 ) -> Option<T> {
     let failed = reached.last().map_or("", |s| s.key.as_str());
     let suggestion = table.and_then(|t| {
-        t.keys()
-            .map(|k| k.get_ref().as_ref())
-            .min_by_key(|k: &&str| edit_distance(k, failed))
-            .filter(|k| edit_distance(k, failed) <= 2)
+        crate::spelling::closest(failed, t.keys().map(|k| k.get_ref().as_ref()))
             .map(|k| format!("; did you mean `{k}`?"))
     });
     cx.push(
@@ -177,24 +174,6 @@ fn shown(value: &DeValue, source: &str) -> String {
     format!("{cut}...")
 }
 
-/// Levenshtein distance, for suggestions between short keys.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let above = row[j + 1];
-            row[j + 1] = (diagonal + usize::from(ca != cb))
-                .min(row[j] + 1)
-                .min(above + 1);
-            diagonal = above;
-        }
-    }
-    row[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -245,12 +224,5 @@ mod tests {
     fn tables_show_their_values_not_their_header() {
         assert_eq!(shown_key("t = { x = 1 }", "t"), "{ x = 1 }");
         assert_eq!(shown_key("[t]\nx = 1\n", "t"), "{ ... }");
-    }
-
-    #[test]
-    fn edit_distance_counts_single_changes() {
-        assert_eq!(edit_distance("baud_rates", "baud_rate"), 1);
-        assert_eq!(edit_distance("dns_name", "dns_nmae"), 2);
-        assert_eq!(edit_distance("", "abc"), 3);
     }
 }

@@ -94,7 +94,7 @@ pub fn lower(
         return (None, diagnostics);
     }
     let ir = Ir {
-        source_name: source_name.to_string(),
+        source_name: safe_file_name(source_name),
         fingerprint: Fingerprint::of(text),
         device,
         numbering,
@@ -108,6 +108,19 @@ pub fn lower(
         gateway: gateway.map(|g| g.gateway),
     };
     (Some(ir), diagnostics)
+}
+
+/// The description's file name as every generated file may show it: what
+/// is not printable ASCII (a GSD holds nothing else; a newline would start a
+/// line of its own), a backslash or a backquote becomes `_`. `Müller.toml`
+/// is `M_ller.toml`.
+fn safe_file_name(name: &str) -> String {
+    name.chars()
+        .map(|c| match c {
+            ' '..='~' if !matches!(c, '\\' | '`') => c,
+            _ => '_',
+        })
+        .collect()
 }
 
 /// E004 for a key only a gateway's description may leave out (`[telegram]`,

@@ -7,6 +7,7 @@ use super::mappings::SetSpans;
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
+use crate::emit::gsd::{KEY_WIDTH, MAX_LINE};
 use crate::ir::profibus::{
     config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
     PrmBlock, PrmParam, PrmText, PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
@@ -25,9 +26,9 @@ const IM_GSD_REVISION: u8 = 5;
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
 const DEFAULT_C1_RESPONSE_TIMEOUT: u16 = 100;
-/// GSD limits: Max_User_Prm_Data_Len 0..237, Max_Diag_Data_Len 6..244.
+/// GSD limit: Max_User_Prm_Data_Len 0..237. (Max_Diag_Data_Len's 244 is
+/// never reached: the device-related block is at most 63 bytes.)
 const MAX_USER_PRM_LEN: usize = 237;
-const MAX_DIAG_DATA_LEN: i64 = 244;
 /// A Unit_Diag_Area spans at most 16 bits.
 const MAX_DIAG_AREA_BITS: i64 = 16;
 /// Main slave families defined by PI (0 general .. 12 PA).
@@ -258,8 +259,25 @@ fn baud_rates(cx: &mut Checker, rates: &Spanned<BTreeMap<Baud, Spanned<u16>>>) -
 }
 
 /// `1`, or `1@Drives@AC`: a main family number, then sub-families.
+/// Readers take a Slave_Family to the end of its line (gsd-parser's
+/// `family_ident`), so the GSD never continues it: with its key it fits one
+/// line.
+const MAX_SLAVE_FAMILY_LEN: usize = MAX_LINE - KEY_WIDTH - "= ".len();
+
 fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
     let text = family.get_ref();
+    if text.len() > MAX_SLAVE_FAMILY_LEN {
+        cx.push(
+            Diagnostic::error(
+                "E120",
+                format!("a slave family of {} characters does not fit a GSD line", text.len()),
+            )
+            .at(family.span())
+            .label(format!("more than {MAX_SLAVE_FAMILY_LEN} characters"))
+            .help(format!("GSD readers take Slave_Family to the end of its line, so it cannot be continued: keep it to {MAX_SLAVE_FAMILY_LEN} characters, with fewer or shorter sub-families")),
+        );
+        return text.clone();
+    }
     let mut parts = text.split('@');
     let main_ok = parts
         .next()
@@ -493,12 +511,17 @@ fn saturate(value: usize) -> u16 {
     u16::try_from(value).unwrap_or(u16::MAX)
 }
 
+/// The device-related block's header byte holds its length, header
+/// included, in bits 5-0 (bits 7-6 are 00 for device-related): at most 63
+/// bytes (IEC 61158-6-3, Ext_Diag_Data), well within Max_Diag_Data_Len.
+const MAX_DEVICE_DIAG_BLOCK: i64 = 0x3F;
+
 fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis> {
     let raw = d.get_ref();
     let length: u8 = cx.spanned_in_range(
         &raw.length,
         1,
-        MAX_DIAG_DATA_LEN - i64::from(STANDARD_DIAG_BYTES),
+        MAX_DEVICE_DIAG_BLOCK,
         "the diagnosis length",
     )?;
     let bits = (i64::from(length) - 1) * 8;

@@ -149,40 +149,18 @@ fn unknown(setting: &Setting, suggest: bool) -> Diagnostic {
 }
 
 /// A schema keyword one or two edits away (`Min_Slave_Interval` for
-/// `Min_Slave_Intervall`).
+/// `Min_Slave_Intervall`), compared in lower case.
 fn closest_keyword(key: &str) -> Option<String> {
-    schema::schema()
+    let names: Vec<(String, &str)> = schema::schema()
         .keywords()
-        .filter(|k| !k.name.contains('<') && k.name.len().abs_diff(key.len()) <= 2)
-        .map(|k| (edit_distance(key, &k.name.to_ascii_lowercase()), k))
-        .filter(|(d, _)| *d <= 2)
-        .min_by_key(|(d, k)| (*d, k.name.clone()))
-        .map(|(_, k)| k.name.clone())
-}
-
-/// Levenshtein distance over bytes, two rows; `usize::MAX` as soon as it
-/// must exceed 2, the most a suggestion allows.
-fn edit_distance(a: &str, b: &str) -> usize {
-    const TOO_FAR: usize = 2;
-    let (a, b) = (a.as_bytes(), b.as_bytes());
-    if a.len().abs_diff(b.len()) > TOO_FAR {
-        return usize::MAX;
-    }
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for (i, &ca) in a.iter().enumerate() {
-        cur[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let substitute = prev[j] + usize::from(ca != cb);
-            cur[j + 1] = substitute.min(prev[j + 1] + 1).min(cur[j] + 1);
-        }
-        // A row never shrinks below its minimum further down.
-        if cur.iter().min().is_some_and(|&m| m > TOO_FAR) {
-            return usize::MAX;
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
+        .filter(|k| !k.name.contains('<'))
+        .map(|k| (k.name.to_ascii_lowercase(), k.name.as_str()))
+        .collect();
+    let lower = crate::spelling::closest(key, names.iter().map(|(l, _)| l.as_str()))?;
+    names
+        .iter()
+        .find(|(l, _)| l == lower)
+        .map(|(_, n)| n.to_string())
 }
 
 fn check_value(setting: &Setting, keyword: &Keyword, out: &mut Vec<Diagnostic>) {
@@ -375,14 +353,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn edit_distance_counts_edits() {
+    fn a_keyword_is_suggested_in_its_own_spelling() {
         assert_eq!(
-            edit_distance("min_slave_interval", "min_slave_intervall"),
-            1
+            closest_keyword("min_slave_interval").as_deref(),
+            Some("Min_Slave_Intervall")
         );
-        assert_eq!(edit_distance("abc", "abc"), 0);
-        assert_eq!(edit_distance("abc", "axy"), 2);
-        assert_eq!(edit_distance("abc", "xyz"), usize::MAX);
-        assert_eq!(edit_distance("vendor_name", "model_name"), usize::MAX);
+        assert_eq!(closest_keyword("vendor_nam").as_deref(), Some("Vendor_Name"));
+        assert_eq!(closest_keyword("model_nam_xyz"), None);
     }
 }
