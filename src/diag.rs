@@ -47,6 +47,10 @@ impl Diagnostic {
     }
 
     fn new(code: &'static str, severity: Severity, message: impl Into<String>) -> Self {
+        debug_assert!(
+            crate::rules::find(code).is_some_and(|r| r.severity == severity),
+            "{code} is not a {severity:?} of crate::rules::RULES"
+        );
         Diagnostic {
             code,
             severity,
@@ -472,7 +476,7 @@ mod tests {
     #[test]
     fn json_escapes_quotes_and_controls() {
         assert_eq!(json_string("a\"b\\c\u{1}"), "\"a\\\"b\\\\c\\u0001\"");
-        let d = Diagnostic::warning("W1", "m");
+        let d = Diagnostic::warning("W101", "m");
         let json = Source {
             name: "f",
             text: "",
@@ -480,7 +484,7 @@ mod tests {
         .to_json(&d);
         assert_eq!(
             json,
-            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W1\",\"subject\":null,\"message\":\"m\",\"label\":null,\"help\":null}"
+            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W101\",\"subject\":null,\"message\":\"m\",\"label\":null,\"help\":null}"
         );
     }
 }

@@ -20,6 +20,7 @@ mod latin1;
 pub mod load;
 pub mod lower;
 mod pkw;
+pub mod rules;
 mod spelling;
 pub mod symbol;
 mod utf16;
@@ -32,6 +33,7 @@ pub mod xsd;
 pub use diag::{Diagnostic, Diagnostics, Severity, Source};
 pub use emit::{Artifact, ArtifactKind, Language};
 pub use ir::Ir;
+pub use rules::{Rule, RULES};
 
 /// Names the generator in the headers of generated files.
 pub const GENERATOR: &str = concat!("gsdc ", env!("CARGO_PKG_VERSION"));

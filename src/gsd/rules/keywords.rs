@@ -358,7 +358,10 @@ mod tests {
             closest_keyword("min_slave_interval").as_deref(),
             Some("Min_Slave_Intervall")
         );
-        assert_eq!(closest_keyword("vendor_nam").as_deref(), Some("Vendor_Name"));
+        assert_eq!(
+            closest_keyword("vendor_nam").as_deref(),
+            Some("Vendor_Name")
+        );
         assert_eq!(closest_keyword("model_nam_xyz"), None);
     }
 }
