@@ -18,7 +18,12 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+const DESCRIPTIONS: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
+];
 
 /// Every warning a firmware team is likely to turn on, each an error.
 const WARNINGS: [&str; 9] = [
@@ -196,6 +201,11 @@ fn powtran_9kdp1_layout_snapshot() {
     insta::assert_snapshot!("9kdp1_layout.h", header("9kdp1.toml"));
 }
 
+#[test]
+fn md810_gateway_layout_snapshot() {
+    insta::assert_snapshot!("md810_gateway_layout.h", header("md810-gateway.toml"));
+}
+
 /// The support header is the same for every description, so a build of
 /// several writes one.
 #[test]
@@ -255,7 +265,7 @@ fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
 }
 
 /// Firmware for several cards includes their layouts together: one
-/// translation unit with all three (one twice), freestanding, compiled by
+/// translation unit with all four (one twice), freestanding, compiled by
 /// every installed compiler as C99, C11 and C++17 without a warning.
 #[test]
 fn all_layouts_compile_together_in_one_translation_unit() {
@@ -272,7 +282,7 @@ fn all_layouts_compile_together_in_one_translation_unit() {
 }
 
 /// The tests `tests/c/manuals.c` runs: the Rust firmware crate's, one by one.
-const MANUAL_TESTS: [&str; 20] = [
+const MANUAL_TESTS: [&str; 33] = [
     "md810_read_f0_08",
     "md810_answer_50_hz",
     "md810_write_20_hz",
@@ -293,16 +303,37 @@ const MANUAL_TESTS: [&str; 20] = [
     "pi9000_command_word_in_ppo3",
     "pi9000_fault_code_diagnosis",
     "pi9000_default_user_prm",
+    "bridge_the_manuals_example_is_240_bytes_in_and_128_out",
+    "bridge_the_example_s_modules_carry_its_totals",
+    "bridge_each_slave_s_words_have_their_place",
+    "bridge_thirty_slaves_and_244_bytes_pass",
+    "bridge_a_31st_slave_is_refused",
+    "bridge_a_245th_byte_is_refused",
+    "bridge_a_slave_s_words_keep_to_their_range",
+    "bridge_the_default_is_the_bridge_alone",
+    "bridge_the_layout_agrees_with_the_gsd",
+    "bridge_the_four_diagnosis_blocks_decode_and_encode_back",
+    "bridge_the_reserved_byte_is_not_read",
+    "bridge_blocks_the_table_does_not_have_are_refused",
+    "bridge_diagnoses_the_table_does_not_have_are_not_encoded",
 ];
 
-/// The value of `key` in the GSD gsdc generates beside the MD810 layout.
-fn md810_gsd_value(key: &str) -> String {
-    let (_, gsd) = artifact("md810dp.toml", ArtifactKind::Gsd);
-    let line = gsd
+/// The values of `key` in the GSD gsdc generates from `name`, one per line
+/// that starts with it.
+fn gsd_values(name: &str, key: &str) -> Vec<String> {
+    let (_, gsd) = artifact(name, ArtifactKind::Gsd);
+    let values: Vec<String> = gsd
         .lines()
-        .find(|l| l.starts_with(key))
-        .unwrap_or_else(|| panic!("MD810DP.GSD has no {key}"));
-    line.split_once('=').unwrap().1.trim().to_string()
+        .filter(|l| l.starts_with(key))
+        .map(|l| l.split_once('=').unwrap().1.trim().to_string())
+        .collect();
+    assert!(!values.is_empty(), "{name}'s GSD has no {key}");
+    values
+}
+
+/// `-D<define>=<value>` of the first `key` in `name`'s GSD.
+fn gsd_define(define: &str, name: &str, key: &str) -> String {
+    format!("-D{define}={}", gsd_values(name, key)[0])
 }
 
 /// The manuals' telegrams through the C layouts, compiled by every
@@ -310,21 +341,31 @@ fn md810_gsd_value(key: &str) -> String {
 /// program ran each test the Rust firmware crate runs.
 #[test]
 fn the_manuals_telegrams_round_trip_in_c() {
+    let (md810, gateway) = ("md810dp.toml", "md810-gateway.toml");
+    // `Module = "INPUT 1 word" 0x50`: the config byte is the last word.
+    let module_configs: Vec<String> = gsd_values(gateway, "Module")
+        .iter()
+        .map(|m| m.rsplit(' ').next().unwrap().to_string())
+        .collect();
     let defines = [
-        format!(
-            "-DGSD_MAX_USER_PRM_DATA_LEN={}",
-            md810_gsd_value("Max_User_Prm_Data_Len")
+        gsd_define("GSD_MAX_USER_PRM_DATA_LEN", md810, "Max_User_Prm_Data_Len"),
+        gsd_define("GSD_MAX_DIAG_DATA_LEN", md810, "Max_Diag_Data_Len"),
+        gsd_define(
+            "GSD_GW_MAX_USER_PRM_DATA_LEN",
+            gateway,
+            "Max_User_Prm_Data_Len",
         ),
-        format!(
-            "-DGSD_MAX_DIAG_DATA_LEN={}",
-            md810_gsd_value("Max_Diag_Data_Len")
-        ),
+        gsd_define("GSD_GW_MAX_DIAG_DATA_LEN", gateway, "Max_Diag_Data_Len"),
+        gsd_define("GSD_GW_MAX_INPUT_LEN", gateway, "Max_Input_Len"),
+        gsd_define("GSD_GW_MAX_OUTPUT_LEN", gateway, "Max_Output_Len"),
+        gsd_define("GSD_GW_MAX_MODULE", gateway, "Max_Module"),
+        format!("-DGSD_GW_MODULE_CONFIGS={}", module_configs.join(",")),
     ];
     compile_and_run("manuals.c", &defines, &MANUAL_TESTS);
 }
 
 /// The tests `tests/c/support.c` runs: those of the Rust support code.
-const SUPPORT_TESTS: [&str; 13] = [
+const SUPPORT_TESTS: [&str; 24] = [
     "words_are_big_endian",
     "bit_fields_read_and_write_their_bits_only",
     "values_are_read_and_checked_at_their_offset",
@@ -338,6 +379,17 @@ const SUPPORT_TESTS: [&str; 13] = [
     "an_area_is_its_bits_counted_from_the_byte_after_the_header",
     "an_area_across_two_bytes_has_its_first_bit_lowest",
     "a_block_too_short_loses_the_bits_past_its_end",
+    "bit_areas_share_a_byte",
+    "bits_beyond_the_range_are_refused",
+    "unsigned16_is_big_endian_and_within_a_byte_s_values",
+    "a_field_past_the_end_is_a_length_error",
+    "config_bytes_of_no_module_are_refused",
+    "totals_count_the_nodes_in_use_within_the_limits",
+    "a_count_past_the_nodes_is_refused",
+    "data_offsets_follow_the_nodes_in_use",
+    "nodes_read_and_write_in_order",
+    "diagnosis_blocks_are_read_as_long_as_their_header_says",
+    "an_encoded_block_is_0_where_it_holds_nothing",
 ];
 
 /// The support header at its edges, as the Rust support code is tested.
@@ -509,5 +561,82 @@ slave_family = "1"
         let mut command = build.command(&dir, &["-c", "-o"]);
         command.arg(dir.join("bare.o")).arg(&source);
         assert_success(&build.name(), &run(command));
+    }
+}
+
+/// A gateway whose parameters use what MD810's do not: User_Prm_Data
+/// starting with the DPV1 status bytes, a 16-bit node count, and each
+/// node's words in and out as the two halves of one byte. The header
+/// compiles in every language, and a configuration goes through the
+/// encoder and the decoder byte for byte.
+#[test]
+fn a_gateway_with_dpv1_bit_areas_and_a_16_bit_count_round_trips() {
+    let text = include_str!("../descriptions/md810-gateway.toml")
+        .replacen(
+            "[gateway]\n",
+            "[profibus.dpv1]\nc1_read_write = true\nc1_max_data_len = 2\n\
+             c1_response_timeout = 100\nstatus_bytes = [0x80, 0x00, 0x00]\n\
+             ident_maintenance = false\n\n[gateway]\n",
+            1,
+        )
+        .replacen("type = \"Unsigned8\"", "type = \"Unsigned16\"", 1)
+        .replacen("type = \"Unsigned8\"", "bits = [0, 3]", 1)
+        .replacen("type = \"Unsigned8\"", "bits = [4, 7]", 1);
+    let (ir, diagnostics) = gsdc::load("gw_variant.toml", &text);
+    assert!(!diagnostics.has_errors(), "{diagnostics:?}");
+    let dir = scratch_dir("gateway-variant");
+    for a in gsdc::compile(&ir.unwrap()).unwrap() {
+        if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
+            std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
+        }
+    }
+    let header = std::fs::read_to_string(dir.join("gw_variant_layout.h")).unwrap();
+    assert!(
+        header.contains("{ 5U, GSDC_PRM_BITS, 0U, 3U, 0U, 8U, 0U }"),
+        "{header}"
+    );
+    // The status bytes, the count (2, high byte first), then slave 1's and
+    // slave 2's words: in in bits 0-3, out in bits 4-7.
+    let source = dir.join("gw_variant.c");
+    std::fs::write(
+        &source,
+        r#"#include "gw_variant_layout.h"
+
+int main(void)
+{
+    static const uint8_t expected[7] = {0x80U, 0x00U, 0x00U, 0x00U, 0x02U, 0x85U, 0x13U};
+    gw_variant_node_config_t config = GW_VARIANT_NODE_CONFIG_DEFAULT;
+    gw_variant_user_prm_t prm;
+    uint8_t user_prm[GW_VARIANT_USER_PRM_LEN];
+    gsdc_totals_t totals;
+    bool ok = (GW_VARIANT_USER_PRM_LEN == 35U);
+    size_t i;
+    config.node_count = 2U;
+    config.input_words[0] = 5U;
+    config.input_words[1] = 3U;
+    config.output_words[0] = 8U;
+    config.output_words[1] = 1U;
+    totals = gw_variant_node_totals(&config);
+    ok = ok && (totals.fault == GSDC_TOTALS_OK) && (gsdc_totals_input_len(&totals) == 16U);
+    ok = ok && (gw_variant_node_config_encode(&config, user_prm).fault == GSDC_PRM_OK);
+    for (i = 0U; i < GW_VARIANT_USER_PRM_LEN; i++) {
+        ok = ok && (user_prm[i] == ((i < 7U) ? expected[i] : 0U));
+    }
+    ok = ok && (gw_variant_decode_user_prm(user_prm, sizeof user_prm, &prm).fault == GSDC_PRM_OK);
+    ok = ok && (prm.dpv1_status[0] == 0x80U) && (prm.nodes.node_count == 2U);
+    ok = ok && (prm.nodes.input_words[1] == 3U) && (prm.nodes.output_words[0] == 8U);
+    user_prm[5] = 0x95U; /* slave 1 receives 9 words: out of range */
+    ok = ok && (gw_variant_decode_user_prm(user_prm, sizeof user_prm, &prm).value == 9U);
+    return ok ? 0 : 1;
+}
+"#,
+    )
+    .unwrap();
+    for (i, build) in builds().into_iter().enumerate() {
+        let program = dir.join(format!("gw_variant_{i}"));
+        let mut command = build.command(&dir, &["-o"]);
+        command.arg(&program).arg(&source);
+        assert_success(&build.name(), &run(command));
+        assert_success(&program.display().to_string(), &run(Command::new(&program)));
     }
 }

@@ -13,6 +13,8 @@
 //! (a field's mask and a value of the same words) into one.
 //!
 //! Every name and comment comes finished from here; the template arranges.
+//! A comment the template writes around the names it arranges goes through
+//! the `comment` filter, which wraps it as [`comment`] does here.
 
 use super::{Artifact, ArtifactKind};
 use crate::diag::Diagnostic;
@@ -22,6 +24,8 @@ use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Direction, Ident, Ir, Layout, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;
+
+mod gateway;
 
 const TEMPLATE: &str = include_str!("../../templates/c/layout.h.jinja");
 
@@ -49,6 +53,7 @@ struct Context {
     words: Vec<WordItem>,
     groups: Vec<GroupItem>,
     profibus: Option<ProfibusItems>,
+    gateway: Option<gateway::Items>,
     profinet: Option<ProfinetItems>,
 }
 
@@ -166,6 +171,9 @@ struct ProfibusItems {
     user_prm_len: u16,
     /// Whether User_Prm_Data has anything to decode.
     user_prm_fields: bool,
+    /// Whether it has anything besides a gateway's node configuration,
+    /// which its own decoder writes.
+    user_prm_copied: bool,
     dpv1_status: Option<String>,
     diagnosis: Option<DiagnosisItems>,
 }
@@ -230,6 +238,9 @@ fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
     env.set_lstrip_blocks(true);
     env.set_keep_trailing_newline(true);
     env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    env.add_filter("comment", |text: String, indent: Option<usize>| {
+        indented_comment(&text, indent.unwrap_or(0))
+    });
     env.template_from_str(template)?.render(context(ir))
 }
 
@@ -300,6 +311,11 @@ fn context(ir: &Ir) -> Context {
             .map(|g| group_item(ir, &names, g))
             .collect(),
         profibus: ir.profibus.as_ref().map(|pb| profibus_items(&names, pb)),
+        gateway: ir
+            .gateway
+            .as_ref()
+            .zip(ir.profibus.as_ref())
+            .map(|(g, pb)| gateway::items(&names, g, pb)),
         profinet: ir.profinet.as_ref().map(|pn| profinet_items(&names, pn)),
         p,
         l,
@@ -325,15 +341,16 @@ impl Names<'_> {
 
 fn header(ir: &Ir, p: &str, l: &str) -> String {
     let about = format!(
-        "Firmware layout of {} {} for C: the cyclic telegrams, the PKW \
-         channel, control and status words, the configurable mappings and the \
-         bus constants, from the same description as the device files. \
+        "Firmware layout of {} {} for C: {}, from the same description as the \
+         device files. \
          Multi-byte values on the bus are big-endian; telegrams are byte arrays, \
          read and written with the accessors of {SUPPORT_FILE_NAME}, which gsdc \
          writes beside this file. C99 or C++, no allocation; every name starts \
          with {p}_ or {l}_, so the layouts of several descriptions can be \
          included together.",
-        ir.device.vendor, ir.device.model
+        ir.device.vendor,
+        ir.device.model,
+        contents(ir)
     );
     let mut lines = vec![
         format!(
@@ -360,6 +377,46 @@ fn header(ir: &Ir, p: &str, l: &str) -> String {
         }));
     }
     block_comment(&lines)
+}
+
+/// What the layout holds: `the cyclic telegrams, the PKW channel and the
+/// bus constants`.
+fn contents(ir: &Ir) -> String {
+    let has_telegrams = ir.profibus.as_ref().is_some_and(|p| !p.modules.is_empty())
+        || ir.profinet.as_ref().is_some_and(|p| !p.modules.is_empty());
+    let parts = [
+        (has_telegrams, "the cyclic telegrams"),
+        (ir.telegram.pkw != PkwKind::None, "the PKW channel"),
+        (
+            Direction::BOTH
+                .iter()
+                .any(|&d| ir.telegram.word(d).is_some()),
+            "control and status words",
+        ),
+        (!ir.mappings.groups.is_empty(), "the configurable mappings"),
+        (ir.gateway.is_some(), "the gateway's node parameters"),
+        (ir.gateway.is_some(), "its modules"),
+        (
+            ir.gateway.as_ref().is_some_and(|g| g.diagnosis.is_some()),
+            "its diagnosis",
+        ),
+    ];
+    let present: Vec<&str> = parts
+        .iter()
+        .filter(|(present, _)| *present)
+        .map(|(_, part)| *part)
+        .chain(["the bus constants"])
+        .collect();
+    joined(&present, "and")
+}
+
+/// `a, b and c` (or `a, b or c`).
+fn joined(items: &[&str], conjunction: &str) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [rest @ .., last] => format!("{} {conjunction} {last}", rest.join(", ")),
+    }
 }
 
 fn pkw_doc(kind: PkwKind) -> Option<String> {
@@ -748,7 +805,10 @@ fn profibus_items(names: &Names, p: &Profibus) -> ProfibusItems {
             })
             .collect(),
         user_prm_len: p.user_prm.len,
-        user_prm_fields: p.dpv1.is_some() || !p.user_prm.blocks.is_empty(),
+        user_prm_fields: p.dpv1.is_some()
+            || !p.user_prm.blocks.is_empty()
+            || !p.user_prm.gateway.is_empty(),
+        user_prm_copied: p.dpv1.is_some() || !p.user_prm.blocks.is_empty(),
         dpv1_status: p.dpv1.map(|d| {
             initializer(
                 &names.upper("user_prm_dpv1_status"),
@@ -878,7 +938,17 @@ fn initializer(name: &str, values: &[String]) -> String {
 
 /// A block comment of `text`, wrapped: `/* text */` on one line when it fits.
 fn comment(text: &str) -> String {
-    block_comment(&wrap(&comment_text(text), WIDTH - 3))
+    indented_comment(text, 0)
+}
+
+/// [`comment`] indented by `indent` columns, as inside a struct.
+fn indented_comment(text: &str, indent: usize) -> String {
+    let lines = wrap(&comment_text(text), WIDTH.saturating_sub(3 + indent));
+    block_comment(&lines)
+        .lines()
+        .map(|line| format!("{:indent$}{line}", ""))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// `/* line` ... ` * line */`.
@@ -1113,6 +1183,10 @@ mod tests {
                 include_str!("../../descriptions/mv810-pnet02.toml"),
             ),
             ("9kdp1.toml", include_str!("../../descriptions/9kdp1.toml")),
+            (
+                "md810-gateway.toml",
+                include_str!("../../descriptions/md810-gateway.toml"),
+            ),
         ] {
             let ir = load(name, text);
             let header = emit(&ir);
@@ -1216,6 +1290,10 @@ mod tests {
         assert!(lines[0].starts_with("/* word"));
         assert!(lines[1..].iter().all(|l| l.starts_with(" * word")));
         assert!(long.ends_with("word */"));
+        let member = indented_comment(&"word ".repeat(40), 4);
+        assert!(member.lines().all(|l| l.len() <= WIDTH), "{member}");
+        assert!(member.starts_with("    /* word"));
+        assert!(member.lines().skip(1).all(|l| l.starts_with("     * word")));
         assert_eq!(
             initializer("X", &["1U".into(), "2U".into()]),
             "#define X { 1U, 2U }"

@@ -619,6 +619,687 @@ static inline gsdc_pkw_status_t gsdc_station_response_encode(
     return status;
 }
 
+/* ------------------------------------------------------------------------
+ * Gateways: cards that carry the data of the nodes of a second bus. The
+ * master sets how many nodes are in use and the words each one carries each
+ * way (User_Prm_Data), plugs word modules until its input and output equal
+ * the nodes' totals (the config bytes of Chk_Cfg), and reads a diagnosis
+ * block of type, node and code. */
+
+/* How a user parameter is stored: one byte, two bytes big-endian, or some
+ * bits of one byte, whose other bits other parameters may hold. */
+typedef enum {
+    GSDC_PRM_UNSIGNED8 = 0,
+    GSDC_PRM_UNSIGNED16,
+    GSDC_PRM_BITS
+} gsdc_prm_type_t;
+
+/* A user parameter: where it lies in User_Prm_Data, how it is stored, the
+ * values it may hold and its default. A layout's initializers give the
+ * members in this order. */
+typedef struct {
+    size_t offset;
+    gsdc_prm_type_t type;
+    /* The bits of GSDC_PRM_BITS, first_bit <= last_bit < 8; 0 for the others. */
+    uint8_t first_bit;
+    uint8_t last_bit;
+    uint8_t min;
+    uint8_t max;
+    uint8_t default_value;
+} gsdc_prm_field_t;
+
+/* Bytes of `field` from its offset on. */
+static inline size_t gsdc_prm_field_len(const gsdc_prm_field_t *field)
+{
+    size_t len = 1U;
+    if (field->type == GSDC_PRM_UNSIGNED16) {
+        len = 2U;
+    }
+    return len;
+}
+
+/* The mask of bits `first` to `last` (below 8) of a byte. */
+static inline uint32_t gsdc_prm_bit_mask(unsigned int first, unsigned int last)
+{
+    return ((0xFFU >> ((7U - (last - first)) & 7U)) << (first & 7U)) & 0xFFU;
+}
+
+/* Whether `field` may hold `value`. */
+static inline bool gsdc_prm_field_allows(const gsdc_prm_field_t *field, uint16_t value)
+{
+    return (value >= field->min) && (value <= field->max);
+}
+
+/* GSDC_PRM_LENGTH when `field` does not lie within `len` bytes, else
+ * GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_prm_field_fits(const gsdc_prm_field_t *field, size_t len)
+{
+    gsdc_prm_result_t result = gsdc_prm_ok();
+    size_t field_len = gsdc_prm_field_len(field);
+    if ((field->offset > len) || ((len - field->offset) < field_len)) {
+        result.fault = GSDC_PRM_LENGTH;
+        result.expected = field->offset + field_len;
+        result.found = len;
+    }
+    return result;
+}
+
+/* The value of `field` as `bytes` store it, not checked: the field lies
+ * within the bytes. */
+static inline uint16_t gsdc_prm_field_get(const gsdc_prm_field_t *field, const uint8_t *bytes)
+{
+    uint16_t value;
+    switch (field->type) {
+    case GSDC_PRM_UNSIGNED16:
+        value = gsdc_u16be_get(&bytes[field->offset]);
+        break;
+    case GSDC_PRM_BITS:
+        value = (uint16_t)(((uint32_t)bytes[field->offset] &
+                            gsdc_prm_bit_mask(field->first_bit, field->last_bit)) >>
+                           (field->first_bit & 7U));
+        break;
+    default:
+        value = bytes[field->offset];
+        break;
+    }
+    return value;
+}
+
+/* Checks `field` in `bytes`, `len` bytes long: GSDC_PRM_LENGTH when it lies
+ * past the end, GSDC_PRM_NOT_ALLOWED (its offset and the value as stored)
+ * when its range does not hold the value, else GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_prm_field_check(const gsdc_prm_field_t *field,
+                                                     const uint8_t *bytes, size_t len)
+{
+    gsdc_prm_result_t result = gsdc_prm_field_fits(field, len);
+    if (result.fault == GSDC_PRM_OK) {
+        uint16_t value = gsdc_prm_field_get(field, bytes);
+        if (!gsdc_prm_field_allows(field, value)) {
+            result.fault = GSDC_PRM_NOT_ALLOWED;
+            result.offset = field->offset;
+            result.value = value;
+        }
+    }
+    return result;
+}
+
+/* Checks a write of `value` to `field` in `len` bytes: GSDC_PRM_NOT_ALLOWED
+ * (its offset and the value) when its range does not hold the value,
+ * GSDC_PRM_LENGTH when it lies past the end, else GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_prm_field_check_value(const gsdc_prm_field_t *field,
+                                                           size_t len, uint8_t value)
+{
+    gsdc_prm_result_t result = gsdc_prm_ok();
+    if (!gsdc_prm_field_allows(field, value)) {
+        result.fault = GSDC_PRM_NOT_ALLOWED;
+        result.offset = field->offset;
+        result.value = value;
+    } else {
+        result = gsdc_prm_field_fits(field, len);
+    }
+    return result;
+}
+
+/* Writes `value` to `field` in `bytes`, leaving the other bits of a byte the
+ * field shares: gsdc_prm_field_check_value has passed it. */
+static inline void gsdc_prm_field_put(const gsdc_prm_field_t *field, uint8_t *bytes,
+                                      uint8_t value)
+{
+    switch (field->type) {
+    case GSDC_PRM_UNSIGNED16:
+        gsdc_u16be_put(&bytes[field->offset], value);
+        break;
+    case GSDC_PRM_BITS: {
+        uint32_t mask = gsdc_prm_bit_mask(field->first_bit, field->last_bit);
+        uint32_t bits = ((uint32_t)value << (field->first_bit & 7U)) & mask;
+        bytes[field->offset] = (uint8_t)(((uint32_t)bytes[field->offset] & ~mask) | bits);
+        break;
+    }
+    default:
+        bytes[field->offset] = value;
+        break;
+    }
+}
+
+/* A gateway's node parameters, node `first_node` first, and its data
+ * limits in bytes: what a layout's <prefix>_node_params gives. */
+typedef struct {
+    uint8_t first_node;
+    /* The node numbers that have parameters: `input_words` and
+     * `output_words` have one each. */
+    size_t nodes;
+    const gsdc_prm_field_t *node_count;
+    const gsdc_prm_field_t *input_words;
+    const gsdc_prm_field_t *output_words;
+    size_t max_input_len;
+    size_t max_output_len;
+} gsdc_node_params_t;
+
+/* Checks the node parameters in User_Prm_Data, `len` bytes, as
+ * gsdc_prm_field_check does: the count, then each node's input words, then
+ * each node's output words; the first fault found. */
+static inline gsdc_prm_result_t gsdc_nodes_check(const gsdc_node_params_t *params,
+                                                 const uint8_t *bytes, size_t len)
+{
+    gsdc_prm_result_t result = gsdc_prm_field_check(params->node_count, bytes, len);
+    size_t i;
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < params->nodes); i++) {
+        result = gsdc_prm_field_check(&params->input_words[i], bytes, len);
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < params->nodes); i++) {
+        result = gsdc_prm_field_check(&params->output_words[i], bytes, len);
+    }
+    return result;
+}
+
+/* The node parameters gsdc_nodes_check has passed: the count, and the
+ * words of each node each way (`params->nodes` each). */
+static inline void gsdc_nodes_get(const gsdc_node_params_t *params, const uint8_t *bytes,
+                                  uint8_t *count, uint8_t *input, uint8_t *output)
+{
+    size_t i;
+    *count = (uint8_t)gsdc_prm_field_get(params->node_count, bytes);
+    for (i = 0U; i < params->nodes; i++) {
+        input[i] = (uint8_t)gsdc_prm_field_get(&params->input_words[i], bytes);
+        output[i] = (uint8_t)gsdc_prm_field_get(&params->output_words[i], bytes);
+    }
+}
+
+/* Writes the count and each node's words (`params->nodes` each) into
+ * User_Prm_Data, `len` bytes, each value checked first as
+ * gsdc_prm_field_check_value checks it, in the order gsdc_nodes_check reads
+ * them: on a fault nothing is written. Bytes no parameter holds are left as
+ * they are. */
+static inline gsdc_prm_result_t gsdc_nodes_put(const gsdc_node_params_t *params, uint8_t count,
+                                               const uint8_t *input, const uint8_t *output,
+                                               uint8_t *bytes, size_t len)
+{
+    gsdc_prm_result_t result = gsdc_prm_field_check_value(params->node_count, len, count);
+    size_t i;
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < params->nodes); i++) {
+        result = gsdc_prm_field_check_value(&params->input_words[i], len, input[i]);
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < params->nodes); i++) {
+        result = gsdc_prm_field_check_value(&params->output_words[i], len, output[i]);
+    }
+    if (result.fault == GSDC_PRM_OK) {
+        gsdc_prm_field_put(params->node_count, bytes, count);
+        for (i = 0U; i < params->nodes; i++) {
+            gsdc_prm_field_put(&params->input_words[i], bytes, input[i]);
+            gsdc_prm_field_put(&params->output_words[i], bytes, output[i]);
+        }
+    }
+    return result;
+}
+
+/* Which way a node's words go: in, the node sends them (the master's
+ * input); out, it receives them. */
+typedef enum {
+    GSDC_DIRECTION_NONE = 0,
+    GSDC_DIRECTION_IN,
+    GSDC_DIRECTION_OUT
+} gsdc_direction_t;
+
+/* Why a node configuration, or the config bytes of the plugged modules,
+ * were refused. */
+typedef enum {
+    GSDC_TOTALS_OK = 0,
+    /* More nodes (`count`), or fewer, than the count's parameter allows. */
+    GSDC_TOTALS_NODE_COUNT,
+    /* Node `node` carries `words` words `direction`, which its parameter
+     * does not allow. */
+    GSDC_TOTALS_WORDS,
+    /* Node `node`, past the count, carries words. */
+    GSDC_TOTALS_UNUSED_NODE,
+    /* `len` bytes `direction`; the gateway carries at most `max`. */
+    GSDC_TOTALS_TOO_LONG,
+    /* Config byte `at` (0 = the first), `byte`, is no module's. */
+    GSDC_TOTALS_UNKNOWN_MODULE,
+    /* `len` modules; Max_Module is `max`. */
+    GSDC_TOTALS_TOO_MANY_MODULES
+} gsdc_totals_fault_t;
+
+/* The words of input and output a node configuration or the plugged modules
+ * carry, or why they were refused: the fault, and the fields that fault
+ * names (the others are 0, the words too). */
+typedef struct {
+    gsdc_totals_fault_t fault;
+    /* GSDC_TOTALS_OK: the words each way. */
+    uint16_t input_words;
+    uint16_t output_words;
+    uint8_t count;
+    uint8_t node;
+    gsdc_direction_t direction;
+    uint8_t words;
+    size_t len;
+    size_t max;
+    size_t at;
+    uint8_t byte;
+} gsdc_totals_t;
+
+/* GSDC_TOTALS_OK, no words. */
+static inline gsdc_totals_t gsdc_totals_ok(void)
+{
+    gsdc_totals_t totals;
+    totals.fault = GSDC_TOTALS_OK;
+    totals.input_words = 0U;
+    totals.output_words = 0U;
+    totals.count = 0U;
+    totals.node = 0U;
+    totals.direction = GSDC_DIRECTION_NONE;
+    totals.words = 0U;
+    totals.len = 0U;
+    totals.max = 0U;
+    totals.at = 0U;
+    totals.byte = 0U;
+    return totals;
+}
+
+/* Bytes of input the totals carry: the master's input modules carry as
+ * many. */
+static inline size_t gsdc_totals_input_len(const gsdc_totals_t *totals)
+{
+    return 2U * (size_t)totals->input_words;
+}
+
+/* Bytes of output the totals carry. */
+static inline size_t gsdc_totals_output_len(const gsdc_totals_t *totals)
+{
+    return 2U * (size_t)totals->output_words;
+}
+
+/* Whether the plugged modules carry what the nodes do: both accepted, with
+ * the same words each way. The gateway takes the configuration then. */
+static inline bool gsdc_totals_match(const gsdc_totals_t *nodes, const gsdc_totals_t *modules)
+{
+    return (nodes->fault == GSDC_TOTALS_OK) && (modules->fault == GSDC_TOTALS_OK) &&
+           (nodes->input_words == modules->input_words) &&
+           (nodes->output_words == modules->output_words);
+}
+
+/* The words of one node `direction` do not fit its parameter: the fault. */
+static inline gsdc_totals_t gsdc_totals_words_fault(uint8_t node, gsdc_direction_t direction,
+                                                    uint8_t words)
+{
+    gsdc_totals_t totals = gsdc_totals_ok();
+    totals.fault = GSDC_TOTALS_WORDS;
+    totals.node = node;
+    totals.direction = direction;
+    totals.words = words;
+    return totals;
+}
+
+/* `len` bytes `direction`, more than `max`: GSDC_TOTALS_TOO_LONG; else
+ * GSDC_TOTALS_OK. */
+static inline gsdc_totals_t gsdc_totals_check_len(gsdc_direction_t direction, size_t len,
+                                                  size_t max)
+{
+    gsdc_totals_t totals = gsdc_totals_ok();
+    if (len > max) {
+        totals.fault = GSDC_TOTALS_TOO_LONG;
+        totals.direction = direction;
+        totals.len = len;
+        totals.max = max;
+    }
+    return totals;
+}
+
+/* The totals of the first `count` nodes' words (`input` and `output`,
+ * `params->nodes` each): each within its parameter's range, the nodes past
+ * the count without words, and each total within the gateway's limit. Pure:
+ * it reads its arguments only. */
+static inline gsdc_totals_t gsdc_node_totals(const gsdc_node_params_t *params, uint8_t count,
+                                             const uint8_t *input, const uint8_t *output)
+{
+    gsdc_totals_t totals = gsdc_totals_ok();
+    uint32_t input_words = 0U;
+    uint32_t output_words = 0U;
+    size_t i;
+    if (!gsdc_prm_field_allows(params->node_count, count) || ((size_t)count > params->nodes)) {
+        totals.fault = GSDC_TOTALS_NODE_COUNT;
+        totals.count = count;
+    }
+    for (i = 0U; (totals.fault == GSDC_TOTALS_OK) && (i < params->nodes); i++) {
+        uint8_t node = (uint8_t)((size_t)params->first_node + i);
+        if (i >= (size_t)count) {
+            if ((input[i] != 0U) || (output[i] != 0U)) {
+                totals.fault = GSDC_TOTALS_UNUSED_NODE;
+                totals.node = node;
+            }
+        } else if (!gsdc_prm_field_allows(&params->input_words[i], input[i])) {
+            totals = gsdc_totals_words_fault(node, GSDC_DIRECTION_IN, input[i]);
+        } else if (!gsdc_prm_field_allows(&params->output_words[i], output[i])) {
+            totals = gsdc_totals_words_fault(node, GSDC_DIRECTION_OUT, output[i]);
+        } else {
+            input_words += input[i];
+            output_words += output[i];
+        }
+    }
+    if (totals.fault == GSDC_TOTALS_OK) {
+        totals = gsdc_totals_check_len(GSDC_DIRECTION_IN, 2U * (size_t)input_words,
+                                       params->max_input_len);
+    }
+    if (totals.fault == GSDC_TOTALS_OK) {
+        totals = gsdc_totals_check_len(GSDC_DIRECTION_OUT, 2U * (size_t)output_words,
+                                       params->max_output_len);
+    }
+    if (totals.fault == GSDC_TOTALS_OK) {
+        totals.input_words = (uint16_t)input_words;
+        totals.output_words = (uint16_t)output_words;
+    }
+    return totals;
+}
+
+/* Where node `node`'s words start in the data one way, in bytes, when the
+ * nodes in use (the first `count`) follow each other in ascending node
+ * number: after the words of the nodes before it; `words` holds each
+ * node's words that way. false, and `offset` not written, for a node not in
+ * use. */
+static inline bool gsdc_node_offset(const gsdc_node_params_t *params, uint8_t count,
+                                    const uint8_t *words, uint8_t node, size_t *offset)
+{
+    size_t index = (size_t)node - (size_t)params->first_node;
+    bool in_use = (node >= params->first_node) && (index < (size_t)count) &&
+                  (index < params->nodes);
+    if (in_use) {
+        size_t bytes = 0U;
+        size_t i;
+        for (i = 0U; i < index; i++) {
+            bytes += 2U * (size_t)words[i];
+        }
+        *offset = bytes;
+    }
+    return in_use;
+}
+
+/* Whether `byte` is one of the `count` bytes of `bytes`. */
+static inline bool gsdc_byte_listed(uint8_t byte, const uint8_t *bytes, size_t count)
+{
+    bool found = false;
+    size_t i;
+    for (i = 0U; (i < count) && !found; i++) {
+        found = (bytes[i] == byte);
+    }
+    return found;
+}
+
+/* The words of input and output the plugged modules carry: `config` holds
+ * `len` config identifier bytes, one per module, each one of the `count`
+ * bytes of `modules` (general identifiers of words: bits 5-4 the direction,
+ * 01 input and 10 output, bits 3-0 the words - 1). Refused: a byte no module
+ * has, or more than `max_modules` bytes. */
+static inline gsdc_totals_t gsdc_config_totals(const uint8_t *config, size_t len,
+                                               const uint8_t *modules, size_t count,
+                                               size_t max_modules)
+{
+    gsdc_totals_t totals = gsdc_totals_ok();
+    uint32_t input_words = 0U;
+    uint32_t output_words = 0U;
+    size_t i;
+    if (len > max_modules) {
+        totals.fault = GSDC_TOTALS_TOO_MANY_MODULES;
+        totals.len = len;
+        totals.max = max_modules;
+    }
+    for (i = 0U; (totals.fault == GSDC_TOTALS_OK) && (i < len); i++) {
+        uint32_t words = ((uint32_t)config[i] & 0x0FU) + 1U;
+        uint32_t way = (uint32_t)config[i] & 0x30U;
+        if (!gsdc_byte_listed(config[i], modules, count) || ((way != 0x10U) && (way != 0x20U))) {
+            totals.fault = GSDC_TOTALS_UNKNOWN_MODULE;
+            totals.at = i;
+            totals.byte = config[i];
+        } else if (way == 0x10U) {
+            input_words += words;
+        } else {
+            output_words += words;
+        }
+    }
+    if (totals.fault == GSDC_TOTALS_OK) {
+        totals.input_words = (uint16_t)input_words;
+        totals.output_words = (uint16_t)output_words;
+    }
+    return totals;
+}
+
+/* Why a gateway's diagnosis block was refused, or a diagnosis could not be
+ * encoded. */
+typedef enum {
+    GSDC_DIAG_OK = 0,
+    /* The header, `value`, is not a device-related block's (bits 7-6 00). */
+    GSDC_DIAG_HEADER,
+    /* `found` bytes; the header or the type needs `expected`. */
+    GSDC_DIAG_SHORT,
+    /* The header says `found` bytes; blocks of the type have `expected`. */
+    GSDC_DIAG_LENGTH,
+    /* A type, `value`, the gateway does not report. */
+    GSDC_DIAG_TYPE,
+    /* A node number, `value`, the gateway does not have. */
+    GSDC_DIAG_NODE,
+    /* A code, `value`, type `kind` does not list. */
+    GSDC_DIAG_CODE
+} gsdc_diag_fault_t;
+
+/* What decoding or encoding a diagnosis found: the fault, and the fields
+ * that fault names (the others are 0). */
+typedef struct {
+    gsdc_diag_fault_t fault;
+    size_t expected;
+    size_t found;
+    uint8_t kind;
+    uint16_t value;
+} gsdc_diag_result_t;
+
+/* Whether `value` is one of a set's values: a layout's <set>_is_value. */
+typedef bool (*gsdc_is_value_t)(uint16_t value);
+
+/* A type of a gateway's diagnosis: its value, the bytes of its blocks (the
+ * header included), and its code: one byte, one of the values `is_code`
+ * accepts (bytes only), or, where `is_code` is NULL, a 16-bit number, high
+ * byte first. */
+typedef struct {
+    uint8_t value;
+    uint8_t len;
+    gsdc_is_value_t is_code;
+} gsdc_diag_type_t;
+
+/* Where a gateway's diagnosis block holds the type, the node and the code
+ * (the header being byte 0), the node numbers, and the types there are:
+ * what a layout's <prefix>_diag_layout gives. */
+typedef struct {
+    size_t type_at;
+    size_t node_at;
+    size_t code_at;
+    uint8_t first_node;
+    uint8_t last_node;
+    const gsdc_diag_type_t *types;
+    size_t type_count;
+} gsdc_diag_layout_t;
+
+/* GSDC_DIAG_OK. */
+static inline gsdc_diag_result_t gsdc_diag_ok(void)
+{
+    gsdc_diag_result_t result;
+    result.fault = GSDC_DIAG_OK;
+    result.expected = 0U;
+    result.found = 0U;
+    result.kind = 0U;
+    result.value = 0U;
+    return result;
+}
+
+/* A fault that names one value (GSDC_DIAG_HEADER, _TYPE, _NODE, _CODE). */
+static inline gsdc_diag_result_t gsdc_diag_value_fault(gsdc_diag_fault_t fault, uint8_t kind,
+                                                       uint16_t value)
+{
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    result.fault = fault;
+    result.kind = kind;
+    result.value = value;
+    return result;
+}
+
+/* A fault of lengths (GSDC_DIAG_SHORT, GSDC_DIAG_LENGTH). */
+static inline gsdc_diag_result_t gsdc_diag_len_fault(gsdc_diag_fault_t fault, size_t expected,
+                                                     size_t found)
+{
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    result.fault = fault;
+    result.expected = expected;
+    result.found = found;
+    return result;
+}
+
+/* The type `kind` of `layout`, or NULL when the gateway reports no such
+ * type. */
+static inline const gsdc_diag_type_t *gsdc_diag_type(const gsdc_diag_layout_t *layout,
+                                                     uint32_t kind)
+{
+    const gsdc_diag_type_t *found = NULL;
+    size_t i;
+    for (i = 0U; (i < layout->type_count) && (found == NULL); i++) {
+        if (layout->types[i].value == kind) {
+            found = &layout->types[i];
+        }
+    }
+    return found;
+}
+
+/* Bytes of the code of `type`. */
+static inline size_t gsdc_diag_code_len(const gsdc_diag_type_t *type)
+{
+    size_t len = 1U;
+    if (type->is_code == NULL) {
+        len = 2U;
+    }
+    return len;
+}
+
+/* GSDC_DIAG_NODE when `node` is not one of the gateway's node numbers. */
+static inline gsdc_diag_result_t gsdc_diag_check_node(const gsdc_diag_layout_t *layout,
+                                                      uint8_t node)
+{
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    if ((node < layout->first_node) || (node > layout->last_node)) {
+        result = gsdc_diag_value_fault(GSDC_DIAG_NODE, 0U, node);
+    }
+    return result;
+}
+
+/* GSDC_DIAG_CODE when `type` has one-byte codes and does not list `code`. */
+static inline gsdc_diag_result_t gsdc_diag_check_code(const gsdc_diag_type_t *type,
+                                                      uint16_t code)
+{
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    if ((type->is_code != NULL) && !type->is_code(code)) {
+        result = gsdc_diag_value_fault(GSDC_DIAG_CODE, type->value, code);
+    }
+    return result;
+}
+
+/* Checks the header of a block of `len` bytes and the bytes it says the
+ * block has: the length the header says, else a fault. */
+static inline gsdc_diag_result_t gsdc_diag_check_header(const uint8_t *block, size_t len,
+                                                        size_t *block_len)
+{
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    if (len == 0U) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_SHORT, 1U, 0U);
+    } else if ((block[0] & 0xC0U) != 0U) {
+        result = gsdc_diag_value_fault(GSDC_DIAG_HEADER, 0U, block[0]);
+    } else if ((size_t)block[0] > len) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_SHORT, block[0], len);
+    } else {
+        *block_len = block[0];
+    }
+    return result;
+}
+
+/* Decodes a gateway's device-related diagnosis block, `len` bytes with the
+ * header byte first; bytes past the length the header says belong to what
+ * follows and are not read. GSDC_DIAG_OK: `kind`, `node` and `code` hold the
+ * block; else they are not written. */
+static inline gsdc_diag_result_t gsdc_diag_decode(const gsdc_diag_layout_t *layout,
+                                                  const uint8_t *block, size_t len,
+                                                  uint8_t *kind, uint8_t *node, uint16_t *code)
+{
+    size_t block_len = 0U;
+    const gsdc_diag_type_t *type = NULL;
+    gsdc_diag_result_t result = gsdc_diag_check_header(block, len, &block_len);
+    if ((result.fault == GSDC_DIAG_OK) && (layout->type_at >= block_len)) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_SHORT, layout->type_at + 1U, block_len);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (layout->node_at >= block_len)) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_SHORT, layout->node_at + 1U, block_len);
+    }
+    if (result.fault == GSDC_DIAG_OK) {
+        type = gsdc_diag_type(layout, block[layout->type_at]);
+        if (type == NULL) {
+            result = gsdc_diag_value_fault(GSDC_DIAG_TYPE, 0U, block[layout->type_at]);
+        }
+    }
+    if (result.fault == GSDC_DIAG_OK) {
+        result = gsdc_diag_check_node(layout, block[layout->node_at]);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (type != NULL) && (block_len != type->len)) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_LENGTH, type->len, block_len);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (type != NULL) &&
+        (layout->code_at + gsdc_diag_code_len(type) > block_len)) {
+        result = gsdc_diag_len_fault(GSDC_DIAG_SHORT, layout->code_at + gsdc_diag_code_len(type),
+                                     block_len);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (type != NULL)) {
+        uint16_t value = block[layout->code_at];
+        if (gsdc_diag_code_len(type) == 2U) {
+            value = gsdc_u16be_get(&block[layout->code_at]);
+        }
+        result = gsdc_diag_check_code(type, value);
+        if (result.fault == GSDC_DIAG_OK) {
+            *kind = type->value;
+            *node = block[layout->node_at];
+            *code = value;
+        }
+    }
+    return result;
+}
+
+/* Encodes a diagnosis of type `kind` at `node` with `code` into `block`,
+ * which has room for the longest block: the header, the type, the node and
+ * the code, the block's other bytes 0, and `*len` its length. GSDC_DIAG_TYPE,
+ * GSDC_DIAG_NODE or GSDC_DIAG_CODE for what the gateway does not report:
+ * nothing is written then. */
+static inline gsdc_diag_result_t gsdc_diag_encode(const gsdc_diag_layout_t *layout, uint8_t kind,
+                                                  uint8_t node, uint16_t code, uint8_t *block,
+                                                  size_t *len)
+{
+    const gsdc_diag_type_t *type = gsdc_diag_type(layout, kind);
+    gsdc_diag_result_t result = gsdc_diag_ok();
+    if (type == NULL) {
+        result = gsdc_diag_value_fault(GSDC_DIAG_TYPE, 0U, kind);
+    } else {
+        result = gsdc_diag_check_node(layout, node);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (type != NULL)) {
+        result = gsdc_diag_check_code(type, code);
+    }
+    if ((result.fault == GSDC_DIAG_OK) && (type != NULL)) {
+        size_t i;
+        for (i = 0U; i < type->len; i++) {
+            block[i] = 0U;
+        }
+        block[0] = type->len;
+        block[layout->type_at] = kind;
+        block[layout->node_at] = node;
+        if (gsdc_diag_code_len(type) == 2U) {
+            gsdc_u16be_put(&block[layout->code_at], code);
+        } else {
+            block[layout->code_at] = (uint8_t)code;
+        }
+        *len = type->len;
+    }
+    return result;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -6,13 +6,14 @@
 #include "md810dp_layout.h"
 #include "mv810_pnet02_layout.h"
 #include "9kdp1_layout.h"
+#include "md810_gateway_layout.h"
 #include "md810dp_layout.h"
 
-/* One name of each layout, so the unit uses all three. */
+/* One name of each layout, so the unit uses all four. */
 uint16_t all_layouts_ident_numbers(void);
 
 uint16_t all_layouts_ident_numbers(void)
 {
     return (uint16_t)(MD810DP_PROFIBUS_IDENT_NUMBER ^ MV810_PNET02_PROFINET_DEVICE_ID ^
-                      GSDC_9KDP1_PROFIBUS_IDENT_NUMBER);
+                      GSDC_9KDP1_PROFIBUS_IDENT_NUMBER ^ MD810_GATEWAY_PROFIBUS_IDENT_NUMBER);
 }

@@ -5,10 +5,12 @@
  *
  * tests/c_header.rs compiles it as C and as C++, runs it, and compares the
  * tests it names with the list it expects. It defines GSD_MAX_USER_PRM_DATA_LEN
- * and GSD_MAX_DIAG_DATA_LEN from the GSD generated beside the MD810 layout. */
+ * and GSD_MAX_DIAG_DATA_LEN from the GSD generated beside the MD810 layout,
+ * and GSD_GW_* from the one beside the MD810 gateway's (MD810GW.GSD). */
 #include "md810dp_layout.h"
 #include "mv810_pnet02_layout.h"
 #include "9kdp1_layout.h"
+#include "md810_gateway_layout.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,6 +20,11 @@
 #endif
 #ifndef GSD_MAX_DIAG_DATA_LEN
 #error "the test defines GSD_MAX_DIAG_DATA_LEN from MD810DP.GSD"
+#endif
+#if !defined(GSD_GW_MAX_USER_PRM_DATA_LEN) || !defined(GSD_GW_MAX_DIAG_DATA_LEN) || \
+    !defined(GSD_GW_MAX_INPUT_LEN) || !defined(GSD_GW_MAX_OUTPUT_LEN) || \
+    !defined(GSD_GW_MAX_MODULE) || !defined(GSD_GW_MODULE_CONFIGS)
+#error "the test defines GSD_GW_* from MD810GW.GSD"
 #endif
 
 static int failures = 0;
@@ -561,6 +568,402 @@ static void pi9000_default_user_prm(void)
     CHECK(GSDC_9KDP1_PZD_IN_5_DEFAULT == 0x8000U);
 }
 
+/* ------------------------------------------------------------------------
+ * MD810 bridge mode (chapter 2): DP to CANopen, through the gateway layout */
+
+/* A configuration of `count` slaves with `inputs` TPDO (input) and
+ * `outputs` RPDO (output) words, slave 1 first; the other slaves none. */
+static md810_gateway_node_config_t bridge_config(uint8_t count, const uint8_t *input,
+                                                 size_t inputs, const uint8_t *output,
+                                                 size_t outputs)
+{
+    md810_gateway_node_config_t config = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    size_t i;
+    config.node_count = count;
+    for (i = 0U; i < inputs; i++) {
+        config.input_words[i] = input[i];
+    }
+    for (i = 0U; i < outputs; i++) {
+        config.output_words[i] = output[i];
+    }
+    return config;
+}
+
+/* 2.4 step 5's example: RPDO 64 words, TPDO 120 words; 15 slaves of 8 TPDO
+ * words (2.2.1's most), the first 8 of them with 8 RPDO words. */
+static md810_gateway_node_config_t bridge_manual_example(void)
+{
+    static const uint8_t eights[15] = {8U, 8U, 8U, 8U, 8U, 8U, 8U, 8U,
+                                       8U, 8U, 8U, 8U, 8U, 8U, 8U};
+    return bridge_config(15U, eights, 15U, eights, 8U);
+}
+
+/* 30 slaves (2.4 step 4's most), 244 bytes each way (2.2.1's most): 5 words
+ * for the first two slaves, 4 for the others. */
+static md810_gateway_node_config_t bridge_at_the_limits(void)
+{
+    uint8_t words[MD810_GATEWAY_NODES];
+    size_t i;
+    for (i = 0U; i < MD810_GATEWAY_NODES; i++) {
+        words[i] = (i < 2U) ? 5U : 4U;
+    }
+    return bridge_config(30U, words, sizeof words, words, sizeof words);
+}
+
+static bool bridge_same_config(const md810_gateway_node_config_t *a,
+                               const md810_gateway_node_config_t *b)
+{
+    return (a->node_count == b->node_count) &&
+           same_bytes(a->input_words, b->input_words, MD810_GATEWAY_NODES) &&
+           same_bytes(a->output_words, b->output_words, MD810_GATEWAY_NODES);
+}
+
+static bool bridge_all_zero(const uint8_t *bytes, size_t len)
+{
+    size_t i;
+    for (i = 0U; i < len; i++) {
+        if (bytes[i] != 0U) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The words the example carries (2.4 step 5), and its User_Prm_Data: the
+ * count, then TPDO and RPDO words slave by slave. */
+static void bridge_the_manuals_example_is_240_bytes_in_and_128_out(void)
+{
+    md810_gateway_node_config_t example = bridge_manual_example();
+    md810_gateway_node_config_t decoded = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    md810_gateway_user_prm_t prm;
+    gsdc_totals_t totals = md810_gateway_node_totals(&example);
+    uint8_t user_prm[MD810_GATEWAY_USER_PRM_LEN];
+    static const uint8_t start[5] = {15U, 8U, 8U, 8U, 8U};
+    static const uint8_t slave_8[4] = {8U, 8U, 8U, 0U};
+    static const uint8_t slave_15[2] = {8U, 0U};
+    CHECK(totals.fault == GSDC_TOTALS_OK);
+    CHECK(totals.input_words == 120U && totals.output_words == 64U);
+    CHECK(gsdc_totals_input_len(&totals) == 240U);
+    CHECK(gsdc_totals_output_len(&totals) == 128U);
+    CHECK(md810_gateway_node_config_encode(&example, user_prm).fault == GSDC_PRM_OK);
+    CHECK(same_bytes(user_prm, start, sizeof start));
+    CHECK(same_bytes(&user_prm[15], slave_8, sizeof slave_8));
+    CHECK(same_bytes(&user_prm[29], slave_15, sizeof slave_15));
+    CHECK(bridge_all_zero(&user_prm[31], sizeof user_prm - 31U));
+    CHECK(md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded).fault ==
+          GSDC_PRM_OK);
+    CHECK(bridge_same_config(&decoded, &example));
+    CHECK(md810_gateway_decode_user_prm(user_prm, sizeof user_prm, &prm).fault == GSDC_PRM_OK);
+    CHECK(bridge_same_config(&prm.nodes, &example));
+}
+
+/* The master plugs modules until INPUT and OUTPUT equal the totals (2.4
+ * step 5): 7 x 16 + 8 words in, 4 x 16 words out. */
+static void bridge_the_example_s_modules_carry_its_totals(void)
+{
+    static const uint8_t plugged[12] = {
+        MD810_GATEWAY_INPUT_16_WORDS_CONFIG,  MD810_GATEWAY_INPUT_16_WORDS_CONFIG,
+        MD810_GATEWAY_INPUT_16_WORDS_CONFIG,  MD810_GATEWAY_INPUT_16_WORDS_CONFIG,
+        MD810_GATEWAY_INPUT_16_WORDS_CONFIG,  MD810_GATEWAY_INPUT_16_WORDS_CONFIG,
+        MD810_GATEWAY_INPUT_16_WORDS_CONFIG,  MD810_GATEWAY_INPUT_8_WORDS_CONFIG,
+        MD810_GATEWAY_OUTPUT_16_WORDS_CONFIG, MD810_GATEWAY_OUTPUT_16_WORDS_CONFIG,
+        MD810_GATEWAY_OUTPUT_16_WORDS_CONFIG, MD810_GATEWAY_OUTPUT_16_WORDS_CONFIG,
+    };
+    static const uint8_t unknown[2] = {0x5FU, 0xF3U};
+    uint8_t too_many[21];
+    md810_gateway_node_config_t example = bridge_manual_example();
+    gsdc_totals_t nodes = md810_gateway_node_totals(&example);
+    gsdc_totals_t modules = md810_gateway_config_totals(plugged, sizeof plugged);
+    size_t i;
+    CHECK(modules.fault == GSDC_TOTALS_OK);
+    CHECK(modules.input_words == 120U && modules.output_words == 64U);
+    CHECK(gsdc_totals_match(&nodes, &modules));
+    modules = md810_gateway_config_totals(plugged, sizeof plugged - 1U);
+    CHECK(modules.fault == GSDC_TOTALS_OK);
+    CHECK(!gsdc_totals_match(&nodes, &modules));
+    modules = md810_gateway_config_totals(unknown, sizeof unknown);
+    CHECK(modules.fault == GSDC_TOTALS_UNKNOWN_MODULE);
+    CHECK(modules.at == 1U && modules.byte == 0xF3U);
+    CHECK(!gsdc_totals_match(&nodes, &modules));
+    for (i = 0U; i < sizeof too_many; i++) {
+        too_many[i] = MD810_GATEWAY_INPUT_1_WORD_CONFIG;
+    }
+    modules = md810_gateway_config_totals(too_many, sizeof too_many);
+    CHECK(modules.fault == GSDC_TOTALS_TOO_MANY_MODULES);
+    CHECK(modules.len == 21U && modules.max == MD810_GATEWAY_MAX_MODULES);
+    CHECK(md810_gateway_config_totals(too_many, MD810_GATEWAY_MAX_MODULES).fault ==
+          GSDC_TOTALS_OK);
+}
+
+/* The slaves' words follow each other in ascending slave number. */
+static void bridge_each_slave_s_words_have_their_place(void)
+{
+    md810_gateway_node_config_t example = bridge_manual_example();
+    size_t offset = 999U;
+    CHECK(md810_gateway_input_offset(&example, 1U, &offset) && offset == 0U);
+    CHECK(md810_gateway_input_offset(&example, 15U, &offset) && offset == 14U * 16U);
+    CHECK(md810_gateway_output_offset(&example, 9U, &offset) && offset == 8U * 16U);
+    offset = 999U;
+    CHECK(!md810_gateway_input_offset(&example, 16U, &offset));
+    CHECK(!md810_gateway_input_offset(&example, 0U, &offset));
+    CHECK(offset == 999U);
+}
+
+static void bridge_thirty_slaves_and_244_bytes_pass(void)
+{
+    md810_gateway_node_config_t limits = bridge_at_the_limits();
+    md810_gateway_node_config_t decoded = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    gsdc_totals_t totals = md810_gateway_node_totals(&limits);
+    uint8_t user_prm[MD810_GATEWAY_USER_PRM_LEN];
+    CHECK(totals.fault == GSDC_TOTALS_OK);
+    CHECK(gsdc_totals_input_len(&totals) == 244U);
+    CHECK(gsdc_totals_output_len(&totals) == 244U);
+    CHECK(md810_gateway_node_config_encode(&limits, user_prm).fault == GSDC_PRM_OK);
+    CHECK(md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded).fault ==
+          GSDC_PRM_OK);
+    CHECK(bridge_same_config(&decoded, &limits));
+}
+
+/* "配置 CANopen 从站数最大为 30 个" (2.4 step 4): the totals, the encoder and
+ * the decoder refuse 31, and the refusing encoder and decoder write nothing. */
+static void bridge_a_31st_slave_is_refused(void)
+{
+    md810_gateway_node_config_t config = bridge_at_the_limits();
+    md810_gateway_node_config_t decoded = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    md810_gateway_node_config_t untouched = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    uint8_t user_prm[MD810_GATEWAY_USER_PRM_LEN];
+    uint8_t written[MD810_GATEWAY_USER_PRM_LEN];
+    gsdc_totals_t totals;
+    gsdc_prm_result_t result;
+    CHECK(md810_gateway_node_config_encode(&config, user_prm).fault == GSDC_PRM_OK);
+    gsdc_copy_bytes(written, user_prm, sizeof user_prm);
+    config.node_count = 31U;
+    totals = md810_gateway_node_totals(&config);
+    CHECK(totals.fault == GSDC_TOTALS_NODE_COUNT && totals.count == 31U);
+    result = md810_gateway_node_config_encode(&config, user_prm);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 0U && result.value == 31U);
+    CHECK(same_bytes(user_prm, written, sizeof user_prm));
+    user_prm[0] = 31U;
+    result = md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 0U && result.value == 31U);
+    CHECK(bridge_same_config(&decoded, &untouched));
+}
+
+/* One word more is 246 bytes: the 245th byte is one too many, either way. */
+static void bridge_a_245th_byte_is_refused(void)
+{
+    md810_gateway_node_config_t more_in = bridge_at_the_limits();
+    md810_gateway_node_config_t more_out = bridge_at_the_limits();
+    gsdc_totals_t totals;
+    more_in.input_words[2] = 5U;
+    totals = md810_gateway_node_totals(&more_in);
+    CHECK(totals.fault == GSDC_TOTALS_TOO_LONG && totals.direction == GSDC_DIRECTION_IN);
+    CHECK(totals.len == 246U && totals.max == MD810_GATEWAY_MAX_INPUT_LEN);
+    CHECK(totals.input_words == 0U && totals.output_words == 0U);
+    more_out.output_words[29] = 5U;
+    totals = md810_gateway_node_totals(&more_out);
+    CHECK(totals.fault == GSDC_TOTALS_TOO_LONG && totals.direction == GSDC_DIRECTION_OUT);
+    CHECK(totals.len == 246U && totals.max == MD810_GATEWAY_MAX_OUTPUT_LEN);
+}
+
+/* At most two PDOs (8 function codes) each way per slave (2.2.1), and no
+ * words for a slave past the count. */
+static void bridge_a_slave_s_words_keep_to_their_range(void)
+{
+    md810_gateway_node_config_t nine = bridge_manual_example();
+    md810_gateway_node_config_t example = bridge_manual_example();
+    md810_gateway_node_config_t decoded;
+    md810_gateway_node_config_t past;
+    static const uint8_t ones[3] = {1U, 1U, 1U};
+    uint8_t user_prm[MD810_GATEWAY_USER_PRM_LEN];
+    gsdc_totals_t totals;
+    gsdc_prm_result_t result;
+    nine.input_words[3] = 9U;
+    totals = md810_gateway_node_totals(&nine);
+    CHECK(totals.fault == GSDC_TOTALS_WORDS && totals.node == 4U);
+    CHECK(totals.direction == GSDC_DIRECTION_IN && totals.words == 9U);
+    CHECK(md810_gateway_node_config_encode(&example, user_prm).fault == GSDC_PRM_OK);
+    user_prm[7] = 9U;
+    result = md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 7U && result.value == 9U);
+    user_prm[7] = 8U;
+    user_prm[8] = 9U; /* slave 4's RPDO words */
+    result = md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 8U && result.value == 9U);
+    past = bridge_config(2U, ones, sizeof ones, ones, 0U);
+    totals = md810_gateway_node_totals(&past);
+    CHECK(totals.fault == GSDC_TOTALS_UNUSED_NODE && totals.node == 3U);
+}
+
+/* The GSD's defaults: the bridge alone, no words. */
+static void bridge_the_default_is_the_bridge_alone(void)
+{
+    static const md810_gateway_node_config_t defaults = MD810_GATEWAY_NODE_CONFIG_DEFAULT;
+    md810_gateway_node_config_t decoded;
+    uint8_t user_prm[MD810_GATEWAY_USER_PRM_LEN] = {0U};
+    uint8_t encoded[MD810_GATEWAY_USER_PRM_LEN];
+    gsdc_totals_t totals = md810_gateway_node_totals(&defaults);
+    gsdc_prm_result_t result;
+    user_prm[0] = 1U;
+    CHECK(md810_gateway_node_config_decode(user_prm, sizeof user_prm, &decoded).fault ==
+          GSDC_PRM_OK);
+    CHECK(bridge_same_config(&decoded, &defaults));
+    CHECK(md810_gateway_node_config_encode(&defaults, encoded).fault == GSDC_PRM_OK);
+    CHECK(same_bytes(encoded, user_prm, sizeof user_prm));
+    CHECK(totals.fault == GSDC_TOTALS_OK);
+    CHECK(totals.input_words == 0U && totals.output_words == 0U);
+    result = md810_gateway_node_config_decode(&user_prm[1], sizeof user_prm - 1U, &decoded);
+    CHECK(result.fault == GSDC_PRM_LENGTH);
+    CHECK(result.expected == MD810_GATEWAY_USER_PRM_LEN);
+    CHECK(result.found == MD810_GATEWAY_USER_PRM_LEN - 1U);
+}
+
+/* What the layout says, the GSD generated beside it says: lengths, modules,
+ * the limits. */
+static void bridge_the_layout_agrees_with_the_gsd(void)
+{
+    static const uint8_t gsd_modules[] = {GSD_GW_MODULE_CONFIGS};
+    static const uint8_t configs[MD810_GATEWAY_MODULE_CONFIGS_COUNT] =
+        MD810_GATEWAY_MODULE_CONFIGS;
+    CHECK(MD810_GATEWAY_USER_PRM_LEN == GSD_GW_MAX_USER_PRM_DATA_LEN);
+    CHECK(6U + MD810_GATEWAY_DIAG_MAX_LEN == GSD_GW_MAX_DIAG_DATA_LEN);
+    CHECK(MD810_GATEWAY_MAX_INPUT_LEN == GSD_GW_MAX_INPUT_LEN);
+    CHECK(MD810_GATEWAY_MAX_OUTPUT_LEN == GSD_GW_MAX_OUTPUT_LEN);
+    CHECK(MD810_GATEWAY_MAX_MODULES == GSD_GW_MAX_MODULE);
+    CHECK(sizeof gsd_modules == MD810_GATEWAY_MODULE_CONFIGS_COUNT);
+    CHECK(same_bytes(configs, gsd_modules, sizeof configs));
+}
+
+/* 2.5's table, bytes 6 to 10 of SFC13's record: length, type, CANopen
+ * slave, code, and a fifth byte, "保留" (reserved) unless the type is 4. */
+typedef struct {
+    uint8_t bytes[5];
+    size_t len;
+    md810_gateway_diagnosis_t diagnosis;
+} bridge_diag_case_t;
+
+static const bridge_diag_case_t bridge_diag_cases[4] = {
+    /* 参数错误（1）, 参数PDO长度与变频器不匹配（35）. */
+    {{4U, 1U, 7U, 35U, 0U},
+     4U,
+     {MD810_GATEWAY_DIAG_PARAMETER_ERROR, 7U,
+      MD810_GATEWAY_DIAG_PARAMETER_ERROR_CODE_PARAMETER_PDO_LENGTH_DOES_NOT_MATCH_THE_DRIVE}},
+    /* 参数错误（1）, 配置中有节点未在线（34）. */
+    {{4U, 1U, 30U, 34U, 0U},
+     4U,
+     {MD810_GATEWAY_DIAG_PARAMETER_ERROR, 30U,
+      MD810_GATEWAY_DIAG_PARAMETER_ERROR_CODE_NODE_IN_THE_CONFIGURATION_NOT_ONLINE}},
+    /* CANopen 网络故障（3）, 运行中 CANopen 从站掉线（32）. */
+    {{4U, 3U, 1U, 32U, 0U},
+     4U,
+     {MD810_GATEWAY_DIAG_CANOPEN_NETWORK_FAULT, 1U,
+      MD810_GATEWAY_DIAG_CANOPEN_NETWORK_FAULT_CODE_CANOPEN_SLAVE_DROPPED_OUT_WHILE_RUNNING}},
+    /* 变频报故障（4）: 变频器故障（高字节）, （低字节）. */
+    {{5U, 4U, 12U, 0x23U, 0x01U}, 5U, {MD810_GATEWAY_DIAG_DRIVE_REPORTS_FAULT, 12U, 0x2301U}},
+};
+
+static bool bridge_same_diagnosis(const md810_gateway_diagnosis_t *a,
+                                  const md810_gateway_diagnosis_t *b)
+{
+    return (a->kind == b->kind) && (a->node == b->node) && (a->code == b->code);
+}
+
+static void bridge_the_four_diagnosis_blocks_decode_and_encode_back(void)
+{
+    size_t i;
+    CHECK(MD810_GATEWAY_DIAG_PARAMETER_ERROR == 1U);
+    CHECK(MD810_GATEWAY_DIAG_CANOPEN_NETWORK_FAULT == 3U);
+    CHECK(MD810_GATEWAY_DIAG_DRIVE_REPORTS_FAULT == 4U);
+    for (i = 0U; i < 4U; i++) {
+        const bridge_diag_case_t *c = &bridge_diag_cases[i];
+        md810_gateway_diagnosis_t decoded = {0U, 0U, 0U};
+        uint8_t block[MD810_GATEWAY_DIAG_MAX_LEN] = {0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU};
+        size_t len = 0U;
+        CHECK(md810_gateway_diagnosis_decode(c->bytes, c->len, &decoded).fault == GSDC_DIAG_OK);
+        CHECK(bridge_same_diagnosis(&decoded, &c->diagnosis));
+        CHECK(md810_gateway_diagnosis_encode(&c->diagnosis, block, &len).fault == GSDC_DIAG_OK);
+        CHECK(len == c->len);
+        CHECK(same_bytes(block, c->bytes, c->len));
+    }
+}
+
+/* SFC13 reads bytes 6 to 10 whatever the length: the reserved fifth byte of
+ * a 4-byte block is past its length and not read. */
+static void bridge_the_reserved_byte_is_not_read(void)
+{
+    static const uint8_t record[5] = {4U, 3U, 1U, 32U, 0xAAU};
+    md810_gateway_diagnosis_t decoded = {0U, 0U, 0U};
+    CHECK(md810_gateway_diagnosis_decode(record, sizeof record, &decoded).fault == GSDC_DIAG_OK);
+    CHECK(bridge_same_diagnosis(&decoded, &bridge_diag_cases[2].diagnosis));
+}
+
+/* A block the table does not have, and why it is refused. */
+typedef struct {
+    uint8_t bytes[5];
+    size_t len;
+    gsdc_diag_fault_t fault;
+    /* GSDC_DIAG_SHORT and GSDC_DIAG_LENGTH: expected and found; the others:
+     * the type (of a code) and the value. */
+    size_t a;
+    size_t b;
+} bridge_refused_t;
+
+static void bridge_blocks_the_table_does_not_have_are_refused(void)
+{
+    static const bridge_refused_t refused[10] = {
+        {{4U, 2U, 7U, 35U, 0U}, 4U, GSDC_DIAG_TYPE, 0U, 2U},
+        {{4U, 1U, 31U, 35U, 0U}, 4U, GSDC_DIAG_NODE, 0U, 31U},
+        {{4U, 1U, 0U, 35U, 0U}, 4U, GSDC_DIAG_NODE, 0U, 0U},
+        {{4U, 1U, 7U, 33U, 0U}, 4U, GSDC_DIAG_CODE, 1U, 33U},
+        {{4U, 3U, 7U, 34U, 0U}, 4U, GSDC_DIAG_CODE, 3U, 34U},
+        {{5U, 1U, 7U, 35U, 0U}, 5U, GSDC_DIAG_LENGTH, 4U, 5U},
+        {{4U, 4U, 7U, 0x23U, 0U}, 4U, GSDC_DIAG_LENGTH, 5U, 4U},
+        {{5U, 4U, 7U, 0x23U, 0U}, 4U, GSDC_DIAG_SHORT, 5U, 4U},
+        {{0x44U, 1U, 7U, 35U, 0U}, 4U, GSDC_DIAG_HEADER, 0U, 0x44U},
+        {{0U, 0U, 0U, 0U, 0U}, 0U, GSDC_DIAG_SHORT, 1U, 0U},
+    };
+    static const md810_gateway_diagnosis_t untouched = {0xEEU, 0xEEU, 0xEEEEU};
+    size_t i;
+    for (i = 0U; i < 10U; i++) {
+        const bridge_refused_t *r = &refused[i];
+        md810_gateway_diagnosis_t decoded = untouched;
+        gsdc_diag_result_t result = md810_gateway_diagnosis_decode(r->bytes, r->len, &decoded);
+        bool lengths = (r->fault == GSDC_DIAG_SHORT) || (r->fault == GSDC_DIAG_LENGTH);
+        CHECK(result.fault == r->fault);
+        if (lengths) {
+            CHECK(result.expected == r->a && result.found == r->b);
+        } else {
+            CHECK(result.kind == r->a && result.value == r->b);
+        }
+        CHECK(bridge_same_diagnosis(&decoded, &untouched));
+    }
+}
+
+/* What C adds: the struct holds any numbers, so the encoder refuses a type,
+ * a node or a code the table does not have, and writes nothing then. */
+static void bridge_diagnoses_the_table_does_not_have_are_not_encoded(void)
+{
+    static const md810_gateway_diagnosis_t refused[5] = {
+        {2U, 7U, 35U},
+        {MD810_GATEWAY_DIAG_PARAMETER_ERROR, 31U, 35U},
+        {MD810_GATEWAY_DIAG_PARAMETER_ERROR, 7U, 33U},
+        {MD810_GATEWAY_DIAG_CANOPEN_NETWORK_FAULT, 7U, 32U + 0x100U},
+        {MD810_GATEWAY_DIAG_DRIVE_REPORTS_FAULT, 0U, 0x2301U},
+    };
+    static const gsdc_diag_fault_t faults[5] = {GSDC_DIAG_TYPE, GSDC_DIAG_NODE, GSDC_DIAG_CODE,
+                                                GSDC_DIAG_CODE, GSDC_DIAG_NODE};
+    static const uint8_t untouched[MD810_GATEWAY_DIAG_MAX_LEN] = {0xEEU, 0xEEU, 0xEEU, 0xEEU,
+                                                                  0xEEU};
+    size_t i;
+    for (i = 0U; i < 5U; i++) {
+        uint8_t block[MD810_GATEWAY_DIAG_MAX_LEN] = {0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU};
+        size_t len = 99U;
+        CHECK(md810_gateway_diagnosis_encode(&refused[i], block, &len).fault == faults[i]);
+        CHECK(same_bytes(block, untouched, sizeof block));
+        CHECK(len == 99U);
+    }
+}
+
 /* ------------------------------------------------------------------------ */
 
 typedef struct {
@@ -589,6 +992,24 @@ static const test_t tests[] = {
     {"pi9000_command_word_in_ppo3", pi9000_command_word_in_ppo3},
     {"pi9000_fault_code_diagnosis", pi9000_fault_code_diagnosis},
     {"pi9000_default_user_prm", pi9000_default_user_prm},
+    {"bridge_the_manuals_example_is_240_bytes_in_and_128_out",
+     bridge_the_manuals_example_is_240_bytes_in_and_128_out},
+    {"bridge_the_example_s_modules_carry_its_totals",
+     bridge_the_example_s_modules_carry_its_totals},
+    {"bridge_each_slave_s_words_have_their_place", bridge_each_slave_s_words_have_their_place},
+    {"bridge_thirty_slaves_and_244_bytes_pass", bridge_thirty_slaves_and_244_bytes_pass},
+    {"bridge_a_31st_slave_is_refused", bridge_a_31st_slave_is_refused},
+    {"bridge_a_245th_byte_is_refused", bridge_a_245th_byte_is_refused},
+    {"bridge_a_slave_s_words_keep_to_their_range", bridge_a_slave_s_words_keep_to_their_range},
+    {"bridge_the_default_is_the_bridge_alone", bridge_the_default_is_the_bridge_alone},
+    {"bridge_the_layout_agrees_with_the_gsd", bridge_the_layout_agrees_with_the_gsd},
+    {"bridge_the_four_diagnosis_blocks_decode_and_encode_back",
+     bridge_the_four_diagnosis_blocks_decode_and_encode_back},
+    {"bridge_the_reserved_byte_is_not_read", bridge_the_reserved_byte_is_not_read},
+    {"bridge_blocks_the_table_does_not_have_are_refused",
+     bridge_blocks_the_table_does_not_have_are_refused},
+    {"bridge_diagnoses_the_table_does_not_have_are_not_encoded",
+     bridge_diagnoses_the_table_does_not_have_are_not_encoded},
 };
 
 int main(void)

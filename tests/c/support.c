@@ -1,8 +1,9 @@
 /* Tests of gsdc_support.h on its own, the C twin of the Rust support code's
- * tests (src/emit/rust/support_tests.rs): words, bit fields, the reading of
- * parameter telegrams and records, both PKW codecs at their edges, and the
- * diagnosis areas. tests/c_header.rs compiles it as C and as C++ and runs
- * it. */
+ * tests (src/emit/rust/support_tests.rs and support_gateway_tests.rs): words,
+ * bit fields, the reading of parameter telegrams and records, both PKW codecs
+ * at their edges, the diagnosis areas, and the gateways' parameters, totals
+ * and diagnosis blocks. tests/c_header.rs compiles it as C and as C++ and
+ * runs it. */
 #include "gsdc_support.h"
 
 #include <stdio.h>
@@ -278,6 +279,296 @@ static void a_block_too_short_loses_the_bits_past_its_end(void)
     CHECK(gsdc_diag_area_get(block, 2U, 4U, 0xFFFFU) == 0x000FU);
 }
 
+/* ------------------------------------------------------------------------
+ * Gateways: what the shipped gateway (whole bytes, tested in manuals.c)
+ * does not reach, as src/emit/rust/support_gateway_tests.rs tests it. */
+
+/* Two parameters in one byte: words in (bits 0-3) and out (bits 4-7). */
+static const gsdc_prm_field_t in_bits = {1U, GSDC_PRM_BITS, 0U, 3U, 0U, 8U, 0U};
+static const gsdc_prm_field_t out_bits = {1U, GSDC_PRM_BITS, 4U, 7U, 0U, 8U, 2U};
+
+static void bit_areas_share_a_byte(void)
+{
+    uint8_t user_prm[2] = {0xAAU, 0x00U};
+    static const uint8_t both[2] = {0xAAU, 0x85U};
+    static const uint8_t again[2] = {0xAAU, 0x83U};
+    CHECK(gsdc_prm_field_check_value(&in_bits, 2U, 5U).fault == GSDC_PRM_OK);
+    gsdc_prm_field_put(&in_bits, user_prm, 5U);
+    gsdc_prm_field_put(&out_bits, user_prm, 8U);
+    CHECK(same_bytes(user_prm, both, 2U));
+    gsdc_prm_field_put(&in_bits, user_prm, 3U);
+    CHECK(same_bytes(user_prm, again, 2U));
+    CHECK(gsdc_prm_field_get(&in_bits, user_prm) == 3U);
+    CHECK(gsdc_prm_field_get(&out_bits, user_prm) == 8U);
+    CHECK(gsdc_prm_field_check(&out_bits, user_prm, 2U).fault == GSDC_PRM_OK);
+}
+
+static void bits_beyond_the_range_are_refused(void)
+{
+    /* 0xF in bits 0-3: the type holds it, the range does not. */
+    static const uint8_t fifteen[2] = {0x00U, 0x0FU};
+    gsdc_prm_result_t result = gsdc_prm_field_check(&in_bits, fifteen, 2U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
+    CHECK(result.offset == 1U && result.value == 15U);
+    result = gsdc_prm_field_check_value(&out_bits, 2U, 9U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
+    CHECK(result.offset == 1U && result.value == 9U);
+}
+
+static void unsigned16_is_big_endian_and_within_a_byte_s_values(void)
+{
+    static const gsdc_prm_field_t words = {0U, GSDC_PRM_UNSIGNED16, 0U, 0U, 0U, 200U, 0U};
+    static const uint8_t written[3] = {0x00U, 0xC8U, 0xFFU};
+    static const uint8_t too_big[2] = {0x01U, 0x00U};
+    uint8_t user_prm[3] = {0xFFU, 0xFFU, 0xFFU};
+    gsdc_prm_result_t result;
+    CHECK(gsdc_prm_field_check_value(&words, 3U, 200U).fault == GSDC_PRM_OK);
+    gsdc_prm_field_put(&words, user_prm, 200U);
+    CHECK(same_bytes(user_prm, written, 3U));
+    CHECK(gsdc_prm_field_check(&words, user_prm, 3U).fault == GSDC_PRM_OK);
+    CHECK(gsdc_prm_field_get(&words, user_prm) == 200U);
+    result = gsdc_prm_field_check(&words, too_big, 2U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
+    CHECK(result.offset == 0U && result.value == 256U);
+}
+
+static void a_field_past_the_end_is_a_length_error(void)
+{
+    static const uint8_t short_prm[1] = {0U};
+    gsdc_prm_result_t result = gsdc_prm_field_check(&in_bits, short_prm, 1U);
+    CHECK(result.fault == GSDC_PRM_LENGTH);
+    CHECK(result.expected == 2U && result.found == 1U);
+    result = gsdc_prm_field_check_value(&out_bits, 1U, 1U);
+    CHECK(result.fault == GSDC_PRM_LENGTH);
+    CHECK(result.expected == 2U && result.found == 1U);
+}
+
+static void config_bytes_of_no_module_are_refused(void)
+{
+    static const uint8_t modules[3] = {0x50U, 0x5FU, 0x60U};
+    static const uint8_t plugged[4] = {0x5FU, 0x50U, 0x60U, 0x5FU};
+    /* 0x70: input and output of one word, a byte no module of a gateway has. */
+    static const uint8_t both_ways[1] = {0x70U};
+    static const uint8_t unlisted[1] = {0x51U};
+    gsdc_totals_t totals = gsdc_config_totals(plugged, 4U, modules, 3U, 4U);
+    CHECK(totals.fault == GSDC_TOTALS_OK);
+    CHECK(totals.input_words == 33U && totals.output_words == 1U);
+    totals = gsdc_config_totals(both_ways, 1U, both_ways, 1U, 4U);
+    CHECK(totals.fault == GSDC_TOTALS_UNKNOWN_MODULE && totals.at == 0U && totals.byte == 0x70U);
+    totals = gsdc_config_totals(unlisted, 1U, modules, 3U, 4U);
+    CHECK(totals.fault == GSDC_TOTALS_UNKNOWN_MODULE && totals.at == 0U && totals.byte == 0x51U);
+    CHECK(totals.input_words == 0U && totals.output_words == 0U);
+}
+
+/* A gateway of nodes 5 to 7: at most 4 words each way per node, 10 bytes of
+ * input and 6 of output; words in byte 1 + node, out in byte 4 + node. */
+static gsdc_node_params_t small_gateway(void)
+{
+    static const gsdc_prm_field_t count = {0U, GSDC_PRM_UNSIGNED8, 0U, 0U, 1U, 3U, 1U};
+    static const gsdc_prm_field_t input[3] = {{1U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U},
+                                              {2U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U},
+                                              {3U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U}};
+    static const gsdc_prm_field_t output[3] = {{4U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U},
+                                               {5U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U},
+                                               {6U, GSDC_PRM_UNSIGNED8, 0U, 0U, 0U, 4U, 0U}};
+    gsdc_node_params_t params;
+    params.first_node = 5U;
+    params.nodes = 3U;
+    params.node_count = &count;
+    params.input_words = input;
+    params.output_words = output;
+    params.max_input_len = 10U;
+    params.max_output_len = 6U;
+    return params;
+}
+
+typedef struct {
+    uint8_t count;
+    uint8_t input[3];
+    uint8_t output[3];
+    gsdc_totals_fault_t fault;
+    uint8_t node;
+    gsdc_direction_t direction;
+    size_t len;
+} small_refused_t;
+
+static void totals_count_the_nodes_in_use_within_the_limits(void)
+{
+    static const uint8_t input[3] = {2U, 0U, 3U};
+    static const uint8_t output[3] = {1U, 1U, 1U};
+    static const small_refused_t refused[6] = {
+        {0U, {0U, 0U, 0U}, {0U, 0U, 0U}, GSDC_TOTALS_NODE_COUNT, 0U, GSDC_DIRECTION_NONE, 0U},
+        {4U, {0U, 0U, 0U}, {0U, 0U, 0U}, GSDC_TOTALS_NODE_COUNT, 0U, GSDC_DIRECTION_NONE, 0U},
+        {3U, {0U, 5U, 0U}, {0U, 0U, 0U}, GSDC_TOTALS_WORDS, 6U, GSDC_DIRECTION_IN, 0U},
+        {1U, {0U, 0U, 0U}, {0U, 0U, 1U}, GSDC_TOTALS_UNUSED_NODE, 7U, GSDC_DIRECTION_NONE, 0U},
+        {2U, {4U, 2U, 0U}, {0U, 0U, 0U}, GSDC_TOTALS_TOO_LONG, 0U, GSDC_DIRECTION_IN, 12U},
+        {3U, {0U, 0U, 0U}, {2U, 1U, 1U}, GSDC_TOTALS_TOO_LONG, 0U, GSDC_DIRECTION_OUT, 8U},
+    };
+    gsdc_node_params_t params = small_gateway();
+    gsdc_totals_t totals = gsdc_node_totals(&params, 3U, input, output);
+    size_t i;
+    CHECK(totals.fault == GSDC_TOTALS_OK);
+    CHECK(gsdc_totals_input_len(&totals) == 10U && gsdc_totals_output_len(&totals) == 6U);
+    for (i = 0U; i < 6U; i++) {
+        const small_refused_t *r = &refused[i];
+        totals = gsdc_node_totals(&params, r->count, r->input, r->output);
+        CHECK(totals.fault == r->fault);
+        CHECK(totals.node == r->node && totals.direction == r->direction);
+        CHECK(totals.len == r->len);
+        CHECK(totals.input_words == 0U && totals.output_words == 0U);
+    }
+    totals = gsdc_node_totals(&params, 4U, input, output);
+    CHECK(totals.count == 4U);
+    totals = gsdc_node_totals(&params, 3U, refused[2].input, output);
+    CHECK(totals.words == 5U);
+}
+
+/* A count its parameter allows is still refused past the nodes there are. */
+static void a_count_past_the_nodes_is_refused(void)
+{
+    static const gsdc_prm_field_t wide = {0U, GSDC_PRM_UNSIGNED8, 0U, 0U, 1U, 5U, 1U};
+    static const uint8_t none[3] = {0U, 0U, 0U};
+    gsdc_node_params_t params = small_gateway();
+    gsdc_totals_t totals;
+    params.node_count = &wide;
+    CHECK(gsdc_node_totals(&params, 3U, none, none).fault == GSDC_TOTALS_OK);
+    totals = gsdc_node_totals(&params, 4U, none, none);
+    CHECK(totals.fault == GSDC_TOTALS_NODE_COUNT && totals.count == 4U);
+}
+
+static void data_offsets_follow_the_nodes_in_use(void)
+{
+    static const uint8_t words[3] = {2U, 0U, 3U};
+    gsdc_node_params_t params = small_gateway();
+    size_t offset = 99U;
+    CHECK(gsdc_node_offset(&params, 3U, words, 5U, &offset) && offset == 0U);
+    CHECK(gsdc_node_offset(&params, 3U, words, 7U, &offset) && offset == 4U);
+    offset = 99U;
+    CHECK(!gsdc_node_offset(&params, 2U, words, 7U, &offset));
+    CHECK(!gsdc_node_offset(&params, 3U, words, 4U, &offset));
+    CHECK(!gsdc_node_offset(&params, 3U, words, 8U, &offset));
+    CHECK(offset == 99U);
+}
+
+/* The count, then every node's input words, then every node's output
+ * words: the first fault in that order is the one reported, and a refused
+ * write writes nothing. */
+static void nodes_read_and_write_in_order(void)
+{
+    static const uint8_t input[3] = {1U, 2U, 3U};
+    static const uint8_t output[3] = {4U, 0U, 4U};
+    static const uint8_t bad_output[3] = {4U, 5U, 4U};
+    static const uint8_t written[8] = {3U, 1U, 2U, 3U, 4U, 0U, 4U, 0xEEU};
+    gsdc_node_params_t params = small_gateway();
+    uint8_t user_prm[8] = {0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU};
+    uint8_t count = 0U;
+    uint8_t read_in[3] = {0U, 0U, 0U};
+    uint8_t read_out[3] = {0U, 0U, 0U};
+    gsdc_prm_result_t result = gsdc_nodes_put(&params, 3U, input, bad_output, user_prm, 8U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 5U && result.value == 5U);
+    CHECK(user_prm[0] == 0xEEU && user_prm[1] == 0xEEU);
+    CHECK(gsdc_nodes_put(&params, 3U, input, output, user_prm, 8U).fault == GSDC_PRM_OK);
+    CHECK(same_bytes(user_prm, written, 8U));
+    CHECK(gsdc_nodes_check(&params, user_prm, 8U).fault == GSDC_PRM_OK);
+    gsdc_nodes_get(&params, user_prm, &count, read_in, read_out);
+    CHECK(count == 3U && same_bytes(read_in, input, 3U) && same_bytes(read_out, output, 3U));
+    user_prm[2] = 9U; /* an input word */
+    user_prm[4] = 9U; /* an output word, before it in the telegram */
+    result = gsdc_nodes_check(&params, user_prm, 8U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 2U);
+    result = gsdc_nodes_check(&params, user_prm, 6U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 2U);
+    user_prm[2] = 2U;
+    result = gsdc_nodes_check(&params, user_prm, 6U);
+    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED && result.offset == 4U);
+    user_prm[4] = 4U;
+    result = gsdc_nodes_check(&params, user_prm, 6U);
+    CHECK(result.fault == GSDC_PRM_LENGTH && result.expected == 7U && result.found == 6U);
+}
+
+/* Type, node and code after the header; nodes 5 to 7; type 1 has one-byte
+ * codes, of which 3 is the only one, type 9 a 16-bit code. */
+static bool code_three(uint16_t value)
+{
+    return value == 3U;
+}
+
+static gsdc_diag_layout_t small_diag(void)
+{
+    static const gsdc_diag_type_t types[2] = {{1U, 4U, code_three}, {9U, 5U, NULL}};
+    gsdc_diag_layout_t layout;
+    layout.type_at = 1U;
+    layout.node_at = 2U;
+    layout.code_at = 3U;
+    layout.first_node = 5U;
+    layout.last_node = 7U;
+    layout.types = types;
+    layout.type_count = 2U;
+    return layout;
+}
+
+static void diagnosis_blocks_are_read_as_long_as_their_header_says(void)
+{
+    static const uint8_t word[6] = {5U, 9U, 6U, 0xBEU, 0xEFU, 0x11U};
+    static const uint8_t byte_code[4] = {4U, 1U, 7U, 3U};
+    gsdc_diag_layout_t layout = small_diag();
+    uint8_t block[6] = {0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU};
+    uint8_t kind = 0U;
+    uint8_t node = 0U;
+    uint16_t code = 0U;
+    size_t len = 0U;
+    gsdc_diag_result_t result;
+    CHECK(gsdc_diag_encode(&layout, 9U, 6U, 0xBEEFU, block, &len).fault == GSDC_DIAG_OK);
+    CHECK(len == 5U && same_bytes(block, word, 5U) && block[5] == 0xEEU);
+    CHECK(gsdc_diag_decode(&layout, word, 6U, &kind, &node, &code).fault == GSDC_DIAG_OK);
+    CHECK(kind == 9U && node == 6U && code == 0xBEEFU);
+    CHECK(gsdc_diag_encode(&layout, 1U, 7U, 3U, block, &len).fault == GSDC_DIAG_OK);
+    CHECK(len == 4U && same_bytes(block, byte_code, 4U));
+    CHECK(gsdc_diag_decode(&layout, byte_code, 4U, &kind, &node, &code).fault == GSDC_DIAG_OK);
+    CHECK(kind == 1U && node == 7U && code == 3U);
+    /* A type-1 block with a fifth byte: its header says 5, type 1 has 4. */
+    block[0] = 5U;
+    result = gsdc_diag_decode(&layout, block, 5U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_LENGTH && result.expected == 4U && result.found == 5U);
+    block[0] = 4U;
+    block[3] = 2U;
+    result = gsdc_diag_decode(&layout, block, 4U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_CODE && result.kind == 1U && result.value == 2U);
+    block[1] = 2U;
+    result = gsdc_diag_decode(&layout, block, 4U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_TYPE && result.value == 2U);
+    block[1] = 1U;
+    block[2] = 8U;
+    result = gsdc_diag_decode(&layout, block, 4U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_NODE && result.value == 8U);
+    /* The header says 2 bytes: no room for the node. */
+    block[0] = 2U;
+    result = gsdc_diag_decode(&layout, block, 4U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_SHORT && result.expected == 3U && result.found == 2U);
+    /* The header says 4 bytes; 3 came. */
+    block[0] = 4U;
+    result = gsdc_diag_decode(&layout, block, 3U, &kind, &node, &code);
+    CHECK(result.fault == GSDC_DIAG_SHORT && result.expected == 4U && result.found == 3U);
+    CHECK(kind == 1U && node == 7U && code == 3U); /* untouched by the refusals */
+}
+
+/* A block whose code is not right after the node: the byte between is 0. */
+static void an_encoded_block_is_0_where_it_holds_nothing(void)
+{
+    static const gsdc_diag_type_t types[1] = {{1U, 5U, code_three}};
+    static const uint8_t expected[5] = {5U, 1U, 6U, 0U, 3U};
+    gsdc_diag_layout_t layout = small_diag();
+    /* Room for a 16-bit code at byte 4, which compilers see the encoder
+     * could write, though this layout's one type has a one-byte code. */
+    uint8_t block[6] = {0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU, 0xEEU};
+    size_t len = 0U;
+    layout.code_at = 4U;
+    layout.types = types;
+    layout.type_count = 1U;
+    CHECK(gsdc_diag_encode(&layout, 1U, 6U, 3U, block, &len).fault == GSDC_DIAG_OK);
+    CHECK(len == 5U && same_bytes(block, expected, 5U) && block[5] == 0xEEU);
+}
+
 typedef struct {
     const char *name;
     void (*run)(void);
@@ -303,6 +594,20 @@ static const test_t tests[] = {
      an_area_across_two_bytes_has_its_first_bit_lowest},
     {"a_block_too_short_loses_the_bits_past_its_end",
      a_block_too_short_loses_the_bits_past_its_end},
+    {"bit_areas_share_a_byte", bit_areas_share_a_byte},
+    {"bits_beyond_the_range_are_refused", bits_beyond_the_range_are_refused},
+    {"unsigned16_is_big_endian_and_within_a_byte_s_values",
+     unsigned16_is_big_endian_and_within_a_byte_s_values},
+    {"a_field_past_the_end_is_a_length_error", a_field_past_the_end_is_a_length_error},
+    {"config_bytes_of_no_module_are_refused", config_bytes_of_no_module_are_refused},
+    {"totals_count_the_nodes_in_use_within_the_limits",
+     totals_count_the_nodes_in_use_within_the_limits},
+    {"a_count_past_the_nodes_is_refused", a_count_past_the_nodes_is_refused},
+    {"data_offsets_follow_the_nodes_in_use", data_offsets_follow_the_nodes_in_use},
+    {"nodes_read_and_write_in_order", nodes_read_and_write_in_order},
+    {"diagnosis_blocks_are_read_as_long_as_their_header_says",
+     diagnosis_blocks_are_read_as_long_as_their_header_says},
+    {"an_encoded_block_is_0_where_it_holds_nothing", an_encoded_block_is_0_where_it_holds_nothing},
 };
 
 int main(void)
