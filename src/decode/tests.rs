@@ -24,7 +24,7 @@ fn load(name: &str, text: &str) -> Ir {
 }
 
 fn decode(ir: &Ir, module: &str, direction: Direction, hex: &str) -> Telegram {
-    let module = find_module(ir, module).unwrap();
+    let module = find_module(ir, module, direction).unwrap();
     let hex = Hex::parse(hex).unwrap();
     telegram(ir, module, direction, &hex, &MappingInForce::defaults()).unwrap()
 }
@@ -166,7 +166,7 @@ fn md810_ppo5_has_twelve_pzd_words_after_the_pkw() {
 #[test]
 fn a_telegram_of_the_wrong_length_is_refused() {
     let ir = md810();
-    let module = find_module(&ir, "PPO1").unwrap();
+    let module = find_module(&ir, "PPO1", Out).unwrap();
     let hex = Hex::parse("10F0 0800 0000 0000").unwrap();
     let d = telegram(&ir, module, Out, &hex, &MappingInForce::defaults()).unwrap_err();
     assert_eq!(d.code, "E412");
@@ -292,7 +292,7 @@ fn mv810_control_and_status_words_and_mapped_words() {
     // Status: forward running, ready, motor 2, control mode 2 (communication).
     let mut mapping = MappingInForce::defaults();
     mapping.give(&ir, "pzd_in=3").unwrap();
-    let module = find_module(&ir, "PKW + 2 PZD").unwrap();
+    let module = find_module(&ir, "PKW + 2 PZD", In).unwrap();
     let hex = Hex::parse("0000 0000 0000 0000 0461 1388").unwrap();
     let t = telegram(&ir, module, In, &hex, &mapping).unwrap();
     let field = |name: &str| {
@@ -391,7 +391,7 @@ fn md810_prm_with_the_manuals_values_maps_the_telegram() {
     assert_eq!(meaning("Index1"), "F0-08");
     assert_eq!(meaning("PZD3(slaver->master)"), "F0-00");
 
-    let module = find_module(&ir, "PPO2").unwrap();
+    let module = find_module(&ir, "PPO2", Out).unwrap();
     let telegram_hex = Hex::parse(&"0000 ".repeat(10)).unwrap();
     let t = telegram(&ir, module, Out, &telegram_hex, &prm.mapping()).unwrap();
     let pzd3 = t.words[6].carries.as_ref().unwrap();
