@@ -612,7 +612,7 @@ fn block_rows(g: &Gateway, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
         text(bytes(lang, at(0), at(0))),
         text(lang.f(
             format!("header: the block's length, {}", by_len.join(" or ")),
-            format!("块头：块长度 {}", by_len.join("或")),
+            format!("块头：块长度 {}", by_len.join("或 ")),
         )),
     ]];
     let listed: Vec<u8> = d
