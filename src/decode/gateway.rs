@@ -7,7 +7,7 @@ use super::hex::Hex;
 use super::mapping::{MappingInForce, ValueSource};
 use super::telegram::{DecodedWord, Telegram};
 use crate::diag::Diagnostic;
-use crate::ir::gateway::{DataOrder, DiagCode, DiagType, Diagnosis, Gateway, Module, Param};
+use crate::ir::gateway::{DataOrder, DiagCode, DiagType, Diagnosis, Gateway, Module, Node, Param};
 use crate::ir::Direction;
 use crate::pkw::support::gateway as firmware;
 use serde::Serialize;
@@ -77,7 +77,7 @@ pub(super) fn totals(g: &Gateway, mapping: &MappingInForce) -> NodeTotals {
 }
 
 /// The nodes in use: the first `count`.
-fn in_use(g: &Gateway, count: u16) -> impl Iterator<Item = &crate::ir::gateway::Node> {
+fn in_use(g: &Gateway, count: u16) -> impl Iterator<Item = &Node> {
     g.nodes.iter().take(count.into())
 }
 
@@ -255,7 +255,7 @@ pub(super) fn diagnosis(
     let Some(&header) = hex.bytes().first() else {
         return Err(hex
             .exactly(lengths[0].into(), "the diagnosis block", &help)
-            .expect_err("no bytes are never enough"));
+            .expect_err("an empty block is shorter than any type's"));
     };
     check_header(header, &lengths, &help).map_err(|e| e.at_opt(hex.span(0)))?;
     let block = hex.exactly(header.into(), "the diagnosis block", &help)?;

@@ -496,7 +496,7 @@ fn md810_gateway_in_bit_areas() -> Ir {
 /// User_Prm_Data of a gateway with one byte per parameter: the count, then
 /// TPDO and RPDO words of slave 1, slave 2, ...; the other slaves 0.
 fn gateway_prm(count: u8, input: &[u8], output: &[u8]) -> Hex {
-    let mut bytes = vec![0u8; 61];
+    let mut bytes = [0u8; 61];
     bytes[0] = count;
     for (i, &w) in input.iter().enumerate() {
         bytes[1 + 2 * i] = w;
@@ -610,7 +610,7 @@ fn gateway_prm_the_card_refuses() {
 #[test]
 fn gateway_prm_in_bit_areas() {
     let ir = md810_gateway_in_bit_areas();
-    let mut bytes = vec![0u8; 31];
+    let mut bytes = [0u8; 31];
     bytes[..3].copy_from_slice(&[2, 0x98, 0x08]);
     let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
     let prm = prm(&ir, &Hex::parse(&hex.concat()).unwrap()).unwrap();
@@ -664,22 +664,19 @@ fn gateway_module_words_are_named_after_their_nodes() {
     assert_eq!(g.source, ValueSource::ParameterTelegram);
     assert!(g.attributed);
     assert_eq!((g.nodes.node_count, g.nodes.input_words), (2, 16));
-    let named: Vec<(usize, &str, u16, Option<(u8, u16)>)> = t
-        .words
-        .iter()
-        .map(|w| {
-            (
-                w.offset,
-                w.name.as_str(),
-                w.value,
-                w.node.map(|n| (n.node, n.word)),
-            )
-        })
-        .collect();
-    assert_eq!(named[0], (0, "word 1", 1, Some((1, 1))));
-    assert_eq!(named[7], (14, "word 8", 8, Some((1, 8))));
-    assert_eq!(named[8], (16, "word 9", 9, Some((2, 1))));
-    assert_eq!(named[15], (30, "word 16", 16, Some((2, 8))));
+    let named = |i: usize| {
+        let w = &t.words[i];
+        (
+            w.offset,
+            w.name.as_str(),
+            w.value,
+            w.node.map(|n| (n.node, n.word)),
+        )
+    };
+    assert_eq!(named(0), (0, "word 1", 1, Some((1, 1))));
+    assert_eq!(named(7), (14, "word 8", 8, Some((1, 8))));
+    assert_eq!(named(8), (16, "word 9", 9, Some((2, 1))));
+    assert_eq!(named(15), (30, "word 16", 16, Some((2, 8))));
     assert!(t.pkw.is_none() && t.words.iter().all(|w| w.carries.is_none()));
 
     // The 8 RPDO words of slave 1: OUTPUT 8 words carries them all.
