@@ -437,6 +437,259 @@ fn snapshot_mv810_status_word() {
     insta::assert_snapshot!("mv810_status_word", out);
 }
 
+// ---------------------------------------------------------------------------
+// The gateway (MD810 manual chapter 2)
+
+const GATEWAY: &str = "descriptions/md810-gateway.toml";
+
+/// User_Prm_Data of 2.4 step 5's totals, TPDO 120 words and RPDO 64: 15
+/// slaves of 8 TPDO words, the first 8 of them with 8 RPDO words.
+fn manual_example_prm() -> String {
+    format!(
+        "0F{}{}{}",
+        "0808".repeat(8),
+        "0800".repeat(7),
+        "0000".repeat(15)
+    )
+}
+
+#[test]
+fn gateway_prm_as_a_table() {
+    let out = decoded(&[GATEWAY, "--prm", &manual_example_prm()]);
+    assert!(out.starts_with("User_Prm_Data, 61 bytes\n"), "{out}");
+    assert_eq!(
+        cells(line(&out, "0  Number of CANopen slaves")),
+        [
+            "0",
+            "Number of CANopen slaves",
+            "Unsigned8",
+            "0F",
+            "15",
+            "1"
+        ]
+    );
+    assert_eq!(
+        cells(line(&out, "29  Slave 15 TPDO words")),
+        ["29", "Slave 15 TPDO words", "Unsigned8", "08", "8", "0"]
+    );
+    assert_eq!(line(&out, "Gateway nodes"), "Gateway nodes");
+    assert_eq!(cells(line(&out, "in use")), ["in use", "15"]);
+    assert_eq!(
+        cells(line(&out, "input ")),
+        ["input", "120 words, 240 bytes (at most 244)"]
+    );
+    assert_eq!(
+        cells(line(&out, "output ")),
+        ["output", "64 words, 128 bytes (at most 244)"]
+    );
+    assert!(!out.contains("refused"), "{out}");
+}
+
+#[test]
+fn gateway_prm_with_a_value_out_of_range() {
+    let mut prm = manual_example_prm();
+    // Slave 2's TPDO words (byte 3): 9, one more than two PDOs carry.
+    prm.replace_range(6..8, "09");
+    let out = decoded(&[GATEWAY, "--prm", &prm]);
+    assert_eq!(
+        cells(line(&out, "3  Slave 2 TPDO words")),
+        [
+            "3",
+            "Slave 2 TPDO words",
+            "Unsigned8",
+            "09",
+            "9",
+            "not allowed (0 to 8)",
+            "0"
+        ]
+    );
+    assert_eq!(
+        cells(line(&out, "refused")),
+        ["refused", "Slave 2 TPDO words: 9 is not allowed (0 to 8)"]
+    );
+}
+
+#[test]
+fn gateway_diagnosis_as_a_table_and_as_json() {
+    let out = decoded(&[GATEWAY, "--diag", "05 04 02 12 34"]);
+    assert!(
+        out.starts_with(
+            "Diagnosis block, 5 bytes: 05 04 02 12 34 (header 0x05: device-related, 5 bytes)\n"
+        ),
+        "{out}"
+    );
+    assert_eq!(
+        cells(line(&out, "1  type")),
+        ["1", "type", "04", "4", "Drive reports fault"]
+    );
+    assert_eq!(cells(line(&out, "2  node")), ["2", "node", "02", "2"]);
+    assert_eq!(
+        cells(line(&out, "3-4  code")),
+        ["3-4", "code", "1234", "4660", "Drive fault code"]
+    );
+    let doc = json(&[GATEWAY, "--diag", "04 03 1F 20"]);
+    let g = &doc["diagnosis"]["gateway"];
+    assert_eq!(doc["diagnosis"]["areas"], serde_json::json!([]));
+    assert_eq!(g["type"]["text"], "CANopen network fault");
+    assert_eq!(g["node"]["value"], 31);
+    assert_eq!(g["node"]["allowed"], false);
+    assert_eq!(g["node"]["range"], serde_json::json!([1, 30]));
+    assert_eq!(g["code"]["value"], 32);
+    assert_eq!(g["code"]["text"], "CANopen slave dropped out while running");
+    let out = decoded(&[GATEWAY, "--diag", "04 03 1F 20"]);
+    assert_eq!(
+        cells(line(&out, "2  node")),
+        ["2", "node", "1F", "31", "not a node (1 to 30)"]
+    );
+}
+
+/// Slave 1 and 2 send 8 words each: INPUT 16 words is the whole input.
+#[test]
+fn gateway_module_words_named_after_their_nodes_in_json() {
+    let prm = format!("02080808{}", "00".repeat(57));
+    let words = (1..=16).map(|w| format!("{w:04X}")).collect::<Vec<_>>();
+    let mut args = vec![
+        GATEWAY,
+        "--prm",
+        &prm,
+        "--module",
+        "input 16 words",
+        "--direction",
+        "in",
+    ];
+    args.extend(words.iter().map(String::as_str));
+    let doc = json(&args);
+    let t = &doc["telegram"];
+    assert_eq!(t["module"], "INPUT 16 words");
+    assert_eq!(t["len"], 32);
+    assert_eq!(t["gateway"]["source"], "parameter_telegram");
+    assert_eq!(t["gateway"]["attributed"], true);
+    assert_eq!(t["gateway"]["nodes"]["input_words"], 16);
+    assert_eq!(t["words"][8]["name"], "word 9");
+    assert_eq!(t["words"][8]["value"], 9);
+    assert_eq!(
+        t["words"][8]["node"],
+        serde_json::json!({ "node": 2, "word": 1 })
+    );
+    assert_eq!(
+        t["words"][7]["node"],
+        serde_json::json!({ "node": 1, "word": 8 })
+    );
+    assert_eq!(doc["prm"]["gateway"]["node_count"], 2);
+    assert_eq!(doc["prm"]["params"][0]["range"], serde_json::json!([1, 30]));
+    assert_eq!(doc["prm"]["params"][0]["data_type"], "Unsigned8");
+    // Under the defaults no slave sends a word: numbered, not named.
+    let out = decoded(&[
+        GATEWAY,
+        "--module",
+        "INPUT 1 word",
+        "--direction",
+        "in",
+        "0001",
+    ]);
+    assert_eq!(cells(line(&out, "0  word 1")), ["0", "word 1", "0001", "1"]);
+    assert!(out.ends_with("Under the defaults the 1 node(s) in use send 0 word(s), fewer than this module's 1: the card refuses a configuration with this module.\n"), "{out}");
+}
+
+#[test]
+fn gateway_errors_point_into_their_argument() {
+    let err = fails(
+        &[
+            GATEWAY,
+            "--module",
+            "INPUT 16 words",
+            "--direction",
+            "out",
+            "0000",
+        ],
+        "E413",
+        "--module:1:1",
+    );
+    assert!(err.contains("^^^^^^^^^^^^^^ an input module"), "{err}");
+    assert!(
+        err.contains("help: the output modules (--direction out) are: OUTPUT 1 word,"),
+        "{err}"
+    );
+    let err = fails(&[GATEWAY, "--diag", "04 04 02 12"], "E417", "--diag:1:1");
+    assert!(
+        err.contains("a block of type 4 (Drive reports fault) is 5 bytes"),
+        "{err}"
+    );
+    let err = fails(&[GATEWAY, "--diag", "04 01 02"], "E412", "--diag:1:9");
+    assert!(
+        err.contains("4 bytes for type 1 or 3, 5 bytes for type 4"),
+        "{err}"
+    );
+    fails(&[GATEWAY, "--diag", "C4 01 02 23"], "E417", "--diag:1:1");
+    let err = fails(&[GATEWAY, "--prm", "0F"], "E412", "--prm:1:3");
+    assert!(
+        err.contains(
+            "the 61 gateway parameters from Number of CANopen slaves to Slave 30 RPDO words"
+        ),
+        "{err}"
+    );
+    let err = fails(
+        &[
+            GATEWAY,
+            "--module",
+            "INPUT 1 word",
+            "--direction",
+            "in",
+            "--mapping",
+            "pzd_in=1",
+            "0000",
+        ],
+        "E415",
+        "--mapping:1:1",
+    );
+    assert!(
+        err.contains("help: the description has no mappings"),
+        "{err}"
+    );
+}
+
+/// The gateway with each slave's TPDO words in bits 0-3 and RPDO words in
+/// bits 4-7 of one byte, written beside the test's other scratch files.
+fn gateway_in_bit_areas() -> std::path::PathBuf {
+    let text =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(GATEWAY))
+            .unwrap()
+            .replacen(
+                "name = \"Slave {n} TPDO words\"\ntype = \"Unsigned8\"",
+                "name = \"Slave {n} TPDO words\"\nbits = [0, 3]",
+                1,
+            )
+            .replacen(
+                "name = \"Slave {n} RPDO words\"\ntype = \"Unsigned8\"",
+                "name = \"Slave {n} RPDO words\"\nbits = [4, 7]",
+                1,
+            );
+    assert_eq!(text.matches("bits = [").count(), 2);
+    let dir = std::env::temp_dir().join(format!("gsdc-decode-bits-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("md810-gateway-bits.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// The tables as a person sees them, reviewed line by line: bit areas
+/// sharing bytes, one not allowed, the card's refusal, and a drive fault.
+#[test]
+fn snapshot_gateway_bit_areas_and_drive_fault() {
+    let path = gateway_in_bit_areas();
+    // 2 slaves; slave 1 sends 8 and receives 9 words (byte 1 = 0x98), slave 2 sends 8.
+    let prm = format!("02 98 08{}", " 00".repeat(28));
+    let out = decoded(&[
+        path.to_str().unwrap(),
+        "--prm",
+        &prm,
+        "--diag",
+        "05 04 02 12 34",
+    ]);
+    let _ = std::fs::remove_dir_all(path.parent().unwrap());
+    insta::assert_snapshot!("gateway_bit_areas_and_drive_fault", out);
+}
+
 /// The words of a shell command line: blanks separate them, single quotes
 /// keep blanks inside one (all the documents' examples need).
 fn shell_words(line: &str) -> Vec<String> {
@@ -478,5 +731,5 @@ fn the_documents_examples_are_what_gsdc_prints() {
             examples += 1;
         }
     }
-    assert_eq!(examples, 4);
+    assert_eq!(examples, 6);
 }

@@ -8,7 +8,12 @@ mod descriptions;
 use gsdc::{Artifact, ArtifactKind};
 use std::process::Command;
 
-const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "mv810-pnet02.toml", "9kdp1.toml"];
+const DESCRIPTIONS: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
+];
 
 fn datasheet(name: &str, kind: ArtifactKind) -> String {
     let artifact: Artifact = gsdc::document(&descriptions::load(name))
@@ -172,7 +177,8 @@ fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
     for name in DESCRIPTIONS {
         let html = datasheet(name, ArtifactKind::DatasheetHtml);
         let figures = figures(&html);
-        assert!(figures.len() >= 3, "{name}");
+        // The gateway's one diagram (its example's data) in two languages.
+        assert!(figures.len() >= 2, "{name}");
         for f in &figures {
             for (i, (class, [x, y, w, h], texts)) in f.groups.iter().enumerate() {
                 assert!(
@@ -270,6 +276,171 @@ fn a_status_word_is_drawn_bit_by_bit() {
         widest > 2.0 * narrowest,
         "the two-bit field spans two columns"
     );
+}
+
+// ---------------------------------------------------------------------------
+// The gateway (MD810 manual chapter 2)
+
+/// The rows of the Markdown table whose caption contains `caption`, the
+/// first such table; each row as its cells.
+fn table_rows(markdown: &str, caption: &str) -> Vec<Vec<String>> {
+    let start = markdown
+        .lines()
+        .position(|l| l.starts_with('*') && l.contains(caption))
+        .unwrap_or_else(|| panic!("no table {caption:?}"));
+    markdown
+        .lines()
+        .skip(start + 4)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            l.trim_matches('|')
+                .split(" | ")
+                .map(|c| c.trim().to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// Chapter 2's facts: 2.2.1 (244 bytes each way), 2.4 step 4 (30 slaves,
+/// the bridge itself slave 1) and step 5 (INPUT 120 words, OUTPUT 64), and
+/// 2.5's table of types, codes and block lengths.
+#[test]
+fn the_gateway_datasheet_is_chapter_2() {
+    let md = datasheet("md810-gateway.toml", ArtifactKind::DatasheetMarkdown);
+    let facts = table_rows(&md, "The gateway to CANopen");
+    let fact = |item: &str| {
+        facts
+            .iter()
+            .find(|r| r[0] == item)
+            .unwrap_or_else(|| panic!("{item}"))[1]
+            .clone()
+    };
+    assert_eq!(fact("Second bus"), "CANopen");
+    assert_eq!(fact("Node numbers"), "1 to 30");
+    assert_eq!(fact("The gateway's own node"), "1");
+    assert_eq!(fact("Input bytes at most (Max_Input_Len)"), "244");
+    assert_eq!(fact("Output bytes at most (Max_Output_Len)"), "244");
+    assert_eq!(fact("Modules at most (Max_Module)"), "20");
+    assert!(fact("The nodes' words in the data").ends_with("**the description's own choice**"));
+
+    // The example: 120 words in, 64 out, in fewest modules.
+    let nodes = table_rows(&md, "The example's nodes");
+    assert_eq!(nodes.len(), 16, "15 slaves and the total");
+    assert_eq!(nodes[15], ["all", "120", "240 bytes", "64", "128 bytes"]);
+    assert_eq!(nodes[8], ["9", "8", "bytes 128-143", "0", "—"]);
+    let modules = table_rows(&md, "The modules the master plugs for the example");
+    assert_eq!(
+        modules,
+        [
+            [
+                "input, nodes → master",
+                "120",
+                "INPUT 16 words × 7, INPUT 8 words",
+                "`5F 5F 5F 5F 5F 5F 5F 57`"
+            ],
+            [
+                "output, master → nodes",
+                "64",
+                "OUTPUT 16 words × 4",
+                "`6F 6F 6F 6F`"
+            ]
+        ]
+    );
+    // Its User_Prm_Data, read back by gsdc decode: the totals, nothing refused.
+    let prm: String = table_rows(&md, "User_Prm_Data of the example")
+        .iter()
+        .map(|r| r[1].trim_matches('`').to_string())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let ir = descriptions::load("md810-gateway.toml");
+    let hex = gsdc::decode::Hex::parse(&prm).unwrap();
+    let decoded = gsdc::decode::prm(&ir, &hex).unwrap();
+    let totals = decoded.gateway.unwrap();
+    assert_eq!(
+        (
+            totals.node_count,
+            totals.input_len,
+            totals.output_len,
+            totals.refused
+        ),
+        (15, 240, 128, None)
+    );
+
+    // 2.5: each type and code with its block, decimal codes as hex bytes.
+    let types = table_rows(&md, "Diagnosis types and codes");
+    let blocks: Vec<(&str, &str, &str)> = types
+        .iter()
+        .map(|r| (r[0].as_str(), r[2].as_str(), r[4].as_str()))
+        .collect();
+    assert_eq!(
+        blocks,
+        [
+            ("1", "35 (0x23)", "`04 01 02 23`"),
+            ("1", "34 (0x22)", "`04 01 02 22`"),
+            ("3", "32 (0x20)", "`04 03 02 20`"),
+            ("4", "hhll: 16 bits, high byte first", "`05 04 02 hh ll`"),
+        ]
+    );
+    let bytes = table_rows(&md, "The diagnosis, byte by byte");
+    assert_eq!(
+        bytes[3..],
+        [
+            [
+                "byte 6",
+                "header: the block's length, 04 (types 1 and 3) or 05 (type 4)"
+            ],
+            ["byte 7", "the type (table below)"],
+            ["byte 8", "the CANopen node, 1 to 30"],
+            [
+                "byte 9",
+                "types 1 and 3: the code; type 4: Drive fault code, high byte"
+            ],
+            ["byte 10", "type 4: Drive fault code, low byte"],
+        ]
+    );
+    // The manual's own words in Chinese.
+    for zh in [
+        "| 1 | 参数错误 | 35 (0x23) | 参数PDO长度与变频器不匹配 | `04 01 02 23` |",
+        "| 3 | CANopen 网络故障 | 32 (0x20) | 运行中 CANopen 从站掉线 | `04 03 02 20` |",
+        "| 4 | 变频报故障 | hhll：16 位，高字节在前 | 变频器故障 | `05 04 02 hh ll` |",
+    ] {
+        assert!(md.contains(zh), "{zh}");
+    }
+}
+
+/// The example's data as drawn: one box per slave that sends (15) and per
+/// slave that receives (8), each with its bytes, in ascending slave number.
+#[test]
+fn the_gateway_example_is_drawn_slave_by_slave() {
+    let html = datasheet("md810-gateway.toml", ArtifactKind::DatasheetHtml);
+    let nodes: Vec<Figure> = figures(&html)
+        .into_iter()
+        .filter(|f| f.kind == "nodes")
+        .collect();
+    assert_eq!(nodes.len(), 2, "English and Chinese");
+    let boxes: Vec<&[f64; 4]> = nodes[0]
+        .groups
+        .iter()
+        .filter(|(c, _, _)| c == "box pzd")
+        .map(|(_, r, _)| r)
+        .collect();
+    assert_eq!(boxes.len(), 15 + 8);
+    // Eight to a row: slave 9's input box starts the second row, and the
+    // output lane lies below both input rows.
+    assert_eq!(boxes[8][0], boxes[0][0]);
+    assert!(boxes[8][1] > boxes[0][1]);
+    assert!(boxes[15][1] > boxes[8][1]);
+    let svg = &html[html.find("class=\"nodes\"").unwrap()..];
+    let svg = &svg[..svg.find("</svg>").unwrap()];
+    for label in [
+        "node 1",
+        "node 15",
+        "bytes 224-239",
+        "bytes 112-127",
+        "8 words",
+    ] {
+        assert!(svg.contains(&format!(">{label}</text>")), "{label}");
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -21,7 +21,7 @@ const HEIGHT: u32 = 1400;
 
 /// What each description's datasheet must show in English: table captions
 /// and texts, among them the worked PKW examples gsdc computes.
-const EXPECTED: [(&str, &[&str]); 3] = [
+const EXPECTED: [(&str, &[&str]); 4] = [
     (
         "md810dp.toml",
         &[
@@ -56,7 +56,26 @@ const EXPECTED: [(&str, &[&str]); 3] = [
             "0x1000 (4096)",
         ],
     ),
+    (
+        "md810-gateway.toml",
+        &[
+            "The gateway to CANopen",
+            "INPUT 16 words × 7, INPUT 8 words",
+            "5F 5F 5F 5F 5F 5F 5F 57",
+            "6F 6F 6F 6F",
+            "0F 08 08 08 08 08 08 08 08 08 08 08 08 08 08 08",
+            "04 01 02 23",
+            "05 04 02 hh ll",
+            "Parameter PDO length does not match the drive",
+            "Number of CANopen slaves",
+        ],
+    ),
 ];
+
+/// The gateway's diagram of its example: a box per slave that sends (15)
+/// and per slave that receives (8), as the manual's totals (2.4 step 5)
+/// need: 120 words in, 64 out.
+const GATEWAY_NODE_BOXES: usize = 15 + 8;
 
 #[test]
 fn datasheets_render_in_chromium_as_a_reader_sees_them() {
@@ -216,6 +235,7 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
     };
     let of_kind = |kind: &'static str| figures.iter().filter(move |f| f["kind"] == json!(kind));
     let mut overviews = of_kind("overview");
+    // A bus with modules of words both ways (a gateway's PROFIBUS has none).
     for expected in [
         ir.profibus
             .as_ref()
@@ -226,6 +246,7 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
     ]
     .into_iter()
     .flatten()
+    .filter(|&words| words > 0)
     {
         let figure = overviews
             .next()
@@ -287,6 +308,14 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
     );
     for figure in bits {
         bit_by_bit(name, figure);
+    }
+    // A gateway's example: its data slave by slave.
+    let nodes: Vec<&Value> = of_kind("nodes").collect();
+    if ir.gateway.is_some() {
+        assert_eq!(nodes.len(), 1, "{name} {lang}: the example's diagram");
+        assert_eq!(boxes(nodes[0]), GATEWAY_NODE_BOXES, "{name} {lang}");
+    } else {
+        assert!(nodes.is_empty(), "{name} {lang}");
     }
 }
 

@@ -3,8 +3,8 @@
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
 use gsdc::decode::{
-    self, Carried, Channel, DecodedWord, DiagnosisBlock, Hex, MappingInForce, Pkw, PkwSide, Prm,
-    Telegram, ValueSource,
+    self, Carried, Channel, DecodedWord, DiagnosisBlock, GatewayData, GatewayDiagnosis, Hex,
+    MappingInForce, NodeTotals, Pkw, PkwSide, Prm, Telegram, ValueSource,
 };
 use gsdc::ir::{Direction, Ir};
 use gsdc::{Diagnostic, Source};
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 #[command(
     group = clap::ArgGroup::new("data").required(true).multiple(true).args(["telegram", "prm", "diag"]),
     override_usage = "gsdc decode <DESCRIPTION> [--module <NAME> --direction <out|in> [--mapping <KIND=VALUE,...>]... <HEX>...] [--prm <HEX>] [--diag <HEX>] [--format <table|json>]",
-    after_help = "Examples:\n  gsdc decode descriptions/md810dp.toml --module PPO1 --direction out 10F0 0800 0000 0000 0000 0000\n  gsdc decode descriptions/mv810-pnet02.toml --module 'PKW + 2 PZD' --direction in --mapping pzd_in=3 '01 02 00 03 2B 02 00 01 0461 1388'\n  gsdc decode descriptions/md810dp.toml --diag '03 00 34'\n\nHEX is bytes in hex, with or without blanks. --mapping KIND=VALUE,... sets a kind of mapping\n(pzd_out, pzd_in, dpv1_index, settings) entry by entry in order, a value empty to keep its default;\nwithout it (or --prm) the description's defaults are in force."
+    after_help = "Examples:\n  gsdc decode descriptions/md810dp.toml --module PPO1 --direction out 10F0 0800 0000 0000 0000 0000\n  gsdc decode descriptions/mv810-pnet02.toml --module 'PKW + 2 PZD' --direction in --mapping pzd_in=3 '01 02 00 03 2B 02 00 01 0461 1388'\n  gsdc decode descriptions/md810dp.toml --diag '03 00 34'\n  gsdc decode descriptions/md810-gateway.toml --diag '04 01 02 23'\n\nHEX is bytes in hex, with or without blanks. --mapping KIND=VALUE,... sets a kind of mapping\n(pzd_out, pzd_in, dpv1_index, settings) entry by entry in order, a value empty to keep its default;\nwithout it (or --prm) the description's defaults are in force."
 )]
 pub struct Args {
     /// The description (TOML) the data belongs to.
@@ -25,10 +25,10 @@ pub struct Args {
     /// A captured telegram in hex: `10F0 0800 ...` or `10F00800...`; several arguments are joined.
     #[arg(value_name = "HEX", requires_all = ["module", "direction"])]
     telegram: Vec<String>,
-    /// The telegram's module: a PPO type (PPO1..PPO5) or a PROFINET module's name as the GSDML shows it ("PKW + 12 PZD"); case and blanks do not matter.
+    /// The telegram's module: a PPO type (PPO1..PPO5), a PROFINET module's name as the GSDML shows it ("PKW + 12 PZD") or a gateway's module as the GSD shows it ("INPUT 16 words"); case and blanks do not matter.
     #[arg(long, value_name = "NAME", requires = "telegram")]
     module: Option<String>,
-    /// Which way the telegram goes: out is master to drive (a PKW request), in is drive to master (a response).
+    /// Which way the telegram goes: out is master to drive (a PKW request) or to a gateway's nodes, in is drive or nodes to master (a response).
     #[arg(long, value_enum, requires = "telegram")]
     direction: Option<Way>,
     /// The values of a kind of mapping in force, in entry order: pzd_out=F0-08,F0-02; may be repeated.
@@ -133,12 +133,16 @@ fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Sta
                 Some(prm) => prm.mapping(),
                 None => mapping_options(ir, &args.mapping)?,
             };
-            let module = in_argument("--module", module, decode::find_module(ir, module))?;
-            let text = args.telegram.join(" ");
             let direction = match way {
                 Way::Out => Direction::Out,
                 Way::In => Direction::In,
             };
+            let module = in_argument(
+                "--module",
+                module,
+                decode::find_module(ir, module, direction),
+            )?;
+            let text = args.telegram.join(" ");
             let decoded = Hex::parse(&text)
                 .and_then(|hex| decode::telegram(ir, module, direction, &hex, &mapping));
             Some(in_argument("HEX", &text, decoded)?)
@@ -198,6 +202,9 @@ fn render_tables(document: &Document) -> String {
 }
 
 fn render_telegram(t: &Telegram) -> String {
+    if let Some(g) = &t.gateway {
+        return render_gateway_telegram(t, g);
+    }
     let mut out = String::new();
     let way = match t.direction {
         Direction::Out => "out, master to drive",
@@ -318,39 +325,147 @@ fn render_pkw(out: &mut String, pkw: &Pkw) {
 fn render_prm(prm: &Prm) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "User_Prm_Data, {} bytes\n", prm.len);
+    // A type column where the parameters are not all Unsigned16 (a gateway's).
+    let typed = prm.params.iter().any(|p| p.data_type != "Unsigned16");
     let constant = prm.constant.iter().map(|c| {
-        vec![
+        let mut row = vec![
             c.offset.to_string(),
             c.name.clone(),
             format!("{:02X}", c.value),
             c.value.to_string(),
             String::new(),
             format!("{:02X}", c.default),
-        ]
+        ];
+        if typed {
+            row.insert(2, "Unsigned8".into());
+        }
+        row
     });
     let params = prm.params.iter().map(|p| {
-        let meaning = match (&p.meaning, p.allowed) {
-            (Some(m), true) => m.clone(),
-            (Some(m), false) => format!("{m} (not allowed)"),
-            (None, _) => "not allowed".into(),
+        let meaning = match (&p.meaning, p.range, p.allowed) {
+            (Some(m), _, true) => m.clone(),
+            (Some(m), _, false) => format!("{m} (not allowed)"),
+            (None, Some(_), true) => String::new(),
+            (None, Some([min, max]), false) => format!("not allowed ({min} to {max})"),
+            (None, None, _) => "not allowed".into(),
         };
-        vec![
+        let hex = match p.data_type.as_str() {
+            "Unsigned16" => format!("{:04X}", p.value),
+            _ => format!("{:02X}", p.value),
+        };
+        let mut row = vec![
             p.offset.to_string(),
             p.name.clone(),
-            format!("{:04X}", p.value),
+            hex,
             p.value.to_string(),
             meaning,
             p.default_meaning
                 .clone()
                 .unwrap_or_else(|| p.default.to_string()),
-        ]
+        ];
+        if typed {
+            row.insert(2, p.data_type.clone());
+        }
+        row
     });
-    table(
-        &mut out,
-        &["byte", "name", "hex", "value", "meaning", "default"],
-        &[true, false, false, true, false, false],
-        constant.chain(params),
+    let (mut header, mut right) = (
+        vec!["byte", "name", "hex", "value", "meaning", "default"],
+        vec![true, false, false, true, false, false],
     );
+    if typed {
+        header.insert(2, "type");
+        right.insert(2, false);
+    }
+    table(&mut out, &header, &right, constant.chain(params));
+    if let Some(nodes) = &prm.gateway {
+        render_node_totals(&mut out, nodes);
+    }
+    out
+}
+
+/// What a gateway's node configuration adds up to.
+fn render_node_totals(out: &mut String, nodes: &NodeTotals) {
+    let _ = writeln!(out, "\nGateway nodes");
+    let mut rows = vec![
+        ["in use".to_string(), nodes.node_count.to_string()],
+        [
+            "input".into(),
+            format!(
+                "{} words, {} bytes (at most {})",
+                nodes.input_words, nodes.input_len, nodes.max_input_len
+            ),
+        ],
+        [
+            "output".into(),
+            format!(
+                "{} words, {} bytes (at most {})",
+                nodes.output_words, nodes.output_len, nodes.max_output_len
+            ),
+        ],
+    ];
+    if let Some(refused) = &nodes.refused {
+        rows.push(["refused".into(), refused.clone()]);
+    }
+    for [key, value] in rows {
+        let _ = writeln!(out, "  {key:<8} {value}");
+    }
+}
+
+/// A gateway module's words, named after their nodes when the node
+/// configuration in force says which they are, and a line saying why.
+fn render_gateway_telegram(t: &Telegram, g: &GatewayData) -> String {
+    let mut out = String::new();
+    let (way, verb, carried) = match t.direction {
+        Direction::In => ("in, nodes to master", "send", g.nodes.input_words),
+        Direction::Out => ("out, master to nodes", "receive", g.nodes.output_words),
+    };
+    let _ = writeln!(out, "{} ({way}), {} bytes\n", t.module, t.len);
+    let rows = t.words.iter().map(|w| {
+        let mut row = vec![
+            w.offset.to_string(),
+            w.name.clone(),
+            format!("{:04X}", w.value),
+            w.value.to_string(),
+        ];
+        if g.attributed {
+            row.push(
+                w.node
+                    .map_or_else(String::new, |n| format!("node {}, word {}", n.node, n.word)),
+            );
+        }
+        row
+    });
+    let (mut header, mut right) = (
+        vec!["byte", "word", "hex", "value"],
+        vec![true, false, false, true],
+    );
+    if g.attributed {
+        header.push("node's word");
+        right.push(false);
+    }
+    table(&mut out, &header, &right, rows);
+    let source = match g.source {
+        ValueSource::ParameterTelegram => "--prm",
+        _ => "the defaults",
+    };
+    let count = g.nodes.node_count;
+    let module_words = t.words.len();
+    let in_use = format!("the {count} node(s) in use {verb} {carried} word(s)");
+    let note = match &g.nodes.refused {
+        Some(why) => format!(
+            "Under {source} the card refuses the node configuration ({why}): the words are not attributed to nodes."
+        ),
+        None if g.attributed => format!(
+            "Under {source} {in_use}, all of them in this module, in the description's data order."
+        ),
+        None if carried as usize > module_words => format!(
+            "Under {source} {in_use}; this module carries {module_words} of them, which ones depends on the modules plugged before it, so its words are not attributed to nodes."
+        ),
+        None => format!(
+            "Under {source} {in_use}, fewer than this module's {module_words}: the card refuses a configuration with this module."
+        ),
+    };
+    let _ = writeln!(out, "\n{note}");
     out
 }
 
@@ -365,6 +480,10 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
         d.header,
         d.len
     );
+    if let Some(g) = &d.gateway {
+        render_gateway_diagnosis(&mut out, g);
+        return out;
+    }
     let rows = d.areas.iter().map(|a| {
         // GSD counts Unit_Diag_Area bits from the byte after the header.
         let first_byte = 1 + a.first_bit / 8;
@@ -391,6 +510,56 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
         rows,
     );
     out
+}
+
+/// A gateway's block: the type, the node and the code, a row each.
+fn render_gateway_diagnosis(out: &mut String, g: &GatewayDiagnosis) {
+    let kind = &g.kind;
+    let mut rows = vec![vec![
+        kind.at.to_string(),
+        "type".into(),
+        format!("{:02X}", kind.value),
+        kind.value.to_string(),
+        kind.text
+            .clone()
+            .unwrap_or_else(|| "not a type the description names".into()),
+    ]];
+    let [first, last] = g.node.range;
+    rows.push(vec![
+        g.node.at.to_string(),
+        "node".into(),
+        format!("{:02X}", g.node.value),
+        g.node.value.to_string(),
+        if g.node.allowed {
+            String::new()
+        } else {
+            format!("not a node ({first} to {last})")
+        },
+    ]);
+    if let Some(code) = &g.code {
+        let (at, hex) = match code.bytes {
+            1 => (code.at.to_string(), format!("{:02X}", code.value)),
+            n => (
+                format!("{}-{}", code.at, code.at + usize::from(n) - 1),
+                format!("{:04X}", code.value),
+            ),
+        };
+        rows.push(vec![
+            at,
+            "code".into(),
+            hex,
+            code.value.to_string(),
+            code.text
+                .clone()
+                .unwrap_or_else(|| format!("not a code of type {}", kind.value)),
+        ]);
+    }
+    table(
+        out,
+        &["byte", "content", "hex", "value", "meaning"],
+        &[true, false, false, true, false],
+        rows.into_iter(),
+    );
 }
 
 /// Columns two blanks apart, each as wide as its widest cell; `right`

@@ -1,7 +1,9 @@
 //! The device-related diagnosis block: the header byte, then the device's
 //! bytes, read area by area as the GSD's `Unit_Diag_Area`s number their bits
-//! (through the firmware's `DiagArea`).
+//! (through the firmware's `DiagArea`); a gateway's block is read by its
+//! type instead (`super::gateway`).
 
+use super::gateway::GatewayDiagnosis;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::Diagnosis;
 use crate::pkw::DiagArea;
@@ -12,7 +14,11 @@ pub struct DiagnosisBlock {
     pub len: usize,
     pub header: u8,
     pub bytes: Vec<u8>,
+    /// The areas of a block described by `[profibus.diagnosis]`; empty for
+    /// a gateway's.
     pub areas: Vec<Area>,
+    /// A gateway's block: its type, node and code.
+    pub gateway: Option<GatewayDiagnosis>,
 }
 
 /// A `Unit_Diag_Area`: bits counted from the byte after the header.
@@ -36,7 +42,12 @@ const LENGTH_MASK: u8 = 0b0011_1111;
 pub(super) fn decode(diagnosis: &Diagnosis, block: &[u8]) -> Result<DiagnosisBlock, Diagnostic> {
     debug_assert_eq!(block.len(), usize::from(diagnosis.length));
     let header = block.first().copied().unwrap_or_default();
-    check_header(header, diagnosis.length)?;
+    let length = diagnosis.length;
+    check_header(
+        header,
+        &[length],
+        &format!("the device-related block starts with 0x{length:02X}: bits 7-6 00, bits 5-0 its length ({length} bytes, the header included)"),
+    )?;
     let areas = diagnosis
         .areas
         .iter()
@@ -61,10 +72,13 @@ pub(super) fn decode(diagnosis: &Diagnosis, block: &[u8]) -> Result<DiagnosisBlo
         header,
         bytes: block.to_vec(),
         areas,
+        gateway: None,
     })
 }
 
-fn check_header(header: u8, length: u8) -> Result<(), Diagnostic> {
+/// E417 (without a place) unless `header` is a device-related block's of
+/// one of `lengths`; `help` says which headers are.
+pub(super) fn check_header(header: u8, lengths: &[u8], help: &str) -> Result<(), Diagnostic> {
     let kind = match header & BLOCK_TYPE_MASK {
         0b0000_0000 => None,
         0b0100_0000 => Some("identifier-related"),
@@ -73,7 +87,7 @@ fn check_header(header: u8, length: u8) -> Result<(), Diagnostic> {
     };
     let wrong = match kind {
         Some(kind) => format!("bits 7-6 make it {kind}, not device-related"),
-        None if header & LENGTH_MASK != length => {
+        None if !lengths.contains(&(header & LENGTH_MASK)) => {
             format!("it gives the length {}", header & LENGTH_MASK)
         }
         None => return Ok(()),
@@ -83,7 +97,5 @@ fn check_header(header: u8, length: u8) -> Result<(), Diagnostic> {
         format!("0x{header:02X} is not the header of this device's diagnosis block: {wrong}"),
     )
     .label("header")
-    .help(format!(
-        "the device-related block starts with 0x{length:02X}: bits 7-6 00, bits 5-0 its length ({length} bytes, the header included)"
-    )))
+    .help(help))
 }

@@ -1,9 +1,11 @@
 //! The mapping in force while a telegram is decoded: what each PZD word,
-//! DPV1 index and setting carries. The description's defaults, unless values
-//! are given with `--mapping KIND=VALUE,...` or read from a parameter
-//! telegram.
+//! DPV1 index and setting carries, and a gateway's node parameters (how
+//! many nodes are in use, the words each carries). The description's
+//! defaults, unless values are given with `--mapping KIND=VALUE,...` or read
+//! from a parameter telegram.
 
 use crate::diag::Diagnostic;
+use crate::ir::gateway::{self, ParamKey};
 use crate::ir::{Allowed, EntryKey, Ir, MappingEntry, MappingGroup, MappingKind};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -25,6 +27,7 @@ pub enum ValueSource {
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct MappingInForce {
     given: BTreeMap<EntryKey, (u16, ValueSource)>,
+    gateway: BTreeMap<ParamKey, u16>,
 }
 
 impl MappingInForce {
@@ -43,6 +46,29 @@ impl MappingInForce {
 
     pub(crate) fn set(&mut self, key: EntryKey, value: u16, source: ValueSource) {
         self.given.insert(key, (value, source));
+    }
+
+    /// The value of a gateway's parameter: read from a parameter telegram,
+    /// or its default.
+    pub fn gateway_value(&self, param: &gateway::Param) -> u16 {
+        self.gateway
+            .get(&param.key)
+            .copied()
+            .unwrap_or(param.default.into())
+    }
+
+    /// Where the gateway's node parameters came from: a parameter telegram
+    /// gives them all, or none are given.
+    pub fn gateway_source(&self) -> ValueSource {
+        if self.gateway.is_empty() {
+            ValueSource::Default
+        } else {
+            ValueSource::ParameterTelegram
+        }
+    }
+
+    pub(crate) fn set_gateway(&mut self, key: ParamKey, value: u16) {
+        self.gateway.insert(key, value);
     }
 
     /// Takes one `--mapping` argument: a kind of mapping (`pzd_out`), `=`,

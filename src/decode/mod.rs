@@ -1,6 +1,7 @@
 //! Captured bus data read against a description (`gsdc decode`): a cyclic
 //! telegram of one module, the parameter telegram's User_Prm_Data, the
-//! device-related diagnosis block.
+//! device-related diagnosis block; for a gateway, a module's words of the
+//! nodes, the node parameters, and the diagnosis block by its type.
 //!
 //! Pure: the IR and bytes in, a typed decoded value out. Names, offsets and
 //! mappings come from the IR, the PKW channel is read by the firmware's own
@@ -11,6 +12,7 @@
 //! The decoded values serialize as `gsdc decode --format json` prints them.
 
 mod diagnosis;
+mod gateway;
 mod hex;
 mod mapping;
 mod module;
@@ -19,6 +21,9 @@ mod prm;
 mod telegram;
 
 pub use diagnosis::{Area, DiagnosisBlock};
+pub use gateway::{
+    DiagByte, DiagCodeValue, DiagNode, GatewayData, GatewayDiagnosis, NodeTotals, NodeWord,
+};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, Module};
@@ -29,8 +34,10 @@ pub use telegram::{Carried, DecodedWord, Field, Telegram};
 use crate::diag::Diagnostic;
 use crate::ir::{Direction, Ir};
 
-/// A telegram of `module` sent in `direction`, with the PZD words named
-/// after `mapping`; E412 unless it is as long as the module's.
+/// A telegram of `module` sent in `direction` (the one a gateway's module
+/// goes, `find_module` checked it), with the PZD words named after
+/// `mapping`, or a gateway's words after its node configuration; E412
+/// unless it is as long as the module's.
 pub fn telegram(
     ir: &Ir,
     module: Module<'_>,
@@ -38,9 +45,13 @@ pub fn telegram(
     hex: &Hex,
     mapping: &MappingInForce,
 ) -> Result<Telegram, Diagnostic> {
-    let len = usize::from(module.layout().bytes());
-    let bytes = hex.exactly(len, &module.name(), &module.summary())?;
-    Ok(telegram::decode(ir, module, direction, bytes, mapping))
+    let bytes = hex.exactly(module.bytes(), &module.name(), &module.summary())?;
+    let cyclic = |layout| telegram::decode(ir, module, layout, direction, bytes, mapping);
+    Ok(match module {
+        Module::Ppo(m) => cyclic(m.layout),
+        Module::Profinet(m) => cyclic(m.layout),
+        Module::Gateway(g, m) => gateway::telegram(g, m, bytes, mapping),
+    })
 }
 
 /// The parameter telegram's User_Prm_Data (without the 7 standard bytes of
@@ -55,41 +66,62 @@ pub fn prm(ir: &Ir, hex: &Hex) -> Result<Prm, Diagnostic> {
     let bytes = hex.exactly(
         usize::from(user_prm.len),
         "User_Prm_Data",
-        &prm_help(&profibus.file_name, user_prm),
+        &prm_help(ir, &profibus.file_name, user_prm),
     )?;
     Ok(prm::decode(ir, user_prm, bytes))
 }
 
 /// "MD810DP.GSD's User_Prm_Data is 63 bytes: 3 DPV1 status bytes, then 2
-/// bytes each for 12 pzd_out, 12 pzd_in, 6 dpv1_index; ...".
-fn prm_help(file_name: &str, user_prm: &crate::ir::profibus::UserPrm) -> String {
+/// bytes each for 12 pzd_out, 12 pzd_in, 6 dpv1_index; ...", or for a
+/// gateway "... 61 bytes: the 61 gateway parameters from Number of CANopen
+/// slaves to Slave 30 RPDO words; ...".
+fn prm_help(ir: &Ir, file_name: &str, user_prm: &crate::ir::profibus::UserPrm) -> String {
+    let mut parts = Vec::new();
+    if !user_prm.constant.is_empty() {
+        parts.push(format!("{} DPV1 status bytes", user_prm.constant.len()));
+    }
     let blocks: Vec<String> = user_prm
         .blocks
         .iter()
         .map(|b| format!("{} {}", b.params.len(), b.kind.key()))
         .collect();
-    let constant = match user_prm.constant.len() {
-        0 => String::new(),
-        n => format!("{n} DPV1 status bytes, then "),
-    };
+    if !blocks.is_empty() {
+        parts.push(format!("2 bytes each for {}", blocks.join(", ")));
+    }
+    if let (Some(first), Some(last)) = (user_prm.gateway.first(), user_prm.gateway.last()) {
+        parts.push(format!(
+            "the {} gateway parameters from {} to {}",
+            user_prm.gateway.len(),
+            ir.prm_facts(first).name.en,
+            ir.prm_facts(last).name.en
+        ));
+    }
     format!(
-        "{file_name}'s User_Prm_Data is {} bytes: {constant}2 bytes each for {}; give it without the 7 standard bytes of Set_Prm",
+        "{file_name}'s User_Prm_Data is {} bytes: {}; give it without the 7 standard bytes of Set_Prm",
         user_prm.len,
-        blocks.join(", ")
+        parts.join(", then ")
     )
 }
 
 /// The device-related diagnosis block, header first; E414 when the
 /// description gives none, E412 unless it is as long as the description
-/// says, E417 (at the header) when its header is not that block's.
+/// says (a gateway's: as its header says), E417 (at the header) when its
+/// header is not that block's.
 pub fn diagnosis(ir: &Ir, hex: &Hex) -> Result<DiagnosisBlock, Diagnostic> {
+    if let Some((g, d)) = ir
+        .gateway
+        .as_ref()
+        .and_then(|g| Some((g, g.diagnosis.as_ref()?)))
+    {
+        return gateway::diagnosis(g, d, hex);
+    }
     let diagnosis = ir
         .profibus
         .as_ref()
         .and_then(|p| p.diagnosis.as_ref())
         .ok_or_else(|| {
             Diagnostic::error("E414", "the description has no device-related diagnosis")
-                .help("the diagnosis block is described by [profibus.diagnosis]")
+                .help("the diagnosis block is described by [profibus.diagnosis], or a gateway's by [gateway.diagnosis]")
         })?;
     let help = format!(
         "the block is {} bytes: the header 0x{:02X}, then the device's bytes",

@@ -1,7 +1,9 @@
-//! The module a telegram belongs to: a PPO type or a PROFINET module, found
-//! by the name the device files show, and the names of its words.
+//! The module a telegram belongs to: a PPO type, a PROFINET module or a
+//! gateway's block of words, found by the name the device files show, and
+//! the names of its words.
 
 use crate::diag::Diagnostic;
+use crate::ir::gateway::{self, Gateway};
 use crate::ir::profibus::PpoModule;
 use crate::ir::profinet::{self, ModuleKind};
 use crate::ir::{Direction, Ir, Layout, PkwKind};
@@ -11,14 +13,18 @@ use crate::ir::{Direction, Ir, Layout, PkwKind};
 pub enum Module<'a> {
     Ppo(&'a PpoModule),
     Profinet(&'a profinet::Module),
+    /// A gateway's module: words one way, of the nodes of the second bus.
+    Gateway(&'a Gateway, &'a gateway::Module),
 }
 
 impl Module<'_> {
-    /// The PPO type (`PPO1`) or the name the GSDML shows (`PKW + 12 PZD`).
+    /// The PPO type (`PPO1`) or the name the GSDML or GSD shows (`PKW + 12
+    /// PZD`, `INPUT 16 words`).
     pub fn name(self) -> String {
         match self {
             Module::Ppo(m) => format!("PPO{}", m.ppo),
             Module::Profinet(m) => m.name.text.en.clone(),
+            Module::Gateway(_, m) => m.name.clone(),
         }
     }
 
@@ -28,24 +34,46 @@ impl Module<'_> {
         let wanted = squeeze(name);
         let gsd_name = match self {
             Module::Ppo(m) => Some(&m.name),
-            Module::Profinet(_) => None,
+            Module::Profinet(_) | Module::Gateway(..) => None,
         };
         squeeze(&self.name()) == wanted || gsd_name.is_some_and(|n| squeeze(n) == wanted)
     }
 
-    pub fn layout(self) -> Layout {
+    /// The layout of a PPO type or PROFINET module, the same each way; a
+    /// gateway's module has words one way only.
+    pub fn layout(self) -> Option<Layout> {
         match self {
-            Module::Ppo(m) => m.layout,
-            Module::Profinet(m) => m.layout,
+            Module::Ppo(m) => Some(m.layout),
+            Module::Profinet(m) => Some(m.layout),
+            Module::Gateway(..) => None,
+        }
+    }
+
+    /// Bytes of its telegram (each way, or the one way it goes).
+    pub fn bytes(self) -> usize {
+        match self {
+            Module::Ppo(m) => m.layout.bytes().into(),
+            Module::Profinet(m) => m.layout.bytes().into(),
+            Module::Gateway(_, m) => 2 * usize::from(m.words),
+        }
+    }
+
+    /// The direction a gateway's module goes; the others go both ways.
+    fn only_direction(self) -> Option<Direction> {
+        match self {
+            Module::Gateway(_, m) => Some(m.direction),
+            Module::Ppo(_) | Module::Profinet(_) => None,
         }
     }
 
     /// Whether its PZD words carry the description's mappings; standard
-    /// telegram 1 has fixed meanings instead.
+    /// telegram 1 has fixed meanings instead, and a gateway's words are its
+    /// nodes'.
     pub fn is_mapped(self) -> bool {
         match self {
             Module::Ppo(_) => true,
             Module::Profinet(m) => m.kind == ModuleKind::Pzd,
+            Module::Gateway(..) => false,
         }
     }
 
@@ -55,6 +83,7 @@ impl Module<'_> {
         match self {
             Module::Ppo(_) => true,
             Module::Profinet(m) => !m.is_profidrive(),
+            Module::Gateway(..) => false,
         }
     }
 
@@ -69,13 +98,20 @@ impl Module<'_> {
                 items.iter().map(|item| item.text.text.en.clone()).collect()
             }
             Module::Ppo(m) => ppo_word_names(ir, m.layout, direction),
+            Module::Gateway(_, m) => (1..=m.words).map(super::gateway::word_name).collect(),
         }
     }
 
-    /// What the module holds, for a help line: "12 bytes each way: the PKW
-    /// channel (8 bytes) and 2 PZD words".
+    /// What the module holds, for a help line: "PPO1 is 12 bytes each way:
+    /// the PKW channel (8 bytes) and 2 PZD word(s)".
     pub fn summary(self) -> String {
-        let layout = self.layout();
+        let Some(layout) = self.layout() else {
+            let way = match self.only_direction() {
+                Some(Direction::In) => "the master's input, the words the nodes send",
+                _ => "the master's output, the words the nodes receive",
+            };
+            return format!("{} is {} bytes of {way}", self.name(), self.bytes());
+        };
         let pkw = if layout.pkw {
             format!("the PKW channel ({} bytes) and ", 2 * layout.pkw_words())
         } else {
@@ -91,7 +127,7 @@ impl Module<'_> {
 }
 
 /// Every module of the description: the PPO types, then the PROFINET
-/// modules, in the order of the device files.
+/// modules, then a gateway's, in the order of the device files.
 fn modules(ir: &Ir) -> Vec<Module<'_>> {
     let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(Module::Ppo);
     let profinet = ir
@@ -99,29 +135,64 @@ fn modules(ir: &Ir) -> Vec<Module<'_>> {
         .iter()
         .flat_map(|p| &p.modules)
         .map(Module::Profinet);
-    ppos.chain(profinet).collect()
+    let gateway = ir
+        .gateway
+        .iter()
+        .flat_map(|g| g.modules.iter().map(move |m| Module::Gateway(g, m)));
+    ppos.chain(profinet).chain(gateway).collect()
 }
 
-/// The module called `name`, ignoring case and blanks (`ppo1`,
-/// `pkw+12pzd`; see `Module::is_called`), or E413 with the names there are. The diagnostic's span
-/// is the whole of `name`.
-pub fn find_module<'a>(ir: &'a Ir, name: &str) -> Result<Module<'a>, Diagnostic> {
+/// The module called `name` that goes in `direction`, ignoring case and
+/// blanks (`ppo1`, `pkw+12pzd`; see `Module::is_called`), or E413 with the
+/// names there are. The diagnostic's span is the whole of `name`.
+pub fn find_module<'a>(
+    ir: &'a Ir,
+    name: &str,
+    direction: Direction,
+) -> Result<Module<'a>, Diagnostic> {
     let all = modules(ir);
-    if let Some(module) = all.iter().find(|m| m.is_called(name)) {
-        return Ok(*module);
-    }
-    let names: Vec<String> = all.iter().map(|m| m.name()).collect();
-    let help = if names.is_empty() {
-        "the description has no PROFIBUS or PROFINET modules".to_string()
-    } else {
-        format!("the modules are: {}", names.join(", "))
+    let Some(module) = all.iter().find(|m| m.is_called(name)) else {
+        let names: Vec<String> = all.iter().map(|m| m.name()).collect();
+        let help = if names.is_empty() {
+            "the description has no PROFIBUS or PROFINET modules".to_string()
+        } else {
+            format!("the modules are: {}", names.join(", "))
+        };
+        return Err(
+            Diagnostic::error("E413", format!("the description has no module `{name}`"))
+                .at(0..name.len())
+                .label("unknown module")
+                .help(help),
+        );
     };
-    Err(
-        Diagnostic::error("E413", format!("the description has no module `{name}`"))
+    match module.only_direction() {
+        Some(only) if only != direction => {
+            let (wanted, has) = match direction {
+                Direction::In => ("input", "an output module"),
+                Direction::Out => ("output", "an input module"),
+            };
+            let others: Vec<String> = all
+                .iter()
+                .filter(|m| m.only_direction() == Some(direction))
+                .map(|m| m.name())
+                .collect();
+            Err(Diagnostic::error(
+                "E413",
+                format!("the description has no {wanted} module `{name}`"),
+            )
             .at(0..name.len())
-            .label("unknown module")
-            .help(help),
-    )
+            .label(has)
+            .help(format!(
+                "the {wanted} modules (--direction {}) are: {}",
+                match direction {
+                    Direction::In => "in",
+                    Direction::Out => "out",
+                },
+                others.join(", ")
+            )))
+        }
+        _ => Ok(*module),
+    }
 }
 
 /// Lower case without blanks: how module names are compared.
@@ -168,21 +239,27 @@ mod tests {
     fn names_match_whatever_the_case_and_blanks() {
         let ir = mv810();
         for name in ["PKW + 12 PZD", "pkw+12pzd", " Pkw + 12  pzd "] {
-            let module = find_module(&ir, name).unwrap();
+            let module = find_module(&ir, name, Direction::In).unwrap();
             assert_eq!(module.name(), "PKW + 12 PZD");
-            assert_eq!(module.layout().bytes(), 32);
+            assert_eq!(module.bytes(), 32);
         }
         let ir = md810();
-        assert_eq!(find_module(&ir, "ppo5").unwrap().name(), "PPO5");
-        let gsd_name = find_module(&ir, "PPO5: 4 PKW + 12 PZD").unwrap();
-        assert_eq!(gsd_name.layout().bytes(), 32);
-        assert_eq!(find_module(&ir, "6 pzd").unwrap().name(), "6 PZD");
+        assert_eq!(
+            find_module(&ir, "ppo5", Direction::In).unwrap().name(),
+            "PPO5"
+        );
+        let gsd_name = find_module(&ir, "PPO5: 4 PKW + 12 PZD", Direction::Out).unwrap();
+        assert_eq!(gsd_name.bytes(), 32);
+        assert_eq!(
+            find_module(&ir, "6 pzd", Direction::Out).unwrap().name(),
+            "6 PZD"
+        );
     }
 
     #[test]
     fn an_unknown_name_lists_the_modules() {
         let ir = md810();
-        let d = find_module(&ir, "PPO7").unwrap_err();
+        let d = find_module(&ir, "PPO7", Direction::Out).unwrap_err();
         assert_eq!((d.code, d.span), ("E413", Some(0..4)));
         let help = d.help.unwrap();
         assert!(
@@ -199,13 +276,14 @@ mod tests {
         for ir in [md810(), mv810()] {
             let all = modules(&ir);
             let pn = all.iter().find(|m| m.name() == "PKW + 2 PZD").unwrap();
-            let ppo = ppo_word_names(&ir, pn.layout(), Direction::In);
+            let layout = pn.layout().unwrap();
+            let ppo = ppo_word_names(&ir, layout, Direction::In);
             assert_eq!(ppo, pn.word_names(&ir, Direction::In));
-            let ppo = ppo_word_names(&ir, pn.layout(), Direction::Out);
+            let ppo = ppo_word_names(&ir, layout, Direction::Out);
             assert_eq!(ppo, pn.word_names(&ir, Direction::Out));
         }
         let ir = md810();
-        let names = find_module(&ir, "PPO1")
+        let names = find_module(&ir, "PPO1", Direction::Out)
             .unwrap()
             .word_names(&ir, Direction::Out);
         assert_eq!(names, ["PKE", "IND", "PWE high", "PWE low", "PZD1", "PZD2"]);

@@ -1,10 +1,12 @@
 //! The parameter telegram's User_Prm_Data, as lowering laid it out: the
 //! constant bytes (the DPV1 status bytes), then one Unsigned16 per mapping
-//! entry, high byte first, then a gateway's parameters.
+//! entry, high byte first, then a gateway's parameters (bytes, words or bit
+//! areas), and what a gateway's add up to.
 
+use super::gateway::{totals, NodeTotals};
 use super::mapping::{meaning, MappingInForce, ValueSource};
-use crate::ir::profibus::{PrmHolds, UserPrm};
-use crate::ir::{EntryKey, Ir};
+use crate::ir::profibus::{self, PrmHolds, UserPrm};
+use crate::ir::Ir;
 use serde::Serialize;
 
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -12,6 +14,8 @@ pub struct Prm {
     pub len: usize,
     pub constant: Vec<ConstantByte>,
     pub params: Vec<PrmValue>,
+    /// A gateway's nodes under these values.
+    pub gateway: Option<NodeTotals>,
 }
 
 /// A byte of the constant part: its value and what the GSD sets it to.
@@ -29,30 +33,39 @@ pub struct PrmValue {
     pub offset: usize,
     /// The `ExtUserPrmData` reference number.
     pub id: u16,
-    /// The mapping entry it sets; `None` for a gateway's parameter.
+    /// What it sets: a mapping entry or a gateway's parameter.
     #[serde(skip)]
-    pub entry: Option<EntryKey>,
+    pub sets: profibus::PrmValue,
     /// Its name: `PZD3(master->slaver)`, `Slave 2 TPDO words`.
     pub name: String,
+    /// How it is stored, as the GSD names it: `Unsigned16`, `BitArea(0-3)`.
+    pub data_type: String,
     pub value: u16,
     /// The parameter it names (`F0-12`) or the choice's text; `None` for a
-    /// value that is not one of the choices.
+    /// value that is not one of the choices, and for a number.
     pub meaning: Option<String>,
     pub default: u16,
     /// What the default means, as `meaning` says it.
     pub default_meaning: Option<String>,
-    /// Whether the value is one the mapping allows; the card refuses a
+    /// The numbers a gateway's parameter allows, both ends included; `None`
+    /// for a mapping entry.
+    pub range: Option<[u16; 2]>,
+    /// Whether the value is one the parameter allows; the card refuses a
     /// parameter telegram with one that is not.
     pub allowed: bool,
 }
 
 impl Prm {
-    /// The mapping these values put in force.
+    /// The mapping and the gateway's node configuration these values put in
+    /// force.
     pub fn mapping(&self) -> MappingInForce {
         let mut mapping = MappingInForce::defaults();
         for param in &self.params {
-            if let Some(entry) = param.entry {
-                mapping.set(entry, param.value, ValueSource::ParameterTelegram);
+            match param.sets {
+                profibus::PrmValue::Entry(entry) => {
+                    mapping.set(entry, param.value, ValueSource::ParameterTelegram)
+                }
+                profibus::PrmValue::Gateway(key) => mapping.set_gateway(key, param.value),
             }
         }
         mapping
@@ -75,7 +88,7 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
             default,
         })
         .collect();
-    let params = user_prm
+    let params: Vec<PrmValue> = user_prm
         .params()
         .map(|param| {
             let offset = usize::from(param.offset);
@@ -88,22 +101,27 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
             PrmValue {
                 offset,
                 id: param.id,
-                entry: match param.value {
-                    crate::ir::profibus::PrmValue::Entry(key) => Some(key),
-                    _ => None,
-                },
+                sets: param.value,
                 name: facts.name.en.clone(),
+                data_type: param.data_type.to_string(),
                 value,
                 meaning: meaning(value),
                 default: facts.default,
                 default_meaning: meaning(facts.default),
+                range: match facts.holds {
+                    PrmHolds::Number { min, max } => Some([min, max]),
+                    PrmHolds::Mapping { .. } => None,
+                },
                 allowed: facts.holds.contains(value),
             }
         })
         .collect();
-    Prm {
+    let prm = Prm {
         len: bytes.len(),
         constant,
         params,
-    }
+        gateway: None,
+    };
+    let gateway = ir.gateway.as_ref().map(|g| totals(g, &prm.mapping()));
+    Prm { gateway, ..prm }
 }

@@ -1,11 +1,13 @@
 //! A cyclic telegram of one module: each word with its name and value, the
 //! PKW request or response, the control or status word's fields, and what
-//! each mapped PZD word carries under the mapping in force.
+//! each mapped PZD word carries under the mapping in force. A gateway's
+//! modules are read in `super::gateway`.
 
+use super::gateway::{GatewayData, NodeWord};
 use super::mapping::{meaning, MappingInForce, ValueSource};
 use super::module::Module;
 use super::pkw_channel::{self, Pkw};
-use crate::ir::{Direction, Ir, MappingKind, Word};
+use crate::ir::{Direction, Ir, Layout, MappingKind, Word};
 use crate::pkw::{pkw_words, BitField, PKW_BYTES};
 use serde::Serialize;
 
@@ -17,6 +19,8 @@ pub struct Telegram {
     pub len: usize,
     pub words: Vec<DecodedWord>,
     pub pkw: Option<Pkw>,
+    /// A gateway module's: the node configuration it is read against.
+    pub gateway: Option<GatewayData>,
 }
 
 /// One 16-bit word, high byte first.
@@ -30,6 +34,8 @@ pub struct DecodedWord {
     pub carries: Option<Carried>,
     /// The fields of a control or status word, lowest bits first.
     pub fields: Vec<Field>,
+    /// A gateway module's word: the node it belongs to, when known.
+    pub node: Option<NodeWord>,
 }
 
 /// The mapping of a PZD word and what its value makes the word carry.
@@ -56,16 +62,17 @@ pub struct Field {
     pub text: Option<String>,
 }
 
-/// Decodes `bytes`, which must be as long as the module's telegram.
+/// Decodes `bytes`, which must be as long as the telegram of `module`, a
+/// PPO type or PROFINET module of this `layout`.
 pub(super) fn decode(
     ir: &Ir,
     module: Module<'_>,
+    layout: Layout,
     direction: Direction,
     bytes: &[u8],
     mapping: &MappingInForce,
 ) -> Telegram {
-    debug_assert_eq!(bytes.len(), usize::from(module.layout().bytes()));
-    let layout = module.layout();
+    debug_assert_eq!(bytes.len(), usize::from(layout.bytes()));
     let pkw_bytes = if layout.pkw { PKW_BYTES } else { 0 };
     let names = module.word_names(ir, direction);
     let words = names
@@ -90,6 +97,7 @@ pub(super) fn decode(
                 value,
                 carries,
                 fields,
+                node: None,
             }
         })
         .collect();
@@ -103,6 +111,7 @@ pub(super) fn decode(
         len: bytes.len(),
         words,
         pkw,
+        gateway: None,
     }
 }
 

@@ -32,7 +32,7 @@ fn load(name: &str, text: &str) -> Ir {
 }
 
 fn decode(ir: &Ir, module: &str, direction: Direction, hex: &str) -> Telegram {
-    let module = find_module(ir, module).unwrap();
+    let module = find_module(ir, module, direction).unwrap();
     let hex = Hex::parse(hex).unwrap();
     telegram(ir, module, direction, &hex, &MappingInForce::defaults()).unwrap()
 }
@@ -174,7 +174,7 @@ fn md810_ppo5_has_twelve_pzd_words_after_the_pkw() {
 #[test]
 fn a_telegram_of_the_wrong_length_is_refused() {
     let ir = md810();
-    let module = find_module(&ir, "PPO1").unwrap();
+    let module = find_module(&ir, "PPO1", Out).unwrap();
     let hex = Hex::parse("10F0 0800 0000 0000").unwrap();
     let d = telegram(&ir, module, Out, &hex, &MappingInForce::defaults()).unwrap_err();
     assert_eq!(d.code, "E412");
@@ -300,7 +300,7 @@ fn mv810_control_and_status_words_and_mapped_words() {
     // Status: forward running, ready, motor 2, control mode 2 (communication).
     let mut mapping = MappingInForce::defaults();
     mapping.give(&ir, "pzd_in=3").unwrap();
-    let module = find_module(&ir, "PKW + 2 PZD").unwrap();
+    let module = find_module(&ir, "PKW + 2 PZD", In).unwrap();
     let hex = Hex::parse("0000 0000 0000 0000 0461 1388").unwrap();
     let t = telegram(&ir, module, In, &hex, &mapping).unwrap();
     let field = |name: &str| {
@@ -417,7 +417,7 @@ fn md810_prm_with_the_manuals_values_maps_the_telegram() {
     assert_eq!(meaning("Index1"), "F0-08");
     assert_eq!(meaning("PZD3(slaver->master)"), "F0-00");
 
-    let module = find_module(&ir, "PPO2").unwrap();
+    let module = find_module(&ir, "PPO2", Out).unwrap();
     let telegram_hex = Hex::parse(&"0000 ".repeat(10)).unwrap();
     let t = telegram(&ir, module, Out, &telegram_hex, &prm.mapping()).unwrap();
     let pzd3 = t.words[6].carries.as_ref().unwrap();
@@ -488,4 +488,441 @@ fn decoded_values_serialize_with_their_names() {
     assert_eq!(json["pkw"]["parameter"]["name"], "F0-08");
     assert_eq!(json["pkw"]["parameter"]["address"], 0xF008);
     assert_eq!(json["words"][4]["carries"]["source"], "default");
+}
+
+// ---------------------------------------------------------------------------
+// The gateway (MD810 manual chapter 2)
+
+pub(crate) fn md810_gateway() -> Ir {
+    load(
+        "md810-gateway.toml",
+        include_str!("../../descriptions/md810-gateway.toml"),
+    )
+}
+
+/// The gateway with each node's TPDO words in bits 0-3 and RPDO words in
+/// bits 4-7 of one byte, instead of a byte each.
+fn md810_gateway_in_bit_areas() -> Ir {
+    let text = include_str!("../../descriptions/md810-gateway.toml");
+    let text = text
+        .replacen(
+            "name = \"Slave {n} TPDO words\"\ntype = \"Unsigned8\"",
+            "name = \"Slave {n} TPDO words\"\nbits = [0, 3]",
+            1,
+        )
+        .replacen(
+            "name = \"Slave {n} RPDO words\"\ntype = \"Unsigned8\"",
+            "name = \"Slave {n} RPDO words\"\nbits = [4, 7]",
+            1,
+        );
+    assert_eq!(text.matches("bits = [").count(), 2, "both parameters moved");
+    load("md810-gateway.toml", &text)
+}
+
+/// User_Prm_Data of a gateway with one byte per parameter: the count, then
+/// TPDO and RPDO words of slave 1, slave 2, ...; the other slaves 0.
+fn gateway_prm(count: u8, input: &[u8], output: &[u8]) -> Hex {
+    let mut bytes = [0u8; 61];
+    bytes[0] = count;
+    for (i, &w) in input.iter().enumerate() {
+        bytes[1 + 2 * i] = w;
+    }
+    for (i, &w) in output.iter().enumerate() {
+        bytes[2 + 2 * i] = w;
+    }
+    let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+    Hex::parse(&hex.join(" ")).unwrap()
+}
+
+/// 2.4 step 5: TPDO 120 words, RPDO 64 words, as 15 slaves of 8 TPDO
+/// words, the first 8 of them with 8 RPDO words.
+fn manual_example_prm() -> Hex {
+    gateway_prm(15, &[8; 15], &[8; 8])
+}
+
+#[test]
+fn gateway_prm_of_the_manuals_example() {
+    let ir = md810_gateway();
+    let prm = prm(&ir, &manual_example_prm()).unwrap();
+    assert_eq!((prm.len, prm.constant.len(), prm.params.len()), (61, 0, 61));
+    let count = &prm.params[0];
+    assert_eq!(
+        (
+            count.offset,
+            count.name.as_str(),
+            count.data_type.as_str(),
+            count.value,
+            count.default,
+            count.range,
+            count.allowed
+        ),
+        (
+            0,
+            "Number of CANopen slaves",
+            "Unsigned8",
+            15,
+            1,
+            Some([1, 30]),
+            true
+        )
+    );
+    // A number means nothing beyond itself.
+    assert_eq!(
+        (count.meaning.as_deref(), count.default_meaning.as_deref()),
+        (None, None)
+    );
+    let slave_15 = &prm.params[29];
+    assert_eq!(
+        (slave_15.offset, slave_15.name.as_str(), slave_15.value),
+        (29, "Slave 15 TPDO words", 8)
+    );
+    assert_eq!(prm.params[30].name, "Slave 15 RPDO words");
+    assert!(prm.params.iter().all(|p| p.allowed));
+    let nodes = prm.gateway.unwrap();
+    assert_eq!(
+        (
+            nodes.node_count,
+            nodes.input_words,
+            nodes.output_words,
+            nodes.input_len,
+            nodes.output_len
+        ),
+        (15, 120, 64, 240, 128)
+    );
+    assert_eq!((nodes.max_input_len, nodes.max_output_len), (244, 244));
+    assert_eq!(nodes.refused, None);
+}
+
+/// What the firmware refuses, in its order: the count, a node's words past
+/// the count or out of range, the limits of 244 bytes.
+#[test]
+fn gateway_prm_the_card_refuses() {
+    let ir = md810_gateway();
+    let refused = |hex: Hex| prm(&ir, &hex).unwrap().gateway.unwrap().refused;
+
+    let count_31 = prm(&ir, &gateway_prm(31, &[], &[])).unwrap();
+    assert!(!count_31.params[0].allowed);
+    assert_eq!(
+        count_31.gateway.unwrap().refused.as_deref(),
+        Some("Number of CANopen slaves: 31 is not allowed (1 to 30)")
+    );
+    let nine = prm(&ir, &gateway_prm(2, &[8, 9], &[])).unwrap();
+    assert!(!nine.params[3].allowed && nine.params[1].allowed);
+    assert_eq!(
+        nine.gateway.unwrap().refused.as_deref(),
+        Some("Slave 2 TPDO words: 9 is not allowed (0 to 8)")
+    );
+    assert_eq!(
+        refused(gateway_prm(2, &[1, 1], &[0, 0, 1])).as_deref(),
+        Some("node 3 is not in use (the count is 2) but carries words: Slave 3 RPDO words = 1")
+    );
+    // 30 slaves of 5 words: 300 bytes.
+    assert_eq!(
+        refused(gateway_prm(30, &[5; 30], &[])).as_deref(),
+        Some("the input is 300 bytes; the gateway carries at most 244")
+    );
+    // 244 bytes each way pass (2.2.1's most).
+    let mut at_limit = [4u8; 30];
+    at_limit[..2].copy_from_slice(&[5, 5]);
+    assert_eq!(refused(gateway_prm(30, &at_limit, &at_limit)), None);
+    at_limit[29] = 5;
+    assert_eq!(
+        refused(gateway_prm(30, &[0; 30], &at_limit)).as_deref(),
+        Some("the output is 246 bytes; the gateway carries at most 244")
+    );
+}
+
+/// Bit areas: slave 1's TPDO and RPDO words share byte 1.
+#[test]
+fn gateway_prm_in_bit_areas() {
+    let ir = md810_gateway_in_bit_areas();
+    let mut bytes = [0u8; 31];
+    bytes[..3].copy_from_slice(&[2, 0x98, 0x08]);
+    let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+    let prm = prm(&ir, &Hex::parse(&hex.concat()).unwrap()).unwrap();
+    let fields: Vec<(usize, &str, u16, bool)> = prm.params[1..5]
+        .iter()
+        .map(|p| (p.offset, p.data_type.as_str(), p.value, p.allowed))
+        .collect();
+    assert_eq!(
+        fields,
+        [
+            (1, "BitArea(0-3)", 8, true),
+            (1, "BitArea(4-7)", 9, false),
+            (2, "BitArea(0-3)", 8, true),
+            (2, "BitArea(4-7)", 0, true),
+        ]
+    );
+    assert_eq!(
+        prm.gateway.unwrap().refused.as_deref(),
+        Some("Slave 1 RPDO words: 9 is not allowed (0 to 8)")
+    );
+}
+
+#[test]
+fn gateway_prm_errors_name_its_parameters() {
+    let d = prm(&md810_gateway(), &Hex::parse("0F").unwrap()).unwrap_err();
+    assert_eq!(d.code, "E412");
+    assert_eq!(
+        d.help.as_deref(),
+        Some("MD810GW.GSD's User_Prm_Data is 61 bytes: the 61 gateway parameters from Number of CANopen slaves to Slave 30 RPDO words; give it without the 7 standard bytes of Set_Prm")
+    );
+}
+
+fn words_of(n: u16) -> String {
+    (1..=n).map(|w| format!("{w:04X} ")).collect()
+}
+
+/// Two slaves of 8 TPDO words each: INPUT 16 words carries all 16, slave
+/// 1's first (ascending node number, the description's data order).
+#[test]
+fn gateway_module_words_are_named_after_their_nodes() {
+    let ir = md810_gateway();
+    let mapping = prm(&ir, &gateway_prm(2, &[8, 8], &[8])).unwrap().mapping();
+    let module = find_module(&ir, "input 16 words", In).unwrap();
+    let hex = Hex::parse(&words_of(16)).unwrap();
+    let t = telegram(&ir, module, In, &hex, &mapping).unwrap();
+    assert_eq!(
+        (t.module.as_str(), t.direction, t.len),
+        ("INPUT 16 words", In, 32)
+    );
+    let g = t.gateway.as_ref().unwrap();
+    assert_eq!(g.source, ValueSource::ParameterTelegram);
+    assert!(g.attributed);
+    assert_eq!((g.nodes.node_count, g.nodes.input_words), (2, 16));
+    let named = |i: usize| {
+        let w = &t.words[i];
+        (
+            w.offset,
+            w.name.as_str(),
+            w.value,
+            w.node.map(|n| (n.node, n.word)),
+        )
+    };
+    assert_eq!(named(0), (0, "word 1", 1, Some((1, 1))));
+    assert_eq!(named(7), (14, "word 8", 8, Some((1, 8))));
+    assert_eq!(named(8), (16, "word 9", 9, Some((2, 1))));
+    assert_eq!(named(15), (30, "word 16", 16, Some((2, 8))));
+    assert!(t.pkw.is_none() && t.words.iter().all(|w| w.carries.is_none()));
+
+    // The 8 RPDO words of slave 1: OUTPUT 8 words carries them all.
+    let module = find_module(&ir, "OUTPUT 8 words", Out).unwrap();
+    let t = telegram(
+        &ir,
+        module,
+        Out,
+        &Hex::parse(&words_of(8)).unwrap(),
+        &mapping,
+    )
+    .unwrap();
+    assert!(t.words.iter().all(|w| w.node.map(|n| n.node) == Some(1)));
+}
+
+/// A module that carries part of the nodes' words, or more words than
+/// they have, or under a configuration the card refuses: its words are
+/// numbered, no node named.
+#[test]
+fn gateway_module_words_without_nodes() {
+    let ir = md810_gateway();
+    let unnamed = |mapping: &MappingInForce, module: &str, words: u16| {
+        let module = find_module(&ir, module, In).unwrap();
+        let hex = Hex::parse(&words_of(words)).unwrap();
+        let t = telegram(&ir, module, In, &hex, mapping).unwrap();
+        assert!(t.words.iter().all(|w| w.node.is_none()), "{module:?}");
+        assert_eq!(t.words[words as usize - 1].name, format!("word {words}"));
+        t.gateway.unwrap()
+    };
+    // The defaults: the bridge alone, no words.
+    let g = unnamed(&MappingInForce::defaults(), "INPUT 4 words", 4);
+    assert_eq!(
+        (g.source, g.attributed, g.nodes.input_words),
+        (ValueSource::Default, false, 0)
+    );
+    // The manual's example: 120 words, 16 in this module.
+    let example = prm(&ir, &manual_example_prm()).unwrap().mapping();
+    let g = unnamed(&example, "INPUT 16 words", 16);
+    assert_eq!((g.attributed, g.nodes.input_words), (false, 120));
+    // 16 words, but slave 2 has 9: refused.
+    let refused = prm(&ir, &gateway_prm(2, &[7, 9], &[])).unwrap().mapping();
+    let g = unnamed(&refused, "INPUT 16 words", 16);
+    assert!(g.nodes.refused.is_some() && !g.attributed);
+}
+
+#[test]
+fn gateway_modules_go_one_way() {
+    let ir = md810_gateway();
+    let d = find_module(&ir, "INPUT 16 words", Out).unwrap_err();
+    assert_eq!((d.code, d.span), ("E413", Some(0..14)));
+    assert_eq!(
+        d.message,
+        "the description has no output module `INPUT 16 words`"
+    );
+    assert_eq!(
+        d.help.as_deref(),
+        Some("the output modules (--direction out) are: OUTPUT 1 word, OUTPUT 2 words, OUTPUT 4 words, OUTPUT 8 words, OUTPUT 16 words")
+    );
+    let d = find_module(&ir, "PPO1", In).unwrap_err();
+    assert!(d
+        .help
+        .unwrap()
+        .starts_with("the modules are: INPUT 1 word, "));
+    let module = find_module(&ir, "OUTPUT 2 words", Out).unwrap();
+    let d = telegram(
+        &ir,
+        module,
+        Out,
+        &Hex::parse("0000").unwrap(),
+        &MappingInForce::defaults(),
+    )
+    .unwrap_err();
+    assert_eq!(d.message, "OUTPUT 2 words is 4 bytes; this is 2");
+    assert_eq!(
+        d.help.as_deref(),
+        Some("OUTPUT 2 words is 4 bytes of the master's output, the words the nodes receive")
+    );
+}
+
+/// 2.5's four blocks: type, CANopen slave, code (decimal 35, 34, 32), and
+/// type 4's drive fault code, high byte first.
+#[test]
+fn gateway_diagnosis_of_2_5() {
+    let ir = md810_gateway();
+    let read = |hex: &str| {
+        let block = diagnosis(&ir, &Hex::parse(hex).unwrap()).unwrap();
+        assert!(block.areas.is_empty());
+        block.gateway.unwrap()
+    };
+    for (hex, kind, node, code, text) in [
+        (
+            "04 01 02 23",
+            "Parameter error",
+            2,
+            35,
+            "Parameter PDO length does not match the drive",
+        ),
+        (
+            "04 01 1E 22",
+            "Parameter error",
+            30,
+            34,
+            "Node in the configuration not online",
+        ),
+        (
+            "04 03 01 20",
+            "CANopen network fault",
+            1,
+            32,
+            "CANopen slave dropped out while running",
+        ),
+    ] {
+        let g = read(hex);
+        assert_eq!(
+            (g.kind.at, g.kind.text.as_deref()),
+            (1, Some(kind)),
+            "{hex}"
+        );
+        assert_eq!((g.node.at, g.node.value, g.node.allowed), (2, node, true));
+        let c = g.code.unwrap();
+        assert_eq!(
+            (c.at, c.bytes, c.value, c.text.as_deref()),
+            (3, 1, code, Some(text))
+        );
+    }
+    let g = read("05 04 02 12 34");
+    assert_eq!(g.kind.text.as_deref(), Some("Drive reports fault"));
+    let c = g.code.unwrap();
+    assert_eq!(
+        (c.at, c.bytes, c.value, c.text.as_deref()),
+        (3, 2, 0x1234, Some("Drive fault code"))
+    );
+    let block = diagnosis(&ir, &Hex::parse("0504021234").unwrap()).unwrap();
+    assert_eq!(
+        (block.len, block.header, block.bytes),
+        (5, 5, vec![5, 4, 2, 0x12, 0x34])
+    );
+}
+
+/// Values the description does not name decode, and say so.
+#[test]
+fn gateway_diagnosis_names_what_it_can() {
+    let ir = md810_gateway();
+    let read = |hex: &str| {
+        diagnosis(&ir, &Hex::parse(hex).unwrap())
+            .unwrap()
+            .gateway
+            .unwrap()
+    };
+    let g = read("04 01 00 99");
+    assert_eq!(
+        (g.node.value, g.node.allowed, g.node.range),
+        (0, false, [1, 30])
+    );
+    assert_eq!(g.code.unwrap().text, None);
+    let g = read("04 02 1F 23");
+    assert_eq!((g.kind.value, g.kind.text.as_deref()), (2, None));
+    assert_eq!((g.node.value, g.node.allowed, g.code), (31, false, None));
+}
+
+#[test]
+fn gateway_diagnosis_errors() {
+    let ir = md810_gateway();
+    let fail = |hex: &str| diagnosis(&ir, &Hex::parse(hex).unwrap()).unwrap_err();
+    // Bytes missing, bytes too many, after the header's length.
+    let d = fail("04 01 02");
+    assert_eq!((d.code, d.span.clone()), ("E412", Some(8..8)));
+    assert_eq!(d.message, "the diagnosis block is 4 bytes; this is 3");
+    assert_eq!(
+        d.help.as_deref(),
+        Some("the header has bits 7-6 00 and bits 5-0 the block's length: 4 bytes for type 1 or 3, 5 bytes for type 4, the header included")
+    );
+    assert_eq!(fail("04 01 02 23 00").span, Some(12..14));
+    assert_eq!(fail("").code, "E412");
+    // Not device-related; a length no type has; a length not the type's.
+    let d = fail(" 84 01 02 23");
+    assert_eq!((d.code, d.span), ("E417", Some(1..3)));
+    assert!(d.message.contains("channel-related"), "{}", d.message);
+    let d = fail("07 01 02 23 00 00 00");
+    assert_eq!(
+        d.message,
+        "0x07 is not the header of this device's diagnosis block: it gives the length 7"
+    );
+    let d = fail("04 04 02 12");
+    assert_eq!((d.code, d.span), ("E417", Some(0..2)));
+    assert_eq!(
+        d.message,
+        "0x04 is not the header of a type 4 block: it gives the length 4"
+    );
+    assert_eq!(
+        d.help.as_deref(),
+        Some("a block of type 4 (Drive reports fault) is 5 bytes, the header included: it starts with 0x05")
+    );
+    assert_eq!(fail("05 01 02 23 00").code, "E417");
+}
+
+/// The JSON of a gateway's block and module, as docs/wire-format.md shows it.
+#[test]
+fn gateway_values_serialize_with_their_names() {
+    let ir = md810_gateway();
+    let block = diagnosis(&ir, &Hex::parse("05 04 02 12 34").unwrap()).unwrap();
+    let json = serde_json::to_value(&block).unwrap();
+    assert_eq!(json["areas"], serde_json::json!([]));
+    assert_eq!(
+        json["gateway"],
+        serde_json::json!({
+            "type": { "at": 1, "value": 4, "text": "Drive reports fault" },
+            "node": { "at": 2, "value": 2, "range": [1, 30], "allowed": true },
+            "code": { "at": 3, "bytes": 2, "value": 0x1234, "text": "Drive fault code" },
+        })
+    );
+    let t = decode(&ir, "INPUT 1 word", In, "0001");
+    let json = serde_json::to_value(&t).unwrap();
+    assert_eq!(json["words"][0]["node"], serde_json::Value::Null);
+    assert_eq!(json["gateway"]["source"], "default");
+    assert_eq!(json["gateway"]["attributed"], false);
+    assert_eq!(json["gateway"]["nodes"]["node_count"], 1);
+    let md810 = decode(&md810(), "PPO1", Out, &ppo1("10F0 0800 0000 0000"));
+    assert_eq!(
+        serde_json::to_value(&md810).unwrap()["gateway"],
+        serde_json::Value::Null
+    );
 }

@@ -10,6 +10,7 @@
 //! Diagrams are laid out in [`svg`], and PKW and diagnosis examples are
 //! encoded by the firmware's own codecs ([`crate::pkw`]).
 
+mod gateway;
 mod identity;
 mod page;
 mod params;
@@ -18,7 +19,7 @@ mod svg;
 mod telegrams;
 
 use super::{Artifact, ArtifactKind};
-use crate::ir::{Allowed, Ir, MappingEntry, MappingSet, Text};
+use crate::ir::{Allowed, DecisionKind, Ir, MappingEntry, MappingSet, Text};
 use page::{Builder, Cell, Run};
 
 /// A language of the datasheet: the description's texts in it, and gsdc's
@@ -129,9 +130,11 @@ fn document(ir: &Ir, lang: Lang) -> page::Doc {
     identity::section(&mut doc, ir, lang);
     telegrams::section(&mut doc, ir, lang);
     telegrams::words_section(&mut doc, ir, lang);
+    gateway::section(&mut doc, ir, lang);
     pkw::section(&mut doc, ir, lang);
     params::section(&mut doc, ir, lang);
     params::diagnosis_section(&mut doc, ir, lang);
+    gateway::diagnosis_section(&mut doc, ir, lang);
     identity::checklist_section(&mut doc, ir, lang);
     doc.finish()
 }
@@ -248,6 +251,31 @@ fn with_placeholder(lang: Lang, value: String, placeholder: bool) -> Cell {
         ));
     }
     cell
+}
+
+/// What kind of decision a value is, as the checklist says it.
+fn decision_kind(lang: Lang, kind: DecisionKind) -> &'static str {
+    match kind {
+        DecisionKind::Placeholder => lang.t("placeholder", "占位值"),
+        DecisionKind::Choice => lang.t("the description's own choice", "描述文件自行确定"),
+        _ => lang.t("gsdc's default", "gsdc 默认值"),
+    }
+}
+
+/// A mark for a value at `path` of the description (or inside it) that the
+/// manual does not give, saying what kind of decision it is; `None` for a
+/// value the manual gives.
+fn decision_mark(ir: &Ir, lang: Lang, path: &str) -> Option<Run> {
+    let inside = |outer: &str, inner: &str| {
+        inner == outer
+            || inner
+                .strip_prefix(outer)
+                .is_some_and(|r| r.starts_with('.'))
+    };
+    ir.decisions
+        .iter()
+        .find(|d| inside(&d.path, path) || inside(path, &d.path))
+        .map(|d| Run::Mark(decision_kind(lang, d.kind).to_string()))
 }
 
 /// `bit 3`, `bits 9-10`.

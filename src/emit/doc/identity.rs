@@ -2,10 +2,9 @@
 //! what must be checked before the files ship.
 
 use super::page::{code, text, Builder, Cell, Run};
-use super::{with_placeholder, Lang};
+use super::{decision_kind, with_placeholder, Lang};
 use crate::ir::profibus::Profibus;
 use crate::ir::profinet::Profinet;
-use crate::ir::DecisionKind;
 use crate::ir::{Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -259,11 +258,7 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut rows: Vec<Vec<Cell>> = Vec::new();
     let mut row = |what: &str, why: &str| rows.push(vec![text(what), vec![Run::Mark(why.into())]]);
     for decision in &ir.decisions {
-        let kind = match decision.kind {
-            DecisionKind::Placeholder => lang.t("placeholder", "占位值"),
-            DecisionKind::Choice => lang.t("the description's own choice", "描述文件自行确定"),
-            _ => lang.t("gsdc's default", "gsdc 默认值"),
-        };
+        let kind = decision_kind(lang, decision.kind);
         row(
             &format!("{} = {}", decision.path, decision.value),
             &format!("{kind}{}{}", lang.t(": ", "："), decision.reason),
@@ -276,22 +271,45 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         ),
     );
-    if ir.profibus.is_some() {
+    if let Some(p) = &ir.profibus {
+        if !p.modules.is_empty() {
+            row(
+                lang.t("Config bytes of each PPO type", "各 PPO 类型的配置字节"),
+                lang.t(
+                    "gsdc: consistent words in and out, derived from the layout",
+                    "gsdc 约定：按数据布局生成的输入输出一致性字",
+                ),
+            );
+        }
+        if !p.user_prm.blocks.is_empty() {
+            row(
+                lang.t(
+                    "Parameter telegram (User_Prm_Data) layout",
+                    "参数报文（User_Prm_Data）布局",
+                ),
+                lang.t(
+                    "gsdc: one Unsigned16 per mapping, in the order of the table, no gaps",
+                    "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙",
+                ),
+            );
+        }
+    }
+    if ir.gateway.is_some() {
         row(
-            lang.t("Config bytes of each PPO type", "各 PPO 类型的配置字节"),
+            lang.t("Config byte of each gateway module", "各网桥模块的配置字节"),
             lang.t(
-                "gsdc: consistent words in and out, derived from the layout",
-                "gsdc 约定：按数据布局生成的输入输出一致性字",
+                "gsdc: one identifier byte of words per module, from its direction and size",
+                "gsdc 约定：每个模块一个以字为单位的标识字节，由其方向和大小生成",
             ),
         );
         row(
             lang.t(
-                "Parameter telegram (User_Prm_Data) layout",
-                "参数报文（User_Prm_Data）布局",
+                "Gateway parameters in User_Prm_Data",
+                "User_Prm_Data 中的网桥参数",
             ),
             lang.t(
-                "gsdc: one Unsigned16 per mapping, in the order of the table, no gaps",
-                "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙",
+                "gsdc: the node count, then each node's input and output words, in the order of the table, no gaps; bit areas share a byte",
+                "gsdc 约定：先是节点数，然后是各节点的输入、输出字数，按表中顺序排列，无间隙；位域共用字节",
             ),
         );
     }

@@ -13,12 +13,20 @@ use crate::ir::{EntryKey, Ir, MappingKind};
 use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    if ir.mappings.groups.is_empty() {
+    let gateway_params = ir
+        .profibus
+        .as_ref()
+        .is_some_and(|p| !p.user_prm.gateway.is_empty());
+    if ir.mappings.groups.is_empty() && !gateway_params {
         return;
     }
     doc.section(
         "parameters",
-        lang.t("Parameters: mappings and settings", "参数：映射与设置"),
+        if ir.mappings.groups.is_empty() {
+            lang.t("Parameters", "参数")
+        } else {
+            lang.t("Parameters: mappings and settings", "参数：映射与设置")
+        },
     );
     if let Some(p) = &ir.profibus {
         user_prm(doc, ir, p, lang);
@@ -69,10 +77,24 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
             "PROFIBUS 参数报文（User_Prm_Data）",
         ),
     );
-    doc.para(text(lang.f(
-        format!("The master sends it before data exchange, after the 7 standard bytes: {} bytes, offsets counted from its first byte. Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.", prm.len),
-        format!("主站在数据交换前发送参数报文，位于 7 个标准字节之后：共 {} 字节，偏移从其第一个字节算起。每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。", prm.len),
-    )));
+    let intro = lang.f(
+        format!("The master sends it before data exchange, after the 7 standard bytes: {} bytes, offsets counted from its first byte.", prm.len),
+        format!("主站在数据交换前发送参数报文，位于 7 个标准字节之后：共 {} 字节，偏移从其第一个字节算起。", prm.len),
+    );
+    let types = if prm.gateway.is_empty() {
+        lang.t(
+            " Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.",
+            "每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。",
+        )
+    } else {
+        lang.t(
+            " An Unsigned8 is one byte, an Unsigned16 two, high byte first; a BitArea(first-last) is those bits of its byte, whose other bits other parameters hold. The configuration tool shows the values in decimal.",
+            "Unsigned8 占一个字节，Unsigned16 占两个字节，高字节在前；BitArea(起始位-结束位) 为所在字节中的这些位，该字节的其余位属于其它参数。组态软件中以十进制显示。",
+        )
+    };
+    doc.para(text(format!("{intro}{types}")));
+    // A drive parameter holds a mapping; a gateway's parameters have none.
+    let drive_column = !prm.blocks.is_empty();
     let mut rows: Vec<Vec<Cell>> = Vec::new();
     if !prm.constant.is_empty() {
         let last = prm.constant.len() as u16 - 1;
@@ -96,18 +118,21 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     for param in prm.params() {
         rows.push(param_row(ir, lang, param));
     }
-    doc.table(
-        lang.t("User_Prm_Data", "User_Prm_Data"),
-        &[
-            lang.t("Bytes", "字节"),
-            lang.t("Name", "名称"),
-            lang.t("Type", "类型"),
-            lang.t("Default", "默认值"),
-            lang.t("Range or choices", "范围或选项"),
-            lang.t("Drive parameter", "变频器参数"),
-        ],
-        rows,
-    );
+    let mut head = vec![
+        lang.t("Bytes", "字节"),
+        lang.t("Name", "名称"),
+        lang.t("Type", "类型"),
+        lang.t("Default", "默认值"),
+        lang.t("Range or choices", "范围或选项"),
+        lang.t("Drive parameter", "变频器参数"),
+    ];
+    if !drive_column {
+        head.pop();
+        for row in &mut rows {
+            row.pop();
+        }
+    }
+    doc.table(lang.t("User_Prm_Data", "User_Prm_Data"), &head, rows);
     let defaults = ir.default_user_prm(prm);
     doc.para(vec![
         super::page::Run::Text(lang.t("With every default: ", "全部为默认值时：").into()),
@@ -284,31 +309,14 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
 
 fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
     let header = STANDARD_DIAG_BYTES;
-    let [ident_high, ident_low] = p.ident_number.to_be_bytes();
-    let mut rows = vec![
-        vec![
-            text(bytes(lang, 0, 2)),
-            text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3")),
-        ],
-        vec![
-            text(bytes(lang, 3, 3)),
-            text(lang.t("the master's address", "主站号")),
-        ],
-        vec![
-            text(bytes(lang, 4, 5)),
-            text(lang.f(
-                format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"),
-                format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}"),
-            )),
-        ],
-        vec![
-            text(bytes(lang, u16::from(header), u16::from(header))),
-            text(lang.f(
-                format!("header: the block's length, {:02X}", d.length),
-                format!("块头：块长度 {:02X}", d.length),
-            )),
-        ],
-    ];
+    let mut rows = standard_diagnosis_rows(p, lang);
+    rows.push(vec![
+        text(bytes(lang, u16::from(header), u16::from(header))),
+        text(lang.f(
+            format!("header: the block's length, {:02X}", d.length),
+            format!("块头：块长度 {:02X}", d.length),
+        )),
+    ]);
     for byte in 1..d.length {
         let bit_of_byte = u16::from(byte - 1) * 8;
         let areas: Vec<String> = d
@@ -327,6 +335,28 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
         rows.push(vec![text(bytes(lang, at, at)), text(content)]);
     }
     rows
+}
+
+/// The standard diagnosis before the device-related block.
+pub(super) fn standard_diagnosis_rows(p: &Profibus, lang: Lang) -> Vec<Vec<Cell>> {
+    let [ident_high, ident_low] = p.ident_number.to_be_bytes();
+    vec![
+        vec![
+            text(bytes(lang, 0, 2)),
+            text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3")),
+        ],
+        vec![
+            text(bytes(lang, 3, 3)),
+            text(lang.t("the master's address", "主站号")),
+        ],
+        vec![
+            text(bytes(lang, 4, 5)),
+            text(lang.f(
+                format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"),
+                format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}"),
+            )),
+        ],
+    ]
 }
 
 /// Each value of an area with the whole device-related block that reports

@@ -243,18 +243,19 @@ fn slot(rect: Rect, align: Align, line: Line) -> Item {
 // ---------------------------------------------------------------------------
 // The words of each telegram
 
-/// A word of a telegram one way: what the diagram's box and the table's
-/// row show.
+/// A word of a telegram one way (or a gateway node's words): what the
+/// diagram's box and the table's row show.
 #[derive(Clone, PartialEq, Eq)]
-struct WordView {
-    label: String,
+pub(super) struct WordView {
+    pub label: String,
     /// What it carries: for a mapped word, its default.
-    role: String,
-    mapped: bool,
+    pub role: String,
+    pub mapped: bool,
     /// The drive parameter that sets a mapped word.
-    parameter: Option<String>,
-    first_byte: u16,
-    style: Style,
+    pub parameter: Option<String>,
+    pub first_byte: u16,
+    pub last_byte: u16,
+    pub style: Style,
 }
 
 fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView> {
@@ -286,6 +287,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
                 mapped: false,
                 parameter: None,
                 first_byte,
+                last_byte: first_byte + 1,
                 style: Style::Pzd,
             };
         }
@@ -296,6 +298,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
                 mapped: false,
                 parameter: None,
                 first_byte,
+                last_byte: first_byte + 1,
                 style: Style::Word,
             };
         }
@@ -306,6 +309,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
                 mapped: true,
                 parameter,
                 first_byte,
+                last_byte: first_byte + 1,
                 style: Style::Pzd,
             },
             None => WordView {
@@ -314,6 +318,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
                 mapped: false,
                 parameter: None,
                 first_byte,
+                last_byte: first_byte + 1,
                 style: Style::Pzd,
             },
         }
@@ -326,6 +331,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
             mapped: false,
             parameter: None,
             first_byte: 2 * i as u16,
+            last_byte: 2 * i as u16 + 1,
             style: Style::Pkw,
         })
         .chain(pzd)
@@ -458,7 +464,14 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         }
         let out = words(ir, lang, longest, Direction::Out);
         let inn = words(ir, lang, longest, Direction::In);
-        doc.figure(caption.clone(), words_figure(lang, &caption, &out, &inn));
+        let lanes = [
+            (direction_name(lang, Direction::Out), &out[..]),
+            (direction_name(lang, Direction::In), &inn[..]),
+        ];
+        doc.figure(
+            caption.clone(),
+            words_figure(lang, "words", &caption, lanes),
+        );
         let rows = out
             .iter()
             .zip(&inn)
@@ -469,7 +482,7 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     } else {
                         format!("{} / {}", o.label, i.label)
                     }),
-                    text(bytes(lang, o.first_byte, o.first_byte + 1)),
+                    text(bytes(lang, o.first_byte, o.last_byte)),
                     text(word_cell(lang, o)),
                     text(word_cell(lang, i)),
                 ]
@@ -511,7 +524,13 @@ const COLUMNS: u32 = 8;
 const BOX_W: u32 = 104;
 const BOX_GAP: u32 = 6;
 
-fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> Svg {
+/// Two lanes of word boxes, eight a row, each lane under its title.
+pub(super) fn words_figure(
+    lang: Lang,
+    kind: &'static str,
+    title: &str,
+    lanes: [(&str, &[WordView]); 2],
+) -> Svg {
     let inner = BOX_W - 2 * svg::PAD;
     let lines_of = |w: &WordView| {
         let mut lines = vec![line(&w.label, Weight::Bold)];
@@ -523,23 +542,19 @@ fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> 
         if let Some(parameter) = &w.parameter {
             lines.push(line(parameter, Weight::Small));
         }
-        lines.push(line(
-            &bytes(lang, w.first_byte, w.first_byte + 1),
-            Weight::Small,
-        ));
+        lines.push(line(&bytes(lang, w.first_byte, w.last_byte), Weight::Small));
         lines
     };
-    let box_h = out
+    let box_h = lanes
         .iter()
-        .chain(inn)
+        .flat_map(|(_, words)| words.iter())
         .map(|w| svg::height_for(&lines_of(w)))
         .max()
         .unwrap_or(0);
     let title_h = svg::height_for(&[line("X", Weight::Bold)]);
     let mut items = Vec::new();
     let mut y = MARGIN;
-    for (direction, words) in [(Direction::Out, out), (Direction::In, inn)] {
-        let name = direction_name(lang, direction);
+    for (name, words) in lanes {
         let w = svg::text_width(name, Weight::Bold) + 2 * svg::PAD;
         items.push(slot(
             Rect {
@@ -570,7 +585,7 @@ fn words_figure(lang: Lang, title: &str, out: &[WordView], inn: &[WordView]) -> 
         y += rows * (box_h + BOX_GAP) + 8;
     }
     Svg {
-        kind: "words",
+        kind,
         width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
         height: y - 8 - BOX_GAP + MARGIN,
         title: title.to_string(),
