@@ -350,7 +350,7 @@ fn header(ir: &Ir, p: &str, l: &str) -> String {
          included together.",
         ir.device.vendor,
         ir.device.model,
-        contents(ir)
+        super::layout_contents(ir)
     );
     let mut lines = vec![
         format!(
@@ -377,46 +377,6 @@ fn header(ir: &Ir, p: &str, l: &str) -> String {
         }));
     }
     block_comment(&lines)
-}
-
-/// What the layout holds: `the cyclic telegrams, the PKW channel and the
-/// bus constants`.
-fn contents(ir: &Ir) -> String {
-    let has_telegrams = ir.profibus.as_ref().is_some_and(|p| !p.modules.is_empty())
-        || ir.profinet.as_ref().is_some_and(|p| !p.modules.is_empty());
-    let parts = [
-        (has_telegrams, "the cyclic telegrams"),
-        (ir.telegram.pkw != PkwKind::None, "the PKW channel"),
-        (
-            Direction::BOTH
-                .iter()
-                .any(|&d| ir.telegram.word(d).is_some()),
-            "control and status words",
-        ),
-        (!ir.mappings.groups.is_empty(), "the configurable mappings"),
-        (ir.gateway.is_some(), "the gateway's node parameters"),
-        (ir.gateway.is_some(), "its modules"),
-        (
-            ir.gateway.as_ref().is_some_and(|g| g.diagnosis.is_some()),
-            "its diagnosis",
-        ),
-    ];
-    let present: Vec<&str> = parts
-        .iter()
-        .filter(|(present, _)| *present)
-        .map(|(_, part)| *part)
-        .chain(["the bus constants"])
-        .collect();
-    joined(&present, "and")
-}
-
-/// `a, b and c` (or `a, b or c`).
-fn joined(items: &[&str], conjunction: &str) -> String {
-    match items {
-        [] => String::new(),
-        [one] => one.to_string(),
-        [rest @ .., last] => format!("{} {conjunction} {last}", rest.join(", ")),
-    }
 }
 
 fn pkw_doc(kind: PkwKind) -> Option<String> {

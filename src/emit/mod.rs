@@ -7,7 +7,7 @@ pub mod gsdml;
 pub mod rust;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::Ir;
+use crate::ir::{Direction, Ir, PkwKind};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -103,6 +103,46 @@ fn layout_stem(ir: &Ir) -> String {
     stem.chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect()
+}
+
+/// What the layout holds: `the cyclic telegrams, the PKW channel and the
+/// bus constants`.
+pub(crate) fn layout_contents(ir: &Ir) -> String {
+    let has_telegrams = ir.profibus.as_ref().is_some_and(|p| !p.modules.is_empty())
+        || ir.profinet.as_ref().is_some_and(|p| !p.modules.is_empty());
+    let parts = [
+        (has_telegrams, "the cyclic telegrams"),
+        (ir.telegram.pkw != PkwKind::None, "the PKW channel"),
+        (
+            Direction::BOTH
+                .iter()
+                .any(|&d| ir.telegram.word(d).is_some()),
+            "control and status words",
+        ),
+        (!ir.mappings.groups.is_empty(), "the configurable mappings"),
+        (ir.gateway.is_some(), "the gateway's node parameters"),
+        (ir.gateway.is_some(), "its modules"),
+        (
+            ir.gateway.as_ref().is_some_and(|g| g.diagnosis.is_some()),
+            "its diagnosis",
+        ),
+    ];
+    let present: Vec<&str> = parts
+        .iter()
+        .filter(|(present, _)| *present)
+        .map(|(_, part)| *part)
+        .chain(["the bus constants"])
+        .collect();
+    joined(&present, "and")
+}
+
+/// `a, b and c` (or `a, b or c`).
+pub(crate) fn joined(items: &[&str], conjunction: &str) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [rest @ .., last] => format!("{} {conjunction} {last}", rest.join(", ")),
+    }
 }
 
 /// What every generated file's header says beyond its origin: which

@@ -45,7 +45,8 @@ struct Context<'a> {
     generator: &'static str,
     source: &'a str,
     fingerprint: String,
-    device: String,
+    /// What the layout holds, as `//` lines.
+    summary: Vec<String>,
     /// Header comment lines: translations and decisions, wrapped.
     notes: Vec<String>,
     pkw_module: Option<&'static str>,
@@ -283,12 +284,29 @@ pub fn file_name(ir: &Ir) -> String {
     format!("{}_layout.rs", super::layout_stem(ir))
 }
 
+/// The header's paragraph: "Firmware layout of Inovance MD810DP: the cyclic
+/// telegrams, ...", wrapped to rustfmt's width after `// `.
+fn summary(ir: &Ir) -> Vec<String> {
+    let text = format!(
+        "Firmware layout of {} {}: {}, from the same description as the device \
+         files. Multi-byte values on the bus are big-endian. no_std, no unsafe, \
+         no dependencies. It is built from the support module gsdc writes beside \
+         it, `gsdc_support.rs`, which the crate includes once at its root, \
+         whatever the number of layouts. What each byte means on the wire: \
+         docs/wire-format.md in gsdc's repository.",
+        ir.device.vendor,
+        ir.device.model,
+        super::layout_contents(ir)
+    );
+    super::wrap_words(&text, 77)
+}
+
 fn context(ir: &Ir) -> Context<'_> {
     Context {
         generator: crate::GENERATOR,
         source: &ir.source_name,
         fingerprint: ir.fingerprint.to_string(),
-        device: format!("{} {}", ir.device.vendor, ir.device.model),
+        summary: summary(ir),
         notes: notes(ir),
         pkw_module: match ir.telegram.pkw {
             PkwKind::None => None,

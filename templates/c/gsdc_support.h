@@ -99,7 +99,7 @@ typedef enum {
     GSDC_PRM_OK = 0,
     /* It is `found` bytes long; it must be `expected`. */
     GSDC_PRM_LENGTH,
-    /* The value at byte `offset` is `value`, which its mapping does not allow. */
+    /* The value at byte `offset` is `value`, which its parameter does not allow. */
     GSDC_PRM_NOT_ALLOWED
 } gsdc_prm_fault_t;
 

@@ -223,7 +223,7 @@ pub const fn defaults<const N: usize>(mappings: &[Mapping; N]) -> [u16; N] {
 pub enum PrmError {
     /// It is `found` bytes long; it must be `expected`.
     Length { expected: usize, found: usize },
-    /// The value at byte `offset` is not one its mapping allows.
+    /// The value at byte `offset` is not one its parameter allows.
     NotAllowed { offset: usize, value: u16 },
 }
 

@@ -7,7 +7,8 @@
 //! Texts go to the template raw: it writes them through its `comment`
 //! filter.
 
-use super::{c_string, hex_bytes, initializer, joined, value_set_item, Names, ValueSetItem};
+use super::super::joined;
+use super::{c_string, hex_bytes, initializer, value_set_item, Names, ValueSetItem};
 use crate::ir::gateway::{DiagCode, Diagnosis, Gateway, Param, ParamKey};
 use crate::ir::profibus::{PrmType, PrmValue, Profibus};
 use crate::ir::Direction;

@@ -110,20 +110,53 @@ fn files_table(doc: &mut Builder, ir: &Ir, lang: Lang) {
             id,
         ]);
     }
-    let mut layout = code(crate::emit::rust::file_name(ir));
-    layout.push(Run::Text(lang.t(" with ", " 及 ").into()));
-    layout.push(Run::Code(crate::emit::rust::SUPPORT_FILE_NAME.into()));
-    rows.push(vec![
-        layout,
-        text(lang.t(
-            "Firmware layout (Rust, no_std)",
-            "固件数据布局（Rust，no_std）",
-        )),
-        vec![
-            Run::Text(lang.t("fingerprint ", "指纹 ").into()),
-            Run::Code(ir.fingerprint.to_string()),
-        ],
-    ]);
+    let bitmaps = ir
+        .profibus
+        .iter()
+        .filter_map(|p| p.bitmap_device.as_ref())
+        .chain(
+            ir.profinet
+                .iter()
+                .filter_map(|p| p.device_symbol.as_ref().map(|s| &s.file)),
+        );
+    for bitmap in bitmaps {
+        rows.push(vec![
+            code(format!("{bitmap}.bmp")),
+            text(lang.t("Device symbol", "设备图标")),
+            text(lang.t("70 x 40 pixels, 16 colours", "70 x 40 像素，16 色")),
+        ]);
+    }
+    let layouts = [
+        (
+            crate::emit::rust::file_name(ir),
+            crate::emit::rust::SUPPORT_FILE_NAME,
+            lang.t(
+                "Firmware layout (Rust, no_std)",
+                "固件数据布局（Rust，no_std）",
+            ),
+        ),
+        (
+            crate::emit::c::file_name(ir),
+            crate::emit::c::SUPPORT_FILE_NAME,
+            lang.t(
+                "Firmware layout (C99 and C++)",
+                "固件数据布局（C99 和 C++）",
+            ),
+        ),
+    ];
+    for (layout, support, what) in layouts {
+        let mut file = code(layout);
+        file.push(Run::Text(lang.t(" with ", " 及 ").into()));
+        file.push(Run::Code(support.into()));
+        rows.push(vec![
+            file,
+            text(what),
+            vec![
+                Run::Text(lang.t("fingerprint ", "指纹 ").into()),
+                Run::Code(ir.fingerprint.to_string()),
+            ],
+        ]);
+    }
     doc.table(
         lang.t(
             "The files gsdc generates from the description",
