@@ -1,6 +1,6 @@
 //! The build: description files to the files they give, checked, then
 //! written. `gsdc build` and build scripts go through the same steps
-//! ([`Compiler::compile`]: read the description within its size limit,
+//! (`Compiler::compile`: read the description within its size limit,
 //! decode, load, compile, deny warnings when asked, validate each GSDML
 //! against the PI schema when asked), so they cannot drift apart.
 //!
@@ -44,7 +44,8 @@
 
 use crate::diag::{Diagnostic, Diagnostics, Severity, Source};
 use crate::file_kind::{self, FileKind};
-use crate::output::{read_input, write_files, ReadError, WriteError};
+use crate::output::{read_input, ReadError};
+pub use crate::output::{write_files, Outcome, WriteError, Written, GENERATED_MARK};
 use crate::xsd::Schema;
 use crate::{Artifact, ArtifactKind, Language};
 use std::fmt;
@@ -178,7 +179,8 @@ impl Config {
     }
 
     /// The steps of a build, with the schema loaded when one is asked for.
-    pub fn compiler(&self) -> Result<Compiler, BuildError> {
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
+    pub(crate) fn compiler(&self) -> Result<Compiler, BuildError> {
         self.compiler_with(self.xsd.as_deref())
     }
 
@@ -234,7 +236,7 @@ impl Config {
 
 /// The steps from a description file to its files: one [`Config`]'s
 /// settings, and the PI schema loaded once for every description.
-pub struct Compiler {
+pub(crate) struct Compiler {
     deny_warnings: bool,
     schema: Option<Schema>,
     /// The languages whose firmware layouts a build writes.
@@ -245,7 +247,7 @@ pub struct Compiler {
 /// none.
 #[derive(Debug)]
 #[non_exhaustive]
-pub struct Compiled {
+pub(crate) struct Compiled {
     /// The description's findings (warnings too, possibly none), then those
     /// of each generated GSDML the PI schema rejects.
     pub findings: Vec<Findings>,
@@ -255,7 +257,7 @@ pub struct Compiled {
 /// Why a description gave no files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
-pub enum Refused {
+pub(crate) enum Refused {
     /// The description, or a GSDML it gives, has errors.
     Errors,
     /// It has warnings, and warnings are denied.
@@ -264,6 +266,7 @@ pub enum Refused {
 
 /// Diagnostics about one text: a description, or a generated file.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct Findings {
     /// The name the diagnostics give for the text.
     pub name: String,
@@ -412,7 +415,7 @@ pub struct Loaded {
 }
 
 /// Reads the description at `path` (no more than
-/// [`crate::load::INPUT_LIMIT`]), decodes and loads it: every command that
+/// `INPUT_LIMIT`), decodes and loads it: every command that
 /// reads a description starts here. `name` names it in diagnostics. `Err`
 /// only when the file cannot be read.
 pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
@@ -469,7 +472,8 @@ fn read_beside(folder: &Path, name: &str) -> Result<Vec<u8>, String> {
 
 /// Two descriptions that give files of one name with different contents.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Collision {
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
+pub(crate) struct Collision {
     pub file_name: String,
     pub first: PathBuf,
     pub second: PathBuf,
@@ -491,7 +495,8 @@ impl fmt::Display for Collision {
 /// descriptions give with the same bytes (a support module every layout
 /// shares, the same description given twice) is one file; two different
 /// files of one name are a collision, and every collision is returned.
-pub fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Vec<Collision>> {
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
+pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Vec<Collision>> {
     let mut merged: Vec<(PathBuf, Artifact)> = Vec::new();
     let mut collisions = Vec::new();
     for (description, files) in sets {
@@ -616,5 +621,57 @@ mod tests {
             "x-y.toml and x_y.toml both give x_y_layout.rs, with different contents"
         );
         assert_eq!(collisions[1].second, PathBuf::from("z.toml"));
+    }
+
+    /// The validation step, given a GSDML gsdc would not write: the PI schema
+    /// rejects it with E399 findings placed in it, named after the file and
+    /// its description; the GSDML gsdc writes passes.
+    #[cfg(feature = "xsd")]
+    #[test]
+    fn the_schema_step_rejects_a_gsdml_that_breaks_the_pi_schema() {
+        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let schema = manifest.join("../shared/reference/gsdml-xsd-v2.44");
+        let mut compiler = Config::new().xsd(schema).compiler().unwrap();
+        let description = manifest.join("descriptions/mv810-pnet02.toml");
+        let ir = load_file(&description, "mv810-pnet02.toml")
+            .unwrap()
+            .ir
+            .unwrap();
+        let files = crate::compile(&ir).unwrap();
+        assert_eq!(compiler.validate("mv810-pnet02.toml", &files).len(), 0);
+
+        let gsdml = files
+            .iter()
+            .find(|f| f.file_name.ends_with(".xml"))
+            .unwrap();
+        let text = String::from_utf8(gsdml.contents.clone()).unwrap();
+        // `UInt16` is no data type of the schema's (it says `Unsigned16`).
+        let broken_text = text.replacen("DataType=\"Unsigned16\"", "DataType=\"UInt16\"", 1);
+        assert_ne!(broken_text, text);
+        let broken = Artifact::new(
+            gsdml.kind,
+            gsdml.file_name.clone(),
+            broken_text.into_bytes(),
+        );
+        let layout = files
+            .iter()
+            .find(|f| f.file_name.ends_with(".rs"))
+            .unwrap()
+            .clone();
+        let rejected = compiler.validate("mv810-pnet02.toml", &[layout, broken]);
+        assert_eq!(rejected.len(), 1, "only the GSDML is validated");
+        let findings = &rejected[0];
+        assert_eq!(
+            findings.name,
+            format!("{} (generated from mv810-pnet02.toml)", gsdml.file_name)
+        );
+        assert!(!findings.diagnostics.is_empty());
+        for d in findings.diagnostics.iter() {
+            assert_eq!(d.code, "E399");
+            assert!(d.is_error());
+            let span = d.span.clone().expect("placed on its line");
+            let line = &findings.text[span];
+            assert!(line.contains("UInt16"), "{line}: {}", d.message);
+        }
     }
 }

@@ -9,6 +9,7 @@ use std::fmt::Write as _;
 use std::ops::Range;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Severity {
     Warning,
     Error,
@@ -24,6 +25,7 @@ impl Severity {
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Diagnostic {
     pub code: &'static str,
     pub severity: Severity,

@@ -1,36 +1,46 @@
 //! gsdc: compiles one TOML description of a fieldbus option card into its
-//! GSD (PROFIBUS-DP), GSDML (PROFINET) and firmware layout, and checks GSD and
-//! GSDML files.
+//! GSD (PROFIBUS-DP), GSDML (PROFINET) and firmware layouts, and checks GSD
+//! and GSDML files.
 //!
-//! The core is pure: [`load`], [`compile`], [`gsd::check`] and
-//! [`gsdml::check`] take text and return text and diagnostics, with no I/O
-//! and no clock. Files are read and written at the edges: the CLI, [`build`]
-//! for build scripts, and [`output`] which both use.
+//! The API: [`load`] reads a description into its plan ([`Ir`]), [`compile`]
+//! gives every file of it and [`document`] its datasheet, [`gsd::check`] and
+//! [`gsdml::check`] check a device file, each with [`Diagnostic`]s whose codes
+//! are in [`RULES`]. The core is pure: text in, text and diagnostics out, no
+//! I/O and no clock. Files are read and written at the edges: [`build`], for
+//! build scripts (and the command line, which is not part of the API).
 
-// The core.
-pub mod decode;
-pub mod description;
-pub mod diag;
-pub mod emit;
-pub mod file_kind;
+// The core. Public: what `load`, `compile` and the checks return (the
+// plan, the GSD and GSDML readers' models) and the rule table; the rest is
+// the crate's own.
+#[cfg(feature = "cli")]
+mod decode;
+mod description;
+mod diag;
+mod emit;
+mod file_kind;
 pub mod gsd;
 pub mod gsdml;
 pub mod ir;
 mod latin1;
-pub mod load;
-pub mod lower;
+mod load;
+mod lower;
 mod pkw;
 pub mod rules;
 mod spelling;
-pub mod symbol;
+mod symbol;
 mod utf16;
 
-// The edges.
+// The edges: the build-script API, the files, the PI schema.
 pub mod build;
-pub mod output;
+mod output;
 pub mod xsd;
 
-pub use diag::{Diagnostic, Diagnostics, Severity, Source};
+/// The command line, which the `gsdc` binary runs; not part of the API.
+#[cfg(feature = "cli")]
+#[doc(hidden)]
+pub mod cli;
+
+pub use diag::{line_col, Diagnostic, Diagnostics, Severity, Source};
 pub use emit::{Artifact, ArtifactKind, Language};
 pub use ir::Ir;
 pub use rules::{Rule, RULES};

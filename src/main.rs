@@ -1,7 +1,5 @@
 use std::process::ExitCode;
 
-mod cli;
-
 fn main() -> ExitCode {
-    ExitCode::from(cli::main().code())
+    ExitCode::from(gsdc::cli::main().code())
 }

@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 
 /// Why an input file was not read.
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum ReadError {
     /// More than the reader's limit; the diagnostic says which.
     TooLarge(Diagnostic),
@@ -33,6 +34,7 @@ pub fn read_input(path: &Path, limit: &InputLimit) -> Result<Vec<u8>, ReadError>
 /// [`HEAD_BYTES`] show it to be. A GSD or GSDML file is read up to its
 /// reader's limit, refused by its size before it is read when larger; of a
 /// file that is neither, only the first bytes are read.
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub fn read_device_file(path: &Path) -> Result<(FileKind, Vec<u8>), ReadError> {
     let mut file = fs::File::open(path).map_err(ReadError::Io)?;
     let known = file.metadata().map_err(ReadError::Io)?.len();
@@ -71,6 +73,7 @@ fn read_rest(
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Outcome {
     Written,
     Unchanged,
@@ -85,7 +88,7 @@ pub struct Written {
     /// Temporaries of an interrupted gsdc build found in the directory, and
     /// removed.
     pub leftovers: Vec<PathBuf>,
-    /// Stale files removed (see [`stale_files`]), when asked to prune.
+    /// Stale files removed (files gsdc generated that no given artifact is), when asked to prune.
     pub pruned: Vec<PathBuf>,
     /// Why the directory could not be locked, if it could not (a file
     /// system without locks): the files were written all the same, and
@@ -96,6 +99,7 @@ pub struct Written {
 /// Why the files were not all written: the path and the OS error, and which
 /// files were already replaced when it happened.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct WriteError {
     /// The file that could not be written, or the directory that could not
     /// be created or opened.
@@ -138,7 +142,7 @@ impl std::error::Error for WriteError {
 }
 
 /// Writes every file into `dir` (created if missing) unless it already
-/// holds exactly that content; with `prune`, removes the [`stale_files`]
+/// holds exactly that content; with `prune`, removes the stale files
 /// after.
 ///
 /// While it works it holds an exclusive lock on `dir` (`flock` on the
@@ -165,6 +169,7 @@ pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Writte
 }
 
 /// Whether `dir/file_name` holds exactly `contents`; a missing file does not.
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub fn is_up_to_date(dir: &Path, file_name: &str, contents: &[u8]) -> io::Result<bool> {
     match read_target(&dir.join(file_name)) {
         Ok(existing) => Ok(existing.is_some_and(|e| e == contents)),

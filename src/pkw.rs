@@ -13,11 +13,14 @@
 pub(crate) mod support;
 
 pub(crate) use support::diagnosis::DiagArea;
+pub(crate) use support::U16Be;
 pub(crate) use support::{pkw_pke_ind_pwe, pkw_station_command};
-pub(crate) use support::{BitField, U16Be, PKW_BYTES};
+#[cfg_attr(not(feature = "cli"), allow(unused_imports))] // the command line uses them
+pub(crate) use support::{BitField, PKW_BYTES};
 
 /// The four PKW words at the start of `bytes`, high byte first (words past
 /// the end of a short slice are zero).
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub(crate) fn pkw_words(bytes: &[u8]) -> [U16Be; 4] {
     support::words(bytes)
 }

@@ -616,12 +616,12 @@ fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
         let ir = gsdc::load(name, &text).0.unwrap();
         for file in gsdc::compile(&ir).unwrap() {
             let head = &file.contents[..file.contents.len().min(1024)];
-            let mark = gsdc::output::GENERATED_MARK.as_bytes();
+            let mark = gsdc::build::GENERATED_MARK.as_bytes();
             assert!(
                 head.windows(mark.len()).any(|w| w == mark),
                 "{} has no {:?} in its first KiB",
                 file.file_name,
-                gsdc::output::GENERATED_MARK
+                gsdc::build::GENERATED_MARK
             );
         }
     }

@@ -352,18 +352,33 @@ fn the_gateway_datasheet_is_chapter_2() {
         .map(|r| r[1].trim_matches('`').to_string())
         .collect::<Vec<_>>()
         .join(" ");
-    let ir = descriptions::load("md810-gateway.toml");
-    let hex = gsdc::decode::Hex::parse(&prm).unwrap();
-    let decoded = gsdc::decode::prm(&ir, &hex).unwrap();
-    let totals = decoded.gateway.unwrap();
+    let decoded = std::process::Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args([
+            "decode",
+            "descriptions/md810-gateway.toml",
+            "--format",
+            "json",
+        ])
+        .args(["--prm", &prm])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(decoded.status.code(), Some(0));
+    let decoded: serde_json::Value = serde_json::from_slice(&decoded.stdout).unwrap();
+    let totals = &decoded["prm"]["gateway"];
     assert_eq!(
         (
-            totals.node_count,
-            totals.input_len,
-            totals.output_len,
-            totals.refused
+            &totals["node_count"],
+            &totals["input_len"],
+            &totals["output_len"],
+            &totals["refused"]
         ),
-        (15, 240, 128, None)
+        (
+            &serde_json::json!(15),
+            &serde_json::json!(240),
+            &serde_json::json!(128),
+            &serde_json::Value::Null
+        )
     );
 
     // 2.5: each type and code with its block, decimal codes as hex bytes.

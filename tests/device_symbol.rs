@@ -47,8 +47,6 @@ fn text(files: &[Artifact], kind: ArtifactKind) -> String {
 
 #[test]
 fn the_symbol_is_beside_the_gsd_and_the_gsdml() {
-    let png = std::fs::read(Path::new(MANIFEST).join("descriptions/symbols/md810dp.png")).unwrap();
-    let bitmap = gsdc::symbol::device_bitmap(&png).unwrap().bmp;
     let path = with_symbol("md810dp.toml", "symbols/md810dp.png");
     let files = compile(&path);
     let bitmaps: Vec<(&str, &[u8])> = files
@@ -56,13 +54,15 @@ fn the_symbol_is_beside_the_gsd_and_the_gsdml() {
         .filter(|f| f.kind == ArtifactKind::DeviceSymbol)
         .map(|f| (f.file_name.as_str(), f.contents.as_slice()))
         .collect();
-    assert_eq!(
-        bitmaps,
-        [
-            ("MD810DP.bmp", bitmap.as_slice()),
-            ("GSDML-0A11-0810-MD810.bmp", bitmap.as_slice())
-        ]
-    );
+    let names: Vec<&str> = bitmaps.iter().map(|(name, _)| *name).collect();
+    assert_eq!(names, ["MD810DP.bmp", "GSDML-0A11-0810-MD810.bmp"]);
+    // One bitmap for both: a BMP of 70 x 40 pixels, 4 bits each (the
+    // conversion itself is tested in src/symbol/bmp_tests.rs).
+    let bmp = bitmaps[0].1;
+    assert_eq!(bitmaps[1].1, bmp);
+    let u32_at = |at: usize| u32::from_le_bytes(bmp[at..at + 4].try_into().unwrap());
+    assert_eq!(&bmp[..2], b"BM");
+    assert_eq!((u32_at(18), u32_at(22), bmp[28]), (70, 40, 4));
 
     let gsd = text(&files, ArtifactKind::Gsd);
     assert!(

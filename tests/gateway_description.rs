@@ -76,7 +76,7 @@ fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
     diagnostics
         .errors()
         .map(|d| {
-            let (line, column) = gsdc::diag::line_col(text, d.span.clone().unwrap().start);
+            let (line, column) = gsdc::line_col(text, d.span.clone().unwrap().start);
             (d.code, line, column)
         })
         .collect()
@@ -85,7 +85,7 @@ fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
 /// Line and column of the first `needle` in `text`, at `within` of it.
 fn place(text: &str, needle: &str, within: &str) -> (usize, usize) {
     let at = text.find(needle).unwrap() + needle.find(within).unwrap();
-    gsdc::diag::line_col(text, at)
+    gsdc::line_col(text, at)
 }
 
 #[test]

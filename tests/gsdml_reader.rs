@@ -425,7 +425,7 @@ fn e300_malformed_xml_points_at_the_error() {
     assert_eq!(found.0.len(), 1);
     let d = &found.0[0];
     assert_eq!(d.code, "E300");
-    let line = gsdc::diag::line_col(&text, d.span.clone().unwrap().start).0;
+    let line = gsdc::line_col(&text, d.span.clone().unwrap().start).0;
     assert_eq!(text.lines().nth(line - 1).unwrap().trim(), "</ModuleLis>");
 }
 

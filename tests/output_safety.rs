@@ -1,6 +1,6 @@
 //! Writing output when the disk says no: `gsdc build` exits 2 with the path
 //! and the OS error, `gsdc::build::generate` and
-//! `gsdc::output::write_files` return them, and no partial, truncated
+//! `gsdc::build::write_files` return them, and no partial, truncated
 //! or temporary file is left behind; a file already there is never replaced
 //! by a broken one.
 //!
@@ -9,7 +9,7 @@
 //! by the failing-disk unit tests in `src/output.rs`. Permission bits are
 //! not used: root ignores them.
 
-use gsdc::output::{write_files, Outcome};
+use gsdc::build::{write_files, Outcome};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -135,11 +135,7 @@ fn a_missing_output_directory_is_created() {
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     assert_eq!(names_in(&out).len(), MD810_FILES.len());
 
-    let files = [Artifact {
-        kind: ArtifactKind::Gsd,
-        file_name: "X.GSD".into(),
-        contents: b"x".to_vec(),
-    }];
+    let files = [Artifact::new(ArtifactKind::Gsd, "X.GSD", b"x".to_vec())];
     let lib_out = dir.join("c/d");
     assert_eq!(
         write_files(&lib_out, &files, false).unwrap().outcomes,

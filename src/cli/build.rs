@@ -1,14 +1,14 @@
 //! `gsdc build`: descriptions to device files, through the library's
-//! [`gsdc::build::Compiler`] as build scripts do. Every description is
+//! [`crate::build::Compiler`] as build scripts do. Every description is
 //! loaded, compiled and checked before anything is written, so an error in
 //! one leaves the output directory as it was; an I/O error while writing
 //! leaves it as it was too, as far as the disk allows (see
-//! `gsdc::output::write_files`).
+//! `crate::output::write_files`).
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
-use gsdc::build::{merge, Compiler, Config, Refused};
-use gsdc::output::{is_up_to_date, stale_files, write_files, Outcome};
-use gsdc::{Artifact, Language};
+use crate::build::{merge, Compiler, Config, Refused};
+use crate::output::{is_up_to_date, stale_files, write_files, Outcome};
+use crate::{Artifact, Language};
 use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Examples:
@@ -54,7 +54,7 @@ pub struct Args {
     firmware: Vec<Firmware>,
     /// Validate each GSDML against the PI schema in DIR (GSDML-DeviceProfile-v2.44.xsd
     /// and its imports) before anything is written; needs the `xsd` feature.
-    #[arg(long, value_name = "DIR", env = gsdc::build::XSD_ENV)]
+    #[arg(long, value_name = "DIR", env = crate::build::XSD_ENV)]
     xsd: Option<PathBuf>,
 }
 
@@ -147,9 +147,9 @@ fn compile_all(
 }
 
 /// The reading error, with the path shown as the human output shows paths.
-fn display_error(e: &gsdc::build::BuildError, path: &Path) -> String {
+fn display_error(e: &crate::build::BuildError, path: &Path) -> String {
     match e {
-        gsdc::build::BuildError::Read { error, .. } => {
+        crate::build::BuildError::Read { error, .. } => {
             format!("cannot read {}: {error}", display_name(path))
         }
         other => other.to_string(),

@@ -4,11 +4,11 @@
 //! are done, in the order of the arguments.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
-use gsdc::diag::{json_string, Diagnostic};
-use gsdc::file_kind::FileKind;
-use gsdc::output::{read_device_file, ReadError};
-use gsdc::xsd::Schema;
-use gsdc::{Diagnostics, Source};
+use crate::diag::{json_string, Diagnostic};
+use crate::file_kind::FileKind;
+use crate::output::{read_device_file, ReadError};
+use crate::xsd::Schema;
+use crate::{Diagnostics, Source};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Condvar, Mutex, MutexGuard};
@@ -206,10 +206,10 @@ fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report
     };
     match kind {
         FileKind::Gsd => {
-            let (text, diagnostics) = gsdc::gsd::check_bytes(&bytes);
+            let (text, diagnostics) = crate::gsd::check_bytes(&bytes);
             render(&name, &text, &diagnostics, format)
         }
-        FileKind::Gsdml => match gsdc::gsdml::decode(&bytes) {
+        FileKind::Gsdml => match crate::gsdml::decode(&bytes) {
             Ok(text) => {
                 let diagnostics = check_gsdml(path, &text, schema);
                 render(&name, &text, &diagnostics, format)
@@ -225,7 +225,7 @@ fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report
 
 /// gsdc's rules, then the schema's findings when there is a schema.
 fn check_gsdml(path: &Path, text: &str, schema: Option<&mut Schema>) -> Diagnostics {
-    let mut diagnostics = gsdc::gsdml::check(text, own_name(path));
+    let mut diagnostics = crate::gsdml::check(text, own_name(path));
     if let Some(schema) = schema {
         // libxml2 streams a file from disk faster than it builds a tree from
         // the text; a stream (`/dev/stdin`) can be read once only.

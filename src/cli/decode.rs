@@ -1,13 +1,13 @@
 //! `gsdc decode`: captured bus data read against a description. This file
-//! parses the arguments and renders; the decoding is `gsdc::decode`.
+//! parses the arguments and renders; the decoding is `crate::decode`.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
-use gsdc::decode::{
+use crate::decode::{
     self, Carried, Channel, DecodedWord, DiagnosisBlock, GatewayData, GatewayDiagnosis, Hex,
     MappingInForce, NodeTotals, Pkw, PkwSide, Prm, Telegram, ValueSource,
 };
-use gsdc::ir::{Direction, Ir};
-use gsdc::{Diagnostic, Source};
+use crate::ir::{Direction, Ir};
+use crate::{Diagnostic, Source};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -98,7 +98,7 @@ pub fn run(args: &Args) -> Status {
 /// (its warnings are about the device files, not about decoding).
 fn load(path: &Path) -> Result<(String, Ir), Status> {
     let name = display_name(path);
-    let loaded = gsdc::build::load_file(path, &name).map_err(|e| {
+    let loaded = crate::build::load_file(path, &name).map_err(|e| {
         warn(&format!("error: cannot read {name}: {e}"));
         Status::UsageOrIo
     })?;

@@ -45,9 +45,9 @@ pub fn run(args: &Args) -> Status {
 
 /// The datasheet of one description; its findings are shown when it has
 /// errors (its warnings are about the device files).
-fn document_one(path: &Path) -> Result<Vec<gsdc::Artifact>, Status> {
+fn document_one(path: &Path) -> Result<Vec<crate::Artifact>, Status> {
     let name = display_name(path);
-    let loaded = gsdc::build::load_file(path, &name).map_err(|e| {
+    let loaded = crate::build::load_file(path, &name).map_err(|e| {
         warn(&format!("error: cannot read {name}: {e}"));
         Status::UsageOrIo
     })?;
@@ -57,5 +57,5 @@ fn document_one(path: &Path) -> Result<Vec<gsdc::Artifact>, Status> {
         }
         return Err(Status::InputErrors);
     };
-    Ok(gsdc::document(&ir))
+    Ok(crate::document(&ir))
 }

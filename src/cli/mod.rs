@@ -32,7 +32,7 @@ enum Command {
     Check(check::Args),
     /// Read a captured telegram, parameter telegram or diagnosis block against a description.
     Decode(decode::Args),
-    /// Write the datasheet of each description: DIR/<stem>.html (one page, no script) and DIR/<stem>.md.
+    /// Write the datasheet of each description: `DIR/<stem>.html` (one page, no script) and `DIR/<stem>.md`.
     #[command(after_help = doc::EXAMPLES)]
     Doc(doc::Args),
 }

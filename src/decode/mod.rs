@@ -20,16 +20,14 @@ mod pkw_channel;
 mod prm;
 mod telegram;
 
-pub use diagnosis::{Area, DiagnosisBlock};
-pub use gateway::{
-    DiagByte, DiagCodeValue, DiagNode, GatewayData, GatewayDiagnosis, NodeTotals, NodeWord,
-};
+pub use diagnosis::DiagnosisBlock;
+pub use gateway::{GatewayData, GatewayDiagnosis, NodeTotals};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, Module};
-pub use pkw_channel::{Channel, Parameter, Pkw, PkwError, PkwSide, Stations};
-pub use prm::{ConstantByte, Prm, PrmValue};
-pub use telegram::{Carried, DecodedWord, Field, Telegram};
+pub use pkw_channel::{Channel, Pkw, PkwSide};
+pub use prm::Prm;
+pub use telegram::{Carried, DecodedWord, Telegram};
 
 use crate::diag::Diagnostic;
 use crate::ir::{Direction, Ir};

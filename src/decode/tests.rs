@@ -1,5 +1,7 @@
 //! The manuals' telegrams, decoded against the shipped descriptions.
 
+use super::diagnosis::Area;
+use super::pkw_channel::{Parameter, PkwError, Stations};
 use super::*;
 use crate::ir::Direction::{In, Out};
 

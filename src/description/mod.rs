@@ -355,6 +355,8 @@ pub enum ConformanceClass {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+// PROFINET names the classes by Roman numerals.
+#[allow(clippy::upper_case_acronyms)]
 pub enum NetloadClass {
     I,
     II,

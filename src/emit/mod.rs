@@ -11,10 +11,22 @@ use crate::ir::{Direction, Ir, PkwKind};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Artifact {
     pub kind: ArtifactKind,
     pub file_name: String,
     pub contents: Vec<u8>,
+}
+
+impl Artifact {
+    /// A file of `kind` named `file_name` (no directory) holding `contents`.
+    pub fn new(kind: ArtifactKind, file_name: impl Into<String>, contents: Vec<u8>) -> Self {
+        Artifact {
+            kind,
+            file_name: file_name.into(),
+            contents,
+        }
+    }
 }
 
 /// What a generated file is for: the edges choose among them (a build

@@ -15,6 +15,7 @@
 
 /// Data bytes a module exchanges.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct IoLengths {
     pub input: u32,
     pub output: u32,
@@ -22,6 +23,7 @@ pub struct IoLengths {
 
 /// A special-format identifier announces more bytes than the list has.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct CfgError {
     /// Index of the special identifier in the list.
     pub at: usize,

@@ -22,6 +22,7 @@ impl<T> Spanned<T> {
 /// of keywords spells them.
 /// Descriptions key their MaxTsdr values by the same spelling.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Deserialize)]
+#[non_exhaustive]
 pub enum Baud {
     #[serde(rename = "9.6")]
     B9k6,
@@ -105,6 +106,7 @@ impl Baud {
 
 /// The argument a keyword carries in its name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
 pub enum Arg {
     /// `Unit_Diag_Bit(3)`, `Ext_User_Prm_Data_Const(0)`.
     Index(i64),
@@ -114,6 +116,7 @@ pub enum Arg {
 
 /// A keyword's value as written after `=`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Value {
     /// Nothing after the keyword (`EndModule`, `Data_Area_Beg`).
     None,
@@ -159,6 +162,7 @@ impl Value {
 
 /// One `Keyword[(arg)] = value` statement.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Setting {
     /// The keyword as written, case preserved (`MaxTsdr_1.5M`, `24V Pins`;
     /// borrowed from the schema when written as the specification spells it).
@@ -201,6 +205,7 @@ pub(crate) fn find_all<'a>(
 
 /// `Module = "name" config bytes` ... `EndModule`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Module {
     pub name: Spanned<String>,
     /// The config identifier bytes (values above 0xFF are reported and left out).
@@ -237,6 +242,7 @@ impl Module {
 
 /// An `ExtUserPrmData` data type.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum PrmDataType {
     Unsigned8,
     Unsigned16,
@@ -295,6 +301,7 @@ impl PrmDataType {
 
 /// What an `ExtUserPrmData` value may be.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Allowed {
     /// Nothing written after the default.
     Any,
@@ -316,6 +323,7 @@ impl Allowed {
 
 /// `ExtUserPrmData = id "name"` ... `EndExtUserPrmData`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct ExtUserPrmData {
     pub id: Spanned<i64>,
     pub name: Spanned<String>,
@@ -334,6 +342,7 @@ pub struct ExtUserPrmData {
 
 /// `PrmText = id` with `Text(value) = "text"` lines.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct PrmText {
     pub id: Spanned<i64>,
     pub texts: Vec<IndexedText>,
@@ -342,6 +351,7 @@ pub struct PrmText {
 
 /// `Text(n) = "..."`, `Value(n) = "..."`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct IndexedText {
     pub index: i64,
     pub text: Spanned<String>,
@@ -351,6 +361,7 @@ pub struct IndexedText {
 /// `Unit_Diag_Area = first-last` with `Value(n) = "text"` lines (also the
 /// `X_` form inside `UnitDiagType`).
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct UnitDiagArea {
     /// As written: `Unit_Diag_Area` or `X_Unit_Diag_Area`.
     pub keyword: Spanned<String>,
@@ -363,6 +374,7 @@ pub struct UnitDiagArea {
 
 /// `UnitDiagType = n` ... `EndUnitDiagType`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct UnitDiagType {
     pub id: Spanned<i64>,
     pub settings: Vec<Setting>,
@@ -372,6 +384,7 @@ pub struct UnitDiagType {
 
 /// `Slot(n) = "name" default allowed` inside `SlotDefinition`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Slot {
     pub number: i64,
     pub name: Spanned<String>,
@@ -385,6 +398,7 @@ pub struct Slot {
 /// A block whose content is plain settings: `Physical_Interface`,
 /// `Version_Firmware_Download`, `Jokerblock_Type`, `Data_Area_Beg`.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Block {
     /// The opening keyword as written, with its value.
     pub header: Setting,
@@ -394,6 +408,7 @@ pub struct Block {
 
 /// A GSD file as read.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct GsdFile {
     /// Span of the `#Profibus_DP` marker.
     pub marker: Option<Range<usize>>,

@@ -6,7 +6,7 @@
 //! of `docs/rules.md` over it: codes E300..E399 are errors, W300..W399
 //! warnings. All failures are collected.
 //!
-//! The rules are linear passes over an [`index::Index`] of the document's
+//! The rules are linear passes over an index (`index::Index`) of the document's
 //! GSDML elements, with hash maps for IDs and texts, so that checking the
 //! largest real files takes milliseconds.
 

@@ -26,8 +26,8 @@ const NODES_LIMIT: u32 = 4_000_000;
 
 /// Parses GSDML text. DTDs are refused, never resolved (so no entity is
 /// expanded and nothing is fetched); a text larger than [`INPUT_LIMIT`], a
-/// document with more than [`NODES_LIMIT`] nodes, or one beyond the limits
-/// of [`shape`](super::shape) is refused.
+/// document with more than `NODES_LIMIT` nodes, or one beyond the limits
+/// of `shape` is refused.
 pub fn parse(text: &str) -> Result<roxmltree::Document<'_>, Diagnostic> {
     INPUT_LIMIT.check(text.len())?;
     super::shape::check(text)?;

@@ -61,6 +61,7 @@ pub fn from_schema_location(location: &str) -> Option<Version> {
 
 /// The parts of a conventional GSDML file name.
 #[derive(Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct FileName<'n> {
     pub version: Version,
     pub vendor_and_family: &'n str,

@@ -128,6 +128,8 @@ pub enum ConformanceClass {
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
+// PROFINET names the classes by Roman numerals.
+#[allow(clippy::upper_case_acronyms)]
 pub enum NetloadClass {
     I,
     II,

@@ -41,7 +41,7 @@ pub fn validate(xml: &str) -> Result<(), Vec<String>> {
             let line = d
                 .span
                 .as_ref()
-                .map_or(0, |s| gsdc::diag::line_col(xml, s.start).0);
+                .map_or(0, |s| gsdc::line_col(xml, s.start).0);
             format!("line {line}: {}", d.message)
         })
         .collect())

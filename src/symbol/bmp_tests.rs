@@ -2,7 +2,7 @@
 //! written from the format (Microsoft's BITMAPFILEHEADER/BITMAPINFOHEADER),
 //! not from the writer's constants.
 
-use gsdc::symbol::{device_bitmap, SymbolError, HEIGHT, PALETTE, WIDTH};
+use super::{device_bitmap, SymbolError, HEIGHT, PALETTE, WIDTH};
 use proptest::prelude::*;
 
 const W: usize = 70;
@@ -114,7 +114,7 @@ fn picture(marks: &[((usize, usize), [u8; 3])]) -> Vec<[u8; 3]> {
     pixels
 }
 
-fn convert(pixels: &[[u8; 3]]) -> gsdc::symbol::DeviceBitmap {
+fn convert(pixels: &[[u8; 3]]) -> super::DeviceBitmap {
     device_bitmap(&rgb_png(WIDTH, HEIGHT, pixels)).unwrap()
 }
 
@@ -475,11 +475,11 @@ fn png_pixels(png: &[u8]) -> Vec<[u8; 3]> {
 }
 
 /// Every shipped symbol converts without changing a pixel. The bitmaps,
-/// turned back into PNGs, are left in the test's scratch directory for a
-/// look (`target/tmp/symbols/`).
+/// turned back into PNGs, are left in the target directory for a look
+/// (`target/tmp/symbols/`).
 #[test]
 fn the_shipped_symbols_convert_pixel_for_pixel() {
-    let scratch = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("symbols");
+    let scratch = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/tmp/symbols");
     std::fs::create_dir_all(&scratch).unwrap();
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/symbols");
     for name in ["md810dp", "9kdp1", "mv810-pnet02"] {

@@ -259,6 +259,10 @@ fn encode_bmp(indexes: &[u8]) -> Vec<u8> {
     bmp
 }
 
+/// The bitmap read back with a BMP reader written from the format.
+#[cfg(test)]
+mod bmp_tests;
+
 #[cfg(test)]
 mod tests {
     use super::*;
