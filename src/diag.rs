@@ -7,6 +7,7 @@
 
 use std::fmt::Write as _;
 use std::ops::Range;
+use unicode_width::UnicodeWidthChar;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 #[non_exhaustive]
@@ -282,28 +283,6 @@ impl Source<'_> {
         );
         pad
     }
-
-    /// One JSON object per diagnostic, on one line.
-    pub fn to_json(&self, diagnostic: &Diagnostic) -> String {
-        let (line, column) = match &diagnostic.span {
-            Some(span) => {
-                let (l, c) = line_col(self.text, span.start);
-                (l.to_string(), c.to_string())
-            }
-            None => ("null".into(), "null".into()),
-        };
-        let optional = |s: &Option<Box<str>>| s.as_deref().map_or("null".into(), json_string);
-        format!(
-            "{{\"file\":{},\"line\":{line},\"column\":{column},\"severity\":\"{}\",\"code\":\"{}\",\"subject\":{},\"message\":{},\"label\":{},\"help\":{}}}",
-            json_string(self.name),
-            diagnostic.severity.as_str(),
-            diagnostic.code,
-            optional(&diagnostic.subject),
-            json_string(&diagnostic.message),
-            optional(&diagnostic.label),
-            optional(&diagnostic.help),
-        )
-    }
 }
 
 /// Characters of a source line shown at most, so that a megabyte-long line
@@ -339,33 +318,11 @@ fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize
     (format!("{prefix}{lead}{tail}{suffix}"), caret_at, width)
 }
 
-/// The terminal columns characters take: two for the wide and full-width
-/// ones of East Asian scripts (Chinese texts are common in descriptions of
-/// Chinese drive makers), one for the rest. The ranges are the wide blocks
-/// of Unicode's East Asian Width property, as wcwidth draws them.
+/// The terminal columns characters take, as Unicode's East Asian Width
+/// and zero-width properties say (unicode-width, as wcwidth): two for the
+/// wide characters of Chinese texts, none for combining marks.
 fn columns(chars: impl Iterator<Item = char>) -> usize {
-    const WIDE: [(u32, u32); 12] = [
-        (0x1100, 0x115F),   // Hangul Jamo initials
-        (0x2E80, 0x303E),   // CJK radicals, punctuation
-        (0x3041, 0x33FF),   // Kana, CJK compatibility
-        (0x3400, 0x4DBF),   // CJK extension A
-        (0x4E00, 0x9FFF),   // CJK unified ideographs
-        (0xA000, 0xA4CF),   // Yi
-        (0xAC00, 0xD7A3),   // Hangul syllables
-        (0xF900, 0xFAFF),   // CJK compatibility ideographs
-        (0xFE30, 0xFE4F),   // CJK compatibility forms
-        (0xFF00, 0xFF60),   // full-width forms
-        (0xFFE0, 0xFFE6),   // full-width signs
-        (0x20000, 0x3FFFD), // CJK extensions B and later
-    ];
-    chars
-        .map(|c| {
-            let wide = WIDE
-                .iter()
-                .any(|&(lo, hi)| (lo..=hi).contains(&u32::from(c)));
-            1 + usize::from(wide)
-        })
-        .sum()
+    chars.map(|c| c.width().unwrap_or(0)).sum()
 }
 
 /// Tabs become one space and control characters a `?`, so carets line up.
@@ -379,26 +336,6 @@ fn printable(line: &str) -> String {
         .collect()
 }
 
-pub fn json_string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\r' => out.push_str("\\r"),
-            '\t' => out.push_str("\\t"),
-            c if (c as u32) < 0x20 => {
-                let _ = write!(out, "\\u{:04x}", c as u32);
-            }
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -409,6 +346,26 @@ mod tests {
         let x = text.find('x').unwrap();
         assert_eq!(line_col(text, x), (2, 13));
         assert_eq!(line_col(text, 0), (1, 1));
+    }
+
+    /// Chinese characters take two columns, a combining mark none: the
+    /// caret stands under the span as a terminal shows the line.
+    #[test]
+    fn carets_count_terminal_columns() {
+        let text = "name = \"汇川e\u{301}\" x\n";
+        let x = text.find('x').unwrap();
+        let d = Diagnostic::error("E003", "m").at(x..x + 1).label("here");
+        let rendered = Source {
+            name: "x.toml",
+            text,
+        }
+        .render(&d);
+        let lines: Vec<&str> = rendered.lines().collect();
+        let caret = lines[4].find('^').unwrap();
+        let gutter = lines[3].find('|').unwrap() + 2;
+        // `name = "` (8) + 汇川 (4) + é (1) + `" ` (2): column 16.
+        assert_eq!(caret - gutter, 15, "{rendered}");
+        assert_eq!(columns("汇川e\u{301}".chars()), 5);
     }
 
     #[test]
@@ -473,20 +430,5 @@ mod tests {
         let caret = lines[4].find('^').unwrap();
         assert_eq!(&lines[3][caret..caret + 6], "\"PPO7\"", "{rendered}");
         assert!(lines[3].contains("...") && lines[3].ends_with("..."));
-    }
-
-    #[test]
-    fn json_escapes_quotes_and_controls() {
-        assert_eq!(json_string("a\"b\\c\u{1}"), "\"a\\\"b\\\\c\\u0001\"");
-        let d = Diagnostic::warning("W101", "m");
-        let json = Source {
-            name: "f",
-            text: "",
-        }
-        .to_json(&d);
-        assert_eq!(
-            json,
-            "{\"file\":\"f\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W101\",\"subject\":null,\"message\":\"m\",\"label\":null,\"help\":null}"
-        );
     }
 }

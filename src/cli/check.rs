@@ -4,7 +4,7 @@
 //! are done, in the order of the arguments.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
-use crate::diag::{json_string, Diagnostic};
+use crate::diag::Diagnostic;
 use crate::file_kind::FileKind;
 use crate::output::{read_device_file, ReadError};
 use crate::xsd::Schema;
@@ -266,8 +266,8 @@ fn neither(name: &str, format: Format) -> Report {
             let source = Source { name, text: "" };
             format!(
                 "{}\n{}",
-                source.to_json(&diagnostic),
-                summary_json(name, 1, 0)
+                super::json::finding(&source, &diagnostic),
+                super::json::summary(name, 1, 0)
             )
         }
     };
@@ -287,11 +287,11 @@ fn render(name: &str, text: &str, diagnostics: &Diagnostics, format: Format) -> 
     let shown = diagnostics.iter().take(MAX_SHOWN);
     let mut lines: Vec<String> = match format {
         Format::Human => shown.map(|d| source.render(d)).collect(),
-        Format::Json => shown.map(|d| source.to_json(d)).collect(),
+        Format::Json => shown.map(|d| super::json::finding(&source, d)).collect(),
     };
     lines.push(match format {
         Format::Human => format!("{name}: {errors} error(s), {warnings} warning(s)"),
-        Format::Json => summary_json(name, errors, warnings),
+        Format::Json => super::json::summary(name, errors, warnings),
     });
     let hidden = diagnostics.iter().count().saturating_sub(MAX_SHOWN);
     Report::Checked {
@@ -299,15 +299,6 @@ fn render(name: &str, text: &str, diagnostics: &Diagnostics, format: Format) -> 
         not_shown: (hidden > 0).then(|| format!("{name}: {hidden} more finding(s) not shown")),
         errors,
     }
-}
-
-/// The object that ends a file's findings in JSON: CI can count clean files
-/// too.
-fn summary_json(name: &str, errors: usize, warnings: usize) -> String {
-    format!(
-        "{{\"file\":{},\"errors\":{errors},\"warnings\":{warnings}}}",
-        json_string(name)
-    )
 }
 
 fn print(path: &Path, report: Report) -> Status {

@@ -4,6 +4,7 @@ mod build;
 mod check;
 mod decode;
 mod doc;
+mod json;
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
