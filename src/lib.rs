@@ -28,6 +28,8 @@ mod pkw;
 pub mod rules;
 mod spelling;
 mod symbol;
+#[cfg(test)]
+mod testing;
 mod utf16;
 
 // The edges: the build-script API, the files, the PI schema.

@@ -56,8 +56,8 @@ fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
     let paths = Config::new().generate(&md810, &out).unwrap();
     assert_eq!(
         paths.len(),
-        6,
-        "device files, both layouts and their support files"
+        8,
+        "device files, their symbols, both layouts and their support files"
     );
     assert!(paths.iter().all(|p| p.is_file()));
     std::fs::remove_dir_all(out).unwrap();
@@ -164,8 +164,8 @@ fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
         .unwrap();
     assert_eq!(
         passed.len(),
-        5,
-        "the GSDML, both layouts and their support files"
+        6,
+        "the GSDML, its symbol, both layouts and their support files"
     );
     std::fs::remove_dir_all(dir).unwrap();
 }

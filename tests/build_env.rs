@@ -24,8 +24,8 @@ fn the_environment_variable_names_the_schema_of_every_build() {
     std::env::set_var(gsdc::build::XSD_ENV, "");
     assert_eq!(
         gsdc::build::generate(&mv810, &out).unwrap().len(),
-        5,
-        "empty is unset"
+        6,
+        "empty is unset: the GSDML, its symbol, two layouts, two support files"
     );
     std::env::remove_var(gsdc::build::XSD_ENV);
     std::fs::remove_dir_all(dir).unwrap();

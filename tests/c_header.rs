@@ -582,7 +582,7 @@ fn a_gateway_with_dpv1_bit_areas_and_a_16_bit_count_round_trips() {
         .replacen("type = \"Unsigned8\"", "type = \"Unsigned16\"", 1)
         .replacen("type = \"Unsigned8\"", "bits = [0, 3]", 1)
         .replacen("type = \"Unsigned8\"", "bits = [4, 7]", 1);
-    let (ir, diagnostics) = gsdc::load("gw_variant.toml", &text);
+    let (ir, diagnostics) = descriptions::load_text("gw_variant.toml", &text);
     assert!(!diagnostics.has_errors(), "{diagnostics:?}");
     let dir = scratch_dir("gateway-variant");
     for a in gsdc::compile(&ir.unwrap()).unwrap() {

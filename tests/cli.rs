@@ -1,9 +1,12 @@
 //! The command line as a user runs it: exit codes, what is written, and
 //! that nothing is written when a description has an error.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
 #[path = "common/refusing_xsd.rs"]
 mod refusing_xsd;
 
+use gsdc::ArtifactKind;
 use refusing_xsd::refusing_schema;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -143,6 +146,7 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     let description = dir.join("md810dp.toml");
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::copy("descriptions/md810dp.toml", &description).unwrap();
+    descriptions::copy_symbols(&dir);
     let (description, out_arg) = (description.to_str().unwrap(), out.to_str().unwrap());
 
     let missing = gsdc(&["build", description, "--out", out_arg, "--check"]);
@@ -399,6 +403,7 @@ fn md810_copy(dir: &Path, name: &str, replacements: &[(&str, &str)]) -> PathBuf 
         text = text.replace(from, to);
     }
     std::fs::create_dir_all(dir).unwrap();
+    descriptions::copy_symbols(dir);
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
     path
@@ -506,8 +511,9 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
         out_arg,
     ]);
     assert_eq!(twice.status.code(), Some(0), "{}", stderr(&twice));
-    assert_eq!(stdout(&twice).matches("wrote").count(), 6);
-    assert_eq!(files_in(&out).len(), 6);
+    // MD810's six files and its two symbols, once.
+    assert_eq!(stdout(&twice).matches("wrote").count(), 8);
+    assert_eq!(files_in(&out).len(), 8);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -545,7 +551,13 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
             .code(),
         Some(0)
     );
-    let old = ["GSDML-V2.32-INOVANCE-MD810-20261122.xml", "MD810DP.GSD"];
+    // The old GSD's symbol is stale with it: a bitmap has no mark, but the
+    // old GSD names it.
+    let old = [
+        "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
+        "MD810DP.GSD",
+        "MD810DP.bmp",
+    ];
     for name in old {
         assert!(
             out.join(name).exists(),
@@ -560,7 +572,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
         .filter(|l| l.starts_with("stale: "))
         .map(str::to_string)
         .collect();
-    assert_eq!(listed.len(), 2, "{listed:?}");
+    assert_eq!(listed.len(), old.len(), "{listed:?}");
     for (line, name) in listed.iter().zip(old) {
         assert!(
             line.contains(&format!("{}", out.join(name).display())),
@@ -581,8 +593,10 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
     assert_eq!(
         files_in(&out),
         [
+            "GSDML-0A11-0810-MD810.bmp",
             "GSDML-V2.32-INOVANCE-MD810-20261123.xml",
             "MD810DP2.GSD",
+            "MD810DP2.bmp",
             "README.txt",
             "gsdc_support.h",
             "gsdc_support.rs",
@@ -612,9 +626,14 @@ fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
         "mv810-pnet02.toml",
         "md810-gateway.toml",
     ] {
-        let text = std::fs::read_to_string(format!("descriptions/{name}")).unwrap();
-        let ir = gsdc::load(name, &text).0.unwrap();
-        for file in gsdc::compile(&ir).unwrap() {
+        let ir = descriptions::load(name);
+        // A bitmap has no room for text: --check and --prune cannot tell
+        // gsdc's device symbols from a user's (see the README).
+        let files = gsdc::compile(&ir).unwrap();
+        for file in files
+            .iter()
+            .filter(|f| f.kind != ArtifactKind::DeviceSymbol)
+        {
             let head = &file.contents[..file.contents.len().min(1024)];
             let mark = gsdc::build::GENERATED_MARK.as_bytes();
             assert!(
@@ -676,8 +695,9 @@ fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
         );
         assert!(!stderr(&output).contains("panicked"), "{}", stderr(&output));
     }
-    // The files were written all the same; only the report was lost.
-    assert_eq!(files_in(&out).len(), 6);
+    // The files were written all the same (MD810's six and its two
+    // symbols); only the report was lost.
+    assert_eq!(files_in(&out).len(), 8);
 
     // The corpus has files with errors: exit 1, as if all was read.
     let piped = Command::new("bash")
@@ -716,7 +736,10 @@ fn build_xsd_validates_each_gsdml_before_anything_is_written() {
     args.extend(all);
     let passed = gsdc(&args);
     assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
-    assert_eq!(files_in(&out).len(), 12, "9kdp1 is PROFIBUS only");
+    // md810dp: GSD, GSDML, a symbol beside each, two layouts; mv810-pnet02:
+    // GSDML, symbol, two layouts; 9kdp1 (PROFIBUS only): GSD, symbol, two
+    // layouts; the two support files once.
+    assert_eq!(files_in(&out).len(), 6 + 4 + 4 + 2);
     std::fs::remove_dir_all(&out).unwrap();
 
     let refusing = refusing_schema(&dir);
@@ -812,14 +835,14 @@ fn firmware_languages_choose_the_layouts_written() {
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     assert_eq!(
         files_in(&out),
-        ["9KDP1.GSD", "9kdp1_layout.h", "gsdc_support.h"]
+        ["9KDP1.GSD", "9KDP1.bmp", "9kdp1_layout.h", "gsdc_support.h"]
     );
     let (output, out) = build("none", Some("none"));
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(files_in(&out), ["9KDP1.GSD"]);
+    assert_eq!(files_in(&out), ["9KDP1.GSD", "9KDP1.bmp"]);
     let (output, out) = build("both", None);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(files_in(&out).len(), 5);
+    assert_eq!(files_in(&out).len(), 6);
     let (output, _) = build("bad", Some("rust,cobol"));
     assert_eq!(output.status.code(), Some(2));
     assert!(stderr(&output).contains("cobol"), "{}", stderr(&output));

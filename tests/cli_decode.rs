@@ -1,6 +1,9 @@
 //! `gsdc decode` as a user runs it: the tables, the JSON document, and each
 //! error with its code, place and exit code.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
 use std::process::{Command, Output};
 
 fn gsdc(args: &[&str]) -> Output {
@@ -667,6 +670,7 @@ fn gateway_in_bit_areas() -> std::path::PathBuf {
     assert_eq!(text.matches("bits = [").count(), 2);
     let dir = std::env::temp_dir().join(format!("gsdc-decode-bits-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
+    descriptions::copy_symbols(&dir);
     let path = dir.join("md810-gateway-bits.toml");
     std::fs::write(&path, text).unwrap();
     path

@@ -574,7 +574,7 @@ fn one_language_needs_no_switch() {
         !text.contains("zh ="),
         "the test removes 9KDP1's only Chinese text"
     );
-    let ir = gsdc::load("9kdp1.toml", &text).0.unwrap();
+    let ir = descriptions::load_text("9kdp1.toml", &text).0.unwrap();
     let html = gsdc::document(&ir).remove(0);
     let html = String::from_utf8(html.contents).unwrap();
     assert_eq!(html.matches("<main").count(), 1);
@@ -600,8 +600,8 @@ fn gsdc_doc_refuses_two_descriptions_with_one_name() {
         String::from_utf8_lossy(&run.stderr)
     );
     std::fs::remove_dir_all(&out).unwrap();
-    let copy = out.with_file_name("other");
-    std::fs::create_dir_all(&copy).unwrap();
+    let copy = scratch("other");
+    descriptions::copy_symbols(&copy);
     let other = copy.join("md810dp.toml");
     let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
     std::fs::write(&other, text.replace("md810\"", "md810-b\"")).unwrap();

@@ -8,6 +8,9 @@
 //! - the shipped descriptions and the guide's example conform to the
 //!   schema, and descriptions with a misspelt key or an unknown kind do not.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
 use serde_json::Value as Json;
 use toml::Value as Toml;
 
@@ -122,7 +125,7 @@ fn as_table(value: &mut Toml) -> &mut toml::Table {
 /// `x`, expected one of `a`, `b`" (or "unknown variant").
 fn expected_names(description: &toml::Table, unknown: &str) -> Vec<String> {
     let text = toml::to_string(description).unwrap();
-    let (_, diagnostics) = gsdc::load("probe.toml", &text);
+    let (_, diagnostics) = descriptions::load_text("probe.toml", &text);
     let message = diagnostics
         .iter()
         .map(|d| d.message.to_string())
@@ -193,7 +196,7 @@ fn every_enumeration_of_the_schema_has_the_loaders_names() {
                 *place(&mut description, &path[..path.len() - 1]) =
                     Toml::Array(vec![Toml::String(name.into())]);
                 let (ir, diagnostics) =
-                    gsdc::load("probe.toml", &toml::to_string(&description).unwrap());
+                    descriptions::load_text("probe.toml", &toml::to_string(&description).unwrap());
                 assert!(ir.is_some(), "{name} at {path:?}: {diagnostics:#?}");
             }
             continue;

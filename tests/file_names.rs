@@ -3,6 +3,9 @@
 //! ASCII letters, digits and `_`, so `Müller.toml` builds and a newline in a
 //! name cannot start a line of its own in a GSD.
 
+#[path = "common/descriptions.rs"]
+mod descriptions;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -20,6 +23,7 @@ fn scratch(name: &str) -> PathBuf {
 fn build_as(dir: &Path, file_name: &str) -> Vec<String> {
     let description = dir.join(file_name);
     std::fs::copy(MD810, &description).unwrap();
+    descriptions::copy_symbols(dir);
     let out = dir.join("out");
     let output = Command::new(env!("CARGO_BIN_EXE_gsdc"))
         .arg("build")

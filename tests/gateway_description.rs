@@ -51,7 +51,7 @@ fn with_defaults(count: usize, input: &[u8], output: &[u8]) -> String {
 }
 
 fn gateway_of(text: &str) -> Gateway {
-    let (ir, diagnostics) = gsdc::load(NAME, text);
+    let (ir, diagnostics) = descriptions::load_text(NAME, text);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
     ir.gateway.unwrap()
 }
@@ -71,7 +71,7 @@ fn default_totals(g: &Gateway) -> (usize, usize) {
 
 /// The codes of `text`'s errors, each with its line and column.
 fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
-    let (ir, diagnostics) = gsdc::load(NAME, text);
+    let (ir, diagnostics) = descriptions::load_text(NAME, text);
     assert!(ir.is_none());
     diagnostics
         .errors()
@@ -160,7 +160,7 @@ fn a_31st_slave_is_refused() {
     let at = place(&default, "default = 31", "31");
     assert_eq!(errors(&default), [("E108", at.0, at.1)]);
     let numbered = variant(&[("nodes = [1, 30]", "nodes = [1, 31]")]);
-    let (ir, _) = gsdc::load(NAME, &numbered);
+    let (ir, _) = descriptions::load_text(NAME, &numbered);
     assert_eq!(
         ir.unwrap().gateway.unwrap().nodes.len(),
         31,
@@ -229,7 +229,7 @@ fn the_data_order_gsdc_chooses_is_said() {
         .find(|l| l.starts_with("\"gateway.data_order\""))
         .unwrap();
     let text = text.replace(&format!("{choice}\n"), "");
-    let (ir, diagnostics) = gsdc::load(NAME, &text);
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
     let w104: Vec<_> = diagnostics.iter().filter(|d| d.code == "W104").collect();
     assert_eq!(w104.len(), 1, "{w104:?}");
     assert!(w104[0].message.contains("gateway.data_order"));

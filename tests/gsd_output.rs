@@ -247,7 +247,7 @@ fn gateway_words_as_bit_areas_share_a_byte_per_slave() {
                 )
             });
     assert_eq!(packed.matches("bits = [").count(), 2, "{packed}");
-    let (ir, diagnostics) = gsdc::load("md810-gateway.toml", &packed);
+    let (ir, diagnostics) = descriptions::load_text("md810-gateway.toml", &packed);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
     let (gsd, profibus) = gsd_of(&ir);
     assert_eq!(profibus.user_prm.len, 31);

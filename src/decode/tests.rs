@@ -28,7 +28,7 @@ fn profidrive() -> Ir {
 }
 
 fn load(name: &str, text: &str) -> Ir {
-    crate::load(name, text)
+    crate::testing::load(name, text)
         .0
         .expect("the shipped descriptions load")
 }

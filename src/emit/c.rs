@@ -1078,7 +1078,7 @@ mod tests {
     use super::*;
 
     fn load(name: &str, text: &str) -> Ir {
-        crate::load(name, text).0.unwrap()
+        crate::testing::load(name, text).0.unwrap()
     }
 
     fn md810() -> Ir {

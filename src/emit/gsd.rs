@@ -418,7 +418,7 @@ mod tests {
     #[test]
     fn a_misspelt_name_in_the_template_is_an_error_not_empty_text() {
         let text = include_str!("../../descriptions/md810dp.toml");
-        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
         let profibus = ir.profibus.as_ref().unwrap();
         assert!(render(TEMPLATE, &ir, profibus).is_ok());
         let typo = TEMPLATE.replace("max_input_len", "max_inptu_len");

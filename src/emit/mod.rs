@@ -309,7 +309,7 @@ mod tests {
 
     fn md810_gsd() -> String {
         let text = include_str!("../../descriptions/md810dp.toml");
-        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
         gsd::emit(&ir, ir.profibus.as_ref().unwrap())
     }
 
@@ -341,7 +341,7 @@ mod tests {
     #[test]
     fn a_gsdml_warning_is_an_error_in_gsdcs_own_output() {
         let text = include_str!("../../descriptions/mv810-pnet02.toml");
-        let ir = crate::load("mv810-pnet02.toml", text).0.unwrap();
+        let ir = crate::testing::load("mv810-pnet02.toml", text).0.unwrap();
         let profinet = ir.profinet.as_ref().unwrap();
         let gsdml = gsdml::emit(&ir, profinet);
         assert_eq!(verify_gsdml(&profinet.file_name, &gsdml), []);

@@ -762,7 +762,7 @@ mod tests {
     #[test]
     fn a_misspelt_name_in_the_template_is_an_error_not_empty_text() {
         let text = include_str!("../../descriptions/md810dp.toml");
-        let ir = crate::load("md810dp.toml", text).0.unwrap();
+        let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
         assert!(render(TEMPLATE, &ir).is_ok());
         let typo = TEMPLATE.replace("t.generic", "t.generik");
         assert_ne!(typo, TEMPLATE);
@@ -773,7 +773,7 @@ mod tests {
     #[test]
     fn file_names_are_identifiers() {
         let text = include_str!("../../descriptions/mv810-pnet02.toml");
-        let ir = crate::load("mv810-pnet02.toml", text).0.unwrap();
+        let ir = crate::testing::load("mv810-pnet02.toml", text).0.unwrap();
         assert_eq!(file_name(&ir), "mv810_pnet02_layout.rs");
     }
 
@@ -783,7 +783,7 @@ mod tests {
             "[[profibus.diagnosis.areas]]",
             "[[profibus.diagnosis.areas]]\nbit = [8, 15]\nvalues = [{ value = 1, text = \"One\" }]\n\n[[profibus.diagnosis.areas]]",
         );
-        let ir = crate::load("md810dp.toml", &text).0.unwrap();
+        let ir = crate::testing::load("md810dp.toml", &text).0.unwrap();
         let items = diagnosis_items(ir.profibus.as_ref().unwrap().diagnosis.as_ref().unwrap());
         let names: Vec<_> = items
             .areas

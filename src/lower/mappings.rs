@@ -456,7 +456,7 @@ mod tests {
             env!("CARGO_MANIFEST_DIR")
         ))
         .unwrap();
-        crate::load(name, &text).0.unwrap().mappings
+        crate::testing::load(name, &text).0.unwrap().mappings
     }
 
     /// Lowering may find the sets in any order: the plan is the same.

@@ -24,6 +24,27 @@ pub fn load_from(folder: &str, name: &str) -> gsdc::Ir {
     loaded.ir.unwrap()
 }
 
+/// `text` (a shipped description, or one made from it) loaded as if it
+/// stood in `descriptions/`: the files it names are read from there.
+pub fn load_text(name: &str, text: &str) -> (Option<gsdc::Ir>, gsdc::Diagnostics) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions");
+    gsdc::load_with(name, text, &|path: &str| {
+        std::fs::read(dir.join(path)).map_err(|e| e.to_string())
+    })
+}
+
+/// Copies the shipped descriptions' symbols into `dir/symbols`, for a test
+/// that writes a description (or a copy of one) into `dir`.
+pub fn copy_symbols(dir: &Path) {
+    let from = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/symbols");
+    let to = dir.join("symbols");
+    std::fs::create_dir_all(&to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        std::fs::copy(&path, to.join(path.file_name().unwrap())).unwrap();
+    }
+}
+
 /// Every shipped description and every valid fixture, by file name, in
 /// name order within each folder.
 pub fn all_valid() -> Vec<(String, gsdc::Ir)> {

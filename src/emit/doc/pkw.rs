@@ -524,7 +524,7 @@ mod tests {
     use super::*;
 
     fn ir(name: &str, text: &str) -> Ir {
-        crate::load(name, text).0.unwrap()
+        crate::testing::load(name, text).0.unwrap()
     }
 
     /// MD810 manual 1.4.2, figures 6 and 7: read and change F0-08.
