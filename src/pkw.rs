@@ -12,8 +12,11 @@
 #[path = "../templates/support/mod.rs"]
 pub(crate) mod support;
 
+/// What the PROFIdrive channel's ids and error numbers mean.
+pub(crate) mod profidrive;
+
 pub(crate) use support::diagnosis::DiagArea;
-pub(crate) use support::{pkw_pke_ind_pwe, pkw_station_command};
+pub(crate) use support::{pkw_pke_ind_pwe, pkw_profidrive, pkw_station_command};
 pub(crate) use support::{BitField, U16Be, PKW_BYTES};
 
 /// The four PKW words at the start of `bytes`, high byte first (words past

@@ -226,6 +226,7 @@ fn pkw_word_names(kind: PkwKind) -> &'static [&'static str] {
     match kind {
         PkwKind::PkeIndPwe => &["PKE", "IND", "PWE high", "PWE low"],
         PkwKind::StationCommandAddressValue => &["Station", "Command", "Address", "Value"],
+        PkwKind::Profidrive => &["PKE", "IND", "PWE1", "PWE2"],
         PkwKind::None => &[],
     }
 }

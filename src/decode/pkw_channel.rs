@@ -3,7 +3,9 @@
 //! response exactly as the card does, and refuses what the card refuses.
 
 use crate::ir::{Direction, Ir, PkwKind};
-use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
+use crate::pkw::profidrive::{error_text, REQUESTS, RESPONSES};
+use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
+use crate::pkw::{pkw_station_command as station, U16Be};
 use serde::Serialize;
 
 /// A PKW request (to the drive) or response (from it), decoded.
@@ -20,8 +22,9 @@ pub struct Pkw {
     /// does not define it.
     pub meaning: Option<&'static str>,
     pub parameter: Option<Parameter>,
-    /// The value written, read, or echoed.
-    pub value: Option<u16>,
+    /// The value written, read, or echoed: a word, or a PROFIdrive double
+    /// word.
+    pub value: Option<u32>,
     pub error: Option<PkwError>,
     /// Why the card refuses the telegram, when it does: it is not one the
     /// manual defines.
@@ -38,6 +41,9 @@ pub enum Channel {
     /// Station, command, address, value (MV810); codes are command words,
     /// the manual writes them in hex.
     StationCommandAddressValue,
+    /// The PROFIdrive profile's PKE, IND, PWE1, PWE2; ids are four bits,
+    /// written in decimal.
+    Profidrive,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -57,8 +63,12 @@ pub struct Stations {
 /// (`F0-08`), when the description's numbering has one for the address.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Parameter {
+    /// The PNU of a PROFIdrive channel.
     pub address: u16,
     pub name: Option<String>,
+    /// A PROFIdrive channel's subindex (IND bits 15-8).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub subindex: Option<u8>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -90,6 +100,7 @@ pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Optio
     let parameter = |address| Parameter {
         address,
         name: ir.numbering.as_ref().and_then(|n| n.format(address)),
+        subindex: None,
     };
     match (ir.telegram.pkw, direction) {
         (PkwKind::None, _) => None,
@@ -101,6 +112,8 @@ pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Optio
         (PkwKind::StationCommandAddressValue, Direction::In) => {
             Some(station_response(words, parameter))
         }
+        (PkwKind::Profidrive, Direction::Out) => Some(profidrive_request(words, parameter)),
+        (PkwKind::Profidrive, Direction::In) => Some(profidrive_response(words, parameter)),
     }
 }
 
@@ -128,7 +141,7 @@ fn pke_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw 
         pke::PkwRequest::Write { address, value } => {
             pkw.meaning = Some("write");
             pkw.parameter = Some(parameter(address));
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
     }
     pkw
@@ -149,7 +162,7 @@ fn pke_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw
         pke::PkwResponse::Done { address, value } => {
             pkw.meaning = Some("done");
             pkw.parameter = Some(parameter(address));
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
         pke::PkwResponse::Failed { address, error } => {
             pkw.meaning = Some("cannot execute");
@@ -238,7 +251,7 @@ fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> 
         value: match request.access {
             station::PkwAccess::Read => None,
             station::PkwAccess::WriteAndStore { value } | station::PkwAccess::Write { value } => {
-                Some(value)
+                Some(value.into())
             }
         },
         ..Pkw::new(STATION, PkwSide::Request, command.code())
@@ -260,7 +273,7 @@ fn station_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) ->
     match response.reply {
         station::PkwReply::Value(value) => {
             pkw.meaning = Some("value read");
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
         station::PkwReply::WrittenAndStored => pkw.meaning = Some("written and stored in EEPROM"),
         station::PkwReply::Written => pkw.meaning = Some("written without storing it"),
@@ -296,5 +309,110 @@ fn station_refused(side: PkwSide, error: station::PkwDecodeError) -> Pkw {
             )),
             ..Pkw::new(STATION, side, station::PkwCommand::Read.code())
         },
+    }
+}
+
+// ---------------------------------------------------------------------------
+// PROFIdrive
+
+/// A PROFIdrive parameter: its PNU, named by the description's numbering,
+/// and its subindex.
+fn profidrive_parameter(
+    p: profidrive::Parameter,
+    parameter: &impl Fn(u16) -> Parameter,
+) -> Option<Parameter> {
+    Some(Parameter {
+        subindex: Some(p.subindex),
+        ..parameter(p.pnu.get())
+    })
+}
+
+fn profidrive_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    use profidrive::PkwRequest as R;
+    let request = match R::decode(words) {
+        Ok(request) => request,
+        Err(error) => return profidrive_refused(PkwSide::Request, error, &parameter),
+    };
+    let id = request.id();
+    let value = match request {
+        R::WriteWord { value, .. } | R::WriteArrayWord { value, .. } => Some(value.into()),
+        R::WriteDoubleWord { value, .. }
+        | R::WriteDescription { value, .. }
+        | R::WriteArrayDoubleWord { value, .. } => Some(value),
+        _ => None,
+    };
+    Pkw {
+        meaning: Some(REQUESTS[usize::from(id)].0),
+        parameter: request
+            .parameter()
+            .and_then(|p| profidrive_parameter(p, &parameter)),
+        value,
+        ..Pkw::new(Channel::Profidrive, PkwSide::Request, id.into())
+    }
+}
+
+fn profidrive_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    use profidrive::PkwResponse as R;
+    let response = match R::decode(words) {
+        Ok(response) => response,
+        Err(error) => return profidrive_refused(PkwSide::Response, error, &parameter),
+    };
+    let id = response.id();
+    let (value, error) = match response {
+        R::Word { value, .. } | R::ArrayWord { value, .. } => (Some(value.into()), None),
+        R::ArrayLength { count, .. } => (Some(count.into()), None),
+        R::DoubleWord { value, .. }
+        | R::Description { value, .. }
+        | R::ArrayDoubleWord { value, .. } => (Some(value), None),
+        R::Failed { error, .. } => (
+            None,
+            Some(PkwError {
+                code: error.0,
+                text: Some(error_text(error)),
+            }),
+        ),
+        R::None | R::NoAuthority { .. } => (None, None),
+    };
+    Pkw {
+        meaning: Some(RESPONSES[usize::from(id)].0),
+        parameter: response
+            .parameter()
+            .and_then(|p| profidrive_parameter(p, &parameter)),
+        value,
+        error,
+        ..Pkw::new(Channel::Profidrive, PkwSide::Response, id.into())
+    }
+}
+
+fn profidrive_refused(
+    side: PkwSide,
+    error: profidrive::PkwDecodeError,
+    parameter: &impl Fn(u16) -> Parameter,
+) -> Pkw {
+    use profidrive::PkwDecodeError as E;
+    let (id, why, about) = match error {
+        E::IllegalRequest { id, parameter } => (
+            id,
+            format!(
+                "request id {id} is not the profile's (0 to 9): {}; Siemens drives answer 7 with error 106, request not implemented",
+                if id == 10 { "10 is reserved" } else { "11 to 15 are Siemens' extensions" }
+            ),
+            Some(parameter),
+        ),
+        E::ChangeReport { id } => (
+            id,
+            format!("response id {id} is a parameter change report (9 to 12), which the channel does not carry: SPM, their toggle bit, is always 0"),
+            None,
+        ),
+        E::UnknownResponse { id } => (
+            id,
+            format!("response id {id} is not the profile's (0 to 8, and 9 to 12 change reports)"),
+            None,
+        ),
+    };
+    Pkw {
+        parameter: about.and_then(|p| profidrive_parameter(p, parameter)),
+        refused: Some(why),
+        ..Pkw::new(Channel::Profidrive, side, id.into())
     }
 }
