@@ -390,27 +390,31 @@ fn profidrive_refused(
     parameter: &impl Fn(u16) -> Parameter,
 ) -> Pkw {
     use profidrive::PkwDecodeError as E;
-    let (id, why, about) = match error {
+    let (id, meaning, why, about) = match error {
         E::IllegalRequest { id, parameter } => (
             id,
+            "not the profile's",
             format!(
-                "request id {id} is not the profile's (0 to 9): {}; Siemens drives answer 7 with error 106, request not implemented",
+                "request id {id} is not the profile's (0 to 9): {}; the drive answers 7, cannot execute",
                 if id == 10 { "10 is reserved" } else { "11 to 15 are Siemens' extensions" }
             ),
             Some(parameter),
         ),
         E::ChangeReport { id } => (
             id,
+            "a parameter change report",
             format!("response id {id} is a parameter change report (9 to 12), which the channel does not carry: SPM, their toggle bit, is always 0"),
             None,
         ),
         E::UnknownResponse { id } => (
             id,
+            "not the profile's",
             format!("response id {id} is not the profile's (0 to 8, and 9 to 12 change reports)"),
             None,
         ),
     };
     Pkw {
+        meaning: Some(meaning),
         parameter: about.and_then(|p| profidrive_parameter(p, parameter)),
         refused: Some(why),
         ..Pkw::new(Channel::Profidrive, side, id.into())

@@ -180,21 +180,25 @@ fn check_pnu(
     if !(0..=0xFFFF).contains(&number) || last <= i64::from(PNU_MAX) {
         return;
     }
-    let what = match (name, after) {
-        (Some(name), 0) => format!("`{name}` is parameter {number}"),
-        (None, 0) => format!("parameter {number}"),
-        (Some(name), _) => {
-            format!("`{name}` is parameter {number}, and the last entry's is {last}")
-        }
-        (None, _) => format!("parameter {number}, and the last entry's {last},"),
+    let parameter = match name {
+        Some(name) => format!("`{name}` is parameter {number}"),
+        None => format!("parameter {number}"),
+    };
+    let (what, label) = match (after, name) {
+        (0, Some(_)) => (format!("{parameter},"), "not a PNU"),
+        (0, None) => (format!("{parameter} is"), "not a PNU"),
+        _ => (
+            format!("the last entry's parameter is {last} ({parameter} for the first),"),
+            "the last entry's is not a PNU",
+        ),
     };
     cx.push(
         Diagnostic::error(
             "E154",
-            format!("{what}: beyond the PROFIdrive channel's parameter numbers (0 to {PNU_MAX})"),
+            format!("{what} beyond the PROFIdrive channel's parameter numbers (0 to {PNU_MAX})"),
         )
         .at(value.span())
-        .label("not a PNU")
+        .label(label)
         .help("the PKE holds an 11-bit PNU; the profile leaves IND's low byte, where Siemens drives select a page for higher numbers, undefined: number the parameter within 0 to 2047, or describe the drive's own channel"),
     );
 }

@@ -824,9 +824,9 @@ static inline uint32_t gsdc_profidrive_value(const uint8_t pkw[GSDC_PKW_BYTES],
 
 /* Decodes the master's request in `pkw`. GSDC_PKW_OK: `request` holds it.
  * GSDC_PKW_BAD_COMMAND for an id from 10 on: `request` holds the id, the
- * parameter number and the subindex the drive answers about (Siemens drives
- * answer GSDC_PROFIDRIVE_CANNOT_EXECUTE with error 106, request not
- * implemented), and value 0. */
+ * parameter number and the subindex the drive answers
+ * GSDC_PROFIDRIVE_CANNOT_EXECUTE about (Siemens manuals give error 106,
+ * request not implemented, after requests 5, 10 and 15), and value 0. */
 static inline gsdc_pkw_status_t
 gsdc_profidrive_request_decode(const uint8_t pkw[GSDC_PKW_BYTES],
                                gsdc_profidrive_request_t *request)

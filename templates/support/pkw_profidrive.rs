@@ -149,8 +149,9 @@ impl PkwErrorNumber {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PkwDecodeError {
     /// Request id 10 (reserved) or 11 to 15 (a vendor's, not the profile's),
-    /// for `parameter`. Siemens drives answer 7 with error 106, "request not
-    /// implemented" (MM4 board, MASTERDRIVES, SINAMICS G120).
+    /// for `parameter`: the drive answers 7. Siemens manuals give error 106,
+    /// "request not implemented", after requests 5, 10 and 15 (MM4 board,
+    /// MASTERDRIVES, SINAMICS G120); the profile's numbers have none for it.
     IllegalRequest { id: u8, parameter: Parameter },
     /// Response id 9 to 12: a parameter change report, which needs SPM's
     /// toggle handshake; not supported.

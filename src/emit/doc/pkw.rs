@@ -578,12 +578,12 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
                 "IND",
                 2,
                 lang.t(
-                    "bits 15-8: subindex; bits 7-0: 0 (not defined by the profile)",
-                    "位 15-8：子索引；位 7-0：0（行规未定义）",
+                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
+                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
                 ),
                 lang.t(
-                    "bits 15-8: subindex; bits 7-0: not read",
-                    "位 15-8：子索引；位 7-0：不读取",
+                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
+                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
                 ),
             ),
             row(
@@ -639,8 +639,8 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
             .collect(),
     );
     doc.para(text(lang.t(
-        "The card refuses request 10 (reserved) and 11 to 15, which are not the profile's (Siemens drives store in EEPROM with them). It sends no parameter change reports (responses 9 to 12): SPM is always 0.",
-        "请求标识 10（保留）及 11 至 15（非行规定义，西门子变频器用于写入 EEPROM）不被接受。本卡不发送参数修改报告（应答 9 至 12）：SPM 恒为 0。",
+        "The card refuses request 10 (reserved) and 11 to 15, which are not the profile's (MICROMASTER and MASTERDRIVES store a value in EEPROM with 11 to 14). It sends no parameter change reports (responses 9 to 12): SPM is always 0.",
+        "请求标识 10（保留）及 11 至 15（非行规定义；MICROMASTER 与 MASTERDRIVES 用 11 至 14 将参数值写入 EEPROM）不被接受。本卡不发送参数修改报告（应答 9 至 12）：SPM 恒为 0。",
     )));
     doc.table(
         lang.t(
@@ -752,103 +752,114 @@ fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let name = parameter_name(ir, address);
     let at = |subindex| profidrive::Parameter { pnu, subindex };
     let p = at(0);
-    // Each telegram, with `v` where a value varies, `s` where the subindex
-    // does and `x` where the error number does.
-    let shown = |words: &dyn Fn(u32, u8) -> [U16Be; 4]| {
-        telegram(
-            words(0, 0),
-            &[('v', words(u32::MAX, 0)), ('s', words(0, u8::MAX))],
-        )
+    // A telegram with `v` where the value varies, and `s` where the
+    // subindex does when it is an array's.
+    type Words<'a> = &'a dyn Fn(u32, profidrive::Parameter) -> [U16Be; 4];
+    let shown = |words: Words, array: bool| {
+        let mut variables = vec![('v', words(u32::MAX, p))];
+        if array {
+            variables.push(('s', words(0, at(u8::MAX))));
+        }
+        telegram(words(0, p), &variables)
     };
-    let request = |q: &dyn Fn(u32, profidrive::Parameter) -> Q| {
-        shown(&|value, subindex| q(value, at(subindex)).encode())
-    };
-    let response = |r: &dyn Fn(u32, profidrive::Parameter) -> R| {
-        shown(&|value, subindex| r(value, at(subindex)).encode())
-    };
+    // A word's value: the low half of what `shown` varies.
     let word = |value: u32| value as u16;
-    let read = Q::Read { parameter: p }.encode();
-    let write_word = request(&|value, parameter| Q::WriteWord {
-        parameter,
-        value: word(value),
-    });
+    let read = shown(&|_, parameter| Q::Read { parameter }.encode(), false);
+    let write_word = shown(
+        &|v, parameter| {
+            Q::WriteWord {
+                parameter,
+                value: word(v),
+            }
+            .encode()
+        },
+        false,
+    );
+    let word_value = shown(
+        &|v, parameter| {
+            R::Word {
+                parameter,
+                value: word(v),
+            }
+            .encode()
+        },
+        false,
+    );
+    let double_value = shown(
+        &|value, parameter| R::DoubleWord { parameter, value }.encode(),
+        false,
+    );
+    let failed = |error| {
+        R::Failed {
+            parameter: p,
+            error,
+        }
+        .encode()
+    };
+    let change = lang.f(
+        format!("change {name} to vvvv (word)"),
+        format!("将 {name} 改为 vvvv（单字）"),
+    );
     let rows = vec![
         example_row(
             lang.f(format!("read {name}"), format!("读 {name}")),
-            telegram(read, &[]),
+            read.clone(),
             lang.t("a word parameter's value", "单字参数值"),
-            response(&|value, parameter| R::Word {
-                parameter,
-                value: word(value),
-            }),
+            word_value.clone(),
         ),
         example_row(
             lang.f(format!("read {name}"), format!("读 {name}")),
-            telegram(read, &[]),
+            read,
             lang.t("a double word parameter's value", "双字参数值"),
-            response(&|value, parameter| R::DoubleWord { parameter, value }),
+            double_value.clone(),
         ),
         example_row(
-            lang.f(
-                format!("change {name} to vvvv (word)"),
-                format!("将 {name} 改为 vvvv（单字）"),
-            ),
+            change.clone(),
             write_word.clone(),
             lang.t("done: the value written", "操作正确：返回写入值"),
-            response(&|value, parameter| R::Word {
-                parameter,
-                value: word(value),
-            }),
+            word_value,
         ),
         example_row(
             lang.f(
                 format!("change {name} to vvvvvvvv (double word)"),
                 format!("将 {name} 改为 vvvvvvvv（双字）"),
             ),
-            request(&|value, parameter| Q::WriteDoubleWord { parameter, value }),
+            shown(
+                &|value, parameter| Q::WriteDoubleWord { parameter, value }.encode(),
+                false,
+            ),
             lang.t("done: the value written", "操作正确：返回写入值"),
-            response(&|value, parameter| R::DoubleWord { parameter, value }),
+            double_value,
         ),
         example_row(
             lang.f(
                 format!("read element ss of {name}"),
                 format!("读 {name} 的元素 ss"),
             ),
-            request(&|_, parameter| Q::ReadArray { parameter }),
+            shown(&|_, parameter| Q::ReadArray { parameter }.encode(), true),
             lang.t("the element's value (word)", "数组元素值（单字）"),
-            response(&|value, parameter| R::ArrayWord {
-                parameter,
-                value: word(value),
-            }),
+            shown(
+                &|v, parameter| {
+                    R::ArrayWord {
+                        parameter,
+                        value: word(v),
+                    }
+                    .encode()
+                },
+                true,
+            ),
         ),
         example_row(
-            lang.f(
-                format!("change {name} to vvvv (word)"),
-                format!("将 {name} 改为 vvvv（单字）"),
-            ),
+            change.clone(),
             write_word.clone(),
             lang.t("cannot execute: error number xxxx", "无法执行：错误号 xxxx"),
             telegram(
-                R::Failed {
-                    parameter: p,
-                    error: profidrive::PkwErrorNumber(0),
-                }
-                .encode(),
-                &[(
-                    'x',
-                    R::Failed {
-                        parameter: p,
-                        error: profidrive::PkwErrorNumber(u16::MAX),
-                    }
-                    .encode(),
-                )],
+                failed(profidrive::PkwErrorNumber(0)),
+                &[('x', failed(profidrive::PkwErrorNumber(u16::MAX)))],
             ),
         ),
         example_row(
-            lang.f(
-                format!("change {name} to vvvv (word)"),
-                format!("将 {name} 改为 vvvv（单字）"),
-            ),
+            change,
             write_word,
             lang.t("no master control", "无主控权"),
             telegram(R::NoAuthority { parameter: p }.encode(), &[]),
