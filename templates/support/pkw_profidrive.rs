@@ -203,13 +203,13 @@ impl PkwRequest {
     }
 
     pub fn encode(self) -> [U16Be; 4] {
+        use PkwRequest as R;
         let pwe = match self {
-            PkwRequest::WriteWord { value, .. } | PkwRequest::WriteArrayWord { value, .. } => {
-                Pwe::Word(value)
-            }
-            PkwRequest::WriteDoubleWord { value, .. }
-            | PkwRequest::WriteDescription { value, .. }
-            | PkwRequest::WriteArrayDoubleWord { value, .. } => Pwe::DoubleWord(value),
+            R::WriteWord { value, .. } => Pwe::Word(value),
+            R::WriteArrayWord { value, .. } => Pwe::Word(value),
+            R::WriteDoubleWord { value, .. }
+            | R::WriteDescription { value, .. }
+            | R::WriteArrayDoubleWord { value, .. } => Pwe::DoubleWord(value),
             _ => Pwe::Nothing,
         };
         profidrive_words(self.id(), self.parameter(), pwe)
@@ -281,16 +281,15 @@ impl PkwResponse {
     }
 
     pub fn encode(self) -> [U16Be; 4] {
+        use PkwResponse as R;
         let pwe = match self {
-            PkwResponse::Word { value, .. } | PkwResponse::ArrayWord { value, .. } => {
-                Pwe::Word(value)
-            }
-            PkwResponse::ArrayLength { count, .. } => Pwe::Word(count),
-            PkwResponse::Failed { error, .. } => Pwe::Word(error.0),
-            PkwResponse::DoubleWord { value, .. }
-            | PkwResponse::Description { value, .. }
-            | PkwResponse::ArrayDoubleWord { value, .. } => Pwe::DoubleWord(value),
-            PkwResponse::None | PkwResponse::NoAuthority { .. } => Pwe::Nothing,
+            R::Word { value, .. } | R::ArrayWord { value, .. } => Pwe::Word(value),
+            R::ArrayLength { count, .. } => Pwe::Word(count),
+            R::Failed { error, .. } => Pwe::Word(error.0),
+            R::DoubleWord { value, .. }
+            | R::Description { value, .. }
+            | R::ArrayDoubleWord { value, .. } => Pwe::DoubleWord(value),
+            R::None | R::NoAuthority { .. } => Pwe::Nothing,
         };
         profidrive_words(self.id(), self.parameter(), pwe)
     }
