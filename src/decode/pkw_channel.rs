@@ -3,7 +3,7 @@
 //! response exactly as the card does, and refuses what the card refuses.
 
 use crate::ir::{Direction, Ir, PkwKind};
-use crate::pkw::profidrive::{error_text, REQUESTS, RESPONSES};
+use crate::pkw::profidrive::{PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
 use crate::pkw::{pkw_station_command as station, U16Be};
 use serde::Serialize;
@@ -315,6 +315,47 @@ fn station_refused(side: PkwSide, error: station::PkwDecodeError) -> Pkw {
 // ---------------------------------------------------------------------------
 // PROFIdrive
 
+/// Error numbers some manuals give beyond the profile's (MICROMASTER 4
+/// PROFIBUS board Table 3-5, MASTERDRIVES Table 8.2-6, SINAMICS manuals; see
+/// docs/wire-format.md), with the manuals that give them: a drive may mean
+/// something else by them.
+const VENDOR_ERRORS: [(u16, &str); 19] = [
+    (9, "description data not available (SINAMICS G120X, TR encoTRive, SINAMICS DCP; not every manual's)"),
+    (15, "no text array available (MASTERDRIVES, SINAMICS G120X; not every manual's)"),
+    (20, "illegal value (MASTERDRIVES, SINAMICS CU240B-2 and G120; not every manual's)"),
+    (21, "response too long (MASTERDRIVES; not every manual's)"),
+    (22, "non-admissible parameter address (MASTERDRIVES; not every manual's)"),
+    (23, "non-admissible format (MASTERDRIVES; not every manual's)"),
+    (24, "inconsistent number of values (MASTERDRIVES; not every manual's)"),
+    (101, "parameter number currently deactivated (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (102, "channel not wide enough (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (103, "incorrect number of PKWs (MASTERDRIVES: device-specific)"),
+    (104, "illegal parameter value (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (105, "the parameter is indexed (MASTERDRIVES: device-specific)"),
+    (106, "request not implemented (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (107, "no write access with the controller enabled (SINAMICS CU240B-2 and G120C: device-specific)"),
+    (134, "write access only for commissioning (SINAMICS G120: device-specific)"),
+    (135, "know-how protection active (SINAMICS G120: device-specific)"),
+    (200, "modified minimum not reached (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+    (201, "modified maximum exceeded (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+    (204, "the access authorization does not cover changing parameters (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+];
+
+/// A number none of the manuals gives.
+const OWN_ERROR: &str = "not a number any of the manuals gives: the drive's own";
+
+/// What an error number of response 7 means: the profile's meaning, or
+/// what the manuals that give it mean, or that it is the drive's own.
+fn error_text(number: profidrive::PkwErrorNumber) -> &'static str {
+    if let Some((_, (en, _))) = PROFILE_ERRORS.iter().find(|(n, _)| *n == number) {
+        return en;
+    }
+    VENDOR_ERRORS
+        .iter()
+        .find(|(n, _)| *n == number.0)
+        .map_or(OWN_ERROR, |(_, text)| text)
+}
+
 /// A PROFIdrive parameter: its PNU, named by the description's numbering,
 /// and its subindex.
 fn profidrive_parameter(
@@ -418,5 +459,38 @@ fn profidrive_refused(
         parameter: about.and_then(|p| profidrive_parameter(p, parameter)),
         refused: Some(why),
         ..Pkw::new(Channel::Profidrive, side, id.into())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use profidrive::PkwErrorNumber;
+
+    #[test]
+    fn each_error_number_has_one_meaning() {
+        let mut numbers: Vec<u16> = PROFILE_ERRORS
+            .iter()
+            .map(|(n, _)| n.0)
+            .chain(VENDOR_ERRORS.iter().map(|(n, _)| *n))
+            .collect();
+        let count = numbers.len();
+        numbers.sort_unstable();
+        numbers.dedup();
+        assert_eq!(numbers.len(), count);
+    }
+
+    #[test]
+    fn error_texts_say_whose_a_number_is() {
+        assert_eq!(
+            error_text(PkwErrorNumber::OPERATING_STATE),
+            "the request cannot be processed in the operating state"
+        );
+        assert_eq!(
+            error_text(PkwErrorNumber(0)),
+            "impermissible parameter number (PNU)"
+        );
+        assert!(error_text(PkwErrorNumber(106)).starts_with("request not implemented ("));
+        assert_eq!(error_text(PkwErrorNumber(50)), OWN_ERROR);
     }
 }

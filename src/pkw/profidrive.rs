@@ -1,7 +1,7 @@
 //! What the PROFIdrive channel's ids and error numbers mean, in gsdc's
-//! words after the manuals (research/profidrive.md §1.2, §1.3, §1.5:
-//! MICROMASTER 440 OI Tables 3-19 and 3-20, the MICROMASTER 4 PROFIBUS
-//! board, the MASTERDRIVES Compendium, SINAMICS G120): `gsdc decode` and the
+//! words after the manuals (MICROMASTER 440 OI Tables 3-19 and 3-20, the
+//! MICROMASTER 4 PROFIBUS board, the MASTERDRIVES Compendium, SINAMICS
+//! G120; docs/wire-format.md gives the pages): `gsdc decode` and the
 //! datasheet say them; the codec (`pkw_profidrive`) gives the numbers.
 
 use super::pkw_profidrive::PkwErrorNumber;
@@ -108,71 +108,3 @@ pub(crate) const PROFILE_ERRORS: [(PkwErrorNumber, Meaning); 11] = [
         ),
     ),
 ];
-
-/// Numbers some manuals give beyond those, with the manuals that give them:
-/// a drive may mean something else by them.
-const VENDOR_ERRORS: [(u16, &str); 19] = [
-    (9, "description data not available (SINAMICS G120X, TR encoTRive, SINAMICS DCP; not every manual's)"),
-    (15, "no text array available (MASTERDRIVES, SINAMICS G120X; not every manual's)"),
-    (20, "illegal value (MASTERDRIVES, SINAMICS CU240B-2 and G120; not every manual's)"),
-    (21, "response too long (MASTERDRIVES; not every manual's)"),
-    (22, "non-admissible parameter address (MASTERDRIVES; not every manual's)"),
-    (23, "non-admissible format (MASTERDRIVES; not every manual's)"),
-    (24, "inconsistent number of values (MASTERDRIVES; not every manual's)"),
-    (101, "parameter number currently deactivated (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
-    (102, "channel not wide enough (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
-    (103, "incorrect number of PKWs (MASTERDRIVES: device-specific)"),
-    (104, "illegal parameter value (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
-    (105, "the parameter is indexed (MASTERDRIVES: device-specific)"),
-    (106, "request not implemented (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
-    (107, "no write access with the controller enabled (SINAMICS CU240B-2 and G120C: device-specific)"),
-    (134, "write access only for commissioning (SINAMICS G120: device-specific)"),
-    (135, "know-how protection active (SINAMICS G120: device-specific)"),
-    (200, "modified minimum not reached (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
-    (201, "modified maximum exceeded (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
-    (204, "the access authorization does not cover changing parameters (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
-];
-
-/// A number none of the manuals gives.
-const OWN_ERROR: &str = "not a number any of the manuals gives: the drive's own";
-
-/// What `gsdc decode` says of an error number: the profile's meaning, or
-/// what the manuals that give it mean, or that it is the drive's own.
-pub(crate) fn error_text(number: PkwErrorNumber) -> &'static str {
-    if let Some((_, (en, _))) = PROFILE_ERRORS.iter().find(|(n, _)| *n == number) {
-        return en;
-    }
-    VENDOR_ERRORS
-        .iter()
-        .find(|(n, _)| *n == number.0)
-        .map_or(OWN_ERROR, |(_, text)| text)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn each_number_has_one_meaning() {
-        let mut numbers: Vec<u16> = PROFILE_ERRORS
-            .iter()
-            .map(|(n, _)| n.0)
-            .chain(VENDOR_ERRORS.iter().map(|(n, _)| *n))
-            .collect();
-        let count = numbers.len();
-        numbers.sort_unstable();
-        numbers.dedup();
-        assert_eq!(numbers.len(), count);
-    }
-
-    #[test]
-    fn error_texts_say_whose_a_number_is() {
-        assert_eq!(error_text(PkwErrorNumber(17)), PROFILE_ERRORS[10].1 .0);
-        assert_eq!(
-            error_text(PkwErrorNumber(0)),
-            "impermissible parameter number (PNU)"
-        );
-        assert!(error_text(PkwErrorNumber(106)).starts_with("request not implemented ("));
-        assert_eq!(error_text(PkwErrorNumber(50)), OWN_ERROR);
-    }
-}
