@@ -172,10 +172,25 @@ fn figures(html: &str) -> Vec<Figure> {
         .collect()
 }
 
+/// The HTML datasheets of the shipped descriptions and of the PROFIdrive
+/// fixture (whose PPO1 has the profile's PKW words), by name.
+fn html_datasheets() -> Vec<(&'static str, String)> {
+    let fixture = descriptions::load_from("tests/fixtures/valid", "profidrive.toml");
+    let fixture_html = gsdc::document(&fixture)
+        .into_iter()
+        .find(|a| a.kind == ArtifactKind::DatasheetHtml)
+        .map(|a| String::from_utf8(a.contents).unwrap())
+        .unwrap();
+    DESCRIPTIONS
+        .iter()
+        .map(|&name| (name, datasheet(name, ArtifactKind::DatasheetHtml)))
+        .chain([("profidrive.toml", fixture_html)])
+        .collect()
+}
+
 #[test]
 fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
-    for name in DESCRIPTIONS {
-        let html = datasheet(name, ArtifactKind::DatasheetHtml);
+    for (name, html) in html_datasheets() {
         let figures = figures(&html);
         // The gateway's one diagram (its example's data) in two languages.
         assert!(figures.len() >= 2, "{name}");

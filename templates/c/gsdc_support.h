@@ -629,20 +629,20 @@ static inline gsdc_pkw_status_t gsdc_station_response_encode(
 
 /* The PROFIdrive parameter channel, as the profile's PPO types carry it in
  * cyclic exchange (MICROMASTER 440 OI p.157-159, MICROMASTER 4 PROFIBUS
- * board p.25-28, MASTERDRIVES Compendium 8.2-19; gsdc's research notes quote
- * them). PKE: bits 15-12 the request id (AK) or response id, bit 11 SPM, bits
- * 10-0 the parameter number (PNU 0..2047). IND: bits 15-8 the subindex (the
- * array element, or the description element); bits 7-0 are "not defined in
- * PROFIDrive Profile version 2.0" (Siemens drives select a page there):
- * written 0 and not read. PWE1, PWE2: a double word high word first; a word
- * in PWE2, PWE1 written 0 and not read; with response 7 the error number in
- * PWE2. SPM, a toggle bit for parameter change reports or "reserved, always
- * 0", is written 0 and not read; change reports (responses 9-12) are not
- * carried. Requests 0-9 are the profile's; 10 is reserved and 11-15 are
- * Siemens' extensions ("not defined in the PROFIDrive Profile"): refused.
- * Every request but 0 carries the subindex, whatever its id (newer SINAMICS
- * make 1, 2, 3 the same as 6, 7, 8). Nothing of a telegram without a request
- * is read. */
+ * board p.25-28, MASTERDRIVES Compendium 8.2-19; docs/wire-format.md in
+ * gsdc's repository quotes them). PKE: bits 15-12 the request id (AK) or
+ * response id, bit 11 SPM, bits 10-0 the parameter number (PNU 0..2047).
+ * IND: bits 15-8 the subindex (the array element, or the description
+ * element); bits 7-0 are "not defined in PROFIDrive Profile version 2.0"
+ * (Siemens drives select a page there): written 0 and not read. PWE1, PWE2:
+ * a double word high word first; a word in PWE2, PWE1 written 0 and not
+ * read; with response 7 the error number in PWE2. SPM, a toggle bit for
+ * parameter change reports or "reserved, always 0", is written 0 and not
+ * read; change reports (responses 9-12) are not carried. Requests 0-9 are
+ * the profile's; 10 is reserved and 11-15 are Siemens' extensions ("not
+ * defined in the PROFIDrive Profile"): refused. Every request but 0 carries
+ * the subindex, whatever its id (newer SINAMICS make 1, 2, 3 the same as 6,
+ * 7, 8). Nothing of a telegram without a request is read. */
 
 /* The largest parameter number of PKE bits 10-0. */
 #define GSDC_PROFIDRIVE_PNU_MAX 2047U

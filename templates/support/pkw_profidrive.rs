@@ -2,7 +2,7 @@
 // as the profile's PPO types carry it in cyclic exchange. Sources: MICROMASTER
 // 440 OI 10/06 p.157-159 (MM440), MICROMASTER 4 PROFIBUS board p.25-28 (MM4
 // board), MASTERDRIVES Compendium 8.2-19 (MASTERDRIVES), SINAMICS G120C OI
-// 09/2017 p.186-187; gsdc's research notes, research/profidrive.md, quote them.
+// 09/2017 p.186-187; docs/wire-format.md in gsdc's repository quotes them.
 // - PKE: bits 15-12 the request id (AK, master to drive) or the response id
 //   (drive to master); bit 11 SPM; bits 10-0 the parameter number, PNU 0..2047.
 // - IND: bits 15-8 the subindex (MM4 board p.28: the array index in cyclic
