@@ -12,9 +12,12 @@
 #[path = "../templates/support/mod.rs"]
 pub(crate) mod support;
 
+/// What the PROFIdrive channel's ids and error numbers mean.
+pub(crate) mod profidrive;
+
 pub(crate) use support::diagnosis::DiagArea;
 pub(crate) use support::U16Be;
-pub(crate) use support::{pkw_pke_ind_pwe, pkw_station_command};
+pub(crate) use support::{pkw_pke_ind_pwe, pkw_profidrive, pkw_station_command};
 #[cfg_attr(not(feature = "cli"), allow(unused_imports))] // the command line uses them
 pub(crate) use support::{BitField, PKW_BYTES};
 

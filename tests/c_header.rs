@@ -147,14 +147,20 @@ fn scratch_dir(name: &str) -> PathBuf {
     dir
 }
 
-/// Every description's C layout and the support header, written once for
-/// all tests of this file, as `gsdc build` writes them.
+/// Every description's C layout, the PROFIdrive fixture's, and the support
+/// header, written once for all tests of this file, as `gsdc build` writes
+/// them.
 fn include_dir() -> &'static Path {
     static DIR: OnceLock<PathBuf> = OnceLock::new();
     DIR.get_or_init(|| {
         let dir = scratch_dir("include");
-        for name in DESCRIPTIONS {
-            for a in artifacts(name) {
+        let fixture = gsdc::compile(&descriptions::load_from(
+            "tests/fixtures/valid",
+            "profidrive.toml",
+        ))
+        .unwrap();
+        for artifacts in DESCRIPTIONS.map(artifacts).into_iter().chain([fixture]) {
+            for a in artifacts {
                 if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
                     std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
                 }
@@ -265,7 +271,7 @@ fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
 }
 
 /// Firmware for several cards includes their layouts together: one
-/// translation unit with all four (one twice), freestanding, compiled by
+/// translation unit with all five (one twice), freestanding, compiled by
 /// every installed compiler as C99, C11 and C++17 without a warning.
 #[test]
 fn all_layouts_compile_together_in_one_translation_unit() {
@@ -282,7 +288,7 @@ fn all_layouts_compile_together_in_one_translation_unit() {
 }
 
 /// The tests `tests/c/manuals.c` runs: the Rust firmware crate's, one by one.
-const MANUAL_TESTS: [&str; 33] = [
+const MANUAL_TESTS: [&str; 37] = [
     "md810_read_f0_08",
     "md810_answer_50_hz",
     "md810_write_20_hz",
@@ -316,6 +322,10 @@ const MANUAL_TESTS: [&str; 33] = [
     "bridge_the_reserved_byte_is_not_read",
     "bridge_blocks_the_table_does_not_have_are_refused",
     "bridge_diagnoses_the_table_does_not_have_are_not_encoded",
+    "profidrive_read_p10_05",
+    "profidrive_write_a_word_to_p10_05",
+    "profidrive_error_answer",
+    "profidrive_an_illegal_id_is_refused",
 ];
 
 /// The values of `key` in the GSD gsdc generates from `name`, one per line
@@ -365,7 +375,7 @@ fn the_manuals_telegrams_round_trip_in_c() {
 }
 
 /// The tests `tests/c/support.c` runs: those of the Rust support code.
-const SUPPORT_TESTS: [&str; 24] = [
+const SUPPORT_TESTS: [&str; 29] = [
     "words_are_big_endian",
     "bit_fields_read_and_write_their_bits_only",
     "values_are_read_and_checked_at_their_offset",
@@ -373,6 +383,11 @@ const SUPPORT_TESTS: [&str; 24] = [
     "pke_no_request_ignores_what_the_master_left",
     "pke_reserved_bits_are_not_read_and_written_0",
     "pke_codes_the_manual_does_not_define_are_refused",
+    "profidrive_words_in_pwe2_double_words_across_both",
+    "profidrive_the_subindex_is_the_high_byte_of_ind",
+    "profidrive_ids_beyond_the_profile_are_refused",
+    "profidrive_encoders_refuse_what_the_channel_cannot_carry",
+    "profidrive_no_request_ignores_what_the_master_left",
     "station_read_with_the_count_1",
     "station_commands_the_manual_does_not_list_are_refused",
     "station_errors_reply_0x80_plus_the_command",

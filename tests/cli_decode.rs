@@ -110,6 +110,123 @@ fn md810_error_answer_names_the_error() {
     assert_eq!(cells(line(&out, "error")), ["error", "3", "illegal data"]);
 }
 
+const PROFIDRIVE: &str = "tests/fixtures/valid/profidrive.toml";
+
+/// The PROFIdrive fixture's PPO1 carrying `pkw` and two PZD words.
+fn profidrive_ppo1<'a>(direction: &'a str, pkw: &'a str) -> [&'a str; 6] {
+    [
+        PROFIDRIVE,
+        "--module",
+        "PPO1",
+        "--direction",
+        direction,
+        pkw,
+    ]
+}
+
+/// A PROFIdrive read of P10.05: PKE 13ED is request 1 and PNU 1005, named
+/// after the description's decimal numbering; the words are the profile's.
+#[test]
+fn profidrive_read_of_p10_05_names_the_pnu() {
+    let out = decoded(&profidrive_ppo1("out", "13ED 0000 0000 0000 047F 4000"));
+    assert_eq!(cells(line(&out, "0  PKE")), ["0", "PKE", "13ED", "5101"]);
+    assert_eq!(cells(line(&out, "4  PWE1")), ["4", "PWE1", "0000", "0"]);
+    assert_eq!(cells(line(&out, "6  PWE2")), ["6", "PWE2", "0000", "0"]);
+    assert_eq!(line(&out, "PKW"), "PKW request");
+    assert_eq!(
+        cells(line(&out, "code")),
+        ["code", "1", "request the parameter value"]
+    );
+    assert_eq!(
+        line(&out, "parameter").trim(),
+        "parameter  P10.05 (PNU 1005), subindex 0"
+    );
+}
+
+/// A word write and a double word write to an array element: PWE2 alone,
+/// then PWE1 and PWE2 high word first; the subindex from IND's high byte.
+#[test]
+fn profidrive_writes_carry_words_and_double_words() {
+    let out = decoded(&profidrive_ppo1("out", "23ED 0000 0000 0001 0000 0000"));
+    assert_eq!(
+        cells(line(&out, "code")),
+        ["code", "2", "change the parameter value (word)"]
+    );
+    assert_eq!(cells(line(&out, "value")), ["value", "1 (0x0001)"]);
+    let doc = json(&profidrive_ppo1("out", "83ED 0300 0001 86A0 0000 0000"));
+    let pkw = &doc["telegram"]["pkw"];
+    assert_eq!(pkw["channel"], "profidrive");
+    assert_eq!(pkw["code"], 8);
+    assert_eq!(
+        pkw["parameter"],
+        serde_json::json!({ "address": 1005, "name": "P10.05", "subindex": 3 })
+    );
+    assert_eq!(pkw["value"], 100_000);
+    assert_eq!(pkw["refused"], serde_json::Value::Null);
+}
+
+/// Response 7 with the error number in PWE2: the profile's text, or the
+/// manuals' that give a number beyond it, or the drive's own.
+#[test]
+fn profidrive_error_answers_name_the_error_number() {
+    let out = decoded(&profidrive_ppo1("in", "73ED 0000 0000 0002 0000 0000"));
+    assert_eq!(line(&out, "PKW"), "PKW response");
+    assert_eq!(
+        cells(line(&out, "code")),
+        ["code", "7", "the request cannot be executed"]
+    );
+    assert_eq!(
+        cells(line(&out, "error")),
+        ["error", "2", "low or high limit exceeded"]
+    );
+    let vendor = decoded(&profidrive_ppo1("in", "73ED 0000 0000 006A 0000 0000"));
+    assert_eq!(
+        cells(line(&vendor, "error")),
+        [
+            "error",
+            "106",
+            "request not implemented (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"
+        ]
+    );
+    let own = json(&profidrive_ppo1("in", "73ED 0000 0000 0032 0000 0000"));
+    assert_eq!(
+        own["telegram"]["pkw"]["error"],
+        serde_json::json!({
+            "code": 50,
+            "text": "not a number any of the manuals gives: the drive's own"
+        })
+    );
+}
+
+/// Ids beyond the profile decode, and say that the card refuses them.
+#[test]
+fn profidrive_ids_beyond_the_profile_are_refused() {
+    let out = decoded(&profidrive_ppo1("out", "E3ED 0000 0000 0001 0000 0000"));
+    assert_eq!(
+        cells(line(&out, "code")),
+        ["code", "14", "not the profile's"]
+    );
+    assert_eq!(
+        line(&out, "parameter").trim(),
+        "parameter  P10.05 (PNU 1005), subindex 0"
+    );
+    assert!(
+        line(&out, "refused").contains(
+            "request id 14 is not the profile's (0 to 9): 11 to 15 are Siemens' extensions"
+        ),
+        "{out}"
+    );
+    let report = json(&profidrive_ppo1("in", "93ED 0000 0000 0001 0000 0000"));
+    let pkw = &report["telegram"]["pkw"];
+    assert_eq!(pkw["code"], 9);
+    assert_eq!(pkw["meaning"], "a parameter change report");
+    assert_eq!(pkw["parameter"], serde_json::Value::Null);
+    assert!(pkw["refused"]
+        .as_str()
+        .unwrap()
+        .starts_with("response id 9 is a parameter change report (9 to 12)"));
+}
+
 /// MV810: the status word bit by bit, PZD2 named after the mapping given.
 #[test]
 fn mv810_status_word_and_mapped_word_as_a_table() {
@@ -735,5 +852,5 @@ fn the_documents_examples_are_what_gsdc_prints() {
             examples += 1;
         }
     }
-    assert_eq!(examples, 6);
+    assert_eq!(examples, 7);
 }

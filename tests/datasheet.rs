@@ -172,10 +172,25 @@ fn figures(html: &str) -> Vec<Figure> {
         .collect()
 }
 
+/// The HTML datasheets of the shipped descriptions and of the PROFIdrive
+/// fixture (whose PPO1 has the profile's PKW words), by name.
+fn html_datasheets() -> Vec<(&'static str, String)> {
+    let fixture = descriptions::load_from("tests/fixtures/valid", "profidrive.toml");
+    let fixture_html = gsdc::document(&fixture)
+        .into_iter()
+        .find(|a| a.kind == ArtifactKind::DatasheetHtml)
+        .map(|a| String::from_utf8(a.contents).unwrap())
+        .unwrap();
+    DESCRIPTIONS
+        .iter()
+        .map(|&name| (name, datasheet(name, ArtifactKind::DatasheetHtml)))
+        .chain([("profidrive.toml", fixture_html)])
+        .collect()
+}
+
 #[test]
 fn diagrams_keep_their_boxes_apart_inside_the_drawing() {
-    for name in DESCRIPTIONS {
-        let html = datasheet(name, ArtifactKind::DatasheetHtml);
+    for (name, html) in html_datasheets() {
         let figures = figures(&html);
         // The gateway's one diagram (its example's data) in two languages.
         assert!(figures.len() >= 2, "{name}");
@@ -299,6 +314,84 @@ fn table_rows(markdown: &str, caption: &str) -> Vec<Vec<String>> {
                 .collect()
         })
         .collect()
+}
+
+/// The PROFIdrive fixture's parameter channel: the profile's words, its
+/// ids and error numbers, and worked examples for P10.05 = PNU 1005 that
+/// the codec computes (PKE = id << 12 | 0x3ED), checked here by hand.
+#[test]
+fn the_profidrive_channel_has_the_profiles_ids_and_worked_examples() {
+    let ir = descriptions::load_from("tests/fixtures/valid", "profidrive.toml");
+    let md = gsdc::document(&ir)
+        .into_iter()
+        .find(|a| a.kind == ArtifactKind::DatasheetMarkdown)
+        .map(|a| String::from_utf8(a.contents).unwrap())
+        .unwrap();
+    let first_cells = |caption: &str| -> Vec<String> {
+        table_rows(&md, caption)
+            .into_iter()
+            .map(|r| r[0].clone())
+            .collect()
+    };
+    assert_eq!(first_cells("The PKW words"), ["PKE", "IND", "PWE1", "PWE2"]);
+    let ids = |range: std::ops::RangeInclusive<u8>| -> Vec<String> {
+        range.map(|id| id.to_string()).collect()
+    };
+    assert_eq!(first_cells("Request ids"), ids(0..=9));
+    assert_eq!(first_cells("Response ids"), ids(0..=8));
+    assert_eq!(
+        first_cells("Error numbers of response 7"),
+        ["0", "1", "2", "3", "4", "5", "6", "7", "11", "12", "17"]
+    );
+    assert!(md.contains("The examples read and write `P10.05` (PNU 1005)"));
+    let examples: Vec<[String; 3]> = table_rows(&md, "Worked examples")
+        .into_iter()
+        .map(|r| [r[0].clone(), r[1].clone(), r[3].clone()])
+        .collect();
+    let row = |what: &str, sent: &str, answer: &str| {
+        [what.to_string(), format!("`{sent}`"), format!("`{answer}`")]
+    };
+    assert_eq!(
+        examples,
+        [
+            row("read P10.05", "13ED 0000 0000 0000", "13ED 0000 0000 vvvv"),
+            row("read P10.05", "13ED 0000 0000 0000", "23ED 0000 vvvv vvvv"),
+            row(
+                "change P10.05 to vvvv (word)",
+                "23ED 0000 0000 vvvv",
+                "13ED 0000 0000 vvvv"
+            ),
+            row(
+                "change P10.05 to vvvvvvvv (double word)",
+                "33ED 0000 vvvv vvvv",
+                "23ED 0000 vvvv vvvv"
+            ),
+            row(
+                "read element ss of P10.05",
+                "63ED ss00 0000 0000",
+                "43ED ss00 0000 vvvv"
+            ),
+            row(
+                "change P10.05 to vvvv (word)",
+                "23ED 0000 0000 vvvv",
+                "73ED 0000 0000 xxxx"
+            ),
+            row(
+                "change P10.05 to vvvv (word)",
+                "23ED 0000 0000 vvvv",
+                "83ED 0000 0000 0000"
+            ),
+            row("no request", "0000 0000 0000 0000", "0000 0000 0000 0000"),
+        ]
+    );
+    // The PPO's words as the profile names them, both ways.
+    assert_eq!(
+        table_rows(&md, "PPO1: 4 PKW + 2 PZD")[2],
+        ["PWE1", "bytes 4-5", "value, high word", "value, high word"]
+    );
+    // The Chinese page has the same tables.
+    assert!(md.contains("*表 10 请求标识（PKE 位 15-12，十进制）*"));
+    assert!(md.contains("| 17 | 当前运行状态下无法处理请求 |"));
 }
 
 /// Chapter 2's facts: 2.2.1 (244 bytes each way), 2.4 step 4 (30 slaves,

@@ -339,6 +339,10 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
             "md810-gateway.toml",
             include_str!("../descriptions/md810-gateway.toml"),
         ),
+        (
+            "the PROFIdrive fixture",
+            include_str!("fixtures/valid/profidrive.toml"),
+        ),
     ];
     let examples = guide_examples()
         .into_iter()

@@ -295,16 +295,22 @@ fn render_pkw(out: &mut String, pkw: &Pkw) {
     }
     // As each manual writes its codes.
     let code = match pkw.channel {
-        Channel::PkeIndPwe => pkw.code.to_string(),
+        Channel::PkeIndPwe | Channel::Profidrive => pkw.code.to_string(),
         Channel::StationCommandAddressValue => format!("0x{:02X}", pkw.code),
     };
     let meaning = pkw.meaning.unwrap_or("not defined by the manual");
     rows.push(["code".into(), format!("{code}  {meaning}")]);
     if let Some(p) = &pkw.parameter {
-        let parameter = match &p.name {
-            Some(name) => format!("{name} (address 0x{:04X})", p.address),
-            None => format!("address 0x{:04X}", p.address),
+        let mut parameter = match (&p.name, p.subindex) {
+            // A PROFIdrive channel's parameter number, decimal.
+            (Some(name), Some(_)) => format!("{name} (PNU {})", p.address),
+            (None, Some(_)) => format!("PNU {}", p.address),
+            (Some(name), None) => format!("{name} (address 0x{:04X})", p.address),
+            (None, None) => format!("address 0x{:04X}", p.address),
         };
+        if let Some(subindex) = p.subindex {
+            parameter.push_str(&format!(", subindex {subindex}"));
+        }
         rows.push(["parameter".into(), parameter]);
     }
     if let Some(value) = pkw.value {

@@ -226,6 +226,7 @@ fn pkw_word_names(kind: PkwKind) -> &'static [&'static str] {
     match kind {
         PkwKind::PkeIndPwe => &["PKE", "IND", "PWE high", "PWE low"],
         PkwKind::StationCommandAddressValue => &["Station", "Command", "Address", "Value"],
+        PkwKind::Profidrive => &["PKE", "IND", "PWE1", "PWE2"],
         PkwKind::None => &[],
     }
 }
@@ -287,5 +288,23 @@ mod tests {
             .unwrap()
             .word_names(&ir, Direction::Out);
         assert_eq!(names, ["PKE", "IND", "PWE high", "PWE low", "PZD1", "PZD2"]);
+    }
+
+    /// The PROFIdrive channel's words are the profile's PKE, IND, PWE1,
+    /// PWE2, on a PROFINET module (as the GSDML names them) and a PPO alike.
+    #[test]
+    fn profidrive_words_are_the_profiles_on_both_buses() {
+        let text = include_str!("../../tests/fixtures/valid/profidrive.toml")
+            .replace("module_pkw = \"without\"", "module_pkw = \"both\"");
+        let ir = crate::load("profidrive.toml", &text).0.unwrap();
+        let pn = find_module(&ir, "PKW + 1 PZD", Direction::Out).unwrap();
+        let names = ["PKE", "IND", "PWE1", "PWE2", "PZD1"];
+        assert_eq!(pn.word_names(&ir, Direction::Out), names);
+        assert_eq!(pn.word_names(&ir, Direction::In), names);
+        let ppo1 = find_module(&ir, "PPO1", Direction::In).unwrap();
+        assert_eq!(
+            ppo1.word_names(&ir, Direction::In),
+            ["PKE", "IND", "PWE1", "PWE2", "PZD1", "PZD2"]
+        );
     }
 }

@@ -3,7 +3,9 @@
 //! response exactly as the card does, and refuses what the card refuses.
 
 use crate::ir::{Direction, Ir, PkwKind};
-use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
+use crate::pkw::profidrive::{PROFILE_ERRORS, REQUESTS, RESPONSES};
+use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
+use crate::pkw::{pkw_station_command as station, U16Be};
 use serde::Serialize;
 
 /// A PKW request (to the drive) or response (from it), decoded.
@@ -20,8 +22,9 @@ pub struct Pkw {
     /// does not define it.
     pub meaning: Option<&'static str>,
     pub parameter: Option<Parameter>,
-    /// The value written, read, or echoed.
-    pub value: Option<u16>,
+    /// The value written, read, or echoed: a word, or a PROFIdrive double
+    /// word.
+    pub value: Option<u32>,
     pub error: Option<PkwError>,
     /// Why the card refuses the telegram, when it does: it is not one the
     /// manual defines.
@@ -38,6 +41,9 @@ pub enum Channel {
     /// Station, command, address, value (MV810); codes are command words,
     /// the manual writes them in hex.
     StationCommandAddressValue,
+    /// The PROFIdrive profile's PKE, IND, PWE1, PWE2; ids are four bits,
+    /// written in decimal.
+    Profidrive,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -57,8 +63,12 @@ pub struct Stations {
 /// (`F0-08`), when the description's numbering has one for the address.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Parameter {
+    /// The PNU of a PROFIdrive channel.
     pub address: u16,
     pub name: Option<String>,
+    /// A PROFIdrive channel's subindex (IND bits 15-8).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub subindex: Option<u8>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -90,6 +100,7 @@ pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Optio
     let parameter = |address| Parameter {
         address,
         name: ir.numbering.as_ref().and_then(|n| n.format(address)),
+        subindex: None,
     };
     match (ir.telegram.pkw, direction) {
         (PkwKind::None, _) => None,
@@ -101,6 +112,8 @@ pub(super) fn decode(ir: &Ir, direction: Direction, words: &[U16Be; 4]) -> Optio
         (PkwKind::StationCommandAddressValue, Direction::In) => {
             Some(station_response(words, parameter))
         }
+        (PkwKind::Profidrive, Direction::Out) => Some(profidrive_request(words, parameter)),
+        (PkwKind::Profidrive, Direction::In) => Some(profidrive_response(words, parameter)),
     }
 }
 
@@ -128,7 +141,7 @@ fn pke_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw 
         pke::PkwRequest::Write { address, value } => {
             pkw.meaning = Some("write");
             pkw.parameter = Some(parameter(address));
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
     }
     pkw
@@ -149,7 +162,7 @@ fn pke_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw
         pke::PkwResponse::Done { address, value } => {
             pkw.meaning = Some("done");
             pkw.parameter = Some(parameter(address));
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
         pke::PkwResponse::Failed { address, error } => {
             pkw.meaning = Some("cannot execute");
@@ -238,7 +251,7 @@ fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> 
         value: match request.access {
             station::PkwAccess::Read => None,
             station::PkwAccess::WriteAndStore { value } | station::PkwAccess::Write { value } => {
-                Some(value)
+                Some(value.into())
             }
         },
         ..Pkw::new(STATION, PkwSide::Request, command.code())
@@ -260,7 +273,7 @@ fn station_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) ->
     match response.reply {
         station::PkwReply::Value(value) => {
             pkw.meaning = Some("value read");
-            pkw.value = Some(value);
+            pkw.value = Some(value.into());
         }
         station::PkwReply::WrittenAndStored => pkw.meaning = Some("written and stored in EEPROM"),
         station::PkwReply::Written => pkw.meaning = Some("written without storing it"),
@@ -296,5 +309,188 @@ fn station_refused(side: PkwSide, error: station::PkwDecodeError) -> Pkw {
             )),
             ..Pkw::new(STATION, side, station::PkwCommand::Read.code())
         },
+    }
+}
+
+// ---------------------------------------------------------------------------
+// PROFIdrive
+
+/// Error numbers some manuals give beyond the profile's (MICROMASTER 4
+/// PROFIBUS board Table 3-5, MASTERDRIVES Table 8.2-6, SINAMICS manuals; see
+/// docs/wire-format.md), with the manuals that give them: a drive may mean
+/// something else by them.
+const VENDOR_ERRORS: [(u16, &str); 19] = [
+    (9, "description data not available (SINAMICS G120X, TR encoTRive, SINAMICS DCP; not every manual's)"),
+    (15, "no text array available (MASTERDRIVES, SINAMICS G120X; not every manual's)"),
+    (20, "illegal value (MASTERDRIVES, SINAMICS CU240B-2 and G120; not every manual's)"),
+    (21, "response too long (MASTERDRIVES; not every manual's)"),
+    (22, "non-admissible parameter address (MASTERDRIVES; not every manual's)"),
+    (23, "non-admissible format (MASTERDRIVES; not every manual's)"),
+    (24, "inconsistent number of values (MASTERDRIVES; not every manual's)"),
+    (101, "parameter number currently deactivated (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (102, "channel not wide enough (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (103, "incorrect number of PKWs (MASTERDRIVES: device-specific)"),
+    (104, "illegal parameter value (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (105, "the parameter is indexed (MASTERDRIVES: device-specific)"),
+    (106, "request not implemented (MICROMASTER 4, MASTERDRIVES, SINAMICS G120: device-specific)"),
+    (107, "no write access with the controller enabled (SINAMICS CU240B-2 and G120C: device-specific)"),
+    (134, "write access only for commissioning (SINAMICS G120: device-specific)"),
+    (135, "know-how protection active (SINAMICS G120: device-specific)"),
+    (200, "modified minimum not reached (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+    (201, "modified maximum exceeded (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+    (204, "the access authorization does not cover changing parameters (MICROMASTER 4, SINAMICS CU240B-2 and G120: device-specific)"),
+];
+
+/// A number none of the manuals gives.
+const OWN_ERROR: &str = "not a number any of the manuals gives: the drive's own";
+
+/// What an error number of response 7 means: the profile's meaning, or
+/// what the manuals that give it mean, or that it is the drive's own.
+fn error_text(number: profidrive::PkwErrorNumber) -> &'static str {
+    if let Some((_, (en, _))) = PROFILE_ERRORS.iter().find(|(n, _)| *n == number) {
+        return en;
+    }
+    VENDOR_ERRORS
+        .iter()
+        .find(|(n, _)| *n == number.0)
+        .map_or(OWN_ERROR, |(_, text)| text)
+}
+
+/// A PROFIdrive parameter: its PNU, named by the description's numbering,
+/// and its subindex.
+fn profidrive_parameter(
+    p: profidrive::Parameter,
+    parameter: &impl Fn(u16) -> Parameter,
+) -> Option<Parameter> {
+    Some(Parameter {
+        subindex: Some(p.subindex),
+        ..parameter(p.pnu.get())
+    })
+}
+
+fn profidrive_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    use profidrive::PkwRequest as R;
+    let request = match R::decode(words) {
+        Ok(request) => request,
+        Err(error) => return profidrive_refused(PkwSide::Request, error, &parameter),
+    };
+    let id = request.id();
+    let value = match request {
+        R::WriteWord { value, .. } | R::WriteArrayWord { value, .. } => Some(value.into()),
+        R::WriteDoubleWord { value, .. }
+        | R::WriteDescription { value, .. }
+        | R::WriteArrayDoubleWord { value, .. } => Some(value),
+        _ => None,
+    };
+    Pkw {
+        meaning: Some(REQUESTS[usize::from(id)].0),
+        parameter: request
+            .parameter()
+            .and_then(|p| profidrive_parameter(p, &parameter)),
+        value,
+        ..Pkw::new(Channel::Profidrive, PkwSide::Request, id.into())
+    }
+}
+
+fn profidrive_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
+    use profidrive::PkwResponse as R;
+    let response = match R::decode(words) {
+        Ok(response) => response,
+        Err(error) => return profidrive_refused(PkwSide::Response, error, &parameter),
+    };
+    let id = response.id();
+    let (value, error) = match response {
+        R::Word { value, .. } | R::ArrayWord { value, .. } => (Some(value.into()), None),
+        R::ArrayLength { count, .. } => (Some(count.into()), None),
+        R::DoubleWord { value, .. }
+        | R::Description { value, .. }
+        | R::ArrayDoubleWord { value, .. } => (Some(value), None),
+        R::Failed { error, .. } => (
+            None,
+            Some(PkwError {
+                code: error.0,
+                text: Some(error_text(error)),
+            }),
+        ),
+        R::None | R::NoAuthority { .. } => (None, None),
+    };
+    Pkw {
+        meaning: Some(RESPONSES[usize::from(id)].0),
+        parameter: response
+            .parameter()
+            .and_then(|p| profidrive_parameter(p, &parameter)),
+        value,
+        error,
+        ..Pkw::new(Channel::Profidrive, PkwSide::Response, id.into())
+    }
+}
+
+fn profidrive_refused(
+    side: PkwSide,
+    error: profidrive::PkwDecodeError,
+    parameter: &impl Fn(u16) -> Parameter,
+) -> Pkw {
+    use profidrive::PkwDecodeError as E;
+    let (id, meaning, why, about) = match error {
+        E::IllegalRequest { id, parameter } => (
+            id,
+            "not the profile's",
+            format!(
+                "request id {id} is not the profile's (0 to 9): {}; the drive answers 7, cannot execute",
+                if id == 10 { "10 is reserved" } else { "11 to 15 are Siemens' extensions" }
+            ),
+            Some(parameter),
+        ),
+        E::ChangeReport { id } => (
+            id,
+            "a parameter change report",
+            format!("response id {id} is a parameter change report (9 to 12), which the channel does not carry: SPM, their toggle bit, is always 0"),
+            None,
+        ),
+        E::UnknownResponse { id } => (
+            id,
+            "not the profile's",
+            format!("response id {id} is not the profile's (0 to 8, and 9 to 12 change reports)"),
+            None,
+        ),
+    };
+    Pkw {
+        meaning: Some(meaning),
+        parameter: about.and_then(|p| profidrive_parameter(p, parameter)),
+        refused: Some(why),
+        ..Pkw::new(Channel::Profidrive, side, id.into())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use profidrive::PkwErrorNumber;
+
+    #[test]
+    fn each_error_number_has_one_meaning() {
+        let mut numbers: Vec<u16> = PROFILE_ERRORS
+            .iter()
+            .map(|(n, _)| n.0)
+            .chain(VENDOR_ERRORS.iter().map(|(n, _)| *n))
+            .collect();
+        let count = numbers.len();
+        numbers.sort_unstable();
+        numbers.dedup();
+        assert_eq!(numbers.len(), count);
+    }
+
+    #[test]
+    fn error_texts_say_whose_a_number_is() {
+        assert_eq!(
+            error_text(PkwErrorNumber::OPERATING_STATE),
+            "the request cannot be processed in the operating state"
+        );
+        assert_eq!(
+            error_text(PkwErrorNumber(0)),
+            "impermissible parameter number (PNU)"
+        );
+        assert!(error_text(PkwErrorNumber(106)).starts_with("request not implemented ("));
+        assert_eq!(error_text(PkwErrorNumber(50)), OWN_ERROR);
     }
 }

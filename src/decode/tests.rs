@@ -75,7 +75,8 @@ fn md810_read_f0_08_with_ppo1() {
         pkw.parameter,
         Some(Parameter {
             address: 0xF008,
-            name: Some("F0-08".into())
+            name: Some("F0-08".into()),
+            subindex: None,
         })
     );
     assert_eq!((pkw.value, pkw.error, pkw.refused), (None, None, None));
@@ -225,7 +226,8 @@ fn mv810_read_of_p43_02() {
         pkw.parameter,
         Some(Parameter {
             address: 0x2B02,
-            name: Some("P43.02".into())
+            name: Some("P43.02".into()),
+            subindex: None,
         })
     );
     assert_eq!(pkw.value, None);

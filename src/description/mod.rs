@@ -79,6 +79,18 @@ pub struct FunctionCodes {
     pub separator: Spanned<String>,
     pub group_radix: Spanned<u32>,
     pub prefixes: BTreeMap<Spanned<String>, Spanned<u8>>,
+    /// How prefix base plus group, and the index, make the address;
+    /// `bytes` when not given.
+    pub address: Option<Spanned<AddressScheme>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum AddressScheme {
+    /// High byte = prefix base + group, low byte = index: F0-12 = 0xF00C.
+    Bytes,
+    /// (prefix base + group) × 100 + index (0..99): P10.05 = 1005.
+    Decimal,
 }
 
 #[derive(Debug, Deserialize)]
@@ -103,6 +115,8 @@ pub enum PkwKind {
     PkeIndPwe,
     /// Station, command, address, value (MV810).
     StationCommandAddressValue,
+    /// The PROFIdrive profile's PKE (AK, SPM, PNU), IND, PWE1, PWE2.
+    Profidrive,
 }
 
 /// A control or status word with named bits.

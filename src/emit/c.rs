@@ -384,6 +384,7 @@ fn pkw_doc(kind: PkwKind) -> Option<String> {
         PkwKind::None => return None,
         PkwKind::PkeIndPwe => ("PKE, IND, PWE", "gsdc_pke"),
         PkwKind::StationCommandAddressValue => ("station, command, address, value", "gsdc_station"),
+        PkwKind::Profidrive => ("PROFIdrive: PKE, IND, PWE1, PWE2", "gsdc_profidrive"),
     };
     Some(comment(&format!(
         "The PKW channel ({name}) in bytes 0-7 of the telegrams that have one: \

@@ -157,22 +157,11 @@ fn parameter_name(ir: &Ir, value: u16) -> String {
     drive_name(ir, value).unwrap_or_else(|| format!("0x{value:04X}"))
 }
 
-/// The drive's name of an address. A hex group is one digit (F0..FF), but
-/// `Numbering::format` also names groups of two (9KDP1's Modbus address
-/// 0x8000 would be `d10.00` under the prefix d = 0x70): those are left out.
+/// The drive's name of an address (`Numbering::format`: a hex group is one
+/// digit, so 9KDP1's Modbus address 0x8000 has none under the prefix d =
+/// 0x70).
 fn drive_name(ir: &Ir, value: u16) -> Option<String> {
-    let numbering = ir.numbering.as_ref()?;
-    let [high, _] = value.to_be_bytes();
-    let base = numbering
-        .prefixes
-        .iter()
-        .map(|&(_, base)| base)
-        .filter(|&base| base <= high)
-        .max()?;
-    if numbering.group_radix == 16 && high - base >= 16 {
-        return None;
-    }
-    numbering.format(value)
+    ir.numbering.as_ref()?.format(value)
 }
 
 /// A mapping's value: an address for a range, a choice's text for choices.

@@ -21,7 +21,7 @@ const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
 /// is replaced by the part's text.
 pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
 const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
-const SUPPORT_PARTS: [(&str, &str); 4] = [
+const SUPPORT_PARTS: [(&str, &str); 5] = [
     (
         "pkw_pke_ind_pwe",
         include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
@@ -29,6 +29,10 @@ const SUPPORT_PARTS: [(&str, &str); 4] = [
     (
         "pkw_station_command",
         include_str!("../../templates/support/pkw_station_command.rs"),
+    ),
+    (
+        "pkw_profidrive",
+        include_str!("../../templates/support/pkw_profidrive.rs"),
     ),
     (
         "diagnosis",
@@ -312,6 +316,7 @@ fn context(ir: &Ir) -> Context<'_> {
             PkwKind::None => None,
             PkwKind::PkeIndPwe => Some("pkw_pke_ind_pwe"),
             PkwKind::StationCommandAddressValue => Some("pkw_station_command"),
+            PkwKind::Profidrive => Some("pkw_profidrive"),
         },
         telegrams: telegrams(ir),
         words: Direction::BOTH

@@ -21,7 +21,7 @@ pub use mapping::{
 };
 pub use names::Ident;
 pub(crate) use names::Scope;
-pub use numbering::Numbering;
+pub use numbering::{AddressScheme, Numbering};
 pub use profibus::Profibus;
 pub use profinet::Profinet;
 pub use telegram::{BitField, Choice, Direction, Layout, PkwKind, Telegram, ValueSet, Word};

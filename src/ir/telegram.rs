@@ -10,6 +10,9 @@ pub enum PkwKind {
     PkeIndPwe,
     /// Station (2 bytes), command (2), address (2), value (2): MV810.
     StationCommandAddressValue,
+    /// The PROFIdrive profile's channel: PKE (request or response id, SPM,
+    /// an 11-bit parameter number), IND (the subindex), PWE1, PWE2.
+    Profidrive,
 }
 
 /// Words of the PKW channel, each way, when there is one.

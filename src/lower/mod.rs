@@ -15,7 +15,7 @@ mod telegram;
 
 use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{self, Fingerprint, Ir, Numbering};
+use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 use checks::Checker;
 use toml::Spanned;
 
@@ -52,6 +52,7 @@ pub fn lower(
         .as_ref()
         .map_or_else(telegram::absent, |t| telegram::lower(&mut cx, t));
     let (mappings, set_spans) = mappings::lower(&mut cx, desc, numbering.as_ref(), &telegram);
+    telegram::check_pnus(&mut cx, desc, numbering.as_ref());
     let gateway = desc
         .gateway
         .as_ref()
@@ -264,7 +265,18 @@ fn symbol(
 
 fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
     let radix = *f.group_radix.get_ref();
-    if ![10, 16].contains(&radix) {
+    let scheme = match f.address.as_ref().map(Spanned::get_ref) {
+        None | Some(raw::AddressScheme::Bytes) => AddressScheme::Bytes,
+        Some(raw::AddressScheme::Decimal) => AddressScheme::Decimal,
+    };
+    if scheme == AddressScheme::Decimal && radix != 10 {
+        cx.push(
+            Diagnostic::error("E101", "group_radix must be 10 with address = \"decimal\"")
+                .at(f.group_radix.span())
+                .label("not 10")
+                .help("a decimal address is group × 100 + index (P10.05 = 1005): its groups are decimal"),
+        );
+    } else if ![10, 16].contains(&radix) {
         cx.push(
             Diagnostic::error("E101", "group_radix must be 10 or 16")
                 .at(f.group_radix.span())
@@ -289,7 +301,7 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
         .collect();
     // A wrong radix was reported above; 16 only keeps names from failing twice.
     let radix = if radix == 10 { 10 } else { 16 };
-    Numbering::new(f.separator.get_ref().clone(), radix, prefixes)
+    Numbering::new(f.separator.get_ref().clone(), radix, prefixes, scheme)
 }
 
 /// An address written as a number or a function-code name, as u16.

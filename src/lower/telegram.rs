@@ -1,10 +1,11 @@
 //! The telegram: PKW kind, PZD words, control and status words.
 
 use super::checks::Checker;
-use crate::description::{self as raw, PkwKind};
+use crate::description::{self as raw, Address, PkwKind};
 use crate::diag::Diagnostic;
-use crate::ir::{self, Ident, Scope, Telegram, ValueSet};
+use crate::ir::{self, Ident, Numbering, Scope, Telegram, ValueSet};
 use std::collections::BTreeSet;
+use toml::Spanned;
 
 /// A general config identifier byte carries at most 16 words.
 const MAX_PZD_WORDS: i64 = 16;
@@ -21,6 +22,7 @@ pub fn lower(cx: &mut Checker, t: &raw::Telegram) -> Telegram {
             PkwKind::None => ir::PkwKind::None,
             PkwKind::PkeIndPwe => ir::PkwKind::PkeIndPwe,
             PkwKind::StationCommandAddressValue => ir::PkwKind::StationCommandAddressValue,
+            PkwKind::Profidrive => ir::PkwKind::Profidrive,
         },
         pzd_words,
         control_word: t
@@ -98,6 +100,107 @@ fn lower_bit_field(
         name,
         values,
     })
+}
+
+/// The largest parameter number of the PROFIdrive channel: PKE bits 10-0
+/// (MM440 OI p.157, MASTERDRIVES Compendium 8.2-19).
+const PNU_MAX: u16 = 0x07FF;
+
+/// E154: with `pkw = "profidrive"` every parameter the description names
+/// must be a PNU the channel can carry. A parameter is a mapping's value (a
+/// parameter address, unless the mapping has choices), a setting's that
+/// holds addresses, the drive parameter that holds a mapping or a setting
+/// (the last entry's too), and whatever is written as a function-code name.
+/// Values that do not resolve were reported where they were lowered.
+pub fn check_pnus(cx: &mut Checker, desc: &raw::Description, numbering: Option<&Numbering>) {
+    if !desc
+        .telegram
+        .as_ref()
+        .is_some_and(|t| *t.pkw.get_ref() == PkwKind::Profidrive)
+    {
+        return;
+    }
+    let m = &desc.mappings;
+    for mapping in [&m.pzd_out, &m.pzd_in, &m.dpv1_index].into_iter().flatten() {
+        let holds_addresses = mapping.choices.is_none();
+        let values = mapping
+            .default
+            .iter()
+            .chain(mapping.defaults.iter().flat_map(|d| d.get_ref()))
+            .chain(mapping.range.iter().flat_map(|r| r.get_ref()));
+        for value in values {
+            check_pnu(cx, value, numbering, holds_addresses, 0);
+        }
+        if let Some(parameter) = &mapping.parameter {
+            let first = *mapping.first.get_ref();
+            let after = mapping.last.get_ref().saturating_sub(first);
+            check_pnu(cx, parameter, numbering, true, after);
+        }
+    }
+    for setting in &desc.settings {
+        let holds_addresses = setting.choices.is_none()
+            && setting
+                .holds
+                .as_ref()
+                .is_some_and(|h| *h.get_ref() == raw::Holds::Address);
+        let values = std::iter::once(&setting.default)
+            .chain(setting.range.iter().flat_map(|r| r.get_ref()))
+            .chain(setting.per_module.iter().flat_map(|p| {
+                let p = p.get_ref();
+                std::iter::once(&p.user_defined).chain(&p.standard_telegram_1)
+            }));
+        for value in values {
+            check_pnu(cx, value, numbering, holds_addresses, 0);
+        }
+        if let Some(parameter) = &setting.parameter {
+            check_pnu(cx, parameter, numbering, true, 0);
+        }
+    }
+}
+
+/// E154 for `value` (and the `after` parameters that follow it) when it is
+/// a parameter beyond the PNU range: a name always, a number when
+/// `is_parameter`.
+fn check_pnu(
+    cx: &mut Checker,
+    value: &Spanned<Address>,
+    numbering: Option<&Numbering>,
+    is_parameter: bool,
+    after: u8,
+) {
+    let (number, name) = match value.get_ref() {
+        Address::Number(n) if is_parameter => (*n, None),
+        Address::Number(_) => return,
+        Address::Name(name) => match numbering.and_then(|n| n.parse(name).ok()) {
+            Some(address) => (i64::from(address), Some(name)),
+            None => return,
+        },
+    };
+    let last = number + i64::from(after);
+    if !(0..=0xFFFF).contains(&number) || last <= i64::from(PNU_MAX) {
+        return;
+    }
+    let parameter = match name {
+        Some(name) => format!("`{name}` is parameter {number}"),
+        None => format!("parameter {number}"),
+    };
+    let (what, label) = match (after, name) {
+        (0, Some(_)) => (format!("{parameter},"), "not a PNU"),
+        (0, None) => (format!("{parameter} is"), "not a PNU"),
+        _ => (
+            format!("the last entry's parameter is {last} ({parameter} for the first),"),
+            "the last entry's is not a PNU",
+        ),
+    };
+    cx.push(
+        Diagnostic::error(
+            "E154",
+            format!("{what} beyond the PROFIdrive channel's parameter numbers (0 to {PNU_MAX})"),
+        )
+        .at(value.span())
+        .label(label)
+        .help("the PKE holds an 11-bit PNU; the profile leaves IND's low byte, where Siemens drives select a page for higher numbers, undefined: number the parameter within 0 to 2047, or describe the drive's own channel"),
+    );
 }
 
 /// A gateway's: no PKW channel, no PZD words. Its data are the nodes' words.

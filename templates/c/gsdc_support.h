@@ -267,14 +267,22 @@ static inline void gsdc_diag_area_set(uint8_t *block, size_t len, unsigned int f
  * manual defines, else the first thing it does not. */
 typedef enum {
     GSDC_PKW_OK = 0,
-    /* A request command the manual does not define. */
+    /* A request command the manual (or the PROFIdrive profile) does not define. */
     GSDC_PKW_BAD_COMMAND,
-    /* A response code the manual does not define (PKE, IND, PWE). */
+    /* A response code the manual (or the profile) does not define (PKE, IND,
+     * PWE; PROFIdrive). */
     GSDC_PKW_BAD_RESPONSE,
     /* "Cannot execute" with an error code other than 1 to 4 (PKE, IND, PWE). */
     GSDC_PKW_BAD_ERROR_CODE,
     /* A read whose count is not 1 (station, command, address, value). */
-    GSDC_PKW_BAD_READ_COUNT
+    GSDC_PKW_BAD_READ_COUNT,
+    /* A parameter number beyond GSDC_PROFIDRIVE_PNU_MAX (PROFIdrive). */
+    GSDC_PKW_BAD_PNU,
+    /* A value beyond 0xFFFF for an id that carries a word (PROFIdrive). */
+    GSDC_PKW_BAD_VALUE,
+    /* A parameter change report, response 9 to 12, which the PROFIdrive
+     * codec does not carry. */
+    GSDC_PKW_CHANGE_REPORT
 } gsdc_pkw_status_t;
 
 /* The PKW channel, PROFIdrive style (MD810): PKE, IND, PWE high, PWE low.
@@ -615,6 +623,302 @@ static inline gsdc_pkw_status_t gsdc_station_response_encode(
         }
         gsdc_station_words(pkw, response->target, response->source, response->command,
                            response->address, value);
+    }
+    return status;
+}
+
+/* The PROFIdrive parameter channel, as the profile's PPO types carry it in
+ * cyclic exchange (MICROMASTER 440 OI p.157-159, MICROMASTER 4 PROFIBUS
+ * board p.25-28, MASTERDRIVES Compendium 8.2-19; docs/wire-format.md in
+ * gsdc's repository quotes them). PKE: bits 15-12 the request id (AK) or
+ * response id, bit 11 SPM, bits 10-0 the parameter number (PNU 0..2047).
+ * IND: bits 15-8 the subindex (the array element, or the description
+ * element); bits 7-0 are "not defined in PROFIDrive Profile version 2.0"
+ * (Siemens drives select a page there): written 0 and not read. PWE1, PWE2:
+ * a double word high word first; a word in PWE2, PWE1 written 0 and not
+ * read; with response 7 the error number in PWE2. SPM, a toggle bit for
+ * parameter change reports or "reserved, always 0", is written 0 and not
+ * read; change reports (responses 9-12) are not carried. Requests 0-9 are
+ * the profile's; 10 is reserved and 11-15 are Siemens' extensions ("not
+ * defined in the PROFIDrive Profile"): refused. Every request but 0 carries
+ * the subindex, whatever its id (newer SINAMICS make 1, 2, 3 the same as 6,
+ * 7, 8). Nothing of a telegram without a request is read. */
+
+/* The largest parameter number of PKE bits 10-0. */
+#define GSDC_PROFIDRIVE_PNU_MAX 2047U
+
+/* Request ids, PKE bits 15-12: the profile's 0 to 9. */
+#define GSDC_PROFIDRIVE_NO_REQUEST 0U
+#define GSDC_PROFIDRIVE_READ 1U
+#define GSDC_PROFIDRIVE_WRITE_WORD 2U
+#define GSDC_PROFIDRIVE_WRITE_DOUBLE_WORD 3U
+#define GSDC_PROFIDRIVE_READ_DESCRIPTION 4U
+#define GSDC_PROFIDRIVE_WRITE_DESCRIPTION 5U
+#define GSDC_PROFIDRIVE_READ_ARRAY 6U
+#define GSDC_PROFIDRIVE_WRITE_ARRAY_WORD 7U
+#define GSDC_PROFIDRIVE_WRITE_ARRAY_DOUBLE_WORD 8U
+#define GSDC_PROFIDRIVE_READ_ARRAY_LENGTH 9U
+
+/* Response ids, PKE bits 15-12: the profile's 0 to 8. */
+#define GSDC_PROFIDRIVE_NO_RESPONSE 0U
+#define GSDC_PROFIDRIVE_VALUE_WORD 1U
+#define GSDC_PROFIDRIVE_VALUE_DOUBLE_WORD 2U
+#define GSDC_PROFIDRIVE_DESCRIPTION 3U
+#define GSDC_PROFIDRIVE_ARRAY_WORD 4U
+#define GSDC_PROFIDRIVE_ARRAY_DOUBLE_WORD 5U
+#define GSDC_PROFIDRIVE_ARRAY_LENGTH 6U
+#define GSDC_PROFIDRIVE_CANNOT_EXECUTE 7U
+#define GSDC_PROFIDRIVE_NO_AUTHORITY 8U
+
+/* Error numbers of response 7 (PWE2) that the Siemens, Danfoss and TR
+ * encoTRive manuals agree on; a drive may send numbers of its own (Siemens'
+ * from 101 on are device-specific). */
+#define GSDC_PROFIDRIVE_ERROR_ILLEGAL_PNU 0U
+#define GSDC_PROFIDRIVE_ERROR_NOT_CHANGEABLE 1U
+#define GSDC_PROFIDRIVE_ERROR_LIMIT_EXCEEDED 2U
+#define GSDC_PROFIDRIVE_ERROR_BAD_SUBINDEX 3U
+#define GSDC_PROFIDRIVE_ERROR_NO_ARRAY 4U
+#define GSDC_PROFIDRIVE_ERROR_WRONG_TYPE 5U
+#define GSDC_PROFIDRIVE_ERROR_SETTING_NOT_ALLOWED 6U
+#define GSDC_PROFIDRIVE_ERROR_DESCRIPTION_NOT_CHANGEABLE 7U
+#define GSDC_PROFIDRIVE_ERROR_NO_MASTER_CONTROL 11U
+#define GSDC_PROFIDRIVE_ERROR_KEY_WORD_MISSING 12U
+#define GSDC_PROFIDRIVE_ERROR_OPERATING_STATE 17U
+
+/* A parameter request from the master. */
+typedef struct {
+    /* GSDC_PROFIDRIVE_NO_REQUEST to GSDC_PROFIDRIVE_READ_ARRAY_LENGTH. */
+    uint8_t id;
+    /* The parameter number; 0 without a request. */
+    uint16_t pnu;
+    /* IND bits 15-8; 0 without a request. */
+    uint8_t subindex;
+    /* The value a write writes (a word below 0x10000); 0 for the others. */
+    uint32_t value;
+} gsdc_profidrive_request_t;
+
+/* The drive's answer to a parameter request. */
+typedef struct {
+    /* GSDC_PROFIDRIVE_NO_RESPONSE to GSDC_PROFIDRIVE_NO_AUTHORITY. */
+    uint8_t id;
+    /* The parameter number; 0 without a response. */
+    uint16_t pnu;
+    uint8_t subindex;
+    /* The value (a word below 0x10000), the number of array elements (6) or
+     * the error number (7); 0 for 0 and 8. */
+    uint32_t value;
+} gsdc_profidrive_response_t;
+
+/* The PWE words the value of an id fills: 0, 1 (PWE2) or 2 (PWE1, PWE2). */
+typedef enum {
+    GSDC_PROFIDRIVE_PWE_NONE = 0,
+    GSDC_PROFIDRIVE_PWE_WORD,
+    GSDC_PROFIDRIVE_PWE_DOUBLE_WORD
+} gsdc_profidrive_pwe_t;
+
+/* What the value of request `id` fills. */
+static inline gsdc_profidrive_pwe_t gsdc_profidrive_request_pwe(uint32_t id)
+{
+    gsdc_profidrive_pwe_t pwe = GSDC_PROFIDRIVE_PWE_NONE;
+    switch (id) {
+    case GSDC_PROFIDRIVE_WRITE_WORD:
+    case GSDC_PROFIDRIVE_WRITE_ARRAY_WORD:
+        pwe = GSDC_PROFIDRIVE_PWE_WORD;
+        break;
+    case GSDC_PROFIDRIVE_WRITE_DOUBLE_WORD:
+    case GSDC_PROFIDRIVE_WRITE_DESCRIPTION:
+    case GSDC_PROFIDRIVE_WRITE_ARRAY_DOUBLE_WORD:
+        pwe = GSDC_PROFIDRIVE_PWE_DOUBLE_WORD;
+        break;
+    default:
+        break;
+    }
+    return pwe;
+}
+
+/* What the value of response `id` fills. */
+static inline gsdc_profidrive_pwe_t gsdc_profidrive_response_pwe(uint32_t id)
+{
+    gsdc_profidrive_pwe_t pwe = GSDC_PROFIDRIVE_PWE_NONE;
+    switch (id) {
+    case GSDC_PROFIDRIVE_VALUE_WORD:
+    case GSDC_PROFIDRIVE_ARRAY_WORD:
+    case GSDC_PROFIDRIVE_ARRAY_LENGTH:
+    case GSDC_PROFIDRIVE_CANNOT_EXECUTE:
+        pwe = GSDC_PROFIDRIVE_PWE_WORD;
+        break;
+    case GSDC_PROFIDRIVE_VALUE_DOUBLE_WORD:
+    case GSDC_PROFIDRIVE_DESCRIPTION:
+    case GSDC_PROFIDRIVE_ARRAY_DOUBLE_WORD:
+        pwe = GSDC_PROFIDRIVE_PWE_DOUBLE_WORD;
+        break;
+    default:
+        break;
+    }
+    return pwe;
+}
+
+/* GSDC_PKW_OK when `pnu` fits PKE and `value` the words `pwe` names;
+ * GSDC_PKW_BAD_PNU or GSDC_PKW_BAD_VALUE when not. */
+static inline gsdc_pkw_status_t gsdc_profidrive_check(uint16_t pnu, gsdc_profidrive_pwe_t pwe,
+                                                      uint32_t value)
+{
+    gsdc_pkw_status_t status = GSDC_PKW_OK;
+    if (pnu > GSDC_PROFIDRIVE_PNU_MAX) {
+        status = GSDC_PKW_BAD_PNU;
+    } else if ((pwe == GSDC_PROFIDRIVE_PWE_WORD) && (value > 0xFFFFU)) {
+        status = GSDC_PKW_BAD_VALUE;
+    } else {
+        /* Within the channel. */
+    }
+    return status;
+}
+
+/* Writes PKE, IND, PWE1 and PWE2 of an id, a parameter and a value that
+ * fills the words `pwe` names (the others are written 0). */
+static inline void gsdc_profidrive_words(uint8_t pkw[GSDC_PKW_BYTES], uint32_t id, uint16_t pnu,
+                                         uint8_t subindex, gsdc_profidrive_pwe_t pwe,
+                                         uint32_t value)
+{
+    uint16_t pwe1 = 0U;
+    uint16_t pwe2 = 0U;
+    if (pwe == GSDC_PROFIDRIVE_PWE_DOUBLE_WORD) {
+        pwe1 = (uint16_t)(value >> 16U);
+    }
+    if (pwe != GSDC_PROFIDRIVE_PWE_NONE) {
+        pwe2 = (uint16_t)(value & 0xFFFFU);
+    }
+    gsdc_u16be_put(&pkw[0], (uint16_t)(((id & 0x0FU) << 12U) | ((uint32_t)pnu & 0x07FFU)));
+    pkw[2] = subindex;
+    pkw[3] = 0U;
+    gsdc_u16be_put(&pkw[4], pwe1);
+    gsdc_u16be_put(&pkw[6], pwe2);
+}
+
+/* The id (PKE bits 15-12) of `pkw`. */
+static inline uint8_t gsdc_profidrive_id(const uint8_t pkw[GSDC_PKW_BYTES])
+{
+    return (uint8_t)((uint32_t)pkw[0] >> 4U);
+}
+
+/* The parameter number (PKE bits 10-0) of `pkw`. */
+static inline uint16_t gsdc_profidrive_pnu(const uint8_t pkw[GSDC_PKW_BYTES])
+{
+    return (uint16_t)((uint32_t)gsdc_u16be_get(&pkw[0]) & 0x07FFU);
+}
+
+/* The value of `pkw` in the words `pwe` names; 0 for none. */
+static inline uint32_t gsdc_profidrive_value(const uint8_t pkw[GSDC_PKW_BYTES],
+                                             gsdc_profidrive_pwe_t pwe)
+{
+    uint32_t value = 0U;
+    if (pwe == GSDC_PROFIDRIVE_PWE_WORD) {
+        value = gsdc_u16be_get(&pkw[6]);
+    } else if (pwe == GSDC_PROFIDRIVE_PWE_DOUBLE_WORD) {
+        value = ((uint32_t)gsdc_u16be_get(&pkw[4]) << 16U) | (uint32_t)gsdc_u16be_get(&pkw[6]);
+    } else {
+        /* No value. */
+    }
+    return value;
+}
+
+/* Decodes the master's request in `pkw`. GSDC_PKW_OK: `request` holds it.
+ * GSDC_PKW_BAD_COMMAND for an id from 10 on: `request` holds the id, the
+ * parameter number and the subindex the drive answers
+ * GSDC_PROFIDRIVE_CANNOT_EXECUTE about (Siemens manuals give error 106,
+ * request not implemented, after requests 5, 10 and 15), and value 0. */
+static inline gsdc_pkw_status_t
+gsdc_profidrive_request_decode(const uint8_t pkw[GSDC_PKW_BYTES],
+                               gsdc_profidrive_request_t *request)
+{
+    gsdc_pkw_status_t status = GSDC_PKW_OK;
+    request->id = gsdc_profidrive_id(pkw);
+    request->pnu = gsdc_profidrive_pnu(pkw);
+    request->subindex = pkw[2];
+    request->value = gsdc_profidrive_value(pkw, gsdc_profidrive_request_pwe(request->id));
+    if (request->id == GSDC_PROFIDRIVE_NO_REQUEST) {
+        request->pnu = 0U;
+        request->subindex = 0U;
+    } else if (request->id > GSDC_PROFIDRIVE_READ_ARRAY_LENGTH) {
+        status = GSDC_PKW_BAD_COMMAND;
+    } else {
+        /* One of the profile's requests. */
+    }
+    return status;
+}
+
+/* Encodes `request` into `pkw`: GSDC_PKW_OK. A no-request is written all 0.
+ * GSDC_PKW_BAD_COMMAND for an id from 10 on, GSDC_PKW_BAD_PNU for a
+ * parameter number beyond GSDC_PROFIDRIVE_PNU_MAX, GSDC_PKW_BAD_VALUE for a
+ * word write of a value beyond 0xFFFF: `pkw` untouched. */
+static inline gsdc_pkw_status_t
+gsdc_profidrive_request_encode(const gsdc_profidrive_request_t *request,
+                               uint8_t pkw[GSDC_PKW_BYTES])
+{
+    gsdc_pkw_status_t status = GSDC_PKW_OK;
+    gsdc_profidrive_pwe_t pwe = gsdc_profidrive_request_pwe(request->id);
+    if (request->id == GSDC_PROFIDRIVE_NO_REQUEST) {
+        gsdc_profidrive_words(pkw, GSDC_PROFIDRIVE_NO_REQUEST, 0U, 0U, GSDC_PROFIDRIVE_PWE_NONE,
+                              0U);
+    } else if (request->id > GSDC_PROFIDRIVE_READ_ARRAY_LENGTH) {
+        status = GSDC_PKW_BAD_COMMAND;
+    } else {
+        status = gsdc_profidrive_check(request->pnu, pwe, request->value);
+        if (status == GSDC_PKW_OK) {
+            gsdc_profidrive_words(pkw, request->id, request->pnu, request->subindex, pwe,
+                                  request->value);
+        }
+    }
+    return status;
+}
+
+/* Decodes the drive's response in `pkw`. GSDC_PKW_OK: `response` holds it.
+ * GSDC_PKW_CHANGE_REPORT for a parameter change report (9 to 12),
+ * GSDC_PKW_BAD_RESPONSE for 13 to 15: `response` holds the id, the
+ * parameter number and the subindex, and value 0. */
+static inline gsdc_pkw_status_t
+gsdc_profidrive_response_decode(const uint8_t pkw[GSDC_PKW_BYTES],
+                                gsdc_profidrive_response_t *response)
+{
+    gsdc_pkw_status_t status = GSDC_PKW_OK;
+    response->id = gsdc_profidrive_id(pkw);
+    response->pnu = gsdc_profidrive_pnu(pkw);
+    response->subindex = pkw[2];
+    response->value = gsdc_profidrive_value(pkw, gsdc_profidrive_response_pwe(response->id));
+    if (response->id == GSDC_PROFIDRIVE_NO_RESPONSE) {
+        response->pnu = 0U;
+        response->subindex = 0U;
+    } else if (response->id <= GSDC_PROFIDRIVE_NO_AUTHORITY) {
+        /* One of the profile's responses. */
+    } else if (response->id <= 12U) {
+        status = GSDC_PKW_CHANGE_REPORT;
+    } else {
+        status = GSDC_PKW_BAD_RESPONSE;
+    }
+    return status;
+}
+
+/* Encodes `response` into `pkw`: GSDC_PKW_OK. No response is written all 0.
+ * GSDC_PKW_BAD_RESPONSE for an id from 9 on, GSDC_PKW_BAD_PNU for a
+ * parameter number beyond GSDC_PROFIDRIVE_PNU_MAX, GSDC_PKW_BAD_VALUE for a
+ * word (a value, a count, an error number) beyond 0xFFFF: `pkw` untouched. */
+static inline gsdc_pkw_status_t
+gsdc_profidrive_response_encode(const gsdc_profidrive_response_t *response,
+                                uint8_t pkw[GSDC_PKW_BYTES])
+{
+    gsdc_pkw_status_t status = GSDC_PKW_OK;
+    gsdc_profidrive_pwe_t pwe = gsdc_profidrive_response_pwe(response->id);
+    if (response->id == GSDC_PROFIDRIVE_NO_RESPONSE) {
+        gsdc_profidrive_words(pkw, GSDC_PROFIDRIVE_NO_RESPONSE, 0U, 0U, GSDC_PROFIDRIVE_PWE_NONE,
+                              0U);
+    } else if (response->id > GSDC_PROFIDRIVE_NO_AUTHORITY) {
+        status = GSDC_PKW_BAD_RESPONSE;
+    } else {
+        status = gsdc_profidrive_check(response->pnu, pwe, response->value);
+        if (status == GSDC_PKW_OK) {
+            gsdc_profidrive_words(pkw, response->id, response->pnu, response->subindex, pwe,
+                                  response->value);
+        }
     }
     return status;
 }

@@ -9,6 +9,9 @@ pub mod pkw_pke_ind_pwe;
 /// The PKW channel of MV810-style cards: station, command, address, value.
 pub mod pkw_station_command;
 
+/// The PKW channel of the PROFIdrive profile: PKE (AK, SPM, PNU), IND, PWE.
+pub mod pkw_profidrive;
+
 /// The device-related diagnosis block of a PROFIBUS slave.
 pub mod diagnosis;
 

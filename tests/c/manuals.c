@@ -6,11 +6,13 @@
  * tests/c_header.rs compiles it as C and as C++, runs it, and compares the
  * tests it names with the list it expects. It defines GSD_MAX_USER_PRM_DATA_LEN
  * and GSD_MAX_DIAG_DATA_LEN from the GSD generated beside the MD810 layout,
- * and GSD_GW_* from the one beside the MD810 gateway's (MD810GW.GSD). */
+ * and GSD_GW_* from the one beside the MD810 gateway's (MD810GW.GSD). The
+ * PROFIdrive tests use the layout of tests/fixtures/valid/profidrive.toml. */
 #include "md810dp_layout.h"
 #include "mv810_pnet02_layout.h"
 #include "9kdp1_layout.h"
 #include "md810_gateway_layout.h"
+#include "profidrive_layout.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -964,6 +966,125 @@ static void bridge_diagnoses_the_table_does_not_have_are_not_encoded(void)
     }
 }
 
+/* ------------------------------------------------------------------------
+ * PROFIdrive (the fixture): PPO1 carries the profile's parameter channel;
+ * its parameters are numbered group * 100 + index. */
+
+/* P10.05, the setting's parameter: PNU 1005. */
+#define P10_05 1005U
+
+/* A PPO1 telegram of the fixture carrying `pkw` and the PZD words 047F 4000. */
+static void pd_ppo1(const char *pkw, uint8_t telegram[PROFIDRIVE_PPO1_BYTES])
+{
+    uint8_t pzd[4];
+    words(pkw, telegram, GSDC_PKW_BYTES);
+    words("047F 4000", pzd, sizeof pzd);
+    gsdc_copy_bytes(&telegram[PROFIDRIVE_PPO1_PZD_OFFSET], pzd, sizeof pzd);
+}
+
+/* The master reads P10.05 (request 1, PKE 13ED); the drive answers the
+ * word 1 (response 1, PWE2). */
+static void profidrive_read_p10_05(void)
+{
+    profidrive_ppo1_out_t out;
+    profidrive_ppo1_in_t answer;
+    uint8_t again[GSDC_PKW_BYTES] = {0};
+    gsdc_profidrive_request_t request;
+    gsdc_profidrive_response_t response;
+    CHECK(PROFIDRIVE_SETTINGS_1_PARAMETER == P10_05);
+    pd_ppo1("13ED 0000 0000 0000", out.bytes);
+    CHECK(gsdc_profidrive_request_decode(out.bytes, &request) == GSDC_PKW_OK);
+    CHECK(request.id == GSDC_PROFIDRIVE_READ);
+    CHECK(request.pnu == P10_05);
+    CHECK(request.subindex == 0U);
+    CHECK(request.value == 0U);
+    CHECK(gsdc_word_get(&out.bytes[PROFIDRIVE_PPO1_PZD_OFFSET], 0U) == 0x047FU);
+    CHECK(gsdc_profidrive_request_encode(&request, again) == GSDC_PKW_OK);
+    CHECK(same_bytes(again, out.bytes, GSDC_PKW_BYTES));
+    pd_ppo1("13ED 0000 0000 0001", answer.bytes);
+    CHECK(gsdc_profidrive_response_decode(answer.bytes, &response) == GSDC_PKW_OK);
+    CHECK(response.id == GSDC_PROFIDRIVE_VALUE_WORD);
+    CHECK(response.pnu == P10_05);
+    CHECK(response.value == 1U);
+    CHECK(gsdc_profidrive_response_encode(&response, again) == GSDC_PKW_OK);
+    CHECK(same_bytes(again, answer.bytes, GSDC_PKW_BYTES));
+}
+
+/* The master writes the word 1 to P10.05 (request 2), and a double word to
+ * element 3 of it (request 8: PWE1 high word, PWE2 low word, IND 0300). */
+static void profidrive_write_a_word_to_p10_05(void)
+{
+    profidrive_ppo1_out_t out;
+    profidrive_ppo1_out_t sent;
+    gsdc_profidrive_request_t write;
+    gsdc_profidrive_request_t decoded;
+    write.id = GSDC_PROFIDRIVE_WRITE_WORD;
+    write.pnu = P10_05;
+    write.subindex = 0U;
+    write.value = 1U;
+    pd_ppo1("23ED 0000 0000 0001", out.bytes);
+    CHECK(gsdc_profidrive_request_decode(out.bytes, &decoded) == GSDC_PKW_OK);
+    CHECK(decoded.id == write.id);
+    CHECK(decoded.pnu == write.pnu);
+    CHECK(decoded.value == write.value);
+    sent = out;
+    words("FFFF FFFF FFFF FFFF", sent.bytes, GSDC_PKW_BYTES);
+    CHECK(gsdc_profidrive_request_encode(&write, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, out.bytes, PROFIDRIVE_PPO1_BYTES));
+    write.id = GSDC_PROFIDRIVE_WRITE_ARRAY_DOUBLE_WORD;
+    write.subindex = 3U;
+    write.value = 100000U;
+    pd_ppo1("83ED 0300 0001 86A0", out.bytes);
+    CHECK(gsdc_profidrive_request_encode(&write, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, out.bytes, PROFIDRIVE_PPO1_BYTES));
+    CHECK(gsdc_profidrive_request_decode(out.bytes, &decoded) == GSDC_PKW_OK);
+    CHECK(decoded.subindex == 3U);
+    CHECK(decoded.value == 100000U);
+}
+
+/* The drive cannot execute: response 7 with error number 2 (limit
+ * exceeded) in PWE2. */
+static void profidrive_error_answer(void)
+{
+    profidrive_ppo1_in_t answer;
+    profidrive_ppo1_in_t sent;
+    gsdc_profidrive_response_t failed;
+    gsdc_profidrive_response_t decoded;
+    failed.id = GSDC_PROFIDRIVE_CANNOT_EXECUTE;
+    failed.pnu = P10_05;
+    failed.subindex = 0U;
+    failed.value = GSDC_PROFIDRIVE_ERROR_LIMIT_EXCEEDED;
+    pd_ppo1("73ED 0000 0000 0002", answer.bytes);
+    CHECK(gsdc_profidrive_response_decode(answer.bytes, &decoded) == GSDC_PKW_OK);
+    CHECK(decoded.id == failed.id);
+    CHECK(decoded.pnu == failed.pnu);
+    CHECK(decoded.value == 2U);
+    sent = answer;
+    CHECK(gsdc_profidrive_response_encode(&failed, sent.bytes) == GSDC_PKW_OK);
+    CHECK(same_bytes(sent.bytes, answer.bytes, PROFIDRIVE_PPO1_BYTES));
+}
+
+/* Request 14 (Siemens' "change and store in EEPROM") is not the profile's:
+ * refused both ways, with the parameter the drive answers about; an encoder
+ * that refuses writes nothing. */
+static void profidrive_an_illegal_id_is_refused(void)
+{
+    uint8_t telegram[PROFIDRIVE_PPO1_BYTES];
+    uint8_t untouched[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    uint8_t pkw[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    gsdc_profidrive_request_t request;
+    gsdc_profidrive_response_t response;
+    pd_ppo1("E3ED 0000 0000 0001", telegram);
+    CHECK(gsdc_profidrive_request_decode(telegram, &request) == GSDC_PKW_BAD_COMMAND);
+    CHECK(request.id == 14U);
+    CHECK(request.pnu == P10_05);
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_BAD_COMMAND);
+    pd_ppo1("93ED 0000 0000 0001", telegram);
+    CHECK(gsdc_profidrive_response_decode(telegram, &response) == GSDC_PKW_CHANGE_REPORT);
+    CHECK(gsdc_profidrive_response_encode(&response, pkw) == GSDC_PKW_BAD_RESPONSE);
+    CHECK(same_bytes(pkw, untouched, GSDC_PKW_BYTES));
+}
+
 /* ------------------------------------------------------------------------ */
 
 typedef struct {
@@ -1010,6 +1131,10 @@ static const test_t tests[] = {
      bridge_blocks_the_table_does_not_have_are_refused},
     {"bridge_diagnoses_the_table_does_not_have_are_not_encoded",
      bridge_diagnoses_the_table_does_not_have_are_not_encoded},
+    {"profidrive_read_p10_05", profidrive_read_p10_05},
+    {"profidrive_write_a_word_to_p10_05", profidrive_write_a_word_to_p10_05},
+    {"profidrive_error_answer", profidrive_error_answer},
+    {"profidrive_an_illegal_id_is_refused", profidrive_an_illegal_id_is_refused},
 };
 
 int main(void)

@@ -1,6 +1,6 @@
 /* Tests of gsdc_support.h on its own, the C twin of the Rust support code's
  * tests (src/emit/rust/support_tests.rs and support_gateway_tests.rs): words,
- * bit fields, the reading of parameter telegrams and records, both PKW codecs
+ * bit fields, the reading of parameter telegrams and records, the PKW codecs
  * at their edges, the diagnosis areas, and the gateways' parameters, totals
  * and diagnosis blocks. tests/c_header.rs compiles it as C and as C++ and
  * runs it. */
@@ -178,6 +178,125 @@ static void pke_codes_the_manual_does_not_define_are_refused(void)
     CHECK(request.command == 15U);
     CHECK(gsdc_pke_response_decode(pkw, &response) == GSDC_PKW_BAD_RESPONSE);
     CHECK(response.code == 15U);
+}
+
+/* PROFIdrive: PKE (id, SPM, PNU), IND (subindex), PWE1, PWE2. */
+
+static void profidrive_words_in_pwe2_double_words_across_both(void)
+{
+    uint8_t pkw[GSDC_PKW_BYTES];
+    uint8_t expected[GSDC_PKW_BYTES];
+    gsdc_profidrive_request_t request;
+    gsdc_profidrive_response_t response;
+    request.id = GSDC_PROFIDRIVE_WRITE_DOUBLE_WORD;
+    request.pnu = 1005U;
+    request.subindex = 0U;
+    request.value = 0x000186A0UL;
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_OK);
+    words("33ED 0000 0001 86A0", expected, GSDC_PKW_BYTES);
+    CHECK(same_bytes(pkw, expected, GSDC_PKW_BYTES));
+    /* PWE1 of a word is written 0 and not read. */
+    words("13ED 0000 FFFF 1388", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_profidrive_response_decode(pkw, &response) == GSDC_PKW_OK);
+    CHECK(response.value == 5000U);
+    CHECK(gsdc_profidrive_response_encode(&response, pkw) == GSDC_PKW_OK);
+    words("13ED 0000 0000 1388", expected, GSDC_PKW_BYTES);
+    CHECK(same_bytes(pkw, expected, GSDC_PKW_BYTES));
+    words("23ED 0000 0001 86A0", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_profidrive_response_decode(pkw, &response) == GSDC_PKW_OK);
+    CHECK(response.id == GSDC_PROFIDRIVE_VALUE_DOUBLE_WORD);
+    CHECK(response.value == 100000UL);
+}
+
+/* The subindex is IND's high byte; its low byte and SPM are written 0 and
+ * not read. */
+static void profidrive_the_subindex_is_the_high_byte_of_ind(void)
+{
+    uint8_t pkw[GSDC_PKW_BYTES];
+    uint8_t expected[GSDC_PKW_BYTES];
+    gsdc_profidrive_request_t request;
+    words("7BED 02FF 0000 0007", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_profidrive_request_decode(pkw, &request) == GSDC_PKW_OK);
+    CHECK(request.id == GSDC_PROFIDRIVE_WRITE_ARRAY_WORD);
+    CHECK(request.pnu == 1005U);
+    CHECK(request.subindex == 2U);
+    CHECK(request.value == 7U);
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_OK);
+    words("73ED 0200 0000 0007", expected, GSDC_PKW_BYTES);
+    CHECK(same_bytes(pkw, expected, GSDC_PKW_BYTES));
+}
+
+static void profidrive_ids_beyond_the_profile_are_refused(void)
+{
+    uint8_t pkw[GSDC_PKW_BYTES];
+    gsdc_profidrive_request_t request;
+    gsdc_profidrive_response_t response;
+    unsigned int id;
+    for (id = 10U; id <= 15U; id++) {
+        pkw[0] = (uint8_t)((id << 4U) | 0x03U);
+        pkw[1] = 0xEDU;
+        pkw[2] = 1U;
+        pkw[3] = 0U;
+        CHECK(gsdc_profidrive_request_decode(pkw, &request) == GSDC_PKW_BAD_COMMAND);
+        CHECK(request.id == id);
+        CHECK(request.pnu == 1005U);
+        CHECK(request.subindex == 1U);
+        CHECK(gsdc_profidrive_response_decode(pkw, &response) ==
+              (id <= 12U ? GSDC_PKW_CHANGE_REPORT : GSDC_PKW_BAD_RESPONSE));
+    }
+    pkw[0] = 0x93U;
+    CHECK(gsdc_profidrive_response_decode(pkw, &response) == GSDC_PKW_CHANGE_REPORT);
+    CHECK(response.id == 9U);
+}
+
+/* A PNU beyond 11 bits or a word beyond 16 bits is refused, `pkw` left as
+ * it was. */
+static void profidrive_encoders_refuse_what_the_channel_cannot_carry(void)
+{
+    uint8_t pkw[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    static const uint8_t untouched[GSDC_PKW_BYTES] = {1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U};
+    gsdc_profidrive_request_t request;
+    gsdc_profidrive_response_t response;
+    request.id = GSDC_PROFIDRIVE_READ;
+    request.pnu = GSDC_PROFIDRIVE_PNU_MAX + 1U;
+    request.subindex = 0U;
+    request.value = 0U;
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_BAD_PNU);
+    request.id = GSDC_PROFIDRIVE_WRITE_WORD;
+    request.pnu = GSDC_PROFIDRIVE_PNU_MAX;
+    request.value = 0x10000UL;
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_BAD_VALUE);
+    response.id = GSDC_PROFIDRIVE_CANNOT_EXECUTE;
+    response.pnu = 0U;
+    response.subindex = 0U;
+    response.value = 0x10000UL;
+    CHECK(gsdc_profidrive_response_encode(&response, pkw) == GSDC_PKW_BAD_VALUE);
+    response.id = 9U;
+    response.value = 0U;
+    CHECK(gsdc_profidrive_response_encode(&response, pkw) == GSDC_PKW_BAD_RESPONSE);
+    CHECK(same_bytes(pkw, untouched, GSDC_PKW_BYTES));
+    /* The largest PNU and a double word of 32 bits pass. */
+    request.id = GSDC_PROFIDRIVE_WRITE_DOUBLE_WORD;
+    request.value = 0xFFFFFFFFUL;
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_OK);
+    CHECK(gsdc_u16be_get(&pkw[0]) == 0x37FFU);
+}
+
+static void profidrive_no_request_ignores_what_the_master_left(void)
+{
+    uint8_t pkw[GSDC_PKW_BYTES];
+    gsdc_profidrive_request_t request;
+    words("03ED 0200 1234 5678", pkw, GSDC_PKW_BYTES);
+    CHECK(gsdc_profidrive_request_decode(pkw, &request) == GSDC_PKW_OK);
+    CHECK(request.id == GSDC_PROFIDRIVE_NO_REQUEST);
+    CHECK(request.pnu == 0U);
+    CHECK(request.subindex == 0U);
+    CHECK(request.value == 0U);
+    request.pnu = 1005U;
+    CHECK(gsdc_profidrive_request_encode(&request, pkw) == GSDC_PKW_OK);
+    CHECK(gsdc_u16be_get(&pkw[0]) == 0U);
+    CHECK(gsdc_u16be_get(&pkw[2]) == 0U);
+    CHECK(gsdc_u16be_get(&pkw[6]) == 0U);
 }
 
 /* Station, command, address, value (MV810). */
@@ -584,6 +703,15 @@ static const test_t tests[] = {
      pke_reserved_bits_are_not_read_and_written_0},
     {"pke_codes_the_manual_does_not_define_are_refused",
      pke_codes_the_manual_does_not_define_are_refused},
+    {"profidrive_words_in_pwe2_double_words_across_both",
+     profidrive_words_in_pwe2_double_words_across_both},
+    {"profidrive_the_subindex_is_the_high_byte_of_ind",
+     profidrive_the_subindex_is_the_high_byte_of_ind},
+    {"profidrive_ids_beyond_the_profile_are_refused", profidrive_ids_beyond_the_profile_are_refused},
+    {"profidrive_encoders_refuse_what_the_channel_cannot_carry",
+     profidrive_encoders_refuse_what_the_channel_cannot_carry},
+    {"profidrive_no_request_ignores_what_the_master_left",
+     profidrive_no_request_ignores_what_the_master_left},
     {"station_read_with_the_count_1", station_read_with_the_count_1},
     {"station_commands_the_manual_does_not_list_are_refused",
      station_commands_the_manual_does_not_list_are_refused},

@@ -358,7 +358,7 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             ),
         );
     }
-    if ir.telegram.pkw == PkwKind::PkeIndPwe {
+    if matches!(ir.telegram.pkw, PkwKind::PkeIndPwe | PkwKind::Profidrive) {
         row(
             lang.t("PKW reserved bits", "PKW 保留位"),
             lang.t("gsdc: written 0, not read", "gsdc 约定：写 0，不读取"),

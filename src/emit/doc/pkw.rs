@@ -5,7 +5,9 @@
 use super::page::{code, text, Builder, Cell, Run};
 use super::{bytes, parameter_name, Lang};
 use crate::ir::{Allowed, Ir, PkwKind};
-use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_station_command as station, U16Be};
+use crate::pkw::profidrive::{Meaning, PROFILE_ERRORS, REQUESTS, RESPONSES};
+use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
+use crate::pkw::{pkw_station_command as station, U16Be};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let has_pkw = ir
@@ -32,6 +34,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     match ir.telegram.pkw {
         PkwKind::PkeIndPwe => pke_ind_pwe(doc, ir, lang),
         PkwKind::StationCommandAddressValue => station_command(doc, ir, lang),
+        PkwKind::Profidrive => profidrive_channel(doc, ir, lang),
         PkwKind::None => {}
     }
 }
@@ -67,16 +70,31 @@ fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
     default.or_else(holder)
 }
 
-fn examples_intro(doc: &mut Builder, ir: &Ir, lang: Lang, address: u16, why: &str) {
+/// `number` is how the channel numbers the parameter: `address 0xF000`,
+/// `地址 0xF000`, `PNU 1005`.
+fn examples_intro(doc: &mut Builder, ir: &Ir, lang: Lang, address: u16, number: &str, why: &str) {
     let name = parameter_name(ir, address);
     doc.para(vec![
-        Run::Text(lang.t("The examples read and write ", "以下示例读写 ").into()),
+        Run::Text(
+            lang.t("The examples read and write ", "以下示例读写 ")
+                .into(),
+        ),
         Run::Code(name),
         Run::Text(lang.f(
-            format!(" (address 0x{address:04X}), {why}. The telegrams are encoded by the firmware layout's own code."),
-            format!("（地址 0x{address:04X}，{why}）。报文由固件数据布局的编码代码生成。"),
+            format!(
+                " ({number}), {why}. The telegrams are encoded by the firmware layout's own code."
+            ),
+            format!("（{number}，{why}）。报文由固件数据布局的编码代码生成。"),
         )),
     ]);
+}
+
+/// The `address 0xF000` of the vendor channels' examples.
+fn address_number(lang: Lang, address: u16) -> String {
+    lang.f(
+        format!("address 0x{address:04X}"),
+        format!("地址 0x{address:04X}"),
+    )
 }
 
 /// Words as the manuals print them, `10F0 0800 0000 0000`; a byte that
@@ -251,7 +269,7 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
-    examples_intro(doc, ir, lang, address, &why);
+    examples_intro(doc, ir, lang, address, &address_number(lang, address), &why);
     let name = parameter_name(ir, address);
     let done = |value| pke::PkwResponse::Done { address, value }.encode();
     let read = pke::PkwRequest::Read { address }.encode();
@@ -418,7 +436,7 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
-    examples_intro(doc, ir, lang, address, &why);
+    examples_intro(doc, ir, lang, address, &address_number(lang, address), &why);
     let name = parameter_name(ir, address);
     let request = |access, stations| {
         station::PkwRequest {
@@ -516,6 +534,347 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     doc.para(text(lang.t(
         "tt: the target station of the request, ss: its source station (the reply swaps them); vvvv: the value; xxxx: the drive's error code.",
         "tt：请求的目标站号，ss：请求的源站号（应答中二者互换）；vvvv：参数值；xxxx：变频器的错误码。",
+    )));
+}
+
+// ---------------------------------------------------------------------------
+// PROFIdrive
+
+fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let row = |word: &str, first: u16, request: &str, response: &str| {
+        vec![
+            text(word),
+            text(bytes(lang, first, first + 1)),
+            text(request),
+            text(response),
+        ]
+    };
+    doc.para(text(lang.t(
+        "The channel is the PROFIdrive profile's, as its PPO types carry it: PKE holds the request or response id and the parameter number (PNU), IND the subindex, PWE1 and PWE2 the value.",
+        "参数区为 PROFIdrive 行规的参数通道（PPO 类型）：PKE 含请求或应答标识与参数号（PNU），IND 为子索引，PWE1、PWE2 为参数值。",
+    )));
+    doc.table(
+        lang.t("The PKW words", "PKW 数据格式"),
+        &[
+            lang.t("Word", "字"),
+            lang.t("Bytes", "字节"),
+            lang.t("Request (master → drive)", "主站请求"),
+            lang.t("Response (drive → master)", "变频器应答"),
+        ],
+        vec![
+            row(
+                "PKE",
+                0,
+                lang.t(
+                    "bits 15-12: request id; bit 11: SPM, 0; bits 10-0: PNU",
+                    "位 15-12：请求标识；位 11：SPM，为 0；位 10-0：参数号",
+                ),
+                lang.t(
+                    "bits 15-12: response id; bit 11: SPM, 0; bits 10-0: PNU",
+                    "位 15-12：应答标识；位 11：SPM，为 0；位 10-0：参数号",
+                ),
+            ),
+            row(
+                "IND",
+                2,
+                lang.t(
+                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
+                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
+                ),
+                lang.t(
+                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
+                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
+                ),
+            ),
+            row(
+                "PWE1",
+                4,
+                lang.t(
+                    "a double word's high word; 0 otherwise",
+                    "双字参数值的高 16 位；其余为 0",
+                ),
+                lang.t(
+                    "a double word's high word; 0 otherwise",
+                    "双字参数值的高 16 位；其余为 0",
+                ),
+            ),
+            row(
+                "PWE2",
+                6,
+                lang.t(
+                    "a word, or a double word's low word",
+                    "单字参数值，或双字参数值的低 16 位",
+                ),
+                lang.t(
+                    "a word, or a double word's low word; response 7: the error number",
+                    "单字参数值，或双字参数值的低 16 位；应答 7：错误号",
+                ),
+            ),
+        ],
+    );
+    let id_row = |id: u8, meanings: &[Meaning]| {
+        let (en, zh) = meanings[usize::from(id)];
+        vec![text(id.to_string()), text(lang.t(en, zh))]
+    };
+    doc.table(
+        lang.t(
+            "Request ids (PKE bits 15-12, decimal)",
+            "请求标识（PKE 位 15-12，十进制）",
+        ),
+        &[lang.t("Id", "标识"), lang.t("Meaning", "含义")],
+        sample_requests()
+            .iter()
+            .map(|r| id_row(r.id(), &REQUESTS))
+            .collect(),
+    );
+    doc.table(
+        lang.t(
+            "Response ids (PKE bits 15-12, decimal)",
+            "应答标识（PKE 位 15-12，十进制）",
+        ),
+        &[lang.t("Id", "标识"), lang.t("Meaning", "含义")],
+        sample_responses()
+            .iter()
+            .map(|r| id_row(r.id(), &RESPONSES))
+            .collect(),
+    );
+    doc.para(text(lang.t(
+        "The card refuses request 10 (reserved) and 11 to 15, which are not the profile's (MICROMASTER and MASTERDRIVES store a value in EEPROM with 11 to 14). It sends no parameter change reports (responses 9 to 12): SPM is always 0.",
+        "请求标识 10（保留）及 11 至 15（非行规定义；MICROMASTER 与 MASTERDRIVES 用 11 至 14 将参数值写入 EEPROM）不被接受。本卡不发送参数修改报告（应答 9 至 12）：SPM 恒为 0。",
+    )));
+    doc.table(
+        lang.t(
+            "Error numbers of response 7 (PWE2, decimal)",
+            "应答 7 的错误号（PWE2，十进制）",
+        ),
+        &[lang.t("Number", "错误号"), lang.t("Meaning", "含义")],
+        PROFILE_ERRORS
+            .iter()
+            .map(|(number, (en, zh))| vec![text(number.0.to_string()), text(lang.t(en, zh))])
+            .collect(),
+    );
+    doc.para(text(lang.t(
+        "Other numbers are the drive's own: Siemens manuals give those from 101 on as device-specific.",
+        "其它错误号由变频器自定义：西门子手册中 101 起为设备专用错误号。",
+    )));
+    profidrive_examples(doc, ir, lang);
+}
+
+/// One request of each id, for the table of ids: the codec gives each id.
+fn sample_requests() -> [profidrive::PkwRequest; 10] {
+    use profidrive::PkwRequest as R;
+    let parameter = any_parameter(0);
+    [
+        R::None,
+        R::Read { parameter },
+        R::WriteWord {
+            parameter,
+            value: 0,
+        },
+        R::WriteDoubleWord {
+            parameter,
+            value: 0,
+        },
+        R::ReadDescription { parameter },
+        R::WriteDescription {
+            parameter,
+            value: 0,
+        },
+        R::ReadArray { parameter },
+        R::WriteArrayWord {
+            parameter,
+            value: 0,
+        },
+        R::WriteArrayDoubleWord {
+            parameter,
+            value: 0,
+        },
+        R::ReadArrayLength { parameter },
+    ]
+}
+
+/// One response of each id, for the table of ids.
+fn sample_responses() -> [profidrive::PkwResponse; 9] {
+    use profidrive::PkwResponse as R;
+    let parameter = any_parameter(0);
+    [
+        R::None,
+        R::Word {
+            parameter,
+            value: 0,
+        },
+        R::DoubleWord {
+            parameter,
+            value: 0,
+        },
+        R::Description {
+            parameter,
+            value: 0,
+        },
+        R::ArrayWord {
+            parameter,
+            value: 0,
+        },
+        R::ArrayDoubleWord {
+            parameter,
+            value: 0,
+        },
+        R::ArrayLength {
+            parameter,
+            count: 0,
+        },
+        R::Failed {
+            parameter,
+            error: profidrive::PkwErrorNumber(0),
+        },
+        R::NoAuthority { parameter },
+    ]
+}
+
+fn any_parameter(subindex: u8) -> profidrive::Parameter {
+    profidrive::Parameter {
+        pnu: profidrive::Pnu::new(0).expect("0 is a PNU"),
+        subindex,
+    }
+}
+
+fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    use profidrive::{PkwRequest as Q, PkwResponse as R};
+    let Some((address, why)) = example_parameter(ir, lang) else {
+        return;
+    };
+    // E154 keeps a description's parameters within the PNUs; a setting's
+    // plain value may not be one.
+    let Some(pnu) = profidrive::Pnu::new(address) else {
+        return;
+    };
+    examples_intro(doc, ir, lang, address, &format!("PNU {address}"), &why);
+    let name = parameter_name(ir, address);
+    let at = |subindex| profidrive::Parameter { pnu, subindex };
+    let p = at(0);
+    // A telegram with `v` where the value varies, and `s` where the
+    // subindex does when it is an array's.
+    type Words<'a> = &'a dyn Fn(u32, profidrive::Parameter) -> [U16Be; 4];
+    let shown = |words: Words, array: bool| {
+        let mut variables = vec![('v', words(u32::MAX, p))];
+        if array {
+            variables.push(('s', words(0, at(u8::MAX))));
+        }
+        telegram(words(0, p), &variables)
+    };
+    // A word's value: the low half of what `shown` varies.
+    let word = |value: u32| value as u16;
+    let read = shown(&|_, parameter| Q::Read { parameter }.encode(), false);
+    let write_word = shown(
+        &|v, parameter| {
+            Q::WriteWord {
+                parameter,
+                value: word(v),
+            }
+            .encode()
+        },
+        false,
+    );
+    let word_value = shown(
+        &|v, parameter| {
+            R::Word {
+                parameter,
+                value: word(v),
+            }
+            .encode()
+        },
+        false,
+    );
+    let double_value = shown(
+        &|value, parameter| R::DoubleWord { parameter, value }.encode(),
+        false,
+    );
+    let failed = |error| {
+        R::Failed {
+            parameter: p,
+            error,
+        }
+        .encode()
+    };
+    let change = lang.f(
+        format!("change {name} to vvvv (word)"),
+        format!("将 {name} 改为 vvvv（单字）"),
+    );
+    let rows = vec![
+        example_row(
+            lang.f(format!("read {name}"), format!("读 {name}")),
+            read.clone(),
+            lang.t("a word parameter's value", "单字参数值"),
+            word_value.clone(),
+        ),
+        example_row(
+            lang.f(format!("read {name}"), format!("读 {name}")),
+            read,
+            lang.t("a double word parameter's value", "双字参数值"),
+            double_value.clone(),
+        ),
+        example_row(
+            change.clone(),
+            write_word.clone(),
+            lang.t("done: the value written", "操作正确：返回写入值"),
+            word_value,
+        ),
+        example_row(
+            lang.f(
+                format!("change {name} to vvvvvvvv (double word)"),
+                format!("将 {name} 改为 vvvvvvvv（双字）"),
+            ),
+            shown(
+                &|value, parameter| Q::WriteDoubleWord { parameter, value }.encode(),
+                false,
+            ),
+            lang.t("done: the value written", "操作正确：返回写入值"),
+            double_value,
+        ),
+        example_row(
+            lang.f(
+                format!("read element ss of {name}"),
+                format!("读 {name} 的元素 ss"),
+            ),
+            shown(&|_, parameter| Q::ReadArray { parameter }.encode(), true),
+            lang.t("the element's value (word)", "数组元素值（单字）"),
+            shown(
+                &|v, parameter| {
+                    R::ArrayWord {
+                        parameter,
+                        value: word(v),
+                    }
+                    .encode()
+                },
+                true,
+            ),
+        ),
+        example_row(
+            change.clone(),
+            write_word.clone(),
+            lang.t("cannot execute: error number xxxx", "无法执行：错误号 xxxx"),
+            telegram(
+                failed(profidrive::PkwErrorNumber(0)),
+                &[('x', failed(profidrive::PkwErrorNumber(u16::MAX)))],
+            ),
+        ),
+        example_row(
+            change,
+            write_word,
+            lang.t("no master control", "无主控权"),
+            telegram(R::NoAuthority { parameter: p }.encode(), &[]),
+        ),
+        example_row(
+            lang.t("no request", "无请求").to_string(),
+            telegram(Q::None.encode(), &[]),
+            lang.t("no response", "无应答"),
+            telegram(R::None.encode(), &[]),
+        ),
+    ];
+    examples_table(doc, lang, rows);
+    doc.para(text(lang.t(
+        "vvvv: the value (vvvvvvvv: a double word, high word first); ss: the subindex; xxxx: the error number.",
+        "vvvv：参数值（vvvvvvvv：双字，高 16 位在前）；ss：子索引；xxxx：错误号。",
     )));
 }
 

@@ -135,6 +135,7 @@ const OVERVIEW_WORD: u32 = 46;
 fn pkw_labels(kind: PkwKind) -> [&'static str; 4] {
     match kind {
         PkwKind::StationCommandAddressValue => ["PKW0", "PKW1", "PKW2", "PKW3"],
+        PkwKind::Profidrive => ["PKE", "IND", "PWE1", "PWE2"],
         _ => ["PKE", "IND", "PWE", "PWE"],
     }
 }
@@ -386,6 +387,26 @@ fn pkw_words(kind: PkwKind, lang: Lang, direction: Direction) -> Vec<(&'static s
                     lang.t("value to write", "写入值")
                 } else {
                     lang.t("value or error", "参数值或错误代码")
+                },
+            ),
+        ],
+        PkwKind::Profidrive => vec![
+            (
+                "PKE",
+                if out {
+                    lang.t("request id, PNU", "请求标识、参数号")
+                } else {
+                    lang.t("response id, PNU", "应答标识、参数号")
+                },
+            ),
+            ("IND", lang.t("subindex", "子索引")),
+            ("PWE1", lang.t("value, high word", "参数值高 16 位")),
+            (
+                "PWE2",
+                if out {
+                    lang.t("value, low word", "参数值低 16 位")
+                } else {
+                    lang.t("value or error number", "参数值或错误号")
                 },
             ),
         ],

@@ -2,6 +2,7 @@
 //! from: compiled here as the module tree that `gsdc_support.rs` inlines.
 
 use super::support::pkw_pke_ind_pwe as pke_ind_pwe;
+use super::support::pkw_profidrive as profidrive;
 use super::support::pkw_station_command as station_command;
 use super::support::*;
 
@@ -389,6 +390,262 @@ mod mv810 {
             assert_eq!(PkwCommand::from_code(command.code()), Some(command));
         }
         assert_eq!(PkwAccess::Write { value: 0 }.command(), PkwCommand::Write);
+    }
+}
+
+mod profidrive_channel {
+    use super::pkw;
+    use super::profidrive::*;
+
+    /// P10.05 by a decimal numbering: PNU 1005, 0x3ED.
+    fn p10_05(subindex: u8) -> Parameter {
+        Parameter {
+            pnu: Pnu::new(1005).unwrap(),
+            subindex,
+        }
+    }
+
+    /// PKE = AK << 12 | PNU: request 1 for PNU 1005 is 0x13ED; IND's low
+    /// byte and PWE are 0.
+    #[test]
+    fn read_pnu_1005() {
+        let read = PkwRequest::Read {
+            parameter: p10_05(0),
+        };
+        assert_eq!(read.encode(), pkw("13ED 0000 0000 0000"));
+        assert_eq!(PkwRequest::decode(&pkw("13ED 0000 0000 0000")), Ok(read));
+        let answer = PkwResponse::Word {
+            parameter: p10_05(0),
+            value: 5000,
+        };
+        assert_eq!(answer.encode(), pkw("13ED 0000 0000 1388"));
+        assert_eq!(PkwResponse::decode(&pkw("13ED 0000 0000 1388")), Ok(answer));
+    }
+
+    /// A word goes in PWE2, a double word high word first in PWE1.
+    #[test]
+    fn words_in_pwe2_double_words_across_both() {
+        let word = PkwRequest::WriteWord {
+            parameter: p10_05(0),
+            value: 0x07D0,
+        };
+        assert_eq!(word.encode(), pkw("23ED 0000 0000 07D0"));
+        assert_eq!(PkwRequest::decode(&pkw("23ED 0000 0000 07D0")), Ok(word));
+        let double = PkwRequest::WriteDoubleWord {
+            parameter: p10_05(0),
+            value: 0x0001_86A0,
+        };
+        assert_eq!(double.encode(), pkw("33ED 0000 0001 86A0"));
+        assert_eq!(PkwRequest::decode(&pkw("33ED 0000 0001 86A0")), Ok(double));
+        let answer = PkwResponse::DoubleWord {
+            parameter: p10_05(0),
+            value: 100_000,
+        };
+        assert_eq!(answer.encode(), pkw("23ED 0000 0001 86A0"));
+        assert_eq!(PkwResponse::decode(&pkw("23ED 0000 0001 86A0")), Ok(answer));
+        // PWE1 of a word is not read.
+        assert_eq!(
+            PkwResponse::decode(&pkw("13ED 0000 FFFF 1388")),
+            Ok(PkwResponse::Word {
+                parameter: p10_05(0),
+                value: 5000
+            })
+        );
+    }
+
+    /// The subindex is IND's high byte; its low byte is written 0, not read.
+    #[test]
+    fn the_subindex_is_the_high_byte_of_ind() {
+        let element = PkwRequest::WriteArrayWord {
+            parameter: p10_05(2),
+            value: 7,
+        };
+        assert_eq!(element.encode(), pkw("73ED 0200 0000 0007"));
+        assert_eq!(PkwRequest::decode(&pkw("73ED 02FF 0000 0007")), Ok(element));
+        let answer = PkwResponse::ArrayWord {
+            parameter: p10_05(2),
+            value: 7,
+        };
+        assert_eq!(answer.encode(), pkw("43ED 0200 0000 0007"));
+        let length = PkwResponse::ArrayLength {
+            parameter: p10_05(0),
+            count: 3,
+        };
+        assert_eq!(length.encode(), pkw("63ED 0000 0000 0003"));
+        assert_eq!(PkwResponse::decode(&pkw("63ED 0000 0000 0003")), Ok(length));
+    }
+
+    /// Every request and response id of the profile, both ways.
+    #[test]
+    fn each_profile_id_round_trips() {
+        let p = p10_05(1);
+        let requests = [
+            PkwRequest::None,
+            PkwRequest::Read { parameter: p },
+            PkwRequest::WriteWord {
+                parameter: p,
+                value: 1,
+            },
+            PkwRequest::WriteDoubleWord {
+                parameter: p,
+                value: 0x1_0001,
+            },
+            PkwRequest::ReadDescription { parameter: p },
+            PkwRequest::WriteDescription {
+                parameter: p,
+                value: 2,
+            },
+            PkwRequest::ReadArray { parameter: p },
+            PkwRequest::WriteArrayWord {
+                parameter: p,
+                value: 3,
+            },
+            PkwRequest::WriteArrayDoubleWord {
+                parameter: p,
+                value: 4,
+            },
+            PkwRequest::ReadArrayLength { parameter: p },
+        ];
+        for (request, id) in requests.into_iter().zip(0u16..) {
+            let words = request.encode();
+            assert_eq!(words[0].get() >> 12, id, "{request:?}");
+            assert_eq!(u16::from(request.id()), id);
+            assert_eq!(PkwRequest::decode(&words), Ok(request));
+        }
+        let responses = [
+            PkwResponse::None,
+            PkwResponse::Word {
+                parameter: p,
+                value: 1,
+            },
+            PkwResponse::DoubleWord {
+                parameter: p,
+                value: 0x2_0000,
+            },
+            PkwResponse::Description {
+                parameter: p,
+                value: 3,
+            },
+            PkwResponse::ArrayWord {
+                parameter: p,
+                value: 4,
+            },
+            PkwResponse::ArrayDoubleWord {
+                parameter: p,
+                value: 5,
+            },
+            PkwResponse::ArrayLength {
+                parameter: p,
+                count: 6,
+            },
+            PkwResponse::Failed {
+                parameter: p,
+                error: PkwErrorNumber::OPERATING_STATE,
+            },
+            PkwResponse::NoAuthority { parameter: p },
+        ];
+        for (response, id) in responses.into_iter().zip(0u16..) {
+            let words = response.encode();
+            assert_eq!(words[0].get() >> 12, id, "{response:?}");
+            assert_eq!(u16::from(response.id()), id);
+            assert_eq!(PkwResponse::decode(&words), Ok(response));
+        }
+    }
+
+    /// Response 7 carries the error number in PWE2, any number: a drive's
+    /// own are beyond the profile's.
+    #[test]
+    fn cannot_execute_with_the_error_number_in_pwe2() {
+        let failed = PkwResponse::Failed {
+            parameter: p10_05(0),
+            error: PkwErrorNumber::LIMIT_EXCEEDED,
+        };
+        assert_eq!(failed.encode(), pkw("73ED 0000 0000 0002"));
+        assert_eq!(PkwResponse::decode(&pkw("73ED 0000 0000 0002")), Ok(failed));
+        let own = PkwResponse::decode(&pkw("73ED 0000 0000 00C8"));
+        assert_eq!(
+            own,
+            Ok(PkwResponse::Failed {
+                parameter: p10_05(0),
+                error: PkwErrorNumber(200)
+            })
+        );
+        let numbers = [
+            PkwErrorNumber::ILLEGAL_PNU,
+            PkwErrorNumber::NOT_CHANGEABLE,
+            PkwErrorNumber::LIMIT_EXCEEDED,
+            PkwErrorNumber::BAD_SUBINDEX,
+            PkwErrorNumber::NO_ARRAY,
+            PkwErrorNumber::WRONG_TYPE,
+            PkwErrorNumber::SETTING_NOT_ALLOWED,
+            PkwErrorNumber::DESCRIPTION_NOT_CHANGEABLE,
+            PkwErrorNumber::NO_MASTER_CONTROL,
+            PkwErrorNumber::KEY_WORD_MISSING,
+            PkwErrorNumber::OPERATING_STATE,
+        ];
+        assert_eq!(numbers.map(|n| n.0), [0, 1, 2, 3, 4, 5, 6, 7, 11, 12, 17]);
+    }
+
+    /// Request 10 is reserved, 11 to 15 are Siemens': refused, with the
+    /// parameter the drive answers about.
+    #[test]
+    fn ids_beyond_the_profile_are_refused() {
+        for id in 10..=15u8 {
+            let request = pkw(&format!("{id:X}3ED 0100 0000 0001"));
+            assert_eq!(
+                PkwRequest::decode(&request),
+                Err(PkwDecodeError::IllegalRequest {
+                    id,
+                    parameter: p10_05(1)
+                })
+            );
+        }
+        for id in 9..=12u8 {
+            let report = pkw(&format!("{id:X}3ED 0000 0000 0001"));
+            assert_eq!(
+                PkwResponse::decode(&report),
+                Err(PkwDecodeError::ChangeReport { id })
+            );
+        }
+        for id in 13..=15u8 {
+            let response = pkw(&format!("{id:X}3ED 0000 0000 0001"));
+            assert_eq!(
+                PkwResponse::decode(&response),
+                Err(PkwDecodeError::UnknownResponse { id })
+            );
+        }
+    }
+
+    /// PKE holds 11 bits of PNU; SPM (bit 11) is written 0 and not read.
+    #[test]
+    fn the_pnu_has_11_bits_and_spm_is_not_read() {
+        assert_eq!(Pnu::new(PNU_MAX).map(Pnu::get), Some(2047));
+        assert_eq!(Pnu::new(2048), None);
+        let top = Parameter {
+            pnu: Pnu::new(2047).unwrap(),
+            subindex: 0,
+        };
+        assert_eq!(
+            PkwRequest::Read { parameter: top }.encode(),
+            pkw("17FF 0000 0000 0000")
+        );
+        assert_eq!(
+            PkwRequest::decode(&pkw("1BED 0000 0000 0000")),
+            Ok(PkwRequest::Read {
+                parameter: p10_05(0)
+            })
+        );
+    }
+
+    #[test]
+    fn no_request_ignores_what_the_master_left() {
+        assert_eq!(PkwRequest::None.encode(), pkw("0000 0000 0000 0000"));
+        assert_eq!(
+            PkwRequest::decode(&pkw("03ED 0200 1234 5678")),
+            Ok(PkwRequest::None)
+        );
+        assert_eq!(PkwResponse::None.encode(), pkw("0000 0000 0000 0000"));
+        assert_eq!(PkwRequest::None.parameter(), None);
     }
 }
 

@@ -274,6 +274,14 @@ fn pkw_words(kind: PkwKind) -> &'static [WordName] {
             ("ADDRESS", "Address", "地址"),
             ("VALUE", "Value", "数值"),
         ],
+        // The profile's names (MM440 OI p.157: "Parameter value, high
+        // (PWE1) 3rd word").
+        PkwKind::Profidrive => &[
+            ("PKE", "PKE", "PKE"),
+            ("IND", "IND", "IND"),
+            ("PWE1", "PWE1", "PWE1"),
+            ("PWE2", "PWE2", "PWE2"),
+        ],
     }
 }
 
