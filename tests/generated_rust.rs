@@ -89,7 +89,17 @@ fn md810_gateway_layout_snapshot() {
 fn layouts_are_formatted_as_rustfmt_formats_them() {
     let dir = scratch_dir("rustfmt-check");
     let support = artifact(DESCRIPTIONS[0], "gsdc_support.rs");
-    for (file_name, text) in DESCRIPTIONS.map(layout).into_iter().chain([support]) {
+    // Every shipped description's layout and every valid fixture's (the
+    // PROFIdrive card's among them), and the support module.
+    let layouts = descriptions::all_valid().into_iter().map(|(_, ir)| {
+        let file = gsdc::compile(&ir)
+            .unwrap()
+            .into_iter()
+            .find(|a| a.kind == gsdc::ArtifactKind::RustLayout)
+            .unwrap();
+        (file.file_name, String::from_utf8(file.contents).unwrap())
+    });
+    for (file_name, text) in layouts.chain([support]) {
         let path = dir.join(&file_name);
         std::fs::write(&path, text).unwrap();
         let output = Command::new("rustfmt")
