@@ -25,7 +25,8 @@ enum Bus {
     Profinet,
 }
 
-fn modules(ir: &Ir) -> Vec<Module<'_>> {
+/// The PPO types and PROFINET modules, named in `lang`.
+fn modules(ir: &Ir, lang: Lang) -> Vec<Module<'_>> {
     let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(|m| Module {
         name: m.name.clone(),
         bus: Bus::Profibus,
@@ -35,7 +36,7 @@ fn modules(ir: &Ir) -> Vec<Module<'_>> {
         profinet: None,
     });
     let pn = ir.profinet.iter().flat_map(|p| &p.modules).map(|m| Module {
-        name: m.name.text.en.clone(),
+        name: lang.text(&m.name.text).to_string(),
         bus: Bus::Profinet,
         layout: m.layout,
         config: None,
@@ -53,7 +54,7 @@ fn direction_name(lang: Lang, direction: Direction) -> &'static str {
 }
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let modules = modules(ir);
+    let modules = modules(ir, lang);
     if modules.is_empty() {
         return;
     }
@@ -277,11 +278,8 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
         let first_byte = pkw_bytes + 2 * u16::from(n - 1);
         let label = format!("PZD{n}");
         if let Some(items) = data_items {
-            let role = items[usize::from(m.layout.pkw_words() + n - 1)]
-                .text
-                .text
-                .en
-                .clone();
+            let item = &items[usize::from(m.layout.pkw_words() + n - 1)];
+            let role = lang.text(&item.text.text).to_string();
             return WordView {
                 label,
                 role,
@@ -465,7 +463,7 @@ fn figure_groups<'m, 'a>(
 }
 
 pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let modules = modules(ir);
+    let modules = modules(ir, lang);
     if modules.is_empty() {
         return;
     }
