@@ -267,11 +267,11 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
         .profibus
         .iter()
         .flat_map(|p| p.modules.iter().map(|m| (m.name.clone(), m.layout)))
-        .chain(
-            ir.profinet
+        .chain(ir.profinet.iter().flat_map(|p| {
+            p.modules
                 .iter()
-                .flat_map(|p| p.modules.iter().map(|m| (m.name.text.en.clone(), m.layout))),
-        )
+                .map(|m| (m.name.text.get(lang).to_string(), m.layout))
+        }))
         .collect();
     for figure in of_kind("words") {
         // "Figure 2. PPO5 (its first words ...)", "图 2 PPO5（...）".
