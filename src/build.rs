@@ -341,11 +341,8 @@ impl Compiler {
     pub fn compile(&mut self, path: &Path, name: &str) -> Result<Compiled, BuildError> {
         let Loaded { findings, ir } = load_file(path, name)?;
         let mut description = findings;
-        let files = match ir.map(|ir| crate::compile(&ir)) {
-            Some(Ok(mut files)) => {
-                files.retain(|f| f.kind.language().is_none_or(|l| self.firmware.contains(&l)));
-                Some(files)
-            }
+        let files = match ir.map(|ir| crate::emit::compile_for(&ir, &self.firmware)) {
+            Some(Ok(files)) => Some(files),
             Some(Err(problems)) => {
                 description.diagnostics.extend(problems);
                 None

@@ -17,10 +17,11 @@ pub fn closest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
 /// Levenshtein distance over characters, two rows; `None` as soon as it
 /// must exceed [`MAX_EDITS`].
 fn edit_distance(a: &str, b: &str) -> Option<usize> {
-    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
-    if a.len().abs_diff(b.len()) > MAX_EDITS {
+    // Most candidates differ in length by more than that: no allocation.
+    if a.chars().count().abs_diff(b.chars().count()) > MAX_EDITS {
         return None;
     }
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
     let mut prev: Vec<usize> = (0..=b.len()).collect();
     let mut cur = vec![0; b.len() + 1];
     for (i, &ca) in a.iter().enumerate() {

@@ -123,8 +123,9 @@ fn compile_all(
             }
         };
         for findings in &compiled.findings {
-            for rendered in findings.rendered(MAX_SHOWN) {
-                warn(&rendered);
+            let rendered = findings.rendered(MAX_SHOWN);
+            if !rendered.is_empty() {
+                warn(&rendered.join("\n"));
             }
         }
         match compiled.files {

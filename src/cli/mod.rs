@@ -108,11 +108,11 @@ fn warn(text: &str) {
 /// head`) wanted no more: that is no failure, nor a reason to stop writing
 /// files.
 fn print_to(stream: &mut impl Write, text: &str) {
-    note_failure(
-        stream
-            .write_all(text.as_bytes())
-            .and_then(|()| stream.write_all(b"\n")),
-    );
+    // One write with its line end: stderr is not buffered.
+    let mut line = String::with_capacity(text.len() + 1);
+    line.push_str(text);
+    line.push('\n');
+    note_failure(stream.write_all(line.as_bytes()));
 }
 
 fn note_failure(result: std::io::Result<()>) {

@@ -24,6 +24,7 @@ use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Direction, Ident, Ir, Layout, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;
+use std::fmt::Write as _;
 
 mod gateway;
 
@@ -942,16 +943,14 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 /// a trigraph, and control and bidirectional formatting characters (which
 /// compilers warn about) written as `<U+202E>`.
 fn comment_text(text: &str) -> String {
-    let visible: String = text
-        .chars()
-        .map(|c| {
-            if (c.is_control() && !c.is_whitespace()) || is_bidi_control(c) {
-                format!("<U+{:04X}>", u32::from(c))
-            } else {
-                c.to_string()
-            }
-        })
-        .collect();
+    let mut visible = String::with_capacity(text.len());
+    for c in text.chars() {
+        if (c.is_control() && !c.is_whitespace()) || is_bidi_control(c) {
+            let _ = write!(visible, "<U+{:04X}>", u32::from(c));
+        } else {
+            visible.push(c);
+        }
+    }
     let mut out = visible.split_whitespace().collect::<Vec<_>>().join(" ");
     for (from, to) in [("*/", "* /"), ("/*", "/ *"), ("??", "? ?")] {
         while out.contains(from) {

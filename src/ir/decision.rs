@@ -24,6 +24,9 @@ pub enum DecisionKind {
     Choice,
     /// Chosen by gsdc: the description does not state it.
     Default,
+    /// gsdc's own numbering (ident numbers, subslots): nothing for the
+    /// firmware to match by hand, since its layout carries every number.
+    Convention,
 }
 
 impl Decision {
@@ -33,6 +36,7 @@ impl Decision {
             DecisionKind::Placeholder => "Placeholder",
             DecisionKind::Choice => "Own choice",
             DecisionKind::Default => "gsdc's default",
+            DecisionKind::Convention => "gsdc's numbering",
         };
         format!("{kind}: {} = {} ({})", self.path, self.value, self.reason)
     }

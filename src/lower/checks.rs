@@ -65,6 +65,18 @@ impl Checker {
         });
     }
 
+    /// A number gsdc gives by its own rule where the description has no
+    /// key for it: listed in every header, not warned about (the layouts
+    /// carry it, so the firmware cannot drift from it).
+    pub fn convention(&mut self, path: &str, value: impl ToString, reason: &str) {
+        self.decisions.push(Decision {
+            kind: DecisionKind::Convention,
+            path: path.to_string(),
+            value: value.to_string(),
+            reason: reason.to_string(),
+        });
+    }
+
     /// The placeholders and defaults met, in the order met.
     pub fn take_decisions(&mut self) -> Vec<Decision> {
         std::mem::take(&mut self.decisions)

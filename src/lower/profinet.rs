@@ -64,6 +64,11 @@ pub fn lower(
             io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
+    cx.convention(
+        "profinet ident numbers",
+        "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
+        "the manual gives none; the layouts carry each",
+    );
     let value_items = records::value_items(mappings, &modules);
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {

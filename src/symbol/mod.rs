@@ -204,6 +204,11 @@ fn over_white(rgb: [u8; 3], alpha: u8) -> [u8; 3] {
 
 /// The index of the palette colour nearest to `rgb`; the lowest on a tie.
 fn nearest_palette_index(rgb: [u8; 3]) -> u8 {
+    // A drawing in the palette's own colours (the usual case) needs no
+    // distances.
+    if let Some(exact) = PALETTE.iter().position(|entry| *entry == rgb) {
+        return exact as u8;
+    }
     let distance = |entry: &[u8; 3]| -> u32 {
         entry
             .iter()

@@ -151,16 +151,25 @@ fn unknown(setting: &Setting, suggest: bool) -> Diagnostic {
 /// A schema keyword one or two edits away (`Min_Slave_Interval` for
 /// `Min_Slave_Intervall`), compared in lower case.
 fn closest_keyword(key: &str) -> Option<String> {
-    let names: Vec<(String, &str)> = schema::schema()
-        .keywords()
-        .filter(|k| !k.name.contains('<'))
-        .map(|k| (k.name.to_ascii_lowercase(), k.name.as_str()))
-        .collect();
+    let names = lower_case_keywords();
     let lower = crate::spelling::closest(key, names.iter().map(|(l, _)| l.as_str()))?;
     names
         .iter()
         .find(|(l, _)| l == lower)
         .map(|(_, n)| n.to_string())
+}
+
+/// The schema's plain keywords in lower case, with their own spelling:
+/// made once, for every file checked.
+fn lower_case_keywords() -> &'static [(String, &'static str)] {
+    static NAMES: std::sync::OnceLock<Vec<(String, &'static str)>> = std::sync::OnceLock::new();
+    NAMES.get_or_init(|| {
+        schema::schema()
+            .keywords()
+            .filter(|k| !k.name.contains('<'))
+            .map(|k| (k.name.to_ascii_lowercase(), k.name.as_str()))
+            .collect()
+    })
 }
 
 fn check_value(setting: &Setting, keyword: &Keyword, out: &mut Vec<Diagnostic>) {
