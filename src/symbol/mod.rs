@@ -273,7 +273,7 @@ mod tests {
     use super::*;
 
     // The palette mapping and the file layout are tested through the public
-    // API in tests/symbols.rs; this is the arithmetic a picture cannot show.
+    // API in bmp_tests.rs; this is the arithmetic a picture cannot show.
     #[test]
     fn compositing_over_white_rounds_to_the_nearest_integer() {
         assert_eq!(over_white([0, 0, 0], 0), [255, 255, 255]);
