@@ -655,24 +655,39 @@ fn the_guides_excerpt_is_what_gsdc_writes() {
     assert!(excerpt.lines().count() >= 3);
 }
 
-/// A description in English alone: one `main`, shown, and no switch.
+/// A description in English alone (9KDP1's manual is English): one
+/// `main`, shown, and no switch.
 #[test]
 fn one_language_needs_no_switch() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/9kdp1.toml");
-    let text = std::fs::read_to_string(path).unwrap().replace(
-        "name = { en = \"9KDP1 PROFIBUS-DP card\", zh = \"9KDP1 PROFIBUS-DP 通讯卡\" }",
-        "name = \"9KDP1 PROFIBUS-DP card\"",
-    );
-    assert!(
-        !text.contains("zh ="),
-        "the test removes 9KDP1's only Chinese text"
-    );
-    let ir = descriptions::load_text("9kdp1.toml", &text).0.unwrap();
+    let ir = descriptions::load("9kdp1.toml");
+    assert!(ir.languages.is_empty(), "9KDP1 has English texts only");
     let html = gsdc::document(&ir).remove(0);
     let html = String::from_utf8(html.contents).unwrap();
     assert_eq!(html.matches("<main").count(), 1);
     assert!(html.contains("<main lang=\"en\">"));
     assert!(!html.contains("<input") && !html.contains("main.lang"));
+}
+
+/// Every language of the description has its page: a German text on a
+/// page of its own, under gsdc's English words (gsdc has its own words in
+/// English and Chinese only), on the switch by its code.
+#[test]
+fn every_language_of_the_description_has_its_page() {
+    let ir = descriptions::load_from("tests/fixtures/valid", "no_warnings.toml");
+    assert_eq!(ir.languages, ["de"]);
+    let html = gsdc::document(&ir).remove(0);
+    let html = String::from_utf8(html.contents).unwrap();
+    assert_eq!(html.matches("<main").count(), 2);
+    let german = &html[html.find("<main lang=\"de\"").expect("a German page")..];
+    assert!(german.contains("X1 Feldbuskarte"), "the German name");
+    assert!(
+        german.contains("The files gsdc generates"),
+        "gsdc's English words"
+    );
+    assert!(
+        html.contains("<label for=\"lang-de\" lang=\"de\">de</label>"),
+        "{html}"
+    );
 }
 
 #[test]

@@ -23,42 +23,58 @@ use crate::ir::{Allowed, DecisionKind, Ir, MappingEntry, MappingSet, Text};
 use page::{Builder, Cell, Run};
 
 /// A language of the datasheet: the description's texts in it, and gsdc's
-/// own words.
+/// own words, which exist in English and Chinese (in English on the page of
+/// any other language).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Lang {
     En,
     Zh,
+    /// Another ISO 639-1 code of the description, two ASCII letters.
+    Other([u8; 2]),
 }
 
 impl Lang {
-    fn code(self) -> &'static str {
-        match self {
-            Lang::En => "en",
-            Lang::Zh => "zh",
+    /// The language of ISO 639-1 `code`.
+    fn of(code: &str) -> Lang {
+        match code.as_bytes() {
+            b"en" => Lang::En,
+            b"zh" => Lang::Zh,
+            &[a, b] => Lang::Other([a, b]),
+            _ => unreachable!("descriptions accept ISO 639-1 codes only"),
         }
     }
 
-    /// The language's own name, on its switch.
-    fn name(self) -> &'static str {
+    fn code(&self) -> &str {
+        match self {
+            Lang::En => "en",
+            Lang::Zh => "zh",
+            Lang::Other(code) => std::str::from_utf8(code).expect("ASCII letters"),
+        }
+    }
+
+    /// The language's own name on its switch; gsdc knows two of them, and
+    /// names the others by their code.
+    fn name(&self) -> &str {
         match self {
             Lang::En => "English",
             Lang::Zh => "中文",
+            Lang::Other(_) => self.code(),
         }
     }
 
     /// gsdc's words in this language.
     fn t<'a>(self, en: &'a str, zh: &'a str) -> &'a str {
         match self {
-            Lang::En => en,
             Lang::Zh => zh,
+            _ => en,
         }
     }
 
     /// A sentence made in this language: both are built, one is kept.
     fn f(self, en: String, zh: String) -> String {
         match self {
-            Lang::En => en,
             Lang::Zh => zh,
+            _ => en,
         }
     }
 
@@ -66,7 +82,7 @@ impl Lang {
     fn text(self, text: &Text) -> &str {
         match self {
             Lang::En => &text.en,
-            Lang::Zh => text.get("zh"),
+            _ => text.get(self.code()),
         }
     }
 
@@ -107,15 +123,12 @@ pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
     ]
 }
 
-/// English always; Chinese when the description has it. gsdc's own words
-/// exist in these two; a description's other languages stay in its device
-/// files.
+/// English first, then every other language of the description in the
+/// order of its codes.
 fn languages(ir: &Ir) -> Vec<Lang> {
-    let mut langs = vec![Lang::En];
-    if ir.languages.iter().any(|code| code == "zh") {
-        langs.push(Lang::Zh);
-    }
-    langs
+    std::iter::once(Lang::En)
+        .chain(ir.languages.iter().map(|code| Lang::of(code)))
+        .collect()
 }
 
 fn document(ir: &Ir, lang: Lang) -> page::Doc {
@@ -271,20 +284,20 @@ fn decision_mark(ir: &Ir, lang: Lang, path: &str) -> Option<Run> {
 /// `bit 3`, `bits 9-10`.
 fn bits(lang: Lang, first: u16, last: u16) -> String {
     match (first == last, lang) {
-        (true, Lang::En) => format!("bit {first}"),
         (true, Lang::Zh) => format!("Bit{first}"),
-        (false, Lang::En) => format!("bits {first}-{last}"),
         (false, Lang::Zh) => format!("Bit{first}-Bit{last}"),
+        (true, _) => format!("bit {first}"),
+        (false, _) => format!("bits {first}-{last}"),
     }
 }
 
 /// `bytes 8-9`, `byte 6`.
 fn bytes(lang: Lang, first: u16, last: u16) -> String {
     match (first == last, lang) {
-        (true, Lang::En) => format!("byte {first}"),
         (true, Lang::Zh) => format!("字节 {first}"),
-        (false, Lang::En) => format!("bytes {first}-{last}"),
         (false, Lang::Zh) => format!("字节 {first}-{last}"),
+        (true, _) => format!("byte {first}"),
+        (false, _) => format!("bytes {first}-{last}"),
     }
 }
 

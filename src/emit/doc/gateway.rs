@@ -577,10 +577,10 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
 fn types_named(lang: Lang, values: &[u8]) -> String {
     let list: Vec<String> = values.iter().map(u8::to_string).collect();
     match (list.split_last(), lang) {
-        (Some((last, [])), Lang::En) => format!("type {last}"),
-        (Some((last, rest)), Lang::En) => format!("types {} and {last}", rest.join(", ")),
         (_, Lang::Zh) => format!("类型 {}", list.join("、")),
-        (None, Lang::En) => String::new(),
+        (Some((last, [])), _) => format!("type {last}"),
+        (Some((last, rest)), _) => format!("types {} and {last}", rest.join(", ")),
+        (None, _) => String::new(),
     }
 }
 
