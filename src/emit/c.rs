@@ -231,14 +231,8 @@ pub fn emit(ir: &Ir) -> String {
     render(TEMPLATE, ir).expect("the C layout template renders every IR (tested)")
 }
 
-/// Strict undefined: a name the context lacks is an error, so a misspelt
-/// field cannot render as nothing.
 fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
-    let mut env = minijinja::Environment::new();
-    env.set_trim_blocks(true);
-    env.set_lstrip_blocks(true);
-    env.set_keep_trailing_newline(true);
-    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    let mut env = super::code_templates();
     env.add_filter("comment", |text: String, indent: Option<usize>| {
         indented_comment(&text, indent.unwrap_or(0))
     });

@@ -122,11 +122,8 @@ pub fn emit(ir: &Ir, profibus: &Profibus) -> String {
     finish(&rendered)
 }
 
-/// Strict undefined: a name the context lacks is an error, so a misspelt
-/// keyword value cannot render as nothing.
 fn render(template: &str, ir: &Ir, profibus: &Profibus) -> Result<String, minijinja::Error> {
-    let mut env = minijinja::Environment::new();
-    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    let mut env = super::strict_templates();
     env.add_filter("key", |key: String| format!("{key:<KEY_WIDTH$}"));
     env.template_from_str(template)?
         .render(context(ir, profibus))

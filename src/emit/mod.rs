@@ -205,6 +205,24 @@ pub(crate) fn wrap_words(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// A template environment where a name the context lacks is an error, so a
+/// misspelt field cannot render as nothing.
+fn strict_templates() -> minijinja::Environment<'static> {
+    let mut env = minijinja::Environment::new();
+    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
+    env
+}
+
+/// The strict environment of the code templates (Rust and C), whose block
+/// tags stand on lines of their own and leave no blank lines behind.
+fn code_templates() -> minijinja::Environment<'static> {
+    let mut env = strict_templates();
+    env.set_trim_blocks(true);
+    env.set_lstrip_blocks(true);
+    env.set_keep_trailing_newline(true);
+    env
+}
+
 /// Every file the description gives, each read back and checked by the same
 /// rules `gsdc check` applies to third-party files. A file that breaks one is
 /// not returned: the diagnostics say which rule, and that gsdc is at fault.

@@ -223,15 +223,9 @@ pub fn emit(ir: &Ir) -> String {
     render(TEMPLATE, ir).expect("the layout template renders every IR (tested)")
 }
 
-/// Strict undefined: a name the context lacks is an error, so a misspelt
-/// field cannot render as nothing.
 fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
-    let mut env = minijinja::Environment::new();
-    env.set_trim_blocks(true);
-    env.set_lstrip_blocks(true);
-    env.set_keep_trailing_newline(true);
-    env.set_undefined_behavior(minijinja::UndefinedBehavior::Strict);
-    env.template_from_str(template)?.render(context(ir))
+    super::code_templates()
+        .template_from_str(template)?.render(context(ir))
 }
 
 /// `gsdc_support.rs`: the support code as one module, `gsdc_support`, with

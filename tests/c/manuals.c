@@ -14,8 +14,7 @@
 #include "md810_gateway_layout.h"
 #include "profidrive_layout.h"
 
-#include <stdio.h>
-#include <stdlib.h>
+#include "harness.h"
 
 #ifndef GSD_MAX_USER_PRM_DATA_LEN
 #error "the test defines GSD_MAX_USER_PRM_DATA_LEN from MD810DP.GSD"
@@ -28,52 +27,6 @@
     !defined(GSD_GW_MAX_MODULE) || !defined(GSD_GW_MODULE_CONFIGS)
 #error "the test defines GSD_GW_* from MD810GW.GSD"
 #endif
-
-static int failures = 0;
-
-/* Counts a failed check, naming it and its line. */
-static void check(bool ok, const char *what, int line)
-{
-    if (!ok) {
-        failures++;
-        printf("manuals.c:%d: failed: %s\n", line, what);
-    }
-}
-
-#define CHECK(condition) check((condition), #condition, __LINE__)
-
-/* "10F0 0800 0000 1388", as the manuals print telegrams: hex words, into
- * `out`, which must be exactly as long. */
-static void words(const char *hex, uint8_t *out, size_t len)
-{
-    size_t at = 0U;
-    const char *p = hex;
-    for (;;) {
-        char *end = NULL;
-        unsigned long word = strtoul(p, &end, 16);
-        if (end == p) {
-            break;
-        }
-        if (at + 2U <= len) {
-            out[at] = (uint8_t)(word >> 8U);
-            out[at + 1U] = (uint8_t)(word & 0xFFU);
-        }
-        at += 2U;
-        p = end;
-    }
-    CHECK(at == len);
-}
-
-static bool same_bytes(const uint8_t *a, const uint8_t *b, size_t len)
-{
-    size_t i;
-    for (i = 0U; i < len; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
 
 static bool same_values(const uint16_t *a, const uint16_t *b, size_t count)
 {
@@ -1087,11 +1040,6 @@ static void profidrive_an_illegal_id_is_refused(void)
 
 /* ------------------------------------------------------------------------ */
 
-typedef struct {
-    const char *name;
-    void (*run)(void);
-} test_t;
-
 static const test_t tests[] = {
     {"md810_read_f0_08", md810_read_f0_08},
     {"md810_answer_50_hz", md810_answer_50_hz},
@@ -1139,20 +1087,5 @@ static const test_t tests[] = {
 
 int main(void)
 {
-    size_t i;
-    int passed = 0;
-    int failed = 0;
-    for (i = 0U; i < sizeof tests / sizeof tests[0]; i++) {
-        int before = failures;
-        tests[i].run();
-        if (failures == before) {
-            passed++;
-            printf("ok %s\n", tests[i].name);
-        } else {
-            failed++;
-            printf("FAILED %s\n", tests[i].name);
-        }
-    }
-    printf("%d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return run_tests(tests, sizeof tests / sizeof tests[0]);
 }

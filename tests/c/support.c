@@ -6,52 +6,7 @@
  * runs it. */
 #include "gsdc_support.h"
 
-#include <stdio.h>
-#include <stdlib.h>
-
-static int failures = 0;
-
-static void check(bool ok, const char *what, int line)
-{
-    if (!ok) {
-        failures++;
-        printf("support.c:%d: failed: %s\n", line, what);
-    }
-}
-
-#define CHECK(condition) check((condition), #condition, __LINE__)
-
-/* "10F0 0800": hex words into `out`, exactly `len` bytes. */
-static void words(const char *hex, uint8_t *out, size_t len)
-{
-    size_t at = 0U;
-    const char *p = hex;
-    for (;;) {
-        char *end = NULL;
-        unsigned long word = strtoul(p, &end, 16);
-        if (end == p) {
-            break;
-        }
-        if (at + 2U <= len) {
-            out[at] = (uint8_t)(word >> 8U);
-            out[at + 1U] = (uint8_t)(word & 0xFFU);
-        }
-        at += 2U;
-        p = end;
-    }
-    CHECK(at == len);
-}
-
-static bool same_bytes(const uint8_t *a, const uint8_t *b, size_t len)
-{
-    size_t i;
-    for (i = 0U; i < len; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
+#include "harness.h"
 
 static void words_are_big_endian(void)
 {
@@ -688,11 +643,6 @@ static void an_encoded_block_is_0_where_it_holds_nothing(void)
     CHECK(len == 5U && same_bytes(block, expected, 5U) && block[5] == 0xEEU);
 }
 
-typedef struct {
-    const char *name;
-    void (*run)(void);
-} test_t;
-
 static const test_t tests[] = {
     {"words_are_big_endian", words_are_big_endian},
     {"bit_fields_read_and_write_their_bits_only", bit_fields_read_and_write_their_bits_only},
@@ -740,20 +690,5 @@ static const test_t tests[] = {
 
 int main(void)
 {
-    size_t i;
-    int passed = 0;
-    int failed = 0;
-    for (i = 0U; i < sizeof tests / sizeof tests[0]; i++) {
-        int before = failures;
-        tests[i].run();
-        if (failures == before) {
-            passed++;
-            printf("ok %s\n", tests[i].name);
-        } else {
-            failed++;
-            printf("FAILED %s\n", tests[i].name);
-        }
-    }
-    printf("%d passed, %d failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return run_tests(tests, sizeof tests / sizeof tests[0]);
 }
