@@ -119,13 +119,11 @@ fn dpv1_indexes_up_to_255_and_256() {
     assert_eq!(code(outcome(&with(256))), "E003");
 }
 
-/// On PROFIBUS the same 256 indexes are 512 bytes of User_Prm_Data: E116,
-/// not a wrapped length.
-#[test]
-fn user_prm_data_237_and_239_bytes() {
-    let gsd = |entries: u32| {
-        format!(
-            r#"[device]
+/// A PROFIBUS card with two PZD words and the extra TOML `more` (tables
+/// after [profibus.baud_rates]).
+fn profibus_card(more: &str) -> String {
+    format!(
+        r#"[device]
 vendor = "Acme"
 family = "X1"
 model = "X1"
@@ -138,12 +136,6 @@ name = "Card"
 pkw = "none"
 pzd_words = 2
 
-[mappings.dpv1_index]
-name = "Index{{n}}"
-first = 0
-last = {last}
-default = 0
-
 [profibus]
 file_name = "X1.GSD"
 ident_number = {{ value = 0x1234 }}
@@ -153,13 +145,29 @@ slave_family = "1"
 
 [profibus.baud_rates]
 "12M" = 800
+{more}"#
+    )
+}
 
+/// On PROFIBUS the same 256 indexes are 512 bytes of User_Prm_Data: E116,
+/// not a wrapped length.
+#[test]
+fn user_prm_data_237_and_239_bytes() {
+    let gsd = |entries: u32| {
+        profibus_card(&format!(
+            r#"
 [profibus.dpv1]
 c1_read_write = true
 status_bytes = [0, 0, 0]
+
+[mappings.dpv1_index]
+name = "Index{{n}}"
+first = 0
+last = {last}
+default = 0
 "#,
             last = entries - 1
-        )
+        ))
     };
     // 3 DPV1 status bytes and 117 Unsigned16 entries: 237 bytes.
     assert_eq!(outcome(&gsd(117)), Ok(()));
@@ -171,30 +179,8 @@ status_bytes = [0, 0, 0]
 #[test]
 fn a_diagnosis_block_of_63_and_64_bytes() {
     let gsd = |length: u32| {
-        format!(
-            r#"[device]
-vendor = "Acme"
-family = "X1"
-model = "X1"
-revision = "V1"
-hardware_release = "V1"
-software_release = "V1"
-name = "Card"
-
-[telegram]
-pkw = "none"
-pzd_words = 2
-
-[profibus]
-file_name = "X1.GSD"
-ident_number = {{ value = 0x1234 }}
-ppo_types = ["PPO3"]
-min_slave_interval = 1
-slave_family = "1"
-
-[profibus.baud_rates]
-"12M" = 800
-
+        profibus_card(&format!(
+            r#"
 [profibus.diagnosis]
 length = {length}
 
@@ -202,7 +188,7 @@ length = {length}
 bit = [0, 7]
 values = [{{ value = 1, text = "One" }}]
 "#
-        )
+        ))
     };
     assert_eq!(outcome(&gsd(63)), Ok(()));
     assert_eq!(outcome(&gsd(64)), Err(("E101", "64".to_string())));

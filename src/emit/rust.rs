@@ -225,7 +225,8 @@ pub fn emit(ir: &Ir) -> String {
 
 fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
     super::code_templates()
-        .template_from_str(template)?.render(context(ir))
+        .template_from_str(template)?
+        .render(context(ir))
 }
 
 /// `gsdc_support.rs`: the support code as one module, `gsdc_support`, with
