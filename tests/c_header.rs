@@ -18,12 +18,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-const DESCRIPTIONS: [&str; 4] = [
-    "md810dp.toml",
-    "mv810-pnet02.toml",
-    "9kdp1.toml",
-    "md810-gateway.toml",
-];
+use descriptions::SHIPPED as DESCRIPTIONS;
 
 /// Every warning a firmware team is likely to turn on, each an error.
 const WARNINGS: [&str; 9] = [

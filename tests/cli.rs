@@ -620,12 +620,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
 /// gsdc's files by, where they look for it.
 #[test]
 fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
-    for name in [
-        "md810dp.toml",
-        "9kdp1.toml",
-        "mv810-pnet02.toml",
-        "md810-gateway.toml",
-    ] {
+    for name in descriptions::SHIPPED {
         let ir = descriptions::load(name);
         // A bitmap has no room for text: --check and --prune cannot tell
         // gsdc's device symbols from a user's (see the README).

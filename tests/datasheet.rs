@@ -8,12 +8,7 @@ mod descriptions;
 use gsdc::{Artifact, ArtifactKind};
 use std::process::Command;
 
-const DESCRIPTIONS: [&str; 4] = [
-    "md810dp.toml",
-    "mv810-pnet02.toml",
-    "9kdp1.toml",
-    "md810-gateway.toml",
-];
+use descriptions::SHIPPED as DESCRIPTIONS;
 
 fn datasheet(name: &str, kind: ArtifactKind) -> String {
     let artifact: Artifact = gsdc::document(&descriptions::load(name))

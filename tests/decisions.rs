@@ -7,12 +7,7 @@ mod descriptions;
 
 use gsdc::ir::DecisionKind;
 
-const DESCRIPTIONS: [&str; 4] = [
-    "md810dp.toml",
-    "mv810-pnet02.toml",
-    "9kdp1.toml",
-    "md810-gateway.toml",
-];
+use descriptions::SHIPPED as DESCRIPTIONS;
 
 /// The comment lines at the top of a generated file, as text.
 fn head(text: &str) -> String {

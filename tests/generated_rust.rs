@@ -9,12 +9,7 @@ use descriptions::load;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const DESCRIPTIONS: [&str; 4] = [
-    "md810dp.toml",
-    "mv810-pnet02.toml",
-    "9kdp1.toml",
-    "md810-gateway.toml",
-];
+use descriptions::SHIPPED as DESCRIPTIONS;
 
 /// The artifact of a shipped description whose name ends in `suffix`: its
 /// file name and text.

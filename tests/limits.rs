@@ -5,11 +5,8 @@
 
 use std::fmt::Write as _;
 
-/// A PROFIBUS and PROFINET card with `pzd_words` PZD words, `ports` ports,
-/// `settings` settings and the extra TOML `more` (tables after [profinet]).
-fn description(pzd_words: u32, ports: u32, settings: usize, more: &str) -> String {
-    let mut text = format!(
-        r#"[device]
+/// The device and the telegram without its PZD words.
+const CARD: &str = r#"[device]
 vendor = "Acme"
 family = "X1"
 model = "X1"
@@ -20,9 +17,12 @@ name = "Card"
 
 [telegram]
 pkw = "none"
-pzd_words = {pzd_words}
-"#
-    );
+"#;
+
+/// A PROFIBUS and PROFINET card with `pzd_words` PZD words, `ports` ports,
+/// `settings` settings and the extra TOML `more` (tables after [profinet]).
+fn description(pzd_words: u32, ports: u32, settings: usize, more: &str) -> String {
+    let mut text = format!("{CARD}pzd_words = {pzd_words}\n");
     for n in 0..settings {
         let _ = write!(
             text,
@@ -123,18 +123,7 @@ fn dpv1_indexes_up_to_255_and_256() {
 /// after [profibus.baud_rates]).
 fn profibus_card(more: &str) -> String {
     format!(
-        r#"[device]
-vendor = "Acme"
-family = "X1"
-model = "X1"
-revision = "V1"
-hardware_release = "V1"
-software_release = "V1"
-name = "Card"
-
-[telegram]
-pkw = "none"
-pzd_words = 2
+        r#"{CARD}pzd_words = 2
 
 [profibus]
 file_name = "X1.GSD"

@@ -6,6 +6,14 @@
 
 use std::path::Path;
 
+/// The shipped descriptions, by file name.
+pub const SHIPPED: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
+];
+
 /// The IR of `descriptions/<name>`, which must load without an error; read
 /// as the build reads it, so that the files it names (its symbol) are found.
 pub fn load(name: &str) -> gsdc::Ir {
