@@ -133,32 +133,55 @@ fn code_of(words: [U16Be; 4]) -> u16 {
     words[0].get() >> 12
 }
 
+/// The four PKW words, in bytes 0-7: each one's bytes and what it holds in
+/// a request and in a response, under `directions`, the manual's names of
+/// the two.
+fn words_table(
+    doc: &mut Builder,
+    lang: Lang,
+    directions: [&str; 2],
+    words: [(&str, &str, &str); 4],
+) {
+    let rows = words
+        .iter()
+        .zip((0u16..).step_by(2))
+        .map(|(&(word, request, response), first)| {
+            vec![
+                text(word),
+                text(bytes(lang, first, first + 1)),
+                text(request),
+                text(response),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t("The PKW words", "PKW 数据格式"),
+        &[
+            lang.t("Word", "字"),
+            lang.t("Bytes", "字节"),
+            directions[0],
+            directions[1],
+        ],
+        rows,
+    );
+}
+
 fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     // MD810 manual 1.4.2: a write left in the telegram wears out the EEPROM.
     doc.para(text(lang.t(
         "A request is executed again every cycle while it stays in the telegram: a write left there writes the EEPROM again and again. Send command 0 when done.",
         "PKW 数据以循环执行的方式与变频器交互：写命令留在报文中会持续写 EEPROM。操作完成后请发送命令 0。",
     )));
-    let row = |word: &str, first: u16, request: &str, response: &str| {
-        vec![
-            text(word),
-            text(bytes(lang, first, first + 1)),
-            text(request),
-            text(response),
-        ]
-    };
-    doc.table(
-        lang.t("The PKW words", "PKW 数据格式"),
-        &[
-            lang.t("Word", "字"),
-            lang.t("Bytes", "字节"),
+    words_table(
+        doc,
+        lang,
+        [
             lang.t("Request (master → drive)", "主站发送数据"),
             lang.t("Response (drive → master)", "变频器响应数据"),
         ],
-        vec![
-            row(
+        [
+            (
                 "PKE",
-                0,
                 lang.t(
                     "bits 15-12: command; bits 11-8: reserved; bits 7-0: address, high byte",
                     "高 4 位：命令代码；低 4 位（位 11-8）：保留；低 8 位：功能码参数地址高位",
@@ -168,9 +191,8 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     "高 4 位：响应代码；低 8 位：功能码参数地址高位",
                 ),
             ),
-            row(
+            (
                 "IND",
-                2,
                 lang.t(
                     "bits 15-8: address, low byte; bits 7-0: reserved",
                     "高 8 位：功能码参数地址低位；低 8 位：保留",
@@ -180,15 +202,13 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     "高 8 位：功能码参数地址低位；低 8 位：保留",
                 ),
             ),
-            row(
+            (
                 "PWE",
-                4,
                 lang.t("high word: reserved", "高 16 位：保留"),
                 lang.t("high word: reserved", "高 16 位：保留"),
             ),
-            row(
+            (
                 "PWE",
-                6,
                 lang.t(
                     "low word: the value to write; unused when reading",
                     "低 16 位：写请求时为参数值；读请求时无使用",
@@ -361,22 +381,15 @@ fn examples_table(doc: &mut Builder, lang: Lang, rows: Vec<Vec<Cell>>) {
 // Station, command, address, value (MV810)
 
 fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let row = |word: &str, first: u16, request: &str, reply: &str| {
-        vec![
-            text(word),
-            text(bytes(lang, first, first + 1)),
-            text(request),
-            text(reply),
-        ]
-    };
-    doc.table(
-        lang.t("The PKW words", "PKW 数据格式"),
-        &[lang.t("Word", "字"), lang.t("Bytes", "字节"), lang.t("Request (controller → drive)", "控制器请求"), lang.t("Reply (drive → controller)", "从站应答")],
-        vec![
-            row("PKW0", 0, lang.t("high byte: target station (the RS-485 slave); low byte: source station (this drive's own)", "Byte0：目标站号（485 从站）；Byte1：源站号（本机站号）"), lang.t("high byte: target station (the RS-485 master); low byte: source station (the answering drive)", "Byte0：目标站号（485 主站）；Byte1：源站号（本机站号）")),
-            row("PKW1", 2, lang.t("the command", "读写功能码命令"), lang.t("the command; 0x80 + the command on error", "应答命令；错误应答为 0x80+命令码")),
-            row("PKW2", 4, lang.t("the parameter's address", "需要读写的功能码地址"), lang.t("the same address", "功能码地址")),
-            row("PKW3", 6, lang.t("write: the value; read: the count, always 1", "写操作：写的具体值；读操作：读的个数（固定值 1）"), lang.t("read: the value; write: 0; error: the error code", "读操作应答：功能码值；写操作应答：0；错误应答：错误码")),
+    words_table(
+        doc,
+        lang,
+        [lang.t("Request (controller → drive)", "控制器请求"), lang.t("Reply (drive → controller)", "从站应答")],
+        [
+            ("PKW0", lang.t("high byte: target station (the RS-485 slave); low byte: source station (this drive's own)", "Byte0：目标站号（485 从站）；Byte1：源站号（本机站号）"), lang.t("high byte: target station (the RS-485 master); low byte: source station (the answering drive)", "Byte0：目标站号（485 主站）；Byte1：源站号（本机站号）")),
+            ("PKW1", lang.t("the command", "读写功能码命令"), lang.t("the command; 0x80 + the command on error", "应答命令；错误应答为 0x80+命令码")),
+            ("PKW2", lang.t("the parameter's address", "需要读写的功能码地址"), lang.t("the same address", "功能码地址")),
+            ("PKW3", lang.t("write: the value; read: the count, always 1", "写操作：写的具体值；读操作：读的个数（固定值 1）"), lang.t("read: the value; write: 0; error: the error code", "读操作应答：功能码值；写操作应答：0；错误应答：错误码")),
         ],
     );
     let commands = [
@@ -541,30 +554,20 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
 // PROFIdrive
 
 fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let row = |word: &str, first: u16, request: &str, response: &str| {
-        vec![
-            text(word),
-            text(bytes(lang, first, first + 1)),
-            text(request),
-            text(response),
-        ]
-    };
     doc.para(text(lang.t(
         "The channel is the PROFIdrive profile's, as its PPO types carry it: PKE holds the request or response id and the parameter number (PNU), IND the subindex, PWE1 and PWE2 the value.",
         "参数区为 PROFIdrive 行规的参数通道（PPO 类型）：PKE 含请求或应答标识与参数号（PNU），IND 为子索引，PWE1、PWE2 为参数值。",
     )));
-    doc.table(
-        lang.t("The PKW words", "PKW 数据格式"),
-        &[
-            lang.t("Word", "字"),
-            lang.t("Bytes", "字节"),
+    words_table(
+        doc,
+        lang,
+        [
             lang.t("Request (master → drive)", "主站请求"),
             lang.t("Response (drive → master)", "变频器应答"),
         ],
-        vec![
-            row(
+        [
+            (
                 "PKE",
-                0,
                 lang.t(
                     "bits 15-12: request id; bit 11: SPM, 0; bits 10-0: PNU",
                     "位 15-12：请求标识；位 11：SPM，为 0；位 10-0：参数号",
@@ -574,9 +577,8 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     "位 15-12：应答标识；位 11：SPM，为 0；位 10-0：参数号",
                 ),
             ),
-            row(
+            (
                 "IND",
-                2,
                 lang.t(
                     "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
                     "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
@@ -586,9 +588,8 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
                 ),
             ),
-            row(
+            (
                 "PWE1",
-                4,
                 lang.t(
                     "a double word's high word; 0 otherwise",
                     "双字参数值的高 16 位；其余为 0",
@@ -598,9 +599,8 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
                     "双字参数值的高 16 位；其余为 0",
                 ),
             ),
-            row(
+            (
                 "PWE2",
-                6,
                 lang.t(
                     "a word, or a double word's low word",
                     "单字参数值，或双字参数值的低 16 位",
