@@ -22,6 +22,22 @@ pub struct Checker {
     decisions: Vec<Decision>,
 }
 
+/// Where the defaults of several items come from: `default` for all of
+/// them, or `defaults`, one each in order.
+pub enum Defaults<'a, T> {
+    Same(&'a Spanned<T>),
+    Each(&'a Spanned<Vec<Spanned<T>>>),
+}
+
+/// What the defaults' diagnostics call the table that gives them (`noun`)
+/// and its items, and the order `defaults` lists them in.
+pub struct DefaultsOf {
+    pub noun: &'static str,
+    pub item: &'static str,
+    pub items: &'static str,
+    pub order: &'static str,
+}
+
 impl Checker {
     pub fn new(for_gsd: bool) -> Self {
         Checker {
@@ -227,6 +243,56 @@ impl Checker {
             others,
             gsd: text.gsd.as_ref().map(|g| g.get_ref().clone()),
         }
+    }
+
+    /// Where the defaults of `count` items come from: exactly one of
+    /// `default` and `defaults`, and as many of the latter as items (E122,
+    /// E123; `table` is the span of the table's name).
+    pub fn defaults<'a, T>(
+        &mut self,
+        default: &'a Option<Spanned<T>>,
+        defaults: &'a Option<Spanned<Vec<Spanned<T>>>>,
+        count: usize,
+        of: &DefaultsOf,
+        table: Range<usize>,
+    ) -> Option<Defaults<'a, T>> {
+        let DefaultsOf {
+            noun,
+            item,
+            items,
+            order,
+        } = of;
+        let error = match (default, defaults) {
+            (Some(default), None) => return Some(Defaults::Same(default)),
+            (None, Some(list)) if list.get_ref().len() == count => {
+                return Some(Defaults::Each(list))
+            }
+            (None, Some(list)) => Diagnostic::error(
+                "E122",
+                format!("{} defaults for {count} {items}", list.get_ref().len()),
+            )
+            .at(list.span())
+            .label(format!("expected {count} values"))
+            .help(format!("give one default per {item}, {order}")),
+            (Some(default), Some(_)) => Diagnostic::error(
+                "E123",
+                format!("a {noun} has both `default` and `defaults`"),
+            )
+            .at(default.span())
+            .label("remove this or `defaults`")
+            .help(format!("`default` sets every {item}, `defaults` each one")),
+            (None, None) => Diagnostic::error(
+                "E123",
+                format!("a {noun} has neither `default` nor `defaults`"),
+            )
+            .at(table)
+            .label(format!("in this {noun}"))
+            .help(format!(
+                "add `default = ...` for every {item}, or `defaults = [...]` one per {item}"
+            )),
+        };
+        self.push(error);
+        None
     }
 
     /// `value` as a `T` within `min..=max`, or an E101 diagnostic.

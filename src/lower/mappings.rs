@@ -1,7 +1,7 @@
 //! Mappings: PZD words each way and DPV1 indexes, each numbered entry with
 //! its default and what it may hold; and the settings, each a set of one.
 
-use super::checks::{Checker, GSD_NAME_LEN};
+use super::checks::{Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
 use super::resolve_address;
 use super::telegram::value_set;
 use crate::description as raw;
@@ -316,48 +316,22 @@ fn defaults(
     numbering: Option<&Numbering>,
     count: usize,
 ) -> Option<Vec<(u16, Range<usize>)>> {
-    match (&m.default, &m.defaults) {
-        (Some(default), None) => {
+    let of = DefaultsOf {
+        noun: "mapping",
+        item: "entry",
+        items: "entries",
+        order: "first to last",
+    };
+    match cx.defaults(&m.default, &m.defaults, count, &of, m.name.span())? {
+        Defaults::Same(default) => {
             let value = resolve_address(cx, default, numbering)?;
             Some(vec![(value, default.span()); count])
         }
-        (None, Some(list)) if list.get_ref().len() == count => list
+        Defaults::Each(list) => list
             .get_ref()
             .iter()
             .map(|d| Some((resolve_address(cx, d, numbering)?, d.span())))
             .collect(),
-        (None, Some(list)) => {
-            cx.push(
-                Diagnostic::error(
-                    "E122",
-                    format!("{} defaults for {count} entries", list.get_ref().len()),
-                )
-                .at(list.span())
-                .label(format!("expected {count} values"))
-                .help("give one default per entry, first to last"),
-            );
-            None
-        }
-        (Some(default), Some(_)) => {
-            cx.push(
-                Diagnostic::error("E123", "a mapping has both `default` and `defaults`")
-                    .at(default.span())
-                    .label("remove this or `defaults`")
-                    .help("`default` sets every entry, `defaults` each one"),
-            );
-            None
-        }
-        (None, None) => {
-            cx.push(
-                Diagnostic::error("E123", "a mapping has neither `default` nor `defaults`")
-                    .at(m.name.span())
-                    .label("in this mapping")
-                    .help(
-                        "add `default = ...` for every entry, or `defaults = [...]` one per entry",
-                    ),
-            );
-            None
-        }
     }
 }
 

@@ -3,7 +3,7 @@
 //! a configuration the gateway must accept; and their places in
 //! User_Prm_Data.
 
-use super::super::checks::{Checker, GSD_NAME_LEN};
+use super::super::checks::{Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
 use super::{reversed, words_of, MAX_BYTE};
 use crate::description::gateway as raw;
 use crate::description::BitRange;
@@ -95,7 +95,8 @@ pub(super) fn node_words(
 }
 
 /// One default per node: `default` for all or `defaults` one by one, each
-/// within the range.
+/// within the range. After an error, every node's default is the range's
+/// least, so that the checks after it still run.
 fn node_defaults(
     cx: &mut Checker,
     w: &raw::NodeWords,
@@ -103,12 +104,18 @@ fn node_defaults(
     range: (u8, u8),
 ) -> (Vec<u8>, Range<usize>) {
     let what = "a node's words";
-    match (&w.default, &w.defaults) {
-        (Some(default), None) => {
+    let of = DefaultsOf {
+        noun: "parameter",
+        item: "node",
+        items: "nodes",
+        order: "the first node first",
+    };
+    match cx.defaults(&w.default, &w.defaults, count, &of, w.name.span()) {
+        Some(Defaults::Same(default)) => {
             let value = default_in(cx, default, range, what);
             (vec![value; count], default.span())
         }
-        (None, Some(list)) if list.get_ref().len() == count => {
+        Some(Defaults::Each(list)) => {
             let values = list
                 .get_ref()
                 .iter()
@@ -116,36 +123,7 @@ fn node_defaults(
                 .collect();
             (values, list.span())
         }
-        (None, Some(list)) => {
-            cx.push(
-                Diagnostic::error(
-                    "E122",
-                    format!("{} defaults for {count} node numbers", list.get_ref().len()),
-                )
-                .at(list.span())
-                .label(format!("expected {count} values"))
-                .help("give one default per node number, the first node first"),
-            );
-            (vec![range.0; count], list.span())
-        }
-        (Some(default), Some(_)) => {
-            cx.push(
-                Diagnostic::error("E123", "node words with both `default` and `defaults`")
-                    .at(default.span())
-                    .label("remove this or `defaults`")
-                    .help("`default` sets every node, `defaults` each one"),
-            );
-            (vec![range.0; count], default.span())
-        }
-        (None, None) => {
-            cx.push(
-                Diagnostic::error("E123", "node words with neither `default` nor `defaults`")
-                    .at(w.name.span())
-                    .label("in this parameter")
-                    .help("add `default = ...` for every node, or `defaults = [...]` one per node"),
-            );
-            (vec![range.0; count], w.name.span())
-        }
+        None => (vec![range.0; count], w.name.span()),
     }
 }
 
