@@ -212,8 +212,11 @@ pub fn stale_files(dir: &Path, files: &[Artifact]) -> io::Result<Vec<PathBuf>> {
         if is_temporary(&name) {
             stale.push(path);
         } else if is_generated(&path)? {
-            named.extend(bitmaps_named_in(&fs::read(&path)?));
-            if !produced {
+            if may_name_bitmaps(&name) {
+                named.extend(bitmaps_named_in(&fs::read(&path)?));
+            }
+            // A datasheet is `gsdc doc`'s, which a build never writes.
+            if !produced && !is_datasheet(&name) {
                 stale.push(path);
             }
         } else if !produced && name.ends_with(".bmp") {
@@ -245,6 +248,22 @@ fn bitmaps_named_in(contents: &[u8]) -> Vec<String> {
             Some(value[..value.find('"')?].to_string())
         })
         .collect()
+}
+
+/// A GSD or a GSDML, the files that name device symbols.
+fn may_name_bitmaps(name: &str) -> bool {
+    has_extension(name, "gsd") || has_extension(name, "xml")
+}
+
+/// `gsdc doc`'s `<stem>.html` and `<stem>.md`.
+fn is_datasheet(name: &str) -> bool {
+    has_extension(name, "html") || has_extension(name, "md")
+}
+
+fn has_extension(name: &str, extension: &str) -> bool {
+    Path::new(name)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case(extension))
 }
 
 fn is_generated(path: &Path) -> io::Result<bool> {
@@ -311,10 +330,18 @@ fn write_with(
     // What is stale is seen before the files are replaced (a replaced
     // device file still names the bitmaps it used) and before this build's
     // own temporaries are made.
-    let stale = match prune {
+    let mut stale = match prune {
         true => stale_files(dir, files).map_err(|e| cannot("read", e))?,
         false => Vec::new(),
     };
+    // Without the lock a temporary may be another build's, at work.
+    if not_locked.is_some() {
+        stale.retain(|path| {
+            !path
+                .file_name()
+                .is_some_and(|n| is_temporary(&n.to_string_lossy()))
+        });
+    }
     let mut staged = Vec::new();
     let mut outcomes = Vec::new();
     for file in files {

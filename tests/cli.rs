@@ -519,7 +519,8 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
 
 /// After a description changes its GSD's file name and its GSDML's date,
 /// the files of the old names stay in `--out`: `--check` names them (exit
-/// 1), a plain build leaves them, `--prune` removes them and nothing else.
+/// 1), a plain build leaves them, `--prune` removes them and nothing else
+/// (not the user's file, not the datasheet).
 #[test]
 fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
     let dir = scratch("stale");
@@ -534,6 +535,10 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
         Some(0)
     );
     std::fs::write(out.join("README.txt"), "the user's own file").unwrap();
+    // The datasheet beside the files, as the README's commands put it: it
+    // carries gsdc's mark, but is `gsdc doc`'s, never a build's stale file.
+    let doc = gsdc(&["doc", description, "--out", out_arg]);
+    assert_eq!(doc.status.code(), Some(0), "{}", stderr(&doc));
     md810_copy(
         &dir,
         "md810dp.toml",
@@ -600,6 +605,8 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
             "README.txt",
             "gsdc_support.h",
             "gsdc_support.rs",
+            "md810dp.html",
+            "md810dp.md",
             "md810dp_layout.h",
             "md810dp_layout.rs"
         ]
