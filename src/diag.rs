@@ -320,9 +320,15 @@ fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize
 
 /// The terminal columns characters take, as Unicode's East Asian Width
 /// and zero-width properties say (unicode-width, as wcwidth): two for the
-/// wide characters of Chinese texts, none for combining marks.
+/// wide characters of Chinese texts, none for combining marks, and one for
+/// a control character, which [`printable`] shows as one.
 fn columns(chars: impl Iterator<Item = char>) -> usize {
-    chars.map(|c| c.width().unwrap_or(0)).sum()
+    chars
+        .map(|c| match c.is_control() {
+            true => 1,
+            false => c.width().unwrap_or(0),
+        })
+        .sum()
 }
 
 /// Tabs become one space and control characters a `?`, so carets line up.
@@ -366,6 +372,30 @@ mod tests {
         // `name = "` (8) + 汇川 (4) + é (1) + `" ` (2): column 16.
         assert_eq!(caret - gutter, 15, "{rendered}");
         assert_eq!(columns("汇川e\u{301}".chars()), 5);
+    }
+
+    /// A tab is shown as one space, and counted as one column: the caret
+    /// stands under the value after two tabs, as wide as a span with a tab.
+    #[test]
+    fn carets_count_a_tab_as_the_space_it_is_shown_as() {
+        let text = "Ident_Number\t=\t0x12345\r\n";
+        let start = text.find("0x").unwrap();
+        let d = Diagnostic::error("E208", "m").at(start..start + 7);
+        let rendered = Source {
+            name: "x.gsd",
+            text,
+        }
+        .render(&d);
+        let lines: Vec<&str> = rendered.lines().collect();
+        assert_eq!(lines[3], "1 | Ident_Number = 0x12345", "{rendered}");
+        assert_eq!(lines[4], format!("  | {}^^^^^^^", " ".repeat(15)));
+        let d = Diagnostic::error("E208", "m").at(start - 2..start + 7);
+        let rendered = Source {
+            name: "x.gsd",
+            text,
+        }
+        .render(&d);
+        assert!(rendered.contains(&format!("  | {}^^^^^^^^^\n", " ".repeat(13))));
     }
 
     #[test]
