@@ -169,13 +169,11 @@ pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Writte
     write_with(&OsDisk, dir, files, prune)
 }
 
-/// Whether `dir/file_name` holds exactly `contents`; a missing file does not.
+/// What `dir/file_name` holds: `None` when it does not exist; an error for
+/// anything but a regular file, which is refused unread.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
-pub fn is_up_to_date(dir: &Path, file_name: &str, contents: &[u8]) -> io::Result<bool> {
-    match read_target(&dir.join(file_name)) {
-        Ok(existing) => Ok(existing.is_some_and(|e| e == contents)),
-        Err(e) => Err(e),
-    }
+pub fn existing(dir: &Path, file_name: &str) -> io::Result<Option<Vec<u8>>> {
+    read_target(&dir.join(file_name))
 }
 
 /// The mark every file gsdc generates carries in its header.
@@ -826,7 +824,7 @@ mod tests {
         let e = write_files(&dir, &[artifact("A.GSD", b"a")], false).unwrap_err();
         assert_eq!(e.path, dir.join("A.GSD"));
         assert!(e.to_string().contains("not a regular file"), "{e}");
-        assert!(is_up_to_date(&dir, "A.GSD", b"a").is_err());
+        assert!(existing(&dir, "A.GSD").is_err());
         fs::remove_dir_all(dir).unwrap();
     }
 

@@ -156,6 +156,11 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
         "nothing built yet: out of step"
     );
     assert!(!out.exists(), "--check creates nothing");
+    assert!(
+        stdout(&missing).contains(&format!("missing: {}", out.join("MD810DP.bmp").display())),
+        "a bitmap is named, not diffed: {}",
+        stdout(&missing)
+    );
 
     assert_eq!(
         gsdc(&["build", description, "--out", out_arg])
@@ -170,6 +175,25 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     let in_step = gsdc(&["build", description, "--out", out_arg, "--check"]);
     assert_eq!(in_step.status.code(), Some(0), "{}", stderr(&in_step));
     assert!(in_step.stdout.is_empty());
+
+    // A changed bitmap is one line, not its bytes on the terminal.
+    let bitmap = out.join("MD810DP.bmp");
+    let mut bytes = std::fs::read(&bitmap).unwrap();
+    bytes[100] ^= 0xFF;
+    std::fs::write(&bitmap, &bytes).unwrap();
+    let changed = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(changed.status.code(), Some(1));
+    assert!(
+        stdout(&changed).starts_with(&format!("differs: {} (not text)\n", bitmap.display())),
+        "{}",
+        stdout(&changed)
+    );
+    assert!(!changed
+        .stdout
+        .iter()
+        .any(|b| b.is_ascii_control() && *b != b'\n'));
+    bytes[100] ^= 0xFF;
+    std::fs::write(&bitmap, &bytes).unwrap();
 
     let text = std::fs::read_to_string(description).unwrap();
     std::fs::write(

@@ -7,8 +7,8 @@
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
 use crate::build::{merge, Compiler, Config, Refused};
-use crate::output::{is_up_to_date, stale_files, write_files, Outcome};
-use crate::{Artifact, Language};
+use crate::output::{existing, stale_files, write_files, Outcome};
+use crate::{Artifact, ArtifactKind, Language};
 use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Examples:
@@ -181,11 +181,10 @@ fn check_all(files: &[Artifact], out: &Path) -> Status {
     let mut status = Status::Ok;
     for file in files {
         let path = out.join(&file.file_name);
-        match is_up_to_date(out, &file.file_name, &file.contents) {
-            Ok(true) => {}
-            Ok(false) => {
-                let existing = std::fs::read(&path).unwrap_or_default();
-                say(unified_diff(&path, &existing, &file.contents).trim_end());
+        match existing(out, &file.file_name) {
+            Ok(Some(on_disk)) if on_disk == file.contents => {}
+            Ok(on_disk) => {
+                say(difference(&path, on_disk.as_deref(), file).trim_end());
                 status = status.max(Status::InputErrors);
             }
             Err(e) => {
@@ -220,13 +219,23 @@ fn check_all(files: &[Artifact], out: &Path) -> Status {
     status
 }
 
-fn unified_diff(path: &Path, existing: &[u8], generated: &[u8]) -> String {
-    let (old, new) = (
-        String::from_utf8_lossy(existing),
-        String::from_utf8_lossy(generated),
-    );
+/// How the file on disk (`None`: missing) differs from the generated one:
+/// a unified diff of texts; of a bitmap, or a file on disk that is not
+/// UTF-8, one line, since its bytes would reach the terminal raw.
+fn difference(path: &Path, on_disk: Option<&[u8]>, generated: &Artifact) -> String {
     let name = display_name(path);
-    similar::TextDiff::from_lines(old.as_ref(), new.as_ref())
+    let text = |bytes| std::str::from_utf8(bytes).ok();
+    let texts = match generated.kind {
+        ArtifactKind::DeviceSymbol => None,
+        _ => text(on_disk.unwrap_or_default()).zip(text(&generated.contents)),
+    };
+    let Some((old, new)) = texts else {
+        return match on_disk {
+            None => format!("missing: {name}"),
+            Some(_) => format!("differs: {name} (not text)"),
+        };
+    };
+    similar::TextDiff::from_lines(old, new)
         .unified_diff()
         .context_radius(3)
         .header(
