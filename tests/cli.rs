@@ -746,8 +746,8 @@ const PI_SCHEMA: &str = "../shared/reference/gsdml-xsd-v2.44";
 /// anything is written: the PI schema passes every shipped description; a
 /// schema the GSDML breaks refuses the build (exit 1, the findings as E399
 /// diagnostics on the generated file, nothing written), whether given with
-/// `--xsd` or through `GSDC_BUILD_XSD`; a directory without the schema is
-/// a usage error.
+/// `--xsd` or through `GSDC_BUILD_XSD` (empty is unset); a directory
+/// without the schema is a usage error.
 #[test]
 fn build_xsd_validates_each_gsdml_before_anything_is_written() {
     let dir = scratch("build-xsd");
@@ -799,6 +799,15 @@ fn build_xsd_validates_each_gsdml_before_anything_is_written() {
     assert_eq!(from_env.status.code(), Some(1), "{}", stderr(&from_env));
     assert!(stderr(&from_env).contains("error[E399]"));
     assert!(!out.exists());
+    // An empty variable is unset, as build scripts read it.
+    let empty_env = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args(["build", "descriptions/9kdp1.toml", "--out", out_arg])
+        .env(gsdc::build::XSD_ENV, "")
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(empty_env.status.code(), Some(0), "{}", stderr(&empty_env));
+    std::fs::remove_dir_all(&out).unwrap();
 
     let missing = gsdc(&["build", all[0], "--xsd", "/no/such/dir", "--out", out_arg]);
     assert_eq!(missing.status.code(), Some(2));

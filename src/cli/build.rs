@@ -54,7 +54,10 @@ pub struct Args {
     firmware: Vec<Firmware>,
     /// Validate each GSDML against the PI schema in DIR (GSDML-DeviceProfile-v2.44.xsd
     /// and its imports) before anything is written; needs the `xsd` feature.
-    #[arg(long, value_name = "DIR", env = crate::build::XSD_ENV)]
+    /// Without it, the directory GSDC_BUILD_XSD names, if set and not empty.
+    // Not clap's `env`: it takes an empty variable for a missing value, and
+    // `Config::new` reads the variable as build scripts do.
+    #[arg(long, value_name = "DIR")]
     xsd: Option<PathBuf>,
 }
 
