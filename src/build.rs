@@ -26,9 +26,9 @@
 //! `gsdc_support.h` instead ([`generate`] writes every file: device files and
 //! both layouts).
 //!
-//! It prints `cargo:rerun-if-changed` for the description, so cargo runs it
-//! again when the description changes, and writes only files whose content
-//! changed. Warnings (placeholder ident numbers) become `cargo:warning`
+//! It prints `cargo:rerun-if-changed` for the description and the files it
+//! names (its device symbol), so cargo runs it again when one of them
+//! changes, and writes only files whose content changed. Warnings (placeholder ident numbers) become `cargo:warning`
 //! lines, or refuse the build with [`Config::deny_warnings`]. With
 //! [`Config::xsd`], or the environment variable [`XSD_ENV`], each GSDML is
 //! validated against the PI schema before anything is written:
@@ -219,6 +219,9 @@ impl Config {
         }
         let name = description.display().to_string();
         let compiled = self.compiler_with(xsd)?.compile(description, &name)?;
+        for path in &compiled.beside {
+            println!("cargo:rerun-if-changed={}", path.display());
+        }
         match compiled.files {
             Ok(files) => {
                 for findings in &compiled.findings {
@@ -252,6 +255,8 @@ pub(crate) struct Compiled {
     /// of each generated GSDML the PI schema rejects.
     pub findings: Vec<Findings>,
     pub files: Result<Vec<Artifact>, Refused>,
+    /// The files beside the description that it read ([`Loaded::beside`]).
+    pub beside: Vec<PathBuf>,
 }
 
 /// Why a description gave no files.
@@ -339,7 +344,11 @@ impl Compiler {
     /// there is one. `name` names the description in diagnostics. `Err`
     /// only when the file cannot be read.
     pub fn compile(&mut self, path: &Path, name: &str) -> Result<Compiled, BuildError> {
-        let Loaded { findings, ir } = load_file(path, name)?;
+        let Loaded {
+            findings,
+            ir,
+            beside,
+        } = load_file(path, name)?;
         let mut description = findings;
         let files = match ir.map(|ir| crate::emit::compile_for(&ir, &self.firmware)) {
             Some(Ok(files)) => Some(files),
@@ -349,12 +358,17 @@ impl Compiler {
             }
             None => None,
         };
-        Ok(self.judge(description, files))
+        Ok(self.judge(description, files, beside))
     }
 
     /// The verdict on a description's files: errors refuse them, then
     /// warnings when denied, then a GSDML the PI schema rejects.
-    fn judge(&mut self, description: Findings, files: Option<Vec<Artifact>>) -> Compiled {
+    fn judge(
+        &mut self,
+        description: Findings,
+        files: Option<Vec<Artifact>>,
+        beside: Vec<PathBuf>,
+    ) -> Compiled {
         let has_errors = description.diagnostics.has_errors();
         let has_warnings = description.warnings().next().is_some();
         let mut findings = vec![description];
@@ -362,6 +376,7 @@ impl Compiler {
             return Compiled {
                 findings,
                 files: Err(Refused::Errors),
+                beside,
             };
         };
         let from = &findings[0].name;
@@ -375,7 +390,11 @@ impl Compiler {
         } else {
             Ok(files)
         };
-        Compiled { findings, files }
+        Compiled {
+            findings,
+            files,
+            beside,
+        }
     }
 
     /// The PI schema's findings for each GSDML among `files` that it
@@ -409,6 +428,9 @@ impl Compiler {
 pub struct Loaded {
     pub findings: Findings,
     pub ir: Option<crate::Ir>,
+    /// The files beside the description that it named and that were read
+    /// (its device symbol): inputs of the build as much as the description.
+    pub beside: Vec<PathBuf>,
 }
 
 /// Reads the description at `path` (no more than
@@ -423,6 +445,7 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
             diagnostics: Diagnostics(vec![diagnostic]),
         },
         ir: None,
+        beside: Vec::new(),
     };
     let bytes = match read_input(path, &crate::load::INPUT_LIMIT) {
         Ok(bytes) => bytes,
@@ -443,7 +466,11 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
         .file_name()
         .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
     let folder = path.parent().unwrap_or(Path::new(""));
-    let files = |name: &str| read_beside(folder, name);
+    let beside = std::cell::RefCell::new(Vec::new());
+    let files = |name: &str| {
+        beside.borrow_mut().push(folder.join(name));
+        read_beside(folder, name)
+    };
     let (ir, diagnostics) = crate::load_with(&source_name, text, &files);
     Ok(Loaded {
         findings: Findings {
@@ -452,6 +479,7 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
             diagnostics,
         },
         ir,
+        beside: beside.into_inner(),
     })
 }
 

@@ -112,7 +112,9 @@ fn layouts_are_formatted_as_rustfmt_formats_them() {
 }
 
 /// `cargo test` and `cargo clippy -- -D warnings` in `tests/firmware`, whose
-/// build script generates every layout with gsdc's build-script API.
+/// build script generates every layout with gsdc's build-script API: every
+/// test of the crate runs and passes, and the build script asks cargo to run
+/// it again when a description or a symbol it names changes.
 #[test]
 fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
     let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/firmware");
@@ -134,5 +136,60 @@ fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
             String::from_utf8_lossy(&output.stdout),
             String::from_utf8_lossy(&output.stderr)
         );
+        if args[0] == "test" {
+            let stdout = String::from_utf8(output.stdout).unwrap();
+            assert_eq!(
+                passed(&stdout),
+                tests_in(&crate_dir.join("tests")),
+                "{stdout}"
+            );
+        }
     }
+    let reruns = build_script_output(&target_dir);
+    let descriptions = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions");
+    for name in DESCRIPTIONS {
+        assert!(
+            reruns.contains(&format!("descriptions/{name}\n")),
+            "{reruns}"
+        );
+        let text = std::fs::read_to_string(descriptions.join(name)).unwrap();
+        let symbol = text
+            .lines()
+            .find_map(|l| l.strip_prefix("symbol = \""))
+            .expect("every shipped description names its symbol")
+            .trim_end_matches('"');
+        assert!(
+            reruns.contains(&format!("descriptions/{symbol}\n")),
+            "{reruns}"
+        );
+    }
+}
+
+/// The sum of the `N passed` of libtest's summaries.
+fn passed(stdout: &str) -> usize {
+    stdout
+        .lines()
+        .filter_map(|l| l.strip_prefix("test result: ok. "))
+        .map(|rest| rest.split(' ').next().unwrap().parse::<usize>().unwrap())
+        .sum()
+}
+
+/// The `#[test]` functions in the files of `dir`.
+fn tests_in(dir: &Path) -> usize {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| std::fs::read_to_string(e.unwrap().path()).unwrap())
+        .map(|text| text.matches("#[test]").count())
+        .sum()
+}
+
+/// The `cargo:` lines the firmware crate's build script printed.
+fn build_script_output(target_dir: &Path) -> String {
+    let build = target_dir.join("debug/build");
+    std::fs::read_dir(&build)
+        .unwrap()
+        .map(|e| e.unwrap().path().join("output"))
+        .filter(|p| p.to_string_lossy().contains("gsdc-firmware-check-") && p.exists())
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect()
 }
