@@ -510,6 +510,12 @@ fn usage_errors_exit_2() {
         );
         assert!(output.stdout.is_empty());
     }
+    let missing = gsdc(&["descriptions/no-such.toml", "--diag", "030034"]);
+    assert!(
+        stderr(&missing).starts_with("error: cannot read descriptions/no-such.toml: No such file"),
+        "said once: {}",
+        stderr(&missing)
+    );
 }
 
 #[test]

@@ -628,6 +628,11 @@ fn gsdc_doc_usage_and_io_errors_exit_2() {
         scratch("missing").to_str().unwrap(),
     ]);
     assert_eq!(missing.status.code(), Some(2));
+    let said = String::from_utf8_lossy(&missing.stderr);
+    assert!(
+        said.starts_with("error: cannot read descriptions/no-such.toml: No such file"),
+        "said once: {said}"
+    );
     assert_eq!(gsdc(&["doc"]).status.code(), Some(2));
     let help = gsdc(&["doc", "--help"]);
     let help = String::from_utf8_lossy(&help.stdout);

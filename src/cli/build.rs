@@ -151,7 +151,7 @@ fn compile_all(
 }
 
 /// The reading error, with the path shown as the human output shows paths.
-fn display_error(e: &crate::build::BuildError, path: &Path) -> String {
+pub(super) fn display_error(e: &crate::build::BuildError, path: &Path) -> String {
     match e {
         crate::build::BuildError::Read { error, .. } => {
             format!("cannot read {}: {error}", display_name(path))

@@ -1,7 +1,7 @@
 //! `gsdc decode`: captured bus data read against a description. This file
 //! parses the arguments and renders; the decoding is `crate::decode`.
 
-use super::{display_name, say, warn, Status, MAX_SHOWN};
+use super::{load_description, say, warn, Status};
 use crate::decode::{
     self, Carried, Channel, DecodedWord, DiagnosisBlock, GatewayData, GatewayDiagnosis, Hex,
     MappingInForce, NodeTotals, Pkw, PkwSide, Prm, Telegram, ValueSource,
@@ -10,7 +10,7 @@ use crate::ir::{Direction, Ir};
 use crate::{Diagnostic, Source};
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 #[derive(clap::Args)]
 #[command(
@@ -76,11 +76,11 @@ struct Document {
 }
 
 pub fn run(args: &Args) -> Status {
-    let (name, ir) = match load(&args.description) {
-        Ok(loaded) => loaded,
+    let ir = match load_description(&args.description) {
+        Ok(ir) => ir,
         Err(status) => return status,
     };
-    match decode_all(name, &ir, args) {
+    match decode_all(ir.source_name.clone(), &ir, args) {
         Ok(document) => {
             match args.format {
                 Format::Table => say(render_tables(&document).trim_end()),
@@ -91,25 +91,6 @@ pub fn run(args: &Args) -> Status {
             Status::Ok
         }
         Err(status) => status,
-    }
-}
-
-/// The description's IR; its diagnostics are shown only when it has errors
-/// (its warnings are about the device files, not about decoding).
-fn load(path: &Path) -> Result<(String, Ir), Status> {
-    let name = display_name(path);
-    let loaded = crate::build::load_file(path, &name).map_err(|e| {
-        warn(&format!("error: cannot read {name}: {e}"));
-        Status::UsageOrIo
-    })?;
-    match loaded.ir {
-        Some(ir) => Ok((ir.source_name.clone(), ir)),
-        None => {
-            for rendered in loaded.findings.rendered(MAX_SHOWN) {
-                warn(&rendered);
-            }
-            Err(Status::InputErrors)
-        }
     }
 }
 

@@ -5,7 +5,7 @@
 //! directory locked).
 
 use super::build::{merged, write_all};
-use super::{display_name, warn, Status, MAX_SHOWN};
+use super::{load_description, warn, Status};
 use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Example:
@@ -43,19 +43,7 @@ pub fn run(args: &Args) -> Status {
     }
 }
 
-/// The datasheet of one description; its findings are shown when it has
-/// errors (its warnings are about the device files).
+/// The datasheet of one description.
 fn document_one(path: &Path) -> Result<Vec<crate::Artifact>, Status> {
-    let name = display_name(path);
-    let loaded = crate::build::load_file(path, &name).map_err(|e| {
-        warn(&format!("error: cannot read {name}: {e}"));
-        Status::UsageOrIo
-    })?;
-    let Some(ir) = loaded.ir else {
-        for rendered in loaded.findings.rendered(MAX_SHOWN) {
-            warn(&rendered);
-        }
-        return Err(Status::InputErrors);
-    };
-    Ok(crate::document(&ir))
+    load_description(path).map(|ir| crate::document(&ir))
 }

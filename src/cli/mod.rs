@@ -147,6 +147,22 @@ fn is_bidi_control(c: char) -> bool {
     matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
+/// The IR of the description at `path`, for a command that reads it
+/// without building (doc, decode): its findings are shown only when it has
+/// errors, since its warnings are about the device files.
+fn load_description(path: &Path) -> Result<crate::Ir, Status> {
+    let loaded = crate::build::load_file(path, &display_name(path)).map_err(|e| {
+        warn(&format!("error: {}", build::display_error(&e, path)));
+        Status::UsageOrIo
+    })?;
+    loaded.ir.ok_or_else(|| {
+        for rendered in loaded.findings.rendered(MAX_SHOWN) {
+            warn(&rendered);
+        }
+        Status::InputErrors
+    })
+}
+
 /// The path a file gets in `dir`, as shown.
 fn shown_in(dir: &Path, file_name: &str) -> String {
     display_name(&dir.join(file_name))
