@@ -161,7 +161,10 @@ impl Config {
         language: Language,
     ) -> Result<PathBuf, BuildError> {
         let description = description.as_ref();
+        // Only this language's layout is compiled, whatever `firmware` says.
         let mut files: Vec<Artifact> = self
+            .clone()
+            .firmware(&[language])
             .build_script_compile(description, false)?
             .into_iter()
             .filter(|a| a.kind.language() == Some(language))

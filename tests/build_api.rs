@@ -158,6 +158,12 @@ fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
         .generate_layout(&mv810, &out, gsdc::Language::Rust)
         .unwrap();
     assert_eq!(layout, out.join("mv810_pnet02_layout.rs"));
+    // The language asked for, whatever the configuration's firmware says.
+    let header = Config::new()
+        .firmware(&[gsdc::Language::Rust])
+        .generate_layout(&mv810, &out, gsdc::Language::C)
+        .unwrap();
+    assert_eq!(header, out.join("mv810_pnet02_layout.h"));
     let passed = Config::new()
         .xsd(pi_schema())
         .generate(&mv810, &out)

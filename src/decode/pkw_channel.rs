@@ -231,11 +231,11 @@ fn station_meaning(command: station::PkwCommand) -> &'static str {
     }
 }
 
-fn stations(s: station::Stations) -> Option<Stations> {
-    Some(Stations {
+fn stations(s: station::Stations) -> Stations {
+    Stations {
         target: s.target,
         source: s.source,
-    })
+    }
 }
 
 fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
@@ -245,7 +245,7 @@ fn station_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> 
     };
     let command = request.access.command();
     Pkw {
-        stations: stations(request.stations),
+        stations: Some(stations(request.stations)),
         meaning: Some(station_meaning(command)),
         parameter: Some(parameter(request.address)),
         value: match request.access {
@@ -266,7 +266,7 @@ fn station_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) ->
     // The command word the codec writes for this reply.
     let code = response.encode()[1].get();
     let mut pkw = Pkw {
-        stations: stations(response.stations),
+        stations: Some(stations(response.stations)),
         parameter: Some(parameter(response.address)),
         ..Pkw::new(STATION, PkwSide::Response, code)
     };
@@ -361,11 +361,11 @@ fn error_text(number: profidrive::PkwErrorNumber) -> &'static str {
 fn profidrive_parameter(
     p: profidrive::Parameter,
     parameter: &impl Fn(u16) -> Parameter,
-) -> Option<Parameter> {
-    Some(Parameter {
+) -> Parameter {
+    Parameter {
         subindex: Some(p.subindex),
         ..parameter(p.pnu.get())
-    })
+    }
 }
 
 fn profidrive_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw {
@@ -386,7 +386,7 @@ fn profidrive_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) 
         meaning: Some(REQUESTS[usize::from(id)].0),
         parameter: request
             .parameter()
-            .and_then(|p| profidrive_parameter(p, &parameter)),
+            .map(|p| profidrive_parameter(p, &parameter)),
         value,
         ..Pkw::new(Channel::Profidrive, PkwSide::Request, id.into())
     }
@@ -418,7 +418,7 @@ fn profidrive_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter)
         meaning: Some(RESPONSES[usize::from(id)].0),
         parameter: response
             .parameter()
-            .and_then(|p| profidrive_parameter(p, &parameter)),
+            .map(|p| profidrive_parameter(p, &parameter)),
         value,
         error,
         ..Pkw::new(Channel::Profidrive, PkwSide::Response, id.into())
@@ -456,7 +456,7 @@ fn profidrive_refused(
     };
     Pkw {
         meaning: Some(meaning),
-        parameter: about.and_then(|p| profidrive_parameter(p, parameter)),
+        parameter: about.map(|p| profidrive_parameter(p, parameter)),
         refused: Some(why),
         ..Pkw::new(Channel::Profidrive, side, id.into())
     }
