@@ -111,8 +111,9 @@ fn collect_table(table: &Table, path: &str, numbers: Option<(i64, i64)>, out: &m
         } else {
             format!("{path}.{key}")
         };
-        let is_text = ["name", "info", "text"].contains(&key.as_str())
-            || path.starts_with("profinet.module_info.");
+        let is_text = ["name", "info", "text", "code_word"].contains(&key.as_str())
+            || path.starts_with("profinet.module_info.")
+            || path.starts_with("profinet.module_name.");
         match value {
             Value::String(text) if is_text => out.push(Text {
                 path: path.clone(),
@@ -120,7 +121,7 @@ fn collect_table(table: &Table, path: &str, numbers: Option<(i64, i64)>, out: &m
                 text: text.clone(),
                 numbers,
             }),
-            Value::Table(languages) if is_text && !languages.contains_key("index") => {
+            Value::Table(languages) if is_languages(languages) => {
                 for (code, text) in languages.iter().filter(|(code, _)| *code != "gsd") {
                     out.push(Text {
                         path: format!("{path}.{code}"),
@@ -133,6 +134,16 @@ fn collect_table(table: &Table, path: &str, numbers: Option<(i64, i64)>, out: &m
             _ => collect_value(value, &path, numbers, out),
         }
     }
+}
+
+/// A text in several languages: `en`, other two-letter codes and `gsd`,
+/// whatever its key is called.
+fn is_languages(table: &Table) -> bool {
+    table.contains_key("en")
+        && table.iter().all(|(key, value)| {
+            value.is_str()
+                && (key == "gsd" || key.len() == 2 && key.bytes().all(|b| b.is_ascii_lowercase()))
+        })
 }
 
 fn collect_value(value: &Value, path: &str, numbers: Option<(i64, i64)>, out: &mut Vec<Text>) {
@@ -239,6 +250,18 @@ fn a_reworded_text_is_found() {
             "\"Frequency reference (0.01 Hz)\"",
             "\"Frequency reference (0.01Hz)\"",
             "mappings.pzd_in.choices[1].text.en",
+        ),
+        (
+            "mv810-pnet02.toml",
+            "standard_telegram_1 = { en = \"standard message 1\", zh = \"标准报文 1\" }",
+            "standard_telegram_1 = { en = \"standard message 1\", zh = \"标准报文一\" }",
+            "profinet.module_name.standard_telegram_1.zh",
+        ),
+        (
+            "md810-gateway.toml",
+            "zh = \"变频器故障\" }",
+            "zh = \"变频器故障码\" }",
+            "gateway.diagnosis.types[2].code_word.zh",
         ),
         (
             "9kdp1.toml",
