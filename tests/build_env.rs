@@ -19,7 +19,15 @@ fn the_environment_variable_names_the_schema_of_every_build() {
     std::env::set_var(gsdc::build::XSD_ENV, &refusing);
     let e = gsdc::build::generate(&mv810, &out).unwrap_err();
     assert!(e.to_string().contains("error[E399]"), "{e}");
+    let config = gsdc::build::Config::new();
+    let e = config.generate(&mv810, &out).unwrap_err();
+    assert!(e.to_string().contains("error[E399]"), "{e}");
     assert!(!out.exists());
+    // A layout needs no GSDML, so no schema.
+    config
+        .generate_layout(&mv810, &out, gsdc::Language::Rust)
+        .unwrap();
+    std::fs::remove_dir_all(&out).unwrap();
 
     std::env::set_var(gsdc::build::XSD_ENV, "");
     assert_eq!(

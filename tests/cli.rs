@@ -81,7 +81,13 @@ fn build_writes_the_gsd_and_exits_0() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(String::from_utf8_lossy(&again.stdout).contains("unchanged"));
+    let said = String::from_utf8_lossy(&again.stdout);
+    assert!(!said.contains("wrote"), "{said}");
+    assert_eq!(
+        said.matches("unchanged").count(),
+        files_in(&out).len(),
+        "{said}"
+    );
     std::fs::remove_dir_all(out).unwrap();
 }
 

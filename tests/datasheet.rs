@@ -596,7 +596,13 @@ fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
         assert_eq!(written, expected.contents, "{file}");
     }
     let again = gsdc(&["doc", "descriptions/md810dp.toml", "--out", out_arg]);
-    assert!(String::from_utf8_lossy(&again.stdout).contains("unchanged"));
+    let said = String::from_utf8_lossy(&again.stdout);
+    assert!(!said.contains("wrote"), "{said}");
+    assert_eq!(
+        said.matches("unchanged").count(),
+        2,
+        "the HTML and the Markdown: {said}"
+    );
     let _ = std::fs::remove_dir_all(&out);
 }
 

@@ -107,7 +107,8 @@ fn the_plan_is_the_manuals() {
         .all(|n| (n.input_words.max, n.output_words.max) == (8, 8)));
     assert!(profibus.slave_family.starts_with("9@"));
     assert_eq!(ir.device.model, "MD810-gateway");
-    assert!(profibus.user_prm.len <= 237);
+    // The node count's byte, then one byte per slave and direction.
+    assert_eq!(profibus.user_prm.len, 1 + 30 * 2);
     assert!(profibus.dpv1.is_none() && profibus.user_prm.constant.is_empty());
     // 2.5: lengths 4, 4, 5; codes 35 and 34 of type 1, 32 of type 3, and
     // the drive's fault code of type 4; 6 + 5 bytes of diagnosis at most.

@@ -314,6 +314,41 @@ fn record_refs_fit_their_records() {
     }
 }
 
+/// MV810's P43.01 (record 4) is fixed by each module, as section 4 says:
+/// 0 (standard message 1) in standard telegram 1, whose only record it is,
+/// and 1 (user-defined) in every PKW module; neither can be changed.
+#[test]
+fn mv810_modules_fix_p43_01() {
+    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&text).unwrap();
+    let mut pkw_modules = 0;
+    for submodule in elements(&doc, "VirtualSubmoduleItem") {
+        let id = attribute(submodule, "ID");
+        let records: Vec<Node> = submodule
+            .descendants()
+            .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
+            .collect();
+        let fixed = if id == "IDS_STD_TEL_1" {
+            assert_eq!(records.len(), 1, "{id}");
+            "0"
+        } else if id.starts_with("IDS_PKW_") {
+            pkw_modules += 1;
+            "1"
+        } else {
+            continue;
+        };
+        let p43_01 = records
+            .iter()
+            .find(|r| attribute(**r, "Index") == "4")
+            .unwrap_or_else(|| panic!("{id} has record 4"));
+        let refs: Vec<Node> = children(*p43_01, "Ref").collect();
+        assert_eq!(refs.len(), 1, "{id}");
+        assert_eq!(attribute(refs[0], "DefaultValue"), fixed, "{id}");
+        assert_eq!(attribute(refs[0], "Changeable"), "false", "{id}");
+    }
+    assert!(pkw_modules > 0);
+}
+
 fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &str) {
     for (node, record) in records.iter().zip(planned) {
         assert_eq!(

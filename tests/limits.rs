@@ -69,6 +69,17 @@ fn outcome(text: &str) -> Result<(), (&'static str, String)> {
     Ok(())
 }
 
+/// The GSDML `text` gives.
+fn gsdml(text: &str) -> String {
+    let ir = gsdc::load("limits.toml", text).0.unwrap();
+    let gsdml = gsdc::compile(&ir)
+        .unwrap()
+        .into_iter()
+        .find(|a| a.kind == gsdc::ArtifactKind::Gsdml)
+        .unwrap();
+    String::from_utf8(gsdml.contents).unwrap()
+}
+
 fn code(result: Result<(), (&'static str, String)>) -> &'static str {
     result.expect_err("one past the limit is an error").0
 }
@@ -93,6 +104,13 @@ fn ports_16_and_17() {
 #[test]
 fn settings_255_and_256() {
     assert_eq!(outcome(&description(2, 2, 255, "")), Ok(()));
+    // One record of 255 Unsigned16 entries.
+    let settings = gsdml(&description(2, 2, 255, ""));
+    let refs = settings
+        .lines()
+        .filter(|l| l.contains("<Ref ") && l.contains("IDT_SETTINGS_"));
+    assert_eq!(refs.count(), 255);
+    assert!(settings.contains("Length=\"510\""));
     let (code, at) = outcome(&description(2, 2, 256, "")).unwrap_err();
     assert_eq!(code, "E134");
     assert!(at.contains("Setting 255"), "{at}");
@@ -115,6 +133,7 @@ fn dpv1_indexes_up_to_255_and_256() {
         )
     };
     assert_eq!(outcome(&with(255)), Ok(()));
+    assert!(gsdml(&with(255)).contains("Length=\"512\""));
     // An index is a byte: 256 is not one.
     assert_eq!(code(outcome(&with(256))), "E003");
 }
