@@ -4,12 +4,13 @@
 # missing: libxml2 and libclang for the PI schema validation in the tests;
 # gcc, g++ and clang for the C layouts, which tests/c_header.rs compiles and
 # runs; Chromium and fonts with Latin and Chinese glyphs for the datasheet
-# tests, which load each datasheet in a headless browser.
+# tests, which load each datasheet in a headless browser; strace, with which
+# tests/output_safety.rs kills a build in the middle of an fsync.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 missing=()
-for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei; do
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei strace; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -gt 0 ]; then
