@@ -16,7 +16,7 @@
 //! A comment the template writes around the names it arranges goes through
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
-use super::{Artifact, ArtifactKind};
+use super::{mapping_literal, range_doc, Artifact, ArtifactKind};
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
@@ -651,17 +651,13 @@ fn set_item(names: &Names, module: &str, set: &MappingSet, single: bool, end: us
     let holder = capitalised(&holder);
     match &set.allowed {
         Allowed::Range { min, max } => SetItem {
-            doc: comment(&format!(
-                "{holder} holds a parameter address from {} to {}.",
-                hex16(*min),
-                hex16(*max)
-            )),
+            doc: comment(&range_doc(&holder, set.holds, *min, *max)),
             allowed: names.lower(&base),
             allowed_doc,
             end,
             choices: None,
-            min: format!("{}U", hex16(*min)),
-            max: format!("{}U", hex16(*max)),
+            min: format!("{}U", mapping_literal(set.holds, *min)),
+            max: format!("{}U", mapping_literal(set.holds, *max)),
             check: range_check(&name, *min, *max),
             name,
         },
@@ -716,11 +712,7 @@ fn set_entries<'a>(
             number,
             doc: comment(&format!("{what}: \"{}\".", e.name.en)),
             name: c_string(&e.name.en),
-            default: if is_address {
-                format!("{}U", hex16(e.default))
-            } else {
-                format!("{}U", e.default)
-            },
+            default: format!("{}U", mapping_literal(set.holds, e.default)),
             default_comment: if is_address {
                 name_of(e.default)
             } else {
@@ -1106,6 +1098,22 @@ mod tests {
         let ir = load("9kdp1.toml", include_str!("../../descriptions/9kdp1.toml"));
         assert_eq!(file_name(&ir), "9kdp1_layout.h");
         assert_eq!(prefix(&ir).upper_snake(), "GSDC_9KDP1");
+    }
+
+    /// A timeout is a plain value: its bounds and default in decimal, and
+    /// said to be a value, not a parameter address.
+    #[test]
+    fn a_range_of_plain_values_is_written_in_decimal() {
+        let header = emit(&crate::testing::mv810_with_timeout());
+        for line in [
+            "Communication timeout (P43.24)\" holds a value from 0 to 60000.",
+            "#define MV810_PNET02_SETTINGS_ALLOWED_2_MIN 0U\n",
+            "#define MV810_PNET02_SETTINGS_ALLOWED_2_MAX 60000U\n",
+            "#define MV810_PNET02_SETTINGS_2_DEFAULT 100U\n",
+        ] {
+            assert!(header.contains(line), "{line}\n{header}");
+        }
+        assert!(!header.contains("0xEA60"), "{header}");
     }
 
     #[test]

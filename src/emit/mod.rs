@@ -7,7 +7,7 @@ pub mod gsdml;
 pub mod rust;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Direction, Ir, PkwKind};
+use crate::ir::{Direction, Holds, Ir, PkwKind};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -146,6 +146,31 @@ pub(crate) fn layout_contents(ir: &Ir) -> String {
         .chain(["the bus constants"])
         .collect();
     joined(&present, "and")
+}
+
+/// A mapping's value as generated code writes it: a parameter address in
+/// hex, as the manuals write addresses; a plain value or a choice in
+/// decimal.
+fn mapping_literal(holds: Holds, value: u16) -> String {
+    match holds {
+        Holds::Address => format!("0x{value:04X}"),
+        Holds::Value | Holds::Choice => value.to_string(),
+    }
+}
+
+/// `<holder> holds a parameter address from 0x2B02 to 0x2B0C.`, or `a
+/// value from 0 to 60000.`: what a range's entries are, in the generated
+/// code's doc comments.
+fn range_doc(holder: &str, holds: Holds, min: u16, max: u16) -> String {
+    let what = match holds {
+        Holds::Address => "a parameter address",
+        Holds::Value | Holds::Choice => "a value",
+    };
+    format!(
+        "{holder} holds {what} from {} to {}.",
+        mapping_literal(holds, min),
+        mapping_literal(holds, max)
+    )
 }
 
 /// `a, b and c` (or `a, b or c`).

@@ -8,7 +8,7 @@
 
 mod gateway;
 
-use super::{Artifact, ArtifactKind};
+use super::{mapping_literal, range_doc, Artifact, ArtifactKind};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, Profinet};
@@ -586,15 +586,11 @@ fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
     let allowed = set.allowed_ident.upper_snake();
     match &set.allowed {
         Allowed::Range { min, max } => SetAllowed {
-            doc: format!(
-                "{holder} holds a parameter address from {} to {}.",
-                hex16(*min),
-                hex16(*max)
-            ),
+            doc: range_doc(&holder, set.holds, *min, *max),
             allowed,
             choices: None,
-            min: hex16(*min),
-            max: hex16(*max),
+            min: mapping_literal(set.holds, *min),
+            max: mapping_literal(set.holds, *max),
         },
         Allowed::Choices(values) => {
             let choices = value_enum(values, format!("What {} may hold.", holder.to_lowercase()));
@@ -620,10 +616,11 @@ fn set_entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entr
             .map_or_else(String::new, |name| format!(" // {name}"))
     };
     set.entries.iter().map(move |e| {
-        let (default, default_comment) = if is_address {
-            (hex16(e.default), name_of(e.default))
+        let default = mapping_literal(set.holds, e.default);
+        let default_comment = if is_address {
+            name_of(e.default)
         } else {
-            (e.default.to_string(), String::new())
+            String::new()
         };
         Entry {
             name: format!("{:?}", e.name.en),
@@ -768,6 +765,22 @@ mod tests {
         assert_ne!(typo, TEMPLATE);
         let error = render(&typo, &ir).unwrap_err();
         assert_eq!(error.kind(), minijinja::ErrorKind::UndefinedError);
+    }
+
+    /// A timeout is a plain value: its bounds and default in decimal, and
+    /// said to be a value, not a parameter address.
+    #[test]
+    fn a_range_of_plain_values_is_written_in_decimal() {
+        let layout = emit(&crate::testing::mv810_with_timeout());
+        for line in [
+            "/// Communication timeout (P43.24) holds a value from 0 to 60000.\n",
+            "min: 0,\n",
+            "max: 60000,\n",
+            "default: 100,\n",
+        ] {
+            assert!(layout.contains(line), "{line}\n{layout}");
+        }
+        assert!(!layout.contains("0xEA60"), "{layout}");
     }
 
     #[test]
