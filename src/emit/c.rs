@@ -224,6 +224,18 @@ struct PnModuleItem {
     name: String,
     doc: String,
     ident: String,
+    profidrive: Option<ProfidriveItem>,
+}
+
+/// Where a PROFIdrive module's submodules are: the profile's API, the
+/// module access point's subslot and ident number, the telegram's subslot.
+#[derive(Serialize)]
+struct ProfidriveItem {
+    doc: String,
+    api: String,
+    access_point_subslot: String,
+    access_point_ident: String,
+    data_subslot: String,
 }
 
 /// The C firmware layout of a description.
@@ -832,6 +844,16 @@ fn profinet_items(names: &Names, p: &Profinet) -> ProfinetItems {
                     m.name.text.en
                 )),
                 ident: hex32(m.ident_number),
+                profidrive: m.is_profidrive().then(|| ProfidriveItem {
+                    doc: comment(&format!(
+                        "Module \"{}\" is PROFIdrive's: its submodules are in the profile's API, the module access point (no data) in its subslot with its ident number, the telegram in the data subslot.",
+                        m.name.text.en
+                    )),
+                    api: hex32(profinet::PROFIDRIVE_API),
+                    access_point_subslot: format!("{}U", profinet::ACCESS_POINT_SUBSLOT),
+                    access_point_ident: hex32(profinet::ACCESS_POINT_IDENT),
+                    data_subslot: format!("{}U", profinet::PROFIDRIVE_DATA_SUBSLOT),
+                }),
             })
             .collect(),
     }
