@@ -16,7 +16,7 @@
 //! A comment the template writes around the names it arranges goes through
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
-use super::{mapping_literal, range_doc, Artifact, ArtifactKind};
+use super::{capitalised, mapping_literal, range_doc, Artifact, ArtifactKind};
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
@@ -873,13 +873,6 @@ fn hex16(value: u16) -> String {
 /// `0x00000202UL`: an unsigned long, which holds 32 bits where int has 16.
 fn hex32(value: u32) -> String {
     format!("0x{value:08X}UL")
-}
-
-fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    chars
-        .next()
-        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// `#define NAME { a, b }`, wrapped with continuation lines when long.

@@ -173,6 +173,14 @@ fn range_doc(holder: &str, holds: Holds, min: u16, max: u16) -> String {
     )
 }
 
+/// `text` with its first letter upper case, to begin a sentence.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}
+
 /// `a, b and c` (or `a, b or c`).
 pub(crate) fn joined(items: &[&str], conjunction: &str) -> String {
     match items {

@@ -8,7 +8,7 @@
 
 mod gateway;
 
-use super::{mapping_literal, range_doc, Artifact, ArtifactKind};
+use super::{capitalised, mapping_literal, range_doc, Artifact, ArtifactKind};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, Profinet};
@@ -579,10 +579,14 @@ fn group_doc(kind: MappingKind) -> &'static str {
 /// several (the settings) names its one entry.
 fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
     let holder = if single {
-        "Each entry".to_string()
+        "each entry".to_string()
     } else {
         doc_text(&set.entries[0].name.en)
     };
+    // The name as the description writes it (P43.01, not p43.01); only
+    // gsdc's own words are capitalised to begin a sentence.
+    let what = format!("What {holder} may hold.");
+    let holder = capitalised(&holder);
     let allowed = set.allowed_ident.upper_snake();
     match &set.allowed {
         Allowed::Range { min, max } => SetAllowed {
@@ -593,7 +597,7 @@ fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
             max: mapping_literal(set.holds, *max),
         },
         Allowed::Choices(values) => {
-            let choices = value_enum(values, format!("What {} may hold.", holder.to_lowercase()));
+            let choices = value_enum(values, what);
             SetAllowed {
                 doc: format!("{holder} holds one of the values of [`{}`].", choices.name),
                 allowed,
@@ -781,6 +785,17 @@ mod tests {
             assert!(layout.contains(line), "{line}\n{layout}");
         }
         assert!(!layout.contains("0xEA60"), "{layout}");
+    }
+
+    /// A setting's name keeps its case where the docs name it: P43.01 is
+    /// not p43.01.
+    #[test]
+    fn a_setting_is_named_as_the_description_writes_it() {
+        let layout = emit(&crate::testing::mv810_with_timeout());
+        assert!(
+            layout.contains("/// What Message type (P43.01) may hold.\n"),
+            "{layout}"
+        );
     }
 
     #[test]
