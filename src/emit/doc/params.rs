@@ -234,18 +234,11 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
             ]
         })
         .collect();
+    let name = lang.text(&record.name.text);
     doc.table(
         lang.f(
-            format!(
-                "Record {}: {}, {} bytes",
-                record.index, record.name.text.en, record.length
-            ),
-            format!(
-                "记录 {}：{}，{} 字节",
-                record.index,
-                lang.text(&record.name.text),
-                record.length
-            ),
+            format!("Record {}: {name}, {} bytes", record.index, record.length),
+            format!("记录 {}：{name}，{} 字节", record.index, record.length),
         ),
         &[
             lang.t("Bytes", "字节"),
