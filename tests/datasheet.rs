@@ -706,6 +706,21 @@ fn a_record_is_named_in_the_pages_language() {
     assert!(!german.contains("PZD out,"), "{german}");
 }
 
+/// MinDeviceInterval counts 31.25 µs: 10 is 312.5 µs, not 312.
+#[test]
+fn the_update_time_is_exact_to_the_quarter_microsecond() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/descriptions/mv810-pnet02.toml"
+    ))
+    .unwrap()
+    .replace("min_device_interval = 32", "min_device_interval = 10");
+    let ir = descriptions::load_text("mv810-pnet02.toml", &text).0.unwrap();
+    let md = gsdc::document(&ir).remove(1);
+    let md = String::from_utf8(md.contents).unwrap();
+    assert!(md.contains("| 10 × 31.25 µs = 312.5 µs |"), "{md}");
+}
+
 #[test]
 fn gsdc_doc_refuses_two_descriptions_with_one_name() {
     let out = scratch("twice");
