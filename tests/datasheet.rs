@@ -697,7 +697,9 @@ fn a_record_is_named_in_the_pages_language() {
         "pzd_out = 1\n",
         "pzd_out = { index = 1, name = { en = \"PZD out\", de = \"PZD aus\" } }\n",
     );
-    let ir = descriptions::load_text("no_warnings.toml", &text).0.unwrap();
+    let ir = descriptions::load_text("no_warnings.toml", &text)
+        .0
+        .unwrap();
     let html = gsdc::document(&ir).remove(0);
     let html = String::from_utf8(html.contents).unwrap();
     let (english, german) = html.split_at(html.find("<main lang=\"de\"").expect("a German page"));
@@ -715,7 +717,9 @@ fn the_update_time_is_exact_to_the_quarter_microsecond() {
     ))
     .unwrap()
     .replace("min_device_interval = 32", "min_device_interval = 10");
-    let ir = descriptions::load_text("mv810-pnet02.toml", &text).0.unwrap();
+    let ir = descriptions::load_text("mv810-pnet02.toml", &text)
+        .0
+        .unwrap();
     let md = gsdc::document(&ir).remove(1);
     let md = String::from_utf8(md.contents).unwrap();
     assert!(md.contains("| 10 × 31.25 µs = 312.5 µs |"), "{md}");
