@@ -16,7 +16,9 @@
 //! A comment the template writes around the names it arranges goes through
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
-use super::{capitalised, mapping_literal, range_doc, Artifact, ArtifactKind};
+use super::{
+    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+};
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
@@ -532,14 +534,6 @@ fn field_mask(first: u8, last: u8) -> u16 {
     (first..=last).fold(0, |mask, bit| mask | 1 << bit)
 }
 
-fn bit_range(first: u16, last: u16) -> String {
-    if first == last {
-        format!("Bit {first}")
-    } else {
-        format!("Bits {first}-{last}")
-    }
-}
-
 /// The values of a set as macros named `<prefix>_<scope>_<set>_<value>`, and
 /// the function that tells whether a number is one of them.
 fn value_set_item(names: &Names, scope: &str, values: &ValueSet) -> ValueSetItem {
@@ -638,17 +632,6 @@ fn fixed_items(ir: &Ir, names: &Names, g: &MappingGroup, group: &str) -> Vec<Fix
             }
         })
         .collect()
-}
-
-fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
-        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
-        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
-        MappingKind::Dpv1Index => {
-            "The DPV1 record indexes: the parameter each one reads and writes."
-        }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
 }
 
 fn set_item(names: &Names, module: &str, set: &MappingSet, single: bool, end: usize) -> SetItem {

@@ -95,20 +95,10 @@ impl Lang {
     }
 }
 
-/// `md810dp.toml` gives `md810dp`.
-pub fn stem(ir: &Ir) -> String {
-    std::path::Path::new(&ir.source_name)
-        .file_stem()
-        .map_or_else(
-            || ir.source_name.clone(),
-            |s| s.to_string_lossy().into_owned(),
-        )
-}
-
 /// The datasheet of a description: `<stem>.html` and `<stem>.md`.
 pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
     let docs: Vec<page::Doc> = languages(ir).into_iter().map(|l| document(ir, l)).collect();
-    let stem = stem(ir);
+    let stem = super::source_stem(ir);
     vec![
         Artifact {
             kind: ArtifactKind::DatasheetHtml,

@@ -8,7 +8,9 @@
 
 mod gateway;
 
-use super::{capitalised, mapping_literal, range_doc, Artifact, ArtifactKind};
+use super::{
+    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, Profinet};
@@ -486,14 +488,6 @@ fn word_module(direction: Direction, word: &Word) -> WordModule {
     }
 }
 
-fn bit_range(first: u16, last: u16) -> String {
-    if first == last {
-        format!("Bit {first}")
-    } else {
-        format!("Bits {first}-{last}")
-    }
-}
-
 fn value_enum(values: &ValueSet, doc: String) -> ValueEnum {
     ValueEnum {
         name: values.ident.camel(),
@@ -562,17 +556,6 @@ fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
             }
         })
         .collect()
-}
-
-fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
-        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
-        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
-        MappingKind::Dpv1Index => {
-            "The DPV1 record indexes: the parameter each one reads and writes."
-        }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
 }
 
 /// A group with one set says "each entry" in its docs; a set of a group of
