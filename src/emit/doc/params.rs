@@ -184,11 +184,7 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let prm_offset = |key: EntryKey| {
         ir.profibus
             .as_ref()
-            .and_then(|p| {
-                p.user_prm
-                    .params()
-                    .find(|q| q.value == PrmValue::Entry(key))
-            })
+            .and_then(|p| p.user_prm.placed(PrmValue::Entry(key)))
             .map(|q| q.offset)
     };
     let rows = group
