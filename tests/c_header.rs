@@ -283,7 +283,7 @@ fn all_layouts_compile_together_in_one_translation_unit() {
 }
 
 /// The tests `tests/c/manuals.c` runs: the Rust firmware crate's, one by one.
-const MANUAL_TESTS: [&str; 37] = [
+const MANUAL_TESTS: [&str; 38] = [
     "md810_read_f0_08",
     "md810_answer_50_hz",
     "md810_write_20_hz",
@@ -321,6 +321,7 @@ const MANUAL_TESTS: [&str; 37] = [
     "profidrive_write_a_word_to_p10_05",
     "profidrive_error_answer",
     "profidrive_an_illegal_id_is_refused",
+    "profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it",
 ];
 
 /// The values of `key` in the GSD gsdc generates from `name`, one per line

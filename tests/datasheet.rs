@@ -696,6 +696,46 @@ fn every_language_of_the_description_has_its_page() {
     );
 }
 
+/// A record's caption names it in the page's language: German on the
+/// German page, not the English name.
+#[test]
+fn a_record_is_named_in_the_pages_language() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/valid/no_warnings.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "pzd_out = 1\n",
+        "pzd_out = { index = 1, name = { en = \"PZD out\", de = \"PZD aus\" } }\n",
+    );
+    let ir = descriptions::load_text("no_warnings.toml", &text)
+        .0
+        .unwrap();
+    let html = gsdc::document(&ir).remove(0);
+    let html = String::from_utf8(html.contents).unwrap();
+    let (english, german) = html.split_at(html.find("<main lang=\"de\"").expect("a German page"));
+    assert!(english.contains("Record 1: PZD out,"), "{english}");
+    assert!(german.contains("Record 1: PZD aus,"), "{german}");
+    assert!(!german.contains("PZD out,"), "{german}");
+}
+
+/// MinDeviceInterval counts 31.25 µs: 10 is 312.5 µs, not 312.
+#[test]
+fn the_update_time_is_exact_to_the_quarter_microsecond() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/descriptions/mv810-pnet02.toml"
+    ))
+    .unwrap()
+    .replace("min_device_interval = 32", "min_device_interval = 10");
+    let ir = descriptions::load_text("mv810-pnet02.toml", &text)
+        .0
+        .unwrap();
+    let md = gsdc::document(&ir).remove(1);
+    let md = String::from_utf8(md.contents).unwrap();
+    assert!(md.contains("| 10 × 31.25 µs = 312.5 µs |"), "{md}");
+}
+
 #[test]
 fn gsdc_doc_refuses_two_descriptions_with_one_name() {
     let out = scratch("twice");

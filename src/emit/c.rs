@@ -16,7 +16,9 @@
 //! A comment the template writes around the names it arranges goes through
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
-use super::{Artifact, ArtifactKind};
+use super::{
+    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+};
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
@@ -224,6 +226,18 @@ struct PnModuleItem {
     name: String,
     doc: String,
     ident: String,
+    profidrive: Option<ProfidriveItem>,
+}
+
+/// Where a PROFIdrive module's submodules are: the profile's API, the
+/// module access point's subslot and ident number, the telegram's subslot.
+#[derive(Serialize)]
+struct ProfidriveItem {
+    doc: String,
+    api: String,
+    access_point_subslot: String,
+    access_point_ident: String,
+    data_subslot: String,
 }
 
 /// The C firmware layout of a description.
@@ -520,14 +534,6 @@ fn field_mask(first: u8, last: u8) -> u16 {
     (first..=last).fold(0, |mask, bit| mask | 1 << bit)
 }
 
-fn bit_range(first: u16, last: u16) -> String {
-    if first == last {
-        format!("Bit {first}")
-    } else {
-        format!("Bits {first}-{last}")
-    }
-}
-
 /// The values of a set as macros named `<prefix>_<scope>_<set>_<value>`, and
 /// the function that tells whether a number is one of them.
 fn value_set_item(names: &Names, scope: &str, values: &ValueSet) -> ValueSetItem {
@@ -628,17 +634,6 @@ fn fixed_items(ir: &Ir, names: &Names, g: &MappingGroup, group: &str) -> Vec<Fix
         .collect()
 }
 
-fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
-        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
-        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
-        MappingKind::Dpv1Index => {
-            "The DPV1 record indexes: the parameter each one reads and writes."
-        }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
-}
-
 fn set_item(names: &Names, module: &str, set: &MappingSet, single: bool, end: usize) -> SetItem {
     let holder = if single {
         "each entry".to_string()
@@ -651,17 +646,13 @@ fn set_item(names: &Names, module: &str, set: &MappingSet, single: bool, end: us
     let holder = capitalised(&holder);
     match &set.allowed {
         Allowed::Range { min, max } => SetItem {
-            doc: comment(&format!(
-                "{holder} holds a parameter address from {} to {}.",
-                hex16(*min),
-                hex16(*max)
-            )),
+            doc: comment(&range_doc(&holder, set.holds, *min, *max)),
             allowed: names.lower(&base),
             allowed_doc,
             end,
             choices: None,
-            min: format!("{}U", hex16(*min)),
-            max: format!("{}U", hex16(*max)),
+            min: format!("{}U", mapping_literal(set.holds, *min)),
+            max: format!("{}U", mapping_literal(set.holds, *max)),
             check: range_check(&name, *min, *max),
             name,
         },
@@ -716,11 +707,7 @@ fn set_entries<'a>(
             number,
             doc: comment(&format!("{what}: \"{}\".", e.name.en)),
             name: c_string(&e.name.en),
-            default: if is_address {
-                format!("{}U", hex16(e.default))
-            } else {
-                format!("{}U", e.default)
-            },
+            default: format!("{}U", mapping_literal(set.holds, e.default)),
             default_comment: if is_address {
                 name_of(e.default)
             } else {
@@ -840,6 +827,16 @@ fn profinet_items(names: &Names, p: &Profinet) -> ProfinetItems {
                     m.name.text.en
                 )),
                 ident: hex32(m.ident_number),
+                profidrive: m.is_profidrive().then(|| ProfidriveItem {
+                    doc: comment(&format!(
+                        "Module \"{}\" is PROFIdrive's: its submodules are in the profile's API, the module access point (no data) in its subslot with its ident number, the telegram in the data subslot.",
+                        m.name.text.en
+                    )),
+                    api: hex32(profinet::PROFIDRIVE_API),
+                    access_point_subslot: format!("{}U", profinet::ACCESS_POINT_SUBSLOT),
+                    access_point_ident: hex32(profinet::ACCESS_POINT_IDENT),
+                    data_subslot: format!("{}U", profinet::PROFIDRIVE_DATA_SUBSLOT),
+                }),
             })
             .collect(),
     }
@@ -859,13 +856,6 @@ fn hex16(value: u16) -> String {
 /// `0x00000202UL`: an unsigned long, which holds 32 bits where int has 16.
 fn hex32(value: u32) -> String {
     format!("0x{value:08X}UL")
-}
-
-fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    chars
-        .next()
-        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// `#define NAME { a, b }`, wrapped with continuation lines when long.
@@ -1106,6 +1096,22 @@ mod tests {
         let ir = load("9kdp1.toml", include_str!("../../descriptions/9kdp1.toml"));
         assert_eq!(file_name(&ir), "9kdp1_layout.h");
         assert_eq!(prefix(&ir).upper_snake(), "GSDC_9KDP1");
+    }
+
+    /// A timeout is a plain value: its bounds and default in decimal, and
+    /// said to be a value, not a parameter address.
+    #[test]
+    fn a_range_of_plain_values_is_written_in_decimal() {
+        let header = emit(&crate::testing::mv810_with_timeout());
+        for line in [
+            "Communication timeout (P43.24)\" holds a value from 0 to 60000.",
+            "#define MV810_PNET02_SETTINGS_ALLOWED_2_MIN 0U\n",
+            "#define MV810_PNET02_SETTINGS_ALLOWED_2_MAX 60000U\n",
+            "#define MV810_PNET02_SETTINGS_2_DEFAULT 100U\n",
+        ] {
+            assert!(header.contains(line), "{line}\n{header}");
+        }
+        assert!(!header.contains("0xEA60"), "{header}");
     }
 
     #[test]

@@ -19,7 +19,7 @@ mod svg;
 mod telegrams;
 
 use super::{Artifact, ArtifactKind};
-use crate::ir::{Allowed, DecisionKind, Ir, MappingEntry, MappingSet, Text};
+use crate::ir::{Allowed, DecisionKind, Holds, Ir, MappingEntry, MappingSet, Text};
 use page::{Builder, Cell, Run};
 
 /// A language of the datasheet: the description's texts in it, and gsdc's
@@ -95,20 +95,10 @@ impl Lang {
     }
 }
 
-/// `md810dp.toml` gives `md810dp`.
-pub fn stem(ir: &Ir) -> String {
-    std::path::Path::new(&ir.source_name)
-        .file_stem()
-        .map_or_else(
-            || ir.source_name.clone(),
-            |s| s.to_string_lossy().into_owned(),
-        )
-}
-
 /// The datasheet of a description: `<stem>.html` and `<stem>.md`.
 pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
     let docs: Vec<page::Doc> = languages(ir).into_iter().map(|l| document(ir, l)).collect();
-    let stem = stem(ir);
+    let stem = super::source_stem(ir);
     vec![
         Artifact {
             kind: ArtifactKind::DatasheetHtml,
@@ -177,10 +167,11 @@ fn drive_name(ir: &Ir, value: u16) -> Option<String> {
     ir.numbering.as_ref()?.format(value)
 }
 
-/// A mapping's value: an address for a range, a choice's text for choices.
+/// A mapping's value: an address, a plain value, or a choice's text.
 fn mapping_value(ir: &Ir, lang: Lang, set: &MappingSet, value: u16) -> String {
     match &set.allowed {
-        Allowed::Range { .. } => address(ir, value),
+        Allowed::Range { .. } if set.holds == Holds::Address => address(ir, value),
+        Allowed::Range { .. } => value.to_string(),
         Allowed::Choices(values) => values
             .choices
             .iter()
@@ -192,13 +183,15 @@ fn mapping_value(ir: &Ir, lang: Lang, set: &MappingSet, value: u16) -> String {
     }
 }
 
-/// What a mapping may hold, in words.
+/// What a mapping may hold, in words; addresses in hex too, as the
+/// manuals write them.
 fn allowed(lang: Lang, set: &MappingSet) -> String {
     match &set.allowed {
-        Allowed::Range { min, max } => lang.f(
+        Allowed::Range { min, max } if set.holds == Holds::Address => lang.f(
             format!("{min} to {max} (0x{min:04X} to 0x{max:04X})"),
             format!("{min}～{max}（0x{min:04X}～0x{max:04X}）"),
         ),
+        Allowed::Range { min, max } => lang.f(format!("{min} to {max}"), format!("{min}～{max}")),
         Allowed::Choices(values) => lang.f(
             format!(
                 "one of {} choices ({})",
@@ -308,4 +301,24 @@ fn hex_bytes(bytes: &[u8]) -> String {
         .map(|b| format!("{b:02X}"))
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ir::{MappingKind, SetKey};
+
+    /// A timeout of 100 ms is 100, not the parameter at address 100
+    /// (`P00.100 (100)`), and its range has no hex.
+    #[test]
+    fn a_range_of_plain_values_is_shown_in_decimal() {
+        let ir = crate::testing::mv810_with_timeout();
+        let timeout = ir.mappings.set(SetKey {
+            kind: MappingKind::Setting,
+            first: 2,
+        });
+        assert_eq!(mapping_value(&ir, Lang::En, timeout, 100), "100");
+        assert_eq!(allowed(Lang::En, timeout), "0 to 60000");
+        assert_eq!(allowed(Lang::Zh, timeout), "0～60000");
+    }
 }

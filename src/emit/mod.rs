@@ -7,7 +7,7 @@ pub mod gsdml;
 pub mod rust;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Direction, Ir, PkwKind};
+use crate::ir::{Direction, Holds, Ir, MappingKind, PkwKind};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -101,18 +101,24 @@ impl ArtifactKind {
     }
 }
 
+/// The file stem of a description, the datasheet's: `mv810-pnet02` for
+/// `mv810-pnet02.toml`.
+fn source_stem(ir: &Ir) -> String {
+    std::path::Path::new(&ir.source_name)
+        .file_stem()
+        .map_or_else(
+            || ir.source_name.clone(),
+            |s| s.to_string_lossy().into_owned(),
+        )
+}
+
 /// The file stem of a description's layouts: `md810dp` for `md810dp.toml`,
 /// `mv810_pnet02` for `mv810-pnet02.toml`: `_` for every character that is
 /// not an ASCII letter, digit or `_` (as Rust names its source files), so a
 /// layout's name is a file name on every system and a module name.
 fn layout_stem(ir: &Ir) -> String {
-    let stem = std::path::Path::new(&ir.source_name)
-        .file_stem()
-        .map_or_else(
-            || ir.source_name.clone(),
-            |s| s.to_string_lossy().into_owned(),
-        );
-    stem.chars()
+    source_stem(ir)
+        .chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect()
 }
@@ -146,6 +152,60 @@ pub(crate) fn layout_contents(ir: &Ir) -> String {
         .chain(["the bus constants"])
         .collect();
     joined(&present, "and")
+}
+
+/// A mapping's value as generated code writes it: a parameter address in
+/// hex, as the manuals write addresses; a plain value or a choice in
+/// decimal.
+fn mapping_literal(holds: Holds, value: u16) -> String {
+    match holds {
+        Holds::Address => format!("0x{value:04X}"),
+        Holds::Value | Holds::Choice => value.to_string(),
+    }
+}
+
+/// `<holder> holds a parameter address from 0x2B02 to 0x2B0C.`, or `a
+/// value from 0 to 60000.`: what a range's entries are, in the generated
+/// code's doc comments.
+fn range_doc(holder: &str, holds: Holds, min: u16, max: u16) -> String {
+    let what = match holds {
+        Holds::Address => "a parameter address",
+        Holds::Value | Holds::Choice => "a value",
+    };
+    format!(
+        "{holder} holds {what} from {} to {}.",
+        mapping_literal(holds, min),
+        mapping_literal(holds, max)
+    )
+}
+
+/// What a group of mappings is, in the generated code's doc comments.
+fn group_doc(kind: MappingKind) -> &'static str {
+    match kind {
+        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
+        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
+        MappingKind::Dpv1Index => {
+            "The DPV1 record indexes: the parameter each one reads and writes."
+        }
+        MappingKind::Setting => "Drive settings the master gives at start-up.",
+    }
+}
+
+/// `Bit 3`, `Bits 9-10`: a field's bits, to begin a doc comment.
+fn bit_range(first: u16, last: u16) -> String {
+    if first == last {
+        format!("Bit {first}")
+    } else {
+        format!("Bits {first}-{last}")
+    }
+}
+
+/// `text` with its first letter upper case, to begin a sentence.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// `a, b and c` (or `a, b or c`).
@@ -373,6 +433,27 @@ mod tests {
         let text = include_str!("../../descriptions/md810dp.toml");
         let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
         gsd::emit(&ir, ir.profibus.as_ref().unwrap())
+    }
+
+    /// The datasheet keeps the description's stem; the layouts make it an
+    /// identifier.
+    #[test]
+    fn the_datasheet_and_the_layouts_are_named_after_the_description() {
+        let text = include_str!("../../descriptions/mv810-pnet02.toml");
+        let ir = crate::testing::load("mv810-pnet02.toml", text).0.unwrap();
+        assert_eq!(source_stem(&ir), "mv810-pnet02");
+        assert_eq!(layout_stem(&ir), "mv810_pnet02");
+        let names: Vec<String> = doc::datasheet(&ir)
+            .into_iter()
+            .map(|a| a.file_name)
+            .collect();
+        assert_eq!(names, ["mv810-pnet02.html", "mv810-pnet02.md"]);
+    }
+
+    #[test]
+    fn bits_are_one_or_a_range() {
+        assert_eq!(bit_range(3, 3), "Bit 3");
+        assert_eq!(bit_range(9, 10), "Bits 9-10");
     }
 
     #[test]

@@ -8,7 +8,9 @@
 
 mod gateway;
 
-use super::{Artifact, ArtifactKind};
+use super::{
+    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, Profinet};
@@ -486,14 +488,6 @@ fn word_module(direction: Direction, word: &Word) -> WordModule {
     }
 }
 
-fn bit_range(first: u16, last: u16) -> String {
-    if first == last {
-        format!("Bit {first}")
-    } else {
-        format!("Bits {first}-{last}")
-    }
-}
-
 fn value_enum(values: &ValueSet, doc: String) -> ValueEnum {
     ValueEnum {
         name: values.ident.camel(),
@@ -564,40 +558,29 @@ fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
         .collect()
 }
 
-fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
-        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
-        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
-        MappingKind::Dpv1Index => {
-            "The DPV1 record indexes: the parameter each one reads and writes."
-        }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
-}
-
 /// A group with one set says "each entry" in its docs; a set of a group of
 /// several (the settings) names its one entry.
 fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
     let holder = if single {
-        "Each entry".to_string()
+        "each entry".to_string()
     } else {
         doc_text(&set.entries[0].name.en)
     };
+    // The name as the description writes it (P43.01, not p43.01); only
+    // gsdc's own words are capitalised to begin a sentence.
+    let what = format!("What {holder} may hold.");
+    let holder = capitalised(&holder);
     let allowed = set.allowed_ident.upper_snake();
     match &set.allowed {
         Allowed::Range { min, max } => SetAllowed {
-            doc: format!(
-                "{holder} holds a parameter address from {} to {}.",
-                hex16(*min),
-                hex16(*max)
-            ),
+            doc: range_doc(&holder, set.holds, *min, *max),
             allowed,
             choices: None,
-            min: hex16(*min),
-            max: hex16(*max),
+            min: mapping_literal(set.holds, *min),
+            max: mapping_literal(set.holds, *max),
         },
         Allowed::Choices(values) => {
-            let choices = value_enum(values, format!("What {} may hold.", holder.to_lowercase()));
+            let choices = value_enum(values, what);
             SetAllowed {
                 doc: format!("{holder} holds one of the values of [`{}`].", choices.name),
                 allowed,
@@ -620,10 +603,11 @@ fn set_entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entr
             .map_or_else(String::new, |name| format!(" // {name}"))
     };
     set.entries.iter().map(move |e| {
-        let (default, default_comment) = if is_address {
-            (hex16(e.default), name_of(e.default))
+        let default = mapping_literal(set.holds, e.default);
+        let default_comment = if is_address {
+            name_of(e.default)
         } else {
-            (e.default.to_string(), String::new())
+            String::new()
         };
         Entry {
             name: format!("{:?}", e.name.en),
@@ -768,6 +752,33 @@ mod tests {
         assert_ne!(typo, TEMPLATE);
         let error = render(&typo, &ir).unwrap_err();
         assert_eq!(error.kind(), minijinja::ErrorKind::UndefinedError);
+    }
+
+    /// A timeout is a plain value: its bounds and default in decimal, and
+    /// said to be a value, not a parameter address.
+    #[test]
+    fn a_range_of_plain_values_is_written_in_decimal() {
+        let layout = emit(&crate::testing::mv810_with_timeout());
+        for line in [
+            "/// Communication timeout (P43.24) holds a value from 0 to 60000.\n",
+            "min: 0,\n",
+            "max: 60000,\n",
+            "default: 100,\n",
+        ] {
+            assert!(layout.contains(line), "{line}\n{layout}");
+        }
+        assert!(!layout.contains("0xEA60"), "{layout}");
+    }
+
+    /// A setting's name keeps its case where the docs name it: P43.01 is
+    /// not p43.01.
+    #[test]
+    fn a_setting_is_named_as_the_description_writes_it() {
+        let layout = emit(&crate::testing::mv810_with_timeout());
+        assert!(
+            layout.contains("/// What Message type (P43.01) may hold.\n"),
+            "{layout}"
+        );
     }
 
     #[test]

@@ -46,6 +46,28 @@ impl Gateway {
         }
     }
 
+    /// As few modules of `direction` as carry `words`, largest first; `None`
+    /// when none do (lowering made sure any total within the limit is made).
+    pub fn fewest_modules(&self, direction: Direction, words: usize) -> Option<Vec<&Module>> {
+        let modules: Vec<&Module> = self
+            .modules
+            .iter()
+            .filter(|m| m.direction == direction)
+            .collect();
+        let sizes: Vec<u8> = modules.iter().map(|m| m.words).collect();
+        let fewest = fewest_by_total(&sizes, words);
+        let mut plugged = Vec::new();
+        let mut total = words;
+        while total > 0 {
+            let (_, size) = fewest[total]?;
+            // A direction offers each size once.
+            plugged.push(*modules.iter().find(|m| m.words == size)?);
+            total -= usize::from(size);
+        }
+        plugged.sort_by_key(|m| std::cmp::Reverse(m.words));
+        Some(plugged)
+    }
+
     /// The parameters in the order User_Prm_Data holds them: the count, then
     /// each node's input words and output words.
     pub fn params(&self) -> impl Iterator<Item = &Param> {
@@ -122,6 +144,26 @@ pub struct Module {
     pub ident: Ident,
 }
 
+/// For each total of 0..=`words` words: the fewest modules of `sizes` (words
+/// each) that make it, and the largest size the last of them can be
+/// (`(0, 0)` for no words); `None` for a total no set of them makes.
+/// Lowering takes Max_Module from it, the datasheet the modules of its
+/// example.
+pub(crate) fn fewest_by_total(sizes: &[u8], words: usize) -> Vec<Option<(usize, u8)>> {
+    let mut fewest: Vec<Option<(usize, u8)>> = vec![None; words + 1];
+    fewest[0] = Some((0, 0));
+    for total in 1..=words {
+        fewest[total] = sizes
+            .iter()
+            .filter_map(|&size| {
+                let (before, _) = fewest[total.checked_sub(usize::from(size))?]?;
+                Some((before + 1, size))
+            })
+            .min_by_key(|&(n, size)| (n, std::cmp::Reverse(size)));
+    }
+    fewest
+}
+
 /// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
 /// the whole length, bit 6 words, bits 5-4 direction (01 input, 10
 /// output), bits 3-0 length - 1.
@@ -196,6 +238,35 @@ pub struct GsdArea {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// MD810's bridge, sizes 1, 2, 4, 8 and 16 words each way: 111 words
+    /// are 6 × 16 + 8 + 4 + 2 + 1, largest first; 0 words need none.
+    #[test]
+    fn the_fewest_modules_carry_the_words_largest_first() {
+        let text = include_str!("../../descriptions/md810-gateway.toml");
+        let ir = crate::testing::load("md810-gateway.toml", text).0.unwrap();
+        let g = ir.gateway.as_ref().unwrap();
+        let words = |direction, total| -> Vec<u8> {
+            let plugged = g.fewest_modules(direction, total).unwrap();
+            assert!(plugged.iter().all(|m| m.direction == direction));
+            plugged.iter().map(|m| m.words).collect()
+        };
+        assert_eq!(
+            words(Direction::In, 111),
+            [16, 16, 16, 16, 16, 16, 8, 4, 2, 1]
+        );
+        assert_eq!(words(Direction::Out, 64), [16, 16, 16, 16]);
+        assert!(words(Direction::In, 0).is_empty());
+    }
+
+    #[test]
+    fn sizes_that_leave_a_total_out_make_none_of_it() {
+        let fewest = fewest_by_total(&[2, 4], 8);
+        assert_eq!(fewest[0], Some((0, 0)));
+        assert_eq!(fewest[1], None);
+        assert_eq!(fewest[6], Some((2, 4)));
+        assert_eq!(fewest[8], Some((2, 4)));
+    }
 
     #[test]
     fn config_bytes_say_words_direction_and_length() {

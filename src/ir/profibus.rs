@@ -139,6 +139,12 @@ impl UserPrm {
     pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
         self.blocks.iter().find(|b| b.kind == kind)
     }
+
+    /// The parameter that holds `value`, where the plan places it; `None`
+    /// for a mapping entry the telegram does not carry.
+    pub fn placed(&self, value: PrmValue) -> Option<&PrmParam> {
+        self.params().find(|p| p.value == value)
+    }
 }
 
 /// The parameters of one kind of mapping, consecutive from `offset`.
@@ -355,6 +361,34 @@ mod tests {
 
     fn config(ppo: u8, ppo5: u8) -> Vec<u8> {
         config_bytes(ppo_layout(ppo, ppo5).unwrap())
+    }
+
+    /// Every parameter is found by what it holds, a mapping entry or a
+    /// gateway parameter; an entry the telegram does not carry is not.
+    #[test]
+    fn parameters_are_found_by_what_they_hold() {
+        for (name, text) in [
+            (
+                "md810dp.toml",
+                include_str!("../../descriptions/md810dp.toml"),
+            ),
+            (
+                "md810-gateway.toml",
+                include_str!("../../descriptions/md810-gateway.toml"),
+            ),
+        ] {
+            let ir = crate::testing::load(name, text).0.unwrap();
+            let user_prm = &ir.profibus.as_ref().unwrap().user_prm;
+            assert!(user_prm.params().count() > 0, "{name}");
+            for param in user_prm.params() {
+                assert_eq!(user_prm.placed(param.value), Some(param), "{name}");
+            }
+            let setting = EntryKey {
+                kind: MappingKind::Setting,
+                number: 1,
+            };
+            assert_eq!(user_prm.placed(PrmValue::Entry(setting)), None, "{name}");
+        }
     }
 
     #[test]

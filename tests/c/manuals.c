@@ -1038,6 +1038,18 @@ static void profidrive_an_illegal_id_is_refused(void)
     CHECK(same_bytes(pkw, untouched, GSDC_PKW_BYTES));
 }
 
+/* Standard telegram 1 where the fixture's GSDML places it: its submodules
+ * in PROFIdrive's API (0x3A00), the module access point in subslot 1 with
+ * ident number 0xFFFF, the telegram in subslot 2. */
+static void profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it(void)
+{
+    CHECK(PROFIDRIVE_TELEGRAM1_API == 14848UL);
+    CHECK(PROFIDRIVE_TELEGRAM1_ACCESS_POINT_SUBSLOT == 1U);
+    CHECK(PROFIDRIVE_TELEGRAM1_ACCESS_POINT_IDENT == 0xFFFFUL);
+    CHECK(PROFIDRIVE_TELEGRAM1_DATA_SUBSLOT == 2U);
+    CHECK(PROFIDRIVE_TELEGRAM1_IDENT == 0x10UL);
+}
+
 /* ------------------------------------------------------------------------ */
 
 static const test_t tests[] = {
@@ -1083,6 +1095,8 @@ static const test_t tests[] = {
     {"profidrive_write_a_word_to_p10_05", profidrive_write_a_word_to_p10_05},
     {"profidrive_error_answer", profidrive_error_answer},
     {"profidrive_an_illegal_id_is_refused", profidrive_an_illegal_id_is_refused},
+    {"profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it",
+     profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it},
 };
 
 int main(void)

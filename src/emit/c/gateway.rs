@@ -160,9 +160,7 @@ pub(super) fn items(names: &Names, g: &Gateway, p: &Profibus) -> Items {
 fn field_members(p: &Profibus, key: ParamKey, [min, max, default]: [String; 3]) -> Vec<String> {
     let placed = p
         .user_prm
-        .gateway
-        .iter()
-        .find(|param| param.value == PrmValue::Gateway(key))
+        .placed(PrmValue::Gateway(key))
         .expect("lowering places every gateway parameter");
     let (data_type, first, last) = match placed.data_type {
         PrmType::Unsigned8 => ("GSDC_PRM_UNSIGNED8", 0, 0),

@@ -421,7 +421,10 @@ fn example_modules_table(doc: &mut Builder, g: &Gateway, example: &Example, lang
     let mut rows = Vec::new();
     for direction in [Direction::In, Direction::Out] {
         let words = example.words(direction);
-        let Some(plugged) = fewest_modules(g, direction, words) else {
+        let Some(plugged) = usize::try_from(words)
+            .ok()
+            .and_then(|words| g.fewest_modules(direction, words))
+        else {
             continue;
         };
         let names: Vec<String> = runs(&plugged)
@@ -452,38 +455,6 @@ fn example_modules_table(doc: &mut Builder, g: &Gateway, example: &Example, lang
         ],
         rows,
     );
-}
-
-/// As few modules of `direction` as carry `words`, largest first; `None`
-/// when none do (lowering made sure any total within the limit is made).
-fn fewest_modules(g: &Gateway, direction: Direction, words: u32) -> Option<Vec<&Module>> {
-    let sizes: Vec<&Module> = g
-        .modules
-        .iter()
-        .filter(|m| m.direction == direction)
-        .collect();
-    let words = usize::try_from(words).ok()?;
-    // best[t]: the fewest modules that make t words, and the last of them.
-    let mut best: Vec<Option<(usize, &Module)>> = vec![None; words + 1];
-    for total in 1..=words {
-        best[total] = sizes
-            .iter()
-            .filter_map(|&m| {
-                let rest = total.checked_sub(usize::from(m.words))?;
-                let before = if rest == 0 { 0 } else { best[rest]?.0 };
-                Some((before + 1, m))
-            })
-            .min_by_key(|&(n, m)| (n, std::cmp::Reverse(m.words)));
-    }
-    let mut plugged = Vec::new();
-    let mut total = words;
-    while total > 0 {
-        let (_, m) = best[total]?;
-        plugged.push(m);
-        total -= usize::from(m.words);
-    }
-    plugged.sort_by_key(|m| std::cmp::Reverse(m.words));
-    Some(plugged)
 }
 
 /// Equal modules next to each other, counted.

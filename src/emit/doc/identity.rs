@@ -242,8 +242,9 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
 }
 
 fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
-    // MinDeviceInterval counts 31.25 us.
-    let micros = u32::from(p.min_device_interval) * 3125 / 100;
+    // MinDeviceInterval counts 31.25 us = 125/4 us: a binary fraction, so
+    // the product is exact in an f64 and prints as 312.5, not truncated.
+    let micros = f64::from(p.min_device_interval) * 31.25;
     let rows = vec![
         (
             lang.t("GSDML version", "GSDML 版本"),

@@ -184,11 +184,7 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let prm_offset = |key: EntryKey| {
         ir.profibus
             .as_ref()
-            .and_then(|p| {
-                p.user_prm
-                    .params()
-                    .find(|q| q.value == PrmValue::Entry(key))
-            })
+            .and_then(|p| p.user_prm.placed(PrmValue::Entry(key)))
             .map(|q| q.offset)
     };
     let rows = group
@@ -234,18 +230,11 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
             ]
         })
         .collect();
+    let name = lang.text(&record.name.text);
     doc.table(
         lang.f(
-            format!(
-                "Record {}: {}, {} bytes",
-                record.index, record.name.text.en, record.length
-            ),
-            format!(
-                "记录 {}：{}，{} 字节",
-                record.index,
-                lang.text(&record.name.text),
-                record.length
-            ),
+            format!("Record {}: {name}, {} bytes", record.index, record.length),
+            format!("记录 {}：{name}，{} 字节", record.index, record.length),
         ),
         &[
             lang.t("Bytes", "字节"),

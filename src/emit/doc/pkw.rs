@@ -4,7 +4,7 @@
 
 use super::page::{code, text, Builder, Cell, Run};
 use super::{bytes, parameter_name, Lang};
-use crate::ir::{Allowed, Ir, PkwKind};
+use crate::ir::{Holds, Ir, PkwKind};
 use crate::pkw::profidrive::{Meaning, PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
 use crate::pkw::{pkw_station_command as station, U16Be};
@@ -50,7 +50,7 @@ fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
             .flat_map(|s| s.entries.iter().map(move |e| (s, e)))
     };
     let default = entries()
-        .find(|(s, _)| matches!(s.allowed, Allowed::Range { .. }))
+        .find(|(s, _)| s.holds == Holds::Address)
         .map(|(_, e)| {
             let why = lang.f(
                 format!("the default of {}", lang.text(&e.name)),
@@ -938,5 +938,10 @@ mod tests {
             (address, why.as_str()),
             (0x2B02, "the parameter that sets PZD2 receive")
         );
+        // A setting's timeout of 100 ms is a value, not the parameter at
+        // address 100: the example stays P43.02.
+        let with_timeout = crate::testing::mv810_with_timeout();
+        let (address, _) = example_parameter(&with_timeout, Lang::En).unwrap();
+        assert_eq!(address, 0x2B02);
     }
 }

@@ -4,7 +4,7 @@
 
 use super::{doc_text, hex_bytes, value_enum, ValueEnum};
 use crate::ir::gateway::{DiagCode, Diagnosis, Gateway, ParamKey};
-use crate::ir::profibus::{PrmParam, PrmType, PrmValue, Profibus};
+use crate::ir::profibus::{PrmType, PrmValue, Profibus};
 use crate::ir::Direction;
 use serde::Serialize;
 
@@ -122,11 +122,9 @@ pub(super) fn items(g: &Gateway, p: &Profibus) -> Items {
 /// `PrmField::new(1, PrmType::Unsigned8, [0, 8], 0)`: where User_Prm_Data's
 /// plan puts the parameter, and what it may hold.
 fn field_value(g: &Gateway, p: &Profibus, key: ParamKey) -> String {
-    let placed: &PrmParam = p
+    let placed = p
         .user_prm
-        .gateway
-        .iter()
-        .find(|param| param.value == PrmValue::Gateway(key))
+        .placed(PrmValue::Gateway(key))
         .expect("lowering places every gateway parameter");
     let data_type = match placed.data_type {
         PrmType::Unsigned8 => "PrmType::Unsigned8".to_string(),

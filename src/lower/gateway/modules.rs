@@ -5,7 +5,7 @@ use super::super::checks::Checker;
 use super::words_of;
 use crate::description::gateway as raw;
 use crate::diag::Diagnostic;
-use crate::ir::gateway::{config_byte, Module};
+use crate::ir::gateway::{config_byte, fewest_by_total, Module};
 use crate::ir::profibus::MAX_WORDS_PER_IDENTIFIER;
 use crate::ir::{Direction, Ident};
 use std::collections::BTreeSet;
@@ -84,25 +84,11 @@ fn module_sizes(cx: &mut Checker, words: &Spanned<Vec<Spanned<i64>>>) -> Vec<u8>
 /// The most modules of `sizes` any total of 0..=`words` words needs when
 /// made of as few as it can be; or the first total no set of them makes.
 fn fewest_modules(sizes: &[u8], words: u16) -> Result<usize, u16> {
-    let words = usize::from(words);
-    // fewest[t]: the fewest modules that make t words, if any do.
-    let mut fewest: Vec<Option<usize>> = vec![None; words + 1];
-    fewest[0] = Some(0);
-    for total in 1..=words {
-        fewest[total] = sizes
-            .iter()
-            .filter_map(|&size| {
-                fewest
-                    .get(total.checked_sub(usize::from(size))?)?
-                    .map(|n| n + 1)
-            })
-            .min();
-    }
-    fewest
+    fewest_by_total(sizes, usize::from(words))
         .iter()
         .enumerate()
-        .try_fold(0, |most, (total, n)| match n {
-            Some(n) => Ok(most.max(*n)),
+        .try_fold(0, |most, (total, fewest)| match fewest {
+            Some((n, _)) => Ok(most.max(*n)),
             None => Err(total as u16),
         })
 }
