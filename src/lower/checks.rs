@@ -118,9 +118,10 @@ impl Checker {
     }
 
     /// Not empty, and no character that a device file, a generated header
-    /// or generated code cannot hold safely.
-    pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) {
-        if s.trim().is_empty() {
+    /// or generated code cannot hold safely; whether it is both.
+    pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) -> bool {
+        let empty = s.trim().is_empty();
+        if empty {
             self.push(
                 Diagnostic::error("E117", format!("{what} is empty"))
                     .at(span.clone())
@@ -128,17 +129,19 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        if let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) {
-            self.push(
-                Diagnostic::error(
-                    "E135",
-                    format!("{what} has {}, a control or formatting character", char_name(bad)),
-                )
-                .at(span)
-                .label("not a printable character")
-                .help("remove it: device files and generated code show texts as they are, and such a character breaks a line, a string or the reading order"),
-            );
-        }
+        let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) else {
+            return !empty;
+        };
+        self.push(
+            Diagnostic::error(
+                "E135",
+                format!("{what} has {}, a control or formatting character", char_name(bad)),
+            )
+            .at(span)
+            .label("not a printable character")
+            .help("remove it: device files and generated code show texts as they are, and such a character breaks a line, a string or the reading order"),
+        );
+        false
     }
 
     /// A string that goes into the GSD: not empty, 7-bit printable ASCII
@@ -374,7 +377,7 @@ fn is_unsafe_char(c: char) -> bool {
 
 /// A character as a message shows it: itself in backticks when it prints,
 /// its code point when it does not.
-fn char_name(c: char) -> String {
+pub fn char_name(c: char) -> String {
     if is_unsafe_char(c) || c.is_whitespace() && c != ' ' {
         format!("U+{:04X}", u32::from(c))
     } else {
