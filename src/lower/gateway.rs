@@ -211,7 +211,7 @@ fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
 }
 
 /// `1 word`, `3 words`.
-fn words_of(words: u16) -> String {
+fn words_of(words: u32) -> String {
     match words {
         1 => "1 word".to_string(),
         n => format!("{n} words"),

@@ -150,14 +150,15 @@ pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[No
                 .help("a node past the count carries no data: give it 0 words, or raise the node count's default"),
             );
         }
-        let words: u16 = w
+        // 255 nodes of 255 words are 130050 bytes: more than 16 bits hold.
+        let words: u32 = w
             .params
             .iter()
             .take(in_use)
-            .map(|p| u16::from(p.default))
+            .map(|p| u32::from(p.default))
             .sum();
         let (bytes, max_len) = (2 * words, w.max_len);
-        if bytes > max_len {
+        if bytes > u32::from(max_len) {
             let way = match w.direction {
                 Direction::In => "input",
                 Direction::Out => "output",
