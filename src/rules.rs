@@ -73,7 +73,7 @@ pub const RULES: &[Rule] = &[
     rule("E135", "a control or formatting character in a text"),
     rule("E136", "a choice that marks nothing"),
     rule("E137", "not a language code"),
-    rule("E139", "record_length where there are no records"),
+    rule("E139", "a record where there are no records"),
     rule(
         "E140",
         "a setting fixed per module without modules that fix it",

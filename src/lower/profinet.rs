@@ -27,7 +27,7 @@ pub fn lower(
     desc: &raw::Description,
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
-    let records = records::plans(cx, p, mappings);
+    let records = records::plans(cx, p, desc, mappings);
     let interface_properties = interface::properties(cx, p);
     let near = p.span();
     let p = p.get_ref();
