@@ -335,6 +335,17 @@ impl Checker {
         self.in_range((*v.get_ref()).into(), min, max, v.span(), what)
     }
 
+    /// E109: a range `[min, max]` written the wrong way round.
+    pub fn reversed(&mut self, span: Range<usize>, min: impl ToString, max: impl ToString) {
+        let (min, max) = (min.to_string(), max.to_string());
+        self.push(
+            Diagnostic::error("E109", format!("range [{min}, {max}] is reversed"))
+                .at(span)
+                .label("minimum above maximum")
+                .help("write the range as [minimum, maximum]"),
+        );
+    }
+
     /// E105 for the second and later occurrences of a key.
     pub fn duplicate(&mut self, what: String, span: Range<usize>) {
         self.push(

@@ -353,12 +353,7 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
                 resolve_address(cx, max, numbering)?,
             );
             if min > max {
-                cx.push(
-                    Diagnostic::error("E109", format!("range [{min}, {max}] is reversed"))
-                        .at(range.span())
-                        .label("minimum above maximum")
-                        .help("write the range as [minimum, maximum]"),
-                );
+                cx.reversed(range.span(), min, max);
                 return None;
             }
             Some(Allowed::Range { min, max })
@@ -394,9 +389,9 @@ fn parameter_base(
     )
 }
 
-/// The longest name is the last entry's: check that one for the GSD, in
-/// the form the GSD shows.
-fn check_rendered_name(
+/// The longest name is the last entry's or node's: check that one for the
+/// GSD, in the form the GSD shows.
+pub(super) fn check_rendered_name(
     cx: &mut Checker,
     raw_name: &Spanned<raw::Text>,
     name: &Text,
@@ -415,7 +410,8 @@ fn check_rendered_name(
     cx.check_gsd_text(rendered.for_gsd(), span, GSD_NAME_LEN, what);
 }
 
-fn render(name: &Text, number: u8) -> Text {
+/// A name with `{n}` as the entry's or node's number.
+pub(super) fn render(name: &Text, number: u8) -> Text {
     let n = number.to_string();
     name.map(|text| text.replace("{n}", &n))
 }
