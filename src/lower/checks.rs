@@ -223,13 +223,19 @@ impl Checker {
     pub fn text(&mut self, t: &Spanned<Text>, gsd_limit: Option<usize>, what: &str) -> ir::Text {
         let text = t.get_ref();
         let en_span = text.en_span(&t.span());
-        self.non_empty(text.en.get_ref(), en_span.clone(), what);
-        if let Some(limit) = gsd_limit {
-            let (gsd, span) = text
-                .gsd
-                .as_ref()
-                .map_or((text.en.get_ref(), en_span), |g| (g.get_ref(), g.span()));
-            self.check_gsd_text(gsd, span, limit, what);
+        let en_ok = self.non_empty(text.en.get_ref(), en_span.clone(), what);
+        match (&text.gsd, gsd_limit) {
+            (Some(gsd), Some(limit)) => self.check_gsd_text(gsd.get_ref(), gsd.span(), limit, what),
+            // The English, refused above, is not refused again.
+            (None, Some(limit)) if en_ok => {
+                self.check_gsd_text(text.en.get_ref(), en_span, limit, what);
+            }
+            // A short form that only a rendered name puts into a GSD (its
+            // caller checks it there), or nothing does: a text all the same.
+            (Some(gsd), None) => {
+                self.non_empty(gsd.get_ref(), gsd.span(), what);
+            }
+            (None, _) => {}
         }
         for (code, other) in &text.others {
             self.non_empty(other.get_ref(), other.span(), what);
@@ -367,6 +373,12 @@ enum GsdForm {
 
 pub fn is_gsd_char(c: char) -> bool {
     (' '..='~').contains(&c) && c != '"'
+}
+
+/// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked
+/// again.
+pub fn is_clean(s: &str) -> bool {
+    !s.trim().is_empty() && !s.chars().any(is_unsafe_char)
 }
 
 /// Control characters (C0, DEL, C1), the line and paragraph separators,

@@ -1,7 +1,7 @@
 //! Mappings: PZD words each way and DPV1 indexes, each numbered entry with
 //! its default and what it may hold; and the settings, each a set of one.
 
-use super::checks::{Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
+use super::checks::{self, Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
 use super::resolve_address;
 use super::telegram::value_set;
 use crate::description as raw;
@@ -178,6 +178,14 @@ fn lower_settings(
         .take(MAX_SETTINGS)
         .zip(1..=u8::MAX)
         .filter_map(|(s, number)| {
+            if let (Some(holds), Some(_)) = (&s.holds, &s.choices) {
+                cx.push(
+                    Diagnostic::error("E002", "`holds` on a setting with `choices`")
+                        .at(holds.span())
+                        .label("means nothing here")
+                        .help("a setting with choices holds one of them: remove `holds`, which says what a range holds"),
+                );
+            }
             let default = (
                 resolve_address(cx, &s.default, numbering)?,
                 s.default.span(),
@@ -398,8 +406,8 @@ pub(super) fn check_rendered_name(
     last: u8,
     what: &str,
 ) {
-    if name.en.trim().is_empty() {
-        return; // already reported as empty
+    if !checks::is_clean(name.for_gsd()) {
+        return; // already reported by `Checker::text`
     }
     let raw = raw_name.get_ref();
     let span = raw

@@ -163,6 +163,17 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
             .unwrap_or(DEFAULT_PPO5_PZD_WORDS),
         None => DEFAULT_PPO5_PZD_WORDS,
     };
+    if let Some(words) = &p.ppo5_pzd_words {
+        let ppo5 = p.ppo_types.as_ref().map(Spanned::get_ref);
+        if !ppo5.is_some_and(|types| types.iter().any(|t| t.get_ref() == "PPO5")) {
+            cx.push(
+                Diagnostic::error("E002", "ppo5_pzd_words without PPO5 in ppo_types")
+                    .at(words.span())
+                    .label("no PPO5 to size")
+                    .help("ppo5_pzd_words gives PPO5's PZD words: add \"PPO5\" to ppo_types, or remove it"),
+            );
+        }
+    }
     // Without a gateway, lowering refused a description without them.
     let Some(ppo_types) = &p.ppo_types else {
         return Vec::new();
