@@ -33,7 +33,8 @@ pub fn lower(
         return (None, Diagnostics(vec![missing]));
     }
     let mut cx = Checker::new(desc.profibus.is_some());
-    if desc.profibus.is_none() && desc.profinet.is_none() {
+    // A gateway's description without a bus is told it needs [profibus] (E144).
+    if desc.profibus.is_none() && desc.profinet.is_none() && desc.gateway.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
         cx.push(
             Diagnostic::error("E110", "the description targets no bus")

@@ -24,6 +24,8 @@ pub(super) fn modules(
         .collect();
     let most = match fewest {
         Ok(needed) => needed.iter().sum(),
+        // No valid size at all was refused where each was written (E101).
+        Err(_) if sizes.is_empty() => 0,
         Err(words) => {
             cx.push(
                 Diagnostic::error("E147", format!("no set of these modules carries {}", words_of(words.into())))
