@@ -73,7 +73,7 @@ pub const RULES: &[Rule] = &[
     rule("E135", "a control or formatting character in a text"),
     rule("E136", "a choice that marks nothing"),
     rule("E137", "not a language code"),
-    rule("E139", "record_length where there are no records"),
+    rule("E139", "a record where there are no records"),
     rule(
         "E140",
         "a setting fixed per module without modules that fix it",
@@ -92,6 +92,7 @@ pub const RULES: &[Rule] = &[
     rule("E152", "media redundancy with one port"),
     rule("E153", "standard telegram 1 without PROFIdrive said"),
     rule("E154", "a parameter beyond the PROFIdrive PNUs"),
+    rule("E155", "not a function-code prefix or separator"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

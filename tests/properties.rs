@@ -70,7 +70,9 @@ prop_compose! {
         if types.is_empty() {
             types.push("\"PPO3\"".into());
         }
-        let _ = writeln!(toml, "[profibus]\nfile_name = \"CARD.GSD\"\nident_number = {{ value = 0x1234 }}\nppo_types = [{}]\nppo5_pzd_words = {ppo5_words}\nmin_slave_interval = 1\nslave_family = {}\n", types.join(", "), quoted(&slave_family));
+        // PPO5's words only with PPO5 (E002 otherwise).
+        let ppo5 = if types.iter().any(|t| t == "\"PPO5\"") { format!("ppo5_pzd_words = {ppo5_words}\n") } else { String::new() };
+        let _ = writeln!(toml, "[profibus]\nfile_name = \"CARD.GSD\"\nident_number = {{ value = 0x1234 }}\nppo_types = [{}]\n{ppo5}min_slave_interval = 1\nslave_family = {}\n", types.join(", "), quoted(&slave_family));
         let _ = writeln!(toml, "[profibus.baud_rates]\n\"1.5M\" = {tsdr}\n\"12M\" = 800\n");
         if dpv1 {
             toml.push_str("[profibus.dpv1]\nc1_read_write = true\n\n");

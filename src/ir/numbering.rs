@@ -136,8 +136,19 @@ impl Numbering {
     }
 }
 
+/// A group or an index: at most three digits.
 fn parse_digits(text: &str, radix: u32) -> Option<u32> {
-    if text.is_empty() || text.len() > 3 || !(2..=36).contains(&radix) {
+    if text.len() > 3 {
+        return None;
+    }
+    digits(text, radix)
+}
+
+/// `text` as a number written in `radix`, when it is digits only and fits
+/// 32 bits. `str::parse` and `from_str_radix` also take a leading `+`, which
+/// a description's number never has (`F+0-+12`, `slave_family = "+1"`).
+pub fn digits(text: &str, radix: u32) -> Option<u32> {
+    if text.is_empty() || !(2..=36).contains(&radix) || !text.chars().all(|c| c.is_digit(radix)) {
         return None;
     }
     u32::from_str_radix(text, radix).ok()
@@ -278,5 +289,7 @@ mod tests {
         );
         assert!(n.parse("FG-01").unwrap_err().contains("group"));
         assert!(n.parse("F").is_err());
+        assert!(n.parse("F+0-+12").unwrap_err().contains("group"));
+        assert!(n.parse("F0-+12").unwrap_err().contains("index"));
     }
 }

@@ -118,9 +118,10 @@ impl Checker {
     }
 
     /// Not empty, and no character that a device file, a generated header
-    /// or generated code cannot hold safely.
-    pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) {
-        if s.trim().is_empty() {
+    /// or generated code cannot hold safely; whether it is both.
+    pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) -> bool {
+        let empty = s.trim().is_empty();
+        if empty {
             self.push(
                 Diagnostic::error("E117", format!("{what} is empty"))
                     .at(span.clone())
@@ -128,17 +129,19 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        if let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) {
-            self.push(
-                Diagnostic::error(
-                    "E135",
-                    format!("{what} has {}, a control or formatting character", char_name(bad)),
-                )
-                .at(span)
-                .label("not a printable character")
-                .help("remove it: device files and generated code show texts as they are, and such a character breaks a line, a string or the reading order"),
-            );
-        }
+        let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) else {
+            return !empty;
+        };
+        self.push(
+            Diagnostic::error(
+                "E135",
+                format!("{what} has {}, a control or formatting character", char_name(bad)),
+            )
+            .at(span)
+            .label("not a printable character")
+            .help("remove it: device files and generated code show texts as they are, and such a character breaks a line, a string or the reading order"),
+        );
+        false
     }
 
     /// A string that goes into the GSD: not empty, 7-bit printable ASCII
@@ -220,13 +223,19 @@ impl Checker {
     pub fn text(&mut self, t: &Spanned<Text>, gsd_limit: Option<usize>, what: &str) -> ir::Text {
         let text = t.get_ref();
         let en_span = text.en_span(&t.span());
-        self.non_empty(text.en.get_ref(), en_span.clone(), what);
-        if let Some(limit) = gsd_limit {
-            let (gsd, span) = text
-                .gsd
-                .as_ref()
-                .map_or((text.en.get_ref(), en_span), |g| (g.get_ref(), g.span()));
-            self.check_gsd_text(gsd, span, limit, what);
+        let en_ok = self.non_empty(text.en.get_ref(), en_span.clone(), what);
+        match (&text.gsd, gsd_limit) {
+            (Some(gsd), Some(limit)) => self.check_gsd_text(gsd.get_ref(), gsd.span(), limit, what),
+            // The English, refused above, is not refused again.
+            (None, Some(limit)) if en_ok => {
+                self.check_gsd_text(text.en.get_ref(), en_span, limit, what);
+            }
+            // A short form that only a rendered name puts into a GSD (its
+            // caller checks it there), or nothing does: a text all the same.
+            (Some(gsd), None) => {
+                self.non_empty(gsd.get_ref(), gsd.span(), what);
+            }
+            (None, _) => {}
         }
         for (code, other) in &text.others {
             self.non_empty(other.get_ref(), other.span(), what);
@@ -332,6 +341,17 @@ impl Checker {
         self.in_range((*v.get_ref()).into(), min, max, v.span(), what)
     }
 
+    /// E109: a range `[min, max]` written the wrong way round.
+    pub fn reversed(&mut self, span: Range<usize>, min: impl ToString, max: impl ToString) {
+        let (min, max) = (min.to_string(), max.to_string());
+        self.push(
+            Diagnostic::error("E109", format!("range [{min}, {max}] is reversed"))
+                .at(span)
+                .label("minimum above maximum")
+                .help("write the range as [minimum, maximum]"),
+        );
+    }
+
     /// E105 for the second and later occurrences of a key.
     pub fn duplicate(&mut self, what: String, span: Range<usize>) {
         self.push(
@@ -355,6 +375,12 @@ pub fn is_gsd_char(c: char) -> bool {
     (' '..='~').contains(&c) && c != '"'
 }
 
+/// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked
+/// again.
+pub fn is_clean(s: &str) -> bool {
+    !s.trim().is_empty() && !s.chars().any(is_unsafe_char)
+}
+
 /// Control characters (C0, DEL, C1), the line and paragraph separators,
 /// the bidirectional formatting characters (which reorder what a reader
 /// sees: a name could read differently from what the compiler sees) and the
@@ -374,7 +400,7 @@ fn is_unsafe_char(c: char) -> bool {
 
 /// A character as a message shows it: itself in backticks when it prints,
 /// its code point when it does not.
-fn char_name(c: char) -> String {
+pub fn char_name(c: char) -> String {
     if is_unsafe_char(c) || c.is_whitespace() && c != ' ' {
         format!("U+{:04X}", u32::from(c))
     } else {

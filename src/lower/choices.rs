@@ -147,7 +147,8 @@ fn parse_path(path: &str) -> Option<Vec<Segment>> {
         let mut after = after;
         while let Some(inner) = after.strip_prefix('[') {
             let end = inner.find(']')?;
-            indexes.push(inner[..end].parse().ok()?);
+            let index = crate::ir::numbering::digits(&inner[..end], 10)?;
+            indexes.push(usize::try_from(index).ok()?);
             after = &inner[end + 1..];
         }
         segments.push(Segment { key, indexes });
@@ -201,6 +202,7 @@ mod tests {
         );
         assert_eq!(keys("a..b"), None);
         assert_eq!(keys("a[x]"), None);
+        assert_eq!(keys("settings[+0].default"), None);
         assert_eq!(keys("a b"), None);
         assert_eq!(keys(""), None);
     }

@@ -211,7 +211,7 @@ fn conflicts(cx: &mut Checker, desc: &Description, gateway: &Range<usize>) {
 }
 
 /// `1 word`, `3 words`.
-fn words_of(words: u16) -> String {
+fn words_of(words: u32) -> String {
     match words {
         1 => "1 word".to_string(),
         n => format!("{n} words"),
@@ -228,18 +228,8 @@ fn node_numbers(cx: &mut Checker, nodes: &Spanned<[Spanned<i64>; 2]>) -> (u8, u8
         .spanned_in_range(last, 0, MAX_BYTE, "a node number")
         .unwrap_or(first);
     if first > last {
-        reversed(cx, nodes.span(), first, last);
+        cx.reversed(nodes.span(), first, last);
         return (first, first);
     }
     (first, last)
-}
-
-fn reversed(cx: &mut Checker, span: Range<usize>, min: impl ToString, max: impl ToString) {
-    let (min, max) = (min.to_string(), max.to_string());
-    cx.push(
-        Diagnostic::error("E109", format!("range [{min}, {max}] is reversed"))
-            .at(span)
-            .label("minimum above maximum")
-            .help("write the range as [minimum, maximum]"),
-    );
 }

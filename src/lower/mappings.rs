@@ -1,7 +1,7 @@
 //! Mappings: PZD words each way and DPV1 indexes, each numbered entry with
 //! its default and what it may hold; and the settings, each a set of one.
 
-use super::checks::{Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
+use super::checks::{self, Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
 use super::resolve_address;
 use super::telegram::value_set;
 use crate::description as raw;
@@ -178,6 +178,14 @@ fn lower_settings(
         .take(MAX_SETTINGS)
         .zip(1..=u8::MAX)
         .filter_map(|(s, number)| {
+            if let (Some(holds), Some(_)) = (&s.holds, &s.choices) {
+                cx.push(
+                    Diagnostic::error("E002", "`holds` on a setting with `choices`")
+                        .at(holds.span())
+                        .label("means nothing here")
+                        .help("a setting with choices holds one of them: remove `holds`, which says what a range holds"),
+                );
+            }
             let default = (
                 resolve_address(cx, &s.default, numbering)?,
                 s.default.span(),
@@ -353,12 +361,7 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
                 resolve_address(cx, max, numbering)?,
             );
             if min > max {
-                cx.push(
-                    Diagnostic::error("E109", format!("range [{min}, {max}] is reversed"))
-                        .at(range.span())
-                        .label("minimum above maximum")
-                        .help("write the range as [minimum, maximum]"),
-                );
+                cx.reversed(range.span(), min, max);
                 return None;
             }
             Some(Allowed::Range { min, max })
@@ -394,17 +397,17 @@ fn parameter_base(
     )
 }
 
-/// The longest name is the last entry's: check that one for the GSD, in
-/// the form the GSD shows.
-fn check_rendered_name(
+/// The longest name is the last entry's or node's: check that one for the
+/// GSD, in the form the GSD shows.
+pub(super) fn check_rendered_name(
     cx: &mut Checker,
     raw_name: &Spanned<raw::Text>,
     name: &Text,
     last: u8,
     what: &str,
 ) {
-    if name.en.trim().is_empty() {
-        return; // already reported as empty
+    if !checks::is_clean(name.for_gsd()) {
+        return; // already reported by `Checker::text`
     }
     let raw = raw_name.get_ref();
     let span = raw
@@ -415,7 +418,8 @@ fn check_rendered_name(
     cx.check_gsd_text(rendered.for_gsd(), span, GSD_NAME_LEN, what);
 }
 
-fn render(name: &Text, number: u8) -> Text {
+/// A name with `{n}` as the entry's or node's number.
+pub(super) fn render(name: &Text, number: u8) -> Text {
     let n = number.to_string();
     name.map(|text| text.replace("{n}", &n))
 }

@@ -33,7 +33,8 @@ pub fn lower(
         return (None, Diagnostics(vec![missing]));
     }
     let mut cx = Checker::new(desc.profibus.is_some());
-    if desc.profibus.is_none() && desc.profinet.is_none() {
+    // A gateway's description without a bus is told it needs [profibus] (E144).
+    if desc.profibus.is_none() && desc.profinet.is_none() && desc.gateway.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());
         cx.push(
             Diagnostic::error("E110", "the description targets no bus")
@@ -286,22 +287,67 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
                 ),
         );
     }
-    if f.separator.get_ref().is_empty() {
-        cx.push(
-            Diagnostic::error("E117", "the function-code separator is empty")
-                .at(f.separator.span())
-                .label("empty")
-                .help("write the character between group and index, e.g. \"-\" for F0-12"),
-        );
-    }
+    check_separator(cx, &f.separator);
+    // A prefix refused is left out, so that names with the others still resolve.
     let prefixes = f
         .prefixes
         .iter()
+        .filter(|(p, _)| valid_prefix(cx, p))
         .map(|(p, base)| (p.get_ref().clone(), *base.get_ref()))
         .collect();
     // A wrong radix was reported above; 16 only keeps names from failing twice.
     let radix = if radix == 10 { 10 } else { 16 };
     Numbering::new(f.separator.get_ref().clone(), radix, prefixes, scheme)
+}
+
+/// E155: a function-code name is `<prefix><group><separator><index>`, and
+/// generated code writes names in comments: the separator is punctuation or
+/// spaces, a prefix letters, so that neither holds the other nor a digit of
+/// a group or an index, and a name is never code. Empty ones and control
+/// characters are E117 and E135, as in any text.
+fn check_separator(cx: &mut Checker, separator: &Spanned<String>) {
+    let (text, span) = (separator.get_ref(), separator.span());
+    if !cx.non_empty(text, span.clone(), "function-code separator") {
+        return;
+    }
+    if let Some(bad) = text
+        .chars()
+        .find(|&c| !(c.is_ascii_punctuation() || c == ' '))
+    {
+        cx.push(
+            Diagnostic::error(
+                "E155",
+                format!(
+                    "the function-code separator has {}, which is not punctuation or a space",
+                    checks::char_name(bad)
+                ),
+            )
+            .at(span)
+            .label("not a separator")
+            .help("write the ASCII punctuation between group and index, e.g. \"-\" for F0-12 or \".\" for P43.02"),
+        );
+    }
+}
+
+/// Whether a prefix is ASCII letters (E155; see [`check_separator`]).
+fn valid_prefix(cx: &mut Checker, prefix: &Spanned<String>) -> bool {
+    let (text, span) = (prefix.get_ref(), prefix.span());
+    if !cx.non_empty(text, span.clone(), "function-code prefix") {
+        return false;
+    }
+    if text.chars().all(|c| c.is_ascii_alphabetic()) {
+        return true;
+    }
+    cx.push(
+        Diagnostic::error(
+            "E155",
+            format!("the function-code prefix `{text}` is not ASCII letters"),
+        )
+        .at(span)
+        .label("not a prefix")
+        .help("write the letters before the group, e.g. F for F0-12 or P for P43.02"),
+    );
+    false
 }
 
 /// An address written as a number or a function-code name, as u16.

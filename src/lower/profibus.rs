@@ -22,6 +22,9 @@ const DEFAULT_GSD_REVISION: u8 = 5;
 /// revision 5 (comments of Siemens' own GSD files, SI028158, SI018133).
 const DPV1_GSD_REVISION: u8 = 3;
 const IM_GSD_REVISION: u8 = 5;
+/// The PPO types as the description names them: PPO1 to PPO5, no other
+/// spelling (FIELDBUS-NOTES §1).
+const PPO_NAMES: [&str; 5] = ["PPO1", "PPO2", "PPO3", "PPO4", "PPO5"];
 /// PROFIdrive's PPO5 has 10 PZD words.
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
@@ -160,6 +163,17 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
             .unwrap_or(DEFAULT_PPO5_PZD_WORDS),
         None => DEFAULT_PPO5_PZD_WORDS,
     };
+    if let Some(words) = &p.ppo5_pzd_words {
+        let ppo5 = p.ppo_types.as_ref().map(Spanned::get_ref);
+        if !ppo5.is_some_and(|types| types.iter().any(|t| t.get_ref() == "PPO5")) {
+            cx.push(
+                Diagnostic::error("E002", "ppo5_pzd_words without PPO5 in ppo_types")
+                    .at(words.span())
+                    .label("no PPO5 to size")
+                    .help("ppo5_pzd_words gives PPO5's PZD words: add \"PPO5\" to ppo_types, or remove it"),
+            );
+        }
+    }
     // Without a gateway, lowering refused a description without them.
     let Some(ppo_types) = &p.ppo_types else {
         return Vec::new();
@@ -193,16 +207,23 @@ fn ppo_module(
     ppo5_pzd_words: u8,
     telegram: &Telegram,
 ) -> Option<PpoModule> {
-    let number = name
-        .get_ref()
-        .strip_prefix("PPO")
-        .and_then(|n| n.parse::<u8>().ok());
-    let Some((ppo, layout)) = number.and_then(|n| Some((n, ppo_layout(n, ppo5_pzd_words)?))) else {
+    let written = name.get_ref().as_str();
+    let number = (1..).zip(PPO_NAMES).find(|(_, n)| *n == written);
+    let Some((ppo, layout)) = number.and_then(|(n, _)| Some((n, ppo_layout(n, ppo5_pzd_words)?)))
+    else {
+        // `PPO02`, `PPO+1`, `PP01`: the type that ends as it does, if near.
+        let last = written.chars().last();
+        let ending_alike = PPO_NAMES.into_iter().filter(|n| n.chars().last() == last);
+        let suggestion = crate::spelling::closest(written, ending_alike)
+            .map(|n| format!("; did you mean `{n}`?"))
+            .unwrap_or_default();
         cx.push(
-            Diagnostic::error("E104", format!("`{}` is not a PPO type", name.get_ref()))
+            Diagnostic::error("E104", format!("`{written}` is not a PPO type"))
                 .at(name.span())
                 .label("unknown PPO type")
-                .help("PPO types are PPO1, PPO2, PPO3, PPO4 and PPO5"),
+                .help(format!(
+                    "PPO types are PPO1, PPO2, PPO3, PPO4 and PPO5{suggestion}"
+                )),
         );
         return None;
     };
@@ -281,8 +302,8 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
     let mut parts = text.split('@');
     let main_ok = parts
         .next()
-        .and_then(|m| m.parse::<u8>().ok())
-        .is_some_and(|m| m <= MAX_MAIN_FAMILY);
+        .and_then(|m| crate::ir::numbering::digits(m, 10))
+        .is_some_and(|m| m <= u32::from(MAX_MAIN_FAMILY));
     let subs_ok = parts.all(|s| {
         !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char)
     });

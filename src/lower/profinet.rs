@@ -27,7 +27,7 @@ pub fn lower(
     desc: &raw::Description,
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
-    let records = records::plans(cx, p, mappings);
+    let records = records::plans(cx, p, desc, mappings);
     let interface_properties = interface::properties(cx, p);
     let near = p.span();
     let p = p.get_ref();
@@ -78,7 +78,9 @@ pub fn lower(
         ),
         gsdml_version,
         date,
-        vendor_id: *p.vendor_id.get_ref().value.get_ref(),
+        // PI numbers vendors from 1: the schema's DeviceIdentity takes 0x0000,
+        // but its CIM_Interface, naming the same vendor, does not (hex0T).
+        vendor_id: cx.spanned_in_range(&p.vendor_id.get_ref().value, 1, 0xFFFF, "vendor_id")?,
         vendor_id_placeholder: p.vendor_id.get_ref().placeholder,
         device_id: cx.spanned_in_range(&p.device_id.get_ref().value, 1, 0xFFFF, "device_id")?,
         device_id_placeholder: p.device_id.get_ref().placeholder,

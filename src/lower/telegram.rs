@@ -67,7 +67,8 @@ fn lower_word(cx: &mut Checker, w: &raw::Word, what: &str) -> ir::Word {
     }
 }
 
-fn mask(first: u8, last: u8) -> u32 {
+/// The bits `first..=last` of a word or a byte.
+pub(super) fn mask(first: u8, last: u8) -> u32 {
     (first..=last).fold(0, |m, b| m | 1 << b)
 }
 

@@ -24,9 +24,11 @@ pub(super) fn modules(
         .collect();
     let most = match fewest {
         Ok(needed) => needed.iter().sum(),
+        // No valid size at all was refused where each was written (E101).
+        Err(_) if sizes.is_empty() => 0,
         Err(words) => {
             cx.push(
-                Diagnostic::error("E147", format!("no set of these modules carries {}", words_of(words)))
+                Diagnostic::error("E147", format!("no set of these modules carries {}", words_of(words.into())))
                     .at(m.words.span())
                     .label("sizes that leave a total out")
                     .help("the master plugs modules until they equal the nodes' words, which may be any number up to the limit: offer 1 word, the smallest size"),

@@ -4,13 +4,15 @@
 //! User_Prm_Data.
 
 use super::super::checks::{Checker, Defaults, DefaultsOf, GSD_NAME_LEN};
-use super::{reversed, words_of, MAX_BYTE};
+use super::super::mappings::{check_rendered_name, render};
+use super::super::telegram::mask;
+use super::{words_of, MAX_BYTE};
 use crate::description::gateway as raw;
 use crate::description::BitRange;
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{Param, ParamKey};
 use crate::ir::profibus::{PrmParam, PrmType, PrmValue};
-use crate::ir::{Direction, Text};
+use crate::ir::Direction;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -74,7 +76,7 @@ pub(super) fn node_words(
     );
     let (defaults, defaults_span) = node_defaults(cx, w, nodes.len(), (min, max));
     let name = cx.text(&w.name, None, "parameter name");
-    check_rendered_name(cx, &w.name, &name, *nodes.end());
+    check_rendered_name(cx, &w.name, &name, *nodes.end(), "parameter name");
     let params = nodes
         .zip(defaults)
         .map(|(node, default)| Param {
@@ -150,14 +152,15 @@ pub(super) fn default_configuration(cx: &mut Checker, count: &Param, words: &[No
                 .help("a node past the count carries no data: give it 0 words, or raise the node count's default"),
             );
         }
-        let words: u16 = w
+        // 255 nodes of 255 words are 130050 bytes: more than 16 bits hold.
+        let words: u32 = w
             .params
             .iter()
             .take(in_use)
-            .map(|p| u16::from(p.default))
+            .map(|p| u32::from(p.default))
             .sum();
         let (bytes, max_len) = (2 * words, w.max_len);
-        if bytes > max_len {
+        if bytes > u32::from(max_len) {
             let way = match w.direction {
                 Direction::In => "input",
                 Direction::Out => "output",
@@ -238,7 +241,7 @@ fn range(
     let min: u8 = cx.spanned_in_range(min, 0, most, what).unwrap_or(0);
     let max: u8 = cx.spanned_in_range(max, 0, most, what).unwrap_or(min);
     if min > max {
-        reversed(cx, range.span(), min, max);
+        cx.reversed(range.span(), min, max);
         return (min, min);
     }
     (min, max)
@@ -262,27 +265,6 @@ fn default_in(cx: &mut Checker, default: &Spanned<i64>, (min, max): (u8, u8), wh
     min
 }
 
-/// The longest name is the last node's: checked in the form the GSD shows.
-fn check_rendered_name(
-    cx: &mut Checker,
-    raw_name: &Spanned<crate::description::Text>,
-    name: &Text,
-    last: u8,
-) {
-    let raw = raw_name.get_ref();
-    let span = raw
-        .gsd
-        .as_ref()
-        .map_or_else(|| raw.en_span(&raw_name.span()), Spanned::span);
-    let rendered = render(name, last);
-    cx.check_gsd_text(rendered.for_gsd(), span, GSD_NAME_LEN, "parameter name");
-}
-
-fn render(name: &Text, node: u8) -> Text {
-    let n = node.to_string();
-    name.map(|text| text.replace("{n}", &n))
-}
-
 /// Places the gateway's parameters from byte `start` on, numbering them on
 /// from `ids`: a bit area goes into the byte of the parameter before it
 /// when that is a bit area whose bits it leaves free; anything else starts
@@ -294,7 +276,7 @@ pub fn place(
 ) -> (Vec<PrmParam>, usize) {
     let mut end = start;
     // The byte of the last bit area, and its bits in use.
-    let mut open: Option<(usize, u8)> = None;
+    let mut open: Option<(usize, u32)> = None;
     let params = types
         .iter()
         .map(|&(key, data_type)| {
@@ -326,10 +308,6 @@ pub fn place(
         })
         .collect();
     (params, end)
-}
-
-fn mask(first: u8, last: u8) -> u8 {
-    (first..=last).fold(0, |m, bit| m | 1 << bit)
 }
 
 #[cfg(test)]

@@ -8,7 +8,8 @@ use crate::diag::Diagnostic;
 use crate::ir::profinet::{Module, ModuleKind, ParameterRecord, RecordRef, TextRef, ValueItem};
 use crate::ir::{Layout, MappingEntry, MappingKind, MappingSet, Mappings, Text};
 use crate::lower::checks::Checker;
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
+use std::ops::Range;
 use toml::Spanned;
 
 /// Record indexes 0..0x7FFF are the vendor's (IEC 61158-6-10).
@@ -24,8 +25,14 @@ pub struct RecordPlan {
 /// One record per kind of mapping the description has: PZD out, PZD in,
 /// DPV1 indexes, settings; indexes 1, 2, 3, 4 and gsdc's names unless the
 /// description says otherwise (an index it leaves out is gsdc's default,
-/// said with W104).
-pub fn plans(cx: &mut Checker, p: &Spanned<raw::Profinet>, mappings: &Mappings) -> Vec<RecordPlan> {
+/// said with W104). A record for a kind the description has none of is
+/// E139: it would be left out of the file without a word.
+pub fn plans(
+    cx: &mut Checker,
+    p: &Spanned<raw::Profinet>,
+    desc: &raw::Description,
+    mappings: &Mappings,
+) -> Vec<RecordPlan> {
     let given = &p.get_ref().records;
     let kinds = [
         (MappingKind::PzdOut, &given.pzd_out, 1),
@@ -33,14 +40,27 @@ pub fn plans(cx: &mut Checker, p: &Spanned<raw::Profinet>, mappings: &Mappings) 
         (MappingKind::Dpv1Index, &given.dpv1_index, 3),
         (MappingKind::Setting, &given.settings, 4),
     ];
-    let mut used = BTreeSet::new();
+    let m = &desc.mappings;
+    let described = |kind| match kind {
+        MappingKind::PzdOut => m.pzd_out.is_some(),
+        MappingKind::PzdIn => m.pzd_in.is_some(),
+        MappingKind::Dpv1Index => m.dpv1_index.is_some(),
+        MappingKind::Setting => !desc.settings.is_empty(),
+    };
+    // Each index in use, with where the description writes it (not at all
+    // for gsdc's default).
+    let mut used: BTreeMap<u16, Option<Range<usize>>> = BTreeMap::new();
     kinds
         .into_iter()
-        .filter(|(kind, _, _)| mappings.group(*kind).is_some())
         .filter_map(|(kind, given, default)| {
-            let index = match given {
-                Some(record) => {
-                    let span = record.get_ref().index_span(&record.span());
+            let written = given.as_ref().map(|r| r.get_ref().index_span(&r.span()));
+            if let (Some(span), false) = (&written, described(kind)) {
+                no_mappings(cx, kind, span.clone());
+            }
+            // A kind whose mappings failed has said why.
+            mappings.group(kind)?;
+            let index = match given.as_ref().zip(written.clone()) {
+                Some((record, span)) => {
                     let index = *record.get_ref().index.get_ref();
                     cx.in_range(index, 1, MAX_VENDOR_RECORD_INDEX, span, "a record index")?
                 }
@@ -50,13 +70,24 @@ pub fn plans(cx: &mut Checker, p: &Spanned<raw::Profinet>, mappings: &Mappings) 
                     default
                 }
             };
-            if !used.insert(index) {
-                cx.push(
-                    Diagnostic::error("E105", format!("record index {index} is used twice"))
-                        .at_opt(given.as_ref().map(Spanned::span))
-                        .label("used by another record")
-                        .help("give each record its own index under [profinet.records]"),
-                );
+            match used.get(&index) {
+                // Shown where the description writes the index: here, or at
+                // the other record when this one is gsdc's default.
+                Some(other) => {
+                    let (span, label) = match written {
+                        Some(span) => (Some(span), "used by another record".to_string()),
+                        None => (other.clone(), format!("{}'s index by default", kind.key())),
+                    };
+                    cx.push(
+                        Diagnostic::error("E105", format!("record index {index} is used twice"))
+                            .at_opt(span)
+                            .label(label)
+                            .help("give each record its own index under [profinet.records]"),
+                    );
+                }
+                None => {
+                    used.insert(index, written);
+                }
             }
             let name = match given.as_ref().and_then(|r| r.get_ref().name.as_ref()) {
                 Some(name) => cx.text(name, None, "record name"),
@@ -65,6 +96,28 @@ pub fn plans(cx: &mut Checker, p: &Spanned<raw::Profinet>, mappings: &Mappings) 
             Some(RecordPlan { kind, index, name })
         })
         .collect()
+}
+
+/// E139: a record for a kind of mapping the description does not have.
+fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
+    let table = match kind {
+        MappingKind::Setting => "[[settings]]".to_string(),
+        kind => format!("[mappings.{}]", kind.key()),
+    };
+    cx.push(
+        Diagnostic::error(
+            "E139",
+            format!(
+                "a record for {}, but the description has no {table}",
+                kind.key()
+            ),
+        )
+        .at(span)
+        .label("no record to index")
+        .help(format!(
+            "a record holds the entries of {table}: add them, or remove this index"
+        )),
+    );
 }
 
 /// The records a module carries, one Unsigned16 Ref per entry at offsets
