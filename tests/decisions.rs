@@ -138,3 +138,49 @@ fn a_marked_choice_is_warned_about_at_its_value() {
         ]
     );
 }
+
+/// What gsdc's GSDML says the card's PROFINET stack does, where no
+/// description key states it, is listed as required of the firmware: each
+/// attribute the file writes, by the words of the listing.
+#[test]
+fn what_the_gsdml_claims_of_the_stack_is_listed() {
+    let claims = [
+        ("MultipleWriteSupported=\"true\"", "MultipleWriteSupported"),
+        ("LLDP_NoD_Supported=\"true\"", "LLDP_NoD_Supported"),
+        ("ResetToFactoryModes=\"2\"", "ResetToFactoryModes 2"),
+        ("SupportedRT_Classes=\"RT_CLASS_1\"", "RT_CLASS_1"),
+        ("SupportedProtocols=\"SNMP;LLDP\"", "SNMP and LLDP"),
+        ("DCP_BoundarySupported=\"true\"", "DCP and PTP boundaries"),
+        ("PTP_BoundarySupported=\"true\"", "DCP and PTP boundaries"),
+        (
+            "StartupMode=\"Legacy;Advanced\"",
+            "startup modes Legacy and Advanced",
+        ),
+        (
+            "ReductionRatio=\"1 2 4 8 16 32 64 128 256 512\"",
+            "reduction ratios 1 to 512",
+        ),
+    ];
+    for name in ["mv810-pnet02.toml", "md810dp.toml"] {
+        let ir = descriptions::load(name);
+        let required: Vec<&str> = ir
+            .decisions
+            .iter()
+            .filter(|d| d.kind == DecisionKind::Requirement)
+            .map(|d| d.value.as_str())
+            .collect();
+        let gsdml = gsdc::compile(&ir)
+            .unwrap()
+            .into_iter()
+            .find(|a| a.kind == gsdc::ArtifactKind::Gsdml)
+            .unwrap();
+        let gsdml = String::from_utf8(gsdml.contents).unwrap();
+        for (attribute, listed) in claims {
+            assert!(gsdml.contains(attribute), "{name}: {attribute}");
+            assert!(
+                required.iter().any(|r| r.contains(listed)),
+                "{name}: {listed} in {required:?}"
+            );
+        }
+    }
+}

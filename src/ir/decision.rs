@@ -27,6 +27,10 @@ pub enum DecisionKind {
     /// gsdc's own numbering (ident numbers, subslots): nothing for the
     /// firmware to match by hand, since its layout carries every number.
     Convention,
+    /// What gsdc's device file says every such card does (a PROFINET
+    /// stack's services), which no description key states: the firmware
+    /// must do it.
+    Requirement,
 }
 
 impl Decision {
@@ -37,6 +41,7 @@ impl Decision {
             DecisionKind::Choice => "Own choice",
             DecisionKind::Default => "gsdc's default",
             DecisionKind::Convention => "gsdc's numbering",
+            DecisionKind::Requirement => "Required of the firmware",
         };
         format!("{kind}: {} = {} ({})", self.path, self.value, self.reason)
     }

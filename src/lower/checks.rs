@@ -85,8 +85,19 @@ impl Checker {
     /// key for it: listed in every header, not warned about (the layouts
     /// carry it, so the firmware cannot drift from it).
     pub fn convention(&mut self, path: &str, value: impl ToString, reason: &str) {
+        self.listed(DecisionKind::Convention, path, value, reason);
+    }
+
+    /// What gsdc's device file says the card does where the description
+    /// has no key for it: listed in every header, not warned about (the
+    /// firmware must do it; no value would change the file).
+    pub fn requirement(&mut self, path: &str, value: impl ToString, reason: &str) {
+        self.listed(DecisionKind::Requirement, path, value, reason);
+    }
+
+    fn listed(&mut self, kind: DecisionKind, path: &str, value: impl ToString, reason: &str) {
         self.decisions.push(Decision {
-            kind: DecisionKind::Convention,
+            kind,
             path: path.to_string(),
             value: value.to_string(),
             reason: reason.to_string(),

@@ -69,6 +69,16 @@ pub fn lower(
         "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
         "the manual gives none; the layouts carry each",
     );
+    cx.requirement(
+        "profinet device access point",
+        "MultipleWriteSupported, LLDP_NoD_Supported, ResetToFactoryModes 2",
+        "PNIO_Version V2.31 and later requires them; the manual does not say: the card's PROFINET stack must provide them",
+    );
+    cx.requirement(
+        "profinet interface",
+        "RT_CLASS_1; SNMP and LLDP; DCP and PTP boundaries; startup modes Legacy and Advanced; reduction ratios 1 to 512",
+        "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
+    );
     let value_items = records::value_items(mappings, &modules);
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {
