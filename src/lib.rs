@@ -15,6 +15,7 @@
 #[cfg(feature = "cli")]
 mod decode;
 mod description;
+pub mod device;
 mod diag;
 mod emit;
 mod file_kind;
