@@ -17,6 +17,7 @@ mod decode;
 mod description;
 pub mod device;
 mod diag;
+pub mod diff;
 mod emit;
 mod file_kind;
 pub mod gsd;

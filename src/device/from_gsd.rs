@@ -3,10 +3,7 @@
 use std::ops::Range;
 
 use super::dp::{DiagArea, DiagBit, DiagType, DiagValue, DpDevice, DpModule, DpSlot, Keyword};
-use super::{
-    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, Field, Lines, ParameterData,
-    Place, Text, Value,
-};
+use super::{Allowed, Bits, Choice, ConstBytes, Field, Lines, ParameterData, Place, Text, Value};
 use crate::gsd::prm::{self, Family};
 use crate::gsd::{
     self, Arg, ExtUserPrmData, GsdFile, IndexedText, PrmDataType, Setting, UnitDiagArea,
@@ -209,18 +206,8 @@ impl Reader<'_> {
             choices: self.choices(data),
             changeable: data.changeable.unwrap_or(true),
             visible: data.visible.unwrap_or(true),
-            attributes: data
-                .settings
-                .iter()
-                .map(|s| {
-                    let k = self.keyword(s, None);
-                    Attribute {
-                        name: k.name,
-                        value: AttributeValue::Plain(value_text(&k.value)),
-                        place: k.place,
-                    }
-                })
-                .collect(),
+            // The block's other lines are the three above: nothing else to keep.
+            attributes: Vec::new(),
             place: self.place(at),
         })
     }
@@ -362,24 +349,6 @@ impl Reader<'_> {
             text: Text::plain(&value.text.value),
             place: self.place(&value.span),
         }
-    }
-}
-
-/// A keyword's value as the file writes it.
-pub(crate) fn value_text(value: &gsd::Value) -> String {
-    match value {
-        gsd::Value::None => String::new(),
-        gsd::Value::Number(n) => n.to_string(),
-        gsd::Value::List(l) => {
-            let items: Vec<String> = l.iter().map(|b| format!("0x{b:02X}")).collect();
-            items.join(",")
-        }
-        gsd::Value::Str(s) | gsd::Value::Raw(s) => s.clone(),
-        gsd::Value::Family { main, sub } => std::iter::once(main.to_string())
-            .chain(sub.iter().cloned())
-            .collect::<Vec<_>>()
-            .join("@"),
-        gsd::Value::Range(a, b) => format!("{a}-{b}"),
     }
 }
 

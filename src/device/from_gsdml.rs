@@ -455,10 +455,11 @@ impl<'a> Reader<'a> {
             true => Value::Str(text.to_string()),
             false => Value::parse(text),
         };
-        let allowed = match node.attribute("AllowedValues") {
-            Some(list) if !is_text => value_ranges(list).map_or(Allowed::Any, Allowed::Ranges),
-            _ => Allowed::Any,
-        };
+        // Of a string, the numbers its tools read as lengths; kept as written.
+        let allowed = node
+            .attribute("AllowedValues")
+            .and_then(value_ranges)
+            .map_or(Allowed::Any, Allowed::Ranges);
         Some(Field {
             byte_offset: number("ByteOffset", 0)?,
             bits,

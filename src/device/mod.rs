@@ -26,6 +26,40 @@ pub use from_gsd::read as read_gsd;
 pub use from_gsdml::read as read_gsdml;
 pub use pn::PnDevice;
 
+/// The device of a GSD or of a GSDML file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Device {
+    Dp(DpDevice),
+    Pn(PnDevice),
+}
+
+/// The device a GSD or GSDML file describes, from its bytes (told apart
+/// by their content, decoded as `gsdc check` decodes them), or `None` when
+/// they cannot be read as one: not a device file, an encoding or syntax
+/// error, a GSD line the reader cannot read. `gsdc check` says why.
+/// `file_name` is the file's own name, when there is one.
+pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
+    match crate::file_kind::detect(&bytes[..bytes.len().min(crate::file_kind::HEAD_BYTES)]) {
+        crate::file_kind::FileKind::Gsd => {
+            if crate::utf16::byte_order(bytes).is_some() {
+                return None;
+            }
+            let text = crate::gsd::decode(bytes);
+            let (file, findings) = crate::gsd::parse(&text);
+            (!findings.has_errors()).then(|| Device::Dp(read_gsd(&file, &text, file_name)))
+        }
+        crate::file_kind::FileKind::Gsdml => {
+            let text = crate::gsdml::decode(bytes).ok()?;
+            let doc = crate::gsdml::parse(&text).ok()?;
+            let root = doc.root_element();
+            let is_gsdml = crate::gsdml::index::in_gsdml(&root)
+                && root.tag_name().name() == "ISO15745Profile";
+            is_gsdml.then(|| Device::Pn(read_gsdml(&doc, file_name)))
+        }
+        crate::file_kind::FileKind::Neither => None,
+    }
+}
+
 /// Where a fact is written: its line, and in a GSDML file the path of its
 /// element from `ProfileBody`, each element named with what identifies it
 /// (`ApplicationProcess/ModuleList/ModuleItem[IDM_1]`).
@@ -39,7 +73,7 @@ pub struct Place {
 /// A text in every language the file gives it: the primary one (a GSD's
 /// only one; a GSDML file's `PrimaryLanguage`, English by the specification)
 /// and the translations by language code.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
 pub struct Text {
     pub primary: String,
     pub translations: BTreeMap<String, String>,
