@@ -93,7 +93,11 @@ pub fn run(args: &Args) -> Status {
         Format::Json => say(&json(&pairs)),
     }
     let failing = args.fail_on.class();
-    match pairs.iter().flat_map(|p| &p.changes).any(|c| c.class >= failing) {
+    match pairs
+        .iter()
+        .flat_map(|p| &p.changes)
+        .any(|c| c.class >= failing)
+    {
         true => Status::InputErrors,
         false => Status::Ok,
     }
@@ -168,7 +172,12 @@ fn is_gsd(f: &DeviceFile) -> bool {
 /// The files of the two sides paired by kind: a file given alone meets the
 /// file of its kind on the other side; two descriptions meet kind by kind,
 /// and a kind that only one of them builds is a change of its own.
-fn pairs(old_path: &Path, old: Vec<DeviceFile>, new_path: &Path, new: Vec<DeviceFile>) -> Result<Vec<Pair>, String> {
+fn pairs(
+    old_path: &Path,
+    old: Vec<DeviceFile>,
+    new_path: &Path,
+    new: Vec<DeviceFile>,
+) -> Result<Vec<Pair>, String> {
     let kinds: Vec<bool> = match (is_description(old_path), is_description(new_path)) {
         (true, true) => vec![true, false],
         (true, false) => new.iter().map(is_gsd).collect(),
@@ -186,7 +195,11 @@ fn pairs(old_path: &Path, old: Vec<DeviceFile>, new_path: &Path, new: Vec<Device
         let pair = match (take(&mut old), take(&mut new)) {
             (Some(a), Some(b)) => {
                 let changes = crate::diff::compare(&a.device, &b.device).unwrap_or_default();
-                Pair { old: Some(a), new: Some(b), changes }
+                Pair {
+                    old: Some(a),
+                    new: Some(b),
+                    changes,
+                }
             }
             (None, None) => continue,
             (a, b) if is_description(old_path) && is_description(new_path) => Pair {
@@ -203,7 +216,8 @@ fn pairs(old_path: &Path, old: Vec<DeviceFile>, new_path: &Path, new: Vec<Device
 }
 
 fn is_description(path: &Path) -> bool {
-    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
 }
 
 fn kind_name(gsd: bool) -> &'static str {
@@ -245,7 +259,8 @@ fn human(pairs: &[Pair]) -> String {
     let mut out = Vec::new();
     let mut counts = [0usize; 3];
     for pair in pairs {
-        let name = |f: &Option<DeviceFile>| f.as_ref().map_or("(none)".to_string(), |f| f.shown.clone());
+        let name =
+            |f: &Option<DeviceFile>| f.as_ref().map_or("(none)".to_string(), |f| f.shown.clone());
         out.push(format!("{} → {}", name(&pair.old), name(&pair.new)));
         if pair.changes.is_empty() {
             out.push("  no change".into());
@@ -279,7 +294,10 @@ fn human_change(change: &Change) -> Vec<String> {
     }
     lines.extend(places(change));
     if change.more > 0 {
-        lines.push(format!("      and {} more place(s) with the same change", change.more));
+        lines.push(format!(
+            "      and {} more place(s) with the same change",
+            change.more
+        ));
     }
     lines
 }
@@ -287,8 +305,13 @@ fn human_change(change: &Change) -> Vec<String> {
 /// Where the change is: the line in each file (as the pair's header names
 /// them), and the element's path in a GSDML file.
 fn places(change: &Change) -> Option<String> {
-    let line = |side: &str, place: &Option<Place>| place.as_ref().map(|p| format!("{side} line {}", p.line));
-    let lines: Vec<String> = [line("old", &change.old), line("new", &change.new)].into_iter().flatten().collect();
+    let line = |side: &str, place: &Option<Place>| {
+        place.as_ref().map(|p| format!("{side} line {}", p.line))
+    };
+    let lines: Vec<String> = [line("old", &change.old), line("new", &change.new)]
+        .into_iter()
+        .flatten()
+        .collect();
     if lines.is_empty() {
         return None;
     }
@@ -312,7 +335,11 @@ fn json(pairs: &[Pair]) -> String {
     };
     let mut summary = serde_json::Map::new();
     for class in Class::ALL {
-        let n = pairs.iter().flat_map(|p| &p.changes).filter(|c| c.class == class).count();
+        let n = pairs
+            .iter()
+            .flat_map(|p| &p.changes)
+            .filter(|c| c.class == class)
+            .count();
         summary.insert(class.as_str().into(), n.into());
     }
     let pairs: Vec<serde_json::Value> = pairs

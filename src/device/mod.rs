@@ -52,8 +52,8 @@ pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
             let text = crate::gsdml::decode(bytes).ok()?;
             let doc = crate::gsdml::parse(&text).ok()?;
             let root = doc.root_element();
-            let is_gsdml = crate::gsdml::index::in_gsdml(&root)
-                && root.tag_name().name() == "ISO15745Profile";
+            let is_gsdml =
+                crate::gsdml::index::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
             is_gsdml.then(|| Device::Pn(read_gsdml(&doc, file_name)))
         }
         crate::file_kind::FileKind::Neither => None,

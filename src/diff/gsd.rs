@@ -10,7 +10,7 @@ use super::params::{self, Scope};
 use super::{judge, Change, Changes, Class, Kind};
 use crate::device::dp::{DiagArea, DiagBit, DiagValue, DpDevice, DpModule, DpSlot, Keyword};
 use crate::device::{Allowed, Place, Text};
-use crate::gsd::Value;
+use crate::gsd::{Arg, Value};
 
 /// Every change from `old` to `new`, breaking first.
 pub fn compare(old: &DpDevice, new: &DpDevice) -> Vec<super::Change> {
@@ -40,9 +40,26 @@ fn file_name(old: &DpDevice, new: &DpDevice, out: &mut Changes) {
     }
 }
 
-/// Keywords paired by key and argument, each judged by its rule.
+/// Keywords paired by key and argument, each judged by its rule. A baud
+/// rate supported or dropped is one change: its MaxTsdr comes and goes
+/// with it.
 fn keywords(prefix: &str, old: &[Keyword], new: &[Keyword], out: &mut Changes) {
-    let pairing = super::pairing::pair(old, new, |k| (k.key.clone(), k.arg));
+    let supported = |keywords: &[Keyword]| -> Vec<Arg> {
+        keywords
+            .iter()
+            .filter(|k| k.key == "<baud>_supp" && k.value.as_number() == Some(1))
+            .filter_map(|k| k.arg)
+            .collect()
+    };
+    let (old_bauds, new_bauds) = (supported(old), supported(new));
+    let with_its_rate = |k: &&Keyword| {
+        k.key != "maxtsdr_<baud>"
+            || k.arg
+                .is_some_and(|a| old_bauds.contains(&a) == new_bauds.contains(&a))
+    };
+    let old: Vec<Keyword> = old.iter().filter(with_its_rate).cloned().collect();
+    let new: Vec<Keyword> = new.iter().filter(with_its_rate).cloned().collect();
+    let pairing = super::pairing::pair(&old, &new, |k| (k.key.clone(), k.arg));
     let text = |k: &Keyword| value_text(&k.value);
     let subject = |k: &Keyword| format!("{prefix}{}", k.name);
     for (a, b) in pairing.both {
@@ -297,8 +314,11 @@ fn diag_added(subject: String, at: &Place) -> Change {
         .at(None, Some(at))
 }
 
+/// Diagnosis bits by number, then by text: a text at another bit is the
+/// same diagnosis moved.
 fn bits(prefix: &str, old: &[DiagBit], new: &[DiagBit], out: &mut Changes) {
-    let pairing = super::pairing::pair(old, new, |b| (b.bit, b.when_clear));
+    let pairing = super::pairing::pair(old, new, |b| (b.bit, b.when_clear))
+        .then(|b| Some((b.text.clone(), b.when_clear)));
     let subject = |b: &DiagBit| {
         let kind = if b.when_clear {
             "Unit_Diag_Not_Bit"
@@ -307,8 +327,15 @@ fn bits(prefix: &str, old: &[DiagBit], new: &[DiagBit], out: &mut Changes) {
         };
         format!("{prefix}{kind}({})", b.bit)
     };
-    for (a, b) in pairing.both {
+    for (a, b) in pairing.both.iter().chain(&pairing.rekeyed) {
         let at = (Some(&a.place), Some(&b.place));
+        if a.bit != b.bit {
+            out.push(
+                Change::new(Class::Compatible, Kind::Diagnosis, subject(b), format!("moved from bit {}", a.bit))
+                    .why("projects configured with the old file know its text at the old bit and show it without its text")
+                    .at(at.0, at.1),
+            );
+        }
         out.text(&subject(b), Some(&a.text), Some(&b.text), at);
         out.text(
             &format!("{} help", subject(b)),

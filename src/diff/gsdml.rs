@@ -19,6 +19,13 @@ use crate::device::{Attribute, Place};
 /// Every change from `old` to `new`, breaking first.
 pub fn compare(old: &PnDevice, new: &PnDevice) -> Vec<Change> {
     let mut out = Changes::default();
+    let both: BTreeSet<String> = old
+        .languages
+        .iter()
+        .filter(|l| new.languages.contains(l))
+        .cloned()
+        .collect();
+    out.1 = super::Languages(Some(both));
     file(old, new, &mut out);
     identity(old, new, &mut out);
     languages(&old.languages, &new.languages, &mut out);

@@ -619,7 +619,7 @@ pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut
     for (a, b) in pairing.both {
         if let (AttributeValue::Text(x), AttributeValue::Text(y)) = (&a.value, &b.value) {
             out.text(
-                &format!("{subject} {}", a.name),
+                &format!("{subject} {}", shown(&a.name)),
                 Some(x),
                 Some(y),
                 (Some(&a.place), Some(&b.place)),
@@ -627,7 +627,7 @@ pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut
             continue;
         }
         let rule = gsdml_rule(&a.name);
-        let subject = format!("{subject} {}", a.name);
+        let subject = format!("{subject} {}", shown(&a.name));
         out.0.extend(judge(
             rule,
             subject,
@@ -638,7 +638,7 @@ pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut
     }
     for a in pairing.gone {
         let rule = gsdml_rule(&a.name);
-        let subject = format!("{subject} {}", a.name);
+        let subject = format!("{subject} {}", shown(&a.name));
         out.0.extend(judge(
             rule,
             subject,
@@ -649,7 +649,7 @@ pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut
     }
     for b in pairing.added {
         let rule = gsdml_rule(&b.name);
-        let subject = format!("{subject} {}", b.name);
+        let subject = format!("{subject} {}", shown(&b.name));
         out.0.extend(judge(
             rule,
             subject,
@@ -658,6 +658,12 @@ pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut
             (None, Some(&b.place)),
         ));
     }
+}
+
+/// An attribute's name as a change names it: a text by its element
+/// (`ModuleInfo/Name`, not `ModuleInfo/Name@TextId`).
+fn shown(name: &str) -> &str {
+    name.strip_suffix("@TextId").unwrap_or(name)
 }
 
 #[cfg(test)]

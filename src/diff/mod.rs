@@ -173,7 +173,13 @@ impl Change {
 
 /// The changes found so far.
 #[derive(Default)]
-struct Changes(Vec<Change>);
+struct Changes(Vec<Change>, Languages);
+
+/// The translations texts are compared in: those of the languages both
+/// files have (a language added or removed is one change of its own), or
+/// all of them.
+#[derive(Default)]
+struct Languages(Option<std::collections::BTreeSet<String>>);
 
 impl Changes {
     fn push(&mut self, change: Change) {
@@ -214,7 +220,10 @@ impl Changes {
             return;
         }
         let change = match (old, new) {
-            (Some(old), Some(new)) => text_change(old, new),
+            (Some(old), Some(new)) => match text_change(old, new, &self.1) {
+                change if change.is_empty() => return,
+                change => change,
+            },
             (None, Some(new)) => format!("text {new} added"),
             (Some(old), None) => format!("text {old} removed"),
             (None, None) => return,
@@ -227,8 +236,9 @@ impl Changes {
     }
 }
 
-/// How a text changed: its primary language, else each translation that did.
-fn text_change(old: &Text, new: &Text) -> String {
+/// How a text changed: its primary language, else each translation that
+/// did, in the languages compared; empty when none did.
+fn text_change(old: &Text, new: &Text, compared: &Languages) -> String {
     if old.primary != new.primary {
         return format!("{old} → {new}");
     }
@@ -237,6 +247,7 @@ fn text_change(old: &Text, new: &Text) -> String {
         .translations
         .keys()
         .chain(new.translations.keys())
+        .filter(|lang| compared.0.as_ref().is_none_or(|both| both.contains(*lang)))
         .collect();
     for lang in languages {
         match (old.translations.get(lang), new.translations.get(lang)) {

@@ -52,23 +52,25 @@ pub fn compare(scope: &Scope, old: &ParameterData, new: &ParameterData, out: &mu
     }
     let pairing = super::pairing::pair(&old.fields, &new.fields, |f| (f.byte_offset, f.bits))
         .then(|f| (!f.name.primary.is_empty()).then(|| f.name.clone()));
+    // A name that left its place for another's is a parameter moved, though
+    // both places still hold one (two parameters that traded places).
+    let name_elsewhere = |fields: &[Field], f: &Field| {
+        fields
+            .iter()
+            .find(|g| g.name == f.name && (g.byte_offset, g.bits) != (f.byte_offset, f.bits))
+            .cloned()
+    };
     for (a, b) in &pairing.both {
+        if a.name != b.name && !b.name.primary.is_empty() {
+            if let Some(was) = name_elsewhere(&old.fields, b) {
+                out.push(moved(scope, &was, b));
+                continue;
+            }
+        }
         field(scope, a, b, out);
     }
     for (a, b) in &pairing.rekeyed {
-        out.push(
-            Change::new(
-                Class::Breaking,
-                scope.kind,
-                subject(scope, b),
-                format!("moved from {} to {}", place(a), place(b)),
-            )
-            .why(match scope.sent {
-                true => "projects configured with the old file send it at its old place: the device reads other bits there",
-                false => "projects configured with the old file read it at its old place",
-            })
-            .at(Some(&a.place), Some(&b.place)),
-        );
+        out.push(moved(scope, a, b));
         field(scope, a, b, out);
     }
     let old_image = Image::of(old);
@@ -105,6 +107,21 @@ pub fn compare(scope: &Scope, old: &ParameterData, new: &ParameterData, out: &mu
         );
     }
     fixed_bits(scope, &old_image, &Image::of(new), out);
+}
+
+/// The parameter `a` of the old file is `b` at another place.
+fn moved(scope: &Scope, a: &Field, b: &Field) -> Change {
+    Change::new(
+        Class::Breaking,
+        scope.kind,
+        subject(scope, b),
+        format!("moved from {} to {}", place(a), place(b)),
+    )
+    .why(match scope.sent {
+        true => "projects configured with the old file send it at its old place: the device reads other bits there",
+        false => "projects configured with the old file read it at its old place",
+    })
+    .at(Some(&a.place), Some(&b.place))
 }
 
 /// What changed of one parameter at one place.
