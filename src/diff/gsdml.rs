@@ -7,14 +7,14 @@
 //! IDs are names inside the file; when an ident number changed, the
 //! element of the same ID shows what it was.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 use super::params::{self, Scope};
 use super::{judge, quoted, Change, Changes, Class, Kind};
 use crate::device::pn::{
     Dap, DataItem, DiagItem, IoPart, ItemRef, PnDevice, PnModule, Record, Submodule, SubmoduleKind,
 };
-use crate::device::{Attribute, Place};
+use crate::device::{Attribute, Place, Text};
 
 /// Every change from `old` to `new`, breaking first.
 pub fn compare(old: &PnDevice, new: &PnDevice) -> Vec<Change> {
@@ -139,14 +139,27 @@ fn languages(old: &[String], new: &[String], out: &mut Changes) {
 /// The ident numbers of each file's modules and pluggable submodules: a
 /// reference to an item the other file lacks is reported with the item.
 struct Catalogue {
-    modules: (BTreeSet<u32>, BTreeSet<u32>),
-    submodules: (BTreeSet<u32>, BTreeSet<u32>),
+    modules: (Items, Items),
+    submodules: (Items, Items),
 }
+
+/// Items by ident number, with their names.
+type Items = BTreeMap<u32, Option<Text>>;
 
 impl Catalogue {
     fn of(old: &PnDevice, new: &PnDevice) -> Catalogue {
-        let modules = |d: &PnDevice| d.modules.iter().filter_map(|m| m.ident).collect();
-        let submodules = |d: &PnDevice| d.submodules.iter().filter_map(|s| s.ident).collect();
+        let modules = |d: &PnDevice| {
+            d.modules
+                .iter()
+                .filter_map(|m| Some((m.ident?, m.name.clone())))
+                .collect()
+        };
+        let submodules = |d: &PnDevice| {
+            d.submodules
+                .iter()
+                .filter_map(|s| Some((s.ident?, s.name.clone())))
+                .collect()
+        };
         Catalogue {
             modules: (modules(old), modules(new)),
             submodules: (submodules(old), submodules(new)),
@@ -218,38 +231,42 @@ fn item_refs(
     subject: &str,
     what: &str,
     (old, new): (&[ItemRef], &[ItemRef]),
-    (old_items, new_items): &(BTreeSet<u32>, BTreeSet<u32>),
+    (old_items, new_items): &(Items, Items),
     out: &mut Changes,
 ) {
     let key = |r: &ItemRef| {
         r.ident
             .map_or_else(|| r.target.clone(), |i| format!("0x{i:08X}"))
     };
+    let name = |r: &ItemRef| {
+        let text = r.ident.and_then(|i| new_items.get(&i).or(old_items.get(&i))).cloned().flatten();
+        format!("{subject} {what}{} ({})", quoted(text.as_ref()), key(r))
+    };
     let pairing = super::pairing::pair(old, new, key);
     for (a, b) in pairing.both {
         judge::attributes(
-            &format!("{subject} {what} {}", key(b)),
+            &name(b),
             &a.attributes,
             &b.attributes,
             out,
         );
     }
     for a in pairing.gone {
-        if a.ident.is_some_and(|i| new_items.contains(&i)) {
+        if a.ident.is_some_and(|i| new_items.contains_key(&i)) {
             out.push(
-                Change::new(Class::Breaking, Kind::Module, format!("{subject} {what} {}", key(a)), "no longer offered")
+                Change::new(Class::Breaking, Kind::Module, name(a), "no longer offered")
                     .why("a project configured with the old file may have it plugged: the engineering tool refuses the station, and the device the configuration")
                     .at(Some(&a.place), None),
             );
         }
     }
     for b in pairing.added {
-        if b.ident.is_some_and(|i| old_items.contains(&i)) {
+        if b.ident.is_some_and(|i| old_items.contains_key(&i)) {
             out.push(
                 Change::new(
                     Class::Compatible,
                     Kind::Module,
-                    format!("{subject} {what} {}", key(b)),
+                    name(b),
                     "now offered",
                 )
                 .why("old projects do not use it")
@@ -306,7 +323,7 @@ fn module(a: &PnModule, b: &PnModule, out: &mut Changes) {
         at,
     );
     judge::attributes(&subject, &a.attributes, &b.attributes, out);
-    let no_items = (BTreeSet::new(), BTreeSet::new());
+    let no_items = (Items::new(), Items::new());
     item_refs(
         &subject,
         "submodule",
