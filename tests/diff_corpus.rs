@@ -31,8 +31,15 @@ fn diff(old: &str, new: &str, extra: &[&str]) -> (String, i32) {
     let mut args = vec!["diff", old.as_str(), new.as_str()];
     args.extend(extra);
     let out = gsdc(&args);
-    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
-    (String::from_utf8(out.stdout).unwrap(), out.status.code().unwrap())
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (
+        String::from_utf8(out.stdout).unwrap(),
+        out.status.code().unwrap(),
+    )
 }
 
 fn snapshot(name: &str, review: &str, output: &str) {
@@ -141,7 +148,10 @@ fn fail_on_compatible_and_cosmetic_are_stricter_gates() {
         "GSDML-V2.33-rt-labs-IODevice-20191008.xml",
         "GSDML-V2.35-rtlabs-IODevice-20200603.xml",
     );
-    assert_eq!(diff(rt_labs.0, rt_labs.1, &["--fail-on", "compatible"]).1, 1);
+    assert_eq!(
+        diff(rt_labs.0, rt_labs.1, &["--fail-on", "compatible"]).1,
+        1
+    );
 }
 
 #[test]
@@ -153,7 +163,10 @@ fn json_for_ci() {
     );
     assert_eq!(code, 1);
     let doc: serde_json::Value = serde_json::from_str(&output).unwrap();
-    assert_eq!(doc["summary"], serde_json::json!({"breaking": 2, "compatible": 3, "cosmetic": 3}));
+    assert_eq!(
+        doc["summary"],
+        serde_json::json!({"breaking": 2, "compatible": 3, "cosmetic": 3})
+    );
     let changes = doc["pairs"][0]["changes"].as_array().unwrap();
     let vendor = &changes[0];
     assert_eq!(vendor["class"], "breaking");
@@ -163,10 +176,16 @@ fn json_for_ci() {
     assert_eq!(vendor["judged"], true);
     assert_eq!(vendor["old"]["line"], 17);
     assert_eq!(vendor["old"]["path"], "DeviceIdentity");
-    assert!(vendor["old"]["file"].as_str().unwrap().ends_with("20210507.xml"));
+    assert!(vendor["old"]["file"]
+        .as_str()
+        .unwrap()
+        .ends_with("20210507.xml"));
     let added = changes.iter().find(|c| c["change"] == "added").unwrap();
     assert_eq!(added["old"], serde_json::Value::Null);
-    assert_eq!(added["new"]["path"], "ApplicationProcess/ModuleList/ModuleItem[IDM_40]");
+    assert_eq!(
+        added["new"]["path"],
+        "ApplicationProcess/ModuleList/ModuleItem[IDM_40]"
+    );
 }
 
 /// A file diff cannot read gets what `gsdc check` says of it, exit 2; a
@@ -182,7 +201,11 @@ fn unreadable_and_mismatched_files_exit_2() {
     assert_eq!(out.status.code(), Some(2));
     let stdout = String::from_utf8_lossy(&out.stdout);
     let check = gsdc(&["check", broken.to_str().unwrap()]);
-    assert_eq!(stdout, String::from_utf8_lossy(&check.stdout), "the check path's own output");
+    assert_eq!(
+        stdout,
+        String::from_utf8_lossy(&check.stdout),
+        "the check path's own output"
+    );
     assert!(stdout.contains("error[E300]"), "{stdout}");
     assert!(String::from_utf8_lossy(&out.stderr).contains("nothing compared"));
 
@@ -202,25 +225,71 @@ fn unreadable_and_mismatched_files_exit_2() {
 #[test]
 fn descriptions_are_compared_by_what_they_build() {
     let dir = std::env::temp_dir().join(format!("gsdc-diff-desc-{}", std::process::id()));
-    let out = gsdc(&["build", "descriptions/md810dp.toml", "--out", dir.to_str().unwrap(), "--firmware", "none"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = gsdc(&[
+        "build",
+        "descriptions/md810dp.toml",
+        "--out",
+        dir.to_str().unwrap(),
+        "--firmware",
+        "none",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let released = dir.join("MD810DP.GSD");
-    let out = gsdc(&["diff", released.to_str().unwrap(), "descriptions/md810dp.toml"]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = gsdc(&[
+        "diff",
+        released.to_str().unwrap(),
+        "descriptions/md810dp.toml",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let stdout = String::from_utf8(out.stdout).unwrap();
-    assert!(stdout.starts_with(&format!("{} → descriptions/md810dp.toml (MD810DP.GSD)\n  no change\n", released.display())), "{stdout}");
-    assert!(!stdout.contains("GSDML"), "only the GSD is compared: {stdout}");
+    assert!(
+        stdout.starts_with(&format!(
+            "{} → descriptions/md810dp.toml (MD810DP.GSD)\n  no change\n",
+            released.display()
+        )),
+        "{stdout}"
+    );
+    assert!(
+        !stdout.contains("GSDML"),
+        "only the GSD is compared: {stdout}"
+    );
 
     let changed = dir.join("md810dp.toml");
     let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
     std::fs::write(&changed, text.replace("\"12M\" = 800\n", "\"12M\" = 900\n")).unwrap();
     std::fs::create_dir_all(dir.join("symbols")).unwrap();
-    std::fs::copy("descriptions/symbols/md810dp.png", dir.join("symbols/md810dp.png")).unwrap();
-    let out = gsdc(&["diff", "descriptions/md810dp.toml", changed.to_str().unwrap()]);
+    std::fs::copy(
+        "descriptions/symbols/md810dp.png",
+        dir.join("symbols/md810dp.png"),
+    )
+    .unwrap();
+    let out = gsdc(&[
+        "diff",
+        "descriptions/md810dp.toml",
+        changed.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(1));
     let stdout = String::from_utf8(out.stdout).unwrap();
-    assert!(stdout.contains("  MaxTsdr_12M: \"800\" → \"900\"\n"), "{stdout}");
-    assert!(stdout.contains("(GSDML-V2.32-INOVANCE-MD810-20261122.xml)\n  no change\n"), "{stdout}");
-    assert!(stdout.ends_with("1 breaking, 0 compatible, 0 cosmetic\n"), "{stdout}");
+    assert!(
+        stdout.contains("  MaxTsdr_12M: \"800\" → \"900\"\n"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("(GSDML-V2.32-INOVANCE-MD810-20261122.xml)\n  no change\n"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.ends_with("1 breaking, 0 compatible, 0 cosmetic\n"),
+        "{stdout}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -239,17 +239,16 @@ fn item_refs(
             .map_or_else(|| r.target.clone(), |i| format!("0x{i:08X}"))
     };
     let name = |r: &ItemRef| {
-        let text = r.ident.and_then(|i| new_items.get(&i).or(old_items.get(&i))).cloned().flatten();
+        let text = r
+            .ident
+            .and_then(|i| new_items.get(&i).or(old_items.get(&i)))
+            .cloned()
+            .flatten();
         format!("{subject} {what}{} ({})", quoted(text.as_ref()), key(r))
     };
     let pairing = super::pairing::pair(old, new, key);
     for (a, b) in pairing.both {
-        judge::attributes(
-            &name(b),
-            &a.attributes,
-            &b.attributes,
-            out,
-        );
+        judge::attributes(&name(b), &a.attributes, &b.attributes, out);
     }
     for a in pairing.gone {
         if a.ident.is_some_and(|i| new_items.contains_key(&i)) {
@@ -263,14 +262,9 @@ fn item_refs(
     for b in pairing.added {
         if b.ident.is_some_and(|i| old_items.contains_key(&i)) {
             out.push(
-                Change::new(
-                    Class::Compatible,
-                    Kind::Module,
-                    name(b),
-                    "now offered",
-                )
-                .why("old projects do not use it")
-                .at(None, Some(&b.place)),
+                Change::new(Class::Compatible, Kind::Module, name(b), "now offered")
+                    .why("old projects do not use it")
+                    .at(None, Some(&b.place)),
             );
         }
     }

@@ -32,7 +32,7 @@ pub fn lower(
     let near = p.span();
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
-    let date = date(cx, &p.date)?;
+    let (date, time) = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
         p.file_vendor.as_ref().unwrap_or(&desc.device.vendor),
@@ -83,8 +83,9 @@ pub fn lower(
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {
         file_name: format!(
-            "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
-            date.compact()
+            "GSDML-{gsdml_version}-{file_vendor}-{family}-{}{}.xml",
+            date.compact(),
+            time.map(|t| format!("-{t}")).unwrap_or_default()
         ),
         gsdml_version,
         date,
@@ -227,19 +228,29 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
     version
 }
 
-fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<Date> {
+/// The file's date, and its time (`hhmmss`) when it has one: a second
+/// release on one day needs a name of its own, as TIA Portal does not
+/// replace an installed file of the same name. A GSDML file name has a
+/// local date and time to the second: no offset, no fraction.
+fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<(Date, Option<String>)> {
+    let whole_seconds = |t: &toml::value::Time| t.nanosecond.unwrap_or(0) == 0;
     match (d.get_ref().date, d.get_ref().time, d.get_ref().offset) {
-        (Some(date), None, None) => Some(Date {
-            year: date.year,
-            month: date.month,
-            day: date.day,
-        }),
+        (Some(date), time, None) if time.as_ref().is_none_or(whole_seconds) => {
+            let time =
+                time.map(|t| format!("{:02}{:02}{:02}", t.hour, t.minute, t.second.unwrap_or(0)));
+            let date = Date {
+                year: date.year,
+                month: date.month,
+                day: date.day,
+            };
+            Some((date, time))
+        }
         _ => {
             cx.push(
-                Diagnostic::error("E131", "the GSDML date must be a date without a time")
+                Diagnostic::error("E131", "the GSDML date must be a date, or a date and a local time to the second")
                     .at(d.span())
-                    .label("not a plain date")
-                    .help("write a TOML date like date = 2023-08-30"),
+                    .label("not a date of a GSDML file name")
+                    .help("write a TOML date like date = 2023-08-30, or date = 2023-08-30T14:30:00 for a second release on one day (no time zone, no fraction of a second)"),
             );
             None
         }
