@@ -18,6 +18,7 @@ mod gsdml;
 mod judge;
 mod pairing;
 mod params;
+pub(crate) mod release;
 
 use std::fmt;
 
