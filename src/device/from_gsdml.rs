@@ -5,6 +5,8 @@
 //! reads as the same device. Elements the model has no type for are kept
 //! as attributes of the typed element they are in ([`Reader::flatten`]).
 
+use std::sync::Arc;
+
 use foldhash::{HashMap, HashMapExt};
 use roxmltree::{Document, Node};
 
@@ -84,6 +86,14 @@ struct Reader<'a> {
     graphics: HashMap<&'a str, &'a str>,
     /// Module, submodule and DAP IDs with their ident numbers.
     idents: HashMap<&'a str, u32>,
+    /// The paths of the elements placed so far, each built once from its
+    /// parent's.
+    paths: std::cell::RefCell<HashMap<roxmltree::NodeId, Arc<str>>>,
+    /// Names and values met so far: the same ones repeat through a file,
+    /// and each is kept once.
+    interned: std::cell::RefCell<foldhash::HashSet<Arc<str>>>,
+    /// The buffers of [`Reader::flatten_into`]'s walks.
+    buffers: std::cell::Cell<(String, String)>,
 }
 
 impl<'a> Reader<'a> {
@@ -95,6 +105,9 @@ impl<'a> Reader<'a> {
             categories: HashMap::new(),
             graphics: HashMap::new(),
             idents: HashMap::new(),
+            paths: std::cell::RefCell::new(HashMap::new()),
+            interned: std::cell::RefCell::default(),
+            buffers: std::cell::Cell::default(),
         };
         if let Some(process) = process {
             reader.index(process);
@@ -176,15 +189,25 @@ impl<'a> Reader<'a> {
             for text in children(language, "Text") {
                 if let (Some(id), Some(value)) = (text.attribute("TextId"), text.attribute("Value"))
                 {
-                    self.texts
-                        .entry(id)
-                        .or_default()
-                        .translations
+                    // Each text's translations are its own until the index is done.
+                    let text = self.texts.entry(id).or_default();
+                    Arc::make_mut(&mut text.translations)
                         .entry(lang.to_string())
                         .or_insert_with(|| value.to_string());
                 }
             }
         }
+    }
+
+    /// `text`, shared with every other use of it in the file.
+    fn intern(&self, text: &str) -> Arc<str> {
+        let mut interned = self.interned.borrow_mut();
+        if let Some(known) = interned.get(text) {
+            return known.clone();
+        }
+        let new: Arc<str> = Arc::from(text);
+        interned.insert(new.clone());
+        new
     }
 
     /// The text of a TextId; a TextId the file does not define is its own
@@ -206,8 +229,26 @@ impl<'a> Reader<'a> {
     fn place(&self, node: El<'_, '_>) -> Place {
         Place {
             line: self.lines.line(node.range().start),
-            path: Some(path_of(node)),
+            path: Some(self.path(node)),
         }
+    }
+
+    /// The path of an element from `ProfileBody`, each element named by
+    /// what identifies it among its siblings.
+    fn path(&self, node: El<'_, '_>) -> Arc<str> {
+        if let Some(known) = self.paths.borrow().get(&node.id()) {
+            return known.clone();
+        }
+        let top = |n: &El<'_, '_>| matches!(n.tag_name().name(), "ProfileBody" | "ISO15745Profile");
+        let mut path = String::new();
+        if let Some(parent) = node.parent_element().filter(|p| in_gsdml(p) && !top(p)) {
+            path.push_str(&self.path(parent));
+            path.push('/');
+        }
+        push_segment(&mut path, node);
+        let path: Arc<str> = path.into();
+        self.paths.borrow_mut().insert(node.id(), path.clone());
+        path
     }
 
     fn identity(&self, body: El<'_, '_>, device: &mut PnDevice) {
@@ -386,7 +427,7 @@ impl<'a> Reader<'a> {
             })
             .collect();
         DataItem {
-            data_type: node.attribute("DataType").unwrap_or_default().to_string(),
+            data_type: self.intern(node.attribute("DataType").unwrap_or_default()),
             length: node.attribute("Length").and_then(|l| l.parse().ok()),
             text: node.attribute("TextId").map(|id| self.text(id)),
             use_as_bits: node.attribute("UseAsBits") == Some("true"),
@@ -507,7 +548,7 @@ impl<'a> Reader<'a> {
             .map(|e| self.diag_item(e))
             .collect();
         DiagItem {
-            element: node.tag_name().name().to_string(),
+            element: self.intern(node.tag_name().name()),
             error_type: node
                 .attribute("ErrorType")
                 .or(node.attribute("Reason"))
@@ -570,49 +611,71 @@ impl<'a> Reader<'a> {
         entity: &Place,
         out: &mut Vec<Attribute>,
     ) {
-        let start = out.len();
-        let mut stack = vec![(node, rel.to_string())];
-        while let Some((element, path)) = stack.pop() {
-            let place = Place {
-                line: self.lines.line(element.range().start),
-                path: entity.path.clone(),
-            };
-            let own = path == rel;
-            for attribute in element.attributes() {
-                let name = attribute.name();
-                if attribute.namespace().is_some()
-                    || (own && own_skipped.contains(&name))
-                    || (!own && name == "ID")
-                {
-                    continue;
-                }
-                let full = match path.is_empty() {
-                    true => name.to_string(),
-                    false => format!("{path}@{name}"),
-                };
-                let value = self.attribute_value(name, attribute.value());
-                join(&mut out[start..], &full, &value).unwrap_or_else(|| {
-                    out.push(Attribute {
-                        name: full,
-                        value,
-                        place: place.clone(),
-                    })
-                });
+        // The walks reuse two buffers: a file has thousands of them.
+        let (below, name) = self.buffers.take();
+        let mut walk = Walk {
+            rel,
+            own_skipped,
+            typed_parts,
+            entity,
+            start: out.len(),
+            below,
+            name,
+        };
+        walk.below.clear();
+        self.walk(node, &mut walk, out);
+        self.buffers.set((walk.below, walk.name));
+    }
+
+    /// One element of a [`Reader::flatten_into`], then the elements in it,
+    /// in document order; `walk.below` is the element's path below the
+    /// flattened one, grown and cut back as the walk goes down and up.
+    fn walk(&self, element: El<'_, '_>, walk: &mut Walk<'_>, out: &mut Vec<Attribute>) {
+        let own = walk.below.is_empty();
+        let line = std::cell::OnceCell::new();
+        for attribute in element.attributes() {
+            let name = attribute.name();
+            if attribute.namespace().is_some()
+                || (own && walk.own_skipped.contains(&name))
+                || (!own && name == "ID")
+            {
+                continue;
             }
-            let inner: Vec<El<'_, '_>> = element.children().filter(in_gsdml).collect();
-            for child in inner.into_iter().rev() {
-                let name = child.tag_name().name();
-                let child_path = match path.is_empty() {
-                    true => name.to_string(),
-                    false => format!("{path}/{name}"),
-                };
-                if !typed_parts.contains(&child_path.trim_start_matches(&format!("{rel}/"))) {
-                    stack.push((child, child_path));
-                }
+            // `rel/below@name`, each part when there is one.
+            let full = &mut walk.name;
+            full.clear();
+            full.push_str(walk.rel);
+            if !walk.rel.is_empty() && !own {
+                full.push('/');
             }
+            full.push_str(&walk.below);
+            if !full.is_empty() {
+                full.push('@');
+            }
+            full.push_str(name);
+            let value = self.attribute_value(name, attribute.value());
+            join(&mut out[walk.start..], full, &value).unwrap_or_else(|| {
+                out.push(Attribute {
+                    name: self.intern(full),
+                    value,
+                    place: Place {
+                        line: *line.get_or_init(|| self.lines.line(element.range().start)),
+                        path: walk.entity.path.clone(),
+                    },
+                })
+            });
         }
-        // The stack visits children in document order; attributes of one
-        // element stay in their order.
+        for child in element.children().filter(in_gsdml) {
+            let length = walk.below.len();
+            if !own {
+                walk.below.push('/');
+            }
+            walk.below.push_str(child.tag_name().name());
+            if !walk.typed_parts.contains(&walk.below.as_str()) {
+                self.walk(child, walk, out);
+            }
+            walk.below.truncate(length);
+        }
     }
 
     /// An attribute's value with what it refers to resolved.
@@ -627,16 +690,47 @@ impl<'a> Reader<'a> {
                 AttributeValue::Text(text)
             }
             "GraphicItemTarget" => {
-                AttributeValue::Plain(self.graphics.get(value).unwrap_or(&value).to_string())
+                AttributeValue::Plain(self.intern(self.graphics.get(value).unwrap_or(&value)))
             }
-            "ModuleItemTarget" | "SubmoduleItemTarget" => AttributeValue::Plain(
-                self.idents
-                    .get(value)
-                    .map_or_else(|| value.to_string(), |i| format!("0x{i:08X}")),
-            ),
-            _ => AttributeValue::Plain(value.split_whitespace().collect::<Vec<_>>().join(" ")),
+            "ModuleItemTarget" | "SubmoduleItemTarget" => {
+                AttributeValue::Plain(match self.idents.get(value) {
+                    Some(ident) => format!("0x{ident:08X}").into(),
+                    None => self.intern(value),
+                })
+            }
+            _ => AttributeValue::Plain(match normalized(value) {
+                Some(value) => value.into(),
+                None => self.intern(value),
+            }),
         }
     }
+}
+
+/// A value with its blanks as XML reads a list (runs of white space one
+/// blank, none at the ends), when that is not the value as written: most
+/// values have nothing to normalize.
+fn normalized(value: &str) -> Option<String> {
+    let bytes = value.as_bytes();
+    let blank_at = |i: usize| bytes.get(i) == Some(&b' ');
+    let plain = bytes.iter().enumerate().all(|(i, &b)| match b {
+        b' ' => i != 0 && i + 1 != bytes.len() && !blank_at(i + 1),
+        b'\t' | b'\n' | b'\r' => false,
+        _ => true,
+    });
+    (!plain).then(|| value.split_whitespace().collect::<Vec<_>>().join(" "))
+}
+
+/// What a [`Reader::flatten_into`] carries down the elements it walks.
+struct Walk<'w> {
+    rel: &'w str,
+    own_skipped: &'w [&'w str],
+    typed_parts: &'w [&'w str],
+    entity: &'w Place,
+    /// Where the attributes of this walk start in its output.
+    start: usize,
+    below: String,
+    /// The name of the attribute at hand, built here.
+    name: String,
 }
 
 /// The attributes of a `Ref` that [`Field`] holds.
@@ -658,18 +752,20 @@ const FIELD_ATTRIBUTES: &[&str] = &[
 /// Joins `value` to the attribute `name` among `attributes`, if there is
 /// one; `None` when there is none.
 fn join(attributes: &mut [Attribute], name: &str, value: &AttributeValue) -> Option<()> {
-    let existing = attributes.iter_mut().find(|a| a.name == name)?;
+    let existing = attributes.iter_mut().find(|a| &*a.name == name)?;
     existing.value = match (&existing.value, value) {
         (AttributeValue::Text(a), AttributeValue::Text(b)) => {
             let mut joined = a.clone();
-            joined.primary = format!("{} | {}", a.primary, b.primary);
-            for (lang, text) in &b.translations {
-                let entry = joined.translations.entry(lang.clone()).or_default();
+            joined.primary = format!("{} | {}", a.primary, b.primary).into();
+            for (lang, text) in b.translations.iter() {
+                let entry = Arc::make_mut(&mut joined.translations)
+                    .entry(lang.clone())
+                    .or_default();
                 *entry = format!("{entry} | {text}");
             }
             AttributeValue::Text(joined)
         }
-        (a, b) => AttributeValue::Plain(format!("{} {}", plain(a), plain(b))),
+        (a, b) => AttributeValue::Plain(format!("{} {}", plain(a), plain(b)).into()),
     };
     Some(())
 }
@@ -681,48 +777,53 @@ fn plain(value: &AttributeValue) -> &str {
     }
 }
 
-/// The path of an element from `ProfileBody`, each element named by what
-/// identifies it among its siblings.
-fn path_of(node: El<'_, '_>) -> String {
-    let mut segments: Vec<String> = node
-        .ancestors()
-        .filter(in_gsdml)
-        .take_while(|n| !matches!(n.tag_name().name(), "ProfileBody" | "ISO15745Profile"))
-        .map(segment)
-        .collect();
-    segments.reverse();
-    segments.join("/")
-}
-
-fn segment(node: El<'_, '_>) -> String {
+/// Appends the element's name and what identifies it among its siblings
+/// (`ModuleItem[IDM_1]`, `Ref[ByteOffset=2,BitOffset=0]`, `DataItem[3]`).
+/// Built by hand: paths are made for every element placed, and `format!`
+/// would cost more than the rest of reading the element.
+fn push_segment(out: &mut String, node: El<'_, '_>) {
     let name = node.tag_name().name();
+    out.push_str(name);
     if let Some(id) = node.attribute("ID") {
-        return format!("{name}[{id}]");
+        out.push('[');
+        out.push_str(id);
+        out.push(']');
+        return;
     }
-    let key = |attributes: &[&str]| {
-        let parts: Vec<String> = attributes
+    let key = |out: &mut String, attributes: &[&str]| {
+        out.push('[');
+        let mut first = true;
+        for (attribute, value) in attributes
             .iter()
-            .filter_map(|a| Some(format!("{a}={}", node.attribute(*a)?)))
-            .collect();
-        format!("{name}[{}]", parts.join(","))
+            .filter_map(|a| Some((a, node.attribute(*a)?)))
+        {
+            if !first {
+                out.push(',');
+            }
+            first = false;
+            out.push_str(attribute);
+            out.push('=');
+            out.push_str(value);
+        }
+        out.push(']');
     };
     match name {
-        "ParameterRecordDataItem" => key(&["Index"]),
-        "Ref" => key(&["ByteOffset", "BitOffset"]),
-        "ModuleItemRef" => key(&["ModuleItemTarget"]),
-        "SubmoduleItemRef" => key(&["SubmoduleItemTarget"]),
-        "UnitDiagTypeItem" => key(&["UserStructureIdentifier"]),
-        _ if node.has_attribute("ErrorType") => key(&["ErrorType"]),
+        "ParameterRecordDataItem" => key(out, &["Index"]),
+        "Ref" => key(out, &["ByteOffset", "BitOffset"]),
+        "ModuleItemRef" => key(out, &["ModuleItemTarget"]),
+        "SubmoduleItemRef" => key(out, &["SubmoduleItemTarget"]),
+        "UnitDiagTypeItem" => key(out, &["UserStructureIdentifier"]),
+        _ if node.has_attribute("ErrorType") => key(out, &["ErrorType"]),
         "DataItem" | "BitDataItem" => {
-            let nth = node
-                .prev_sibling_element()
-                .into_iter()
-                .flat_map(|s| std::iter::successors(Some(s), |s| s.prev_sibling_element()))
-                .filter(|s| s.tag_name().name() == name)
-                .count();
-            format!("{name}[{}]", nth + 1)
+            let nth =
+                std::iter::successors(node.prev_sibling_element(), |s| s.prev_sibling_element())
+                    .filter(|s| s.tag_name().name() == name)
+                    .count();
+            out.push('[');
+            out.push_str(&(nth + 1).to_string());
+            out.push(']');
         }
-        _ => name.to_string(),
+        _ => {}
     }
 }
 
@@ -829,7 +930,7 @@ mod tests {
     }
 
     fn attribute<'d>(attributes: &'d [Attribute], name: &str) -> &'d AttributeValue {
-        &attributes.iter().find(|a| a.name == name).unwrap().value
+        &attributes.iter().find(|a| &*a.name == name).unwrap().value
     }
 
     #[test]
@@ -929,7 +1030,7 @@ mod tests {
             ])
         );
         assert!(!pzd.changeable);
-        assert_eq!(pzd.choices[0].text.primary, "Ready");
+        assert_eq!(&*pzd.choices[0].text.primary, "Ready");
         assert!(pzd
             .place
             .path

@@ -20,6 +20,7 @@ mod from_gsdml;
 
 use std::collections::BTreeMap;
 use std::fmt;
+use std::sync::Arc;
 
 pub use dp::DpDevice;
 pub use from_gsd::read as read_gsd;
@@ -63,28 +64,42 @@ pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
 /// Where a fact is written: its line, and in a GSDML file the path of its
 /// element from `ProfileBody`, each element named with what identifies it
 /// (`ApplicationProcess/ModuleList/ModuleItem[IDM_1]`).
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+///
+/// Places never make two facts differ: every place equals every other, so
+/// that two parts of the model are equal when they say the same, wherever
+/// their files write it (a comparison skips what is equal).
+#[derive(Debug, Clone, Default)]
 pub struct Place {
     /// 1-based.
     pub line: u32,
-    pub path: Option<String>,
+    /// Shared by the facts of one element.
+    pub path: Option<Arc<str>>,
 }
+
+impl PartialEq for Place {
+    fn eq(&self, _: &Place) -> bool {
+        true
+    }
+}
+
+impl Eq for Place {}
 
 /// A text in every language the file gives it: the primary one (a GSD's
 /// only one; a GSDML file's `PrimaryLanguage`, English by the specification)
-/// and the translations by language code.
+/// and the translations by language code. Shared: every use of one text
+/// ID is the same text, cloned without copying.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
 pub struct Text {
-    pub primary: String,
-    pub translations: BTreeMap<String, String>,
+    pub primary: Arc<str>,
+    pub translations: Arc<BTreeMap<String, String>>,
 }
 
 impl Text {
     /// A text in one language only.
     pub fn plain(text: impl Into<String>) -> Text {
         Text {
-            primary: text.into(),
-            translations: BTreeMap::new(),
+            primary: Arc::from(text.into()),
+            translations: Arc::default(),
         }
     }
 }
@@ -276,7 +291,8 @@ impl Field {
 /// (`MAUTypeList/MAUTypeItem@Value` = `16 30`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Attribute {
-    pub name: String,
+    /// Shared by every attribute of the name in a file.
+    pub name: Arc<str>,
     pub value: AttributeValue,
     pub place: Place,
 }
@@ -284,7 +300,7 @@ pub struct Attribute {
 /// An attribute's value: as written, or the text a `TextId` names.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum AttributeValue {
-    Plain(String),
+    Plain(Arc<str>),
     Text(Text),
 }
 

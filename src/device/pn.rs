@@ -5,6 +5,8 @@
 //! rest of an element and of the elements inside it that the model has no
 //! type for is kept in its `attributes` ([`Attribute`]), by path and name.
 
+use std::sync::Arc;
+
 use super::{Attribute, ParameterData, Place, Text};
 
 /// A GSDML file's device.
@@ -160,7 +162,7 @@ impl IoPart {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct DataItem {
-    pub data_type: String,
+    pub data_type: Arc<str>,
     /// `Length`, for strings and octet strings.
     pub length: Option<u32>,
     pub text: Option<Text>,
@@ -216,7 +218,7 @@ pub struct ItemRef {
 pub struct DiagItem {
     /// The element: `ChannelDiagItem`, `ProfileChannelDiagItem`,
     /// `ExtChannelDiagItem`...
-    pub element: String,
+    pub element: Arc<str>,
     pub error_type: u32,
     pub name: Option<Text>,
     pub help: Option<Text>,

@@ -59,10 +59,10 @@ fn keywords(prefix: &str, old: &[Keyword], new: &[Keyword], out: &mut Changes) {
     };
     let old: Vec<Keyword> = old.iter().filter(with_its_rate).cloned().collect();
     let new: Vec<Keyword> = new.iter().filter(with_its_rate).cloned().collect();
-    let pairing = super::pairing::pair(&old, &new, |k| (k.key.clone(), k.arg));
+    let pairing = super::pairing::pair(&old, &new, |k| (k.key.as_str(), k.arg));
     let text = |k: &Keyword| value_text(&k.value);
     let subject = |k: &Keyword| format!("{prefix}{}", k.name);
-    for (a, b) in pairing.both {
+    for (a, b) in pairing.both.into_iter().filter(|(a, b)| a.value != b.value) {
         let rule = judge::gsd_rule(&a.key);
         out.0.extend(judge::judge(
             rule,
@@ -152,6 +152,9 @@ fn modules(old: &[DpModule], new: &[DpModule], out: &mut Changes) {
 }
 
 fn module(a: &DpModule, b: &DpModule, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = module_subject(b);
     let at = (Some(&a.place), Some(&b.place));
     if a.name != b.name {

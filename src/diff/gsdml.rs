@@ -192,6 +192,9 @@ fn ident_changed(
 }
 
 fn dap(a: &Dap, b: &Dap, catalogue: &Catalogue, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = dap_subject(b);
     let at = (Some(&a.place), Some(&b.place));
     out.text(
@@ -302,6 +305,9 @@ fn modules(old: &[PnModule], new: &[PnModule], out: &mut Changes) {
 }
 
 fn module(a: &PnModule, b: &PnModule, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = module_subject(b);
     let at = (Some(&a.place), Some(&b.place));
     out.text(
@@ -377,6 +383,9 @@ fn submodules(of: &str, old: &[Submodule], new: &[Submodule], out: &mut Changes)
 }
 
 fn submodule(of: &str, a: &Submodule, b: &Submodule, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = submodule_subject(b, of);
     let at = (&a.place, &b.place);
     if a.ident != b.ident {
@@ -435,7 +444,7 @@ fn io_part(subject: &str, a: Option<&IoPart>, b: Option<&IoPart>, out: &mut Chan
     fn items(p: Option<&IoPart>) -> &[DataItem] {
         p.map_or(&[], |p| p.items.as_slice())
     }
-    let layout = |items: &[DataItem]| -> Vec<(String, u32)> {
+    let layout = |items: &[DataItem]| -> Vec<(std::sync::Arc<str>, u32)> {
         items
             .iter()
             .map(|i| (i.data_type.clone(), i.size()))
@@ -443,7 +452,7 @@ fn io_part(subject: &str, a: Option<&IoPart>, b: Option<&IoPart>, out: &mut Chan
     };
     let show = |items: &[DataItem]| {
         let length: u32 = items.iter().map(DataItem::size).sum();
-        let types: Vec<&str> = items.iter().map(|i| i.data_type.as_str()).collect();
+        let types: Vec<&str> = items.iter().map(|i| &*i.data_type).collect();
         format!("{length} bytes ({})", types.join(", "))
     };
     let at = (a.map(|p| &p.place), b.map(|p| &p.place));
@@ -542,6 +551,9 @@ fn records(of: &str, old: &[Record], new: &[Record], out: &mut Changes) {
 }
 
 fn record(of: &str, a: &Record, b: &Record, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = record_subject(b, of);
     out.text(
         &format!("{subject} name"),
@@ -564,7 +576,7 @@ fn diagnosis(of: &str, old: &[DiagItem], new: &[DiagItem], out: &mut Changes) {
     let api = |d: &DiagItem| {
         d.attributes
             .iter()
-            .find(|a| a.name == "API")
+            .find(|a| &*a.name == "API")
             .map(|a| format!("{}", a.value))
     };
     let pairing = super::pairing::pair(old, new, |d| (d.element.clone(), api(d), d.error_type));

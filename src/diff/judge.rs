@@ -611,10 +611,13 @@ fn set_items(
 
 /// The attributes of two versions of one element, each judged by its rule.
 pub fn attributes(subject: &str, old: &[Attribute], new: &[Attribute], out: &mut super::Changes) {
-    let pairing = super::pairing::pair(old, new, |a| a.name.clone());
+    if old == new {
+        return;
+    }
+    let pairing = super::pairing::pair(old, new, |a| &*a.name);
     let text = |a: &Attribute| match &a.value {
-        AttributeValue::Plain(s) => s.clone(),
-        AttributeValue::Text(t) => t.primary.clone(),
+        AttributeValue::Plain(s) => s.to_string(),
+        AttributeValue::Text(t) => t.primary.to_string(),
     };
     for (a, b) in pairing.both {
         if let (AttributeValue::Text(x), AttributeValue::Text(y)) = (&a.value, &b.value) {

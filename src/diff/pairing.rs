@@ -21,7 +21,7 @@ pub struct Pairing<'a, T> {
 pub fn pair<'a, T, K: Eq + Hash>(
     old: &'a [T],
     new: &'a [T],
-    key: impl Fn(&T) -> K,
+    key: impl Fn(&'a T) -> K,
 ) -> Pairing<'a, T> {
     let (both, gone, added) = by_key(old.iter().collect(), new.iter().collect(), key);
     Pairing {
@@ -36,7 +36,7 @@ impl<'a, T> Pairing<'a, T> {
     /// Pairs what is left by a second key (an element's ID after its ident
     /// number, a parameter's name after its place): the pairs found go to
     /// `rekeyed`.
-    pub fn then<K: Eq + Hash>(mut self, key: impl Fn(&T) -> Option<K>) -> Self {
+    pub fn then<K: Eq + Hash>(mut self, key: impl Fn(&'a T) -> Option<K>) -> Self {
         let keyed = |items: Vec<&'a T>| -> (Vec<&'a T>, Vec<&'a T>) {
             items.into_iter().partition(|item| key(item).is_some())
         };
@@ -55,7 +55,7 @@ type Split<'a, T> = (Vec<(&'a T, &'a T)>, Vec<&'a T>, Vec<&'a T>);
 fn by_key<'a, T, K: Eq + Hash>(
     old: Vec<&'a T>,
     new: Vec<&'a T>,
-    key: impl Fn(&T) -> K,
+    key: impl Fn(&'a T) -> K,
 ) -> Split<'a, T> {
     let mut waiting: HashMap<K, VecDeque<usize>> = HashMap::with_capacity(new.len());
     for (i, item) in new.iter().enumerate() {

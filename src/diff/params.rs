@@ -26,6 +26,9 @@ pub struct Scope<'a> {
 const MAX_IMAGE: u32 = 1 << 16;
 
 pub fn compare(scope: &Scope, old: &ParameterData, new: &ParameterData, out: &mut Changes) {
+    if old == new {
+        return;
+    }
     let (old_len, new_len) = (old.len(), new.len());
     let beyond = |fields: &[Field], end: u32| -> Vec<String> {
         fields
@@ -126,6 +129,9 @@ fn moved(scope: &Scope, a: &Field, b: &Field) -> Change {
 
 /// What changed of one parameter at one place.
 fn field(scope: &Scope, a: &Field, b: &Field, out: &mut Changes) {
+    if a == b {
+        return;
+    }
     let subject = subject(scope, b);
     let at = (Some(&a.place), Some(&b.place));
     if a.data_type != b.data_type || a.length != b.length {
