@@ -116,7 +116,7 @@ pub fn run(args: &Args) -> Status {
 
 /// A side as read on its own thread, saying nothing yet.
 enum Read {
-    File(DeviceFile),
+    File(Box<DeviceFile>),
     /// A description, built afterwards (its findings are printed).
     Description,
     /// The file could not be read (`Some`: the OS error), or cannot be
@@ -135,10 +135,10 @@ fn read(path: &Path) -> Read {
     };
     let name = path.file_name().and_then(|n| n.to_str());
     match crate::device::read(&bytes, name) {
-        Some(device) => Read::File(DeviceFile {
+        Some(device) => Read::File(Box::new(DeviceFile {
             shown: display_name(path),
             device,
-        }),
+        })),
         None => Read::Failed(None),
     }
 }
@@ -147,7 +147,7 @@ fn read(path: &Path) -> Read {
 /// given. `Err` with the status to exit with, after saying why.
 fn side(path: &Path, read: Read) -> Result<Vec<DeviceFile>, Status> {
     match read {
-        Read::File(file) => Ok(vec![file]),
+        Read::File(file) => Ok(vec![*file]),
         Read::Description => built(path),
         Read::Failed(Some(e)) => {
             warn(&format!("error: cannot read {}: {e}", display_name(path)));

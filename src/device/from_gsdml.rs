@@ -319,27 +319,14 @@ impl<'a> Reader<'a> {
     }
 
     fn dap(&self, node: El<'_, '_>) -> Dap {
-        let info = child(node, "ModuleInfo");
         Dap {
-            id: node.attribute("ID").unwrap_or_default().to_string(),
-            ident: node.attribute("ModuleIdentNumber").and_then(hex),
-            name: info.and_then(|i| self.child_text(i, "Name")),
-            info: info.and_then(|i| self.child_text(i, "InfoText")),
-            attributes: self.flatten(node, &["ID", "ModuleIdentNumber"], ITEM_PARTS),
+            item: self.module(node),
             useable_modules: self.item_refs(
                 node,
                 "UseableModules",
                 "ModuleItemRef",
                 "ModuleItemTarget",
             ),
-            useable_submodules: self.item_refs(
-                node,
-                "UseableSubmodules",
-                "SubmoduleItemRef",
-                "SubmoduleItemTarget",
-            ),
-            submodules: self.item_submodules(node),
-            place: self.place(node),
         }
     }
 
@@ -952,7 +939,7 @@ mod tests {
     #[test]
     fn dap_refs_and_ports() {
         let d = device();
-        let dap = &d.daps[0];
+        let dap = &d.daps[0].item;
         assert_eq!(dap.ident, Some(1));
         assert_eq!(dap.name, Some(Text::plain("DAP")));
         assert_eq!(
@@ -967,7 +954,7 @@ mod tests {
             .attributes
             .iter()
             .all(|a| !a.name.starts_with("UseableModules")));
-        let reference = &dap.useable_modules[0];
+        let reference = &d.daps[0].useable_modules[0];
         assert_eq!(
             (reference.target.as_str(), reference.ident),
             ("M1", Some(0x201))

@@ -39,21 +39,16 @@ pub struct PnDevice {
     pub place: Place,
 }
 
-/// `DeviceAccessPointItem`.
+/// `DeviceAccessPointItem`: a module (the schema derives it from
+/// `ModuleItem`) with the catalogue of modules it takes.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct Dap {
-    pub id: String,
-    pub ident: Option<u32>,
-    pub name: Option<Text>,
-    pub info: Option<Text>,
-    pub attributes: Vec<Attribute>,
+    /// Its ident number, texts, attributes and submodules (the interface
+    /// and ports among them).
+    pub item: PnModule,
     /// `UseableModules`: the modules the catalogue offers under this DAP.
     pub useable_modules: Vec<ItemRef>,
-    pub useable_submodules: Vec<ItemRef>,
-    /// Its virtual submodules, interface and ports.
-    pub submodules: Vec<Submodule>,
-    pub place: Place,
 }
 
 /// `ModuleItem`.

@@ -30,36 +30,30 @@ pub fn compare(old: &PnDevice, new: &PnDevice) -> Vec<Change> {
     identity(old, new, &mut out);
     languages(&old.languages, &new.languages, &mut out);
     let catalogue = Catalogue::of(old, new);
-    let pairing =
-        super::pairing::pair(&old.daps, &new.daps, |d| d.ident).then(|d| Some(d.id.clone()));
-    for (a, b) in &pairing.both {
-        dap(a, b, &catalogue, &mut out);
-    }
-    for (a, b) in &pairing.rekeyed {
-        out.push(ident_changed(
-            dap_subject(b),
-            a.ident,
-            b.ident,
-            Kind::Module,
-            (&a.place, &b.place),
-        ));
-        dap(a, b, &catalogue, &mut out);
-    }
-    for a in &pairing.gone {
-        out.push(
-            Change::new(Class::Breaking, Kind::Module, dap_subject(a), "removed")
-                .why("every station configured with it in a project fails: the device no longer has this access point")
-                .at(Some(&a.place), None),
-        );
-    }
-    for b in &pairing.added {
-        out.push(
-            Change::new(Class::Compatible, Kind::Module, dap_subject(b), "added")
-                .why("old projects do not use it")
-                .at(None, Some(&b.place)),
-        );
-    }
-    modules(&old.modules, &new.modules, &mut out);
+    let dap = |a: &Dap, b: &Dap, out: &mut Changes| {
+        let subject = item(("DAP", &a.item, &b.item), &catalogue, out);
+        let refs = (&a.useable_modules[..], &b.useable_modules[..]);
+        item_refs(&subject, "module", refs, &catalogue.modules, out);
+    };
+    let dap_removed = "every station configured with it in a project fails: the device no longer has this access point";
+    items(
+        ("DAP", dap_removed),
+        (&old.daps, &new.daps),
+        |d| &d.item,
+        dap,
+        &mut out,
+    );
+    let module = |a: &PnModule, b: &PnModule, out: &mut Changes| {
+        item(("module", a, b), &catalogue, out);
+    };
+    let module_removed = "a project with this module expects its ident number in the device: the controller's connect is refused, and the engineering tool cannot show the station";
+    items(
+        ("module", module_removed),
+        (&old.modules, &new.modules),
+        |m| m,
+        module,
+        &mut out,
+    );
     submodules(
         "the submodule list",
         &old.submodules,
@@ -171,12 +165,9 @@ fn ident(ident: Option<u32>) -> String {
     ident.map_or("no ident number".to_string(), |i| format!("0x{i:08X}"))
 }
 
-fn dap_subject(d: &Dap) -> String {
-    format!("DAP{} ({})", quoted(d.name.as_ref()), ident(d.ident))
-}
-
-fn module_subject(m: &PnModule) -> String {
-    format!("module{} ({})", quoted(m.name.as_ref()), ident(m.ident))
+/// `DAP "name" (0x00000001)`, `module "name" (0x00000205)`.
+fn item_subject(what: &str, m: &PnModule) -> String {
+    format!("{what}{} ({})", quoted(m.name.as_ref()), ident(m.ident))
 }
 
 fn ident_changed(
@@ -191,11 +182,66 @@ fn ident_changed(
         .at(Some(at.0), Some(at.1))
 }
 
-fn dap(a: &Dap, b: &Dap, catalogue: &Catalogue, out: &mut Changes) {
-    if a == b {
-        return;
+/// DAPs or modules (`what`), each paired by ident number, then by ID;
+/// `core` gives each one's module, `compare` compares two of them.
+fn items<T: PartialEq>(
+    (what, removed_why): (&str, &str),
+    (old, new): (&[T], &[T]),
+    core: impl Fn(&T) -> &PnModule,
+    compare: impl Fn(&T, &T, &mut Changes),
+    out: &mut Changes,
+) {
+    let pairing = super::pairing::pair(old, new, |x| core(x).ident).then(|x| Some(&core(x).id));
+    for (a, b) in &pairing.both {
+        if a != b {
+            compare(a, b, out);
+        }
     }
-    let subject = dap_subject(b);
+    for (a, b) in &pairing.rekeyed {
+        let (x, y) = (core(a), core(b));
+        out.push(ident_changed(
+            item_subject(what, y),
+            x.ident,
+            y.ident,
+            Kind::Module,
+            (&x.place, &y.place),
+        ));
+        compare(a, b, out);
+    }
+    for a in pairing.gone.iter().map(|a| core(a)) {
+        out.push(
+            Change::new(
+                Class::Breaking,
+                Kind::Module,
+                item_subject(what, a),
+                "removed",
+            )
+            .why(removed_why)
+            .at(Some(&a.place), None),
+        );
+    }
+    for b in pairing.added.iter().map(|b| core(b)) {
+        out.push(
+            Change::new(
+                Class::Compatible,
+                Kind::Module,
+                item_subject(what, b),
+                "added",
+            )
+            .why("old projects do not use it")
+            .at(None, Some(&b.place)),
+        );
+    }
+}
+
+/// What DAPs and modules have alike: texts, attributes, the submodules
+/// they offer and have. Returns the subject that names the item.
+fn item(
+    (what, a, b): (&str, &PnModule, &PnModule),
+    catalogue: &Catalogue,
+    out: &mut Changes,
+) -> String {
+    let subject = item_subject(what, b);
     let at = (Some(&a.place), Some(&b.place));
     out.text(
         &format!("{subject} name"),
@@ -210,21 +256,10 @@ fn dap(a: &Dap, b: &Dap, catalogue: &Catalogue, out: &mut Changes) {
         at,
     );
     judge::attributes(&subject, &a.attributes, &b.attributes, out);
-    item_refs(
-        &subject,
-        "module",
-        (&a.useable_modules, &b.useable_modules),
-        &catalogue.modules,
-        out,
-    );
-    item_refs(
-        &subject,
-        "submodule",
-        (&a.useable_submodules, &b.useable_submodules),
-        &catalogue.submodules,
-        out,
-    );
+    let refs = (&a.useable_submodules[..], &b.useable_submodules[..]);
+    item_refs(&subject, "submodule", refs, &catalogue.submodules, out);
     submodules(&subject, &a.submodules, &b.submodules, out);
+    subject
 }
 
 /// What a DAP or module offers: items no longer offered break projects
@@ -271,67 +306,6 @@ fn item_refs(
             );
         }
     }
-}
-
-fn modules(old: &[PnModule], new: &[PnModule], out: &mut Changes) {
-    let pairing = super::pairing::pair(old, new, |m| m.ident).then(|m| Some(m.id.clone()));
-    for (a, b) in &pairing.both {
-        module(a, b, out);
-    }
-    for (a, b) in &pairing.rekeyed {
-        out.push(ident_changed(
-            module_subject(b),
-            a.ident,
-            b.ident,
-            Kind::Module,
-            (&a.place, &b.place),
-        ));
-        module(a, b, out);
-    }
-    for a in &pairing.gone {
-        out.push(
-            Change::new(Class::Breaking, Kind::Module, module_subject(a), "removed")
-                .why("a project with this module expects its ident number in the device: the controller's connect is refused, and the engineering tool cannot show the station")
-                .at(Some(&a.place), None),
-        );
-    }
-    for b in &pairing.added {
-        out.push(
-            Change::new(Class::Compatible, Kind::Module, module_subject(b), "added")
-                .why("old projects do not use it")
-                .at(None, Some(&b.place)),
-        );
-    }
-}
-
-fn module(a: &PnModule, b: &PnModule, out: &mut Changes) {
-    if a == b {
-        return;
-    }
-    let subject = module_subject(b);
-    let at = (Some(&a.place), Some(&b.place));
-    out.text(
-        &format!("{subject} name"),
-        a.name.as_ref(),
-        b.name.as_ref(),
-        at,
-    );
-    out.text(
-        &format!("{subject} info text"),
-        a.info.as_ref(),
-        b.info.as_ref(),
-        at,
-    );
-    judge::attributes(&subject, &a.attributes, &b.attributes, out);
-    let no_items = (Items::new(), Items::new());
-    item_refs(
-        &subject,
-        "submodule",
-        (&a.useable_submodules, &b.useable_submodules),
-        &no_items,
-        out,
-    );
-    submodules(&subject, &a.submodules, &b.submodules, out);
 }
 
 fn submodule_subject(s: &Submodule, of: &str) -> String {

@@ -156,6 +156,7 @@ impl Change {
 
     /// A file as a whole: a bus whose file one description builds and the
     /// other does not.
+    #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
     pub(crate) fn file(class: Class, subject: String, change: &str, why: &str) -> Self {
         Change::new(class, Kind::File, subject, change).why(why)
     }

@@ -42,7 +42,7 @@ impl<'a, T> Pairing<'a, T> {
         };
         let (old_keyed, old_rest) = keyed(std::mem::take(&mut self.gone));
         let (new_keyed, new_rest) = keyed(std::mem::take(&mut self.added));
-        let (both, gone, added) = by_key(old_keyed, new_keyed, |item| key(item));
+        let (both, gone, added) = by_key(old_keyed, new_keyed, key);
         self.rekeyed.extend(both);
         self.gone = merge_in_order(gone, old_rest);
         self.added = merge_in_order(added, new_rest);

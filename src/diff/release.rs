@@ -72,7 +72,7 @@ pub fn counterpart<'r>(name: &str, released: &'r [String]) -> Option<(&'r str, b
     let own = family(name)?;
     let release = |n: &&'r String| {
         let parsed = crate::gsdml::version::parse_file_name(n).ok()?;
-        (parsed.vendor_and_family.to_ascii_lowercase() == own).then(|| (parsed.date, parsed.time))
+        (parsed.vendor_and_family.to_ascii_lowercase() == own).then_some((parsed.date, parsed.time))
     };
     released
         .iter()
