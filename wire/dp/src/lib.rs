@@ -1,0 +1,1 @@
+//! The PROFIBUS-DP exchange.
