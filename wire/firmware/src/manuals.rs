@@ -14,6 +14,7 @@ pub fn for_description(name: &str) -> &'static Model {
     match name {
         "md810dp" => &MD810,
         "9kdp1" => &PI9000,
+        "mv810-pnet02" => &MV810,
         _ => &WITHOUT_MANUAL,
     }
 }
@@ -102,5 +103,42 @@ pub const PI9000: Model = Model {
         },
     ],
     fault_parameter: Some(0x8000),
+    link_lost_code: None,
+};
+
+/// Megmeet MV810 behind the MV810-PNET02 card (descriptions/mv810-pnet02.toml;
+/// shared/seeds/000). The manual gives the parameters' meanings but no
+/// address (the description assumes group = high byte, index = low byte,
+/// P43.02 = 0x2B02, and the layout's mappings carry those addresses) and no
+/// factory value.
+pub const MV810: Model = Model {
+    manual: "MV800 PROFINET option manual (R33011095)",
+    parameters: &[
+        Parameter {
+            name: "P43.01",
+            address: 0x2B01,
+            value: 1,
+            access: Access::ReadWrite,
+            source: "4: P43.01 = 1 (0 is the standard message 1, 1 the user-defined message), \
+                     the value every example of 4 sets",
+        },
+        Parameter {
+            name: "P43.02",
+            address: 0x2B02,
+            value: 0,
+            access: Access::ReadWrite,
+            source: "3: PZD2 receive, 0 to 14 (0 disabled); the manual gives no factory \
+                     value: 0 is the description's default (mappings.pzd_out)",
+        },
+        Parameter {
+            name: "P43.13",
+            address: 0x2B0D,
+            value: 0,
+            access: Access::ReadWrite,
+            source: "3: PZD2 send, 0 to 25 (0 disabled); the manual gives no factory \
+                     value: 0 is the description's default (mappings.pzd_in)",
+        },
+    ],
+    fault_parameter: None,
     link_lost_code: None,
 };

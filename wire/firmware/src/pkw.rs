@@ -6,15 +6,15 @@
 use crate::drive::{Drive, Refused};
 use crate::gsdc_support::U16Be;
 
-/// The PKW channels of the descriptions with PROFIBUS. MV810's station,
-/// command, address and value (PROFINET only) is for wire/pn to add, with
-/// the error codes its manual gives.
+/// The PKW channels of the shipped descriptions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PkwKind {
     /// PKE, IND, PWE high, PWE low with MD810's command codes.
     PkeIndPwe,
     /// The PROFIdrive profile's PKE (AK, SPM, PNU), IND, PWE1, PWE2.
     Profidrive,
+    /// MV810's stations, command, address and value (PROFINET only).
+    StationCommand,
 }
 
 /// The card's answer to the PKW `request` the master sent.
@@ -22,6 +22,7 @@ pub fn answer(kind: PkwKind, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be;
     match kind {
         PkwKind::PkeIndPwe => pke_ind_pwe(drive, request),
         PkwKind::Profidrive => profidrive(drive, request),
+        PkwKind::StationCommand => station_command(drive, request),
     }
 }
 
@@ -112,4 +113,47 @@ fn profidrive(drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
         }
     };
     response.encode()
+}
+
+/// The error code MV810's card answers (after the command + 0x80) for a
+/// parameter the drive refuses. The manual gives the bytes of an error code
+/// (section 3, PKW3 of the slave response) but no value: 2, Modbus's illegal
+/// data address (the card reaches the drive over its RS-485 side), is this
+/// model's own.
+pub const STATION_COMMAND_REFUSED: u16 = 2;
+
+/// MV810 section 3: the answer repeats the command and the address, with the
+/// value read (0 after a write), or 0x80 + the command and an error code;
+/// its stations are the request's, swapped (byte 0 the station that asked,
+/// byte 1 the local station). A telegram that is no request (command 0,
+/// what a master sends before it has one) is answered with zeros.
+fn station_command(drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
+    use crate::gsdc_support::pkw_station_command::{
+        PkwAccess, PkwReply, PkwRequest, PkwResponse, Stations,
+    };
+    let Ok(request) = PkwRequest::decode(request) else {
+        return [U16Be::new(0); 4];
+    };
+    let command = request.access.command();
+    let outcome = match request.access {
+        PkwAccess::Read => drive.read(request.address).map(PkwReply::Value),
+        PkwAccess::WriteAndStore { value } => drive
+            .write(request.address, value)
+            .map(|()| PkwReply::WrittenAndStored),
+        PkwAccess::Write { value } => drive
+            .write(request.address, value)
+            .map(|()| PkwReply::Written),
+    };
+    PkwResponse {
+        stations: Stations {
+            target: request.stations.source,
+            source: request.stations.target,
+        },
+        address: request.address,
+        reply: outcome.unwrap_or(PkwReply::Failed {
+            command,
+            error: STATION_COMMAND_REFUSED,
+        }),
+    }
+    .encode()
 }

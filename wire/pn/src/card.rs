@@ -1,5 +1,9 @@
 //! What the device needs to know of a card, as the layouts give it.
 
+use wire_firmware::drive::Model;
+use wire_firmware::gsdc_support::Mapping;
+use wire_firmware::pkw::PkwKind;
+
 /// One submodule: where it sits and what it carries.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Submodule {
@@ -16,9 +20,11 @@ pub struct Submodule {
 pub struct Record {
     pub subslot: u16,
     pub index: u16,
-    pub len: usize,
     pub name: &'static str,
     pub decode: fn(&[u8]) -> Result<Vec<u16>, String>,
+    /// The entries the values set, in order: each names the drive parameter
+    /// that holds it, if any.
+    pub mappings: &'static [Mapping],
 }
 
 /// A module a slot may take.
@@ -30,6 +36,8 @@ pub struct Module {
     pub slots: &'static [u16],
     pub submodules: Vec<Submodule>,
     pub records: Vec<Record>,
+    /// Whether its telegrams start with the PKW channel.
+    pub pkw: bool,
 }
 
 /// The card: identity, access point and modules.
@@ -42,6 +50,11 @@ pub struct Card {
     /// The access point's own submodule, its interface and its ports.
     pub dap_submodules: Vec<Submodule>,
     pub modules: Vec<Module>,
+    pub pkw: Option<PkwKind>,
+    /// The status word the drive answers to a control word, where the layout
+    /// names their bits.
+    pub status_of: Option<fn(u16) -> u16>,
+    pub drive: &'static Model,
 }
 
 impl Card {

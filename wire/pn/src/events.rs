@@ -63,23 +63,28 @@ impl Events {
 
     /// A written record, with what the layout's decoder made of it (or why it
     /// refused it, or that the layout has no record at that place).
-    pub fn record(&self, record: &Record, layout: Option<&LayoutRecord>) {
+    pub fn record(&self, record: &Record, decoded: Option<(&Result<Vec<u16>, String>, &LayoutRecord)>) {
         let bytes: String = record.data.iter().map(|b| format!("{b:02x}")).collect();
-        let decoded = match layout {
+        let decoded = match decoded {
             None => r#""layout":null"#.to_string(),
-            Some(l) => match (l.decode)(&record.data) {
+            Some((result, l)) => match result {
                 Ok(values) => format!(
                     r#""layout":"{}","values":[{}]"#,
                     l.name,
                     values.iter().map(u16::to_string).collect::<Vec<_>>().join(",")
                 ),
-                Err(e) => format!(r#""layout":"{}","refused":{}"#, l.name, quote(&e)),
+                Err(e) => format!(r#""layout":"{}","refused":{}"#, l.name, quote(e)),
             },
         };
         self.emit(format!(
             r#"{{"event":"record","api":{},"slot":{},"subslot":{},"index":{},"bytes":"{bytes}",{decoded}}}"#,
             record.api, record.slot, record.subslot, record.index
         ));
+    }
+
+    /// The drive refused the value a record gave the entry `name`.
+    pub fn drive_refused(&self, name: &str) {
+        self.emit(format!(r#"{{"event":"drive-refused","entry":{}}}"#, quote(name)));
     }
 
     pub fn api_refused(&self, m: &ApiMismatch) {

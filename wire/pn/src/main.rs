@@ -13,6 +13,7 @@
 mod card;
 mod cards;
 mod connect;
+mod drive;
 mod events;
 mod model;
 mod tap;
@@ -73,7 +74,6 @@ fn parse_args() -> Result<Args, String> {
             other => return Err(format!("unknown argument {other}")),
         }
     }
-    let need = |v: Option<_>, name: &str| v.ok_or(format!("{name} is required"));
     Ok(Args {
         card: need(card, "--card")?,
         iface: need(iface, "--iface")?,
@@ -83,6 +83,10 @@ fn parse_args() -> Result<Args, String> {
         mismatch,
         seconds,
     })
+}
+
+fn need<T>(value: Option<T>, flag: &str) -> Result<T, String> {
+    value.ok_or(format!("{flag} is required"))
 }
 
 fn main() -> ExitCode {
@@ -157,12 +161,12 @@ fn run(args: &Args) -> Result<(), String> {
     events.listening(&args.card, &args.station, mac, args.ip, &plugged);
 
     let deadline = args.seconds.map(|s| Instant::now() + Duration::from_secs(s));
-    let mut drive = cards::drive(&card, &plugged);
+    let mut application = drive::Application::new(&card, &plugged);
     while deadline.map_or(true, |d| Instant::now() < d) && !acyclic.is_finished() {
         while let Ok(seen) = seen.try_recv() {
-            report(&events, &plugged, seen);
+            report(&events, &plugged, &mut application, seen);
         }
-        drive.cycle(&image);
+        application.cycle(&image);
         std::thread::sleep(Duration::from_millis(1));
     }
     stop.store(true, Ordering::Relaxed);
@@ -192,7 +196,7 @@ fn plugged_modules<'a>(card: &'a Card, plug: &[(u16, String)]) -> Result<Vec<(u1
 
 /// Each record a Write carried, decoded by the layout where the plugged
 /// module has a record of that index.
-fn report(events: &Events, plugged: &[(u16, &Module)], seen: Seen) {
+fn report(events: &Events, plugged: &[(u16, &Module)], application: &mut drive::Application, seen: Seen) {
     match seen {
         Seen::Records(records) => {
             for record in records.iter().filter(|r| r.index != pnio::cm::INDEX_MULTIPLE_WRITE) {
@@ -204,7 +208,13 @@ fn report(events: &Events, plugged: &[(u16, &Module)], seen: Seen) {
                             .iter()
                             .find(|r| r.subslot == record.subslot && r.index == record.index)
                     });
-                events.record(record, layout);
+                let decoded = layout.map(|l| ((l.decode)(&record.data), l));
+                if let Some((Ok(values), l)) = &decoded {
+                    for name in application.apply(l, values) {
+                        events.drive_refused(name);
+                    }
+                }
+                events.record(record, decoded.as_ref().map(|(r, l)| (r, *l)));
             }
         }
         Seen::ApiRefused(mismatch) => events.api_refused(&mismatch),
