@@ -6,22 +6,23 @@
 # other interface: both ends are created inside the namespaces, and deleting
 # a namespace deletes its end. Needs root.
 #
-#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML MODULE STATION SCENARIO|- [DEVICE_FLAGS...]
+#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML STATION SLOT MODULE SCENARIO|- [DEVICE_FLAGS...]
 #
 # DEVICE: the pn-device binary; PYTHON: the venv's python with profinet-py;
-# CARD: the description's name in the firmware; MODULE: the GSDML's
-# ModuleItem ID, plugged in slot 1; SCENARIO: the manual's checks (JSON) or
-# -. DEVICE_FLAGS go to the device (--mismatch KIND makes it a negative case,
-# and the controller then expects the Connect refused).
+# CARD: the description's name in the firmware; STATION: the name of
+# station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT;
+# SCENARIO: the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
+# (--mismatch KIND makes it a negative case, and the controller then expects
+# the Connect refused).
 #
 # Exit status: the controller's (0 passed, 1 failed, 2 could not run); 2
 # also when the namespaces cannot be made. The namespaces carry this
 # script's process id, so runs side by side do not meet; every exit path
 # kills the device by its process id and deletes both namespaces.
 set -euo pipefail
-[ $# -ge 7 ] || { echo "usage: $0 DEVICE PYTHON CARD GSDML MODULE STATION SCENARIO|- [DEVICE_FLAGS...]" >&2; exit 2; }
-device=$1 python=$2 card=$3 gsdml=$4 module=$5 station=$6 scenario=$7
-shift 7
+[ $# -ge 8 ] || { echo "usage: $0 DEVICE PYTHON CARD GSDML STATION SLOT MODULE SCENARIO|- [DEVICE_FLAGS...]" >&2; exit 2; }
+device=$1 python=$2 card=$3 gsdml=$4 station=$5 slot=$6 module=$7 scenario=$8
+shift 8
 here=$(cd "$(dirname "$0")" && pwd)
 
 ns_ctl="gsdc-pn-$$-ctl"
@@ -63,7 +64,7 @@ ip -n "$ns_dev" link set pn0 up
 events="$work/device-events.jsonl"
 # The device stops by itself after 60 s if nothing else stops it.
 ip netns exec "$ns_dev" "$device" --card "$card" --iface pn0 --ip "$ip_dev" \
-  --station "$station" --plug "1=$module" --seconds 60 "$@" >"$events" 2>"$work/device.err" &
+  --station "$station" --plug "$slot=$module" --seconds 60 "$@" >"$events" 2>"$work/device.err" &
 device_pid=$!
 # Until the device listens (its first event), at most 5 s.
 for _ in $(seq 50); do
@@ -79,12 +80,23 @@ fi
 
 controller_flags=()
 [ "$scenario" != "-" ] && controller_flags+=(--scenario "$scenario")
+# A negative case: the PNIO status the Connect must be refused with. pnio
+# numbers its ExpectedSubmodule refusals 04 (module ident) and 07 (missing
+# submodule or wrong length); 05 (API) is the device's own (src/tap.rs).
+previous=""
 for flag in "$@"; do
-  [ "$flag" = "--mismatch" ] && controller_flags+=(--expect-refusal)
+  if [ "$previous" = "--mismatch" ]; then
+    case "$flag" in
+      module-ident) controller_flags+=(--expect-refusal DB810304) ;;
+      input-length) controller_flags+=(--expect-refusal DB810307) ;;
+      api) controller_flags+=(--expect-refusal DB810305) ;;
+    esac
+  fi
+  previous=$flag
 done
 status=0
 timeout 30 ip netns exec "$ns_ctl" "$python" "$here/controller/pn_controller.py" \
-  --iface pn0 --station "$station" --gsdml "$gsdml" --module "$module" \
+  --iface pn0 --station "$station" --gsdml "$gsdml" --slot "$slot" --module "$module" \
   --device-events "$events" "${controller_flags[@]}" || status=$?
 case "$status" in
   0 | 1) ;;

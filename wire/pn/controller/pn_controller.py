@@ -464,11 +464,14 @@ def run(args) -> None:
     try:
         result = rpc.connect(src, iocr_setup=setup)
     except profinet.exceptions.RPCError as e:
-        if args.expect_refusal and RAW_STATUS:
+        if args.expect_refusal is not None and RAW_STATUS:
+            if RAW_STATUS[-1] != args.expect_refusal:
+                raise Failed(f"Connect refused with PNIO status {status_text(RAW_STATUS[-1])}, "
+                             f"expected {status_text(args.expect_refusal)}")
             say(f"Connect refused as expected: PNIO status {status_text(RAW_STATUS[-1])}")
             return
         raise Failed(f"Connect failed: " + (f"PNIO status {status_text(RAW_STATUS[-1])}" if RAW_STATUS else str(e)))
-    if args.expect_refusal:
+    if args.expect_refusal is not None:
         rpc.disconnect()
         raise Failed("the device accepted a Connect it should have refused")
     say(f"Connect: AR up, input frame 0x{result.input_frame_id:04X}, output frame 0x{result.output_frame_id:04X}")
@@ -502,17 +505,41 @@ def run(args) -> None:
         rpc.disconnect()
 
 
+def list_modules(path: Path) -> int:
+    """What the wire test plugs: every module the DAP may take, in its first
+    allowed slot, with the highest API of its submodules; and the name of
+    station (the DAP's DNS_CompatibleName)."""
+    gsdml = Gsdml(path)
+    dap = gsdml.root.find(".//{*}DeviceAccessPointItem")
+    print(f"station {dap.get('DNS_CompatibleName')}")
+    for ref in dap.findall("{*}UseableModules/{*}ModuleItemRef"):
+        slots = ref.get("FixedInSlots") or ref.get("AllowedInSlots")
+        first = int(slots.split()[0].split("..")[0])
+        module = ref.get("ModuleItemTarget")
+        api = max(s.api for s in gsdml.submodules(module))
+        print(f"module {module} {first} {api}")
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--iface", required=True)
-    parser.add_argument("--station", required=True)
     parser.add_argument("--gsdml", required=True, type=Path)
-    parser.add_argument("--module", required=True, help="the GSDML's ModuleItem ID")
+    parser.add_argument("--list-modules", action="store_true",
+                        help="print each ModuleItem ID with its first allowed slot, and the station name")
+    parser.add_argument("--iface")
+    parser.add_argument("--station")
+    parser.add_argument("--module", help="the GSDML's ModuleItem ID")
     parser.add_argument("--slot", type=int, default=1)
-    parser.add_argument("--device-events", required=True, type=Path)
+    parser.add_argument("--device-events", type=Path)
     parser.add_argument("--scenario", type=Path)
-    parser.add_argument("--expect-refusal", action="store_true")
+    parser.add_argument("--expect-refusal", metavar="STATUS", type=lambda h: int(h, 16),
+                        help="the PNIO status (hex, e.g. DB810304) the device must refuse the Connect with")
     args = parser.parse_args()
+    if args.list_modules:
+        return list_modules(args.gsdml)
+    for needed in ("iface", "station", "module", "device_events"):
+        if getattr(args, needed) is None:
+            parser.error(f"--{needed.replace('_', '-')} is required")
     # profinet-py warns that its cyclic IO is experimental on every Connect.
     logging.basicConfig(level=logging.ERROR)
     _adjust()

@@ -99,14 +99,14 @@ fn mv810() -> Card {
 fn md810() -> Card {
     use md810dp as l;
     const SLOT: &[u16] = &[l::MODULE_SLOT];
-    let records = |n: usize| {
+    let records = || {
         vec![
             Record { subslot: 1, index: l::pzd_out::RECORD_INDEX, name: "pzd_out", decode: |b| words(l::pzd_out::decode_record(b)), mappings: &l::pzd_out::MAPPINGS },
             Record { subslot: 1, index: l::pzd_in::RECORD_INDEX, name: "pzd_in", decode: |b| words(l::pzd_in::decode_record(b)), mappings: &l::pzd_in::MAPPINGS },
             Record { subslot: 1, index: l::dpv1_index::RECORD_INDEX, name: "dpv1_index", decode: |b| words(l::dpv1_index::decode_record(b)), mappings: &l::dpv1_index::MAPPINGS },
         ]
     };
-    let module = |id, ident, pkw: usize, n: usize| data_module(id, ident, SLOT, (pkw + 2 * n, pkw + 2 * n), records(n), pkw > 0);
+    let module = |id, ident, pkw: usize, n: usize| data_module(id, ident, SLOT, (pkw + 2 * n, pkw + 2 * n), records(), pkw > 0);
     Card {
         name: "md810dp",
         vendor_id: l::PROFINET_VENDOR_ID,

@@ -44,7 +44,7 @@ struct Args {
 }
 
 const USAGE: &str = "usage: pn-device --card NAME --iface IF --ip A.B.C.D --station NAME \
---plug SLOT=MODULE_ID... [--mismatch module-ident|input-length] [--seconds N]";
+--plug SLOT=MODULE_ID... [--mismatch module-ident|input-length|api] [--seconds N]";
 
 fn parse_args() -> Result<Args, String> {
     let mut args = std::env::args().skip(1);
@@ -67,6 +67,7 @@ fn parse_args() -> Result<Args, String> {
                 mismatch = Some(match value()?.as_str() {
                     "module-ident" => Mismatch::ModuleIdent,
                     "input-length" => Mismatch::InputLength,
+                    "api" => Mismatch::Api,
                     other => return Err(format!("--mismatch {other}: not a kind")),
                 })
             }
@@ -139,12 +140,13 @@ fn run(args: &Args) -> Result<(), String> {
     let udp = UdpRpcTransport::bind(SocketAddr::from(([0, 0, 0, 0], PNIO_UDP_PORT)))
         .map_err(|e| format!("UDP port {PNIO_UDP_PORT}: {e}"))?;
     let (seen_tx, seen) = mpsc::channel();
+    let mismatch = args.mismatch;
     let apis = {
         let card = card.clone();
         let plugged: Vec<(u16, Module)> = plugged.iter().map(|(s, m)| (*s, (*m).clone())).collect();
         move |slot, subslot| {
             let plugged: Vec<(u16, &Module)> = plugged.iter().map(|(s, m)| (*s, m)).collect();
-            api_of(&card, &plugged, slot, subslot)
+            api_of(&card, &plugged, mismatch, slot, subslot)
         }
     };
     let mut device = Device::new(setup, eth, Tap::new(udp, seen_tx, apis));

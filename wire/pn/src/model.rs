@@ -13,6 +13,10 @@ pub enum Mismatch {
     ModuleIdent,
     /// The plugged module's data submodule presents two more input bytes.
     InputLength,
+    /// The plugged module's submodules are in API 0, as if the layout said
+    /// so (the device then refuses a Connect that places them in the API the
+    /// GSDML gives).
+    Api,
 }
 
 pub fn device_model(
@@ -40,7 +44,7 @@ pub fn device_model(
                     data.input_len += 2;
                 }
             }
-            None => {}
+            Some(Mismatch::Api) | None => {}
         }
         slots.push(model);
     }
@@ -64,15 +68,23 @@ fn submodule_model(s: &Submodule) -> SubmoduleModel {
     }
 }
 
-/// The API of the submodule at (slot, subslot), as the layout places it.
-pub fn api_of(card: &Card, plugged: &[(u16, &Module)], slot: u16, subslot: u16) -> Option<u32> {
+/// The API of the submodule at (slot, subslot), as the layout places it (or,
+/// with [`Mismatch::Api`], API 0 for a plugged module).
+pub fn api_of(
+    card: &Card,
+    plugged: &[(u16, &Module)],
+    mismatch: Option<Mismatch>,
+    slot: u16,
+    subslot: u16,
+) -> Option<u32> {
     let submodules: &[Submodule] = if slot == 0 {
         &card.dap_submodules
     } else {
         &plugged.iter().find(|(s, _)| *s == slot)?.1.submodules
     };
-    submodules
-        .iter()
-        .find(|s| s.subslot == subslot)
-        .map(|s| s.api)
+    let api = submodules.iter().find(|s| s.subslot == subslot)?.api;
+    Some(match mismatch {
+        Some(Mismatch::Api) if slot != 0 => 0,
+        _ => api,
+    })
 }

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# The PROFINET exchange of one description: every module of its GSDML in its
+# slot, then the negative cases, each between two network namespaces of its
+# own (netns-exchange.sh). The device is built from the description's layout
+# (wire/pn, WIRE_DESCRIPTIONS); the controller reads only the GSDML: the one
+# gsdc builds from the description, or with --files DIR the one of that name
+# in DIR (a released file).
+#
+#   wire/pn/exchange.sh [--files DIR] DESC.toml
+#
+# Exit status: 0 every exchange passed, 1 one failed, 2 it could not run
+# (not root, no iproute2 or Python, a build that failed). Needs root: the
+# namespaces. The Python venv with profinet-py lives in target/wire-venv.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+here="$root/wire/pn"
+
+files=""
+if [ "${1:-}" = "--files" ]; then
+  files=${2:?--files needs a directory}
+  shift 2
+fi
+[ $# -eq 1 ] || { echo "usage: $0 [--files DIR] DESC.toml" >&2; exit 2; }
+description=$(realpath "$1")
+name=$(basename "$description" .toml)
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "PROFINET exchange of $name: needs root (network namespaces and raw sockets); not run" >&2
+  exit 2
+fi
+command -v ip >/dev/null || { echo "PROFINET exchange: iproute2 (ip) is not installed" >&2; exit 2; }
+
+# Built here, once per run: the controller's venv, pinned, then the device
+# for this description and the description's own files.
+python=$("$here/venv.sh")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+(cd "$root" && cargo run --quiet --release -- build "$description" --out "$work/built" >/dev/null 2>"$work/build.err") || {
+  cat "$work/build.err" >&2
+  echo "PROFINET exchange of $name: gsdc build failed" >&2
+  exit 2
+}
+gsdml=$(ls "$work"/built/GSDML-*.xml 2>/dev/null | head -1)
+[ -n "$gsdml" ] || { echo "$description has no [profinet]: no PROFINET exchange" >&2; exit 2; }
+if [ -n "$files" ]; then
+  gsdml="$files/$(basename "$gsdml")"
+  [ -f "$gsdml" ] || { echo "PROFINET exchange of $name: $gsdml does not exist" >&2; exit 2; }
+fi
+(cd "$root/wire" && cargo build --quiet --release -p wire-pn 2>"$work/device.err") || {
+  cat "$work/device.err" >&2
+  echo "PROFINET exchange of $name: the device did not build" >&2
+  exit 2
+}
+device="$root/wire/target/release/pn-device"
+scenario="$here/scenarios/$name.json"
+[ -f "$scenario" ] || scenario=-
+
+echo "PROFINET exchange of $name: controller profinet-py 0.6.6 reads $(basename "$gsdml"), device pnio 0.1.0 runs the layout"
+[ "$scenario" = - ] && echo "  (no scenario of the manual for $name: records and data only)"
+station=""
+modules=()
+while read -r kind a b c; do
+  case "$kind" in
+    station) station=$a ;;
+    module) modules+=("$a $b $c") ;;
+  esac
+done < <("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules)
+
+passed=0 failed=0 unrun=0
+run_case() {
+  local label=$1
+  shift
+  local status=0
+  echo "--- $label"
+  "$here/netns-exchange.sh" "$device" "$python" "$name" "$gsdml" "$station" "$@" || status=$?
+  case "$status" in
+    0) passed=$((passed + 1)) ;;
+    1) failed=$((failed + 1)) ;;
+    *) unrun=$((unrun + 1)) ;;
+  esac
+}
+
+for entry in "${modules[@]}"; do
+  read -r module slot api <<<"$entry"
+  run_case "$module in slot $slot" "$slot" "$module" "$scenario"
+done
+# The negative cases: the device departs from the layout, and the
+# controller's Connect must fail with the status that says how.
+read -r module slot api <<<"${modules[0]}"
+run_case "negative: $module, the device presents another module ident" "$slot" "$module" - --mismatch module-ident
+run_case "negative: $module, the device presents another input length" "$slot" "$module" - --mismatch input-length
+for entry in "${modules[@]}"; do
+  read -r module slot api <<<"$entry"
+  if [ "$api" -ne 0 ]; then
+    run_case "negative: $module, the device's layout places it in API 0, the GSDML in API $api" "$slot" "$module" - --mismatch api
+  fi
+done
+
+echo "PROFINET $name: $passed passed, $failed failed$([ "$unrun" -gt 0 ] && echo ", $unrun could not run")"
+[ "$failed" -eq 0 ] || exit 1
+[ "$unrun" -eq 0 ] || exit 2
+exit 0
