@@ -49,6 +49,10 @@ pub struct Model {
     /// The parameter that holds the drive's fault code, when the manual
     /// names one (PI9000: 8000H).
     pub fault_parameter: Option<u16>,
+    /// The parameters the telegram's control word goes to and its status
+    /// word comes from, when the telegram has them (PI9000: 2000H, 3000H).
+    pub control_word: Option<u16>,
+    pub status_word: Option<u16>,
     /// What the card reports when it has lost its link to the drive, when
     /// the manual says (MD810: 0x34).
     pub link_lost_code: Option<u16>,

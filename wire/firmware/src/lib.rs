@@ -18,6 +18,9 @@
 // the layouts expect it (`crate::gsdc_support`).
 include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 
+pub mod card;
+pub mod cards;
+pub mod cyclic;
 pub mod drive;
 pub mod manuals;
 pub mod pkw;

@@ -26,6 +26,8 @@ pub const WITHOUT_MANUAL: Model = Model {
     manual: "none: the description has no drive model in wire/firmware/src/manuals.rs",
     parameters: &[],
     fault_parameter: None,
+    control_word: None,
+    status_word: None,
     link_lost_code: None,
 };
 
@@ -45,6 +47,9 @@ pub const MD810: Model = Model {
     // 1.8: the diagnosis is the drive's fault code "与 U0-62 的值一致", and U0-62
     // has no address in the PKW channel's numbering (1.4.2 numbers F0..FF).
     fault_parameter: None,
+    // 1.5.1: every PZD word is mapped; the telegram has no control or status word.
+    control_word: None,
+    status_word: None,
     // 1.8: "另当 DP 扩展卡与变频器通信中断时，会返回 0x34".
     link_lost_code: Some(0x34),
 };
@@ -103,6 +108,9 @@ pub const PI9000: Model = Model {
         },
     ],
     fault_parameter: Some(0x8000),
+    // The card's PZD1 each way (9kdp1.toml, the description's own telegram).
+    control_word: Some(0x2000),
+    status_word: Some(0x3000),
     link_lost_code: None,
 };
 

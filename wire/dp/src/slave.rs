@@ -1,0 +1,404 @@
+//! A PROFIBUS-DP slave (DP-V0) built from a layout: what a card's DP
+//! firmware does with each telegram the master sends, whatever carries the
+//! bytes (here profirust's simulated bus, see [`crate::station`]; on a card
+//! its UART or DP ASIC).
+//!
+//! Every number comes from the layout ([`Card`], [`Profibus`]): the ident
+//! number Set_Prm must carry, how User_Prm_Data decodes (the layout's
+//! codec), the modules Chk_Cfg may plug, the telegrams and the diagnosis
+//! block. The rules are DP-V0's (IEC 61158-6-3, the services of the slave's
+//! SAPs; the standard diagnosis of EN 50170 volume 2), each cited where it
+//! is applied:
+//!
+//! - Wait_Prm: after power-on the slave takes Slave_Diag and Set_Prm only.
+//!   A Set_Prm whose Ident_Number is not the slave's, or whose
+//!   User_Prm_Data the layout refuses, is confirmed (SC) and then reported
+//!   as Prm_Fault in Slave_Diag; the slave stays in Wait_Prm.
+//! - Wait_Cfg: Chk_Cfg whose config bytes are one of the layout's modules
+//!   moves the slave to Data_Exch; any other config is confirmed and
+//!   reported as Cfg_Fault, and the slave waits for parameters again.
+//! - Data_Exch: Data_Exchange carries the module's output bytes and is
+//!   answered with its input bytes, in a high-priority response (DH) when
+//!   the slave has a diagnosis the master has not read yet.
+
+use profirust::fdl::{DataTelegram, FunctionCode, RequestType};
+use wire_firmware::card::{Card, DpModule, PrmValues, Profibus};
+use wire_firmware::cyclic::{self, Shape};
+use wire_firmware::drive::Drive;
+
+// The slave's service access points (IEC 61158-6-3; profirust::consts
+// names the same).
+const SAP_GLOBAL_CONTROL: u8 = 58;
+const SAP_GET_CFG: u8 = 59;
+const SAP_SLAVE_DIAG: u8 = 60;
+const SAP_SET_PRM: u8 = 61;
+const SAP_CHK_CFG: u8 = 62;
+
+/// Set_Prm's fixed part: Station_Status, WD_Fact_1, WD_Fact_2,
+/// min_Tsdr, Ident_Number (2 bytes), Group_Ident; User_Prm_Data follows.
+const SET_PRM_FIXED: usize = 7;
+
+// Set_Prm byte 0, Station_Status.
+const LOCK_REQ: u8 = 0x80;
+const UNLOCK_REQ: u8 = 0x40;
+const SYNC_REQ: u8 = 0x20;
+const FREEZE_REQ: u8 = 0x10;
+const WD_ON: u8 = 0x08;
+
+// Slave_Diag byte 1, Station_status_1 (EN 50170 vol. 2). Bit 0
+// (Station_Non_Existent), bit 5 (Invalid_Slave_Response) and bit 7
+// (Master_Lock) are the master's to set, the slave sends them 0.
+const STATION_NOT_READY: u8 = 0x02;
+const CFG_FAULT: u8 = 0x04;
+const EXT_DIAG: u8 = 0x08;
+const NOT_SUPPORTED: u8 = 0x10;
+const PRM_FAULT: u8 = 0x40;
+
+// Slave_Diag byte 2, Station_status_2. Bit 2 is always 1; bit 7
+// (Deactivated) is the master's.
+const PRM_REQ: u8 = 0x01;
+const STATUS_2_ALWAYS: u8 = 0x04;
+const WD_ON_STATUS: u8 = 0x08;
+
+/// Slave_Diag byte 4, Diag.Master_Add, before a master has parameterized
+/// the slave.
+const NO_MASTER: u8 = 255;
+
+/// Where the slave is in its start-up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum State {
+    WaitPrm,
+    WaitCfg,
+    DataExchange,
+}
+
+/// What the slave answers a request with.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reply {
+    /// Nothing: a request without an answer (SDN), or not for this slave.
+    Nothing,
+    /// The short acknowledgement SC (0xE5).
+    ShortConfirmation,
+    /// The answer to Request FDL Status: a passive station, ready.
+    FdlStatus,
+    /// A data response from `ssap` to the master's `dsap`; `high_priority`
+    /// (DH) asks the master to read the diagnosis.
+    Data {
+        dsap: Option<u8>,
+        ssap: Option<u8>,
+        high_priority: bool,
+        pdu: Vec<u8>,
+    },
+    /// The service is not activated (RS): a SAP the slave does not have,
+    /// or Data_Exchange before the slave is configured.
+    NotActivated { dsap: Option<u8>, ssap: Option<u8> },
+}
+
+/// Faults of the last Set_Prm and Chk_Cfg, as Slave_Diag reports them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Faults {
+    prm: bool,
+    cfg: bool,
+    not_supported: bool,
+}
+
+/// A DP slave: the card's DP firmware, on top of its drive.
+#[derive(Debug)]
+pub struct DpSlave {
+    pub address: u8,
+    pub card: &'static Card,
+    profibus: &'static Profibus,
+    pub drive: Drive,
+    state: State,
+    /// The master that parameterized the slave, which locks it.
+    master: Option<u8>,
+    faults: Faults,
+    watchdog_on: bool,
+    /// min_Tsdr of the last Set_Prm, in bit times: the slave answers no
+    /// sooner.
+    min_tsdr_bits: u8,
+    /// User_Prm_Data of the last Set_Prm the slave accepted, decoded.
+    prm: Option<PrmValues>,
+    /// The module of the last Chk_Cfg the slave accepted.
+    module: Option<&'static DpModule>,
+    /// The diagnosis code the master last read in Slave_Diag.
+    reported_code: u16,
+}
+
+impl DpSlave {
+    /// The slave of `card` at `address`, after power-on: waiting for
+    /// parameters.
+    pub fn new(address: u8, card: &'static Card, drive: Drive) -> Self {
+        let profibus = card
+            .profibus
+            .expect("a DP slave needs a layout with PROFIBUS");
+        DpSlave {
+            address,
+            card,
+            profibus,
+            drive,
+            state: State::WaitPrm,
+            master: None,
+            faults: Faults::default(),
+            watchdog_on: false,
+            // IEC 61158-6-3: 11 bit times until a Set_Prm says otherwise.
+            min_tsdr_bits: 11,
+            prm: None,
+            module: None,
+            reported_code: 0,
+        }
+    }
+
+    pub fn state(&self) -> State {
+        self.state
+    }
+
+    /// User_Prm_Data as the slave decoded it, by parameter name.
+    pub fn prm(&self) -> Option<&PrmValues> {
+        self.prm.as_ref()
+    }
+
+    /// The module Chk_Cfg plugged.
+    pub fn module(&self) -> Option<&'static DpModule> {
+        self.module
+    }
+
+    pub fn min_tsdr_bits(&self) -> u8 {
+        self.min_tsdr_bits
+    }
+
+    /// The answer to a request telegram on the bus; [`Reply::Nothing`] for
+    /// a telegram for another station or one that wants no answer.
+    pub fn answer(&mut self, request: &DataTelegram) -> Reply {
+        let FunctionCode::Request { req, .. } = request.h.fc else {
+            return Reply::Nothing;
+        };
+        let broadcast = request.h.da == 127;
+        if request.h.da != self.address && !broadcast {
+            return Reply::Nothing;
+        }
+        if req == RequestType::FdlStatus {
+            return if broadcast {
+                Reply::Nothing
+            } else {
+                Reply::FdlStatus
+            };
+        }
+        let reply = match request.h.dsap {
+            None => self.data_exchange(request),
+            Some(SAP_SLAVE_DIAG) => self.slave_diag(request),
+            Some(SAP_SET_PRM) => self.set_prm(request),
+            Some(SAP_CHK_CFG) => self.chk_cfg(request),
+            Some(SAP_GET_CFG) => self.get_cfg(request),
+            // Global_Control (Clear, Sync, Freeze) comes as a broadcast
+            // without an answer; this slave supports neither Sync nor
+            // Freeze, and keeps its outputs to the drive as they are.
+            Some(SAP_GLOBAL_CONTROL) => Reply::Nothing,
+            Some(_) => Reply::NotActivated {
+                dsap: request.h.ssap,
+                ssap: request.h.dsap,
+            },
+        };
+        if broadcast || !req.expects_reply() {
+            Reply::Nothing
+        } else {
+            reply
+        }
+    }
+
+    /// Set_Prm (SAP 61): the parameters, checked against the layout.
+    fn set_prm(&mut self, request: &DataTelegram) -> Reply {
+        let pdu = request.pdu;
+        if pdu.len() < SET_PRM_FIXED {
+            self.refuse_prm();
+            return Reply::ShortConfirmation;
+        }
+        let status = pdu[0];
+        if status & UNLOCK_REQ != 0 && status & LOCK_REQ == 0 {
+            // The master releases the slave: back to waiting for parameters.
+            self.restart();
+            return Reply::ShortConfirmation;
+        }
+        // A new Set_Prm clears the faults of the last one.
+        self.faults = Faults {
+            // This slave supports neither Sync nor Freeze.
+            not_supported: status & (SYNC_REQ | FREEZE_REQ) != 0,
+            ..Faults::default()
+        };
+        // Another ident number is a parameter fault, as User_Prm_Data the
+        // layout's codec refuses is.
+        let ident = u16::from_be_bytes([pdu[4], pdu[5]]);
+        let prm = if ident == self.profibus.ident_number {
+            (self.profibus.decode_user_prm)(&pdu[SET_PRM_FIXED..]).ok()
+        } else {
+            None
+        };
+        match prm {
+            Some(prm) if !self.faults.not_supported => {
+                self.prm = Some(prm);
+                self.master = Some(request.h.sa);
+                self.watchdog_on = status & WD_ON != 0;
+                if pdu[3] != 0 {
+                    self.min_tsdr_bits = pdu[3];
+                }
+                self.module = None;
+                self.state = State::WaitCfg;
+            }
+            _ => self.refuse_prm(),
+        }
+        Reply::ShortConfirmation
+    }
+
+    /// Chk_Cfg (SAP 62): the module the master plugged.
+    fn chk_cfg(&mut self, request: &DataTelegram) -> Reply {
+        if self.state == State::WaitPrm {
+            // Without parameters the slave takes no configuration; Slave_Diag
+            // still says Prm_Req.
+            return Reply::ShortConfirmation;
+        }
+        let plugged = self
+            .profibus
+            .modules
+            .iter()
+            .find(|m| m.config == request.pdu);
+        match plugged {
+            Some(module) => {
+                self.module = Some(module);
+                self.faults.cfg = false;
+                self.state = State::DataExchange;
+            }
+            None => {
+                self.faults.cfg = true;
+                self.module = None;
+                self.state = State::WaitPrm;
+            }
+        }
+        Reply::ShortConfirmation
+    }
+
+    /// Get_Cfg (SAP 59): the config bytes of the module plugged.
+    fn get_cfg(&mut self, request: &DataTelegram) -> Reply {
+        Reply::Data {
+            dsap: request.h.ssap,
+            ssap: request.h.dsap,
+            high_priority: false,
+            pdu: self.module.map_or(Vec::new(), |m| m.config.to_vec()),
+        }
+    }
+
+    /// Slave_Diag (SAP 60): the standard diagnosis, then the device-related
+    /// block of the layout carrying the drive's code.
+    fn slave_diag(&mut self, request: &DataTelegram) -> Reply {
+        let code = self.drive.diagnosis_code();
+        let block = self.device_block(code);
+        let mut status_1 = 0;
+        if self.state != State::DataExchange {
+            status_1 |= STATION_NOT_READY;
+        }
+        if self.faults.cfg {
+            status_1 |= CFG_FAULT;
+        }
+        if code != 0 {
+            status_1 |= EXT_DIAG;
+        }
+        if self.faults.not_supported {
+            status_1 |= NOT_SUPPORTED;
+        }
+        if self.faults.prm {
+            status_1 |= PRM_FAULT;
+        }
+        let mut status_2 = STATUS_2_ALWAYS;
+        if self.state == State::WaitPrm {
+            status_2 |= PRM_REQ;
+        }
+        if self.watchdog_on {
+            status_2 |= WD_ON_STATUS;
+        }
+        let ident = self.profibus.ident_number.to_be_bytes();
+        let mut pdu = vec![
+            status_1,
+            status_2,
+            0, // Station_status_3: no Ext_Diag_Overflow
+            self.master.unwrap_or(NO_MASTER),
+            ident[0],
+            ident[1],
+        ];
+        pdu.extend_from_slice(&block);
+        self.reported_code = code;
+        Reply::Data {
+            dsap: request.h.ssap,
+            ssap: request.h.dsap,
+            high_priority: false,
+            pdu,
+        }
+    }
+
+    /// The device-related block with `code` in the layout's area; none when
+    /// the GSD describes no block.
+    fn device_block(&self, code: u16) -> Vec<u8> {
+        match &self.profibus.diagnosis {
+            Some(diagnosis) => {
+                let mut block = diagnosis.empty.to_vec();
+                diagnosis.code.set(&mut block, code);
+                block
+            }
+            None => Vec::new(),
+        }
+    }
+
+    /// Data_Exchange (default SAP): the module's outputs to the drive, its
+    /// inputs back.
+    fn data_exchange(&mut self, request: &DataTelegram) -> Reply {
+        let (Some(module), Some(prm), State::DataExchange) = (self.module, self.prm, self.state)
+        else {
+            return Reply::NotActivated {
+                dsap: None,
+                ssap: None,
+            };
+        };
+        if request.pdu.len() != module.data_len() {
+            // Outputs of another length than the module's: not this
+            // configuration's telegram.
+            return Reply::NotActivated {
+                dsap: None,
+                ssap: None,
+            };
+        }
+        let shape = Shape {
+            pkw: module.pkw,
+            pzd_words: module.pzd_words,
+        };
+        let mut inputs = vec![0; module.data_len()];
+        cyclic::exchange(
+            self.card,
+            shape,
+            &prm,
+            &mut self.drive,
+            request.pdu,
+            &mut inputs,
+        );
+        Reply::Data {
+            dsap: None,
+            ssap: None,
+            high_priority: self.drive.diagnosis_code() != self.reported_code,
+            pdu: inputs,
+        }
+    }
+
+    /// A Set_Prm the slave does not take: Prm_Fault, waiting for parameters.
+    fn refuse_prm(&mut self) {
+        self.faults.prm = true;
+        self.prm = None;
+        self.module = None;
+        self.state = State::WaitPrm;
+    }
+
+    /// Back to power-on's state, keeping the drive.
+    fn restart(&mut self) {
+        self.state = State::WaitPrm;
+        self.master = None;
+        self.faults = Faults::default();
+        self.prm = None;
+        self.module = None;
+    }
+}

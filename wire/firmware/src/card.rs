@@ -1,0 +1,124 @@
+//! What the card's firmware reads of a layout, by the same names for every
+//! description: its telegram, its mappings and, per bus, its identity,
+//! modules, parameters and diagnosis. Every number is a constant of the
+//! layout; [`crate::layouts`] fills one [`Card`] per description.
+
+use crate::gsdc_support::{Mapping, PrmError};
+use crate::pkw::PkwKind;
+
+/// One description's card.
+#[derive(Clone, Copy, Debug)]
+pub struct Card {
+    /// The description's file name without `.toml`: `md810dp`.
+    pub name: &'static str,
+    /// The description's fingerprint; the GSD and GSDML built from the same
+    /// description carry it in their headers.
+    pub fingerprint: &'static str,
+    /// The PKW channel, when the telegram has one.
+    pub pkw: Option<PkwKind>,
+    /// Whether PZD1 from the master is the control word, and PZD1 to the
+    /// master the status word.
+    pub control_word: bool,
+    pub status_word: bool,
+    /// What the PZD words from the master carry: a mapping's `number` is
+    /// its PZD word, its value a drive parameter's address.
+    pub pzd_out: &'static [Mapping],
+    /// What the PZD words to the master carry.
+    pub pzd_in: &'static [Mapping],
+    pub profibus: Option<&'static Profibus>,
+}
+
+/// What a PROFIBUS-DP slave needs of the layout.
+#[derive(Clone, Copy, Debug)]
+pub struct Profibus {
+    /// Ident_Number: Set_Prm must carry it.
+    pub ident_number: u16,
+    /// The modules Chk_Cfg may plug, one at a time.
+    pub modules: &'static [DpModule],
+    /// The length of User_Prm_Data.
+    pub user_prm_len: usize,
+    /// Decodes User_Prm_Data with the layout's codec: the value of every
+    /// parameter by its GSD name, or why Set_Prm is refused (Prm_Fault).
+    pub decode_user_prm: fn(&[u8]) -> Result<PrmValues, PrmError>,
+    /// The device-related diagnosis block, when the GSD describes one.
+    pub diagnosis: Option<Diagnosis>,
+}
+
+/// A module of the GSD.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpModule {
+    /// As the GSD names it: `PPO1: 4 PKW + 2 PZD`.
+    pub name: &'static str,
+    /// The config bytes Chk_Cfg carries for it.
+    pub config: &'static [u8],
+    /// Whether the telegram starts with the PKW channel.
+    pub pkw: bool,
+    /// The PZD words each way.
+    pub pzd_words: usize,
+}
+
+impl DpModule {
+    /// Bytes each way: the PKW channel's 8, then 2 per PZD word.
+    pub const fn data_len(&self) -> usize {
+        let pkw = if self.pkw {
+            crate::gsdc_support::PKW_BYTES
+        } else {
+            0
+        };
+        pkw + 2 * self.pzd_words
+    }
+}
+
+/// The device-related diagnosis block: its length and header, and the
+/// area that carries the drive's code.
+#[derive(Clone, Copy, Debug)]
+pub struct Diagnosis {
+    /// Bytes of the block, the header included.
+    pub len: usize,
+    /// The block with every area 0, the header first.
+    pub empty: &'static [u8],
+    /// The `Unit_Diag_Area` that carries the drive's code.
+    pub code: crate::gsdc_support::diagnosis::DiagArea,
+}
+
+/// The most parameters a User_Prm_Data holds here.
+pub const MAX_PRM_VALUES: usize = 64;
+
+/// The values of User_Prm_Data, each with its parameter's GSD name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PrmValues {
+    values: [(&'static str, u16); MAX_PRM_VALUES],
+    len: usize,
+}
+
+impl PrmValues {
+    pub const EMPTY: Self = PrmValues {
+        values: [("", 0); MAX_PRM_VALUES],
+        len: 0,
+    };
+
+    /// Adds the values of `mappings`, in order.
+    pub fn with(mut self, mappings: &[Mapping], values: &[u16]) -> Self {
+        for (mapping, &value) in mappings.iter().zip(values) {
+            self.values[self.len] = (mapping.name, value);
+            self.len += 1;
+        }
+        self
+    }
+
+    /// Every parameter's name and value, in User_Prm_Data's order.
+    pub fn iter(&self) -> impl Iterator<Item = (&'static str, u16)> + '_ {
+        self.values[..self.len].iter().copied()
+    }
+
+    /// The value of the parameter the GSD names `name`.
+    pub fn get(&self, name: &str) -> Option<u16> {
+        self.iter().find(|&(n, _)| n == name).map(|(_, v)| v)
+    }
+
+    /// The value of the mapping of PZD word `word` among `mappings`.
+    pub fn mapped(&self, mappings: &[Mapping], word: usize) -> Option<u16> {
+        let mapping = mappings.iter().find(|m| usize::from(m.number) == word)?;
+        self.get(mapping.name)
+    }
+}
