@@ -148,5 +148,9 @@ pub const MV810: Model = Model {
         },
     ],
     fault_parameter: None,
+    // Section 3: PZD1 carries the control and status words themselves; the
+    // manual gives them no parameter (the card's status_of answers).
+    control_word: None,
+    status_word: None,
     link_lost_code: None,
 };

@@ -348,13 +348,18 @@ def check_decoded(record, data, values, seen, slot, subslot) -> None:
         raise Failed(f"{where}: the device's layout has no record there")
     if "refused" in event:
         raise Failed(f"{where}: the layout's decoder refused it: {event['refused']}")
-    decoded = event["values"][:len(values)]
+    entries = event["layout"][:len(values)]
+    decoded = [e["value"] for e in entries]
     for ordinal, (want, got) in enumerate(zip(values, decoded)):
         if want != got:
             ref = sorted(record.refs, key=lambda r: r.byte_offset)[ordinal]
-            raise Failed(f"{where}, byte {ref.byte_offset} ({ref.name}): the layout decoded {got}, "
-                         f"the controller wrote {want}")
-    say(f"    decoded by the layout ({event['layout']}): {decoded}")
+            raise Failed(f"{where}, byte {ref.byte_offset} ({ref.name}): the layout decoded {got} "
+                         f"as {entries[ordinal]['entry']!r}, the controller wrote {want}")
+    if len(decoded) < len(values):
+        raise Failed(f"{where}: the layout decoded {len(decoded)} entries, the GSDML has {len(values)}")
+    if event.get("drive_refused"):
+        raise Failed(f"{where}: the drive refused the value of {', '.join(event['drive_refused'])}")
+    say(f"    decoded by the layout: " + ", ".join(f"{e['entry']} = {e['value']}" for e in entries))
 
 
 def item(items: list[DataItem], name: str) -> DataItem | None:

@@ -1,77 +1,112 @@
-//! The card's application on the cyclic data: each cycle it reads what the
-//! controller sent to the plugged modules, lets the drive act on it, and
-//! writes the answer: the PKW channel answered through the layout's codec
-//! against the drive model, the status word from the control word.
+//! The card's application: the records the controller wrote, decoded by the
+//! layout, and each cycle the card's exchange with the drive
+//! (`wire_firmware::cyclic`, the same code the DP slave runs) on every
+//! plugged module's data.
 
-use crate::card::{Card, Module, Record};
 use pnio::rt::IoImage;
+use wire_firmware::card::{Card, PnModule, PnRecord, PrmValues};
+use wire_firmware::cyclic::{exchange, Shape};
 use wire_firmware::drive::Drive;
-use wire_firmware::gsdc_support::{put_words, words, U16Be};
-use wire_firmware::pkw::answer;
 
 pub struct Application {
-    card: Card,
+    card: &'static Card,
     drive: Drive,
-    plugged: Vec<(u16, Module)>,
+    plugged: Vec<(u16, &'static PnModule)>,
+    /// Each record's values, the layout's defaults until the controller
+    /// writes it.
+    records: Vec<(&'static PnRecord, PrmValues)>,
 }
 
 impl Application {
-    pub fn new(card: &Card, plugged: &[(u16, &Module)]) -> Application {
+    pub fn new(card: &'static Card, plugged: &[(u16, &'static PnModule)]) -> Application {
+        let records = plugged
+            .iter()
+            .flat_map(|(_, m)| m.records)
+            .map(|r| {
+                let defaults: Vec<u16> = r.mappings.iter().map(|m| m.default).collect();
+                (r, PrmValues::EMPTY.with(r.mappings, &defaults))
+            })
+            .collect();
         Application {
-            card: card.clone(),
-            drive: Drive::new(card.drive),
-            plugged: plugged.iter().map(|(s, m)| (*s, (*m).clone())).collect(),
+            card,
+            drive: Drive::new(wire_firmware::manuals::for_description(card.name)),
+            plugged: plugged.to_vec(),
+            records,
         }
     }
 
-    /// A record the controller wrote, decoded: each value goes to the drive
-    /// parameter its entry names (where the drive holds it). The values the
-    /// drive refuses are returned by entry name.
-    pub fn apply(&mut self, record: &Record, values: &[u16]) -> Vec<&'static str> {
+    /// The record a Write carried, decoded by the layout (the plugged
+    /// module's record of that subslot and index), or `None` when the layout
+    /// has no such record. Its values go to the drive parameters its entries
+    /// name, where the drive holds them; the names of those the drive
+    /// refuses are returned with the values.
+    pub fn write(
+        &mut self,
+        slot: u16,
+        subslot: u16,
+        index: u16,
+        bytes: &[u8],
+    ) -> Option<Result<(PrmValues, Vec<&'static str>), String>> {
+        let (_, module) = self.plugged.iter().find(|(s, _)| *s == slot)?;
+        let record = module
+            .records
+            .iter()
+            .find(|r| r.subslot == subslot && r.index == index)?;
+        let values = match (record.decode)(bytes) {
+            Ok(values) => values,
+            Err(e) => return Some(Err(format!("{e:?}"))),
+        };
         let mut refused = Vec::new();
-        for (mapping, value) in record.mappings.iter().zip(values) {
-            if let Some(address) = mapping.parameter {
-                if self.drive.parameter(address).is_some()
-                    && self.drive.write(address, *value).is_err()
-                {
-                    refused.push(mapping.name);
-                }
+        for (mapping, (_, value)) in record.mappings.iter().zip(values.iter()) {
+            let Some(address) = mapping.parameter else {
+                continue;
+            };
+            if self.drive.parameter(address).is_some() && self.drive.write(address, value).is_err()
+            {
+                refused.push(mapping.name);
             }
         }
-        refused
+        if let Some(held) = self
+            .records
+            .iter_mut()
+            .find(|(r, _)| std::ptr::eq(*r, record))
+        {
+            held.1 = values;
+        }
+        Some(Ok((values, refused)))
     }
 
     /// One cycle over every plugged module's data submodule. Before the AR
     /// reaches data exchange there is nothing to read, and nothing happens.
     pub fn cycle(&mut self, image: &IoImage) {
+        let prm = self
+            .records
+            .iter()
+            .fold(PrmValues::EMPTY, |all, (record, values)| {
+                let values: Vec<u16> = values.iter().map(|(_, v)| v).collect();
+                all.with(record.mappings, &values)
+            });
         for (slot, module) in &self.plugged {
+            let shape = Shape {
+                pkw: module.pkw,
+                pzd_words: module.pzd_words,
+            };
             for sub in module.submodules.iter().filter(|s| s.output_len > 0) {
-                let Ok(out) = image.read_outputs(*slot, sub.subslot, |b, _| b.to_vec()) else {
+                let Ok(from_controller) = image.read_outputs(*slot, sub.subslot, |b, _| b.to_vec())
+                else {
                     continue;
                 };
-                let mut inputs = vec![0u8; usize::from(sub.input_len)];
-                answer_telegram(&self.card, &mut self.drive, module.pkw, &out, &mut inputs);
-                let _ = image.write_inputs(*slot, sub.subslot, &inputs);
+                let mut to_controller = vec![0u8; usize::from(sub.input_len)];
+                exchange(
+                    self.card,
+                    shape,
+                    &prm,
+                    &mut self.drive,
+                    &from_controller,
+                    &mut to_controller,
+                );
+                let _ = image.write_inputs(*slot, sub.subslot, &to_controller);
             }
-        }
-    }
-}
-
-/// The drive's answer to one telegram: PKW words first when the module has
-/// them, then PZD1, the control word, answered with the status word.
-fn answer_telegram(card: &Card, drive: &mut Drive, pkw: bool, out: &[u8], inputs: &mut [u8]) {
-    let mut pzd_at = 0;
-    if let (true, Some(kind)) = (pkw, card.pkw) {
-        if out.len() >= 8 && inputs.len() >= 8 {
-            let request: [U16Be; 4] = words(&out[..8]);
-            put_words(&mut inputs[..8], &answer(kind, drive, &request));
-        }
-        pzd_at = 8;
-    }
-    if let (Some(status_of), Some(control)) = (card.status_of, out.get(pzd_at..pzd_at + 2)) {
-        let status = status_of(u16::from_be_bytes([control[0], control[1]]));
-        if let Some(word) = inputs.get_mut(pzd_at..pzd_at + 2) {
-            word.copy_from_slice(&status.to_be_bytes());
         }
     }
 }

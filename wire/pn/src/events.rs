@@ -1,12 +1,12 @@
 //! The device's account of the exchange: one JSON object a line on stdout.
 
-use crate::card::{Module, Record as LayoutRecord};
 use crate::connect::ApiMismatch;
 use pnio::cm::{AbortReason, ArState, Record};
 use pnio::eth::MacAddr;
 use std::io::Write;
 use std::net::Ipv4Addr;
 use std::sync::{Arc, Mutex};
+use wire_firmware::card::{PnModule, PrmValues};
 
 #[derive(Clone)]
 pub struct Events {
@@ -26,7 +26,14 @@ impl Events {
         let _ = out.flush();
     }
 
-    pub fn listening(&self, card: &str, station: &str, mac: MacAddr, ip: Ipv4Addr, plugged: &[(u16, &Module)]) {
+    pub fn listening(
+        &self,
+        card: &str,
+        station: &str,
+        mac: MacAddr,
+        ip: Ipv4Addr,
+        plugged: &[(u16, &PnModule)],
+    ) {
         let modules: Vec<String> = plugged
             .iter()
             .map(|(slot, m)| {
@@ -42,7 +49,7 @@ impl Events {
                     .collect();
                 format!(
                     r#"{{"slot":{slot},"module":"{}","ident":{},"submodules":[{}]}}"#,
-                    m.gsdml_id,
+                    m.id,
                     m.ident,
                     subs.join(",")
                 )
@@ -58,33 +65,42 @@ impl Events {
 
     pub fn ar_state(&self, state: ArState, why: Option<AbortReason>) {
         let why = why.map_or("null".into(), |w| quote(&format!("{w:?}")));
-        self.emit(format!(r#"{{"event":"ar","state":"{state:?}","reason":{why}}}"#));
+        self.emit(format!(
+            r#"{{"event":"ar","state":"{state:?}","reason":{why}}}"#
+        ));
     }
 
     /// A written record, with what the layout's decoder made of it (or why it
-    /// refused it, or that the layout has no record at that place).
-    pub fn record(&self, record: &Record, decoded: Option<(&Result<Vec<u16>, String>, &LayoutRecord)>) {
+    /// refused it, or that the layout has no record at that place), and the
+    /// entries whose value the drive refused.
+    #[allow(clippy::type_complexity)]
+    pub fn record(
+        &self,
+        record: &Record,
+        decoded: Option<&Result<(PrmValues, Vec<&str>), String>>,
+    ) {
         let bytes: String = record.data.iter().map(|b| format!("{b:02x}")).collect();
         let decoded = match decoded {
             None => r#""layout":null"#.to_string(),
-            Some((result, l)) => match result {
-                Ok(values) => format!(
-                    r#""layout":"{}","values":[{}]"#,
-                    l.name,
-                    values.iter().map(u16::to_string).collect::<Vec<_>>().join(",")
-                ),
-                Err(e) => format!(r#""layout":"{}","refused":{}"#, l.name, quote(e)),
-            },
+            Some(Ok((values, refused))) => format!(
+                r#""layout":[{}],"drive_refused":[{}]"#,
+                values
+                    .iter()
+                    .map(|(name, value)| format!(r#"{{"entry":{},"value":{value}}}"#, quote(name)))
+                    .collect::<Vec<_>>()
+                    .join(","),
+                refused
+                    .iter()
+                    .map(|n| quote(n))
+                    .collect::<Vec<_>>()
+                    .join(",")
+            ),
+            Some(Err(e)) => format!(r#""layout":"refused","refused":{}"#, quote(e)),
         };
         self.emit(format!(
             r#"{{"event":"record","api":{},"slot":{},"subslot":{},"index":{},"bytes":"{bytes}",{decoded}}}"#,
             record.api, record.slot, record.subslot, record.index
         ));
-    }
-
-    /// The drive refused the value a record gave the entry `name`.
-    pub fn drive_refused(&self, name: &str) {
-        self.emit(format!(r#"{{"event":"drive-refused","entry":{}}}"#, quote(name)));
     }
 
     pub fn api_refused(&self, m: &ApiMismatch) {

@@ -10,15 +10,12 @@
 //! Every event goes to stdout as one JSON object a line, for the controller
 //! side of the wire test (and a person) to read.
 
-mod card;
-mod cards;
 mod connect;
 mod drive;
 mod events;
 mod model;
 mod tap;
 
-use card::{Card, Module};
 use events::Events;
 use model::{api_of, device_model, Mismatch};
 use pnio::dcp::{DcpConfig, DeviceProperties};
@@ -32,6 +29,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
 use tap::{Seen, Tap};
+use wire_firmware::card::{Card, PnModule, Profinet};
 
 struct Args {
     card: String,
@@ -108,20 +106,27 @@ fn main() -> ExitCode {
 }
 
 fn run(args: &Args) -> Result<(), String> {
-    let card = cards::card(&args.card).ok_or(format!(
-        "no card {:?}; the cards: {}",
+    let card = wire_firmware::cards::card(&args.card).ok_or(format!(
+        "the firmware has no card {:?}; its cards: {}",
         args.card,
-        cards::names().join(", ")
+        wire_firmware::cards::CARDS
+            .iter()
+            .map(|c| c.name)
+            .collect::<Vec<_>>()
+            .join(", ")
     ))?;
-    let plugged = plugged_modules(&card, &args.plug)?;
+    let profinet = card
+        .profinet
+        .ok_or(format!("{} has no PROFINET part", card.name))?;
+    let plugged = plugged_modules(card, profinet, &args.plug)?;
     let mac = mac_of(&args.iface)?;
     let events = Events::stdout();
 
-    let model = device_model(&card, &args.station, mac, &plugged, args.mismatch);
+    let model = device_model(profinet, &args.station, mac, &plugged, args.mismatch);
     let setup = DeviceSetup {
         dcp: DcpConfig {
             mac,
-            properties: dcp_identity(&card, &args.station, args.ip.octets()),
+            properties: dcp_identity(card, profinet, &args.station, args.ip.octets()),
         },
         model,
         activity_seed: activity_seed(mac),
@@ -142,12 +147,8 @@ fn run(args: &Args) -> Result<(), String> {
     let (seen_tx, seen) = mpsc::channel();
     let mismatch = args.mismatch;
     let apis = {
-        let card = card.clone();
-        let plugged: Vec<(u16, Module)> = plugged.iter().map(|(s, m)| (*s, (*m).clone())).collect();
-        move |slot, subslot| {
-            let plugged: Vec<(u16, &Module)> = plugged.iter().map(|(s, m)| (*s, m)).collect();
-            api_of(&card, &plugged, mismatch, slot, subslot)
-        }
+        let plugged = plugged.clone();
+        move |slot, subslot| api_of(profinet, &plugged, mismatch, slot, subslot)
     };
     let mut device = Device::new(setup, eth, Tap::new(udp, seen_tx, apis));
     {
@@ -162,11 +163,13 @@ fn run(args: &Args) -> Result<(), String> {
     };
     events.listening(&args.card, &args.station, mac, args.ip, &plugged);
 
-    let deadline = args.seconds.map(|s| Instant::now() + Duration::from_secs(s));
-    let mut application = drive::Application::new(&card, &plugged);
+    let deadline = args
+        .seconds
+        .map(|s| Instant::now() + Duration::from_secs(s));
+    let mut application = drive::Application::new(card, &plugged);
     while deadline.map_or(true, |d| Instant::now() < d) && !acyclic.is_finished() {
         while let Ok(seen) = seen.try_recv() {
-            report(&events, &plugged, &mut application, seen);
+            report(&events, &mut application, seen);
         }
         application.cycle(&image);
         std::thread::sleep(Duration::from_millis(1));
@@ -180,13 +183,22 @@ fn run(args: &Args) -> Result<(), String> {
 }
 
 /// The modules the arguments plug, each checked against the card's table.
-fn plugged_modules<'a>(card: &'a Card, plug: &[(u16, String)]) -> Result<Vec<(u16, &'a Module)>, String> {
+fn plugged_modules(
+    card: &Card,
+    profinet: &'static Profinet,
+    plug: &[(u16, String)],
+) -> Result<Vec<(u16, &'static PnModule)>, String> {
     plug.iter()
         .map(|(slot, id)| {
-            let module = card.module(id).ok_or(format!(
+            let module = profinet.modules.iter().find(|m| m.id == id).ok_or(format!(
                 "{} has no module {id:?}; its modules: {}",
                 card.name,
-                card.modules.iter().map(|m| m.gsdml_id).collect::<Vec<_>>().join(", ")
+                profinet
+                    .modules
+                    .iter()
+                    .map(|m| m.id)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ))?;
             if !module.slots.contains(slot) {
                 return Err(format!("{id} goes in slots {:?}, not {slot}", module.slots));
@@ -197,26 +209,17 @@ fn plugged_modules<'a>(card: &'a Card, plug: &[(u16, String)]) -> Result<Vec<(u1
 }
 
 /// Each record a Write carried, decoded by the layout where the plugged
-/// module has a record of that index.
-fn report(events: &Events, plugged: &[(u16, &Module)], application: &mut drive::Application, seen: Seen) {
+/// module has a record there, and what the device made of it.
+fn report(events: &Events, application: &mut drive::Application, seen: Seen) {
     match seen {
         Seen::Records(records) => {
-            for record in records.iter().filter(|r| r.index != pnio::cm::INDEX_MULTIPLE_WRITE) {
-                let layout = plugged
-                    .iter()
-                    .find(|(slot, _)| *slot == record.slot)
-                    .and_then(|(_, m)| {
-                        m.records
-                            .iter()
-                            .find(|r| r.subslot == record.subslot && r.index == record.index)
-                    });
-                let decoded = layout.map(|l| ((l.decode)(&record.data), l));
-                if let Some((Ok(values), l)) = &decoded {
-                    for name in application.apply(l, values) {
-                        events.drive_refused(name);
-                    }
-                }
-                events.record(record, decoded.as_ref().map(|(r, l)| (r, *l)));
+            for record in records
+                .iter()
+                .filter(|r| r.index != pnio::cm::INDEX_MULTIPLE_WRITE)
+            {
+                let decoded =
+                    application.write(record.slot, record.subslot, record.index, &record.data);
+                events.record(record, decoded.as_ref());
             }
         }
         Seen::ApiRefused(mismatch) => events.api_refused(&mismatch),
@@ -224,12 +227,12 @@ fn report(events: &Events, plugged: &[(u16, &Module)], application: &mut drive::
     }
 }
 
-fn dcp_identity(card: &Card, station: &str, ip: [u8; 4]) -> DeviceProperties {
+fn dcp_identity(card: &Card, profinet: &Profinet, station: &str, ip: [u8; 4]) -> DeviceProperties {
     DeviceProperties {
         name_of_station: station.to_string(),
         type_of_station: card.name.to_string(),
-        vendor_id: card.vendor_id,
-        device_id: card.device_id,
+        vendor_id: profinet.vendor_id,
+        device_id: profinet.device_id,
         // pnio's values: an IO device, instance 1, its DCP options.
         device_role: 0x0100,
         device_instance: 1,

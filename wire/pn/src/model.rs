@@ -1,10 +1,11 @@
-//! pnio's device model from the card's tables: what the device accepts in a
-//! Connect. Nothing here is a number of its own; a deliberate mismatch (the
-//! wire test's negative case) is the only change, and it says which.
+//! pnio's device model from the card's PROFINET table: what the device
+//! accepts in a Connect. Nothing here is a number of its own; a deliberate
+//! mismatch (the wire test's negative case) is the only change, and it says
+//! which.
 
-use crate::card::{Card, Module, Submodule};
 use pnio::cm::{DeviceModel, SlotModel, SubmoduleModel};
 use pnio::eth::MacAddr;
+use wire_firmware::card::{PnModule, PnSubmodule, Profinet};
 
 /// How the device departs from the layout, to show that the controller sees it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -19,17 +20,25 @@ pub enum Mismatch {
     Api,
 }
 
+/// pnio's answer to a Connect's maximum alarm data length: the value pnio's
+/// own configuration gives every device.
+const MAX_ALARM_DATA_LENGTH: u16 = 200;
+
 pub fn device_model(
-    card: &Card,
+    profinet: &Profinet,
     station: &str,
     mac: MacAddr,
-    plugged: &[(u16, &Module)],
+    plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
 ) -> DeviceModel {
     let mut slots = vec![SlotModel {
         slot: 0,
-        module_ident: card.dap_ident,
-        submodules: card.dap_submodules.iter().map(submodule_model).collect(),
+        module_ident: profinet.dap_ident,
+        submodules: profinet
+            .dap_submodules
+            .iter()
+            .map(submodule_model)
+            .collect(),
     }];
     for &(slot, module) in plugged {
         let mut model = SlotModel {
@@ -49,17 +58,18 @@ pub fn device_model(
         slots.push(model);
     }
     DeviceModel {
-        vendor_id: card.vendor_id,
-        device_id: card.device_id,
+        vendor_id: profinet.vendor_id,
+        device_id: profinet.device_id,
+        // pnio's: the one instance of the device on its interface.
         instance: 1,
         station_name: station.to_string(),
         mac,
-        max_alarm_data_length: 200,
+        max_alarm_data_length: MAX_ALARM_DATA_LENGTH,
         slots,
     }
 }
 
-fn submodule_model(s: &Submodule) -> SubmoduleModel {
+fn submodule_model(s: &PnSubmodule) -> SubmoduleModel {
     SubmoduleModel {
         subslot: s.subslot,
         submodule_ident: s.ident,
@@ -71,16 +81,16 @@ fn submodule_model(s: &Submodule) -> SubmoduleModel {
 /// The API of the submodule at (slot, subslot), as the layout places it (or,
 /// with [`Mismatch::Api`], API 0 for a plugged module).
 pub fn api_of(
-    card: &Card,
-    plugged: &[(u16, &Module)],
+    profinet: &Profinet,
+    plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
     slot: u16,
     subslot: u16,
 ) -> Option<u32> {
-    let submodules: &[Submodule] = if slot == 0 {
-        &card.dap_submodules
+    let submodules = if slot == 0 {
+        profinet.dap_submodules
     } else {
-        &plugged.iter().find(|(s, _)| *s == slot)?.1.submodules
+        plugged.iter().find(|(s, _)| *s == slot)?.1.submodules
     };
     let api = submodules.iter().find(|s| s.subslot == subslot)?.api;
     Some(match mismatch {
