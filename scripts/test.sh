@@ -5,12 +5,14 @@
 # gcc, g++ and clang for the C layouts, which tests/c_header.rs compiles and
 # runs; Chromium and fonts with Latin and Chinese glyphs for the datasheet
 # tests, which load each datasheet in a headless browser; strace, with which
-# tests/output_safety.rs kills a build in the middle of an fsync.
+# tests/output_safety.rs kills a build in the middle of an fsync; iproute2
+# and Python's venv for the PROFINET exchange (tests/wire_pn.rs), whose
+# controller, profinet-py pinned, goes in a venv in target/wire-venv.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 missing=()
-for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei strace; do
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei strace iproute2 python3-venv; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -gt 0 ]; then
@@ -20,5 +22,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get update -qq
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
+
+wire/pn/venv.sh >/dev/null
 
 cargo test "$@"
