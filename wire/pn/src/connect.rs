@@ -4,7 +4,7 @@
 //! more than one, DB 81 02 0F, which every card with a PROFIdrive module has:
 //! the access point's submodules in API 0, the telegram in API 0x3A00).
 
-use pnio::cm::{BlockHeader, ConnectReq, IocrBlockReq};
+use pnio::cm::{BlockHeader, ConnectReq, IocrApi, IocrBlockReq};
 use pnio::rpc::{Drep, NdrRequest, RpcHeader};
 
 /// Block type of an IOCRBlockReq (IEC 61158-6-10).
@@ -106,8 +106,23 @@ pub fn with_one_api_per_iocr(pdu: &[u8]) -> Option<Vec<u8>> {
 
 /// An IOCRBlockReq with a single API entry holding every API's objects.
 fn write_iocr_one_api(iocr: &IocrBlockReq, out: &mut Vec<u8>) {
-    let io_data: Vec<_> = iocr.apis.iter().flat_map(|a| &a.io_data).collect();
-    let iocs: Vec<_> = iocr.apis.iter().flat_map(|a| &a.iocs).collect();
+    let merged = IocrApi {
+        api: iocr.apis[0].api,
+        io_data: iocr.apis.iter().flat_map(|a| a.io_data.clone()).collect(),
+        iocs: iocr.apis.iter().flat_map(|a| a.iocs.clone()).collect(),
+    };
+    write_iocr(
+        &IocrBlockReq {
+            apis: vec![merged],
+            ..iocr.clone()
+        },
+        out,
+    );
+}
+
+/// An IOCRBlockReq as IEC 61158-6-10 lays it out (the inverse of pnio's
+/// `IocrBlockReq::parse`).
+fn write_iocr(iocr: &IocrBlockReq, out: &mut Vec<u8>) {
     let mut body = Vec::new();
     for value in [iocr.iocr_type, iocr.reference, iocr.lt] {
         body.extend_from_slice(&value.to_be_bytes());
@@ -128,13 +143,15 @@ fn write_iocr_one_api(iocr: &IocrBlockReq, out: &mut Vec<u8>) {
         body.extend_from_slice(&value.to_be_bytes());
     }
     body.extend_from_slice(&iocr.multicast_mac.0);
-    body.extend_from_slice(&1u16.to_be_bytes());
-    body.extend_from_slice(&iocr.apis[0].api.to_be_bytes());
-    for objects in [&io_data, &iocs] {
-        body.extend_from_slice(&(objects.len() as u16).to_be_bytes());
-        for object in objects.iter() {
-            for value in [object.slot, object.subslot, object.frame_offset] {
-                body.extend_from_slice(&value.to_be_bytes());
+    body.extend_from_slice(&(iocr.apis.len() as u16).to_be_bytes());
+    for api in &iocr.apis {
+        body.extend_from_slice(&api.api.to_be_bytes());
+        for objects in [&api.io_data, &api.iocs] {
+            body.extend_from_slice(&(objects.len() as u16).to_be_bytes());
+            for object in objects {
+                for value in [object.slot, object.subslot, object.frame_offset] {
+                    body.extend_from_slice(&value.to_be_bytes());
+                }
             }
         }
     }
@@ -157,5 +174,127 @@ fn write_ndr(ndr: &NdrRequest, drep: Drep, out: &mut Vec<u8>) {
             value.to_be_bytes()
         };
         out.extend_from_slice(&bytes);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pnio::cm::IocrObject;
+    use pnio::eth::MacAddr;
+    use pnio::rpc::{PacketType, Uuid};
+
+    fn object(slot: u16, subslot: u16, frame_offset: u16) -> IocrObject {
+        IocrObject {
+            slot,
+            subslot,
+            frame_offset,
+        }
+    }
+
+    /// An input IOCR as a controller sends it for a PROFIdrive module: the
+    /// access point's submodules in API 0, the telegram in API 0x3A00.
+    fn two_api_iocr() -> IocrBlockReq {
+        IocrBlockReq {
+            iocr_type: 1,
+            reference: 1,
+            lt: 0x8892,
+            properties: 1,
+            data_length: 40,
+            frame_id: 0x8001,
+            send_clock_factor: 32,
+            reduction_ratio: 8,
+            phase: 1,
+            sequence: 0,
+            frame_send_offset: 0xFFFF_FFFF,
+            watchdog_factor: 10,
+            data_hold_factor: 10,
+            tag_header: 0xC000,
+            multicast_mac: MacAddr([0; 6]),
+            apis: vec![
+                IocrApi {
+                    api: 0,
+                    io_data: vec![object(0, 1, 0), object(0, 0x8000, 1)],
+                    iocs: vec![],
+                },
+                IocrApi {
+                    api: 0x3A00,
+                    io_data: vec![object(1, 1, 2), object(1, 2, 3)],
+                    iocs: vec![object(1, 2, 8)],
+                },
+            ],
+        }
+    }
+
+    /// A Connect request PDU (RPC header, NDR header, blocks) in `drep`.
+    fn pdu(blocks: &[u8], drep: Drep) -> Vec<u8> {
+        let header = RpcHeader {
+            ptype: PacketType::Request,
+            flags1: 0x20,
+            flags2: 0,
+            drep,
+            serial_hi: 0,
+            object: Uuid([1; 16]),
+            interface: Uuid([2; 16]),
+            activity: Uuid([3; 16]),
+            server_boot: 0,
+            if_version: 1,
+            seq_num: 7,
+            opnum: 0,
+            ihint: 0xFFFF,
+            ahint: 0xFFFF,
+            frag_len: (NdrRequest::LEN + blocks.len()) as u16,
+            frag_num: 0,
+            auth_proto: 0,
+            serial_lo: 0,
+        };
+        let mut out = Vec::new();
+        header.write(&mut out);
+        NdrRequest::for_blocks(1500, blocks.len() as u32).write(&mut out, drep);
+        out.extend_from_slice(blocks);
+        out
+    }
+
+    fn merged_iocr(drep: Drep) {
+        let mut two = Vec::new();
+        write_iocr(&two_api_iocr(), &mut two);
+        let (_, body) = BlockHeader::parse(&two).unwrap();
+        assert_eq!(IocrBlockReq::parse(body).unwrap(), two_api_iocr());
+
+        let merged = with_one_api_per_iocr(&pdu(&two, drep)).expect("rewritten");
+        let header = RpcHeader::parse(&merged).unwrap();
+        assert_eq!(usize::from(header.frag_len), merged.len() - RpcHeader::LEN);
+        let (_, blocks) = NdrRequest::parse(&merged[RpcHeader::LEN..], header.drep).unwrap();
+        let (_, body) = BlockHeader::parse(blocks).unwrap();
+        let iocr = IocrBlockReq::parse(body).unwrap();
+        let expected = IocrBlockReq {
+            apis: vec![IocrApi {
+                api: 0,
+                io_data: vec![
+                    object(0, 1, 0),
+                    object(0, 0x8000, 1),
+                    object(1, 1, 2),
+                    object(1, 2, 3),
+                ],
+                iocs: vec![object(1, 2, 8)],
+            }],
+            ..two_api_iocr()
+        };
+        assert_eq!(iocr, expected);
+    }
+
+    #[test]
+    fn an_iocr_with_two_apis_becomes_one_with_every_object_and_offset() {
+        merged_iocr(Drep::BIG);
+        merged_iocr(Drep {
+            little_endian: true,
+        });
+    }
+
+    #[test]
+    fn a_connect_with_one_api_per_iocr_is_left_alone() {
+        let mut blocks = Vec::new();
+        write_iocr_one_api(&two_api_iocr(), &mut blocks);
+        assert_eq!(with_one_api_per_iocr(&pdu(&blocks, Drep::BIG)), None);
     }
 }

@@ -167,7 +167,7 @@ fn run(args: &Args) -> Result<(), String> {
         .seconds
         .map(|s| Instant::now() + Duration::from_secs(s));
     let mut application = drive::Application::new(card, &plugged);
-    while deadline.map_or(true, |d| Instant::now() < d) && !acyclic.is_finished() {
+    while deadline.is_none_or(|d| Instant::now() < d) && !acyclic.is_finished() {
         while let Ok(seen) = seen.try_recv() {
             report(&events, &mut application, seen);
         }
