@@ -31,6 +31,13 @@ fn main() {
     }
     std::fs::write(out_dir.join("registry.rs"), registry(&layouts))
         .unwrap_or_else(|e| panic!("{}: {e}", out_dir.display()));
+    // `#[cfg(layout = "md810dp")]`: code for one layout compiles only when
+    // the firmware is built for it.
+    let names: Vec<String> = layouts.iter().map(|l| format!("{:?}", l.name)).collect();
+    println!("cargo::rustc-check-cfg=cfg(layout, values(any()))");
+    for name in names {
+        println!("cargo::rustc-cfg=layout={name}");
+    }
 }
 
 /// One generated layout.

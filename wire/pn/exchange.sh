@@ -2,9 +2,14 @@
 # The PROFINET exchange of one description: every module of its GSDML in its
 # slot, then the negative cases, each between two network namespaces of its
 # own (netns-exchange.sh). The device is built from the description's layout
-# (wire/pn, WIRE_DESCRIPTIONS); the controller reads only the GSDML: the one
-# gsdc builds from the description, or with --files DIR the one of that name
-# in DIR (a released file).
+# (wire/pn; the firmware holds the layouts WIRE_DESCRIPTIONS names, by
+# default every shipped description and valid fixture); the controller reads
+# only the GSDML: the one gsdc builds from the description, or with --files
+# DIR the one of that name in DIR (a released file). scripts/wire-test.sh
+# runs it for every description with [profinet].
+#
+# GSDC names a gsdc binary (else cargo builds one); CARGO_TARGET_DIR the wire
+# workspace's target directory (else wire/target).
 #
 #   wire/pn/exchange.sh [--files DIR] DESC.toml
 #
@@ -60,7 +65,7 @@ fi
   echo "PROFINET exchange of $name: the device did not build" >&2
   exit 2
 }
-device="$root/wire/target/debug/pn-device"
+device="${CARGO_TARGET_DIR:-$root/wire/target}/debug/pn-device"
 scenario="$here/scenarios/$name.json"
 [ -f "$scenario" ] || scenario=-
 

@@ -14,7 +14,7 @@ use std::process::Command;
 use gsd_parser::Module;
 use profirust::dp::{DiagnosticFlags, PeripheralEvent};
 use profirust::Baudrate;
-use wire_firmware::card::Card;
+use wire_firmware::card::{Card, NodeEvent};
 use wire_firmware::drive::Drive;
 
 use crate::bus::{Bus, MasterConfig, Outcome};
@@ -48,11 +48,13 @@ pub struct Tally {
     pub failed: usize,
 }
 
-/// One start-up of the slave: the module plugged and what Set_Prm and
+/// One start-up of the slave: the modules plugged and what Set_Prm and
 /// Chk_Cfg carry.
-struct Startup {
+#[derive(Clone, Debug)]
+pub struct Startup {
     title: String,
-    module: String,
+    /// The GSD's names of the modules plugged, in the order of the config.
+    modules: Vec<String>,
     ident_number: u16,
     user_prm: Vec<u8>,
     config: Vec<u8>,
@@ -83,15 +85,28 @@ impl Target {
                 tally.failed += 1;
             }
         };
-        for module in self.gsd.modules() {
-            record(self.every_parameter(module, baudrate, false));
-            record(self.every_parameter(module, baudrate, true));
-        }
+        let base = if let Some((names, exchanges)) = manuals::gateway(&self.name) {
+            for passed in self.gateway(names, exchanges, baudrate) {
+                record(passed);
+            }
+            self.gateway_base(names)
+        } else {
+            for module in self.gsd.modules() {
+                record(self.every_parameter(module, baudrate, false));
+                record(self.every_parameter(module, baudrate, true));
+            }
+            let first: Vec<&Module> = self.gsd.modules().take(1).collect();
+            self.startup(String::new(), &first, &[])
+        };
         for exchange in manuals::exchanges(&self.name) {
             record(self.manual(exchange, baudrate));
         }
-        for passed in self.mistakes(baudrate) {
-            record(passed);
+        match base {
+            Ok(base) => self
+                .mistakes(&base, baudrate)
+                .into_iter()
+                .for_each(&mut record),
+            Err(why) => record(failed(&why)),
         }
         tally
     }
@@ -102,7 +117,8 @@ impl Target {
         let values: Vec<(String, i64)> = if others {
             self.gsd
                 .parameters()
-                .filter_map(|p| p.other_value().map(|v| (p.name.to_string(), v)))
+                .enumerate()
+                .filter_map(|(i, p)| p.other_value(i).map(|v| (p.name.to_string(), v)))
                 .collect()
         } else {
             Vec::new()
@@ -115,14 +131,14 @@ impl Target {
         } else {
             format!("{}, every parameter at its default", module.name)
         };
-        let startup = match self.startup(title, module, &values) {
+        let startup = match self.startup(title, &[module], &values) {
             Ok(startup) => startup,
             Err(why) => return failed(&why),
         };
         let Some(mut bus) = self.configure(&startup, baudrate) else {
             return false;
         };
-        let mut passed = self.check_prm(&bus, &startup, &values);
+        let mut passed = self.check_prm(&bus, &values);
         let (_, output_len) = data_lengths(&startup.config).unwrap_or_default();
         // PZD-sized test words, numbered: this test's own values.
         let outputs: Vec<u8> = (0..output_len)
@@ -159,56 +175,58 @@ impl Target {
             .iter()
             .map(|(name, value)| (name.to_string(), *value))
             .collect();
-        let startup = match self.startup(exchange.title.to_string(), module, &values) {
+        let startup = match self.startup(exchange.title.to_string(), &[module], &values) {
             Ok(startup) => startup,
             Err(why) => return failed(&why),
         };
         let Some(mut bus) = self.configure(&startup, baudrate) else {
             return false;
         };
-        let mut passed = self.check_prm(&bus, &startup, &values);
+        let mut passed = self.check_prm(&bus, &values);
         for step in exchange.steps {
-            passed &= match step {
-                Step::Telegram { what, out, expect } => {
-                    telegram(&mut bus, &startup, what, out, expect)
-                }
-                Step::Diagnosis {
-                    what,
-                    event,
-                    block,
-                    text,
-                } => self.diagnosis(&mut bus, what, *event, block, text),
-            };
+            passed &= self.step(&mut bus, &startup, step);
         }
         passed
     }
 
-    /// The three mistakes: each must end the start-up as a real master
-    /// reports it.
-    fn mistakes(&self, baudrate: Baudrate) -> Vec<bool> {
-        let Some(module) = self.gsd.modules().next() else {
-            return vec![failed("the GSD offers no module")];
-        };
-        let Ok(good) = self.startup(String::new(), module, &[]) else {
-            return vec![failed("the GSD's defaults make no User_Prm_Data")];
-        };
-        let ident = good.ident_number.wrapping_add(1);
+    /// One step of a manual's exchange.
+    pub fn step(&self, bus: &mut Bus, startup: &Startup, step: &Step) -> bool {
+        match step {
+            Step::Telegram { what, out, expect } => telegram(bus, startup, what, out, expect),
+            Step::Diagnosis {
+                what,
+                event,
+                block,
+                text,
+                decoded,
+            } => {
+                println!("    {what}");
+                self.diagnosis(bus, *event, block, text, decoded)
+            }
+        }
+    }
+
+    /// The three mistakes, each made to `base`, a start-up the slave takes:
+    /// each must end the start-up as a real master reports it.
+    fn mistakes(&self, base: &Startup, baudrate: Baudrate) -> Vec<bool> {
+        let ident = base.ident_number.wrapping_add(1);
         let other_ident = Startup {
             title: format!("refused: another ident number, 0x{ident:04X}"),
             ident_number: ident,
-            ..self.startup(String::new(), module, &[]).unwrap()
+            ..base.clone()
         };
-        let mut short = self.startup(String::new(), module, &[]).unwrap();
+        let mut short = base.clone();
         short.title = "refused: User_Prm_Data one byte short".into();
         short.user_prm.pop();
-        let missing = self.missing_module(&good.config);
+        let missing = self.missing_module(&base.config);
         let no_such_module = Startup {
             title: format!(
                 "refused: a module the slave does not have, config {}",
                 hex(&missing)
             ),
             config: missing,
-            ..self.startup(String::new(), module, &[]).unwrap()
+            modules: Vec::new(),
+            ..base.clone()
         };
         vec![
             self.refused(&other_ident, baudrate, PeripheralEvent::ParameterError),
@@ -217,21 +235,20 @@ impl Target {
         ]
     }
 
-    /// Config bytes no module of the GSD has: `config` with its first
-    /// general identifier one unit longer (or shorter, at 16).
+    /// `config` with its first general identifier a few units longer or
+    /// shorter, so that it is a byte no module of the GSD has.
     fn missing_module(&self, config: &[u8]) -> Vec<u8> {
-        let offered: Vec<&[u8]> = self.gsd.modules().map(|m| m.config.as_slice()).collect();
+        let offered: Vec<u8> = self.gsd.modules().flat_map(|m| m.config.clone()).collect();
         let general = config.iter().position(|b| b >> 4 & 0b11 != 0).unwrap_or(0);
-        [1i16, -1, 2, -2]
-            .iter()
-            .map(|step| {
-                let mut changed = config.to_vec();
-                let length = (i16::from(changed[general] & 0x0F) + step).clamp(0, 15) as u8;
-                changed[general] = changed[general] & 0xF0 | length;
-                changed
-            })
-            .find(|changed| !offered.contains(&changed.as_slice()))
-            .unwrap_or_else(|| vec![0xF3; 3])
+        let mut changed = config.to_vec();
+        for step in [1i16, -1, 2, -2, 3, -3] {
+            let length = (i16::from(config[general] & 0x0F) + step).clamp(0, 15) as u8;
+            changed[general] = config[general] & 0xF0 | length;
+            if !offered.contains(&changed[general]) {
+                break;
+            }
+        }
+        changed
     }
 
     /// Runs `startup`, which the slave must refuse with `expected`.
@@ -272,27 +289,30 @@ impl Target {
         true
     }
 
-    /// The start-up of `module` with the parameters `values` set by name.
-    fn startup(
+    /// The start-up of `modules` with the parameters `values` set by name.
+    pub fn startup(
         &self,
         title: String,
-        module: &Module,
+        modules: &[&Module],
         values: &[(String, i64)],
     ) -> Result<Startup, String> {
         Ok(Startup {
             title,
-            module: module.name.clone(),
+            modules: modules.iter().map(|m| m.name.clone()).collect(),
             ident_number: self.gsd.ident_number(),
             user_prm: self.gsd.prm(values)?,
-            config: module.config.clone(),
+            config: modules
+                .iter()
+                .flat_map(|m| m.config.iter().copied())
+                .collect(),
         })
     }
 
     /// Starts the slave; the bus with the slave in Data_Exch, or `None`
     /// (the failure printed).
-    fn configure<'a>(&self, startup: &'a Startup, baudrate: Baudrate) -> Option<Bus<'a>> {
+    pub fn configure<'a>(&self, startup: &'a Startup, baudrate: Baudrate) -> Option<Bus<'a>> {
         self.print_startup(startup);
-        if !self.same_module(startup) {
+        if !self.same_modules(startup) {
             return None;
         }
         let config = match self.master_config(startup, baudrate) {
@@ -315,26 +335,31 @@ impl Target {
         }
     }
 
-    /// Whether the layout has the module the GSD names, with the same
+    /// Whether the layout has each module the GSD names, with the same
     /// config bytes; prints the byte offset and both values where not.
-    fn same_module(&self, startup: &Startup) -> bool {
+    fn same_modules(&self, startup: &Startup) -> bool {
         let modules = self.card.profibus.map_or(&[][..], |p| p.modules);
-        let Some(layout) = modules.iter().find(|m| m.name == startup.module) else {
-            return failed(&format!("the layout has no module {:?}", startup.module));
-        };
-        match first_difference(&startup.config, layout.config) {
-            None => true,
-            Some((offset, gsd, layout)) => failed(&format!(
-                "module {:?}, config byte {offset}: the GSD gives {}, the layout {}",
-                startup.module,
-                byte(gsd),
-                byte(layout)
-            )),
+        let mut offset = 0;
+        for name in &startup.modules {
+            let Some(layout) = modules.iter().find(|m| m.name == name.as_str()) else {
+                return failed(&format!("the layout has no module {name:?}"));
+            };
+            let end = (offset + layout.config.len()).min(startup.config.len());
+            let gsd = &startup.config[offset..end];
+            if let Some((at, gsd, layout)) = first_difference(gsd, layout.config) {
+                return failed(&format!(
+                    "module {name:?}, config byte {at}: the GSD gives {}, the layout {}",
+                    byte(gsd),
+                    byte(layout)
+                ));
+            }
+            offset = end;
         }
+        true
     }
 
     /// The slave decoded every parameter as the master set it.
-    fn check_prm(&self, bus: &Bus, startup: &Startup, values: &[(String, i64)]) -> bool {
+    pub fn check_prm(&self, bus: &Bus, values: &[(String, i64)]) -> bool {
         let slave = &bus.station.slave;
         if slave.state() != State::DataExchange {
             return failed(&format!("the slave is in {:?}", slave.state()));
@@ -354,14 +379,14 @@ impl Target {
                 Some(value) if i64::from(value) == set => {}
                 Some(value) => {
                     passed &= failed(&format!(
-                        "module {:?}, User_Prm_Data byte {}: {:?} is {set} as the master set it, {value} as the slave decoded it",
-                        startup.module, parameter.offset, parameter.name
+                        "User_Prm_Data byte {}: {:?} is {set} as the master set it, {value} as the slave decoded it",
+                        parameter.offset, parameter.name
                     ))
                 }
                 None => {
                     passed &= failed(&format!(
-                        "module {:?}, User_Prm_Data byte {}: the layout has no parameter {:?}",
-                        startup.module, parameter.offset, parameter.name
+                        "User_Prm_Data byte {}: the layout has no parameter {:?}",
+                        parameter.offset, parameter.name
                     ))
                 }
             }
@@ -378,18 +403,26 @@ impl Target {
     fn diagnosis(
         &self,
         bus: &mut Bus,
-        what: &str,
         event: DriveEvent,
         block: &str,
         text: &str,
+        decoded: &str,
     ) -> bool {
-        println!("    {what}");
-        let drive = &mut bus.station.slave.drive;
+        let slave = &mut bus.station.slave;
         match event {
-            DriveEvent::LinkLost => drive.set_link_lost(true),
-            DriveEvent::Fault(code) => drive.set_fault(code),
+            DriveEvent::LinkLost => slave.drive.set_link_lost(true),
+            DriveEvent::Fault(code) => slave.drive.set_fault(code),
+            DriveEvent::Node { kind, node, code } => {
+                slave.nodes.report(Some(NodeEvent { kind, node, code }))
+            }
         }
-        let outputs = vec![0; bus.station.slave.module().map_or(0, |m| m.data_len())];
+        let outputs = vec![
+            0;
+            bus.station
+                .slave
+                .plugged()
+                .map_or(0, |p| p.data_lengths().1)
+        ];
         let read = (0..CYCLES)
             .any(|_| bus.exchange(&outputs) == Err(Outcome::Event(PeripheralEvent::Diagnostics)));
         if !read {
@@ -423,12 +456,12 @@ impl Target {
         println!("      the GSD     {}", named.join("; "));
         let mut passed = named.iter().any(|t| t.contains(&format!("{text:?}")))
             || failed(&format!("the GSD does not name it {text:?}"));
-        if let Some(decoded) = self.gsdc_decode(&raw) {
-            for line in decoded.lines().filter(|l| !l.is_empty()) {
+        if let Some(output) = self.gsdc_decode(&raw) {
+            for line in output.lines().filter(|l| !l.is_empty()) {
                 println!("      gsdc decode {line}");
             }
-            passed &=
-                decoded.contains(text) || failed(&format!("gsdc decode does not name it {text:?}"));
+            passed &= output.contains(decoded)
+                || failed(&format!("gsdc decode does not name it {decoded:?}"));
         }
         if passed {
             println!("    ok: the master read the manual's diagnosis");
@@ -484,9 +517,10 @@ impl Target {
             startup.user_prm.len(),
             hex(&startup.user_prm)
         );
+        let names: Vec<String> = startup.modules.iter().map(|m| format!("{m:?}: ")).collect();
         println!(
-            "    Chk_Cfg    {:?}: {}",
-            startup.module,
+            "    Chk_Cfg    {}{}",
+            names.join("+ "),
             hex(&startup.config)
         );
     }
@@ -551,8 +585,8 @@ fn telegram(bus: &mut Bus, startup: &Startup, what: &str, out: &str, expect: &st
     print_telegrams(&outputs, &inputs);
     if inputs.len() != expected.len() {
         return failed(&format!(
-            "module {:?}: the slave answered {} bytes, the manual's telegram has {}",
-            startup.module,
+            "modules {:?}: the slave answered {} bytes, the manual's telegram has {}",
+            startup.modules,
             inputs.len(),
             expected.len()
         ));
@@ -564,8 +598,8 @@ fn telegram(bus: &mut Bus, startup: &Startup, what: &str, out: &str, expect: &st
         .find(|(_, (want, got))| want.is_some_and(|w| w != **got));
     match wrong {
         Some((offset, (want, got))) => failed(&format!(
-            "module {:?}, byte {offset}: the manual gives {}, the slave sent {}",
-            startup.module,
+            "modules {:?}, byte {offset}: the manual gives {}, the slave sent {}",
+            startup.modules,
             byte(*want),
             byte(Some(*got))
         )),
@@ -582,7 +616,7 @@ fn print_telegrams(outputs: &[u8], inputs: &[u8]) {
 }
 
 /// Prints a failure; `false`.
-fn failed(why: &str) -> bool {
+pub fn failed(why: &str) -> bool {
     println!("    FAILED: {why}");
     false
 }
@@ -611,7 +645,7 @@ pub fn hex(bytes: &[u8]) -> String {
 }
 
 /// `10F0 0800`: the bytes as the manuals print telegrams.
-fn words(bytes: &[u8]) -> String {
+pub fn words(bytes: &[u8]) -> String {
     let mut text = String::new();
     for (i, pair) in bytes.chunks(2).enumerate() {
         if i > 0 {

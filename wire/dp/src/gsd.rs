@@ -12,6 +12,9 @@ use gsd_parser::{GenericStationDescription, Module, PrmBuilder, PrmValueConstrai
 pub struct Gsd {
     pub file_name: String,
     pub description: GenericStationDescription,
+    /// The fingerprint of the description gsdc built it from, when gsdc
+    /// did (its header says).
+    pub fingerprint: Option<String>,
 }
 
 impl Gsd {
@@ -21,9 +24,14 @@ impl Gsd {
         // GSD files are Latin-1 (IEC 61784-1); gsd-parser takes text.
         let text: String = bytes.iter().map(|&b| char::from(b)).collect();
         let description = gsd_parser::parser::parse(path, &text).map_err(|e| e.to_string())?;
+        let fingerprint = text
+            .lines()
+            .find_map(|l| l.strip_prefix("; Description fingerprint: "))
+            .map(|f| f.trim().to_string());
         Ok(Gsd {
             file_name: path.file_name().unwrap().to_string_lossy().into_owned(),
             description,
+            fingerprint,
         })
     }
 
@@ -109,11 +117,16 @@ pub struct Parameter<'a> {
 
 impl Parameter<'_> {
     /// A value the parameter allows other than its default, when it has one:
-    /// the other end of its range, or its first other choice.
-    pub fn other_value(&self) -> Option<i64> {
+    /// `nth` below the top of its range (so that the parameters of a
+    /// telegram get values of their own, and a parameter at the wrong
+    /// offset shows), or its first other choice.
+    pub fn other_value(&self, nth: usize) -> Option<i64> {
         match self.constraint {
             PrmValueConstraint::MinMax(min, max) => {
-                [*max, *min].into_iter().find(|v| *v != self.default)
+                let near_top = (max - nth as i64).max(*min);
+                [near_top, *max, *min]
+                    .into_iter()
+                    .find(|v| *v != self.default)
             }
             PrmValueConstraint::Enum(values) => values.iter().copied().find(|v| *v != self.default),
             PrmValueConstraint::Unconstrained => None,

@@ -6,6 +6,7 @@
 
 pub mod bus;
 pub mod exchange;
+pub mod gateway;
 pub mod gsd;
 pub mod manuals;
 pub mod slave;

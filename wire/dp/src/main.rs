@@ -62,8 +62,13 @@ fn run() -> Result<bool, String> {
             return Ok(false);
         }
     };
+    let built_from = match &gsd.fingerprint {
+        Some(f) if f == card.fingerprint => "the same description".to_string(),
+        Some(f) => format!("a description of fingerprint {f}"),
+        None => "no description gsdc names".to_string(),
+    };
     println!(
-        "  the slave runs the layout of {name} (fingerprint {}); {} says ident 0x{:04X}",
+        "  the slave runs the layout of {name} (fingerprint {}); {} comes from {built_from} and says ident 0x{:04X}",
         card.fingerprint,
         gsd.file_name,
         gsd.ident_number()

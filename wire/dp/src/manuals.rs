@@ -28,12 +28,14 @@ pub enum Step {
     },
     /// The drive's side changes, and the slave must ask the master to read
     /// its diagnosis: the device-related block `block` (hex bytes, the
-    /// header first), whose value the GSD names `text`.
+    /// header first), whose value the GSD names `text` (its 32-character
+    /// form) and `gsdc decode` names `decoded`.
     Diagnosis {
         what: &'static str,
         event: DriveEvent,
         block: &'static str,
         text: &'static str,
+        decoded: &'static str,
     },
 }
 
@@ -44,6 +46,9 @@ pub enum DriveEvent {
     LinkLost,
     /// The drive reports a fault code.
     Fault(u16),
+    /// A node behind a gateway reports a diagnosis: its type, the node, the
+    /// code.
+    Node { kind: u8, node: u8, code: u16 },
 }
 
 /// The exchanges of the description named `name`.
@@ -116,6 +121,7 @@ const MD810: &[Exchange] = &[
             event: DriveEvent::LinkLost,
             block: "03 00 34",
             text: "DP card-drive comm. interrupted",
+            decoded: "DP card-drive comm. interrupted",
         }],
     },
 ];
@@ -151,9 +157,82 @@ const PI9000: &[Exchange] = &[
             event: DriveEvent::Fault(0x000B),
             block: "03 00 0B",
             text: "Motor Overload",
+            decoded: "Motor Overload",
         }],
     },
 ];
+
+/// How a gateway's nodes are set up by the GSD's parameter names: the
+/// description's names, with `{n}` for the node number.
+pub struct NodeParameters {
+    pub count: &'static str,
+    pub input_words: &'static str,
+    pub output_words: &'static str,
+    pub first_node: u8,
+}
+
+/// A gateway's exchange: the nodes' words in total each way (the master
+/// puts as few nodes in use as carry them, and plugs modules of as many
+/// words), then `steps`.
+pub struct NodeExchange {
+    pub title: &'static str,
+    pub input_words: usize,
+    pub output_words: usize,
+    pub steps: &'static [Step],
+}
+
+/// A gateway's node parameters and exchanges, for the description named
+/// `name`.
+pub fn gateway(name: &str) -> Option<(&'static NodeParameters, &'static [NodeExchange])> {
+    match name {
+        "md810-gateway" => Some((&MD810_BRIDGE_NODES, MD810_BRIDGE)),
+        _ => None,
+    }
+}
+
+/// MD810 manual, chapter 2 (md810-gateway.toml names the parameters; 2.5:
+/// CANopen slaves 1 to 30).
+const MD810_BRIDGE_NODES: NodeParameters = NodeParameters {
+    count: "Number of CANopen slaves",
+    input_words: "Slave {n} TPDO words",
+    output_words: "Slave {n} RPDO words",
+    first_node: 1,
+};
+
+/// MD810 manual, 2.4 and 2.5. Which node carries which words is this
+/// test's own (as few nodes as the words need, 2.2.1's 8 words at most per
+/// node); the nodes' words follow in ascending node number
+/// (md810-gateway.toml's data_order, its own choice: 2.3 has no text).
+const MD810_BRIDGE: &[NodeExchange] = &[NodeExchange {
+    title: "MD810 2.4 step 5: RPDO 64 words in total, TPDO 120 words",
+    input_words: 120,
+    output_words: 64,
+    steps: &[
+        Step::Diagnosis {
+            what: "2.5: CANopen slave 7 (this test's own) drops out while running: type 3, code 32",
+            event: DriveEvent::Node {
+                kind: 3,
+                node: 7,
+                code: 32,
+            },
+            block: "04 03 07 20",
+            text: "CANopen slave lost while running",
+            decoded: "CANopen slave dropped out while running",
+        },
+        Step::Diagnosis {
+            what: "2.5: the drive at slave 2 reports fault 0x0012 (this test's own): type 4, \
+                   the fault code high byte first",
+            event: DriveEvent::Node {
+                kind: 4,
+                node: 2,
+                code: 0x0012,
+            },
+            block: "05 04 02 00 12",
+            text: "Drive reports fault",
+            decoded: "Drive reports fault",
+        },
+    ],
+}];
 
 /// `"10F0 0800"` as bytes; `xxxx` words as `None`.
 pub fn hex_words(hex: &str) -> Vec<Option<u8>> {

@@ -15,16 +15,19 @@
 //!   User_Prm_Data the layout refuses, is confirmed (SC) and then reported
 //!   as Prm_Fault in Slave_Diag; the slave stays in Wait_Prm.
 //! - Wait_Cfg: Chk_Cfg whose config bytes are one of the layout's modules
-//!   moves the slave to Data_Exch; any other config is confirmed and
-//!   reported as Cfg_Fault, and the slave waits for parameters again.
+//!   (a gateway's: modules whose words make the totals of the nodes
+//!   User_Prm_Data put in use) moves the slave to Data_Exch; any other
+//!   config is confirmed and reported as Cfg_Fault, and the slave waits for
+//!   parameters again.
 //! - Data_Exch: Data_Exchange carries the module's output bytes and is
 //!   answered with its input bytes, in a high-priority response (DH) when
 //!   the slave has a diagnosis the master has not read yet.
 
 use profirust::fdl::{DataTelegram, FunctionCode, RequestType};
-use wire_firmware::card::{Card, DpModule, PrmValues, Profibus};
+use wire_firmware::card::{Card, DpModule, NodeSetup, PrmValues, Profibus};
 use wire_firmware::cyclic::{self, Shape};
 use wire_firmware::drive::Drive;
+use wire_firmware::nodes::Nodes;
 
 // The slave's service access points (IEC 61158-6-3; profirust::consts
 // names the same).
@@ -94,6 +97,25 @@ pub enum Reply {
     NotActivated { dsap: Option<u8>, ssap: Option<u8> },
 }
 
+/// What Chk_Cfg plugged.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Plugged {
+    /// One module of a drive's card.
+    Module(&'static DpModule),
+    /// A gateway's modules, whose words make the nodes' totals.
+    Nodes(Box<NodeSetup>),
+}
+
+impl Plugged {
+    /// Bytes of input and of output.
+    pub fn data_lengths(&self) -> (usize, usize) {
+        match self {
+            Plugged::Module(module) => (module.data_len(), module.data_len()),
+            Plugged::Nodes(setup) => (setup.input_len, setup.output_len),
+        }
+    }
+}
+
 /// Faults of the last Set_Prm and Chk_Cfg, as Slave_Diag reports them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct Faults {
@@ -102,13 +124,17 @@ struct Faults {
     not_supported: bool,
 }
 
-/// A DP slave: the card's DP firmware, on top of its drive.
+/// A DP slave: the card's DP firmware, on top of its drive (or, for a
+/// gateway, the nodes of its second bus).
 #[derive(Debug)]
 pub struct DpSlave {
     pub address: u8,
     pub card: &'static Card,
     profibus: &'static Profibus,
+    /// The drive behind a drive's card.
     pub drive: Drive,
+    /// The nodes behind a gateway.
+    pub nodes: Nodes,
     state: State,
     /// The master that parameterized the slave, which locks it.
     master: Option<u8>,
@@ -119,10 +145,14 @@ pub struct DpSlave {
     min_tsdr_bits: u8,
     /// User_Prm_Data of the last Set_Prm the slave accepted, decoded.
     prm: Option<PrmValues>,
-    /// The module of the last Chk_Cfg the slave accepted.
-    module: Option<&'static DpModule>,
-    /// The diagnosis code the master last read in Slave_Diag.
-    reported_code: u16,
+    /// A gateway's nodes, as the last Set_Prm put them in use.
+    node_setup: Option<NodeSetup>,
+    /// The config bytes of the last Chk_Cfg the slave accepted, and what
+    /// they plugged.
+    config: Vec<u8>,
+    plugged: Option<Plugged>,
+    /// The device-related block the master last read in Slave_Diag.
+    reported: Vec<u8>,
 }
 
 impl DpSlave {
@@ -137,6 +167,7 @@ impl DpSlave {
             card,
             profibus,
             drive,
+            nodes: Nodes::default(),
             state: State::WaitPrm,
             master: None,
             faults: Faults::default(),
@@ -144,8 +175,10 @@ impl DpSlave {
             // IEC 61158-6-3: 11 bit times until a Set_Prm says otherwise.
             min_tsdr_bits: 11,
             prm: None,
-            module: None,
-            reported_code: 0,
+            node_setup: None,
+            config: Vec::new(),
+            plugged: None,
+            reported: Vec::new(),
         }
     }
 
@@ -158,9 +191,9 @@ impl DpSlave {
         self.prm.as_ref()
     }
 
-    /// The module Chk_Cfg plugged.
-    pub fn module(&self) -> Option<&'static DpModule> {
-        self.module
+    /// What Chk_Cfg plugged.
+    pub fn plugged(&self) -> Option<&Plugged> {
+        self.plugged.as_ref()
     }
 
     pub fn min_tsdr_bits(&self) -> u8 {
@@ -228,20 +261,22 @@ impl DpSlave {
         // Another ident number is a parameter fault, as User_Prm_Data the
         // layout's codec refuses is.
         let ident = u16::from_be_bytes([pdu[4], pdu[5]]);
-        let prm = if ident == self.profibus.ident_number {
-            (self.profibus.decode_user_prm)(&pdu[SET_PRM_FIXED..]).ok()
-        } else {
-            None
-        };
-        match prm {
-            Some(prm) if !self.faults.not_supported => {
+        let user_prm = &pdu[SET_PRM_FIXED..];
+        let prm = (ident == self.profibus.ident_number)
+            .then(|| (self.profibus.decode_user_prm)(user_prm).ok())
+            .flatten();
+        // A gateway's nodes must make totals within its limits.
+        let node_setup = self.profibus.gateway.map(|g| (g.nodes)(user_prm).ok());
+        match (prm, node_setup) {
+            (Some(prm), None | Some(Some(_))) if !self.faults.not_supported => {
                 self.prm = Some(prm);
+                self.node_setup = node_setup.flatten();
                 self.master = Some(request.h.sa);
                 self.watchdog_on = status & WD_ON != 0;
                 if pdu[3] != 0 {
                     self.min_tsdr_bits = pdu[3];
                 }
-                self.module = None;
+                self.plugged = None;
                 self.state = State::WaitCfg;
             }
             _ => self.refuse_prm(),
@@ -249,48 +284,55 @@ impl DpSlave {
         Reply::ShortConfirmation
     }
 
-    /// Chk_Cfg (SAP 62): the module the master plugged.
+    /// Chk_Cfg (SAP 62): the modules the master plugged.
     fn chk_cfg(&mut self, request: &DataTelegram) -> Reply {
         if self.state == State::WaitPrm {
             // Without parameters the slave takes no configuration; Slave_Diag
             // still says Prm_Req.
             return Reply::ShortConfirmation;
         }
-        let plugged = self
-            .profibus
-            .modules
-            .iter()
-            .find(|m| m.config == request.pdu);
-        match plugged {
-            Some(module) => {
-                self.module = Some(module);
-                self.faults.cfg = false;
-                self.state = State::DataExchange;
-            }
-            None => {
-                self.faults.cfg = true;
-                self.module = None;
-                self.state = State::WaitPrm;
-            }
+        self.plugged = self.plug(request.pdu);
+        if self.plugged.is_some() {
+            self.config = request.pdu.to_vec();
+            self.faults.cfg = false;
+            self.state = State::DataExchange;
+        } else {
+            self.faults.cfg = true;
+            self.state = State::WaitPrm;
         }
         Reply::ShortConfirmation
     }
 
-    /// Get_Cfg (SAP 59): the config bytes of the module plugged.
+    /// What `config` plugs: one of the layout's modules, or a gateway's
+    /// modules whose words make the totals of the nodes in use.
+    fn plug(&self, config: &[u8]) -> Option<Plugged> {
+        match (self.profibus.gateway, self.node_setup) {
+            (Some(gateway), Some(setup)) => {
+                let totals = (gateway.config_totals)(config)?;
+                let fits = totals == (setup.input_len, setup.output_len);
+                fits.then(|| Plugged::Nodes(Box::new(setup)))
+            }
+            _ => {
+                let module = self.profibus.modules.iter().find(|m| m.config == config)?;
+                Some(Plugged::Module(module))
+            }
+        }
+    }
+
+    /// Get_Cfg (SAP 59): the config bytes of what is plugged.
     fn get_cfg(&mut self, request: &DataTelegram) -> Reply {
         Reply::Data {
             dsap: request.h.ssap,
             ssap: request.h.dsap,
             high_priority: false,
-            pdu: self.module.map_or(Vec::new(), |m| m.config.to_vec()),
+            pdu: self.config.clone(),
         }
     }
 
     /// Slave_Diag (SAP 60): the standard diagnosis, then the device-related
-    /// block of the layout carrying the drive's code.
+    /// block of the layout.
     fn slave_diag(&mut self, request: &DataTelegram) -> Reply {
-        let code = self.drive.diagnosis_code();
-        let block = self.device_block(code);
+        let (block, something_to_report) = self.device_block();
         let mut status_1 = 0;
         if self.state != State::DataExchange {
             status_1 |= STATION_NOT_READY;
@@ -298,7 +340,7 @@ impl DpSlave {
         if self.faults.cfg {
             status_1 |= CFG_FAULT;
         }
-        if code != 0 {
+        if something_to_report {
             status_1 |= EXT_DIAG;
         }
         if self.faults.not_supported {
@@ -324,7 +366,7 @@ impl DpSlave {
             ident[1],
         ];
         pdu.extend_from_slice(&block);
-        self.reported_code = code;
+        self.reported = block;
         Reply::Data {
             dsap: request.h.ssap,
             ssap: request.h.dsap,
@@ -333,54 +375,64 @@ impl DpSlave {
         }
     }
 
-    /// The device-related block with `code` in the layout's area; none when
-    /// the GSD describes no block.
-    fn device_block(&self, code: u16) -> Vec<u8> {
+    /// The device-related block, and whether it reports something (Ext_Diag).
+    /// A drive's card sends the layout's block with the drive's code in its
+    /// area (MD810 1.8: always, 3 bytes); a gateway the block of its nodes'
+    /// event, by the layout's codec, and none without an event.
+    fn device_block(&self) -> (Vec<u8>, bool) {
+        if let Some(gateway) = self.profibus.gateway {
+            let block = self.nodes.event().and_then(gateway.diagnosis);
+            let bytes = block.map_or(Vec::new(), |b| b.as_bytes().to_vec());
+            let reports = !bytes.is_empty();
+            return (bytes, reports);
+        }
+        let code = self.drive.diagnosis_code();
         match &self.profibus.diagnosis {
             Some(diagnosis) => {
                 let mut block = diagnosis.empty.to_vec();
                 diagnosis.code.set(&mut block, code);
-                block
+                (block, code != 0)
             }
-            None => Vec::new(),
+            None => (Vec::new(), false),
         }
     }
 
-    /// Data_Exchange (default SAP): the module's outputs to the drive, its
-    /// inputs back.
+    /// Data_Exchange (default SAP): the outputs to the drive or the nodes,
+    /// the inputs back.
     fn data_exchange(&mut self, request: &DataTelegram) -> Reply {
-        let (Some(module), Some(prm), State::DataExchange) = (self.module, self.prm, self.state)
+        let (Some(plugged), Some(prm), State::DataExchange) =
+            (self.plugged.clone(), self.prm, self.state)
         else {
             return Reply::NotActivated {
                 dsap: None,
                 ssap: None,
             };
         };
-        if request.pdu.len() != module.data_len() {
-            // Outputs of another length than the module's: not this
+        let (input_len, output_len) = plugged.data_lengths();
+        if request.pdu.len() != output_len {
+            // Outputs of another length than the configuration's: not this
             // configuration's telegram.
             return Reply::NotActivated {
                 dsap: None,
                 ssap: None,
             };
         }
-        let shape = Shape {
-            pkw: module.pkw,
-            pzd_words: module.pzd_words,
-        };
-        let mut inputs = vec![0; module.data_len()];
-        cyclic::exchange(
-            self.card,
-            shape,
-            &prm,
-            &mut self.drive,
-            request.pdu,
-            &mut inputs,
-        );
+        let mut inputs = vec![0; input_len];
+        match plugged {
+            Plugged::Module(module) => {
+                let shape = Shape {
+                    pkw: module.pkw,
+                    pzd_words: module.pzd_words,
+                };
+                let drive = &mut self.drive;
+                cyclic::exchange(self.card, shape, &prm, drive, request.pdu, &mut inputs);
+            }
+            Plugged::Nodes(setup) => self.nodes.exchange(&setup, request.pdu, &mut inputs),
+        }
         Reply::Data {
             dsap: None,
             ssap: None,
-            high_priority: self.drive.diagnosis_code() != self.reported_code,
+            high_priority: self.device_block().0 != self.reported,
             pdu: inputs,
         }
     }
@@ -389,7 +441,8 @@ impl DpSlave {
     fn refuse_prm(&mut self) {
         self.faults.prm = true;
         self.prm = None;
-        self.module = None;
+        self.node_setup = None;
+        self.plugged = None;
         self.state = State::WaitPrm;
     }
 
@@ -399,6 +452,7 @@ impl DpSlave {
         self.master = None;
         self.faults = Faults::default();
         self.prm = None;
-        self.module = None;
+        self.node_setup = None;
+        self.plugged = None;
     }
 }

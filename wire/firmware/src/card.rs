@@ -47,6 +47,102 @@ pub struct Profibus {
     pub decode_user_prm: fn(&[u8]) -> Result<PrmValues, PrmError>,
     /// The device-related diagnosis block, when the GSD describes one.
     pub diagnosis: Option<Diagnosis>,
+    /// A gateway's nodes: then Chk_Cfg plugs any of `modules` whose words
+    /// make the nodes' totals.
+    pub gateway: Option<Gateway>,
+}
+
+/// What a gateway's slave needs of the layout.
+#[derive(Clone, Copy, Debug)]
+pub struct Gateway {
+    /// The nodes User_Prm_Data puts in use, with where each one's words
+    /// lie, by the layout's codec; or why Set_Prm is refused (a value out
+    /// of range, totals beyond the gateway's limits).
+    pub nodes: fn(&[u8]) -> Result<NodeSetup, PrmError>,
+    /// The bytes of input and of output the config bytes' modules carry;
+    /// `None` for config bytes that are not the gateway's modules.
+    pub config_totals: fn(&[u8]) -> Option<(usize, usize)>,
+    /// The block the gateway sends for a node's event, by the layout's
+    /// codec; `None` for a type, node or code the layout does not list.
+    pub diagnosis: fn(NodeEvent) -> Option<DiagBytes>,
+}
+
+/// What a node of a gateway reports: the diagnosis block's type, the node
+/// and the code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NodeEvent {
+    pub kind: u8,
+    pub node: u8,
+    pub code: u16,
+}
+
+/// A diagnosis block of at most [`DiagBytes::MAX`] bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DiagBytes {
+    bytes: [u8; DiagBytes::MAX],
+    len: usize,
+}
+
+impl DiagBytes {
+    /// A device-related block has at most 63 bytes (its header's length
+    /// field has 6 bits).
+    pub const MAX: usize = 63;
+
+    pub fn new(block: &[u8]) -> Self {
+        let mut bytes = [0; Self::MAX];
+        bytes[..block.len()].copy_from_slice(block);
+        DiagBytes {
+            bytes,
+            len: block.len(),
+        }
+    }
+
+    pub fn as_bytes(&self) -> &[u8] {
+        &self.bytes[..self.len]
+    }
+}
+
+/// The most nodes a gateway has here.
+pub const MAX_NODES: usize = 64;
+
+/// The nodes in use and where their words lie in the data.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NodeSetup {
+    /// Bytes of input (the nodes' words to the master) and of output.
+    pub input_len: usize,
+    pub output_len: usize,
+    nodes: [Option<NodeData>; MAX_NODES],
+}
+
+/// One node in use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NodeData {
+    pub node: u8,
+    /// Where its words start in the input, in bytes, and how many.
+    pub input_offset: usize,
+    pub input_words: u8,
+    /// Where its words start in the output, and how many.
+    pub output_offset: usize,
+    pub output_words: u8,
+}
+
+impl NodeSetup {
+    pub fn new(input_len: usize, output_len: usize, nodes: &[NodeData]) -> Self {
+        let mut held = [None; MAX_NODES];
+        for (slot, node) in held.iter_mut().zip(nodes) {
+            *slot = Some(*node);
+        }
+        NodeSetup {
+            input_len,
+            output_len,
+            nodes: held,
+        }
+    }
+
+    /// The nodes in use, in ascending number.
+    pub fn nodes(&self) -> impl Iterator<Item = &NodeData> {
+        self.nodes.iter().flatten()
+    }
 }
 
 /// What a PROFINET device needs of the layout.
@@ -155,6 +251,13 @@ impl PrmValues {
         values: [("", 0); MAX_PRM_VALUES],
         len: 0,
     };
+
+    /// Adds `name` with `value`.
+    pub fn with_value(mut self, name: &'static str, value: u16) -> Self {
+        self.values[self.len] = (name, value);
+        self.len += 1;
+        self
+    }
 
     /// Adds the values of `mappings`, in order.
     pub fn with(mut self, mappings: &[Mapping], values: &[u16]) -> Self {

@@ -1,11 +1,7 @@
 //! Each layout's [`Card`]: its constants under the names every description
 //! shares.
 
-use crate::card::{
-    Card, Diagnosis, DpModule, PnModule, PnRecord, PnSubmodule, PrmValues, Profibus, Profinet,
-};
-use crate::gsdc_support::PrmError;
-use crate::pkw::PkwKind;
+use crate::card::Card;
 
 /// The card of the description named `name`, if the firmware was built
 /// for it.
@@ -14,25 +10,39 @@ pub fn card(name: &str) -> Option<&'static Card> {
 }
 
 /// Every card the firmware is built for.
-pub const CARDS: &[Card] = &[md810dp::CARD, mv810_pnet02::CARD, profidrive::CARD];
+pub const CARDS: &[Card] = &[
+    #[cfg(layout = "md810dp")]
+    md810dp::CARD,
+    #[cfg(layout = "9kdp1")]
+    powtran_9kdp1::CARD,
+    #[cfg(layout = "profidrive")]
+    profidrive::CARD,
+    #[cfg(layout = "no_warnings")]
+    no_warnings::CARD,
+    #[cfg(layout = "md810-gateway")]
+    md810_gateway::CARD,
+    #[cfg(layout = "mv810-pnet02")]
+    mv810_pnet02::CARD,
+];
 
 /// PROVISIONAL, until the layouts carry their device tables: the PROFINET
 /// access point as gsdc numbers it today (its own submodule in subslot 1 with
 /// the DAP's ident; the interface and each port with their subslot as
 /// ident), from the layout's constants.
+#[allow(unused_macros)]
 macro_rules! pn_dap {
     ($layout:path, ports: [$($port:expr),*]) => {{
         use $layout as l;
         &[
-            PnSubmodule { subslot: 1, ident: l::DAP_IDENT, api: 0, input_len: 0, output_len: 0 },
-            PnSubmodule {
+            crate::card::PnSubmodule { subslot: 1, ident: l::DAP_IDENT, api: 0, input_len: 0, output_len: 0 },
+            crate::card::PnSubmodule {
                 subslot: l::INTERFACE_SUBSLOT,
                 ident: l::INTERFACE_SUBSLOT as u32,
                 api: 0,
                 input_len: 0,
                 output_len: 0,
             },
-            $(PnSubmodule {
+            $(crate::card::PnSubmodule {
                 subslot: l::FIRST_PORT_SUBSLOT + $port,
                 ident: (l::FIRST_PORT_SUBSLOT + $port) as u32,
                 api: 0,
@@ -46,13 +56,14 @@ macro_rules! pn_dap {
 /// PROVISIONAL (as `pn_dap`): a module with one submodule in subslot 1
 /// carrying `pkw` and `pzd` words each way, its ident the module's. The
 /// GSDML ID is typed here: no layout has it yet.
+#[allow(unused_macros)]
 macro_rules! pn_module {
     ($id:literal, $ident:expr, slots: $slots:expr, pkw: $pkw:literal, pzd: $pzd:literal, records: $records:expr) => {
-        PnModule {
+        crate::card::PnModule {
             id: $id,
             ident: $ident,
             slots: $slots,
-            submodules: &[PnSubmodule {
+            submodules: &[crate::card::PnSubmodule {
                 subslot: 1,
                 ident: $ident,
                 api: 0,
@@ -76,22 +87,25 @@ macro_rules! pn_module {
 
 /// A record of subslot 1 decoded by the layout's `decode_record` of
 /// `$mappings`'s module.
+#[allow(unused_macros)]
 macro_rules! pn_record {
     ($module:ident) => {
-        PnRecord {
+        crate::card::PnRecord {
             subslot: 1,
             index: $module::RECORD_INDEX,
             mappings: &$module::MAPPINGS,
             decode: |bytes| {
-                Ok(PrmValues::EMPTY.with(&$module::MAPPINGS, &$module::decode_record(bytes)?))
+                Ok(crate::card::PrmValues::EMPTY.with(&$module::MAPPINGS, &$module::decode_record(bytes)?))
             },
         }
     };
 }
 
+#[cfg(layout = "md810dp")]
 mod md810dp {
-    use super::*;
+    use crate::card::{Card, Diagnosis, DpModule, PnRecord, PrmValues, Profibus, Profinet};
     use crate::layouts::md810dp::*;
+    use crate::pkw::PkwKind;
 
     pub const CARD: Card = Card {
         name: "md810dp",
@@ -104,28 +118,6 @@ mod md810dp {
         status_of: None,
         profibus: Some(&PROFIBUS),
         profinet: Some(&PROFINET),
-    };
-
-    const RECORDS: &[PnRecord] = &[
-        pn_record!(pzd_out),
-        pn_record!(pzd_in),
-        pn_record!(dpv1_index),
-    ];
-    const SLOT: &[u16] = &[MODULE_SLOT];
-
-    const PROFINET: Profinet = Profinet {
-        vendor_id: PROFINET_VENDOR_ID,
-        device_id: PROFINET_DEVICE_ID,
-        dap_ident: DAP_IDENT,
-        dap_submodules: pn_dap!(crate::layouts::md810dp, ports: [0, 1]),
-        modules: &[
-            pn_module!("IDM_PKW_2", PKW_PZD2_IDENT, slots: SLOT, pkw: true, pzd: 2, records: RECORDS),
-            pn_module!("IDM_PKW_6", PKW_PZD6_IDENT, slots: SLOT, pkw: true, pzd: 6, records: RECORDS),
-            pn_module!("IDM_PKW_12", PKW_PZD12_IDENT, slots: SLOT, pkw: true, pzd: 12, records: RECORDS),
-            pn_module!("IDM_PZD_2", PZD2_IDENT, slots: SLOT, pkw: false, pzd: 2, records: RECORDS),
-            pn_module!("IDM_PZD_6", PZD6_IDENT, slots: SLOT, pkw: false, pzd: 6, records: RECORDS),
-            pn_module!("IDM_PZD_12", PZD12_IDENT, slots: SLOT, pkw: false, pzd: 12, records: RECORDS),
-        ],
     };
 
     const PROFIBUS: Profibus = Profibus {
@@ -169,6 +161,29 @@ mod md810dp {
             empty: &diagnosis::EMPTY,
             code: diagnosis::BITS_8_15,
         }),
+        gateway: None,
+    };
+
+    const RECORDS: &[PnRecord] = &[
+        pn_record!(pzd_out),
+        pn_record!(pzd_in),
+        pn_record!(dpv1_index),
+    ];
+    const SLOT: &[u16] = &[MODULE_SLOT];
+
+    const PROFINET: Profinet = Profinet {
+        vendor_id: PROFINET_VENDOR_ID,
+        device_id: PROFINET_DEVICE_ID,
+        dap_ident: DAP_IDENT,
+        dap_submodules: pn_dap!(crate::layouts::md810dp, ports: [0, 1]),
+        modules: &[
+            pn_module!("IDM_PKW_2", PKW_PZD2_IDENT, slots: SLOT, pkw: true, pzd: 2, records: RECORDS),
+            pn_module!("IDM_PKW_6", PKW_PZD6_IDENT, slots: SLOT, pkw: true, pzd: 6, records: RECORDS),
+            pn_module!("IDM_PKW_12", PKW_PZD12_IDENT, slots: SLOT, pkw: true, pzd: 12, records: RECORDS),
+            pn_module!("IDM_PZD_2", PZD2_IDENT, slots: SLOT, pkw: false, pzd: 2, records: RECORDS),
+            pn_module!("IDM_PZD_6", PZD6_IDENT, slots: SLOT, pkw: false, pzd: 6, records: RECORDS),
+            pn_module!("IDM_PZD_12", PZD12_IDENT, slots: SLOT, pkw: false, pzd: 12, records: RECORDS),
+        ],
     };
 
     fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
@@ -180,9 +195,433 @@ mod md810dp {
     }
 }
 
+#[cfg(layout = "9kdp1")]
+mod powtran_9kdp1 {
+    use crate::card::{Card, Diagnosis, DpModule, PrmValues, Profibus};
+    use crate::layouts::gsdc_9kdp1::*;
+
+    pub const CARD: Card = Card {
+        name: "9kdp1",
+        fingerprint: FINGERPRINT,
+        pkw: None,
+        control_word: true,
+        status_word: true,
+        pzd_out: &pzd_out::MAPPINGS,
+        pzd_in: &pzd_in::MAPPINGS,
+        status_of: None,
+        profibus: Some(&PROFIBUS),
+        profinet: None,
+    };
+
+    const PROFIBUS: Profibus = Profibus {
+        ident_number: PROFIBUS_IDENT_NUMBER,
+        modules: &[
+            DpModule {
+                name: "PPO3: 2 PZD",
+                config: &PPO3_CONFIG,
+                pkw: false,
+                pzd_words: 2,
+            },
+            DpModule {
+                name: "PPO4: 6 PZD",
+                config: &PPO4_CONFIG,
+                pkw: false,
+                pzd_words: 6,
+            },
+        ],
+        user_prm_len: USER_PRM_LEN,
+        decode_user_prm,
+        diagnosis: Some(Diagnosis {
+            len: diagnosis::LEN,
+            empty: &diagnosis::EMPTY,
+            code: diagnosis::BITS_8_15,
+        }),
+        gateway: None,
+    };
+
+    fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
+        let prm = crate::layouts::gsdc_9kdp1::decode_user_prm(bytes)?;
+        Ok(PrmValues::EMPTY
+            .with(&pzd_out::MAPPINGS, &prm.pzd_out)
+            .with(&pzd_in::MAPPINGS, &prm.pzd_in))
+    }
+}
+
+#[cfg(layout = "profidrive")]
+mod profidrive {
+    use crate::card::{Card, DpModule, PnModule, PnSubmodule, PrmValues, Profibus, Profinet};
+    use crate::layouts::profidrive::*;
+    use crate::pkw::PkwKind;
+
+    pub const CARD: Card = Card {
+        name: "profidrive",
+        fingerprint: FINGERPRINT,
+        pkw: Some(PkwKind::Profidrive),
+        control_word: false,
+        status_word: false,
+        pzd_out: &[],
+        pzd_in: &[],
+        status_of: None,
+        profibus: Some(&PROFIBUS),
+        profinet: Some(&PROFINET),
+    };
+
+    const PROFIBUS: Profibus = Profibus {
+        ident_number: PROFIBUS_IDENT_NUMBER,
+        modules: &[
+            DpModule {
+                name: "PPO1: 4 PKW + 2 PZD",
+                config: &PPO1_CONFIG,
+                pkw: true,
+                pzd_words: 2,
+            },
+            DpModule {
+                name: "PPO3: 2 PZD",
+                config: &PPO3_CONFIG,
+                pkw: false,
+                pzd_words: 2,
+            },
+        ],
+        user_prm_len: USER_PRM_LEN,
+        decode_user_prm,
+        diagnosis: None,
+        gateway: None,
+    };
+
+    const SLOT: &[u16] = &[MODULE_SLOT];
+
+    const PROFINET: Profinet = Profinet {
+        vendor_id: PROFINET_VENDOR_ID,
+        device_id: PROFINET_DEVICE_ID,
+        dap_ident: DAP_IDENT,
+        dap_submodules: pn_dap!(crate::layouts::profidrive, ports: [0, 1]),
+        modules: &[
+            PnModule {
+                id: "IDM_STD_TEL_1",
+                ident: TELEGRAM1_IDENT,
+                slots: SLOT,
+                submodules: &[
+                    PnSubmodule {
+                        subslot: TELEGRAM1_ACCESS_POINT_SUBSLOT,
+                        ident: TELEGRAM1_ACCESS_POINT_IDENT,
+                        api: TELEGRAM1_API,
+                        input_len: 0,
+                        output_len: 0,
+                    },
+                    PnSubmodule {
+                        subslot: TELEGRAM1_DATA_SUBSLOT,
+                        ident: TELEGRAM1_IDENT,
+                        api: TELEGRAM1_API,
+                        input_len: Telegram1In::LEN as u16,
+                        output_len: Telegram1Out::LEN as u16,
+                    },
+                ],
+                pkw: false,
+                pzd_words: 2,
+                records: &[],
+            },
+            pn_module!("IDM_PZD_1", PZD1_IDENT, slots: SLOT, pkw: false, pzd: 1, records: &[pn_record!(settings)]),
+        ],
+    };
+
+    fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
+        let prm = crate::layouts::profidrive::decode_user_prm(bytes)?;
+        Ok(PrmValues::EMPTY.with(&settings::MAPPINGS, &prm.settings))
+    }
+}
+
+#[cfg(layout = "no_warnings")]
+mod no_warnings {
+    use crate::card::{Card, DpModule, PrmValues, Profibus};
+    use crate::layouts::no_warnings::*;
+    use crate::pkw::PkwKind;
+
+    pub const CARD: Card = Card {
+        name: "no_warnings",
+        fingerprint: FINGERPRINT,
+        pkw: Some(PkwKind::PkeIndPwe),
+        control_word: false,
+        status_word: false,
+        pzd_out: &pzd_out::MAPPINGS,
+        pzd_in: &[],
+        status_of: None,
+        profibus: Some(&PROFIBUS),
+        profinet: None,
+    };
+
+    const PROFIBUS: Profibus = Profibus {
+        ident_number: PROFIBUS_IDENT_NUMBER,
+        modules: &[
+            DpModule {
+                name: "PPO1: 4 PKW + 2 PZD",
+                config: &PPO1_CONFIG,
+                pkw: true,
+                pzd_words: 2,
+            },
+            DpModule {
+                name: "PPO2: 4 PKW + 6 PZD",
+                config: &PPO2_CONFIG,
+                pkw: true,
+                pzd_words: 6,
+            },
+        ],
+        user_prm_len: USER_PRM_LEN,
+        decode_user_prm,
+        diagnosis: None,
+        gateway: None,
+    };
+
+    fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
+        let prm = crate::layouts::no_warnings::decode_user_prm(bytes)?;
+        Ok(PrmValues::EMPTY.with(&pzd_out::MAPPINGS, &prm.pzd_out))
+    }
+}
+
+#[cfg(layout = "md810-gateway")]
+mod md810_gateway {
+    use crate::card::{
+        Card, DiagBytes, DpModule, Gateway, NodeData, NodeEvent, NodeSetup, PrmValues, Profibus,
+    };
+    use crate::layouts::md810_gateway::gateway::{
+        CanopenNetworkFaultCode, Diagnosis as NodeDiagnosis, NodeConfig, ParameterErrorCode,
+        FIRST_NODE, NODES,
+    };
+    use crate::layouts::md810_gateway::*;
+
+    pub const CARD: Card = Card {
+        name: "md810-gateway",
+        fingerprint: FINGERPRINT,
+        pkw: None,
+        control_word: false,
+        status_word: false,
+        pzd_out: &[],
+        pzd_in: &[],
+        status_of: None,
+        profibus: Some(&PROFIBUS),
+        profinet: None,
+    };
+
+    const PROFIBUS: Profibus = Profibus {
+        ident_number: PROFIBUS_IDENT_NUMBER,
+        modules: &[
+            DpModule {
+                name: "INPUT 1 word",
+                config: &[gateway::INPUT_1_WORD_CONFIG],
+                pkw: false,
+                pzd_words: 1,
+            },
+            DpModule {
+                name: "INPUT 2 words",
+                config: &[gateway::INPUT_2_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 2,
+            },
+            DpModule {
+                name: "INPUT 4 words",
+                config: &[gateway::INPUT_4_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 4,
+            },
+            DpModule {
+                name: "INPUT 8 words",
+                config: &[gateway::INPUT_8_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 8,
+            },
+            DpModule {
+                name: "INPUT 16 words",
+                config: &[gateway::INPUT_16_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 16,
+            },
+            DpModule {
+                name: "OUTPUT 1 word",
+                config: &[gateway::OUTPUT_1_WORD_CONFIG],
+                pkw: false,
+                pzd_words: 1,
+            },
+            DpModule {
+                name: "OUTPUT 2 words",
+                config: &[gateway::OUTPUT_2_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 2,
+            },
+            DpModule {
+                name: "OUTPUT 4 words",
+                config: &[gateway::OUTPUT_4_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 4,
+            },
+            DpModule {
+                name: "OUTPUT 8 words",
+                config: &[gateway::OUTPUT_8_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 8,
+            },
+            DpModule {
+                name: "OUTPUT 16 words",
+                config: &[gateway::OUTPUT_16_WORDS_CONFIG],
+                pkw: false,
+                pzd_words: 16,
+            },
+        ],
+        user_prm_len: USER_PRM_LEN,
+        decode_user_prm,
+        diagnosis: None,
+        gateway: Some(Gateway {
+            nodes,
+            config_totals,
+            diagnosis,
+        }),
+    };
+
+    const NODE_COUNT_NAME: &str = "Number of CANopen slaves";
+    const INPUT_WORDS_NAMES: [&str; NODES] = [
+        "Slave 1 TPDO words",
+        "Slave 2 TPDO words",
+        "Slave 3 TPDO words",
+        "Slave 4 TPDO words",
+        "Slave 5 TPDO words",
+        "Slave 6 TPDO words",
+        "Slave 7 TPDO words",
+        "Slave 8 TPDO words",
+        "Slave 9 TPDO words",
+        "Slave 10 TPDO words",
+        "Slave 11 TPDO words",
+        "Slave 12 TPDO words",
+        "Slave 13 TPDO words",
+        "Slave 14 TPDO words",
+        "Slave 15 TPDO words",
+        "Slave 16 TPDO words",
+        "Slave 17 TPDO words",
+        "Slave 18 TPDO words",
+        "Slave 19 TPDO words",
+        "Slave 20 TPDO words",
+        "Slave 21 TPDO words",
+        "Slave 22 TPDO words",
+        "Slave 23 TPDO words",
+        "Slave 24 TPDO words",
+        "Slave 25 TPDO words",
+        "Slave 26 TPDO words",
+        "Slave 27 TPDO words",
+        "Slave 28 TPDO words",
+        "Slave 29 TPDO words",
+        "Slave 30 TPDO words",
+    ];
+    const OUTPUT_WORDS_NAMES: [&str; NODES] = [
+        "Slave 1 RPDO words",
+        "Slave 2 RPDO words",
+        "Slave 3 RPDO words",
+        "Slave 4 RPDO words",
+        "Slave 5 RPDO words",
+        "Slave 6 RPDO words",
+        "Slave 7 RPDO words",
+        "Slave 8 RPDO words",
+        "Slave 9 RPDO words",
+        "Slave 10 RPDO words",
+        "Slave 11 RPDO words",
+        "Slave 12 RPDO words",
+        "Slave 13 RPDO words",
+        "Slave 14 RPDO words",
+        "Slave 15 RPDO words",
+        "Slave 16 RPDO words",
+        "Slave 17 RPDO words",
+        "Slave 18 RPDO words",
+        "Slave 19 RPDO words",
+        "Slave 20 RPDO words",
+        "Slave 21 RPDO words",
+        "Slave 22 RPDO words",
+        "Slave 23 RPDO words",
+        "Slave 24 RPDO words",
+        "Slave 25 RPDO words",
+        "Slave 26 RPDO words",
+        "Slave 27 RPDO words",
+        "Slave 28 RPDO words",
+        "Slave 29 RPDO words",
+        "Slave 30 RPDO words",
+    ];
+
+    fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
+        let config = crate::layouts::md810_gateway::decode_user_prm(bytes)?.nodes;
+        let mut values = PrmValues::EMPTY.with_value(NODE_COUNT_NAME, config.node_count.into());
+        for i in 0..NODES {
+            values = values
+                .with_value(INPUT_WORDS_NAMES[i], config.input_words[i].into())
+                .with_value(OUTPUT_WORDS_NAMES[i], config.output_words[i].into());
+        }
+        Ok(values)
+    }
+
+    fn nodes(bytes: &[u8]) -> Result<NodeSetup, PrmError> {
+        let config = NodeConfig::decode(bytes)?;
+        // The totals the layout refuses are a parameter fault too.
+        let totals = config.totals().map_err(|_| PrmError::NotAllowed {
+            offset: 0,
+            value: config.node_count.into(),
+        })?;
+        let mut nodes = [None; NODES];
+        for (i, slot) in nodes.iter_mut().enumerate() {
+            let node = FIRST_NODE + i as u8;
+            if let (Some(input_offset), Some(output_offset)) =
+                (config.input_offset(node), config.output_offset(node))
+            {
+                *slot = Some(NodeData {
+                    node,
+                    input_offset,
+                    input_words: config.input_words[i],
+                    output_offset,
+                    output_words: config.output_words[i],
+                });
+            }
+        }
+        let in_use: [NodeData; NODES] = nodes.map(|n| {
+            n.unwrap_or(NodeData {
+                node: 0,
+                input_offset: 0,
+                input_words: 0,
+                output_offset: 0,
+                output_words: 0,
+            })
+        });
+        let count = usize::from(config.node_count);
+        Ok(NodeSetup::new(
+            totals.input_len(),
+            totals.output_len(),
+            &in_use[..count],
+        ))
+    }
+
+    fn config_totals(config: &[u8]) -> Option<(usize, usize)> {
+        let totals = gateway::config_totals(config).ok()?;
+        Some((totals.input_len(), totals.output_len()))
+    }
+
+    fn diagnosis(event: NodeEvent) -> Option<DiagBytes> {
+        let NodeEvent { kind, node, code } = event;
+        let diagnosis = match kind {
+            1 => NodeDiagnosis::ParameterError {
+                node,
+                code: ParameterErrorCode::from_value(code)?,
+            },
+            3 => NodeDiagnosis::CanopenNetworkFault {
+                node,
+                code: CanopenNetworkFaultCode::from_value(code)?,
+            },
+            4 => NodeDiagnosis::DriveReportsFault { node, code },
+            _ => return None,
+        };
+        let block = diagnosis.encode();
+        // The layout's decode checks the node against its node numbers.
+        NodeDiagnosis::decode(block.as_bytes()).ok()?;
+        Some(DiagBytes::new(block.as_bytes()))
+    }
+}
+
+#[cfg(layout = "mv810-pnet02")]
 mod mv810_pnet02 {
-    use super::*;
+    use crate::card::{Card, PnRecord, Profinet};
     use crate::layouts::mv810_pnet02::*;
+    use crate::pkw::PkwKind;
 
     pub const CARD: Card = Card {
         name: "mv810-pnet02",
@@ -249,62 +688,6 @@ mod mv810_pnet02 {
             pn_module!("IDM_PKW_10", PKW_PZD10_IDENT, slots: SLOT, pkw: true, pzd: 10, records: MAPPED),
             pn_module!("IDM_PKW_11", PKW_PZD11_IDENT, slots: SLOT, pkw: true, pzd: 11, records: MAPPED),
             pn_module!("IDM_PKW_12", PKW_PZD12_IDENT, slots: SLOT, pkw: true, pzd: 12, records: MAPPED),
-        ],
-    };
-}
-
-mod profidrive {
-    use super::*;
-    use crate::layouts::profidrive::*;
-
-    pub const CARD: Card = Card {
-        name: "profidrive",
-        fingerprint: FINGERPRINT,
-        pkw: Some(PkwKind::Profidrive),
-        // PROFIdrive's STW1 and ZSW1: the fixture's drive model has no state
-        // machine of the profile, so they carry nothing here.
-        control_word: false,
-        status_word: false,
-        pzd_out: &[],
-        pzd_in: &[],
-        status_of: None,
-        profibus: None,
-        profinet: Some(&PROFINET),
-    };
-
-    const SLOT: &[u16] = &[MODULE_SLOT];
-
-    const PROFINET: Profinet = Profinet {
-        vendor_id: PROFINET_VENDOR_ID,
-        device_id: PROFINET_DEVICE_ID,
-        dap_ident: DAP_IDENT,
-        dap_submodules: pn_dap!(crate::layouts::profidrive, ports: [0, 1]),
-        modules: &[
-            PnModule {
-                id: "IDM_STD_TEL_1",
-                ident: TELEGRAM1_IDENT,
-                slots: SLOT,
-                submodules: &[
-                    PnSubmodule {
-                        subslot: TELEGRAM1_ACCESS_POINT_SUBSLOT,
-                        ident: TELEGRAM1_ACCESS_POINT_IDENT,
-                        api: TELEGRAM1_API,
-                        input_len: 0,
-                        output_len: 0,
-                    },
-                    PnSubmodule {
-                        subslot: TELEGRAM1_DATA_SUBSLOT,
-                        ident: TELEGRAM1_IDENT,
-                        api: TELEGRAM1_API,
-                        input_len: Telegram1In::LEN as u16,
-                        output_len: Telegram1Out::LEN as u16,
-                    },
-                ],
-                pkw: false,
-                pzd_words: 2,
-                records: &[],
-            },
-            pn_module!("IDM_PZD_1", PZD1_IDENT, slots: SLOT, pkw: false, pzd: 1, records: &[pn_record!(settings)]),
         ],
     };
 }

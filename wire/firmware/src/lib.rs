@@ -23,6 +23,7 @@ pub mod cards;
 pub mod cyclic;
 pub mod drive;
 pub mod manuals;
+pub mod nodes;
 pub mod pkw;
 
 /// The layouts of the descriptions the firmware is built for (build.rs
