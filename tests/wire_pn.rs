@@ -1,9 +1,9 @@
-//! The PROFINET exchange on the wire (issue 20): for every description with
-//! `[profinet]`, profinet-py as the IO controller, configured only from the
-//! GSDML gsdc builds, against the pnio device built from the layout, between
-//! two network namespaces (wire/pn/exchange.sh, the PROFINET part of
-//! scripts/wire-test.sh). And the same exchange with a GSDML that disagrees
-//! with the layout, which must fail and say where.
+//! The PROFINET exchange on the wire (issue 20), as `scripts/wire-test.sh
+//! --bus pn` runs it: for every description with `[profinet]`, profinet-py
+//! as the IO controller, configured only from the GSDML gsdc builds, against
+//! the pnio device built from the layout, between two network namespaces.
+//! And the same exchange with a GSDML that disagrees with the layout, which
+//! must fail and say where.
 //!
 //! Needs root (namespaces, raw sockets), iproute2 and Python; scripts/test.sh
 //! installs them, and the exchange makes its venv (target/wire-venv). Without
@@ -38,15 +38,17 @@ fn can_run() -> bool {
     false
 }
 
-/// wire/pn/exchange.sh's status and everything it printed.
-fn exchange(description: &Path, files: Option<&Path>) -> (i32, String) {
+/// `scripts/wire-test.sh --bus pn`'s status and everything it printed.
+fn exchange(descriptions: &[&str], files: Option<&Path>) -> (i32, String) {
     let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let mut command = Command::new(root().join("wire/pn/exchange.sh"));
+    let mut command = Command::new(root().join("scripts/wire-test.sh"));
+    command.args(["--bus", "pn"]);
     if let Some(files) = files {
         command.arg("--files").arg(files);
     }
     let output = command
-        .arg(description)
+        .args(descriptions)
+        .current_dir(root())
         .env("GSDC", env!("CARGO_BIN_EXE_gsdc"))
         .output()
         .expect("wire/pn/exchange.sh runs");
@@ -64,13 +66,28 @@ fn assert_lines(text: &str, lines: &[&str]) {
     }
 }
 
+/// The three descriptions with `[profinet]` in one run: one build of the
+/// device for their layouts.
 #[test]
-fn mv810_every_module_records_control_word_and_pkw() {
+fn every_profinet_description_every_module() {
     if !can_run() {
         return;
     }
-    let (status, text) = exchange(&root().join("descriptions/mv810-pnet02.toml"), None);
+    let (status, text) = exchange(
+        &[
+            "descriptions/mv810-pnet02.toml",
+            "descriptions/md810dp.toml",
+            "tests/fixtures/valid/profidrive.toml",
+        ],
+        None,
+    );
     assert_eq!(status, 0, "{text}");
+    mv810_every_module_records_control_word_and_pkw(&text);
+    md810_reads_f0_08_through_the_pkw_channel(&text);
+    profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);
+}
+
+fn mv810_every_module_records_control_word_and_pkw(text: &str) {
     let mut expected = vec![
         "PASS IDM_STD_TEL_1: 1 records decoded, 1 inputs observed, 1 scenario checks".to_string(),
     ];
@@ -83,9 +100,9 @@ fn mv810_every_module_records_control_word_and_pkw() {
         ));
     }
     let expected: Vec<&str> = expected.iter().map(String::as_str).collect();
-    assert_lines(&text, &expected);
+    assert_lines(text, &expected);
     assert_lines(
-        &text,
+        text,
         &[
             // Section 3's bits: forward running, ready; not stop.
             "control word 0x0001 (Forward running) -> status word 0x0021",
@@ -101,15 +118,9 @@ fn mv810_every_module_records_control_word_and_pkw() {
     );
 }
 
-#[test]
-fn md810_reads_f0_08_through_the_pkw_channel() {
-    if !can_run() {
-        return;
-    }
-    let (status, text) = exchange(&root().join("descriptions/md810dp.toml"), None);
-    assert_eq!(status, 0, "{text}");
+fn md810_reads_f0_08_through_the_pkw_channel(text: &str) {
     assert_lines(
-        &text,
+        text,
         &[
             // MD810 1.4.2, figure 6.
             "PKW 10F0 0800 0000 0000 -> 10F0 0800 0000 1388 (read F0-08)",
@@ -120,15 +131,9 @@ fn md810_reads_f0_08_through_the_pkw_channel() {
     );
 }
 
-#[test]
-fn profidrive_telegram_behind_its_access_point_in_api_0x3a00() {
-    if !can_run() {
-        return;
-    }
-    let (status, text) = exchange(&root().join("tests/fixtures/valid/profidrive.toml"), None);
-    assert_eq!(status, 0, "{text}");
+fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
     assert_lines(
-        &text,
+        text,
         &[
             "subslot 1 ident 0xFFFF API 0x3A00 in 0 out 0, subslot 2 ident 0x10 API 0x3A00 in 4 out 4",
             "API 0x3A00: the device checked it against its layout before pnio saw the Connect",
@@ -179,10 +184,7 @@ fn a_gsdml_with_another_module_ident_fails_and_says_where() {
             r#"ModuleIdentNumber="0x00000011""#,
         )
     });
-    let (status, text) = exchange(
-        &root().join("descriptions/mv810-pnet02.toml"),
-        Some(dir.path()),
-    );
+    let (status, text) = exchange(&["descriptions/mv810-pnet02.toml"], Some(dir.path()));
     assert_eq!(status, 1, "{text}");
     assert_lines(
         &text,
@@ -202,10 +204,7 @@ fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
     let dir = edited_gsdml("tests/fixtures/valid/profidrive.toml", |t| {
         t.replace(r#"API="14848""#, r#"API="0""#)
     });
-    let (status, text) = exchange(
-        &root().join("tests/fixtures/valid/profidrive.toml"),
-        Some(dir.path()),
-    );
+    let (status, text) = exchange(&["tests/fixtures/valid/profidrive.toml"], Some(dir.path()));
     assert_eq!(status, 1, "{text}");
     assert_lines(
         &text,
