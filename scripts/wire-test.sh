@@ -80,12 +80,20 @@ for i in "${!absolute[@]}"; do
   fi
 done
 
-# The firmware, built from the layouts of exactly these descriptions.
+# The firmware, built from the layouts of exactly these descriptions. The
+# binary is copied out under a lock: another run with other descriptions
+# rebuilds it in the same target directory.
 export WIRE_DESCRIPTIONS
 WIRE_DESCRIPTIONS="$(IFS=:; echo "${absolute[*]}")"
 export CARGO_TARGET_DIR="${WIRE_TARGET_DIR:-$root/wire/target}"
+wire_dp="$scratch/wire-dp"
 if [[ " $buses " == *" dp "* ]]; then
-  "$cargo" build --quiet --manifest-path "$root/wire/Cargo.toml" -p wire-dp 2>"$scratch/build.log" || {
+  mkdir -p "$CARGO_TARGET_DIR"
+  (
+    flock 9
+    "$cargo" build --quiet --manifest-path "$root/wire/Cargo.toml" -p wire-dp &&
+      cp "$CARGO_TARGET_DIR/debug/wire-dp" "$wire_dp"
+  ) 9>"$CARGO_TARGET_DIR/.wire-test.lock" 2>"$scratch/build.log" || {
     cat "$scratch/build.log" >&2
     exit 2
   }
@@ -112,7 +120,7 @@ dp_exchange() { # description built-gsd
     unable=1
     return
   fi
-  "$CARGO_TARGET_DIR/debug/wire-dp" --description "$1" --gsd "$gsd" --gsdc "$gsdc"
+  "$wire_dp" --description "$1" --gsd "$gsd" --gsdc "$gsdc"
   case $? in
     0) ;;
     1) failed=1 ;;

@@ -138,7 +138,7 @@ impl Target {
         let Some(mut bus) = self.configure(&startup, baudrate) else {
             return false;
         };
-        let mut passed = self.check_prm(&bus, &values);
+        let mut passed = self.check_prm(&bus, &startup, &values);
         let (_, output_len) = data_lengths(&startup.config).unwrap_or_default();
         // PZD-sized test words, numbered: this test's own values.
         let outputs: Vec<u8> = (0..output_len)
@@ -182,7 +182,7 @@ impl Target {
         let Some(mut bus) = self.configure(&startup, baudrate) else {
             return false;
         };
-        let mut passed = self.check_prm(&bus, &values);
+        let mut passed = self.check_prm(&bus, &startup, &values);
         for step in exchange.steps {
             passed &= self.step(&mut bus, &startup, step);
         }
@@ -359,7 +359,7 @@ impl Target {
     }
 
     /// The slave decoded every parameter as the master set it.
-    pub fn check_prm(&self, bus: &Bus, values: &[(String, i64)]) -> bool {
+    pub fn check_prm(&self, bus: &Bus, startup: &Startup, values: &[(String, i64)]) -> bool {
         let slave = &bus.station.slave;
         if slave.state() != State::DataExchange {
             return failed(&format!("the slave is in {:?}", slave.state()));
@@ -379,14 +379,14 @@ impl Target {
                 Some(value) if i64::from(value) == set => {}
                 Some(value) => {
                     passed &= failed(&format!(
-                        "User_Prm_Data byte {}: {:?} is {set} as the master set it, {value} as the slave decoded it",
-                        parameter.offset, parameter.name
+                        "modules {:?}, User_Prm_Data byte {}: {:?} is {set} as the master set it, {value} as the slave decoded it",
+                        startup.modules, parameter.offset, parameter.name
                     ))
                 }
                 None => {
                     passed &= failed(&format!(
-                        "User_Prm_Data byte {}: the layout has no parameter {:?}",
-                        parameter.offset, parameter.name
+                        "modules {:?}, User_Prm_Data byte {}: the layout has no parameter {:?}",
+                        startup.modules, parameter.offset, parameter.name
                     ))
                 }
             }

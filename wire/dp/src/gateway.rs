@@ -89,7 +89,7 @@ impl Target {
             Ok(nodes) => nodes,
             Err(why) => return failed(&why),
         };
-        let mut passed = self.check_prm(&bus, &values(names, &nodes));
+        let mut passed = self.check_prm(&bus, &startup, &values(names, &nodes));
         // The master's words, numbered from 0x8001: this test's own values.
         let outputs: Vec<u8> = (0..exchange.output_words)
             .flat_map(|i| (0x8001 + i as u16).to_be_bytes())
