@@ -95,7 +95,8 @@ macro_rules! pn_record {
             index: $module::RECORD_INDEX,
             mappings: &$module::MAPPINGS,
             decode: |bytes| {
-                Ok(crate::card::PrmValues::EMPTY.with(&$module::MAPPINGS, &$module::decode_record(bytes)?))
+                Ok(crate::card::PrmValues::EMPTY
+                    .with(&$module::MAPPINGS, &$module::decode_record(bytes)?))
             },
         }
     };
