@@ -195,16 +195,33 @@ def _ranges(text: str | None) -> list[tuple[int, int]]:
 
 
 def other_value(ref: Ref, ordinal: int) -> int:
-    """A value the Ref allows other than its default: the ordinal-th allowed
-    value after the default, counting round, so that neighbouring entries get
-    different values and a word written to the wrong offset shows."""
+    """A value the Ref allows other than its default (the default itself
+    where the record may not be changed): the (3 x ordinal + 1)-th allowed
+    value after the default, counting round the allowed values, so that
+    neighbouring entries get different values and a word decoded from the
+    wrong offset shows."""
     if not ref.changeable:
         return ref.default
-    values = [v for low, high in ref.allowed for v in range(low, min(high, low + 4096) + 1)]
-    values = [v for v in values if v != ref.default] or [ref.default]
-    above = [v for v in values if v > ref.default]
-    ordered = above + [v for v in values if v < ref.default]
-    return ordered[(ordinal * 3) % len(ordered)]
+    sizes = [high - low + 1 for low, high in ref.allowed]
+    total = sum(sizes)
+
+    def nth(position: int) -> int:
+        for (low, _), size in zip(ref.allowed, sizes):
+            if position < size:
+                return low + position
+            position -= size
+        raise AssertionError("position within the allowed values")
+
+    start = 0
+    for (low, high), size in zip(ref.allowed, sizes):
+        if low <= ref.default <= high:
+            start += ref.default - low
+            break
+        start += size
+    else:
+        start = -1  # the default is not among the allowed values
+    value = nth((start + 1 + 3 * ordinal) % total)
+    return value if value != ref.default or total == 1 else nth((start + 2 + 3 * ordinal) % total)
 
 
 def encode_record(record: RecordItem) -> tuple[bytes, list[int]]:
