@@ -70,6 +70,9 @@ scenario="$here/scenarios/$name.json"
 [ -f "$scenario" ] || scenario=-
 
 echo "PROFINET exchange of $name: controller profinet-py 0.6.6 reads $(basename "$gsdml"), device pnio 0.1.0 runs the layout"
+echo "  not checked by the stacks: pnio has no API in its model (the device checks each Connect's APIs"
+echo "  against the layout itself) and acknowledges every record (the layout decodes each, and the"
+echo "  controller compares); pnio cannot refuse a record, so the layout's refusal is reported, not sent"
 [ "$scenario" = - ] && echo "  (no scenario of the manual for $name: records and data only)"
 station=""
 modules=()
