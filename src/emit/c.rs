@@ -17,13 +17,15 @@
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
 use super::{
-    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+    bit_range, capitalised, group_doc, hex16, hex8, mapping_literal, range_doc, Artifact,
+    ArtifactKind,
 };
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
 use crate::ir::profinet::{self, Profinet};
-use crate::ir::{Direction, Ident, Ir, Layout, PkwKind, ValueSet, Word};
+use crate::ir::profinet::RecordReading;
+use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -406,53 +408,41 @@ fn pkw_doc(kind: PkwKind) -> Option<String> {
 // ---------------------------------------------------------------------------
 // Telegrams
 
-/// A PPO type or a PROFINET module, before it is formatted.
-struct Module {
-    ident: Ident,
-    doc: String,
-    layout: Layout,
-    standard_telegram_1: bool,
-}
-
 /// Each PPO type, then each PROFINET module.
 fn modules(ir: &Ir, names: &Names) -> Vec<ModuleItem> {
-    let ppos = ir.profibus.iter().flat_map(|p| {
-        p.modules.iter().map(move |m| Module {
-            ident: m.ident.clone(),
-            doc: format!("\"{}\" of {}", m.name, p.file_name),
-            layout: m.layout,
-            standard_telegram_1: false,
-        })
-    });
-    let modules = ir.profinet.iter().flat_map(|p| {
-        p.modules.iter().map(|m| Module {
-            ident: m.ident.clone(),
-            doc: format!(
-                "PROFINET module \"{}\" ({}_IDENT)",
-                m.name.text.en,
-                names.upper(&m.ident.upper_snake())
-            ),
-            layout: m.layout,
-            standard_telegram_1: m.is_profidrive(),
-        })
-    });
-    ppos.chain(modules)
+    ir.cyclic_modules()
         .map(|m| module_item(ir, names, &m))
         .collect()
 }
 
-fn module_item(ir: &Ir, names: &Names, m: &Module) -> ModuleItem {
+/// `"PPO1" of MD810DP.GSD`, `PROFINET module "PKW + 12 PZD" (MD810DP_PKW_PZD12_IDENT)`.
+fn module_doc(names: &Names, m: &CyclicModule) -> String {
+    match m.bus {
+        Bus::Profibus => format!("\"{}\" of {}", m.name, m.file_name),
+        Bus::Profinet => format!(
+            "PROFINET module \"{}\" ({}_IDENT)",
+            m.name,
+            names.upper(&m.ident.upper_snake())
+        ),
+    }
+}
+
+fn module_item(ir: &Ir, names: &Names, m: &CyclicModule) -> ModuleItem {
     let words = match m.layout.pzd_words {
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_offset = 2 * u16::from(m.layout.pkw_words());
+    let pzd_offset = m.layout.pzd_offset();
     let place = if m.layout.pkw {
         format!("the PKW channel in bytes 0-7, {words} from byte {pzd_offset}")
     } else {
         format!("{words} from byte 0")
     };
-    let doc = format!("{}: {} bytes each way, {place}.", m.doc, m.layout.bytes());
+    let doc = format!(
+        "{}: {} bytes each way, {place}.",
+        module_doc(names, m),
+        m.layout.bytes()
+    );
     let base = m.ident.snake();
     ModuleItem {
         name: names.upper(&base),
@@ -468,12 +458,18 @@ fn module_item(ir: &Ir, names: &Names, m: &Module) -> ModuleItem {
     }
 }
 
-fn telegram_item(ir: &Ir, names: &Names, m: &Module, base: &str, dir: Direction) -> TelegramItem {
+fn telegram_item(
+    ir: &Ir,
+    names: &Names,
+    m: &CyclicModule,
+    base: &str,
+    dir: Direction,
+) -> TelegramItem {
     let (suffix, way, word, standard) = match dir {
         Direction::Out => ("out", "Master to drive", "control word", "STW1 and NSOLL_A"),
         Direction::In => ("in", "Drive to master", "status word", "ZSW1 and NIST_A"),
     };
-    let pzd1 = match (m.standard_telegram_1, ir.telegram.word(dir)) {
+    let pzd1 = match (m.is_profidrive(), ir.telegram.word(dir)) {
         (true, _) => format!(": PROFIdrive {standard}."),
         (false, Some(_)) => format!(
             "; PZD1 is the {word}, {}_*.",
@@ -557,6 +553,7 @@ fn value_set_item(names: &Names, scope: &str, values: &ValueSet) -> ValueSetItem
 
 fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
     let module = g.kind.key();
+    let record = ir.profinet.as_ref().and_then(|p| p.record(g.kind));
     let single = g.sets.len() == 1;
     let mut end = 0;
     let sets = g
@@ -592,8 +589,8 @@ fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
             .as_ref()
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
-        record_index: ir.profinet.as_ref().and_then(|p| p.record_index(g.kind)),
-        record_prefix: matches!(g.kind, MappingKind::PzdOut | MappingKind::PzdIn),
+        record_index: record.map(|r| r.index),
+        record_prefix: record.is_some_and(|r| r.reading == RecordReading::Prefix),
         record_length: g.record_length,
         fixed: fixed_items(ir, names, g, &name),
         name,
@@ -608,16 +605,14 @@ fn fixed_items(ir: &Ir, names: &Names, g: &MappingGroup, group: &str) -> Vec<Fix
     };
     g.sets
         .iter()
-        .filter(|set| set.fixed.is_some())
-        .map(|set| {
-            let modules: Vec<String> = profinet
+        .filter_map(|set| Some((set, profinet.fixed(set.key)?)))
+        .map(|(set, fixed)| {
+            let modules: Vec<String> = fixed
                 .modules
                 .iter()
-                .flat_map(|m| m.records.iter().flat_map(move |r| r.refs.iter().map(move |f| (m, f))))
-                .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
-                .map(|(m, f)| {
-                    let ident = names.upper(&format!("{}_IDENT", m.ident.snake()));
-                    format!("{{ {ident}, {}U }}", f.default)
+                .map(|(ident, _, value)| {
+                    let ident = names.upper(&format!("{}_IDENT", ident.snake()));
+                    format!("{{ {ident}, {value}U }}")
                 })
                 .collect();
             let name = format!("{group}_FIXED_{}", set.key.first);
@@ -846,16 +841,12 @@ fn profinet_items(names: &Names, p: &Profinet) -> ProfinetItems {
 // C text
 
 fn hex_bytes(bytes: &[u8]) -> Vec<String> {
-    bytes.iter().map(|b| format!("0x{b:02X}U")).collect()
-}
-
-fn hex16(value: u16) -> String {
-    format!("0x{value:04X}")
+    bytes.iter().map(|&b| format!("{}U", hex8(b))).collect()
 }
 
 /// `0x00000202UL`: an unsigned long, which holds 32 bits where int has 16.
 fn hex32(value: u32) -> String {
-    format!("0x{value:08X}UL")
+    format!("{}UL", super::hex32(value))
 }
 
 /// `#define NAME { a, b }`, wrapped with continuation lines when long.
@@ -929,7 +920,7 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 fn comment_text(text: &str) -> String {
     let mut visible = String::with_capacity(text.len());
     for c in text.chars() {
-        if (c.is_control() && !c.is_whitespace()) || is_bidi_control(c) {
+        if (c.is_control() && !c.is_whitespace()) || crate::spec::is_bidi_control(c) {
             let _ = write!(visible, "<U+{:04X}>", u32::from(c));
         } else {
             visible.push(c);
@@ -942,11 +933,6 @@ fn comment_text(text: &str) -> String {
         }
     }
     out
-}
-
-/// The characters that reorder text on screen (Unicode's Bidi_Control).
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
 /// A C string literal of `text`: printable ASCII as it is (`\`, `"` and `?`

@@ -20,6 +20,10 @@ pub struct Profibus {
     /// Max_Input_Len and Max_Output_Len: the largest module's bytes.
     pub max_input_len: u16,
     pub max_output_len: u16,
+    /// Max_Data_Len: input and output together.
+    pub max_data_len: u16,
+    /// Max_Module: the most modules a master plugs.
+    pub max_module: u8,
     /// Supported baud rates with MaxTsdr in bit times, slowest first.
     pub baud_rates: Vec<(Baud, u16)>,
     /// Units of 100 us.

@@ -21,8 +21,8 @@ use params::{default_configuration, node_count, node_words, NodeWords};
 use std::ops::Range;
 use toml::Spanned;
 
-/// A PROFIBUS slave's input and output each hold at most 244 bytes.
-const MAX_DATA_LEN: i64 = 244;
+/// A PROFIBUS slave's input and output each hold at most a telegram.
+const MAX_DATA_LEN: i64 = crate::spec::DP_MAX_TELEGRAM as i64;
 /// Node numbers, counts and words are bytes in the generated code.
 const MAX_BYTE: i64 = 0xFF;
 
