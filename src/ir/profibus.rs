@@ -4,7 +4,7 @@
 use super::{
     EntryKey, Ident, Ir, Layout, MappingEntry, MappingKind, MappingSet, SetKey, Text, ValueSet,
 };
-pub use crate::gsd::Baud;
+pub use crate::spec::Baud;
 use std::fmt;
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -4,7 +4,7 @@
 //! only writes them down.
 
 use super::{EntryKey, Ident, Layout, MappingKind, SetKey, Text};
-pub use crate::gsdml::Version;
+pub use crate::spec::GsdmlVersion as Version;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]

@@ -1,7 +1,14 @@
 //! Facts of the fieldbus specifications that more than one part of gsdc
 //! needs (the lowering that keeps a description within them, the rules
 //! that check a file against them, the emitters that write to them), each
-//! in one place: FIELDBUS-NOTES names the sources.
+//! in one place: FIELDBUS-NOTES names the sources. The IR, the readers and
+//! the emitters depend on this module; it depends on none of them.
+
+mod baud;
+mod gsdml_version;
+
+pub use baud::Baud;
+pub use gsdml_version::Version as GsdmlVersion;
 
 /// The bytes a PROFIBUS-DP telegram carries at most: a slave's input, its
 /// output, its parameter telegram, its diagnosis (IEC 61158-6-3).
