@@ -23,8 +23,8 @@ use super::{
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
-use crate::ir::profinet::{self, Profinet};
 use crate::ir::profinet::RecordReading;
+use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;

@@ -14,8 +14,8 @@ use super::{
 };
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
-use crate::ir::profinet::{self, Profinet};
 use crate::ir::profinet::RecordReading;
+use crate::ir::profinet::{self, Profinet};
 use crate::ir::{Bus, CyclicModule, Direction, Ir, PkwKind, Telegram, ValueSet, Word};
 use serde::Serialize;
 
@@ -688,7 +688,11 @@ fn profinet_items(p: &Profinet) -> ProfinetItems {
 
 /// `0xF3, 0xF1`: the inside of an array literal.
 fn hex_bytes(bytes: &[u8]) -> String {
-    bytes.iter().map(|&b| hex8(b)).collect::<Vec<_>>().join(", ")
+    bytes
+        .iter()
+        .map(|&b| hex8(b))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// `0x0000_0202`: eight digits in two groups, as ident numbers are written.

@@ -4,15 +4,16 @@
 use super::checks::{Checker, GSD_NAME_LEN};
 use super::gateway;
 use super::mappings::SetSpans;
+use super::ppo::{config_bytes, ppo_layout};
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use crate::ir::profibus::{
-    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
-    PrmBlock, PrmParam, PrmText, PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
+    Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
+    PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
+use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;

@@ -225,7 +225,11 @@ pub fn fixed_values(mappings: &Mappings, modules: &[Module]) -> Vec<FixedValues>
             set: set.key,
             modules: modules
                 .iter()
-                .flat_map(|m| m.records.iter().flat_map(move |r| r.refs.iter().map(move |f| (m, f))))
+                .flat_map(|m| {
+                    m.records
+                        .iter()
+                        .flat_map(move |r| r.refs.iter().map(move |f| (m, f)))
+                })
                 .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
                 .map(|(m, f)| (m.ident.clone(), m.ident_number, f.default))
                 .collect(),
