@@ -31,6 +31,7 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 mod gateway;
+mod tables;
 
 const TEMPLATE: &str = include_str!("../../templates/c/layout.h.jinja");
 
@@ -60,6 +61,8 @@ struct Context {
     profibus: Option<ProfibusItems>,
     gateway: Option<gateway::Items>,
     profinet: Option<ProfinetItems>,
+    /// The device tables, finished.
+    tables: String,
 }
 
 /// A PPO type or PROFINET module: its shape, and one telegram each way.
@@ -328,6 +331,7 @@ fn context(ir: &Ir) -> Context {
             .zip(ir.profibus.as_ref())
             .map(|(g, pb)| gateway::items(&names, g, pb)),
         profinet: ir.profinet.as_ref().map(|pn| profinet_items(&names, pn)),
+        tables: tables::render(&names, &super::tables::tables(ir)),
         p,
         l,
     }
@@ -1002,7 +1006,7 @@ fn declared_names(text: &str) -> Vec<String> {
         } else if line.starts_with("static inline ") {
             line.split('(')
                 .next()
-                .and_then(|head| head.rsplit(' ').next())
+                .and_then(|head| head.rsplit([' ', '*']).next())
         } else if line.starts_with("typedef ") && line.contains("(*") {
             line.split("(*").nth(1).and_then(identifier_at_start)
         } else {

@@ -5,6 +5,7 @@ pub mod doc;
 pub mod gsd;
 pub mod gsdml;
 pub mod rust;
+mod tables;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Direction, Holds, Ir, MappingKind, PkwKind};

@@ -7,6 +7,7 @@
 //! (identifiers, literals, doc lines) so the template only arranges them.
 
 mod gateway;
+mod tables;
 
 use super::{
     bit_range, capitalised, group_doc, hex16, hex8, mapping_literal, range_doc, Artifact,
@@ -25,7 +26,7 @@ const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
 /// is replaced by the part's text.
 pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
 const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
-const SUPPORT_PARTS: [(&str, &str); 5] = [
+const SUPPORT_PARTS: [(&str, &str); 6] = [
     (
         "pkw_pke_ind_pwe",
         include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
@@ -46,6 +47,7 @@ const SUPPORT_PARTS: [(&str, &str); 5] = [
         "gateway",
         include_str!("../../templates/support/gateway.rs"),
     ),
+    ("device", include_str!("../../templates/support/device.rs")),
 ];
 
 #[derive(Serialize)]
@@ -64,6 +66,8 @@ struct Context<'a> {
     profibus: Option<ProfibusItems>,
     profinet: Option<ProfinetItems>,
     gateway: Option<gateway::Items>,
+    /// The device tables, finished.
+    tables: String,
 }
 
 #[derive(Serialize)]
@@ -330,6 +334,7 @@ fn context(ir: &Ir) -> Context<'_> {
             .zip(ir.profibus.as_ref())
             .map(|(g, p)| gateway::items(g, p)),
         groups: ir.mappings.groups.iter().map(|g| group(ir, g)).collect(),
+        tables: tables::render(&super::tables::tables(ir)),
     }
 }
 

@@ -133,6 +133,10 @@ impl TextRef {
 
 /// The device access point's ModuleIdentNumber and its submodule's.
 pub const DAP_IDENT: u32 = 0x0000_0001;
+/// The subslot of a submodule the GSDML gives none (FixedInSubslots'
+/// default): the DAP's own, a module's one data submodule.
+pub const DAP_SUBSLOT: u16 = 1;
+pub const DEFAULT_SUBSLOT: u16 = 1;
 /// Subslots of the interface and of its first port (IEC 61158-6-10). They
 /// are also the submodule ident numbers of the interface and the ports, as
 /// p-net does it, so firmware and GSDML share one number for each.
@@ -237,6 +241,16 @@ impl Module {
     /// A PROFIdrive telegram: the profile's, in the profile's API.
     pub fn is_profidrive(&self) -> bool {
         self.api == PROFIDRIVE_API
+    }
+
+    /// The subslot of its data submodule: after PROFIdrive's access point,
+    /// or the default.
+    pub fn data_subslot(&self) -> u16 {
+        if self.access_point.is_some() {
+            PROFIDRIVE_DATA_SUBSLOT
+        } else {
+            DEFAULT_SUBSLOT
+        }
     }
 }
 
