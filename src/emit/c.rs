@@ -266,9 +266,22 @@ pub fn file_name(ir: &Ir) -> String {
 /// The prefix of every name a layout declares, spelt from the layout's
 /// stem: `md810dp` for `md810dp.toml`, `mv810_pnet02` for
 /// `mv810-pnet02.toml`, and `gsdc_9kdp1` for `9kdp1.toml`, since a C name
-/// cannot start with a digit.
+/// cannot start with a digit (and the support header names nothing
+/// `gsdc_` and a digit). Every other name that starts with the word `gsdc`
+/// is the support header's: a stem that spells it (`gsdc.toml`,
+/// `Gsdc-prm.toml`) or no word at all (`_.toml`, `网关.toml`) is prefixed
+/// `layout` (`layout_gsdc`, `layout`), so that no layout can declare
+/// `gsdc_node_totals` beside the support header's.
 fn prefix(ir: &Ir) -> Ident {
-    Ident::from_text(&super::layout_stem(ir), "gsdc")
+    let stem = super::layout_stem(ir);
+    let ident = Ident::from_text(&stem, "gsdc");
+    match ident.words() {
+        [gsdc, next, ..] if gsdc == "gsdc" && next.starts_with(|c: char| c.is_ascii_digit()) => {
+            ident
+        }
+        [gsdc, ..] if gsdc == "gsdc" => Ident::from_text(&format!("layout_{stem}"), "layout"),
+        _ => ident,
+    }
 }
 
 /// `gsdc_support.h`: the hand-written support header, with the release that
@@ -996,7 +1009,7 @@ fn breaks(file_name: &str, what: String) -> Diagnostic {
 /// The names a header declares at file scope: macros, the types of
 /// `typedef struct`/`enum` and function pointers, enumerators, functions,
 /// and the names of compile-time checks (types in C99).
-fn declared_names(text: &str) -> Vec<String> {
+pub(crate) fn declared_names(text: &str) -> Vec<String> {
     let mut names = Vec::new();
     for line in text.lines() {
         let found = if let Some(rest) = line.strip_prefix("#define ") {
@@ -1086,6 +1099,29 @@ mod tests {
         let ir = load("9kdp1.toml", include_str!("../../descriptions/9kdp1.toml"));
         assert_eq!(file_name(&ir), "9kdp1_layout.h");
         assert_eq!(prefix(&ir).upper_snake(), "GSDC_9KDP1");
+    }
+
+    /// A gateway whose stem spells the support header's `gsdc` (or no word,
+    /// which gave it the fallback `gsdc`) declared `gsdc_node_totals` twice:
+    /// E900, a bug in gsdc, for a description the loader accepts. Its prefix
+    /// is `layout` now, and the header passes its verification.
+    #[test]
+    fn a_stem_that_spells_gsdc_gets_a_prefix_of_its_own() {
+        let text = include_str!("../../descriptions/md810-gateway.toml");
+        for (name, expected) in [
+            ("gsdc.toml", "layout_gsdc"),
+            ("Gsdc.toml", "layout_gsdc"),
+            ("gsdc-prm.toml", "layout_gsdc_prm"),
+            ("_.toml", "layout"),
+            ("é.toml", "layout"),
+            ("网关.toml", "layout"),
+            ("gsdc_9.toml", "gsdc_9"),
+            ("gsdcx.toml", "gsdcx"),
+        ] {
+            let ir = load(name, text);
+            assert_eq!(prefix(&ir).snake(), expected, "{name}");
+            assert!(crate::compile(&ir).is_ok(), "{name}");
+        }
     }
 
     /// A timeout is a plain value: its bounds and default in decimal, and
