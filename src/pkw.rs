@@ -8,7 +8,7 @@
 // The support code is written for firmware, which uses all of it; the
 // library uses the parts below, and the Rust emitter's tests all of it
 // (`emit::rust::support_tests`). Loaded here only, once.
-#[allow(dead_code)]
+#[allow(dead_code, unused_imports)]
 #[path = "../templates/support/mod.rs"]
 pub(crate) mod support;
 

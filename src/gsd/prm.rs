@@ -9,7 +9,7 @@ use crate::gsd::model::{ExtUserPrmData, GsdFile, PrmDataType, Setting};
 /// No parameter telegram is longer than a PROFIBUS frame can carry, so the
 /// default telegram never grows past this (entries beyond it are reported by
 /// rule E219 and left out here).
-pub const MAX_TELEGRAM: usize = 244;
+pub const MAX_TELEGRAM: usize = crate::spec::DP_MAX_TELEGRAM;
 
 /// Which family of parameter keywords: the plain ones, or PROFIsafe's `F_`
 /// ones inside a module.
