@@ -66,8 +66,8 @@ fn assert_lines(text: &str, lines: &[&str]) {
     }
 }
 
-/// The three descriptions with `[profinet]` in one run: one build of the
-/// device for their layouts.
+/// Every description and valid fixture with `[profinet]` in one run: one
+/// build of the device for their layouts.
 #[test]
 fn every_profinet_description_every_module() {
     if !can_run() {
@@ -78,10 +78,14 @@ fn every_profinet_description_every_module() {
             "descriptions/mv810-pnet02.toml",
             "descriptions/md810dp.toml",
             "tests/fixtures/valid/profidrive.toml",
+            "tests/fixtures/valid/no_warnings.toml",
         ],
         None,
     );
     assert_eq!(status, 0, "{text}");
+    // Every module of the fixture without warnings (a PROFIdrive telegram,
+    // PKW and PZD modules), and its three negative cases.
+    assert_lines(&text, &["PROFINET no_warnings: 8 passed, 0 failed"]);
     mv810_every_module_records_control_word_and_pkw(&text);
     md810_reads_f0_08_through_the_pkw_channel(&text);
     profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);

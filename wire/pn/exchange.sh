@@ -76,10 +76,10 @@ echo "  controller compares); pnio cannot refuse a record, so the layout's refus
 [ "$scenario" = - ] && echo "  (no scenario of the manual for $name: records and data only)"
 station=""
 modules=()
-while read -r kind a b c; do
+while read -r kind a b c d; do
   case "$kind" in
     station) station=$a ;;
-    module) modules+=("$a $b $c") ;;
+    module) modules+=("$a $b $c $d") ;;
   esac
 done < <("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules)
 
@@ -98,19 +98,19 @@ run_case() {
 }
 
 for entry in "${modules[@]}"; do
-  read -r module slot api <<<"$entry"
-  run_case "$module in slot $slot" "$slot" "$module" "$scenario"
+  read -r module slot api module_name <<<"$entry"
+  run_case "$module ($module_name) in slot $slot" "$slot" "$module" "$module_name" "$scenario"
 done
 # The negative cases, on the GSDML's last module: the device departs from
 # the layout, and the controller's Connect must fail with the status that
 # says how.
-read -r module slot api <<<"${modules[-1]}"
-run_case "negative: $module, the device presents another module ident" "$slot" "$module" - --mismatch module-ident
-run_case "negative: $module, the device presents another input length" "$slot" "$module" - --mismatch input-length
+read -r module slot api module_name <<<"${modules[-1]}"
+run_case "negative: $module, the device presents another module ident" "$slot" "$module" "$module_name" - --mismatch module-ident
+run_case "negative: $module, the device presents another input length" "$slot" "$module" "$module_name" - --mismatch input-length
 for entry in "${modules[@]}"; do
-  read -r module slot api <<<"$entry"
+  read -r module slot api module_name <<<"$entry"
   if [ "$api" -ne 0 ]; then
-    run_case "negative: $module, the device's layout places it in API 0, the GSDML in API $api" "$slot" "$module" - --mismatch api
+    run_case "negative: $module, the device's layout places it in API 0, the GSDML in API $api" "$slot" "$module" "$module_name" - --mismatch api
   fi
 done
 

@@ -6,12 +6,12 @@
 # other interface: both ends are created inside the namespaces, and deleting
 # a namespace deletes its end. Needs root.
 #
-#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML STATION SLOT MODULE SCENARIO|- [DEVICE_FLAGS...]
+#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML STATION SLOT MODULE NAME SCENARIO|- [DEVICE_FLAGS...]
 #
 # DEVICE: the pn-device binary; PYTHON: the venv's python with profinet-py;
 # CARD: the description's name in the firmware; STATION: the name of
-# station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT;
-# SCENARIO: the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
+# station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT,
+# and NAME its name, by which the device finds it in its layout; SCENARIO: the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
 # (--mismatch KIND makes it a negative case, and the controller then expects
 # the Connect refused).
 #
@@ -20,9 +20,9 @@
 # script's process id, so runs side by side do not meet; every exit path
 # kills the device by its process id and deletes both namespaces.
 set -euo pipefail
-[ $# -ge 8 ] || { echo "usage: $0 DEVICE PYTHON CARD GSDML STATION SLOT MODULE SCENARIO|- [DEVICE_FLAGS...]" >&2; exit 2; }
-device=$1 python=$2 card=$3 gsdml=$4 station=$5 slot=$6 module=$7 scenario=$8
-shift 8
+[ $# -ge 9 ] || { echo "usage: $0 DEVICE PYTHON CARD GSDML STATION SLOT MODULE NAME SCENARIO|- [DEVICE_FLAGS...]" >&2; exit 2; }
+device=$1 python=$2 card=$3 gsdml=$4 station=$5 slot=$6 module=$7 name=$8 scenario=$9
+shift 9
 here=$(cd "$(dirname "$0")" && pwd)
 
 ns_ctl="gsdc-pn-$$-ctl"
@@ -64,7 +64,7 @@ ip -n "$ns_dev" link set pn0 up
 events="$work/device-events.jsonl"
 # The device stops by itself after 60 s if nothing else stops it.
 ip netns exec "$ns_dev" "$device" --card "$card" --iface pn0 --ip "$ip_dev" \
-  --station "$station" --plug "$slot=$module" --seconds 60 "$@" >"$events" 2>"$work/device.err" &
+  --station "$station" --plug "$slot=$name" --seconds 60 "$@" >"$events" 2>"$work/device.err" &
 device_pid=$!
 # Until the device listens (its first event), at most 5 s.
 for _ in $(seq 50); do

@@ -3,7 +3,8 @@
 //! modules, parameters and diagnosis. Every number is a constant of the
 //! layout; [`crate::layouts`] fills one [`Card`] per description.
 
-use crate::gsdc_support::{Mapping, PrmError};
+use crate::cyclic::Shape;
+use crate::gsdc_support::{Mapping, PnDevice, PnModule, PrmError};
 use crate::pkw::PkwKind;
 
 /// One description's card.
@@ -30,7 +31,7 @@ pub struct Card {
     /// parameters of its own (MV810).
     pub status_of: Option<fn(u16) -> u16>,
     pub profibus: Option<&'static Profibus>,
-    pub profinet: Option<&'static Profinet>,
+    pub profinet: Option<Profinet>,
 }
 
 /// What a PROFIBUS-DP slave needs of the layout.
@@ -145,58 +146,16 @@ impl NodeSetup {
     }
 }
 
-/// What a PROFINET device needs of the layout.
+/// What a PROFINET device needs of the layout: its device table, and what
+/// the table does not say yet.
 #[derive(Clone, Copy, Debug)]
 pub struct Profinet {
-    /// DCP Identify answers them; the Connect's object UUID carries them.
-    pub vendor_id: u16,
-    pub device_id: u16,
-    /// The device access point's module ident, in slot 0.
-    pub dap_ident: u32,
-    /// The access point's submodules: its own, the interface, the ports.
-    pub dap_submodules: &'static [PnSubmodule],
-    /// The modules a slot may take.
-    pub modules: &'static [PnModule],
-}
-
-/// A module of the GSDML.
-#[derive(Clone, Copy, Debug)]
-pub struct PnModule {
-    /// The GSDML's `ModuleItem` ID: `IDM_PKW_12`.
-    pub id: &'static str,
-    pub ident: u32,
-    /// The slots it may go in.
-    pub slots: &'static [u16],
-    pub submodules: &'static [PnSubmodule],
-    /// What its telegram holds (the submodule with data carries it).
-    pub pkw: bool,
-    pub pzd_words: usize,
-    /// The parameter records the controller writes at startup.
-    pub records: &'static [PnRecord],
-}
-
-/// A submodule: where it sits and what it carries.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PnSubmodule {
-    pub subslot: u16,
-    pub ident: u32,
-    /// The application process: 0, or the profile's (PROFIdrive 0x3A00).
-    pub api: u32,
-    /// Bytes to the controller and from it.
-    pub input_len: u16,
-    pub output_len: u16,
-}
-
-/// A parameter record of a module's submodule.
-#[derive(Clone, Copy, Debug)]
-pub struct PnRecord {
-    pub subslot: u16,
-    pub index: u16,
-    /// The entries it sets, in order.
-    pub mappings: &'static [Mapping],
-    /// Decodes the record with the layout's codec: each entry's value by
-    /// its name, or why the record is refused.
-    pub decode: fn(&[u8]) -> Result<PrmValues, PrmError>,
+    /// The layout's `PN_DEVICE`.
+    pub device: &'static PnDevice,
+    /// PROVISIONAL, until `PnModule` says it: whether the module's telegram
+    /// starts with the PKW channel, and its PZD words (by the module's length
+    /// alone MD810's "PKW + 2 PZD" and "6 PZD", 12 bytes each, are one).
+    pub shape: fn(&PnModule) -> Shape,
 }
 
 /// A module of the GSD.

@@ -2,6 +2,8 @@
 //! shares.
 
 use crate::card::Card;
+use crate::cyclic::Shape;
+use crate::gsdc_support::{PnModule, PKW_BYTES};
 
 /// The card of the description named `name`, if the firmware was built
 /// for it.
@@ -25,86 +27,21 @@ pub const CARDS: &[Card] = &[
     mv810_pnet02::CARD,
 ];
 
-/// PROVISIONAL, until the layouts carry their device tables: the PROFINET
-/// access point as gsdc numbers it today (its own submodule in subslot 1 with
-/// the DAP's ident; the interface and each port with their subslot as
-/// ident), from the layout's constants.
-#[allow(unused_macros)]
-macro_rules! pn_dap {
-    ($layout:path, ports: [$($port:expr),*]) => {{
-        use $layout as l;
-        &[
-            crate::card::PnSubmodule { subslot: 1, ident: l::DAP_IDENT, api: 0, input_len: 0, output_len: 0 },
-            crate::card::PnSubmodule {
-                subslot: l::INTERFACE_SUBSLOT,
-                ident: l::INTERFACE_SUBSLOT as u32,
-                api: 0,
-                input_len: 0,
-                output_len: 0,
-            },
-            $(crate::card::PnSubmodule {
-                subslot: l::FIRST_PORT_SUBSLOT + $port,
-                ident: (l::FIRST_PORT_SUBSLOT + $port) as u32,
-                api: 0,
-                input_len: 0,
-                output_len: 0,
-            }),*
-        ]
-    }};
-}
-
-/// PROVISIONAL (as `pn_dap`): a module with one submodule in subslot 1
-/// carrying `pkw` and `pzd` words each way, its ident the module's. The
-/// GSDML ID is typed here: no layout has it yet.
-#[allow(unused_macros)]
-macro_rules! pn_module {
-    ($id:literal, $ident:expr, slots: $slots:expr, pkw: $pkw:literal, pzd: $pzd:literal, records: $records:expr) => {
-        crate::card::PnModule {
-            id: $id,
-            ident: $ident,
-            slots: $slots,
-            submodules: &[crate::card::PnSubmodule {
-                subslot: 1,
-                ident: $ident,
-                api: 0,
-                input_len: (if $pkw {
-                    crate::gsdc_support::PKW_BYTES
-                } else {
-                    0
-                } + 2 * $pzd) as u16,
-                output_len: (if $pkw {
-                    crate::gsdc_support::PKW_BYTES
-                } else {
-                    0
-                } + 2 * $pzd) as u16,
-            }],
-            pkw: $pkw,
-            pzd_words: $pzd,
-            records: $records,
-        }
-    };
-}
-
-/// A record of subslot 1 decoded by the layout's `decode_record` of
-/// `$mappings`'s module.
-#[allow(unused_macros)]
-macro_rules! pn_record {
-    ($module:ident) => {
-        crate::card::PnRecord {
-            subslot: 1,
-            index: $module::RECORD_INDEX,
-            mappings: &$module::MAPPINGS,
-            decode: |bytes| {
-                Ok(crate::card::PrmValues::EMPTY
-                    .with(&$module::MAPPINGS, &$module::decode_record(bytes)?))
-            },
-        }
-    };
+/// PROVISIONAL, until the device table says it (see
+/// [`crate::card::Profinet::shape`]): a PROFINET module's telegram, the PKW
+/// channel when `pkw`, then PZD words to its length.
+#[allow(dead_code)] // Only the cards of layouts with [profinet] use it.
+fn pn_shape(module: &PnModule, pkw: bool) -> Shape {
+    let pkw_bytes = if pkw { PKW_BYTES } else { 0 };
+    Shape {
+        pkw,
+        pzd_words: (module.data.output_len - pkw_bytes) / 2,
+    }
 }
 
 #[cfg(layout = "md810dp")]
 mod md810dp {
-    use crate::card::{Card, Diagnosis, DpModule, PnRecord, PrmValues, Profibus, Profinet};
+    use crate::card::{Card, Diagnosis, DpModule, PrmValues, Profibus, Profinet};
     use crate::layouts::md810dp::*;
     use crate::pkw::PkwKind;
 
@@ -118,7 +55,10 @@ mod md810dp {
         pzd_in: &pzd_in::MAPPINGS,
         status_of: None,
         profibus: Some(&PROFIBUS),
-        profinet: Some(&PROFINET),
+        profinet: Some(Profinet {
+            device: &PN_DEVICE,
+            shape: pn_shape,
+        }),
     };
 
     const PROFIBUS: Profibus = Profibus {
@@ -165,27 +105,10 @@ mod md810dp {
         gateway: None,
     };
 
-    const RECORDS: &[PnRecord] = &[
-        pn_record!(pzd_out),
-        pn_record!(pzd_in),
-        pn_record!(dpv1_index),
-    ];
-    const SLOT: &[u16] = &[MODULE_SLOT];
-
-    const PROFINET: Profinet = Profinet {
-        vendor_id: PROFINET_VENDOR_ID,
-        device_id: PROFINET_DEVICE_ID,
-        dap_ident: DAP_IDENT,
-        dap_submodules: pn_dap!(crate::layouts::md810dp, ports: [0, 1]),
-        modules: &[
-            pn_module!("IDM_PKW_2", PKW_PZD2_IDENT, slots: SLOT, pkw: true, pzd: 2, records: RECORDS),
-            pn_module!("IDM_PKW_6", PKW_PZD6_IDENT, slots: SLOT, pkw: true, pzd: 6, records: RECORDS),
-            pn_module!("IDM_PKW_12", PKW_PZD12_IDENT, slots: SLOT, pkw: true, pzd: 12, records: RECORDS),
-            pn_module!("IDM_PZD_2", PZD2_IDENT, slots: SLOT, pkw: false, pzd: 2, records: RECORDS),
-            pn_module!("IDM_PZD_6", PZD6_IDENT, slots: SLOT, pkw: false, pzd: 6, records: RECORDS),
-            pn_module!("IDM_PZD_12", PZD12_IDENT, slots: SLOT, pkw: false, pzd: 12, records: RECORDS),
-        ],
-    };
+    fn pn_shape(module: &crate::gsdc_support::PnModule) -> crate::cyclic::Shape {
+        let pkw = [PKW_PZD2_IDENT, PKW_PZD6_IDENT, PKW_PZD12_IDENT].contains(&module.ident);
+        super::pn_shape(module, pkw)
+    }
 
     fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
         let prm = crate::layouts::md810dp::decode_user_prm(bytes)?;
@@ -250,7 +173,7 @@ mod powtran_9kdp1 {
 
 #[cfg(layout = "profidrive")]
 mod profidrive {
-    use crate::card::{Card, DpModule, PnModule, PnSubmodule, PrmValues, Profibus, Profinet};
+    use crate::card::{Card, DpModule, PrmValues, Profibus, Profinet};
     use crate::layouts::profidrive::*;
     use crate::pkw::PkwKind;
 
@@ -264,7 +187,10 @@ mod profidrive {
         pzd_in: &[],
         status_of: None,
         profibus: Some(&PROFIBUS),
-        profinet: Some(&PROFINET),
+        profinet: Some(Profinet {
+            device: &PN_DEVICE,
+            shape: pn_shape,
+        }),
     };
 
     const PROFIBUS: Profibus = Profibus {
@@ -289,41 +215,10 @@ mod profidrive {
         gateway: None,
     };
 
-    const SLOT: &[u16] = &[MODULE_SLOT];
-
-    const PROFINET: Profinet = Profinet {
-        vendor_id: PROFINET_VENDOR_ID,
-        device_id: PROFINET_DEVICE_ID,
-        dap_ident: DAP_IDENT,
-        dap_submodules: pn_dap!(crate::layouts::profidrive, ports: [0, 1]),
-        modules: &[
-            PnModule {
-                id: "IDM_STD_TEL_1",
-                ident: TELEGRAM1_IDENT,
-                slots: SLOT,
-                submodules: &[
-                    PnSubmodule {
-                        subslot: TELEGRAM1_ACCESS_POINT_SUBSLOT,
-                        ident: TELEGRAM1_ACCESS_POINT_IDENT,
-                        api: TELEGRAM1_API,
-                        input_len: 0,
-                        output_len: 0,
-                    },
-                    PnSubmodule {
-                        subslot: TELEGRAM1_DATA_SUBSLOT,
-                        ident: TELEGRAM1_IDENT,
-                        api: TELEGRAM1_API,
-                        input_len: Telegram1In::LEN as u16,
-                        output_len: Telegram1Out::LEN as u16,
-                    },
-                ],
-                pkw: false,
-                pzd_words: 2,
-                records: &[],
-            },
-            pn_module!("IDM_PZD_1", PZD1_IDENT, slots: SLOT, pkw: false, pzd: 1, records: &[pn_record!(settings)]),
-        ],
-    };
+    /// The fixture's PROFINET modules carry no PKW channel.
+    fn pn_shape(module: &crate::gsdc_support::PnModule) -> crate::cyclic::Shape {
+        super::pn_shape(module, false)
+    }
 
     fn decode_user_prm(bytes: &[u8]) -> Result<PrmValues, PrmError> {
         let prm = crate::layouts::profidrive::decode_user_prm(bytes)?;
@@ -333,7 +228,7 @@ mod profidrive {
 
 #[cfg(layout = "no_warnings")]
 mod no_warnings {
-    use crate::card::{Card, DpModule, PrmValues, Profibus};
+    use crate::card::{Card, DpModule, PrmValues, Profibus, Profinet};
     use crate::layouts::no_warnings::*;
     use crate::pkw::PkwKind;
 
@@ -347,8 +242,16 @@ mod no_warnings {
         pzd_in: &[],
         status_of: None,
         profibus: Some(&PROFIBUS),
-        profinet: None,
+        profinet: Some(Profinet {
+            device: &PN_DEVICE,
+            shape: pn_shape,
+        }),
     };
+
+    fn pn_shape(module: &crate::gsdc_support::PnModule) -> crate::cyclic::Shape {
+        let pkw = [PKW_PZD2_IDENT, PKW_PZD6_IDENT].contains(&module.ident);
+        super::pn_shape(module, pkw)
+    }
 
     const PROFIBUS: Profibus = Profibus {
         ident_number: PROFIBUS_IDENT_NUMBER,
@@ -620,7 +523,7 @@ mod md810_gateway {
 
 #[cfg(layout = "mv810-pnet02")]
 mod mv810_pnet02 {
-    use crate::card::{Card, PnRecord, Profinet};
+    use crate::card::{Card, Profinet};
     use crate::layouts::mv810_pnet02::*;
     use crate::pkw::PkwKind;
 
@@ -637,7 +540,10 @@ mod mv810_pnet02 {
         pzd_in: &[],
         status_of: Some(status_of),
         profibus: None,
-        profinet: Some(&PROFINET),
+        profinet: Some(Profinet {
+            device: &PN_DEVICE,
+            shape: pn_shape,
+        }),
     };
 
     /// The drive answering its control word (section 3's bits, by the
@@ -659,36 +565,8 @@ mod mv810_pnet02 {
         s::STOP.with(status, (!forward && !reverse).into())
     }
 
-    const SLOT: &[u16] = &[MODULE_SLOT];
-    /// Standard message 1 fixes P43.01 (settings); the user-defined modules
-    /// also map PZD2 and up, one word each way per word the module carries
-    /// after PZD1.
-    const SETTINGS: &[PnRecord] = &[pn_record!(settings)];
-    const MAPPED: &[PnRecord] = &[
-        pn_record!(pzd_out),
-        pn_record!(pzd_in),
-        pn_record!(settings),
-    ];
-
-    const PROFINET: Profinet = Profinet {
-        vendor_id: PROFINET_VENDOR_ID,
-        device_id: PROFINET_DEVICE_ID,
-        dap_ident: DAP_IDENT,
-        dap_submodules: pn_dap!(crate::layouts::mv810_pnet02, ports: [0, 1]),
-        modules: &[
-            pn_module!("IDM_STD_TEL_1", TELEGRAM1_IDENT, slots: SLOT, pkw: false, pzd: 2, records: SETTINGS),
-            pn_module!("IDM_PKW_1", PKW_PZD1_IDENT, slots: SLOT, pkw: true, pzd: 1, records: SETTINGS),
-            pn_module!("IDM_PKW_2", PKW_PZD2_IDENT, slots: SLOT, pkw: true, pzd: 2, records: MAPPED),
-            pn_module!("IDM_PKW_3", PKW_PZD3_IDENT, slots: SLOT, pkw: true, pzd: 3, records: MAPPED),
-            pn_module!("IDM_PKW_4", PKW_PZD4_IDENT, slots: SLOT, pkw: true, pzd: 4, records: MAPPED),
-            pn_module!("IDM_PKW_5", PKW_PZD5_IDENT, slots: SLOT, pkw: true, pzd: 5, records: MAPPED),
-            pn_module!("IDM_PKW_6", PKW_PZD6_IDENT, slots: SLOT, pkw: true, pzd: 6, records: MAPPED),
-            pn_module!("IDM_PKW_7", PKW_PZD7_IDENT, slots: SLOT, pkw: true, pzd: 7, records: MAPPED),
-            pn_module!("IDM_PKW_8", PKW_PZD8_IDENT, slots: SLOT, pkw: true, pzd: 8, records: MAPPED),
-            pn_module!("IDM_PKW_9", PKW_PZD9_IDENT, slots: SLOT, pkw: true, pzd: 9, records: MAPPED),
-            pn_module!("IDM_PKW_10", PKW_PZD10_IDENT, slots: SLOT, pkw: true, pzd: 10, records: MAPPED),
-            pn_module!("IDM_PKW_11", PKW_PZD11_IDENT, slots: SLOT, pkw: true, pzd: 11, records: MAPPED),
-            pn_module!("IDM_PKW_12", PKW_PZD12_IDENT, slots: SLOT, pkw: true, pzd: 12, records: MAPPED),
-        ],
-    };
+    /// Every module but standard message 1 starts with the PKW channel.
+    fn pn_shape(module: &crate::gsdc_support::PnModule) -> crate::cyclic::Shape {
+        super::pn_shape(module, module.ident != TELEGRAM1_IDENT)
+    }
 }

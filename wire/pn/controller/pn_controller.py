@@ -529,8 +529,9 @@ def run(args) -> None:
 
 def list_modules(path: Path) -> int:
     """What the wire test plugs: every module the DAP may take, in its first
-    allowed slot, with the highest API of its submodules; and the name of
-    station (the DAP's DNS_CompatibleName)."""
+    allowed slot, with the highest API of its submodules and its name (the
+    GSDML's, in its primary language, which the device finds the module
+    by); and the name of station (the DAP's DNS_CompatibleName)."""
     gsdml = Gsdml(path)
     dap = gsdml.root.find(".//{*}DeviceAccessPointItem")
     print(f"station {dap.get('DNS_CompatibleName')}")
@@ -539,7 +540,8 @@ def list_modules(path: Path) -> int:
         first = int(slots.split()[0].split("..")[0])
         module = ref.get("ModuleItemTarget")
         api = max(s.api for s in gsdml.submodules(module))
-        print(f"module {module} {first} {api}")
+        name = gsdml.module(module).find("{*}ModuleInfo/{*}Name")
+        print(f"module {module} {first} {api} {gsdml.texts.get(name.get('TextId'), '')}")
     return 0
 
 

@@ -4,31 +4,46 @@
 //! plugged module's data.
 
 use pnio::rt::IoImage;
-use wire_firmware::card::{Card, PnModule, PnRecord, PrmValues};
-use wire_firmware::cyclic::{exchange, Shape};
+use wire_firmware::card::{Card, PrmValues, Profinet};
+use wire_firmware::cyclic::exchange;
 use wire_firmware::drive::Drive;
+use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
+
+/// The entries of a record the controller wrote, each with its value.
+pub type Decoded = Vec<(&'static Mapping, u16)>;
 
 pub struct Application {
     card: &'static Card,
+    profinet: Profinet,
     drive: Drive,
     plugged: Vec<(u16, &'static PnModule)>,
-    /// Each record's values, the layout's defaults until the controller
-    /// writes it.
-    records: Vec<(&'static PnRecord, PrmValues)>,
+    /// Each record's values: the GSDML's until the controller writes it.
+    records: Vec<(&'static PnRecord, Decoded)>,
 }
 
 impl Application {
-    pub fn new(card: &'static Card, plugged: &[(u16, &'static PnModule)]) -> Application {
+    pub fn new(
+        card: &'static Card,
+        profinet: Profinet,
+        plugged: &[(u16, &'static PnModule)],
+    ) -> Application {
         let records = plugged
             .iter()
             .flat_map(|(_, m)| m.records)
             .map(|r| {
-                let defaults: Vec<u16> = r.mappings.iter().map(|m| m.default).collect();
-                (r, PrmValues::EMPTY.with(r.mappings, &defaults))
+                (
+                    r,
+                    r.entries
+                        .iter()
+                        .copied()
+                        .zip(r.defaults.iter().copied())
+                        .collect(),
+                )
             })
             .collect();
         Application {
             card,
+            profinet,
             drive: Drive::new(wire_firmware::manuals::for_description(card.name)),
             plugged: plugged.to_vec(),
             records,
@@ -36,77 +51,77 @@ impl Application {
     }
 
     /// The record a Write carried, decoded by the layout (the plugged
-    /// module's record of that subslot and index), or `None` when the layout
-    /// has no such record. Its values go to the drive parameters its entries
-    /// name, where the drive holds them; the names of those the drive
-    /// refuses are returned with the values.
+    /// module's record of that index, on its data submodule), or `None` when
+    /// the layout has no such record. Its values go to the drive parameters
+    /// its entries name, where the drive holds them; the names of those the
+    /// drive refuses are returned with the values.
     pub fn write(
         &mut self,
         slot: u16,
         subslot: u16,
         index: u16,
         bytes: &[u8],
-    ) -> Option<Result<(PrmValues, Vec<&'static str>), String>> {
+    ) -> Option<Result<(Decoded, Vec<&'static str>), String>> {
         let (_, module) = self.plugged.iter().find(|(s, _)| *s == slot)?;
         let record = module
             .records
             .iter()
-            .find(|r| r.subslot == subslot && r.index == index)?;
-        let values = match (record.decode)(bytes) {
-            Ok(values) => values,
-            Err(e) => return Some(Err(format!("{e:?}"))),
-        };
+            .find(|r| module.data.subslot == subslot && r.index == index)?;
+        let mut values = vec![0; record.entries.len()];
+        if let Err(e) = record.decode(bytes, &mut values) {
+            return Some(Err(format!("{e:?}")));
+        }
+        let decoded: Decoded = record.entries.iter().copied().zip(values).collect();
         let mut refused = Vec::new();
-        for (mapping, (_, value)) in record.mappings.iter().zip(values.iter()) {
-            let Some(address) = mapping.parameter else {
+        for &(entry, value) in &decoded {
+            let Some(address) = entry.parameter else {
                 continue;
             };
             if self.drive.parameter(address).is_some() && self.drive.write(address, value).is_err()
             {
-                refused.push(mapping.name);
+                refused.push(entry.name);
             }
         }
         if let Some(held) = self
             .records
             .iter_mut()
-            .find(|(r, _)| std::ptr::eq(*r, record))
+            .find(|(r, _)| core::ptr::eq(*r, record))
         {
-            held.1 = values;
+            held.1 = decoded.clone();
         }
-        Some(Ok((values, refused)))
+        Some(Ok((decoded, refused)))
     }
 
-    /// One cycle over every plugged module's data submodule. Before the AR
-    /// reaches data exchange there is nothing to read, and nothing happens.
+    /// One cycle over every plugged module's data. Before the AR reaches
+    /// data exchange there is nothing to read, and nothing happens.
     pub fn cycle(&mut self, image: &IoImage) {
         let prm = self
             .records
             .iter()
-            .fold(PrmValues::EMPTY, |all, (record, values)| {
-                let values: Vec<u16> = values.iter().map(|(_, v)| v).collect();
-                all.with(record.mappings, &values)
+            .flat_map(|(_, decoded)| decoded)
+            .fold(PrmValues::EMPTY, |all, &(entry, value)| {
+                all.with(core::slice::from_ref(entry), &[value])
             });
         for (slot, module) in &self.plugged {
-            let shape = Shape {
-                pkw: module.pkw,
-                pzd_words: module.pzd_words,
-            };
-            for sub in module.submodules.iter().filter(|s| s.output_len > 0) {
-                let Ok(from_controller) = image.read_outputs(*slot, sub.subslot, |b, _| b.to_vec())
-                else {
-                    continue;
-                };
-                let mut to_controller = vec![0u8; usize::from(sub.input_len)];
-                exchange(
-                    self.card,
-                    shape,
-                    &prm,
-                    &mut self.drive,
-                    &from_controller,
-                    &mut to_controller,
-                );
-                let _ = image.write_inputs(*slot, sub.subslot, &to_controller);
+            let data = module.data;
+            if data.output_len == 0 {
+                continue;
             }
+            let Ok(from_controller) = image.read_outputs(*slot, data.subslot, |b, _| b.to_vec())
+            else {
+                continue;
+            };
+            let mut to_controller = vec![0u8; data.input_len];
+            let shape = (self.profinet.shape)(module);
+            exchange(
+                self.card,
+                shape,
+                &prm,
+                &mut self.drive,
+                &from_controller,
+                &mut to_controller,
+            );
+            let _ = image.write_inputs(*slot, data.subslot, &to_controller);
         }
     }
 }

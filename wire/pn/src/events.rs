@@ -1,12 +1,13 @@
 //! The device's account of the exchange: one JSON object a line on stdout.
 
 use crate::connect::ApiMismatch;
+use crate::drive::Decoded;
 use pnio::cm::{AbortReason, ArState, Record};
 use pnio::eth::MacAddr;
 use std::io::Write;
 use std::net::Ipv4Addr;
 use std::sync::{Arc, Mutex};
-use wire_firmware::card::{PnModule, PrmValues};
+use wire_firmware::gsdc_support::PnModule;
 
 #[derive(Clone)]
 pub struct Events {
@@ -38,19 +39,21 @@ impl Events {
             .iter()
             .map(|(slot, m)| {
                 let subs: Vec<String> = m
-                    .submodules
+                    .access_point
                     .iter()
+                    .chain([&m.data])
                     .map(|s| {
                         format!(
-                            r#"{{"subslot":{},"ident":{},"api":{},"input_len":{},"output_len":{}}}"#,
-                            s.subslot, s.ident, s.api, s.input_len, s.output_len
+                            r#"{{"subslot":{},"ident":{},"input_len":{},"output_len":{}}}"#,
+                            s.subslot, s.ident, s.input_len, s.output_len
                         )
                     })
                     .collect();
                 format!(
-                    r#"{{"slot":{slot},"module":"{}","ident":{},"submodules":[{}]}}"#,
-                    m.id,
+                    r#"{{"slot":{slot},"module":{},"ident":{},"api":{},"submodules":[{}]}}"#,
+                    quote(m.name),
                     m.ident,
+                    m.api,
                     subs.join(",")
                 )
             })
@@ -74,11 +77,7 @@ impl Events {
     /// refused it, or that the layout has no record at that place), and the
     /// entries whose value the drive refused.
     #[allow(clippy::type_complexity)]
-    pub fn record(
-        &self,
-        record: &Record,
-        decoded: Option<&Result<(PrmValues, Vec<&str>), String>>,
-    ) {
+    pub fn record(&self, record: &Record, decoded: Option<&Result<(Decoded, Vec<&str>), String>>) {
         let bytes: String = record.data.iter().map(|b| format!("{b:02x}")).collect();
         let decoded = match decoded {
             None => r#""layout":null"#.to_string(),
@@ -86,7 +85,10 @@ impl Events {
                 r#""layout":[{}],"drive_refused":[{}]"#,
                 values
                     .iter()
-                    .map(|(name, value)| format!(r#"{{"entry":{},"value":{value}}}"#, quote(name)))
+                    .map(|(entry, value)| format!(
+                        r#"{{"entry":{},"value":{value}}}"#,
+                        quote(entry.name)
+                    ))
                     .collect::<Vec<_>>()
                     .join(","),
                 refused

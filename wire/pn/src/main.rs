@@ -5,7 +5,7 @@
 //! layout's decoders, and runs the drive model on the cyclic data.
 //!
 //!     pn-device --card mv810-pnet02 --iface pn0 --ip 192.0.2.2 \
-//!               --station mv810-pnet02 --plug 1=IDM_PKW_12 [--seconds 60]
+//!               --station mv810-pnet02 --plug "1=PKW + 12 PZD" [--seconds 60]
 //!
 //! Every event goes to stdout as one JSON object a line, for the controller
 //! side of the wire test (and a person) to read.
@@ -29,7 +29,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
 use tap::{Seen, Tap};
-use wire_firmware::card::{Card, PnModule, Profinet};
+use wire_firmware::card::Card;
+use wire_firmware::gsdc_support::{PnDevice, PnModule};
 
 struct Args {
     card: String,
@@ -42,7 +43,7 @@ struct Args {
 }
 
 const USAGE: &str = "usage: pn-device --card NAME --iface IF --ip A.B.C.D --station NAME \
---plug SLOT=MODULE_ID... [--mismatch module-ident|input-length|api] [--seconds N]";
+--plug SLOT=MODULE... [--mismatch module-ident|input-length|api] [--seconds N]";
 
 fn parse_args() -> Result<Args, String> {
     let mut args = std::env::args().skip(1);
@@ -57,7 +58,9 @@ fn parse_args() -> Result<Args, String> {
             "--station" => station = Some(value()?),
             "--plug" => {
                 let v = value()?;
-                let (slot, module) = v.split_once('=').ok_or("--plug takes SLOT=MODULE_ID")?;
+                let (slot, module) = v
+                    .split_once('=')
+                    .ok_or("--plug takes SLOT=MODULE (the module's GSDML name)")?;
                 let slot = slot.parse().map_err(|e| format!("--plug slot: {e}"))?;
                 plug.push((slot, module.to_string()));
             }
@@ -118,15 +121,16 @@ fn run(args: &Args) -> Result<(), String> {
     let profinet = card
         .profinet
         .ok_or(format!("{} has no PROFINET part", card.name))?;
-    let plugged = plugged_modules(card, profinet, &args.plug)?;
+    let device = profinet.device;
+    let plugged = plugged_modules(card, device, &args.plug)?;
     let mac = mac_of(&args.iface)?;
     let events = Events::stdout();
 
-    let model = device_model(profinet, &args.station, mac, &plugged, args.mismatch);
+    let model = device_model(device, &args.station, mac, &plugged, args.mismatch);
     let setup = DeviceSetup {
         dcp: DcpConfig {
             mac,
-            properties: dcp_identity(card, profinet, &args.station, args.ip.octets()),
+            properties: dcp_identity(card, device, &args.station, args.ip.octets()),
         },
         model,
         activity_seed: activity_seed(mac),
@@ -148,7 +152,7 @@ fn run(args: &Args) -> Result<(), String> {
     let mismatch = args.mismatch;
     let apis = {
         let plugged = plugged.clone();
-        move |slot, subslot| api_of(profinet, &plugged, mismatch, slot, subslot)
+        move |slot, subslot| api_of(device, &plugged, mismatch, slot, subslot)
     };
     let mut device = Device::new(setup, eth, Tap::new(udp, seen_tx, apis));
     {
@@ -166,7 +170,7 @@ fn run(args: &Args) -> Result<(), String> {
     let deadline = args
         .seconds
         .map(|s| Instant::now() + Duration::from_secs(s));
-    let mut application = drive::Application::new(card, &plugged);
+    let mut application = drive::Application::new(card, profinet, &plugged);
     while deadline.is_none_or(|d| Instant::now() < d) && !acyclic.is_finished() {
         while let Ok(seen) = seen.try_recv() {
             report(&events, &mut application, seen);
@@ -185,23 +189,30 @@ fn run(args: &Args) -> Result<(), String> {
 /// The modules the arguments plug, each checked against the card's table.
 fn plugged_modules(
     card: &Card,
-    profinet: &'static Profinet,
+    device: &'static PnDevice,
     plug: &[(u16, String)],
 ) -> Result<Vec<(u16, &'static PnModule)>, String> {
     plug.iter()
-        .map(|(slot, id)| {
-            let module = profinet.modules.iter().find(|m| m.id == id).ok_or(format!(
-                "{} has no module {id:?}; its modules: {}",
-                card.name,
-                profinet
-                    .modules
-                    .iter()
-                    .map(|m| m.id)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))?;
+        .map(|(slot, name)| {
+            let module = device
+                .modules
+                .iter()
+                .find(|m| m.name == name)
+                .ok_or(format!(
+                    "{} has no module {name:?}; its modules: {}",
+                    card.name,
+                    device
+                        .modules
+                        .iter()
+                        .map(|m| format!("{:?}", m.name))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ))?;
             if !module.slots.contains(slot) {
-                return Err(format!("{id} goes in slots {:?}, not {slot}", module.slots));
+                return Err(format!(
+                    "{name:?} goes in slots {:?}, not {slot}",
+                    module.slots
+                ));
             }
             Ok((*slot, module))
         })
@@ -227,12 +238,12 @@ fn report(events: &Events, application: &mut drive::Application, seen: Seen) {
     }
 }
 
-fn dcp_identity(card: &Card, profinet: &Profinet, station: &str, ip: [u8; 4]) -> DeviceProperties {
+fn dcp_identity(card: &Card, device: &PnDevice, station: &str, ip: [u8; 4]) -> DeviceProperties {
     DeviceProperties {
         name_of_station: station.to_string(),
         type_of_station: card.name.to_string(),
-        vendor_id: profinet.vendor_id,
-        device_id: profinet.device_id,
+        vendor_id: device.vendor_id,
+        device_id: device.device_id,
         // pnio's values: an IO device, instance 1, its DCP options.
         device_role: 0x0100,
         device_instance: 1,

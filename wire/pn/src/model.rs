@@ -1,11 +1,11 @@
-//! pnio's device model from the card's PROFINET table: what the device
-//! accepts in a Connect. Nothing here is a number of its own; a deliberate
+//! pnio's device model from the layout's device table (`PN_DEVICE`): what
+//! the device accepts in a Connect. Nothing here is a number of its own; a deliberate
 //! mismatch (the wire test's negative case) is the only change, and it says
 //! which.
 
 use pnio::cm::{DeviceModel, SlotModel, SubmoduleModel};
 use pnio::eth::MacAddr;
-use wire_firmware::card::{PnModule, PnSubmodule, Profinet};
+use wire_firmware::gsdc_support::{PnDevice, PnModule, PnSubmodule};
 
 /// How the device departs from the layout, to show that the controller sees it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -25,18 +25,19 @@ pub enum Mismatch {
 const MAX_ALARM_DATA_LENGTH: u16 = 200;
 
 pub fn device_model(
-    profinet: &Profinet,
+    device: &PnDevice,
     station: &str,
     mac: MacAddr,
     plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
 ) -> DeviceModel {
+    let access_point = [device.dap_submodule, device.interface_submodule];
     let mut slots = vec![SlotModel {
         slot: 0,
-        module_ident: profinet.dap_ident,
-        submodules: profinet
-            .dap_submodules
+        module_ident: device.dap_ident,
+        submodules: access_point
             .iter()
+            .chain(device.ports)
             .map(submodule_model)
             .collect(),
     }];
@@ -44,7 +45,7 @@ pub fn device_model(
         let mut model = SlotModel {
             slot,
             module_ident: module.ident,
-            submodules: module.submodules.iter().map(submodule_model).collect(),
+            submodules: submodules(module).map(|s| submodule_model(&s)).collect(),
         };
         match mismatch {
             Some(Mismatch::ModuleIdent) => model.module_ident += 1,
@@ -58,8 +59,8 @@ pub fn device_model(
         slots.push(model);
     }
     DeviceModel {
-        vendor_id: profinet.vendor_id,
-        device_id: profinet.device_id,
+        vendor_id: device.vendor_id,
+        device_id: device.device_id,
         // pnio's: the one instance of the device on its interface.
         instance: 1,
         station_name: station.to_string(),
@@ -69,32 +70,44 @@ pub fn device_model(
     }
 }
 
+/// A module's submodules: PROFIdrive's access point, if it has one, and the
+/// one with the data.
+fn submodules(module: &PnModule) -> impl Iterator<Item = PnSubmodule> {
+    module.access_point.into_iter().chain([module.data])
+}
+
 fn submodule_model(s: &PnSubmodule) -> SubmoduleModel {
+    // A submodule's IO data fits an RT frame (1440 bytes): the layouts'
+    // modules carry at most 32.
+    let bytes = |n: usize| u16::try_from(n).expect("IO data of an RT frame");
     SubmoduleModel {
         subslot: s.subslot,
         submodule_ident: s.ident,
-        input_len: s.input_len,
-        output_len: s.output_len,
+        input_len: bytes(s.input_len),
+        output_len: bytes(s.output_len),
     }
 }
 
 /// The API of the submodule at (slot, subslot), as the layout places it (or,
-/// with [`Mismatch::Api`], API 0 for a plugged module).
+/// with [`Mismatch::Api`], API 0 for a plugged module): the access point's
+/// submodules are in API 0, a module's in the module's.
 pub fn api_of(
-    profinet: &Profinet,
+    device: &PnDevice,
     plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
     slot: u16,
     subslot: u16,
 ) -> Option<u32> {
-    let submodules = if slot == 0 {
-        profinet.dap_submodules
-    } else {
-        plugged.iter().find(|(s, _)| *s == slot)?.1.submodules
-    };
-    let api = submodules.iter().find(|s| s.subslot == subslot)?.api;
+    if slot == 0 {
+        let mut access_point = [device.dap_submodule, device.interface_submodule]
+            .into_iter()
+            .chain(device.ports.iter().copied());
+        return access_point.any(|s| s.subslot == subslot).then_some(0);
+    }
+    let (_, module) = plugged.iter().find(|(s, _)| *s == slot)?;
+    submodules(module).find(|s| s.subslot == subslot)?;
     Some(match mismatch {
-        Some(Mismatch::Api) if slot != 0 => 0,
-        _ => api,
+        Some(Mismatch::Api) => 0,
+        _ => module.api,
     })
 }
