@@ -416,13 +416,7 @@ impl Target {
                 slave.nodes.report(Some(NodeEvent { kind, node, code }))
             }
         }
-        let outputs = vec![
-            0;
-            bus.station
-                .slave
-                .plugged()
-                .map_or(0, |p| p.data_lengths().1)
-        ];
+        let outputs = vec![0; bus.output_len()];
         let read = (0..CYCLES)
             .any(|_| bus.exchange(&outputs) == Err(Outcome::Event(PeripheralEvent::Diagnostics)));
         if !read {
