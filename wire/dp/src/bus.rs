@@ -141,6 +141,11 @@ impl<'a> Bus<'a> {
         }
     }
 
+    /// Bytes of output the master sends the slave.
+    pub fn output_len(&mut self) -> usize {
+        self.peripheral().pi_q().len()
+    }
+
     /// The last diagnosis the master read of the slave.
     pub fn diagnostics(&mut self) -> Option<PeripheralDiagnostics<'_>> {
         self.dp.get_mut(self.handle).last_diagnostics()

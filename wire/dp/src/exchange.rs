@@ -7,7 +7,6 @@
 //! slave does not have). Each exchange prints what crossed the bus, and
 //! each failure the module, the byte offset and both values.
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -20,6 +19,7 @@ use wire_firmware::drive::Drive;
 use crate::bus::{Bus, MasterConfig, Outcome};
 use crate::gsd::{data_lengths, Gsd};
 use crate::manuals::{self, DriveEvent, Step};
+use crate::report::{byte, failed, first_difference, hex, words};
 use crate::slave::{DpSlave, State};
 
 /// The slave's station address: MD810 1.7 reads "3 号变频器", the drive at
@@ -416,13 +416,7 @@ impl Target {
                 slave.nodes.report(Some(NodeEvent { kind, node, code }))
             }
         }
-        let outputs = vec![
-            0;
-            bus.station
-                .slave
-                .plugged()
-                .map_or(0, |p| p.data_lengths().1)
-        ];
+        let outputs = vec![0; bus.output_len()];
         let read = (0..CYCLES)
             .any(|_| bus.exchange(&outputs) == Err(Outcome::Event(PeripheralEvent::Diagnostics)));
         if !read {
@@ -613,47 +607,4 @@ fn telegram(bus: &mut Bus, startup: &Startup, what: &str, out: &str, expect: &st
 fn print_telegrams(outputs: &[u8], inputs: &[u8]) {
     println!("    Data_Exch  out {}", words(outputs));
     println!("               in  {}", words(inputs));
-}
-
-/// Prints a failure; `false`.
-pub fn failed(why: &str) -> bool {
-    println!("    FAILED: {why}");
-    false
-}
-
-/// The first byte where `a` and `b` differ, with both (`None` past an end).
-fn first_difference(a: &[u8], b: &[u8]) -> Option<(usize, Option<u8>, Option<u8>)> {
-    (0..a.len().max(b.len()))
-        .map(|i| (i, a.get(i).copied(), b.get(i).copied()))
-        .find(|(_, x, y)| x != y)
-}
-
-fn byte(value: Option<u8>) -> String {
-    value.map_or("nothing".into(), |b| format!("0x{b:02X}"))
-}
-
-/// `03 00 34`.
-pub fn hex(bytes: &[u8]) -> String {
-    let mut text = String::new();
-    for (i, b) in bytes.iter().enumerate() {
-        if i > 0 {
-            text.push(' ');
-        }
-        write!(text, "{b:02X}").unwrap();
-    }
-    text
-}
-
-/// `10F0 0800`: the bytes as the manuals print telegrams.
-pub fn words(bytes: &[u8]) -> String {
-    let mut text = String::new();
-    for (i, pair) in bytes.chunks(2).enumerate() {
-        if i > 0 {
-            text.push(' ');
-        }
-        for b in pair {
-            write!(text, "{b:02X}").unwrap();
-        }
-    }
-    text
 }

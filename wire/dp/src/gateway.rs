@@ -10,9 +10,10 @@ use gsd_parser::{Module, PrmValueConstraint};
 use profirust::Baudrate;
 use wire_firmware::nodes::Nodes;
 
-use crate::exchange::{failed, words, Startup, Target};
+use crate::exchange::{Startup, Target};
 use crate::gsd::data_lengths;
 use crate::manuals::{NodeExchange, NodeParameters};
+use crate::report::{failed, words};
 use crate::slave::Plugged;
 
 /// The words one node carries each way.

@@ -9,5 +9,6 @@ pub mod exchange;
 pub mod gateway;
 pub mod gsd;
 pub mod manuals;
+pub mod report;
 pub mod slave;
 pub mod station;

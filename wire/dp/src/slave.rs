@@ -253,22 +253,25 @@ impl DpSlave {
             return Reply::ShortConfirmation;
         }
         // A new Set_Prm clears the faults of the last one.
-        self.faults = Faults {
-            // This slave supports neither Sync nor Freeze.
-            not_supported: status & (SYNC_REQ | FREEZE_REQ) != 0,
-            ..Faults::default()
-        };
+        self.faults = Faults::default();
+        if status & (SYNC_REQ | FREEZE_REQ) != 0 {
+            // This slave supports neither Sync nor Freeze: Not_Supported
+            // alone, the parameters may be right.
+            self.faults.not_supported = true;
+            self.forget_parameters();
+            return Reply::ShortConfirmation;
+        }
         // Another ident number is a parameter fault, as User_Prm_Data the
-        // layout's codec refuses is.
+        // layout's codec refuses is, and a gateway's nodes whose totals
+        // its codec refuses.
         let ident = u16::from_be_bytes([pdu[4], pdu[5]]);
         let user_prm = &pdu[SET_PRM_FIXED..];
         let prm = (ident == self.profibus.ident_number)
             .then(|| (self.profibus.decode_user_prm)(user_prm).ok())
             .flatten();
-        // A gateway's nodes must make totals within its limits.
         let node_setup = self.profibus.gateway.map(|g| (g.nodes)(user_prm).ok());
         match (prm, node_setup) {
-            (Some(prm), None | Some(Some(_))) if !self.faults.not_supported => {
+            (Some(prm), None | Some(Some(_))) => {
                 self.prm = Some(prm);
                 self.node_setup = node_setup.flatten();
                 self.master = Some(request.h.sa);
@@ -440,19 +443,21 @@ impl DpSlave {
     /// A Set_Prm the slave does not take: Prm_Fault, waiting for parameters.
     fn refuse_prm(&mut self) {
         self.faults.prm = true;
-        self.prm = None;
-        self.node_setup = None;
-        self.plugged = None;
-        self.state = State::WaitPrm;
+        self.forget_parameters();
     }
 
     /// Back to power-on's state, keeping the drive.
     fn restart(&mut self) {
-        self.state = State::WaitPrm;
         self.master = None;
         self.faults = Faults::default();
+        self.forget_parameters();
+    }
+
+    /// Waiting for parameters, with none.
+    fn forget_parameters(&mut self) {
         self.prm = None;
         self.node_setup = None;
         self.plugged = None;
+        self.state = State::WaitPrm;
     }
 }

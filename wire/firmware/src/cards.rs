@@ -463,31 +463,24 @@ mod md810_gateway {
             offset: 0,
             value: config.node_count.into(),
         })?;
-        let mut nodes = [None; NODES];
-        for (i, slot) in nodes.iter_mut().enumerate() {
-            let node = FIRST_NODE + i as u8;
-            if let (Some(input_offset), Some(output_offset)) =
-                (config.input_offset(node), config.output_offset(node))
-            {
-                *slot = Some(NodeData {
-                    node,
-                    input_offset,
-                    input_words: config.input_words[i],
-                    output_offset,
-                    output_words: config.output_words[i],
-                });
-            }
-        }
-        let in_use: [NodeData; NODES] = nodes.map(|n| {
-            n.unwrap_or(NodeData {
-                node: 0,
-                input_offset: 0,
-                input_words: 0,
-                output_offset: 0,
-                output_words: 0,
-            })
-        });
+        let mut in_use = [NodeData {
+            node: 0,
+            input_offset: 0,
+            input_words: 0,
+            output_offset: 0,
+            output_words: 0,
+        }; NODES];
         let count = usize::from(config.node_count);
+        for (i, data) in in_use.iter_mut().enumerate().take(count) {
+            let node = FIRST_NODE + i as u8;
+            *data = NodeData {
+                node,
+                input_offset: config.input_offset(node).unwrap_or(0),
+                input_words: config.input_words[i],
+                output_offset: config.output_offset(node).unwrap_or(0),
+                output_words: config.output_words[i],
+            };
+        }
         Ok(NodeSetup::new(
             totals.input_len(),
             totals.output_len(),
