@@ -172,9 +172,8 @@ impl Config {
         // The layout first: its path is the one returned.
         files.sort_by_key(|a| !matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::CHeader));
         if files.is_empty() {
-            return Err(BuildError::Description {
+            return Err(BuildError::NoLayout {
                 path: description.to_path_buf(),
-                rendered: "the description gives no firmware layout".into(),
             });
         }
         let mut paths = write(&files, out_dir.as_ref())?;
@@ -234,7 +233,8 @@ impl Config {
             }
             Err(refused) => Err(BuildError::Description {
                 path: description.to_path_buf(),
-                rendered: compiled.render(refused, usize::MAX),
+                findings: compiled.findings,
+                refused,
             }),
         }
     }
@@ -265,7 +265,7 @@ pub(crate) struct Compiled {
 /// Why a description gave no files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
-pub(crate) enum Refused {
+pub enum Refused {
     /// The description, or a GSDML it gives, has errors.
     Errors,
     /// It has warnings, and warnings are denied.
@@ -325,19 +325,15 @@ impl Findings {
     }
 }
 
-impl Compiled {
-    /// Every finding rendered (at most `max` per text), then what refused
-    /// the description.
-    pub fn render(&self, refused: Refused, max: usize) -> String {
-        let mut out: String = self.findings.iter().flat_map(|f| f.rendered(max)).collect();
-        out += match refused {
-            Refused::Errors => "nothing written: fix the errors above",
-            Refused::Warnings => {
-                "nothing written: the description has warnings, and they are denied"
-            }
-        };
-        out
-    }
+/// Every finding rendered (at most `max` per text), then what refused the
+/// description.
+fn render(findings: &[Findings], refused: Refused, max: usize) -> String {
+    let mut out: String = findings.iter().flat_map(|f| f.rendered(max)).collect();
+    out += match refused {
+        Refused::Errors => "nothing written: fix the errors above",
+        Refused::Warnings => "nothing written: the description has warnings, and they are denied",
+    };
+    out
 }
 
 impl Compiler {
@@ -618,9 +614,18 @@ pub enum BuildError {
     /// The description could not be read.
     Read { path: PathBuf, error: io::Error },
     /// The description has errors, or warnings while they are denied, or a
-    /// GSDML it gives breaks the PI schema: the diagnostics, rendered as
-    /// gsdc prints them. Nothing was written.
-    Description { path: PathBuf, rendered: String },
+    /// GSDML it gives breaks the PI schema. Nothing was written. The
+    /// findings are values (each diagnostic's code, severity, message, place
+    /// and help, with the text it points into: the description's, then each
+    /// refused GSDML's), so a build script can act on a code; `Display`
+    /// renders them as gsdc prints them.
+    Description {
+        path: PathBuf,
+        findings: Vec<Findings>,
+        refused: Refused,
+    },
+    /// A layout was asked for, and the description gives none.
+    NoLayout { path: PathBuf },
     /// The files could not all be written: the path, the OS error, and the
     /// files already replaced (as far as the disk allowed, none).
     Write(WriteError),
@@ -634,7 +639,12 @@ impl fmt::Display for BuildError {
             BuildError::Read { path, error } => {
                 write!(f, "cannot read {}: {error}", path.display())
             }
-            BuildError::Description { rendered, .. } => f.write_str(rendered),
+            BuildError::Description {
+                findings, refused, ..
+            } => f.write_str(&render(findings, *refused, usize::MAX)),
+            BuildError::NoLayout { path } => {
+                write!(f, "{} gives no firmware layout", path.display())
+            }
             BuildError::Write(e) => e.fmt(f),
             BuildError::Schema { dir, why } => {
                 write!(f, "cannot use the PI schema in {}: {why}", dir.display())
@@ -648,7 +658,9 @@ impl std::error::Error for BuildError {
         match self {
             BuildError::Read { error, .. } => Some(error),
             BuildError::Write(e) => Some(e),
-            BuildError::Description { .. } | BuildError::Schema { .. } => None,
+            BuildError::Description { .. }
+            | BuildError::NoLayout { .. }
+            | BuildError::Schema { .. } => None,
         }
     }
 }
@@ -724,6 +736,36 @@ mod tests {
             files("n_pkw.toml", &without_pkw)
         ])
         .is_ok());
+    }
+
+    /// A build script gets the findings as values: the code and the place
+    /// of each, with the text it points into, as well as their rendering.
+    #[test]
+    fn a_refused_description_gives_its_diagnostics_as_values() {
+        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let fixture = manifest.join("tests/fixtures/invalid/address_out_of_range.toml");
+        let out = std::env::temp_dir().join(format!("gsdc-build-error-{}", std::process::id()));
+        let error = generate(&fixture, &out).unwrap_err();
+        assert!(!out.exists());
+        let BuildError::Description {
+            findings, refused, ..
+        } = &error
+        else {
+            panic!("{error:?}");
+        };
+        assert_eq!(*refused, Refused::Errors);
+        let description = &findings[0];
+        let e101 = description
+            .diagnostics
+            .iter()
+            .find(|d| d.code == "E101")
+            .unwrap();
+        let span = e101.span.clone().unwrap();
+        let (line, _) = crate::line_col(&description.text, span.start);
+        assert!(description.text.lines().nth(line - 1).is_some());
+        let rendered = error.to_string();
+        assert!(rendered.contains("error[E101]"), "{rendered}");
+        assert!(rendered.ends_with("nothing written: fix the errors above"));
     }
 
     #[test]

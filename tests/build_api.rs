@@ -36,10 +36,12 @@ fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
         .deny_warnings(true)
         .generate(&md810, &out)
         .unwrap_err();
-    let BuildError::Description { path, rendered } = &e else {
+    let BuildError::Description { path, findings, .. } = &e else {
         panic!("{e:?}");
     };
     assert_eq!(path, &md810);
+    assert!(findings[0].diagnostics.iter().any(|d| d.code == "W101"));
+    let rendered = e.to_string();
     assert!(rendered.contains("warning[W101]"), "{rendered}");
     let text = std::fs::read_to_string(&md810).unwrap();
     let line = 1 + text[..text.find("ident_number = {").unwrap()]
@@ -91,13 +93,13 @@ fn errors_say_which_file_and_what_went_wrong() {
     }
 
     let invalid = Path::new(MANIFEST).join("tests/fixtures/invalid/unknown_ppo.toml");
-    match gsdc::build::generate_rust(&invalid, &dir) {
-        Err(BuildError::Description { path, rendered }) => {
-            assert_eq!(path, invalid);
-            assert!(rendered.contains("error[E104]"), "{rendered}");
-        }
-        other => panic!("{other:?}"),
-    }
+    let e = gsdc::build::generate_rust(&invalid, &dir).unwrap_err();
+    let BuildError::Description { path, findings, .. } = &e else {
+        panic!("{e:?}");
+    };
+    assert_eq!(path, &invalid);
+    assert!(findings[0].diagnostics.iter().any(|d| d.code == "E104"));
+    assert!(e.to_string().contains("error[E104]"), "{e}");
 
     let no_schema = Config::new()
         .xsd(dir.join("no-schema"))

@@ -1237,20 +1237,55 @@ mod tests {
         assert!(messages[1].contains("`GSDC_PKW_BYTES` twice"));
     }
 
-    /// Rust keeps a field's mask and its values apart; C does not: a value
-    /// named "Mask" is refused, and nothing is written.
+    /// Rust keeps a field's mask and its values apart, a diagnosis area's
+    /// bits and its values, a gateway's diagnosis types and their codes; C
+    /// does not. A value whose C name meets another takes its number, as in
+    /// Rust, and the layout is written: such names used to be E900, a bug in
+    /// gsdc, for descriptions the loader accepts.
     #[test]
-    fn a_description_whose_names_meet_in_c_gives_no_files() {
-        let text = include_str!("../../descriptions/mv810-pnet02.toml")
+    fn a_value_whose_c_name_meets_another_takes_its_number() {
+        let word = include_str!("../../descriptions/mv810-pnet02.toml")
             .replace("en = \"Asynchronous\"", "en = \"Mask\"");
-        let ir = load("mv810-pnet02.toml", &text);
-        let problems = crate::compile(&ir).unwrap_err();
-        let messages: Vec<_> = problems.iter().map(|d| d.message.as_str()).collect();
-        assert_eq!(
-            messages,
-            ["gsdc generated mv810_pnet02_layout.h declaring \
-              `MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK` twice; nothing was written"]
+        let area = include_str!("../../descriptions/md810dp.toml").replace(
+            "[[profibus.diagnosis.areas]]",
+            "[[profibus.diagnosis.areas]]\nbit = [7, 7]\nvalues = [{ value = 1, text = \"Last\" }]\n\n[[profibus.diagnosis.areas]]",
         );
+        let gateway = include_str!("../../descriptions/md810-gateway.toml")
+            .replace(
+                "en = \"CANopen network fault\"",
+                "en = \"Parameter error code node\"",
+            )
+            .replace(
+                "en = \"Node in the configuration not online\"",
+                "en = \"Node\"",
+            )
+            .replace("en = \"Drive reports fault\"", "en = \"Type at\"");
+        for (name, text, declared) in [
+            (
+                "mv810-pnet02.toml",
+                word,
+                "#define MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK_0 0U",
+            ),
+            (
+                "md810dp.toml",
+                area,
+                "#define MD810DP_DIAGNOSIS_BIT_7_LAST_1 1U",
+            ),
+            (
+                "md810-gateway.toml",
+                gateway,
+                "#define MD810_GATEWAY_DIAG_PARAMETER_ERROR_CODE_NODE_34 34U",
+            ),
+        ] {
+            let ir = load(name, &text);
+            let files = crate::compile(&ir).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+            let header = files
+                .iter()
+                .find(|f| f.kind == ArtifactKind::CHeader)
+                .unwrap();
+            let header = String::from_utf8_lossy(&header.contents);
+            assert!(header.contains(declared), "{name}: {declared}");
+        }
     }
 
     #[test]

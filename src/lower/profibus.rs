@@ -552,11 +552,16 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
     let bits = (i64::from(length) - 1) * 8;
     let mut constants = Scope::default();
     let mut types = Scope::default();
-    let areas = raw
+    let mut areas: Vec<DiagnosisArea> = raw
         .areas
         .iter()
         .filter_map(|a| diagnosis_area(cx, a, bits, (&mut constants, &mut types)))
         .collect();
+    let taken: Vec<String> = areas
+        .iter()
+        .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
+        .collect();
+    super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
     Some(Diagnosis { length, areas })
 }
 
