@@ -52,12 +52,16 @@ from profinet.rpc import IOCRSetup, RPCCon, get_station_info
 from profinet.rt import build_iocr_configs
 from profinet.util import ethernet_socket, get_mac
 
-# 32 x 31.25 us send clock, reduction ratio 8: an 8 ms cycle, which Python
-# keeps (profinet-py warns below 8 ms) and the GSDML's SendClock 32 and
-# ReductionRatio 8 allow. The watchdog: 10 cycles.
-SEND_CLOCK_FACTOR = 32
-REDUCTION_RATIO = 8
-WATCHDOG_FACTOR = 10
+# The cycle: the shortest the GSDML's SendClock and ReductionRatio allow of
+# at least 8 ms (256 x 31.25 us), which Python keeps (profinet-py warns
+# below 8 ms). The watchdog and the device's data hold time: 30 cycles
+# (240 ms at 8 ms): on a machine of two cores shared with compilers, 10
+# cycles (80 ms) let a scheduling pause of the Python sender end an AR.
+SHORTEST_CYCLE = 256
+WATCHDOG_FACTOR = 30
+# The GSDML schema's defaults for TimingProperties.
+DEFAULT_SEND_CLOCKS = "32"
+DEFAULT_REDUCTION_RATIOS = "1 2 4 8 16 32 64 128 256 512"
 
 TYPE_SIZES = {
     "Unsigned8": 1, "Integer8": 1, "Unsigned16": 2, "Integer16": 2,
@@ -128,6 +132,19 @@ class Gsdml:
         primary = self.root.find(".//{*}PrimaryLanguage")
         for text in primary.findall("{*}Text") if primary is not None else []:
             self.texts[text.get("TextId")] = text.get("Value")
+
+    def cycle(self) -> tuple[int, int]:
+        """(send clock factor, reduction ratio) of the shortest cycle of at
+        least SHORTEST_CYCLE the interface's TimingProperties allow."""
+        timing = self.root.find(".//{*}InterfaceSubmoduleItem/{*}ApplicationRelations/{*}TimingProperties")
+        get = (lambda name, default: timing.get(name, default)) if timing is not None else (lambda _, d: d)
+        clocks = [int(c) for c in get("SendClock", DEFAULT_SEND_CLOCKS).split()]
+        ratios = [int(r) for r in get("ReductionRatio", DEFAULT_REDUCTION_RATIOS).split()]
+        cycles = [(c * r, c, r) for c in clocks for r in ratios if c * r >= SHORTEST_CYCLE]
+        if not cycles:
+            raise CannotRun(f"no cycle of at least {SHORTEST_CYCLE / 32:g} ms in SendClock {clocks} x ReductionRatio {ratios}")
+        _, clock, ratio = min(cycles)
+        return clock, ratio
 
     def module(self, module_id: str) -> ET.Element:
         for item in self.root.iter():
@@ -313,7 +330,7 @@ def io_slots(path: Path, module_id: str, slot: int, subs: list[Submodule]):
     return slots
 
 
-def connect(args, slots):
+def connect(args, slots, cycle: tuple[int, int]):
     t0 = time.monotonic()
     sock = ethernet_socket(args.iface)
     try:
@@ -325,7 +342,7 @@ def connect(args, slots):
         sock.close()
     say(f"DCP identify: {info.name} at {info.ip}, vendor 0x{info.vendor_high:02X}{info.vendor_low:02X}"
         f" device 0x{info.device_high:02X}{info.device_low:02X} ({(time.monotonic() - t0) * 1000:.0f} ms)")
-    setup = IOCRSetup(slots=slots, send_clock_factor=SEND_CLOCK_FACTOR, reduction_ratio=REDUCTION_RATIO,
+    setup = IOCRSetup(slots=slots, send_clock_factor=cycle[0], reduction_ratio=cycle[1],
                       watchdog_factor=WATCHDOG_FACTOR, data_hold_factor=WATCHDOG_FACTOR)
     rpc = RPCCon(info, timeout=3)
     return rpc, info, src, setup, t0
@@ -481,7 +498,8 @@ def run(args) -> None:
     say(f"{args.module} in slot {args.slot}: " + ", ".join(
         f"subslot {s.subslot} ident 0x{s.ident:X} API 0x{s.api:X} in {sum(i.size for i in s.inputs)} "
         f"out {sum(i.size for i in s.outputs)}" for s in subs))
-    rpc, info, src, setup, t0 = connect(args, slots)
+    cycle = gsdml.cycle()
+    rpc, info, src, setup, t0 = connect(args, slots, cycle)
     check_identity(gsdml, info)
     try:
         result = rpc.connect(src, iocr_setup=setup)
@@ -496,13 +514,14 @@ def run(args) -> None:
     if args.expect_refusal is not None:
         rpc.disconnect()
         raise Failed("the device accepted a Connect it should have refused")
-    say(f"Connect: AR up, input frame 0x{result.input_frame_id:04X}, output frame 0x{result.output_frame_id:04X}")
+    say(f"Connect: AR up, input frame 0x{result.input_frame_id:04X}, output frame 0x{result.output_frame_id:04X}, "
+        f"cycle {cycle[0] * cycle[1] / 32:g} ms (send clock {cycle[0]}, reduction ratio {cycle[1]})")
     apis = sorted({s.api for s in subs})
     cyclic = None
     try:
         written = write_records(rpc, events, args.slot, subs)
         input_cr, output_cr = build_iocr_configs(slots, result.input_frame_id, result.output_frame_id,
-                                                 SEND_CLOCK_FACTOR, REDUCTION_RATIO, WATCHDOG_FACTOR)
+                                                 cycle[0], cycle[1], WATCHDOG_FACTOR)
         mac = info.mac if isinstance(info.mac, bytes) else bytes.fromhex(info.mac.replace(":", ""))
         cyclic = CyclicController(args.iface, src, mac, input_cr, output_cr)
         cyclic.start()
