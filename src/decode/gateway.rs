@@ -218,14 +218,7 @@ pub(super) fn diagnosis(
 /// The code of a block of type `t`, read as the firmware reads it.
 fn code(g: &Gateway, d: &Diagnosis, t: &DiagType, block: &[u8]) -> DiagCodeValue {
     // The firmware's readers need only the places; the type was checked above.
-    let layout = firmware::DiagLayout {
-        type_at: d.type_at.into(),
-        node_at: d.node_at.into(),
-        code_at: d.code_at.into(),
-        first_node: g.first_node,
-        last_node: g.last_node,
-        types: &[],
-    };
+    let layout = crate::pkw::gateway_diag_layout(g, d);
     let invariant =
         "lowering makes a type's blocks end with its code, and the header gave this type's length";
     let (value, text) = match &t.code {
