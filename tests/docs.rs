@@ -1,15 +1,7 @@
 //! The complete examples in docs/description.md are descriptions gsdc
 //! accepts and compiles, so the guide cannot drift from the format.
 
-/// The guide's TOML examples, in order.
-fn examples() -> Vec<&'static str> {
-    let guide = include_str!("../docs/description.md");
-    guide
-        .split("```toml\n")
-        .skip(1)
-        .map(|rest| &rest[..rest.find("```").unwrap()])
-        .collect()
-}
+use crate::support::descriptions::guide_examples as examples;
 
 fn compiled(example: &str) -> gsdc::Ir {
     let (ir, diagnostics) = gsdc::load("example.toml", example);
