@@ -7,20 +7,11 @@ use std::collections::BTreeSet;
 
 /// Codes written as string literals (`"E104"`) anywhere under src/.
 fn codes_in_source() -> BTreeSet<String> {
-    let mut codes = BTreeSet::new();
-    let mut dirs = vec![support::checkout("src")];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                dirs.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") && !path.ends_with("src/rules.rs")
-            {
-                codes.extend(literal_codes(&std::fs::read_to_string(path).unwrap()));
-            }
-        }
-    }
-    codes
+    support::rust_files("src")
+        .into_iter()
+        .filter(|path| !path.ends_with("src/rules.rs"))
+        .flat_map(|path| literal_codes(&std::fs::read_to_string(path).unwrap()))
+        .collect()
 }
 
 fn literal_codes(text: &str) -> Vec<String> {

@@ -52,6 +52,7 @@
 //!   mount, `chattr`, a compiler) calls it and leaves the case out; under CI
 //!   (`CI=true`) it fails instead, so no test skips there.
 //!   `./scripts/test.sh` installs the packages the tests need.
+//!   No test takes the `ignore` attribute (`suite.rs` checks it).
 //! - `support::ran_in_own_process()`: for a test that changes what the
 //!   whole process shares (an environment variable); it runs alone in a
 //!   process of its own.
@@ -93,4 +94,5 @@ mod output_safety;
 mod outputs;
 mod properties;
 mod rule_docs;
+mod suite;
 mod xsd;

@@ -9,6 +9,7 @@ pub mod descriptions;
 pub mod xsd;
 
 use std::ffi::OsStr;
+use std::io::Write as _;
 use std::ops::Deref;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -140,6 +141,24 @@ pub fn file_names(dir: &Path) -> Vec<String> {
     names
 }
 
+/// The `.rs` files under `dir` (in the checkout), at any depth.
+pub fn rust_files(dir: &str) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut dirs = vec![checkout(dir)];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
 /// Whether `command` runs and exits 0: a probe for what this machine can do.
 pub fn succeeds(command: &mut Command) -> bool {
     command.output().is_ok_and(|o| o.status.success())
@@ -164,7 +183,9 @@ pub fn cannot_run(why: &str) {
         !under_ci(),
         "{why}; with CI=true no test skips (./scripts/test.sh installs what the tests need, run it as root)"
     );
-    eprintln!("skipped: {why}");
+    // Past libtest's capture, which hides what a passing test prints: a
+    // skip is said.
+    let _ = writeln!(std::io::stderr(), "skipped: {why}");
 }
 
 /// For a test that changes what the whole process shares (an environment
