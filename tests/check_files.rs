@@ -2,7 +2,7 @@
 //! their content, streams, UTF-16, names that would fake output, and
 //! findings printed as each file is done.
 
-use crate::support::{self, gsdc as run, gsdc_command, stderr, stdout};
+use crate::support::{self, gsdc, gsdc_command, stderr, stdout};
 use std::io::{BufRead, BufReader, Write};
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -11,7 +11,7 @@ const MV810_GSDML: &str = "GSDML-V2.32-MEGMEET-MV800-20230830.xml";
 
 /// The files `gsdc build` writes for `description` into `dir`.
 fn built(description: &str, dir: &Path) {
-    let output = run(["build", description, "--out", dir.to_str().unwrap()]);
+    let output = gsdc(["build", description, "--out", dir.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
 }
 
@@ -42,7 +42,7 @@ fn files_are_told_apart_by_their_content() {
         path("md810dp_layout.rs"),
         path("zeros.xml"),
     );
-    let output = run(["check", &gsd, &gsdml, &layout, &zeros]);
+    let output = gsdc(["check", &gsd, &gsdml, &layout, &zeros]);
     assert_eq!(output.status.code(), Some(1));
     let lines: Vec<String> = stdout(&output).lines().map(str::to_string).collect();
     let neither = |name: &str| {
@@ -140,7 +140,7 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
         vec!["check", wide_arg],
         vec!["check", "--xsd", pi_schema.to_str().unwrap(), wide_arg],
     ] {
-        let output = run(&args);
+        let output = gsdc(&args);
         assert_eq!(output.status.code(), Some(0), "{}", stdout(&output));
         assert!(stdout(&output).ends_with(": 0 error(s), 0 warning(s)\n"));
     }
@@ -159,7 +159,7 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
     let gsd = gsdc::gsd::decode(&bytes).into_owned();
     let wide_gsd = dir.join("SIEM8045.GSE");
     std::fs::write(&wide_gsd, utf16le_with_mark(&gsd)).unwrap();
-    let output = run(["check", wide_gsd.to_str().unwrap()]);
+    let output = gsdc(["check", wide_gsd.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     let said = stdout(&output);
     assert_eq!(said.matches("error[").count(), 1, "{said}");
@@ -225,7 +225,7 @@ fn control_characters_in_file_names_are_escaped() {
         support::corpus_file("gsd/mbuesch__dummy_modular.gsd"),
     )
     .unwrap();
-    let output = run(["check", path.to_str().unwrap()]);
+    let output = gsdc(["check", path.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     let said = stdout(&output);
     assert!(
@@ -246,13 +246,13 @@ fn control_characters_in_file_names_are_escaped() {
         "{said}"
     );
 
-    let json = run(["check", "--format", "json", path.to_str().unwrap()]);
+    let json = gsdc(["check", "--format", "json", path.to_str().unwrap()]);
     let last: serde_json::Value =
         serde_json::from_str(stdout(&json).lines().last().unwrap()).unwrap();
     assert_eq!(last["file"], path.to_str().unwrap(), "JSON keeps the name");
 
     let missing = dir.join("gone\n.gsd");
-    let output = run(["check", missing.to_str().unwrap()]);
+    let output = gsdc(["check", missing.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(2));
     assert_eq!(stderr(&output).lines().count(), 1, "{}", stderr(&output));
     assert!(

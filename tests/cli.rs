@@ -43,7 +43,7 @@ fn build_writes_the_gsd_and_exits_0() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    let said = String::from_utf8_lossy(&again.stdout);
+    let said = stdout(&again);
     assert!(!said.contains("wrote"), "{said}");
     assert_eq!(
         said.matches("unchanged").count(),
@@ -165,7 +165,7 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     .unwrap();
     let changed = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(changed.status.code(), Some(1));
-    let diff = String::from_utf8_lossy(&changed.stdout);
+    let diff = stdout(&changed);
     assert!(diff.contains("-Min_Slave_Intervall         = 1"), "{diff}");
     assert!(diff.contains("+Min_Slave_Intervall         = 2"), "{diff}");
     let after: Vec<(String, Vec<u8>)> = file_names(&out)
@@ -191,7 +191,7 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
     );
     let clean = gsdc(["check", out.join("MD810DP.GSD").to_str().unwrap()]);
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
-    assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
+    assert!(stdout(&clean).contains("0 error(s)"));
 
     // Max_Input_Len beyond 244 (the corpus lists it as a known finding).
     let broken = gsdc(["check", "../shared/corpus/gsd/mbuesch__dummy_modular.gsd"]);

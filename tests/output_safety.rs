@@ -12,7 +12,7 @@
 //! `src/output.rs` and the kills at random times; under CI they fail.
 //! Permission bits are not used: root ignores them.
 
-use crate::support::{self, descriptions, file_names as names_in, stderr};
+use crate::support::{self, descriptions, file_names, stderr};
 use gsdc::build::{write_files, Outcome};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
@@ -67,7 +67,7 @@ fn assert_untouched(dir: &Path) {
     let mut expected = MD810_FILES.map(String::from).to_vec();
     expected.sort();
     assert_eq!(
-        names_in(dir),
+        file_names(dir),
         expected,
         "a temporary or partial file is left"
     );
@@ -121,7 +121,7 @@ fn a_missing_output_directory_is_created() {
     let out = dir.join("a/b/dist");
     let output = build(Path::new(MD810), &out);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(names_in(&out).len(), MD810_FILES.len());
+    assert_eq!(file_names(&out).len(), MD810_FILES.len());
 
     let files = [Artifact::new(ArtifactKind::Gsd, "X.GSD", b"x".to_vec())];
     let lib_out = dir.join("c/d");
@@ -161,7 +161,7 @@ fn an_output_path_that_is_a_directory_changes_nothing() {
     let output = build(Path::new(MD810), &dir);
     assert_io_error(&output, &gsd, "Is a directory (os error 21)");
     assert!(stderr(&output).contains("no file was changed"));
-    assert!(names_in(&gsd) == ["keep"]);
+    assert!(file_names(&gsd) == ["keep"]);
     std::fs::remove_dir_all(&gsd).unwrap();
     std::fs::write(&gsd, format!("old {}", MD810_FILES[0])).unwrap();
     assert_untouched(&dir);
@@ -252,7 +252,7 @@ fn a_failure_after_some_files_were_written_names_them() {
         );
     }
     assert_eq!(
-        names_in(&dir).len(),
+        file_names(&dir).len(),
         MD810_FILES.len(),
         "a temporary is left"
     );
@@ -309,7 +309,7 @@ impl TwoVersions {
     /// Panics on a mixed set, a partial file or a file left over.
     #[track_caller]
     fn version_in(&self, dir: &Path) -> usize {
-        let mut found: Vec<(String, Vec<u8>)> = names_in(dir)
+        let mut found: Vec<(String, Vec<u8>)> = file_names(dir)
             .into_iter()
             .map(|name| {
                 let contents = std::fs::read(dir.join(&name)).unwrap();
@@ -366,7 +366,7 @@ fn symbolic_links_in_the_output_directory_are_never_written_through() {
     );
     let mut expected = MD810_FILES.map(String::from).to_vec();
     expected.sort();
-    assert_eq!(names_in(&out), expected);
+    assert_eq!(file_names(&out), expected);
 }
 
 #[test]
@@ -508,7 +508,7 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
         );
         return;
     };
-    let leftovers: Vec<String> = names_in(&out)
+    let leftovers: Vec<String> = file_names(&out)
         .into_iter()
         .filter(|name| name.contains(".gsdc-"))
         .collect();
@@ -516,7 +516,7 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
         leftovers.len(),
         2,
         "{:?}: {}",
-        names_in(&out),
+        file_names(&out),
         stderr(&killed)
     );
     let after = build(&versions.descriptions[1], &out);
@@ -565,7 +565,7 @@ fn builds_killed_at_random_times_never_leave_a_partial_file() {
         std::thread::sleep(delay);
         let _ = child.kill();
         let _ = child.wait();
-        for name in names_in(&out) {
+        for name in file_names(&out) {
             let contents = std::fs::read(out.join(&name)).unwrap();
             if name.contains(".gsdc-") {
                 left += 1;
