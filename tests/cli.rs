@@ -54,7 +54,8 @@ fn build_writes_the_gsd_and_exits_0() {
 
 #[test]
 fn an_invalid_description_exits_1_and_writes_nothing() {
-    let out = support::scratch("invalid").join("out");
+    let dir = support::scratch("invalid");
+    let out = dir.join("out");
     let output = gsdc([
         "build",
         "descriptions/md810dp.toml",

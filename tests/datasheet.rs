@@ -552,7 +552,8 @@ fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
 
 #[test]
 fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
-    let out = support::scratch("bad").join("out");
+    let dir = support::scratch("bad");
+    let out = dir.join("out");
     let run = gsdc([
         "doc",
         "descriptions/md810dp.toml",
@@ -571,7 +572,8 @@ fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
 
 #[test]
 fn gsdc_doc_usage_and_io_errors_exit_2() {
-    let out = support::scratch("missing").join("out");
+    let dir = support::scratch("missing");
+    let out = dir.join("out");
     let missing = gsdc([
         "doc",
         "descriptions/no-such.toml",
@@ -675,7 +677,8 @@ fn the_update_time_is_exact_to_the_quarter_microsecond() {
 
 #[test]
 fn gsdc_doc_refuses_two_descriptions_with_one_name() {
-    let out = support::scratch("twice").join("out");
+    let dir = support::scratch("twice");
+    let out = dir.join("out");
     let run = gsdc([
         "doc",
         "descriptions/md810dp.toml",

@@ -46,7 +46,9 @@ pub struct Scratch(PathBuf);
 
 /// A scratch directory named after the calling file and `name`, which must
 /// be unique within that file (and the process id: two runs never share
-/// one). Anything left there by an earlier run is removed first.
+/// one). Anything left there by an earlier run is removed first. Keep it in
+/// a variable for as long as the test uses it: a temporary
+/// (`scratch("x").join("out")`) is removed at the end of its statement.
 #[track_caller]
 pub fn scratch(name: &str) -> Scratch {
     let caller = std::panic::Location::caller().file();
