@@ -31,3 +31,23 @@ fn no_test_is_ignored() {
         .collect();
     assert!(ignored.is_empty(), "ignored tests: {ignored:#?}");
 }
+
+/// With `autotests = false`, a file in `tests/` that `tests.rs` does not
+/// declare is compiled by nobody: its tests would pass CI unrun.
+#[test]
+fn every_test_file_is_a_module_of_the_one_binary() {
+    let root = support::checkout("tests");
+    let declared = std::fs::read_to_string(root.join("tests.rs")).unwrap();
+    let undeclared: Vec<String> = std::fs::read_dir(&root)
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "rs"))
+        .filter_map(|path| Some(path.file_stem()?.to_str()?.to_string()))
+        .filter(|stem| stem != "tests")
+        .filter(|stem| !declared.lines().any(|line| line == format!("mod {stem};")))
+        .collect();
+    assert!(
+        undeclared.is_empty(),
+        "not in tests/tests.rs: {undeclared:?}"
+    );
+}
