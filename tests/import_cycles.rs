@@ -4,14 +4,14 @@
 //! children's; what counts is every `crate::`, `super::` and `self::` path
 //! outside comments and unit tests, resolved to the module it names.
 
+use crate::support;
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
 
 type Module = Vec<String>;
 
 /// Every module of src/ by its path (`["gsd", "model"]`), with its text.
 fn modules() -> BTreeMap<Module, String> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let root = support::checkout("src");
     let mut found = BTreeMap::new();
     let mut dirs = vec![root.clone()];
     while let Some(dir) = dirs.pop() {
