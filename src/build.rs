@@ -13,9 +13,11 @@
 //! ```
 //!
 //! and in the firmware, the support module once at the crate root and each
-//! layout in a module of its own:
+//! layout in a module of its own (firmware code, not a doctest: it needs the
+//! build script's OUT_DIR; tests/firmware/src/lib.rs does this and is built
+//! and tested by the tests):
 //!
-//! ```ignore
+//! ```text
 //! include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 //! pub mod md810dp {
 //!     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
@@ -172,9 +174,8 @@ impl Config {
         // The layout first: its path is the one returned.
         files.sort_by_key(|a| !matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::CHeader));
         if files.is_empty() {
-            return Err(BuildError::Description {
+            return Err(BuildError::NoLayout {
                 path: description.to_path_buf(),
-                rendered: "the description gives no firmware layout".into(),
             });
         }
         let mut paths = write(&files, out_dir.as_ref())?;
@@ -234,7 +235,8 @@ impl Config {
             }
             Err(refused) => Err(BuildError::Description {
                 path: description.to_path_buf(),
-                rendered: compiled.render(refused, usize::MAX),
+                findings: compiled.findings,
+                refused,
             }),
         }
     }
@@ -265,7 +267,7 @@ pub(crate) struct Compiled {
 /// Why a description gave no files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
-pub(crate) enum Refused {
+pub enum Refused {
     /// The description, or a GSDML it gives, has errors.
     Errors,
     /// It has warnings, and warnings are denied.
@@ -325,19 +327,15 @@ impl Findings {
     }
 }
 
-impl Compiled {
-    /// Every finding rendered (at most `max` per text), then what refused
-    /// the description.
-    pub fn render(&self, refused: Refused, max: usize) -> String {
-        let mut out: String = self.findings.iter().flat_map(|f| f.rendered(max)).collect();
-        out += match refused {
-            Refused::Errors => "nothing written: fix the errors above",
-            Refused::Warnings => {
-                "nothing written: the description has warnings, and they are denied"
-            }
-        };
-        out
-    }
+/// Every finding rendered (at most `max` per text), then what refused the
+/// description.
+fn render(findings: &[Findings], refused: Refused, max: usize) -> String {
+    let mut out: String = findings.iter().flat_map(|f| f.rendered(max)).collect();
+    out += match refused {
+        Refused::Errors => "nothing written: fix the errors above",
+        Refused::Warnings => "nothing written: the description has warnings, and they are denied",
+    };
+    out
 }
 
 impl Compiler {
@@ -498,31 +496,62 @@ fn read_beside(folder: &Path, name: &str) -> Result<Vec<u8>, String> {
     })
 }
 
-/// Two descriptions that give files of one name with different contents.
+/// Two descriptions that cannot be built together: they give files of one
+/// name with different contents, or C layouts that declare the same names
+/// (their prefixes meet: `m.toml`'s `m_pkw_pzd2_out_t` is also
+/// `m_pkw.toml`'s), which could not be included in one translation unit.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub(crate) struct Collision {
-    pub file_name: String,
+    pub clash: Clash,
     pub first: PathBuf,
     pub second: PathBuf,
 }
 
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum Clash {
+    /// The file's name.
+    File(String),
+    /// The names both C layouts declare, in order.
+    CNames(Vec<String>),
+}
+
 impl fmt::Display for Collision {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} and {} both give {}, with different contents",
-            self.first.display(),
-            self.second.display(),
-            self.file_name
-        )
+        let (first, second) = (self.first.display(), self.second.display());
+        write!(f, "{first} and {second} {}", self.clash)
+    }
+}
+
+/// What two descriptions both give: `both give x_y_layout.rs, with
+/// different contents`, `both declare the C names `a`, `b` (...)`.
+impl fmt::Display for Clash {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Clash::File(name) => write!(f, "both give {name}, with different contents"),
+            Clash::CNames(names) => {
+                const SHOWN: usize = 3;
+                let shown: Vec<String> =
+                    names.iter().take(SHOWN).map(|n| format!("`{n}`")).collect();
+                let more = match names.len() {
+                    n if n > SHOWN => format!(" and {} more", n - SHOWN),
+                    _ => String::new(),
+                };
+                write!(
+                    f,
+                    "both declare the C names {}{more}: their layouts cannot be included together",
+                    shown.join(", ")
+                )
+            }
+        }
     }
 }
 
 /// The files of several descriptions as one set, each once: a file that two
 /// descriptions give with the same bytes (a support module every layout
 /// shares, the same description given twice) is one file; two different
-/// files of one name are a collision, and every collision is returned.
+/// files of one name, or two C layouts that declare a name both, are a
+/// collision, and every collision is returned.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Vec<Collision>> {
     let mut merged: Vec<(PathBuf, Artifact)> = Vec::new();
@@ -532,11 +561,14 @@ pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>
             match merged.iter().find(|(_, a)| a.file_name == file.file_name) {
                 Some((_, same)) if same.contents == file.contents => {}
                 Some((first, _)) => collisions.push(Collision {
-                    file_name: file.file_name,
+                    clash: Clash::File(file.file_name),
                     first: first.clone(),
                     second: description.clone(),
                 }),
-                None => merged.push((description.clone(), file)),
+                None => {
+                    collisions.extend(c_name_clashes(&merged, &description, &file));
+                    merged.push((description.clone(), file));
+                }
             }
         }
     }
@@ -547,6 +579,36 @@ pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>
     }
 }
 
+/// The names a new C layout declares that a layout of another description
+/// already declares, one collision per description.
+fn c_name_clashes(
+    merged: &[(PathBuf, Artifact)],
+    description: &Path,
+    file: &Artifact,
+) -> Vec<Collision> {
+    if file.kind != ArtifactKind::CHeader {
+        return Vec::new();
+    }
+    let names = c_names(file);
+    merged
+        .iter()
+        .filter(|(_, other)| other.kind == ArtifactKind::CHeader)
+        .filter_map(|(first, other)| {
+            let both: Vec<String> = c_names(other).intersection(&names).cloned().collect();
+            (!both.is_empty()).then(|| Collision {
+                clash: Clash::CNames(both),
+                first: first.clone(),
+                second: description.to_path_buf(),
+            })
+        })
+        .collect()
+}
+
+fn c_names(header: &Artifact) -> std::collections::BTreeSet<String> {
+    let text = String::from_utf8_lossy(&header.contents);
+    crate::emit::c::declared_names(&text).into_iter().collect()
+}
+
 /// Why a build wrote nothing, or not everything.
 #[derive(Debug)]
 #[non_exhaustive]
@@ -554,9 +616,18 @@ pub enum BuildError {
     /// The description could not be read.
     Read { path: PathBuf, error: io::Error },
     /// The description has errors, or warnings while they are denied, or a
-    /// GSDML it gives breaks the PI schema: the diagnostics, rendered as
-    /// gsdc prints them. Nothing was written.
-    Description { path: PathBuf, rendered: String },
+    /// GSDML it gives breaks the PI schema. Nothing was written. The
+    /// findings are values (each diagnostic's code, severity, message, place
+    /// and help, with the text it points into: the description's, then each
+    /// refused GSDML's), so a build script can act on a code; `Display`
+    /// renders them as gsdc prints them.
+    Description {
+        path: PathBuf,
+        findings: Vec<Findings>,
+        refused: Refused,
+    },
+    /// A layout was asked for, and the description gives none.
+    NoLayout { path: PathBuf },
     /// The files could not all be written: the path, the OS error, and the
     /// files already replaced (as far as the disk allowed, none).
     Write(WriteError),
@@ -570,7 +641,12 @@ impl fmt::Display for BuildError {
             BuildError::Read { path, error } => {
                 write!(f, "cannot read {}: {error}", path.display())
             }
-            BuildError::Description { rendered, .. } => f.write_str(rendered),
+            BuildError::Description {
+                findings, refused, ..
+            } => f.write_str(&render(findings, *refused, usize::MAX)),
+            BuildError::NoLayout { path } => {
+                write!(f, "{} gives no firmware layout", path.display())
+            }
             BuildError::Write(e) => e.fmt(f),
             BuildError::Schema { dir, why } => {
                 write!(f, "cannot use the PI schema in {}: {why}", dir.display())
@@ -584,7 +660,9 @@ impl std::error::Error for BuildError {
         match self {
             BuildError::Read { error, .. } => Some(error),
             BuildError::Write(e) => Some(e),
-            BuildError::Description { .. } | BuildError::Schema { .. } => None,
+            BuildError::Description { .. }
+            | BuildError::NoLayout { .. }
+            | BuildError::Schema { .. } => None,
         }
     }
 }
@@ -618,6 +696,78 @@ mod tests {
             file_name: file_name.into(),
             contents: contents.as_bytes().to_vec(),
         }
+    }
+
+    /// `m.toml`'s module "PKW + 2 PZD" and `m_pkw.toml`'s "2 PZD" both
+    /// give `m_pkw_pzd2_out_t` in C: different files, but one translation
+    /// unit cannot hold both. The build refuses the pair, naming both; the
+    /// same description twice, or two whose prefixes do not meet, build.
+    #[test]
+    fn c_layouts_whose_names_meet_collide() {
+        let text = include_str!("../descriptions/mv810-pnet02.toml");
+        let files = |name: &str, text: &str| {
+            let ir = crate::testing::load(name, text).0.unwrap();
+            // The C layouts alone: both give one GSDML file name too.
+            let mut files = crate::compile(&ir).unwrap();
+            files.retain(|f| f.kind == ArtifactKind::CHeader);
+            (PathBuf::from(name), files)
+        };
+        let without_pkw = text.replace("module_pkw = \"with\"", "module_pkw = \"without\"");
+        assert_ne!(without_pkw, text);
+        let collisions = merge(vec![
+            files("m.toml", text),
+            files("m_pkw.toml", &without_pkw),
+        ])
+        .unwrap_err();
+        assert_eq!(collisions.len(), 1, "{collisions:?}");
+        let Clash::CNames(names) = &collisions[0].clash else {
+            panic!("{collisions:?}");
+        };
+        assert!(names.iter().any(|n| n == "m_pkw_pzd2_out_t"), "{names:?}");
+        assert!(names
+            .iter()
+            .all(|n| n.to_ascii_lowercase().starts_with("m_pkw_")));
+        let message = collisions[0].to_string();
+        assert!(
+            message.starts_with("m.toml and m_pkw.toml both declare the C names `"),
+            "{message}"
+        );
+        assert!(merge(vec![files("m.toml", text), files("m.toml", text)]).is_ok());
+        assert!(merge(vec![
+            files("m.toml", text),
+            files("n_pkw.toml", &without_pkw)
+        ])
+        .is_ok());
+    }
+
+    /// A build script gets the findings as values: the code and the place
+    /// of each, with the text it points into, as well as their rendering.
+    #[test]
+    fn a_refused_description_gives_its_diagnostics_as_values() {
+        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let fixture = manifest.join("tests/fixtures/invalid/address_out_of_range.toml");
+        let out = std::env::temp_dir().join(format!("gsdc-build-error-{}", std::process::id()));
+        let error = generate(&fixture, &out).unwrap_err();
+        assert!(!out.exists());
+        let BuildError::Description {
+            findings, refused, ..
+        } = &error
+        else {
+            panic!("{error:?}");
+        };
+        assert_eq!(*refused, Refused::Errors);
+        let description = &findings[0];
+        let e101 = description
+            .diagnostics
+            .iter()
+            .find(|d| d.code == "E101")
+            .unwrap();
+        let span = e101.span.clone().unwrap();
+        let (line, _) = crate::line_col(&description.text, span.start);
+        assert!(description.text.lines().nth(line - 1).is_some());
+        let rendered = error.to_string();
+        assert!(rendered.contains("error[E101]"), "{rendered}");
+        assert!(rendered.ends_with("nothing written: fix the errors above"));
     }
 
     #[test]

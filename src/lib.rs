@@ -26,6 +26,7 @@ mod load;
 mod lower;
 mod pkw;
 pub mod rules;
+mod spec;
 mod spelling;
 mod symbol;
 #[cfg(test)]

@@ -4,7 +4,22 @@
 //! document gives them. E codes are errors, W codes warnings; the document
 //! says what each rule asks and why.
 
-use crate::diag::Severity;
+/// How bad a finding is: a rule's code says it (E, W).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum Severity {
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
 
 /// A rule: its stable code, its severity and its title.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -6,7 +6,7 @@
 //! `crate::output::write_files`).
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
-use crate::build::{merge, Compiler, Config, Refused};
+use crate::build::{merge, Clash, Compiler, Config, Refused};
 use crate::output::{existing, stale_files, write_files, Outcome};
 use crate::{Artifact, ArtifactKind, Language};
 use std::path::{Path, PathBuf};
@@ -166,14 +166,17 @@ pub(super) fn display_error(e: &crate::build::BuildError, path: &Path) -> String
 pub(super) fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Status> {
     merge(sets).map_err(|collisions| {
         for c in &collisions {
+            let clash = match &c.clash {
+                Clash::File(name) => Clash::File(display_name(Path::new(name))),
+                names => names.clone(),
+            };
             warn(&format!(
-                "error: {} and {} both give {}, with different contents",
+                "error: {} and {} {clash}",
                 display_name(&c.first),
                 display_name(&c.second),
-                display_name(Path::new(&c.file_name)),
             ));
         }
-        warn("nothing written: each file may come from one description only (rename a file_name, or a description)");
+        warn("nothing written: each file, and each C name, may come from one description only (rename a file_name, or a description)");
         Status::InputErrors
     })
 }

@@ -98,7 +98,7 @@ impl Module<'_> {
                 items.iter().map(|item| item.text.text.en.clone()).collect()
             }
             Module::Ppo(m) => ppo_word_names(ir, m.layout, direction),
-            Module::Gateway(_, m) => (1..=m.words).map(super::gateway::word_name).collect(),
+            Module::Gateway(_, m) => (1..=m.words).map(word_name).collect(),
         }
     }
 
@@ -229,6 +229,11 @@ fn pkw_word_names(kind: PkwKind) -> &'static [&'static str] {
         PkwKind::Profidrive => &["PKE", "IND", "PWE1", "PWE2"],
         PkwKind::None => &[],
     }
+}
+
+/// A gateway module's word `n`, from 1: `word 3`.
+pub(super) fn word_name(n: u8) -> String {
+    format!("word {n}")
 }
 
 #[cfg(test)]

@@ -1,9 +1,8 @@
 //! A cyclic telegram of one module: each word with its name and value, the
 //! PKW request or response, the control or status word's fields, and what
 //! each mapped PZD word carries under the mapping in force. A gateway's
-//! modules are read in `super::gateway`.
+//! modules are read in `super::gateway`, into the types here.
 
-use super::gateway::{GatewayData, NodeWord};
 use super::mapping::{meaning, MappingInForce, ValueSource};
 use super::module::Module;
 use super::pkw_channel::{self, Pkw};
@@ -21,6 +20,47 @@ pub struct Telegram {
     pub pkw: Option<Pkw>,
     /// A gateway module's: the node configuration it is read against.
     pub gateway: Option<GatewayData>,
+}
+
+/// What the node configuration in force adds up to, and why the card
+/// refuses it when it does.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct NodeTotals {
+    /// The nodes in use: the first `node_count` node numbers.
+    pub node_count: u16,
+    /// Words the nodes in use send (the master's input) and receive.
+    pub input_words: u32,
+    pub output_words: u32,
+    /// The same in bytes, and the most the gateway carries.
+    pub input_len: u32,
+    pub output_len: u32,
+    pub max_input_len: u16,
+    pub max_output_len: u16,
+    /// Why the card refuses the configuration, checked as the firmware's
+    /// `totals` checks it; `None` when it takes it.
+    pub refused: Option<String>,
+}
+
+/// A gateway module's telegram: the configuration its words are read
+/// against.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct GatewayData {
+    /// `parameter_telegram` with `--prm`, else `default`.
+    pub source: ValueSource,
+    pub nodes: NodeTotals,
+    /// Whether each word is named after its node: the module carries all
+    /// the words the nodes in use carry its way, so the data order places
+    /// them. A module that carries part of them could be anywhere in the
+    /// data, depending on the modules plugged before it.
+    pub attributed: bool,
+}
+
+/// The node a word of a gateway module belongs to, and its number among
+/// that node's words, from 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct NodeWord {
+    pub node: u8,
+    pub word: u16,
 }
 
 /// One 16-bit word, high byte first.

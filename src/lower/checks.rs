@@ -8,9 +8,7 @@ use std::collections::BTreeSet;
 use std::ops::Range;
 use toml::Spanned;
 
-/// GSD string limits (GSD specification V5.1; FIELDBUS-NOTES §3).
-pub const GSD_NAME_LEN: usize = 32;
-pub const GSD_INFO_LEN: usize = 256;
+pub use crate::spec::{GSD_INFO_LEN, GSD_NAME_LEN};
 
 pub struct Checker {
     diagnostics: Diagnostics,
@@ -399,12 +397,8 @@ pub fn is_clean(s: &str) -> bool {
 fn is_unsafe_char(c: char) -> bool {
     let code = u32::from(c);
     c.is_control()
-        || matches!(
-            c,
-            '\u{2028}' | '\u{2029}' | '\u{061C}' | '\u{200E}' | '\u{200F}'
-        )
-        || ('\u{202A}'..='\u{202E}').contains(&c)
-        || ('\u{2066}'..='\u{2069}').contains(&c)
+        || matches!(c, '\u{2028}' | '\u{2029}')
+        || crate::spec::is_bidi_control(c)
         || (0xFDD0..=0xFDEF).contains(&code)
         || code & 0xFFFE == 0xFFFE
 }

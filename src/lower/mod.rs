@@ -9,6 +9,7 @@ mod choices;
 mod gateway;
 mod mappings;
 mod meaning;
+mod ppo;
 mod profibus;
 mod profinet;
 mod telegram;

@@ -80,6 +80,8 @@ pub fn lower(
         "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
     );
     let value_items = records::value_items(mappings, &modules);
+    let reading_plans = records::reading_plans(mappings, &modules);
+    let fixed = records::fixed_values(mappings, &modules);
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {
         file_name: format!(
@@ -132,6 +134,8 @@ pub fn lower(
         }),
         modules,
         value_items,
+        records: reading_plans,
+        fixed,
     })
 }
 
