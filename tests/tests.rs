@@ -62,7 +62,8 @@
 //!
 //! `tests/firmware` (a no_std crate built from the layouts) and `tests/c`
 //! (C programs built from the C layouts) are not modules: `generated_rust.rs`
-//! and `c_header.rs` build and run them.
+//! and `c_header.rs` build and run them; `wire_dp.rs` builds and runs the
+//! workspace `wire/` (the DP exchange on the wire).
 
 mod support;
 
@@ -97,4 +98,5 @@ mod outputs;
 mod properties;
 mod rule_docs;
 mod suite;
+mod wire_dp;
 mod xsd;

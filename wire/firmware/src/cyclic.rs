@@ -28,8 +28,8 @@ pub fn exchange(
     to_master: &mut [u8],
 ) {
     let pzd_at = if shape.pkw { PKW_BYTES } else { 0 };
-    if let Some(kind) = card.pkw.filter(|_| shape.pkw) {
-        let answer = crate::pkw::answer(kind, drive, &words(&from_master[..PKW_BYTES]));
+    if shape.pkw {
+        let answer = crate::pkw::answer(card.pkw, drive, &words(&from_master[..PKW_BYTES]));
         put_words(&mut to_master[..PKW_BYTES], &answer);
     }
     for word in 1..=shape.pzd_words {

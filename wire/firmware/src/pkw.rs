@@ -4,24 +4,17 @@
 //! written to the [`Drive`].
 
 use crate::drive::{Drive, Refused};
-use crate::gsdc_support::U16Be;
+use crate::gsdc_support::{PkwCodec, U16Be};
 
-/// The PKW channels of the descriptions with PROFIBUS. MV810's station,
-/// command, address and value (PROFINET only) is for wire/pn to add, with
-/// the error codes its manual gives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PkwKind {
-    /// PKE, IND, PWE high, PWE low with MD810's command codes.
-    PkeIndPwe,
-    /// The PROFIdrive profile's PKE (AK, SPM, PNU), IND, PWE1, PWE2.
-    Profidrive,
-}
-
-/// The card's answer to the PKW `request` the master sent.
-pub fn answer(kind: PkwKind, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
-    match kind {
-        PkwKind::PkeIndPwe => pke_ind_pwe(drive, request),
-        PkwKind::Profidrive => profidrive(drive, request),
+/// The card's answer to the PKW `request` the master sent, by the layout's
+/// codec `codec`; no answer (all 0) without one. MV810's station, command,
+/// address and value (PROFINET only) is for wire/pn to answer, with the
+/// error codes its manual gives.
+pub fn answer(codec: PkwCodec, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
+    match codec {
+        PkwCodec::PkeIndPwe => pke_ind_pwe(drive, request),
+        PkwCodec::Profidrive => profidrive(drive, request),
+        PkwCodec::StationCommand | PkwCodec::None => [U16Be::new(0); 4],
     }
 }
 

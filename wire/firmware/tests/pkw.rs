@@ -2,9 +2,9 @@
 //! layout's codecs.
 
 use wire_firmware::drive::Drive;
-use wire_firmware::gsdc_support::U16Be;
+use wire_firmware::gsdc_support::{PkwCodec, U16Be};
 use wire_firmware::manuals;
-use wire_firmware::pkw::{answer, PkwKind};
+use wire_firmware::pkw::answer;
 
 /// `"10F0 0800 0000 1388"`, as the manuals print PKW: four hex words.
 fn pkw(hex: &str) -> [U16Be; 4] {
@@ -23,7 +23,7 @@ fn md810() -> Drive {
 #[test]
 fn md810_reads_f0_08() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
     assert_eq!(answered, pkw("10F0 0800 0000 1388"));
 }
 
@@ -32,10 +32,10 @@ fn md810_reads_f0_08() {
 #[test]
 fn md810_writes_f0_08() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("20F0 0800 0000 07D0"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("20F0 0800 0000 07D0"));
     assert_eq!(answered, pkw("10F0 0800 0000 07D0"));
     assert_eq!(drive.read(0xF008), Ok(2000));
-    let again = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
+    let again = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
     assert_eq!(again, pkw("10F0 0800 0000 07D0"));
 }
 
@@ -46,16 +46,16 @@ fn md810_writes_f0_08() {
 #[test]
 fn md810_refuses_an_illegal_address_and_command() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 6300 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 6300 0000 0000"));
     assert_eq!(answered, pkw("70F0 6300 0000 0002"));
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("30F0 0800 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("30F0 0800 0000 0000"));
     assert_eq!(answered, pkw("70F0 0800 0000 0001"));
 }
 
 /// No request, no response: what a master sends before it has one.
 #[test]
 fn no_request_no_response() {
-    for kind in [PkwKind::PkeIndPwe, PkwKind::Profidrive] {
+    for kind in [PkwCodec::PkeIndPwe, PkwCodec::Profidrive] {
         let mut drive = md810();
         let answered = answer(kind, &mut drive, &pkw("0000 0000 0000 0000"));
         assert_eq!(answered, pkw("0000 0000 0000 0000"), "{kind:?}");
@@ -68,7 +68,11 @@ fn no_request_no_response() {
 fn profidrive_refuses_an_unknown_pnu() {
     let mut drive = Drive::new(manuals::for_description("profidrive"));
     // Request 1 (read) of PNU 0x3E8 = 1000, subindex 0: this test's own.
-    let answered = answer(PkwKind::Profidrive, &mut drive, &pkw("13E8 0000 0000 0000"));
+    let answered = answer(
+        PkwCodec::Profidrive,
+        &mut drive,
+        &pkw("13E8 0000 0000 0000"),
+    );
     assert_eq!(answered, pkw("73E8 0000 0000 0000"));
 }
 
