@@ -22,12 +22,14 @@ use toml::Spanned;
 /// Lowers a parsed description: the IR when there is no error, and every
 /// diagnostic, warnings included. `source_name` is the file name written into
 /// generated headers; `text` is the description's text, for the fingerprint.
-/// `files` gives the bytes of a file the description names (its symbol).
+/// `files` gives the bytes of a file the description names (its symbol);
+/// without it nothing is read and the IR has no device symbol, which only
+/// the device files need (a build of firmware layouts alone).
 pub fn lower(
     desc: &Description,
     source_name: &str,
     text: &str,
-    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+    files: Option<&dyn Fn(&str) -> Result<Vec<u8>, String>>,
 ) -> (Option<Ir>, Diagnostics) {
     if let Some(missing) = missing_key(desc, text) {
         return (None, Diagnostics(vec![missing]));
@@ -156,10 +158,14 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
 fn lower_device(
     cx: &mut Checker,
     d: &raw::Device,
-    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+    files: Option<&dyn Fn(&str) -> Result<Vec<u8>, String>>,
 ) -> ir::Device {
     ir::Device {
-        symbol: d.symbol.as_ref().and_then(|path| symbol(cx, path, files)),
+        symbol: d
+            .symbol
+            .as_ref()
+            .zip(files)
+            .and_then(|(path, files)| symbol(cx, path, files)),
         vendor: cx.gsd_string(&d.vendor, checks::GSD_NAME_LEN, "vendor"),
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, checks::GSD_NAME_LEN, "model"),
