@@ -34,8 +34,8 @@ fn stderr(output: &Output) -> String {
 /// md810dp.toml copied into `dir` without the `symbols/` folder beside it:
 /// a firmware crate that took the description and not the bitmap.
 fn description_without_its_symbol(dir: &Path) -> PathBuf {
-    let text = std::fs::read_to_string(Path::new(MANIFEST).join("descriptions/md810dp.toml"))
-        .unwrap();
+    let text =
+        std::fs::read_to_string(Path::new(MANIFEST).join("descriptions/md810dp.toml")).unwrap();
     assert!(text.contains("symbol = \"symbols/md810dp.png\""));
     let path = dir.join("md810dp.toml");
     std::fs::write(&path, text).unwrap();
