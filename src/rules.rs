@@ -165,6 +165,11 @@ pub const RULES: &[Rule] = &[
     rule("E320", "attribute value malformed"),
     rule("E399", "not valid against the PI schema"),
     rule("E400", "neither a GSD nor a GSDML file"),
+    rule("E401", "a device symbol that is not a whole bitmap"),
+    rule(
+        "W402",
+        "a device symbol not of 70 x 40 pixels in 16 colours",
+    ),
     rule("E410", "not a hex digit"),
     rule("E411", "odd number of hex digits"),
     rule("E412", "wrong length"),

@@ -90,3 +90,88 @@ fn generate_rust_and_generate_c_need_no_device_symbol() {
     };
     assert!(rendered.contains("error[E141]"), "{rendered}");
 }
+
+// ---------------------------------------------------------------------------
+// `gsdc check dist/*` after a build.
+
+/// The files a build and `gsdc doc` write for md810dp.toml into `dir`.
+fn built_with_datasheet(dir: &Path) -> Vec<String> {
+    let out = dir.to_str().unwrap();
+    for command in ["build", "doc"] {
+        let output = gsdc(&[command, "descriptions/md810dp.toml", "--out", out]);
+        assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    }
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn check_of_everything_a_build_writes_passes() {
+    let dir = scratch("check-dist");
+    let names = built_with_datasheet(&dir);
+    let paths: Vec<String> = names
+        .iter()
+        .map(|n| dir.join(n).to_str().unwrap().to_string())
+        .collect();
+    let mut args = vec!["check"];
+    args.extend(paths.iter().map(String::as_str));
+    let output = gsdc(&args);
+    let out = stdout(&output);
+    assert_eq!(output.status.code(), Some(0), "{out}{}", stderr(&output));
+    for (name, path) in names.iter().zip(&paths) {
+        let checked = format!("{path}: 0 error(s), 0 warning(s)");
+        let skipped = format!(
+            "note: {path} is made by gsdc (a firmware layout, support file or datasheet), not a device file: skipped"
+        );
+        let device_file =
+            name.ends_with(".GSD") || name.ends_with(".xml") || name.ends_with(".bmp");
+        let expected = if device_file { checked } else { skipped };
+        assert!(out.lines().any(|l| l == expected), "{name}: {out}");
+    }
+    assert_eq!(
+        names.iter().filter(|n| n.ends_with(".bmp")).count(),
+        2,
+        "both device symbols were checked as symbols"
+    );
+    // Files of anyone else's are still E400.
+    std::fs::write(dir.join("notes.txt"), "to do: ship it\n").unwrap();
+    let notes = dir.join("notes.txt");
+    let output = gsdc(&["check", notes.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stdout(&output).starts_with("error[E400]: "),
+        "{}",
+        stdout(&output)
+    );
+}
+
+#[test]
+fn a_device_symbol_is_checked_as_one() {
+    let dir = scratch("check-symbol");
+    built_with_datasheet(&dir);
+    let bmp = std::fs::read(dir.join("MD810DP.bmp")).unwrap();
+    let check = |name: &str, bytes: &[u8]| {
+        let path = dir.join(name);
+        std::fs::write(&path, bytes).unwrap();
+        let output = gsdc(&["check", path.to_str().unwrap()]);
+        (output.status.code(), stdout(&output))
+    };
+    // Cut short: no tool could show it.
+    let (code, out) = check("cut.bmp", &bmp[..bmp.len() - 10]);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(out.contains("error[E401]: not a whole Windows bitmap: its pixels need 1558 bytes, and the file has 1548: it is cut short"), "{out}");
+    // 8 bits a pixel (256 colours), the rows there: a warning, exit 0.
+    let mut deep = bmp.clone();
+    deep[28] = 8;
+    deep.resize(118 + 72 * 40, 0);
+    let (code, out) = check("deep.bmp", &deep);
+    assert_eq!(code, Some(0), "{out}");
+    assert!(
+        out.contains("warning[W402]: the device symbol has 8 bits per pixel, not 4 (16 colours)"),
+        "{out}"
+    );
+}
