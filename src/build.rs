@@ -278,6 +278,26 @@ pub(crate) struct Compiled {
     pub files: Result<Vec<Artifact>, Refused>,
     /// The files beside the description that it read ([`Loaded::beside`]).
     pub beside: Vec<PathBuf>,
+    /// Its datasheet's names and fingerprint, when it loaded.
+    pub datasheet: Option<Datasheet>,
+}
+
+/// A description's datasheet as `gsdc doc` writes it: its files and the
+/// fingerprint they carry. A build does not write it; `gsdc build --check`
+/// names one in the directory that carries another description's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Datasheet {
+    pub file_names: [String; 2],
+    pub fingerprint: crate::ir::Fingerprint,
+}
+
+impl Datasheet {
+    fn of(ir: &crate::Ir) -> Datasheet {
+        Datasheet {
+            file_names: crate::emit::doc::file_names(ir),
+            fingerprint: ir.fingerprint,
+        }
+    }
 }
 
 /// Why a description gave no files.
@@ -371,6 +391,7 @@ impl Compiler {
             beside,
         } = load_file_for(path, name, self.writes)?;
         let mut description = findings;
+        let datasheet = ir.as_ref().map(Datasheet::of);
         let files = match ir.map(|ir| crate::emit::compile_for(&ir, &self.firmware)) {
             Some(Ok(files)) => Some(files),
             Some(Err(problems)) => {
@@ -379,7 +400,9 @@ impl Compiler {
             }
             None => None,
         };
-        Ok(self.judge(description, files, beside))
+        let mut compiled = self.judge(description, files, beside);
+        compiled.datasheet = datasheet;
+        Ok(compiled)
     }
 
     /// The verdict on a description's files: errors refuse them, then
@@ -398,6 +421,7 @@ impl Compiler {
                 findings,
                 files: Err(Refused::Errors),
                 beside,
+                datasheet: None,
             };
         };
         let from = &findings[0].name;
@@ -415,6 +439,7 @@ impl Compiler {
             findings,
             files,
             beside,
+            datasheet: None,
         }
     }
 

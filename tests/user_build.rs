@@ -175,3 +175,135 @@ fn a_device_symbol_is_checked_as_one() {
         "{out}"
     );
 }
+
+// ---------------------------------------------------------------------------
+// The datasheet in CI: `gsdc doc --check`, and `gsdc build --check` naming
+// a datasheet of an older description.
+
+/// A description of its own in `dir` (the PROFIdrive fixture as ax200.toml),
+/// built and documented into `dir/dist`; returns the description's path.
+fn documented_card(dir: &Path) -> PathBuf {
+    let description = dir.join("ax200.toml");
+    std::fs::copy(
+        Path::new(MANIFEST).join("tests/fixtures/valid/profidrive.toml"),
+        &description,
+    )
+    .unwrap();
+    let dist = dir.join("dist");
+    for command in ["build", "doc"] {
+        let output = gsdc(&[
+            command,
+            description.to_str().unwrap(),
+            "--out",
+            dist.to_str().unwrap(),
+        ]);
+        assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    }
+    description
+}
+
+/// `gsdc COMMAND DESCRIPTION --out DIR/dist --check`.
+fn check(command: &str, description: &Path) -> Output {
+    let dist = description.parent().unwrap().join("dist");
+    gsdc(&[
+        command,
+        description.to_str().unwrap(),
+        "--out",
+        dist.to_str().unwrap(),
+        "--check",
+    ])
+}
+
+#[test]
+fn a_datasheet_of_an_older_description_fails_both_checks() {
+    let dir = scratch("stale-datasheet");
+    let description = documented_card(&dir);
+    assert_eq!(check("build", &description).status.code(), Some(0));
+    assert_eq!(check("doc", &description).status.code(), Some(0));
+
+    // The description changes, the device files are rebuilt, the datasheet
+    // is forgotten.
+    let text = std::fs::read_to_string(&description).unwrap();
+    std::fs::write(
+        &description,
+        text.replace("dns_name = \"x2-pn\"", "dns_name = \"ax200\""),
+    )
+    .unwrap();
+    let dist = dir.join("dist");
+    let rebuilt = gsdc(&[
+        "build",
+        description.to_str().unwrap(),
+        "--out",
+        dist.to_str().unwrap(),
+    ]);
+    assert_eq!(rebuilt.status.code(), Some(0));
+    let old = gsdc::load("ax200.toml", &text).0.unwrap().fingerprint;
+    let new = gsdc::load(
+        "ax200.toml",
+        &std::fs::read_to_string(&description).unwrap(),
+    )
+    .0
+    .unwrap()
+    .fingerprint;
+
+    let build = check("build", &description);
+    assert_eq!(build.status.code(), Some(1), "{}", stdout(&build));
+    for page in ["ax200.html", "ax200.md"] {
+        let line = format!(
+            "stale datasheet: {} carries fingerprint {old}, not {}'s {new} (run `gsdc doc {} --out {}`)",
+            dist.join(page).display(),
+            description.display(),
+            description.display(),
+            dist.display()
+        );
+        assert!(
+            stdout(&build).lines().any(|l| l == line),
+            "{line}\n{}",
+            stdout(&build)
+        );
+    }
+    // The device files are in step: no advice to build.
+    assert!(
+        !stderr(&build).contains("gsdc build --prune"),
+        "{}",
+        stderr(&build)
+    );
+
+    let doc = check("doc", &description);
+    assert_eq!(doc.status.code(), Some(1));
+    let named: Vec<String> = ["ax200.html", "ax200.md"]
+        .iter()
+        .map(|page| format!("differs: {}", dist.join(page).display()))
+        .collect();
+    assert_eq!(stdout(&doc).lines().collect::<Vec<_>>(), named);
+    assert!(stderr(&doc).contains("out of step: run `gsdc doc` without --check"));
+
+    // gsdc doc brings both in step; --check wrote nothing before.
+    let output = gsdc(&[
+        "doc",
+        description.to_str().unwrap(),
+        "--out",
+        dist.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(check("build", &description).status.code(), Some(0));
+    assert_eq!(check("doc", &description).status.code(), Some(0));
+}
+
+#[test]
+fn doc_check_names_a_missing_datasheet_and_writes_nothing() {
+    let dir = scratch("missing-datasheet");
+    let description = documented_card(&dir);
+    let html = dir.join("dist/ax200.html");
+    std::fs::remove_file(&html).unwrap();
+    let doc = check("doc", &description);
+    assert_eq!(doc.status.code(), Some(1));
+    assert!(
+        stdout(&doc).contains(&format!("missing: {}", html.display())),
+        "{}",
+        stdout(&doc)
+    );
+    assert!(!html.exists());
+    // A build does not need the datasheet: none there is in step.
+    assert_eq!(check("build", &description).status.code(), Some(0));
+}

@@ -98,20 +98,26 @@ impl Lang {
 /// The datasheet of a description: `<stem>.html` and `<stem>.md`.
 pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
     let docs: Vec<page::Doc> = languages(ir).into_iter().map(|l| document(ir, l)).collect();
-    let stem = super::source_stem(ir);
+    let [html, markdown] = file_names(ir);
     let header = header(ir);
     vec![
         Artifact {
             kind: ArtifactKind::DatasheetHtml,
-            file_name: format!("{stem}.html"),
+            file_name: html,
             contents: page::html(&docs, crate::GENERATOR, &header).into_bytes(),
         },
         Artifact {
             kind: ArtifactKind::DatasheetMarkdown,
-            file_name: format!("{stem}.md"),
+            file_name: markdown,
             contents: page::markdown(&docs, &header).into_bytes(),
         },
     ]
+}
+
+/// The datasheet's files, `<stem>.html` and `<stem>.md`.
+pub fn file_names(ir: &Ir) -> [String; 2] {
+    let stem = super::source_stem(ir);
+    [format!("{stem}.html"), format!("{stem}.md")]
 }
 
 /// The comments both pages open with, as every file of gsdc's does: its
