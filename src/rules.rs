@@ -93,6 +93,7 @@ pub const RULES: &[Rule] = &[
     rule("E153", "standard telegram 1 without PROFIdrive said"),
     rule("E154", "a parameter beyond the PROFIdrive PNUs"),
     rule("E155", "not a function-code prefix or separator"),
+    rule("E156", "function-code widths not both given"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -147,3 +147,57 @@ fn a_vendor_word_shows_a_set_bit_it_does_not_name() {
         assert!(fields.iter().all(|f| f["name"] != "bit 10 (not described)"));
     }
 }
+
+/// Parameters numbered without a separator (tests/fixtures/valid/ax200.toml:
+/// P1120, r0947): a PKW answer names r0947 as the description writes it, a
+/// request the parameter P1120 it does not name with the first prefix.
+#[test]
+fn pkw_parameters_are_named_as_the_description_numbers_them() {
+    let ax200 = "tests/fixtures/valid/ax200.toml";
+    // AK 1 (the value, a word) for PNU 947: 0x13B3.
+    let answer = decode(
+        ax200,
+        &[
+            "--module",
+            "PPO1",
+            "--direction",
+            "in",
+            "13B3 0000 0000 0005 0000 0000",
+        ],
+    );
+    assert_eq!(
+        answer["telegram"]["pkw"]["parameter"]["name"], "r0947",
+        "{answer:#}"
+    );
+    let request = decode(
+        ax200,
+        &[
+            "--module",
+            "PPO1",
+            "--direction",
+            "out",
+            "1460 0000 0000 0000 0000 0000",
+        ],
+    );
+    assert_eq!(
+        request["telegram"]["pkw"]["parameter"]["name"], "P1120",
+        "{request:#}"
+    );
+    // A mapping given as the description writes its parameters.
+    let mapped = decode(
+        ax200,
+        &[
+            "--module",
+            "4 PZD",
+            "--direction",
+            "in",
+            "--mapping",
+            "pzd_in=r0947",
+            "0000 0000 0000 0000",
+        ],
+    );
+    assert_eq!(
+        mapped["telegram"]["words"][2]["carries"]["meaning"], "r0947",
+        "{mapped:#}"
+    );
+}

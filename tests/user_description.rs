@@ -14,7 +14,7 @@ fn edited(text: &str, from: &str, to: &str) -> String {
 }
 
 fn load(text: &str) -> (Option<gsdc::Ir>, Diagnostics) {
-    gsdc::load("user.toml", text)
+    gsdc::load("ax200.toml", text)
 }
 
 fn compiled(text: &str) -> Vec<Artifact> {
@@ -91,4 +91,126 @@ fn a_quoted_date_is_told_to_lose_its_quotes() {
     );
     let help = load(&text).1.iter().next().unwrap().help.clone().unwrap();
     assert!(help.contains("date = 2026-12-01T07:14:47 "), "{help}");
+}
+
+// ---------------------------------------------------------------------------
+// Parameters numbered without a separator: P1120, r0947, 2202.
+
+const AX200: &str = include_str!("fixtures/valid/ax200.toml");
+
+fn text_of(files: &[Artifact], kind: ArtifactKind) -> String {
+    let file = files.iter().find(|f| f.kind == kind).unwrap();
+    String::from_utf8(file.contents.clone()).unwrap()
+}
+
+#[test]
+fn names_without_a_separator_are_read_and_written_as_the_description_writes_them() {
+    let (ir, diagnostics) = load(AX200);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let numbering = ir.numbering.as_ref().unwrap();
+    assert_eq!(numbering.parse("P1120"), Ok(1120));
+    assert_eq!(numbering.parse("r0947"), Ok(947));
+    // P and r both start at 0: each address the description names is
+    // written back with the letter it was written with.
+    assert_eq!(numbering.format(947).as_deref(), Some("r0947"));
+    assert_eq!(numbering.format(1070).as_deref(), Some("P1070"));
+    assert_eq!(numbering.format(922).as_deref(), Some("P0922"));
+    let files = gsdc::compile(&ir).unwrap();
+    let rust = text_of(&files, ArtifactKind::RustLayout);
+    assert!(rust.contains("default: 0x042E, // P1070"), "{rust}");
+    assert!(rust.contains("default: 0x03B3, // r0947"), "{rust}");
+    assert!(rust.contains("parameter: Some(0x039A), // P0922"), "{rust}");
+    let c = text_of(&files, ArtifactKind::CHeader);
+    assert!(
+        c.contains("#define AX200_PZD_IN_5_DEFAULT 0x03B3U /* r0947 */"),
+        "{c}"
+    );
+    let datasheet = gsdc::document(&ir);
+    let markdown = text_of(&datasheet, ArtifactKind::DatasheetMarkdown);
+    assert!(
+        markdown.contains("| PZD3 | bytes 4-5 | P1070 (default) | r0021 (default) |"),
+        "{markdown}"
+    );
+}
+
+#[test]
+fn a_name_without_its_leading_zero_is_told_the_descriptions_form() {
+    let text = edited(AX200, "default = \"P1070\"", "default = \"P947\"");
+    let diagnostics = load(&text).1;
+    let d = diagnostics.iter().find(|d| d.code == "E106").unwrap();
+    assert_eq!(
+        d.message,
+        "`P947` is not a function-code name: 3 characters follow its prefix; the description's names have 4 digits, 2 of the group and 2 of the index"
+    );
+    assert_eq!(
+        d.help.as_deref(),
+        Some("the description numbers parameters as <prefix>GGII (prefix P or r; G a digit of the group, I of the index), e.g. P0001; or write the number")
+    );
+    // P09.47 with a separator the description does not have.
+    let text = edited(AX200, "default = \"P1070\"", "default = \"P09.47\"");
+    assert_eq!(codes(&text), ["E106"]);
+}
+
+#[test]
+fn without_a_separator_both_widths_are_required() {
+    for (from, to) in [
+        ("group_digits = 2\n", ""),
+        ("index_digits = 2\n", ""),
+        ("group_digits = 2\nindex_digits = 2\n", ""),
+    ] {
+        let text = edited(AX200, from, to);
+        assert!(
+            codes(&text).contains(&"E156"),
+            "without {from:?}: {:?}",
+            codes(&text)
+        );
+    }
+    let text = edited(AX200, "group_digits = 2", "group_digits = 4");
+    assert!(codes(&text).contains(&"E101"), "{:?}", codes(&text));
+    // With a separator, the widths fix the digits too: P10.70.
+    let text = edited(AX200, "separator = \"\"", "separator = \".\"")
+        .replace("\"P1070\"", "\"P10.70\"")
+        .replace("\"P0000\", \"P2047\"", "\"P00.00\", \"P20.47\"")
+        .replace(
+            "r0021\", \"r0027\", \"r0947\", \"r0947",
+            "r00.21\", \"r00.27\", \"r09.47\", \"r09.47",
+        )
+        .replace("\"r0000\", \"r2047\"", "\"r00.00\", \"r20.47\"")
+        .replace("\"P0922\"", "\"P09.22\"");
+    let (ir, diagnostics) = load(&text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    assert_eq!(ir.numbering.unwrap().format(947).as_deref(), Some("r09.47"));
+}
+
+/// ABB's ACS355 manual numbers parameters 2202 (group 22, index 02): no letter.
+#[test]
+fn a_numbering_may_have_no_prefix() {
+    let mut text = edited(
+        AX200,
+        "prefixes = { P = 0, r = 0 }",
+        "prefixes = { \"\" = 0 }",
+    );
+    for name in ["1070", "0000", "2047", "0021", "0027", "0947", "0922"] {
+        for prefix in ["P", "r"] {
+            text = text.replace(&format!("\"{prefix}{name}\""), &format!("\"{name}\""));
+        }
+    }
+    assert!(!text.contains("\"r0"), "{text}");
+    let (ir, diagnostics) = load(&text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let numbering = ir.numbering.unwrap();
+    assert_eq!(numbering.parse("2202"), Ok(2202));
+    assert_eq!(numbering.format(947).as_deref(), Some("0947"));
+}
+
+/// F and FA with hex groups and no separator: FA12 would be either's.
+#[test]
+fn prefixes_that_a_hex_group_could_extend_are_refused_without_a_separator() {
+    let md810_like = "[function_codes]\nseparator = \"\"\ngroup_radix = 16\nprefixes = { F = 0xF0, FA = 0x10 }\ngroup_digits = 1\nindex_digits = 2\n";
+    let text = edited(
+        AX200,
+        "[function_codes]\nseparator = \"\"\ngroup_radix = 10\nprefixes = { P = 0, r = 0 }\naddress = \"decimal\"\ngroup_digits = 2\nindex_digits = 2\n",
+        md810_like,
+    );
+    assert!(codes(&text).contains(&"E155"), "{:?}", codes(&text));
 }

@@ -82,6 +82,10 @@ pub struct FunctionCodes {
     /// How prefix base plus group, and the index, make the address;
     /// `bytes` when not given.
     pub address: Option<Spanned<AddressScheme>>,
+    /// The digits of every group and index, leading zeros written: required
+    /// without a separator (Siemens `P1120`: 2 and 2).
+    pub group_digits: Option<Spanned<u8>>,
+    pub index_digits: Option<Spanned<u8>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
