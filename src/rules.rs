@@ -94,6 +94,7 @@ pub const RULES: &[Rule] = &[
     rule("E154", "a parameter beyond the PROFIdrive PNUs"),
     rule("E155", "not a function-code prefix or separator"),
     rule("E156", "function-code widths not both given"),
+    rule("E157", "a per-module setting's PROFIBUS side not said"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

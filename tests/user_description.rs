@@ -176,7 +176,8 @@ fn without_a_separator_both_widths_are_required() {
             "r00.21\", \"r00.27\", \"r09.47\", \"r09.47",
         )
         .replace("\"r0000\", \"r2047\"", "\"r00.00\", \"r20.47\"")
-        .replace("\"P0922\"", "\"P09.22\"");
+        .replace("\"P0922\"", "\"P09.22\"")
+        .replace("\"P1900\"", "\"P19.00\"");
     let (ir, diagnostics) = load(&text);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
     assert_eq!(ir.numbering.unwrap().format(947).as_deref(), Some("r09.47"));
@@ -190,7 +191,9 @@ fn a_numbering_may_have_no_prefix() {
         "prefixes = { P = 0, r = 0 }",
         "prefixes = { \"\" = 0 }",
     );
-    for name in ["1070", "0000", "2047", "0021", "0027", "0947", "0922"] {
+    for name in [
+        "1070", "0000", "2047", "0021", "0027", "0947", "0922", "1900",
+    ] {
         for prefix in ["P", "r"] {
             text = text.replace(&format!("\"{prefix}{name}\""), &format!("\"{name}\""));
         }
@@ -213,4 +216,220 @@ fn prefixes_that_a_hex_group_could_extend_are_refused_without_a_separator() {
         md810_like,
     );
     assert!(codes(&text).contains(&"E155"), "{:?}", codes(&text));
+}
+
+// ---------------------------------------------------------------------------
+// A setting fixed per PROFINET module in a description with both buses.
+
+/// The `Ref` of the telegram selection in each module's settings record,
+/// by module ID: (DefaultValue, Changeable).
+fn telegram_selection_refs(gsdml: &str) -> Vec<(String, String, String)> {
+    let doc = roxmltree::Document::parse(gsdml).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("ModuleItem"))
+        .filter_map(|module| {
+            let r = module.descendants().find(|n| {
+                n.has_tag_name("Ref") && n.attribute("TextId") == Some("IDT_SETTINGS_1")
+            })?;
+            Some((
+                module.attribute("ID").unwrap().to_string(),
+                r.attribute("DefaultValue").unwrap().to_string(),
+                r.attribute("Changeable").unwrap().to_string(),
+            ))
+        })
+        .collect()
+}
+
+fn fixed(module: &str, value: &str) -> (String, String, String) {
+    (module.into(), value.into(), "false".into())
+}
+
+#[test]
+fn each_profinet_module_fixes_the_setting_when_the_card_also_has_profibus() {
+    for profibus in ["absent", "user"] {
+        let text = edited(
+            AX200,
+            "profibus = \"absent\"",
+            &format!("profibus = \"{profibus}\""),
+        );
+        let files = compiled(&text);
+        let gsdml = text_of(&files, ArtifactKind::Gsdml);
+        assert_eq!(
+            telegram_selection_refs(&gsdml),
+            [
+                fixed("IDM_STD_TEL_1", "1"),
+                fixed("IDM_PZD_2", "999"),
+                fixed("IDM_PZD_4", "999"),
+                fixed("IDM_PZD_6", "999"),
+            ],
+            "{profibus}"
+        );
+        let gsd = text_of(&files, ArtifactKind::Gsd);
+        let selection = "ExtUserPrmData = 10 \"Telegram selection (P0922)\"";
+        match profibus {
+            // The master cannot set it: User_Prm_Data has the other setting only.
+            "absent" => {
+                assert!(!gsd.contains("Telegram selection"), "{gsd}");
+                assert!(!gsd.contains("Free telegram"), "{gsd}");
+                assert!(
+                    gsd.contains("Max_User_Prm_Data_Len       = 18\r\n"),
+                    "{gsd}"
+                );
+                assert!(
+                    gsd.contains("ExtUserPrmData = 9 \"Fault reaction (P1900)\""),
+                    "{gsd}"
+                );
+                assert!(gsd.contains("Ext_User_Prm_Data_Ref(16)   = 9\r\n"), "{gsd}");
+            }
+            // A user value, as any setting: its default and choices.
+            _ => {
+                assert!(gsd.contains("ExtUserPrmData = 9 \"Telegram selection (P0922)\"\r\nUnsigned16 999 1,999\r\n"), "{gsd}");
+                assert!(
+                    gsd.contains("Max_User_Prm_Data_Len       = 20\r\n"),
+                    "{gsd}"
+                );
+                assert!(
+                    gsd.contains(
+                        "Ext_User_Prm_Data_Ref(16)   = 9\r\nExt_User_Prm_Data_Ref(18)   = 10\r\n"
+                    ),
+                    "{gsd}"
+                );
+                assert!(!gsd.contains(selection));
+            }
+        }
+    }
+}
+
+#[test]
+fn what_a_per_module_setting_is_on_profibus_must_be_said_there_only() {
+    let unsaid = edited(AX200, ", profibus = \"absent\"", "");
+    assert_eq!(codes(&unsaid), ["E157"]);
+    let d = load(&unsaid).1;
+    let help = d.iter().next().unwrap().help.clone().unwrap();
+    assert!(
+        help.contains("profibus = \"user\"") && help.contains("profibus = \"absent\""),
+        "{help}"
+    );
+    // Without [profibus] the key means nothing.
+    let start = AX200.find("[profibus]").unwrap();
+    let end = AX200.find("[profinet]").unwrap();
+    let profinet_only = format!("{}{}", &AX200[..start], &AX200[end..]);
+    assert_eq!(codes(&profinet_only), ["E002"]);
+    let without_key = profinet_only.replace(", profibus = \"absent\"", "");
+    assert_eq!(codes(&without_key), Vec::<&str>::new());
+}
+
+/// The User_Prm_Data of tests/fixtures/valid/ax200.toml: PZD3..PZD6 out
+/// (P1070), PZD3..PZD6 in (r0021, r0027, r0947, r0947), then the one setting
+/// it carries, the fault reaction, `fault_reaction`.
+fn ax200_user_prm(fault_reaction: u16) -> String {
+    let words = [1070, 1070, 1070, 1070, 21, 27, 947, 947, fault_reaction];
+    let bytes: Vec<String> = words
+        .iter()
+        .flat_map(|w: &u16| w.to_be_bytes())
+        .map(|b| format!("0x{b:02X}"))
+        .collect();
+    bytes.join(", ")
+}
+
+/// Writes `files` of the AX200 into a fresh directory named `name`.
+fn written(name: &str, kinds: &[ArtifactKind]) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("gsdc-user-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for file in compiled(AX200).iter().filter(|f| kinds.contains(&f.kind)) {
+        std::fs::write(dir.join(&file.file_name), &file.contents).unwrap();
+    }
+    dir
+}
+
+fn run(command: &mut std::process::Command) {
+    let output = command.output().unwrap();
+    assert!(
+        output.status.success(),
+        "{command:?}\n{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+/// The C layout reads User_Prm_Data without the setting it does not carry:
+/// the fault reaction at bytes 16-17, checked against its own choices (999
+/// is the telegram selection's, and refused there).
+#[test]
+fn the_c_layout_reads_user_prm_data_without_the_setting_a_master_cannot_set() {
+    let dir = written("c-prm", &[ArtifactKind::CHeader, ArtifactKind::CSupport]);
+    let program = format!(
+        r#"#include "ax200_layout.h"
+#include <stdio.h>
+int main(void)
+{{
+    const uint8_t ramp[] = {{ {ramp} }};
+    const uint8_t free_telegram[] = {{ {free} }};
+    ax200_user_prm_t prm;
+    gsdc_prm_result_t result = ax200_decode_user_prm(ramp, sizeof ramp, &prm);
+    if (AX200_USER_PRM_LEN != 18U || sizeof prm.settings != 2U) return 1;
+    if (result.fault != GSDC_PRM_OK || prm.settings[0] != 1U) return 2;
+    if (prm.pzd_in[2] != 947U) return 3;
+    result = ax200_decode_user_prm(free_telegram, sizeof free_telegram, &prm);
+    if (result.fault != GSDC_PRM_NOT_ALLOWED || result.offset != 16U) return 4;
+    puts("ok");
+    return 0;
+}}
+"#,
+        ramp = ax200_user_prm(1),
+        free = ax200_user_prm(999)
+    );
+    std::fs::write(dir.join("main.c"), program).unwrap();
+    let binary = dir.join("main");
+    run(std::process::Command::new("gcc")
+        .args([
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-Wpedantic",
+            "-Wconversion",
+            "-Wsign-conversion",
+            "-Werror",
+            "-o",
+        ])
+        .arg(&binary)
+        .arg(dir.join("main.c"))
+        .current_dir(&dir));
+    run(&mut std::process::Command::new(&binary));
+}
+
+/// The Rust layout alike.
+#[test]
+fn the_rust_layout_reads_user_prm_data_without_the_setting_a_master_cannot_set() {
+    let dir = written(
+        "rust-prm",
+        &[ArtifactKind::RustLayout, ArtifactKind::RustSupport],
+    );
+    let program = format!(
+        r#"include!("gsdc_support.rs");
+#[allow(dead_code)]
+mod ax200 {{
+    include!("ax200_layout.rs");
+}}
+use gsdc_support::PrmError;
+fn main() {{
+    let prm = ax200::decode_user_prm(&[{ramp}]).unwrap();
+    assert_eq!(prm.settings, [1]);
+    assert_eq!(prm.pzd_in[2], 947);
+    assert_eq!(ax200::settings::USER_PRM_MAPPINGS[0].name, "Fault reaction (P1900)");
+    let refused = ax200::decode_user_prm(&[{free}]).unwrap_err();
+    assert_eq!(refused, PrmError::NotAllowed {{ offset: 16, value: 999 }});
+}}
+"#,
+        ramp = ax200_user_prm(1),
+        free = ax200_user_prm(999)
+    );
+    std::fs::write(dir.join("main.rs"), program).unwrap();
+    let binary = dir.join("main");
+    run(std::process::Command::new("rustc")
+        .args(["--edition", "2021", "-o"])
+        .arg(&binary)
+        .arg(dir.join("main.rs")));
+    run(&mut std::process::Command::new(&binary));
 }
