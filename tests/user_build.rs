@@ -189,17 +189,22 @@ fn documented_card(dir: &Path) -> PathBuf {
         &description,
     )
     .unwrap();
-    let dist = dir.join("dist");
     for command in ["build", "doc"] {
-        let output = gsdc(&[
-            command,
-            description.to_str().unwrap(),
-            "--out",
-            dist.to_str().unwrap(),
-        ]);
-        assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+        write_into_dist(command, &description);
     }
     description
+}
+
+/// `gsdc COMMAND DESCRIPTION --out DIR/dist`, which must exit 0.
+fn write_into_dist(command: &str, description: &Path) {
+    let dist = description.parent().unwrap().join("dist");
+    let output = gsdc(&[
+        command,
+        description.to_str().unwrap(),
+        "--out",
+        dist.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
 }
 
 /// `gsdc COMMAND DESCRIPTION --out DIR/dist --check`.
@@ -230,13 +235,7 @@ fn a_datasheet_of_an_older_description_fails_both_checks() {
     )
     .unwrap();
     let dist = dir.join("dist");
-    let rebuilt = gsdc(&[
-        "build",
-        description.to_str().unwrap(),
-        "--out",
-        dist.to_str().unwrap(),
-    ]);
-    assert_eq!(rebuilt.status.code(), Some(0));
+    write_into_dist("build", &description);
     let old = gsdc::load("ax200.toml", &text).0.unwrap().fingerprint;
     let new = gsdc::load(
         "ax200.toml",
@@ -279,13 +278,7 @@ fn a_datasheet_of_an_older_description_fails_both_checks() {
     assert!(stderr(&doc).contains("out of step: run `gsdc doc` without --check"));
 
     // gsdc doc brings both in step; --check wrote nothing before.
-    let output = gsdc(&[
-        "doc",
-        description.to_str().unwrap(),
-        "--out",
-        dist.to_str().unwrap(),
-    ]);
-    assert_eq!(output.status.code(), Some(0));
+    write_into_dist("doc", &description);
     assert_eq!(check("build", &description).status.code(), Some(0));
     assert_eq!(check("doc", &description).status.code(), Some(0));
 }

@@ -154,34 +154,18 @@ fn a_vendor_word_shows_a_set_bit_it_does_not_name() {
 #[test]
 fn pkw_parameters_are_named_as_the_description_numbers_them() {
     let ax200 = "tests/fixtures/valid/ax200.toml";
+    let pkw_parameter = |direction: &str, hex: &str| {
+        let decoded = decode(ax200, &["--module", "PPO1", "--direction", direction, hex]);
+        decoded["telegram"]["pkw"]["parameter"]["name"].clone()
+    };
     // AK 1 (the value, a word) for PNU 947: 0x13B3.
-    let answer = decode(
-        ax200,
-        &[
-            "--module",
-            "PPO1",
-            "--direction",
-            "in",
-            "13B3 0000 0000 0005 0000 0000",
-        ],
+    assert_eq!(
+        pkw_parameter("in", "13B3 0000 0000 0005 0000 0000"),
+        "r0947"
     );
     assert_eq!(
-        answer["telegram"]["pkw"]["parameter"]["name"], "r0947",
-        "{answer:#}"
-    );
-    let request = decode(
-        ax200,
-        &[
-            "--module",
-            "PPO1",
-            "--direction",
-            "out",
-            "1460 0000 0000 0000 0000 0000",
-        ],
-    );
-    assert_eq!(
-        request["telegram"]["pkw"]["parameter"]["name"], "P1120",
-        "{request:#}"
+        pkw_parameter("out", "1460 0000 0000 0000 0000 0000"),
+        "P1120"
     );
     // A mapping given as the description writes its parameters.
     let mapped = decode(

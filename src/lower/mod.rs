@@ -19,6 +19,10 @@ use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 use checks::Checker;
 use toml::Spanned;
 
+/// Reads a file the description names (its symbol), relative to it: its
+/// bytes, or why it cannot.
+pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
+
 /// Lowers a parsed description: the IR when there is no error, and every
 /// diagnostic, warnings included. `source_name` is the file name written into
 /// generated headers; `text` is the description's text, for the fingerprint.
@@ -29,7 +33,7 @@ pub fn lower(
     desc: &Description,
     source_name: &str,
     text: &str,
-    files: Option<&dyn Fn(&str) -> Result<Vec<u8>, String>>,
+    files: Option<Files<'_>>,
 ) -> (Option<Ir>, Diagnostics) {
     if let Some(missing) = missing_key(desc, text) {
         return (None, Diagnostics(vec![missing]));
@@ -159,11 +163,7 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
     )
 }
 
-fn lower_device(
-    cx: &mut Checker,
-    d: &raw::Device,
-    files: Option<&dyn Fn(&str) -> Result<Vec<u8>, String>>,
-) -> ir::Device {
+fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> ir::Device {
     ir::Device {
         symbol: d
             .symbol
@@ -354,7 +354,7 @@ fn widths(cx: &mut Checker, f: &raw::FunctionCodes) -> Option<ir::numbering::Wid
 /// a prefix that is another one and hex digits (`F` and `FA`: is `FA12`
 /// prefix FA, or F and group A?) makes names ambiguous.
 fn prefixes_apart(cx: &mut Checker, f: &raw::FunctionCodes) {
-    for (longer, _) in &f.prefixes {
+    for longer in f.prefixes.keys() {
         let shadows = f.prefixes.keys().find(|shorter| {
             longer
                 .get_ref()
