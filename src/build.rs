@@ -13,9 +13,11 @@
 //! ```
 //!
 //! and in the firmware, the support module once at the crate root and each
-//! layout in a module of its own:
+//! layout in a module of its own (firmware code, not a doctest: it needs the
+//! build script's OUT_DIR; tests/firmware/src/lib.rs does this and is built
+//! and tested by the tests):
 //!
-//! ```ignore
+//! ```text
 //! include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 //! pub mod md810dp {
 //!     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));

@@ -8,8 +8,7 @@
 //! - the shipped descriptions and the guide's example conform to the
 //!   schema, and descriptions with a misspelt key or an unknown kind do not.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
+use crate::support::descriptions;
 
 use serde_json::Value as Json;
 use toml::Value as Toml;
@@ -338,16 +337,6 @@ fn pattern_property<'a>(node: &'a Json, key: &str) -> Option<&'a Json> {
     })
 }
 
-/// The guide's TOML examples: the complete one and the gateway's.
-fn guide_examples() -> Vec<&'static str> {
-    let guide = include_str!("../docs/description.md");
-    guide
-        .split("```toml\n")
-        .skip(1)
-        .map(|rest| &rest[..rest.find("```").unwrap()])
-        .collect()
-}
-
 #[test]
 fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
     let root = schema();
@@ -367,7 +356,7 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
             include_str!("fixtures/valid/profidrive.toml"),
         ),
     ];
-    let examples = guide_examples()
+    let examples = descriptions::guide_examples()
         .into_iter()
         .map(|e| ("the guide's example", e));
     for (name, text) in valid.into_iter().chain(examples) {

@@ -1,41 +1,16 @@
 //! A new user's first day with the build (issue 23): a firmware crate's
 //! build script without the device symbol, `gsdc check dist/*` after a
 //! build, and the datasheet kept in step in CI (`gsdc doc --check`, `gsdc
-//! build --check`). Self-contained: its helpers are its own.
+//! build --check`).
 
+use crate::support::{checkout, file_names, gsdc, scratch, stderr, stdout};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-user-build-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn gsdc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(args)
-        .current_dir(MANIFEST)
-        .output()
-        .unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
+use std::process::Output;
 
 /// md810dp.toml copied into `dir` without the `symbols/` folder beside it:
 /// a firmware crate that took the description and not the bitmap.
 fn description_without_its_symbol(dir: &Path) -> PathBuf {
-    let text =
-        std::fs::read_to_string(Path::new(MANIFEST).join("descriptions/md810dp.toml")).unwrap();
+    let text = std::fs::read_to_string(checkout("descriptions/md810dp.toml")).unwrap();
     assert!(text.contains("symbol = \"symbols/md810dp.png\""));
     let path = dir.join("md810dp.toml");
     std::fs::write(&path, text).unwrap();
@@ -56,13 +31,8 @@ fn generate_rust_and_generate_c_need_no_device_symbol() {
     assert_eq!(rust, out.join("md810dp_layout.rs"));
     let c = gsdc::build::generate_c(&description, &out).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(c, out.join("md810dp_layout.h"));
-    let mut written: Vec<String> = std::fs::read_dir(&out)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    written.sort();
     assert_eq!(
-        written,
+        file_names(&out),
         [
             "gsdc_support.h",
             "gsdc_support.rs",
@@ -73,11 +43,7 @@ fn generate_rust_and_generate_c_need_no_device_symbol() {
     // The layout is the one a build with the symbol writes: the symbol is
     // no part of it.
     let with_symbol = scratch("with-symbol");
-    gsdc::build::generate_rust(
-        Path::new(MANIFEST).join("descriptions/md810dp.toml"),
-        &with_symbol,
-    )
-    .unwrap();
+    gsdc::build::generate_rust(checkout("descriptions/md810dp.toml"), &with_symbol).unwrap();
     assert_eq!(
         std::fs::read(out.join("md810dp_layout.rs")).unwrap(),
         std::fs::read(with_symbol.join("md810dp_layout.rs")).unwrap()
@@ -98,15 +64,10 @@ fn generate_rust_and_generate_c_need_no_device_symbol() {
 fn built_with_datasheet(dir: &Path) -> Vec<String> {
     let out = dir.to_str().unwrap();
     for command in ["build", "doc"] {
-        let output = gsdc(&[command, "descriptions/md810dp.toml", "--out", out]);
+        let output = gsdc([command, "descriptions/md810dp.toml", "--out", out]);
         assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     }
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    names.sort();
-    names
+    file_names(dir)
 }
 
 #[test]
@@ -140,7 +101,7 @@ fn check_of_everything_a_build_writes_passes() {
     // Files of anyone else's are still E400.
     std::fs::write(dir.join("notes.txt"), "to do: ship it\n").unwrap();
     let notes = dir.join("notes.txt");
-    let output = gsdc(&["check", notes.to_str().unwrap()]);
+    let output = gsdc(["check", notes.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     assert!(
         stdout(&output).starts_with("error[E400]: "),
@@ -157,7 +118,7 @@ fn a_device_symbol_is_checked_as_one() {
     let check = |name: &str, bytes: &[u8]| {
         let path = dir.join(name);
         std::fs::write(&path, bytes).unwrap();
-        let output = gsdc(&["check", path.to_str().unwrap()]);
+        let output = gsdc(["check", path.to_str().unwrap()]);
         (output.status.code(), stdout(&output))
     };
     // Cut short: no tool could show it.
@@ -185,7 +146,7 @@ fn a_device_symbol_is_checked_as_one() {
 fn documented_card(dir: &Path) -> PathBuf {
     let description = dir.join("ax200.toml");
     std::fs::copy(
-        Path::new(MANIFEST).join("tests/fixtures/valid/profidrive.toml"),
+        checkout("tests/fixtures/valid/profidrive.toml"),
         &description,
     )
     .unwrap();
@@ -198,7 +159,7 @@ fn documented_card(dir: &Path) -> PathBuf {
 /// `gsdc COMMAND DESCRIPTION --out DIR/dist`, which must exit 0.
 fn write_into_dist(command: &str, description: &Path) {
     let dist = description.parent().unwrap().join("dist");
-    let output = gsdc(&[
+    let output = gsdc([
         command,
         description.to_str().unwrap(),
         "--out",
@@ -210,7 +171,7 @@ fn write_into_dist(command: &str, description: &Path) {
 /// `gsdc COMMAND DESCRIPTION --out DIR/dist --check`.
 fn check(command: &str, description: &Path) -> Output {
     let dist = description.parent().unwrap().join("dist");
-    gsdc(&[
+    gsdc([
         command,
         description.to_str().unwrap(),
         "--out",

@@ -1,22 +1,16 @@
 //! A new user's first day with `gsdc decode` (issue 23): standard telegram
-//! 1's control and status words bit by bit, and the bits a description does
-//! not name. Self-contained: its helpers are its own.
+//! 1's control and status words bit by bit, the bits a description does not
+//! name, and parameters numbered without a separator.
 
+use crate::support::{gsdc, stderr};
 use serde_json::Value;
-use std::process::Command;
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
 
 /// `gsdc decode DESCRIPTION --format json ARGS...`, which must exit 0.
 fn decode(description: &str, args: &[&str]) -> Value {
-    let output = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(["decode", description, "--format", "json"])
-        .args(args)
-        .current_dir(MANIFEST)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    let mut all = vec!["decode", description, "--format", "json"];
+    all.extend(args);
+    let output = gsdc(&all);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     serde_json::from_slice(&output.stdout).unwrap()
 }
 

@@ -1,8 +1,9 @@
 //! A new user's first day with the description (issue 23): a second
 //! release on one day, parameters numbered without a separator, and a
 //! setting fixed per PROFINET module in a description with both buses.
-//! Self-contained: its helpers are its own.
 
+use crate::support::descriptions::one;
+use crate::support::{scratch, Scratch};
 use gsdc::{Artifact, ArtifactKind, Diagnostics};
 
 const PROFIDRIVE: &str = include_str!("fixtures/valid/profidrive.toml");
@@ -99,8 +100,7 @@ fn a_quoted_date_is_told_to_lose_its_quotes() {
 const AX200: &str = include_str!("fixtures/valid/ax200.toml");
 
 fn text_of(files: &[Artifact], kind: ArtifactKind) -> String {
-    let file = files.iter().find(|f| f.kind == kind).unwrap();
-    String::from_utf8(file.contents.clone()).unwrap()
+    one(files.to_vec(), kind).1
 }
 
 #[test]
@@ -332,11 +332,10 @@ fn ax200_user_prm(fault_reaction: u16) -> String {
     bytes.join(", ")
 }
 
-/// Writes `files` of the AX200 into a fresh directory named `name`.
-fn written(name: &str, kinds: &[ArtifactKind]) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-user-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+/// Writes the files of `kinds` of the AX200 into a scratch directory.
+#[track_caller]
+fn written(name: &str, kinds: &[ArtifactKind]) -> Scratch {
+    let dir = scratch(name);
     for file in compiled(AX200).iter().filter(|f| kinds.contains(&f.kind)) {
         std::fs::write(dir.join(&file.file_name), &file.contents).unwrap();
     }
