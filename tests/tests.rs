@@ -97,4 +97,7 @@ mod outputs;
 mod properties;
 mod rule_docs;
 mod suite;
+mod user_build;
+mod user_decode;
+mod user_description;
 mod xsd;
