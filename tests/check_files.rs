@@ -22,8 +22,9 @@ fn utf16le_with_mark(text: &str) -> Vec<u8> {
 }
 
 /// `gsdc check dist/*`: the GSD and the GSDML are checked whatever their
-/// names; the firmware layout beside them is one line, E400, not 723
-/// findings of a GSD check; so is a file of zeros named `.xml`.
+/// names; the firmware layout beside them is one line, a note that gsdc made
+/// it, not 723 findings of a GSD check; a file of zeros named `.xml` is one
+/// line too, E400.
 #[test]
 fn files_are_told_apart_by_their_content() {
     let dir = support::scratch("kinds");
@@ -59,7 +60,10 @@ fn files_are_told_apart_by_their_content() {
         lines[lines.len() - 3],
         format!("{gsdml}: 1 error(s), 0 warning(s)")
     );
-    assert_eq!(lines[lines.len() - 2], neither(&layout));
+    assert_eq!(
+        lines[lines.len() - 2],
+        format!("note: {layout} is made by gsdc (a firmware layout, support file or datasheet), not a device file: skipped")
+    );
     assert_eq!(lines[lines.len() - 1], neither(&zeros));
 }
 

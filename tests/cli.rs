@@ -591,6 +591,19 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
             "md810dp_layout.rs"
         ]
     );
+    // The datasheet is still the old description's: --check names it (not
+    // as a build's stale file) until `gsdc doc` writes it again.
+    let old_datasheet = gsdc(["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(old_datasheet.status.code(), Some(1));
+    assert!(
+        stdout(&old_datasheet)
+            .lines()
+            .all(|l| l.starts_with("stale datasheet: ")),
+        "{}",
+        stdout(&old_datasheet)
+    );
+    let doc = gsdc(["doc", description, "--out", out_arg]);
+    assert_eq!(doc.status.code(), Some(0), "{}", stderr(&doc));
     let in_step = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(in_step.status.code(), Some(0), "{}", stdout(&in_step));
     assert_eq!(

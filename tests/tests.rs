@@ -98,5 +98,8 @@ mod outputs;
 mod properties;
 mod rule_docs;
 mod suite;
+mod user_build;
+mod user_decode;
+mod user_description;
 mod wire_dp;
 mod xsd;

@@ -18,6 +18,7 @@ mod mapping;
 mod module;
 mod pkw_channel;
 mod prm;
+mod profidrive;
 mod telegram;
 
 pub use diagnosis::{DiagnosisBlock, GatewayDiagnosis};

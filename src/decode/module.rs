@@ -87,6 +87,12 @@ impl Module<'_> {
         }
     }
 
+    /// Whether it is a PROFIdrive card's standard telegram 1, whose PZD1 is
+    /// the profile's STW1 or ZSW1.
+    pub fn is_profidrive_telegram(self) -> bool {
+        matches!(self, Module::Profinet(m) if m.is_profidrive())
+    }
+
     /// The name of each word in `direction`, in telegram order.
     pub fn word_names(self, ir: &Ir, direction: Direction) -> Vec<String> {
         match self {

@@ -6,6 +6,7 @@
 use super::mapping::{meaning, MappingInForce, ValueSource};
 use super::module::Module;
 use super::pkw_channel::{self, Pkw};
+use super::profidrive;
 use crate::ir::{Direction, Ir, Layout, MappingKind, Word};
 use crate::pkw::{pkw_words, BitField, PKW_BYTES};
 use serde::Serialize;
@@ -128,7 +129,7 @@ pub(super) fn decode(
                 .filter(|_| module.is_mapped())
                 .and_then(|n| carried(ir, direction, n, mapping));
             let fields = match pzd {
-                Some(n) if module.has_vendor_words() => word_fields(ir, direction, n, value),
+                Some(1) => first_word_fields(ir, module, direction, value),
                 _ => Vec::new(),
             };
             DecodedWord {
@@ -180,15 +181,26 @@ fn pzd_kind(direction: Direction) -> MappingKind {
     }
 }
 
-/// The fields of PZD1 when it is the control or status word.
-fn word_fields(ir: &Ir, direction: Direction, n: usize, value: u16) -> Vec<Field> {
-    match ir.telegram.word(direction) {
-        Some(word) if n == 1 => fields(word, value),
-        _ => Vec::new(),
-    }
+/// The fields of PZD1 when it is a control or status word: the
+/// description's, or in a PROFIdrive card's standard telegram 1 the
+/// profile's STW1 and ZSW1; with every set bit neither names.
+fn first_word_fields(ir: &Ir, module: Module<'_>, direction: Direction, value: u16) -> Vec<Field> {
+    let mut fields = if module.has_vendor_words() {
+        match ir.telegram.word(direction) {
+            Some(word) => described_fields(word, value),
+            None => return Vec::new(),
+        }
+    } else if module.is_profidrive_telegram() {
+        profidrive_fields(direction, value)
+    } else {
+        return Vec::new();
+    };
+    fields.extend(undescribed_bits(&fields, value));
+    fields.sort_by_key(|f| f.first);
+    fields
 }
 
-fn fields(word: &Word, value: u16) -> Vec<Field> {
+fn described_fields(word: &Word, value: u16) -> Vec<Field> {
     word.bits
         .iter()
         .map(|field| {
@@ -204,6 +216,36 @@ fn fields(word: &Word, value: u16) -> Vec<Field> {
                 value: bits,
                 text,
             }
+        })
+        .collect()
+}
+
+/// The profile's bits of STW1 (out) or ZSW1 (in), each its own field.
+fn profidrive_fields(direction: Direction, value: u16) -> Vec<Field> {
+    (0..)
+        .zip(profidrive::word_bits(direction))
+        .map(|(bit, name)| Field {
+            first: bit,
+            last: bit,
+            name: (*name).to_string(),
+            value: (value >> bit) & 1,
+            text: None,
+        })
+        .collect()
+}
+
+/// A field for each bit set in `value` that none of `fields` covers: the
+/// card sets or reads it, and the description does not say what it means.
+fn undescribed_bits(fields: &[Field], value: u16) -> Vec<Field> {
+    (0..16u8)
+        .filter(|&bit| value >> bit & 1 == 1)
+        .filter(|&bit| !fields.iter().any(|f| (f.first..=f.last).contains(&bit)))
+        .map(|bit| Field {
+            first: bit,
+            last: bit,
+            name: format!("bit {bit} (not described)"),
+            value: 1,
+            text: None,
         })
         .collect()
 }
