@@ -13,9 +13,11 @@
 //! ```
 //!
 //! and in the firmware, the support module once at the crate root and each
-//! layout in a module of its own:
+//! layout in a module of its own (firmware code, not a doctest: it needs the
+//! build script's OUT_DIR; tests/firmware/src/lib.rs does this and is built
+//! and tested by the tests):
 //!
-//! ```ignore
+//! ```text
 //! include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 //! pub mod md810dp {
 //!     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
@@ -27,8 +29,8 @@
 //! both layouts).
 //!
 //! It prints `cargo:rerun-if-changed` for the description and the files it
-//! names (its device symbol), so cargo runs it again when one of them
-//! changes, and writes only files whose content changed. Warnings (placeholder ident numbers) become `cargo:warning`
+//! reads (the device symbol, which only [`generate`] reads: the layouts do
+//! not carry it), so cargo runs it again when one of them changes, and writes only files whose content changed. Warnings (placeholder ident numbers) become `cargo:warning`
 //! lines, or refuse the build with [`Config::deny_warnings`]. With
 //! [`Config::xsd`], or the environment variable [`XSD_ENV`], each GSDML is
 //! validated against the PI schema before anything is written:
@@ -146,14 +148,16 @@ impl Config {
         description: impl AsRef<Path>,
         out_dir: impl AsRef<Path>,
     ) -> Result<Vec<PathBuf>, BuildError> {
-        let files = self.build_script_compile(description.as_ref(), true)?;
+        let files = self.build_script_compile(description.as_ref(), Writes::Everything)?;
         write(&files, out_dir.as_ref())
     }
 
     /// Writes only the firmware layout in `language` (`<stem>_layout.rs`
     /// or `<stem>_layout.h`) and the support file it is built from into
     /// `out_dir`; returns the layout's path. No GSDML is written, so none is
-    /// validated: firmware crates need no libxml2.
+    /// validated: firmware crates need no libxml2; no device file is
+    /// written, so the device symbol is not read: a firmware crate needs no
+    /// bitmap beside its description.
     pub fn generate_layout(
         &self,
         description: impl AsRef<Path>,
@@ -165,7 +169,7 @@ impl Config {
         let mut files: Vec<Artifact> = self
             .clone()
             .firmware(&[language])
-            .build_script_compile(description, false)?
+            .build_script_compile(description, Writes::LayoutsOnly)?
             .into_iter()
             .filter(|a| a.kind.language() == Some(language))
             .collect();
@@ -198,21 +202,24 @@ impl Config {
             deny_warnings: self.deny_warnings,
             schema,
             firmware: self.firmware.clone(),
+            writes: Writes::Everything,
         })
     }
 
     /// [`Compiler::compile`] as a build script needs it: the `cargo:` lines
     /// that make cargo run it again when an input changes, warnings as
     /// `cargo:warning`, and the findings rendered into the error. The
-    /// schema, if any, only when the GSDML is to be `validated`.
+    /// schema, if any, and the device symbol only when device files are
+    /// written.
     fn build_script_compile(
         &self,
         description: &Path,
-        validated: bool,
+        writes: Writes,
     ) -> Result<Vec<Artifact>, BuildError> {
         println!("cargo:rerun-if-changed={}", description.display());
-        let xsd = self.xsd.as_deref().filter(|_| validated);
-        if validated {
+        let device_files = writes == Writes::Everything;
+        let xsd = self.xsd.as_deref().filter(|_| device_files);
+        if device_files {
             println!("cargo:rerun-if-env-changed={XSD_ENV}");
         }
         if let Some(dir) = xsd {
@@ -220,7 +227,9 @@ impl Config {
             println!("cargo:rerun-if-changed={}", schema.display());
         }
         let name = description.display().to_string();
-        let compiled = self.compiler_with(xsd)?.compile(description, &name)?;
+        let mut compiler = self.compiler_with(xsd)?;
+        compiler.writes = writes;
+        let compiled = compiler.compile(description, &name)?;
         for path in &compiled.beside {
             println!("cargo:rerun-if-changed={}", path.display());
         }
@@ -247,6 +256,17 @@ pub(crate) struct Compiler {
     schema: Option<Schema>,
     /// The languages whose firmware layouts a build writes.
     firmware: Vec<Language>,
+    writes: Writes,
+}
+
+/// What a build writes: what it reads follows from it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Writes {
+    /// The device files too, with the device symbol they name.
+    Everything,
+    /// Firmware layouts alone (a build script's `generate_rust`): nothing
+    /// beside the description is read.
+    LayoutsOnly,
 }
 
 /// What one description gave: what to show, and the files or why there are
@@ -260,6 +280,26 @@ pub(crate) struct Compiled {
     pub files: Result<Vec<Artifact>, Refused>,
     /// The files beside the description that it read ([`Loaded::beside`]).
     pub beside: Vec<PathBuf>,
+    /// Its datasheet's names and fingerprint, when it loaded.
+    pub datasheet: Option<Datasheet>,
+}
+
+/// A description's datasheet as `gsdc doc` writes it: its files and the
+/// fingerprint they carry. A build does not write it; `gsdc build --check`
+/// names one in the directory that carries another description's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Datasheet {
+    pub file_names: [String; 2],
+    pub fingerprint: crate::ir::Fingerprint,
+}
+
+impl Datasheet {
+    fn of(ir: &crate::Ir) -> Datasheet {
+        Datasheet {
+            file_names: crate::emit::doc::file_names(ir),
+            fingerprint: ir.fingerprint,
+        }
+    }
 }
 
 /// Why a description gave no files.
@@ -347,8 +387,9 @@ impl Compiler {
             findings,
             ir,
             beside,
-        } = load_file(path, name)?;
+        } = load_file_for(path, name, self.writes)?;
         let mut description = findings;
+        let datasheet = ir.as_ref().map(Datasheet::of);
         let files = match ir.map(|ir| crate::emit::compile_for(&ir, &self.firmware)) {
             Some(Ok(files)) => Some(files),
             Some(Err(problems)) => {
@@ -357,7 +398,9 @@ impl Compiler {
             }
             None => None,
         };
-        Ok(self.judge(description, files, beside))
+        let mut compiled = self.judge(description, files, beside);
+        compiled.datasheet = datasheet;
+        Ok(compiled)
     }
 
     /// The verdict on a description's files: errors refuse them, then
@@ -376,6 +419,7 @@ impl Compiler {
                 findings,
                 files: Err(Refused::Errors),
                 beside,
+                datasheet: None,
             };
         };
         let from = &findings[0].name;
@@ -393,6 +437,7 @@ impl Compiler {
             findings,
             files,
             beside,
+            datasheet: None,
         }
     }
 
@@ -437,6 +482,11 @@ pub struct Loaded {
 /// reads a description starts here. `name` names it in diagnostics. `Err`
 /// only when the file cannot be read.
 pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
+    load_file_for(path, name, Writes::Everything)
+}
+
+/// [`load_file`], reading what a build that `writes` these files needs.
+fn load_file_for(path: &Path, name: &str, writes: Writes) -> Result<Loaded, BuildError> {
     let unread = |text: String, diagnostic| Loaded {
         findings: Findings {
             name: name.to_string(),
@@ -470,7 +520,10 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
         beside.borrow_mut().push(folder.join(name));
         read_beside(folder, name)
     };
-    let (ir, diagnostics) = crate::load_with(&source_name, text, &files);
+    let (ir, diagnostics) = match writes {
+        Writes::Everything => crate::load_with(&source_name, text, &files),
+        Writes::LayoutsOnly => crate::load_for_layouts(&source_name, text),
+    };
     Ok(Loaded {
         findings: Findings {
             name: name.to_string(),

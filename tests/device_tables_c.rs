@@ -9,6 +9,7 @@
 #[path = "firmware/device_files.rs"]
 mod device_files;
 
+use crate::support;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -24,10 +25,9 @@ const WARNINGS: [&str; 7] = [
 
 /// Every description with a bus: the shipped ones and the valid fixtures.
 fn descriptions() -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut found: Vec<PathBuf> = ["descriptions", "tests/fixtures/valid"]
         .iter()
-        .flat_map(|dir| std::fs::read_dir(root.join(dir)).unwrap())
+        .flat_map(|dir| std::fs::read_dir(support::checkout(dir)).unwrap())
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|e| e == "toml"))
         .collect();
@@ -66,8 +66,8 @@ fn section(output: &str, name: &str) -> Option<Vec<String>> {
 
 #[test]
 fn every_c_table_says_what_its_device_files_say() {
-    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/c/device_tables.c");
-    let scratch = std::env::temp_dir().join(format!("gsdc-device-tables-c-{}", std::process::id()));
+    let source = support::checkout("tests/c/device_tables.c");
+    let scratch = support::scratch("tables");
     let descriptions = descriptions();
     assert!(descriptions.len() >= 6, "{descriptions:?}");
     for description in descriptions {
@@ -142,5 +142,4 @@ fn every_c_table_says_what_its_device_files_say() {
             }
         }
     }
-    std::fs::remove_dir_all(&scratch).unwrap();
 }

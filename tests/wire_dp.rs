@@ -4,27 +4,26 @@
 //! the layout, on profirust's simulated bus. The wire workspace's own tests,
 //! lints and formatting run here too.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::{Mutex, MutexGuard};
 
+use crate::support::{self, descriptions, stdout};
+
 /// The wire workspace is built with the descriptions each run names, in
-/// one target directory: the tests here take turns, so that no run
-/// rebuilds it under another's feet.
-fn turn() -> MutexGuard<'static, ()> {
+/// one target directory: the tests here and in wire_pn.rs take turns, so
+/// that no run rebuilds it under another's feet.
+pub(crate) fn turn() -> MutexGuard<'static, ()> {
     static WIRE: Mutex<()> = Mutex::new(());
     WIRE.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    Path::new(support::CHECKOUT)
 }
 
 /// The wire workspace's target directory, under this test's own.
-fn wire_target() -> PathBuf {
+pub(crate) fn wire_target() -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join("wire-target")
 }
 
@@ -36,15 +35,11 @@ fn wire_test(args: &[&str]) -> Output {
         .args(["--bus", "dp"])
         .args(args)
         .current_dir(root())
-        .env("GSDC", env!("CARGO_BIN_EXE_gsdc"))
+        .env("GSDC", support::GSDC)
         .env("WIRE_TARGET_DIR", wire_target())
         .env("CARGO", env!("CARGO"))
         .output()
         .expect("the script runs")
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
 }
 
 /// Every shipped description and valid fixture with [profibus], as
@@ -106,6 +101,33 @@ fn every_description_with_profibus_passes_the_dp_exchange() {
     assert!(!text.contains("FAILED"), "{text}");
 }
 
+/// Any description, not only the shipped ones: a card of one's own (9KDP1's
+/// description under another name, ident number and file name) is built
+/// into the firmware from its layout's tables and passes, its modules with
+/// their defaults and with every parameter set by name, and the refusals
+/// (no manual's exchange: its drive has no manual).
+#[test]
+fn a_description_of_ones_own_passes() {
+    let dir = support::scratch("own");
+    descriptions::copy_symbols(&dir);
+    let text = descriptions::shipped_text("9kdp1.toml")
+        .replace("value = 0x9D01", "value = 0x4242")
+        .replace("\"9KDP1.GSD\"", "\"ACME.GSD\"");
+    let path = dir.join("acme-card.toml");
+    std::fs::write(&path, text).unwrap();
+    let output = wire_test(&[path.to_str().unwrap()]);
+    let text = stdout(&output);
+    assert!(output.status.success(), "{text}");
+    assert!(
+        text.contains("ACME.GSD comes from the same description and says ident 0x4242"),
+        "{text}"
+    );
+    assert!(
+        text.contains("acme-card.toml: 7 exchanges passed, 0 failed"),
+        "{text}"
+    );
+}
+
 /// MD810 manual 1.4.2, figures 6 and 7, and 1.8, as the master sent and
 /// read them; PI9000 appendix I's fault and the bridge's type/node/code
 /// blocks (2.5), named by the GSD and by `gsdc decode --diag`.
@@ -151,20 +173,13 @@ fn the_manuals_telegrams_cross_the_bus() {
     }
 }
 
-/// A directory holding `files`: the GSDs gsdc builds of `description`, each
-/// changed by `edit`.
-fn shipped(name: &str, description: &str, edit: impl Fn(String) -> String) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    let status = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("build")
-        .arg(root().join(description))
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap()
-        .status;
-    assert!(status.success());
+/// A directory of the files gsdc builds of `description`, its GSD changed
+/// by `edit`: what was shipped.
+#[track_caller]
+fn shipped(name: &str, description: &str, edit: impl Fn(String) -> String) -> support::Scratch {
+    let dir = support::scratch(name);
+    let output = support::gsdc(["build", description, "--out", dir.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", support::stderr(&output));
     for entry in std::fs::read_dir(&dir).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "GSD") {
@@ -251,8 +266,7 @@ fn usage_errors_exit_2() {
     assert_eq!(wire_test(&[]).status.code(), Some(2));
     let output = wire_test(&["--files", "/nonexistent", "descriptions/9kdp1.toml"]);
     assert_eq!(output.status.code(), Some(2));
-    let empty = Path::new(env!("CARGO_TARGET_TMPDIR")).join("wire-empty");
-    std::fs::create_dir_all(&empty).unwrap();
+    let empty = support::scratch("empty");
     let output = wire_test(&[
         "--files",
         empty.to_str().unwrap(),

@@ -7,51 +7,45 @@
 //!
 //! Needs root (namespaces, raw sockets), iproute2 and Python; scripts/test.sh
 //! installs them, and the exchange makes its venv (target/wire-venv). Without
-//! root the tests say so and pass, except under CI=true, where that fails.
+//! root the tests say so and leave the exchange out, except under CI=true,
+//! where that fails.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
-use std::sync::Mutex;
 
-/// One exchange at a time: each builds the device, and CPU time matters to
-/// an 8 ms cycle on two cores.
-static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+use crate::support;
+use crate::wire_dp::{turn, wire_target};
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Whether the exchange can run here; under CI it must.
+/// Whether the exchange can run here (as root); under CI it must.
 fn can_run() -> bool {
     let is_root = Command::new("id")
         .arg("-u")
         .output()
         .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
-    if is_root {
-        return true;
+    if !is_root {
+        support::cannot_run("the PROFINET exchange needs root (network namespaces, raw sockets)");
     }
-    assert!(
-        std::env::var("CI").as_deref() != Ok("true"),
-        "the PROFINET wire test needs root under CI (network namespaces)"
-    );
-    eprintln!("skipped: the PROFINET wire test needs root (network namespaces)");
-    false
+    is_root
 }
 
-/// `scripts/wire-test.sh --bus pn`'s status and everything it printed.
+/// `scripts/wire-test.sh --bus pn`'s status and everything it printed, with
+/// the gsdc this test was built with, in the wire workspace's target
+/// directory the DP tests use (taking turns with them).
 fn exchange(descriptions: &[&str], files: Option<&Path>) -> (i32, String) {
-    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let mut command = Command::new(root().join("scripts/wire-test.sh"));
+    let _turn = turn();
+    let mut command = Command::new(support::checkout("scripts/wire-test.sh"));
     command.args(["--bus", "pn"]);
     if let Some(files) = files {
         command.arg("--files").arg(files);
     }
     let output = command
         .args(descriptions)
-        .current_dir(root())
-        .env("GSDC", env!("CARGO_BIN_EXE_gsdc"))
+        .current_dir(support::CHECKOUT)
+        .env("GSDC", support::GSDC)
+        .env("WIRE_TARGET_DIR", wire_target())
+        .env("CARGO", env!("CARGO"))
         .output()
-        .expect("wire/pn/exchange.sh runs");
+        .expect("scripts/wire-test.sh runs");
     let text = format!(
         "{}{}",
         String::from_utf8_lossy(&output.stdout),
@@ -148,23 +142,19 @@ fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
     );
 }
 
-/// The description's GSDML, built by gsdc into a directory of the test's
-/// own, then changed by `edit`: a released file that disagrees with the
-/// firmware.
-fn edited_gsdml(description: &str, edit: impl Fn(String) -> String) -> tempfile_dir::Dir {
-    let dir = tempfile_dir::Dir::new();
-    let built = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(["build", description, "--out"])
-        .arg(dir.path())
-        .current_dir(root())
-        .output()
-        .expect("gsdc runs");
-    assert!(
-        built.status.success(),
-        "{}",
-        String::from_utf8_lossy(&built.stderr)
-    );
-    let gsdml = std::fs::read_dir(dir.path())
+/// The description's GSDML, built by gsdc into a scratch directory, then
+/// changed by `edit`: a released file that disagrees with the firmware.
+#[track_caller]
+fn edited_gsdml(description: &str, edit: impl Fn(String) -> String) -> support::Scratch {
+    let stem = Path::new(description)
+        .file_stem()
+        .unwrap()
+        .to_string_lossy();
+    let dir = support::scratch(&format!("released-{stem}"));
+    let out = dir.to_str().unwrap();
+    let built = support::gsdc(["build", description, "--out", out]);
+    assert!(built.status.success(), "{}", support::stderr(&built));
+    let gsdml = std::fs::read_dir(&*dir)
         .unwrap()
         .map(|e| e.unwrap().path())
         .find(|p| p.extension().is_some_and(|e| e == "xml"))
@@ -188,7 +178,7 @@ fn a_gsdml_with_another_module_ident_fails_and_says_where() {
             r#"ModuleIdentNumber="0x00000011""#,
         )
     });
-    let (status, text) = exchange(&["descriptions/mv810-pnet02.toml"], Some(dir.path()));
+    let (status, text) = exchange(&["descriptions/mv810-pnet02.toml"], Some(&dir));
     assert_eq!(status, 1, "{text}");
     assert_lines(
         &text,
@@ -208,41 +198,10 @@ fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
     let dir = edited_gsdml("tests/fixtures/valid/profidrive.toml", |t| {
         t.replace(r#"API="14848""#, r#"API="0""#)
     });
-    let (status, text) = exchange(&["tests/fixtures/valid/profidrive.toml"], Some(dir.path()));
+    let (status, text) = exchange(&["tests/fixtures/valid/profidrive.toml"], Some(&dir));
     assert_eq!(status, 1, "{text}");
     assert_lines(
         &text,
         &["FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)"],
     );
-}
-
-/// A temporary directory removed on drop, without a dependency.
-mod tempfile_dir {
-    use std::path::{Path, PathBuf};
-
-    pub struct Dir(PathBuf);
-
-    impl Dir {
-        pub fn new() -> Dir {
-            use std::sync::atomic::{AtomicU32, Ordering};
-            static NEXT: AtomicU32 = AtomicU32::new(0);
-            let path = std::env::temp_dir().join(format!(
-                "gsdc-wire-pn-{}-{}",
-                std::process::id(),
-                NEXT.fetch_add(1, Ordering::Relaxed)
-            ));
-            std::fs::create_dir_all(&path).unwrap();
-            Dir(path)
-        }
-
-        pub fn path(&self) -> &Path {
-            &self.0
-        }
-    }
-
-    impl Drop for Dir {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
 }

@@ -126,6 +126,9 @@ struct GroupItem {
     entries: Vec<EntryItem>,
     defaults: String,
     user_prm_offset: Option<u16>,
+    /// The entries User_Prm_Data carries, by place, when not all
+    /// (`UserPrm::partial`); empty when it carries all.
+    user_prm_entries: Vec<usize>,
     record_index: Option<u16>,
     /// A module's PZD record holds the words it transports.
     record_prefix: bool,
@@ -606,6 +609,11 @@ fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
             .as_ref()
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
+        user_prm_entries: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.partial(g))
+            .unwrap_or_default(),
         record_index: record.map(|r| r.index),
         record_prefix: record.is_some_and(|r| r.reading == RecordReading::Prefix),
         record_length: g.record_length,

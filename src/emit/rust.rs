@@ -119,6 +119,9 @@ struct Group {
     sets: Vec<SetAllowed>,
     entries: Vec<Entry>,
     user_prm_offset: Option<u16>,
+    /// The entries User_Prm_Data carries, by place, when not all
+    /// (`UserPrm::partial`); empty when it carries all.
+    user_prm_entries: Vec<usize>,
     record_index: Option<u16>,
     /// How `decode_record` reads the record: `read_record` (every entry) or
     /// `read_record_prefix` (a module's PZD record holds its words).
@@ -510,6 +513,11 @@ fn group(ir: &Ir, g: &MappingGroup) -> Group {
             .as_ref()
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
+        user_prm_entries: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.partial(g))
+            .unwrap_or_default(),
         record_index: record.map(|r| r.index),
         record_reader: match record.map(|r| r.reading) {
             Some(RecordReading::Prefix) => "read_record_prefix",

@@ -142,12 +142,6 @@ impl Module {
         find(&self.settings, name)
     }
 
-    /// The module's default parameter bytes (its part of User_Prm_Data),
-    /// built like [`GsdFile::default_user_prm_data`].
-    pub fn default_prm_data(&self, file: &GsdFile) -> Vec<u8> {
-        crate::gsd::prm::default_telegram(file, &self.settings, crate::gsd::prm::Family::Plain)
-    }
-
     /// Input and output bytes the config identifiers declare.
     pub fn io_lengths(
         &self,
@@ -369,12 +363,6 @@ impl GsdFile {
 
     pub fn prm_text(&self, id: i64) -> Option<&PrmText> {
         self.prm_texts.iter().find(|t| t.id.value == id)
-    }
-
-    /// The station's default User_Prm_Data telegram (without the 7 standard
-    /// bytes of the Set_Prm telegram), as a master sends it unchanged.
-    pub fn default_user_prm_data(&self) -> Vec<u8> {
-        crate::gsd::prm::default_telegram(self, &self.settings, crate::gsd::prm::Family::Plain)
     }
 
     /// `GSD_Revision`, or 0 for files written before the keyword existed.

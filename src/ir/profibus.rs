@@ -2,7 +2,8 @@
 //! modules with their config bytes, the parameter telegram and diagnosis.
 
 use super::{
-    EntryKey, Ident, Ir, Layout, MappingEntry, MappingKind, MappingSet, SetKey, Text, ValueSet,
+    EntryKey, Ident, Ir, Layout, MappingEntry, MappingGroup, MappingKind, MappingSet, SetKey, Text,
+    ValueSet,
 };
 pub use crate::spec::Baud;
 use std::fmt;
@@ -108,6 +109,25 @@ impl UserPrm {
 
     pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
         self.blocks.iter().find(|b| b.kind == kind)
+    }
+
+    /// Where the entries of `group` that User_Prm_Data carries stand among
+    /// the group's, in order, when it carries some and not all (a setting a
+    /// PROFIBUS master cannot set); `None` when it carries all or none.
+    pub fn partial(&self, group: &MappingGroup) -> Option<Vec<usize>> {
+        let block = self.block(group.kind)?;
+        let carried: Vec<usize> = group
+            .entries()
+            .enumerate()
+            .filter(|(_, (_, e))| {
+                block
+                    .params
+                    .iter()
+                    .any(|p| p.value == PrmValue::Entry(e.key))
+            })
+            .map(|(i, _)| i)
+            .collect();
+        (carried.len() < group.entry_count()).then_some(carried)
     }
 
     /// The parameter that holds `value`, where the plan places it; `None`

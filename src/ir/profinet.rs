@@ -105,12 +105,28 @@ pub struct Date {
     pub year: u16,
     pub month: u8,
     pub day: u8,
+    /// The local time of day, for a second release on one day.
+    pub time: Option<TimeOfDay>,
+}
+
+/// A local time of day in whole seconds, as a GSDML file name gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct TimeOfDay {
+    pub hour: u8,
+    pub minute: u8,
+    pub second: u8,
 }
 
 impl Date {
-    /// `yyyymmdd`, as GSDML file names write it.
+    /// `yyyymmdd`, or `yyyymmdd-hhmmss` with a time, as GSDML file names
+    /// write it.
     pub fn compact(self) -> String {
-        format!("{:04}{:02}{:02}", self.year, self.month, self.day)
+        let date = format!("{:04}{:02}{:02}", self.year, self.month, self.day);
+        match self.time {
+            None => date,
+            Some(t) => format!("{date}-{:02}{:02}{:02}", t.hour, t.minute, t.second),
+        }
     }
 }
 

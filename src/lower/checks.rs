@@ -4,7 +4,7 @@
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, Decision, DecisionKind};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
@@ -18,6 +18,9 @@ pub struct Checker {
     languages: BTreeSet<String>,
     /// Placeholders and gsdc's defaults, as lowering meets them.
     decisions: Vec<Decision>,
+    /// The prefix of the first name the description writes each address
+    /// with (`Numbering::written_prefixes`).
+    written_prefixes: BTreeMap<u16, String>,
 }
 
 /// Where the defaults of several items come from: `default` for all of
@@ -43,6 +46,7 @@ impl Checker {
             for_gsd,
             languages: BTreeSet::new(),
             decisions: Vec::new(),
+            written_prefixes: BTreeMap::new(),
         }
     }
 
@@ -105,6 +109,18 @@ impl Checker {
     /// The placeholders and defaults met, in the order met.
     pub fn take_decisions(&mut self) -> Vec<Decision> {
         std::mem::take(&mut self.decisions)
+    }
+
+    /// A function-code name read: the address is written back with its
+    /// prefix, the first one the description writes it with.
+    pub fn wrote_name(&mut self, address: u16, prefix: &str) {
+        self.written_prefixes
+            .entry(address)
+            .or_insert_with(|| prefix.to_string());
+    }
+
+    pub fn take_written_prefixes(&mut self) -> BTreeMap<u16, String> {
+        std::mem::take(&mut self.written_prefixes)
     }
 
     /// Every language besides English that a text used, in code order.

@@ -12,7 +12,7 @@ use crate::ir::profibus::{
     Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
     PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
+use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
@@ -442,7 +442,7 @@ fn user_prm(
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
     let texts: Vec<PrmText> = mappings
         .sets()
-        .filter(|s| s.allowed.choices().is_some())
+        .filter(|s| s.allowed.choices().is_some() && in_user_prm(s))
         .zip(1..=u16::MAX)
         .map(|(s, id)| PrmText { id, set: s.key })
         .collect();
@@ -454,10 +454,12 @@ fn user_prm(
     let blocks = mappings
         .groups
         .iter()
+        .filter(|g| g.entries().any(|(set, _)| in_user_prm(set)))
         .map(|g| {
             let block_offset = end;
             let params = g
                 .entries()
+                .filter(|(set, _)| in_user_prm(set))
                 .map(|(set, entry)| {
                     let offset = end;
                     end += entry_bytes;
@@ -504,6 +506,12 @@ fn user_prm(
         texts,
         len: saturate(end),
     }
+}
+
+/// Whether User_Prm_Data carries a set's entries: all but a setting the
+/// description keeps from a PROFIBUS master (`per_module.profibus`).
+fn in_user_prm(set: &MappingSet) -> bool {
+    set.fixed.is_none_or(|f| f.in_user_prm)
 }
 
 /// A gateway's parameters from `start` on, within the limit (E116).

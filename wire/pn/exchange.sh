@@ -9,7 +9,7 @@
 # runs it for every description with [profinet].
 #
 # GSDC names a gsdc binary (else cargo builds one); CARGO_TARGET_DIR the wire
-# workspace's target directory (else wire/target).
+# workspace's target directory (else wire/target); CARGO the cargo to run.
 #
 #   wire/pn/exchange.sh [--files DIR] DESC.toml
 #
@@ -60,12 +60,21 @@ if [ -n "$files" ]; then
   gsdml="$files/$(basename "$gsdml")"
   [ -f "$gsdml" ] || { echo "PROFINET exchange of $name: $gsdml does not exist" >&2; exit 2; }
 fi
-(cd "$root/wire" && cargo build --quiet -p wire-pn 2>"$work/device.err") || {
+# The device, built from the layouts WIRE_DESCRIPTIONS names and copied out
+# under the lock scripts/wire-test.sh takes: another run with other
+# descriptions rebuilds it in the same target directory.
+target="${CARGO_TARGET_DIR:-$root/wire/target}"
+mkdir -p "$target"
+(
+  flock 9
+  CARGO_TARGET_DIR="$target" "${CARGO:-cargo}" build --quiet --manifest-path "$root/wire/Cargo.toml" -p wire-pn &&
+    cp "$target/debug/pn-device" "$work/pn-device"
+) 9>"$target/.wire-test.lock" 2>"$work/device.err" || {
   cat "$work/device.err" >&2
   echo "PROFINET exchange of $name: the device did not build" >&2
   exit 2
 }
-device="${CARGO_TARGET_DIR:-$root/wire/target}/debug/pn-device"
+device="$work/pn-device"
 scenario="$here/scenarios/$name.json"
 [ -f "$scenario" ] || scenario=-
 

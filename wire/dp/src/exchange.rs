@@ -338,7 +338,7 @@ impl Target {
     /// Whether the layout has each module the GSD names, with the same
     /// config bytes; prints the byte offset and both values where not.
     fn same_modules(&self, startup: &Startup) -> bool {
-        let modules = self.card.profibus.map_or(&[][..], |p| p.modules);
+        let modules = self.card.dp.map_or(&[][..], |dp| dp.modules);
         let mut offset = 0;
         for name in &startup.modules {
             let Some(layout) = modules.iter().find(|m| m.name == name.as_str()) else {

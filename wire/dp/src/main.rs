@@ -47,9 +47,12 @@ fn run() -> Result<bool, String> {
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .ok_or(USAGE)?;
-    let card = wire_firmware::cards::card(&name).ok_or_else(|| {
+    let card = wire_firmware::card(&name).ok_or_else(|| {
         format!("the firmware was not built with {name}: build it with WIRE_DESCRIPTIONS naming it")
     })?;
+    if card.dp.is_none() {
+        return Err(format!("the layout of {name} has no PROFIBUS part"));
+    }
     println!(
         "{}: the master reads {}",
         description.display(),

@@ -24,9 +24,10 @@
 //!   the slave has a diagnosis the master has not read yet.
 
 use profirust::fdl::{DataTelegram, FunctionCode, RequestType};
-use wire_firmware::card::{Card, DpModule, NodeSetup, PrmValues, Profibus};
+use wire_firmware::card::{Card, NodeSetup, PrmValues};
 use wire_firmware::cyclic::{self, Shape};
 use wire_firmware::drive::Drive;
+use wire_firmware::gsdc_support::{DpDevice, DpModule};
 use wire_firmware::nodes::Nodes;
 
 // The slave's service access points (IEC 61158-6-3; profirust::consts
@@ -110,7 +111,7 @@ impl Plugged {
     /// Bytes of input and of output.
     pub fn data_lengths(&self) -> (usize, usize) {
         match self {
-            Plugged::Module(module) => (module.data_len(), module.data_len()),
+            Plugged::Module(module) => (module.input_len, module.output_len),
             Plugged::Nodes(setup) => (setup.input_len, setup.output_len),
         }
     }
@@ -130,7 +131,8 @@ struct Faults {
 pub struct DpSlave {
     pub address: u8,
     pub card: &'static Card,
-    profibus: &'static Profibus,
+    /// The layout's `DP_DEVICE`.
+    dp: &'static DpDevice,
     /// The drive behind a drive's card.
     pub drive: Drive,
     /// The nodes behind a gateway.
@@ -143,7 +145,9 @@ pub struct DpSlave {
     /// min_Tsdr of the last Set_Prm, in bit times: the slave answers no
     /// sooner.
     min_tsdr_bits: u8,
-    /// User_Prm_Data of the last Set_Prm the slave accepted, decoded.
+    /// User_Prm_Data of the last Set_Prm the slave accepted, and its
+    /// values by name.
+    user_prm: Vec<u8>,
     prm: Option<PrmValues>,
     /// A gateway's nodes, as the last Set_Prm put them in use.
     node_setup: Option<NodeSetup>,
@@ -159,13 +163,11 @@ impl DpSlave {
     /// The slave of `card` at `address`, after power-on: waiting for
     /// parameters.
     pub fn new(address: u8, card: &'static Card, drive: Drive) -> Self {
-        let profibus = card
-            .profibus
-            .expect("a DP slave needs a layout with PROFIBUS");
+        let dp = card.dp.expect("a DP slave needs a layout with PROFIBUS");
         DpSlave {
             address,
             card,
-            profibus,
+            dp,
             drive,
             nodes: Nodes::default(),
             state: State::WaitPrm,
@@ -174,6 +176,7 @@ impl DpSlave {
             watchdog_on: false,
             // IEC 61158-6-3: 11 bit times until a Set_Prm says otherwise.
             min_tsdr_bits: 11,
+            user_prm: Vec::new(),
             prm: None,
             node_setup: None,
             config: Vec::new(),
@@ -266,12 +269,13 @@ impl DpSlave {
         // its codec refuses.
         let ident = u16::from_be_bytes([pdu[4], pdu[5]]);
         let user_prm = &pdu[SET_PRM_FIXED..];
-        let prm = (ident == self.profibus.ident_number)
-            .then(|| (self.profibus.decode_user_prm)(user_prm).ok())
+        let prm = (ident == self.dp.ident_number)
+            .then(|| PrmValues::read(&self.dp.user_prm, user_prm).ok())
             .flatten();
-        let node_setup = self.profibus.gateway.map(|g| (g.nodes)(user_prm).ok());
+        let node_setup = self.card.gateway.map(|g| (g.nodes)(user_prm));
         match (prm, node_setup) {
             (Some(prm), None | Some(Some(_))) => {
+                self.user_prm = user_prm.to_vec();
                 self.prm = Some(prm);
                 self.node_setup = node_setup.flatten();
                 self.master = Some(request.h.sa);
@@ -306,17 +310,15 @@ impl DpSlave {
         Reply::ShortConfirmation
     }
 
-    /// What `config` plugs: one of the layout's modules, or a gateway's
-    /// modules whose words make the totals of the nodes in use.
+    /// What `config` plugs, as the layout's table checks it: one of its
+    /// modules, or a gateway's modules whose words make the totals of the
+    /// nodes in use.
     fn plug(&self, config: &[u8]) -> Option<Plugged> {
-        match (self.profibus.gateway, self.node_setup) {
-            (Some(gateway), Some(setup)) => {
-                let totals = (gateway.config_totals)(config)?;
-                let fits = totals == (setup.input_len, setup.output_len);
-                fits.then(|| Plugged::Nodes(Box::new(setup)))
-            }
-            _ => {
-                let module = self.profibus.modules.iter().find(|m| m.config == config)?;
+        self.dp.check_config(&self.user_prm, config)?;
+        match self.node_setup {
+            Some(setup) => Some(Plugged::Nodes(Box::new(setup))),
+            None => {
+                let module = self.dp.modules.iter().find(|m| m.config == config)?;
                 Some(Plugged::Module(module))
             }
         }
@@ -359,7 +361,7 @@ impl DpSlave {
         if self.watchdog_on {
             status_2 |= WD_ON_STATUS;
         }
-        let ident = self.profibus.ident_number.to_be_bytes();
+        let ident = self.dp.ident_number.to_be_bytes();
         let mut pdu = vec![
             status_1,
             status_2,
@@ -383,14 +385,14 @@ impl DpSlave {
     /// area (MD810 1.8: always, 3 bytes); a gateway the block of its nodes'
     /// event, by the layout's codec, and none without an event.
     fn device_block(&self) -> (Vec<u8>, bool) {
-        if let Some(gateway) = self.profibus.gateway {
+        if let Some(gateway) = self.card.gateway {
             let block = self.nodes.event().and_then(gateway.diagnosis);
             let bytes = block.map_or(Vec::new(), |b| b.as_bytes().to_vec());
             let reports = !bytes.is_empty();
             return (bytes, reports);
         }
         let code = self.drive.diagnosis_code();
-        match &self.profibus.diagnosis {
+        match &self.card.diagnosis {
             Some(diagnosis) => {
                 let mut block = diagnosis.empty.to_vec();
                 diagnosis.code.set(&mut block, code);
@@ -455,6 +457,7 @@ impl DpSlave {
 
     /// Waiting for parameters, with none.
     fn forget_parameters(&mut self) {
+        self.user_prm.clear();
         self.prm = None;
         self.node_setup = None;
         self.plugged = None;

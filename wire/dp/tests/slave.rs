@@ -12,7 +12,7 @@ const MASTER: u8 = 2;
 const SLAVE: u8 = 3;
 
 fn slave() -> DpSlave {
-    let card = wire_firmware::cards::card("md810dp").unwrap();
+    let card = wire_firmware::card("md810dp").unwrap();
     DpSlave::new(
         SLAVE,
         card,

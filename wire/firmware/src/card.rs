@@ -1,11 +1,15 @@
-//! What the card's firmware reads of a layout, by the same names for every
-//! description: its telegram, its mappings and, per bus, its identity,
-//! modules, parameters and diagnosis. Every number is a constant of the
-//! layout; [`crate::layouts`] fills one [`Card`] per description.
+//! What the card's firmware reads of a layout, under the same names for
+//! every description: the layout's device tables (`DP_DEVICE`: identity,
+//! modules, User_Prm_Data by GSD name, the PKW codec) and, beside them,
+//! what the tables do not carry yet: which PZD word each mapping fills,
+//! the control and status words, the diagnosis block's area, a gateway's
+//! nodes and diagnosis. build.rs fills one [`Card`] per layout
+//! ([`crate::layouts::CARDS`]); every number in it is a constant of the
+//! layout.
 
 use crate::cyclic::Shape;
-use crate::gsdc_support::{Mapping, PnDevice, PnModule, PrmError};
-use crate::pkw::PkwKind;
+use crate::gsdc_support::diagnosis::DiagArea;
+use crate::gsdc_support::{DpDevice, Mapping, PkwCodec, PnDevice, PnModule, PrmError, UserPrm};
 
 /// One description's card.
 #[derive(Clone, Copy, Debug)]
@@ -15,8 +19,8 @@ pub struct Card {
     /// The description's fingerprint; the GSD and GSDML built from the same
     /// description carry it in their headers.
     pub fingerprint: &'static str,
-    /// The PKW channel, when the telegram has one.
-    pub pkw: Option<PkwKind>,
+    /// The PKW channel's codec (`PkwCodec::None` without one).
+    pub pkw: PkwCodec,
     /// Whether PZD1 from the master is the control word, and PZD1 to the
     /// master the status word.
     pub control_word: bool,
@@ -26,43 +30,49 @@ pub struct Card {
     pub pzd_out: &'static [Mapping],
     /// What the PZD words to the master carry.
     pub pzd_in: &'static [Mapping],
-    /// The status word the drive answers to the control word, by the
-    /// layout's bits, for a drive whose control and status words are no
-    /// parameters of its own (MV810).
-    pub status_of: Option<fn(u16) -> u16>,
-    pub profibus: Option<&'static Profibus>,
-    pub profinet: Option<Profinet>,
-}
-
-/// What a PROFIBUS-DP slave needs of the layout.
-#[derive(Clone, Copy, Debug)]
-pub struct Profibus {
-    /// Ident_Number: Set_Prm must carry it.
-    pub ident_number: u16,
-    /// The modules Chk_Cfg may plug, one at a time.
-    pub modules: &'static [DpModule],
-    /// The length of User_Prm_Data.
-    pub user_prm_len: usize,
-    /// Decodes User_Prm_Data with the layout's codec: the value of every
-    /// parameter by its GSD name, or why Set_Prm is refused (Prm_Fault).
-    pub decode_user_prm: fn(&[u8]) -> Result<PrmValues, PrmError>,
-    /// The device-related diagnosis block, when the GSD describes one.
+    /// The layout's `DP_DEVICE`, for a description with PROFIBUS.
+    pub dp: Option<&'static DpDevice>,
+    /// The device-related diagnosis block of a drive's card.
     pub diagnosis: Option<Diagnosis>,
-    /// A gateway's nodes: then Chk_Cfg plugs any of `modules` whose words
-    /// make the nodes' totals.
+    /// A gateway's nodes and diagnosis.
     pub gateway: Option<Gateway>,
+    /// The layout's `PN_DEVICE`, for a description with PROFINET.
+    pub pn: Option<&'static PnDevice>,
+    /// Each PROFINET module's telegram, by its ident: the PKW channel or
+    /// not, and its PZD words. `PnModule` does not carry it (by length alone
+    /// MD810's "PKW + 2 PZD" and "6 PZD", 12 bytes each, are one), so
+    /// build.rs takes it from the plan the layout is written from, beside
+    /// the layout's ident constant; when the table carries it, this goes.
+    pub pn_shapes: &'static [(u32, Shape)],
 }
 
-/// What a gateway's slave needs of the layout.
+impl Card {
+    /// The telegram of the PROFINET module `module`.
+    pub fn pn_shape(&self, module: &PnModule) -> Option<Shape> {
+        let (_, shape) = self
+            .pn_shapes
+            .iter()
+            .find(|(ident, _)| *ident == module.ident)?;
+        Some(*shape)
+    }
+}
+
+/// The device-related diagnosis block: empty, and the area that carries
+/// the drive's code (the first `Unit_Diag_Area` of the GSD).
+#[derive(Clone, Copy, Debug)]
+pub struct Diagnosis {
+    /// The block with every area 0, the header first.
+    pub empty: &'static [u8],
+    pub code: DiagArea,
+}
+
+/// What a gateway's slave needs of the layout beyond `DP_DEVICE`.
 #[derive(Clone, Copy, Debug)]
 pub struct Gateway {
     /// The nodes User_Prm_Data puts in use, with where each one's words
-    /// lie, by the layout's codec; or why Set_Prm is refused (a value out
-    /// of range, totals beyond the gateway's limits).
-    pub nodes: fn(&[u8]) -> Result<NodeSetup, PrmError>,
-    /// The bytes of input and of output the config bytes' modules carry;
-    /// `None` for config bytes that are not the gateway's modules.
-    pub config_totals: fn(&[u8]) -> Option<(usize, usize)>,
+    /// lie, by the layout's codec; `None` when Set_Prm is refused (a value
+    /// out of range, totals beyond the gateway's limits).
+    pub nodes: fn(&[u8]) -> Option<NodeSetup>,
     /// The block the gateway sends for a node's event, by the layout's
     /// codec; `None` for a type, node or code the layout does not list.
     pub diagnosis: fn(NodeEvent) -> Option<DiagBytes>,
@@ -128,16 +138,20 @@ pub struct NodeData {
 }
 
 impl NodeSetup {
-    pub fn new(input_len: usize, output_len: usize, nodes: &[NodeData]) -> Self {
-        let mut held = [None; MAX_NODES];
-        for (slot, node) in held.iter_mut().zip(nodes) {
-            *slot = Some(*node);
+    pub const EMPTY: Self = NodeSetup {
+        input_len: 0,
+        output_len: 0,
+        nodes: [None; MAX_NODES],
+    };
+
+    /// Adds `node`, the next in ascending number.
+    pub fn with(mut self, node: NodeData) -> Self {
+        if let Some(slot) = self.nodes.iter_mut().find(|n| n.is_none()) {
+            *slot = Some(node);
+            self.input_len += 2 * usize::from(node.input_words);
+            self.output_len += 2 * usize::from(node.output_words);
         }
-        NodeSetup {
-            input_len,
-            output_len,
-            nodes: held,
-        }
+        self
     }
 
     /// The nodes in use, in ascending number.
@@ -146,53 +160,62 @@ impl NodeSetup {
     }
 }
 
-/// What a PROFINET device needs of the layout: its device table, and what
-/// the table does not say yet.
-#[derive(Clone, Copy, Debug)]
-pub struct Profinet {
-    /// The layout's `PN_DEVICE`.
-    pub device: &'static PnDevice,
-    /// PROVISIONAL, until `PnModule` says it: whether the module's telegram
-    /// starts with the PKW channel, and its PZD words (by the module's length
-    /// alone MD810's "PKW + 2 PZD" and "6 PZD", 12 bytes each, are one).
-    pub shape: fn(&PnModule) -> Shape,
-}
-
-/// A module of the GSD.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct DpModule {
-    /// As the GSD names it: `PPO1: 4 PKW + 2 PZD`.
-    pub name: &'static str,
-    /// The config bytes Chk_Cfg carries for it.
-    pub config: &'static [u8],
-    /// Whether the telegram starts with the PKW channel.
-    pub pkw: bool,
-    /// The PZD words each way.
-    pub pzd_words: usize,
-}
-
-impl DpModule {
-    /// Bytes each way: the PKW channel's 8, then 2 per PZD word.
-    pub const fn data_len(&self) -> usize {
-        let pkw = if self.pkw {
-            crate::gsdc_support::PKW_BYTES
-        } else {
-            0
-        };
-        pkw + 2 * self.pzd_words
-    }
-}
-
-/// The device-related diagnosis block: its length and header, and the
-/// area that carries the drive's code.
-#[derive(Clone, Copy, Debug)]
-pub struct Diagnosis {
-    /// Bytes of the block, the header included.
-    pub len: usize,
-    /// The block with every area 0, the header first.
-    pub empty: &'static [u8],
-    /// The `Unit_Diag_Area` that carries the drive's code.
-    pub code: crate::gsdc_support::diagnosis::DiagArea,
+/// The gateway of the layout module `$layout`: its node codec and its
+/// diagnosis codec, which every gateway layout names alike
+/// (`gateway::NodeConfig`, `gateway::Diagnosis`, `gateway::DIAG`).
+#[macro_export]
+macro_rules! gateway_of {
+    ($layout:path) => {{
+        use $layout as layout;
+        $crate::card::Gateway {
+            nodes: |user_prm| {
+                let config = layout::gateway::NodeConfig::decode(user_prm).ok()?;
+                // Totals the layout refuses are a parameter fault too.
+                let totals = config.totals().ok()?;
+                let mut setup = $crate::card::NodeSetup::EMPTY;
+                for (i, node) in (layout::gateway::FIRST_NODE..)
+                    .take(usize::from(config.node_count))
+                    .enumerate()
+                {
+                    setup = setup.with($crate::card::NodeData {
+                        node,
+                        input_offset: config.input_offset(node).unwrap_or(0),
+                        input_words: config.input_words[i],
+                        output_offset: config.output_offset(node).unwrap_or(0),
+                        output_words: config.output_words[i],
+                    });
+                }
+                debug_assert_eq!(
+                    (setup.input_len, setup.output_len),
+                    (totals.input_len(), totals.output_len())
+                );
+                Some(setup)
+            },
+            diagnosis: |event| {
+                let diag = &layout::gateway::DIAG;
+                // The block of the event's type has its code in a byte or
+                // in a word: the one the layout's decoder takes.
+                let byte = u8::try_from(event.code).ok().map(|code| {
+                    let block = $crate::gsdc_support::gateway::DiagBlock::<
+                        { layout::gateway::DIAG_MAX_LEN },
+                    >::new(
+                        (diag.code_at + 1) as u8, diag, event.kind, event.node
+                    );
+                    block.with_code_byte(diag, code)
+                });
+                let word = $crate::gsdc_support::gateway::DiagBlock::<
+                    { layout::gateway::DIAG_MAX_LEN },
+                >::new(
+                    (diag.code_at + 2) as u8, diag, event.kind, event.node
+                )
+                .with_code_word(diag, event.code);
+                byte.into_iter()
+                    .chain([word])
+                    .find(|block| layout::gateway::Diagnosis::decode(block.as_bytes()).is_ok())
+                    .map(|block| $crate::card::DiagBytes::new(block.as_bytes()))
+            },
+        }
+    }};
 }
 
 /// The most parameters a User_Prm_Data holds here.
@@ -206,25 +229,35 @@ pub struct PrmValues {
 }
 
 impl PrmValues {
-    pub const EMPTY: Self = PrmValues {
-        values: [("", 0); MAX_PRM_VALUES],
-        len: 0,
-    };
-
-    /// Adds `name` with `value`.
-    pub fn with_value(mut self, name: &'static str, value: u16) -> Self {
-        self.values[self.len] = (name, value);
-        self.len += 1;
-        self
+    /// Every parameter of `user_prm` by its GSD name, read through the
+    /// layout's table; refused (Prm_Fault) as the table refuses it: a wrong
+    /// length, a value the GSD does not allow.
+    pub fn read(user_prm: &UserPrm, bytes: &[u8]) -> Result<Self, PrmError> {
+        user_prm.check(bytes)?;
+        let mut values = PrmValues {
+            values: [("", 0); MAX_PRM_VALUES],
+            len: 0,
+        };
+        for param in user_prm.params.iter().take(MAX_PRM_VALUES) {
+            values.values[values.len] = (param.name, param.read(bytes)?);
+            values.len += 1;
+        }
+        Ok(values)
     }
 
-    /// Adds the values of `mappings`, in order.
-    pub fn with(mut self, mappings: &[Mapping], values: &[u16]) -> Self {
-        for (mapping, &value) in mappings.iter().zip(values) {
-            self.values[self.len] = (mapping.name, value);
-            self.len += 1;
+    /// The values of PROFINET parameter records, each with its entry's
+    /// name (the mapping's, as `mapped` finds it); at most
+    /// [`MAX_PRM_VALUES`].
+    pub fn from_entries(entries: impl IntoIterator<Item = (&'static str, u16)>) -> Self {
+        let mut values = PrmValues {
+            values: [("", 0); MAX_PRM_VALUES],
+            len: 0,
+        };
+        for (slot, entry) in values.values.iter_mut().zip(entries) {
+            *slot = entry;
+            values.len += 1;
         }
-        self
+        values
     }
 
     /// Every parameter's name and value, in User_Prm_Data's order.

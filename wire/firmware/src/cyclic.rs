@@ -28,8 +28,8 @@ pub fn exchange(
     to_master: &mut [u8],
 ) {
     let pzd_at = if shape.pkw { PKW_BYTES } else { 0 };
-    if let Some(kind) = card.pkw.filter(|_| shape.pkw) {
-        let answer = crate::pkw::answer(kind, drive, &words(&from_master[..PKW_BYTES]));
+    if shape.pkw {
+        let answer = crate::pkw::answer(card.pkw, drive, &words(&from_master[..PKW_BYTES]));
         put_words(&mut to_master[..PKW_BYTES], &answer);
     }
     for word in 1..=shape.pzd_words {
@@ -40,8 +40,8 @@ pub fn exchange(
             // dropped, as the drive drops it.
             let _ = drive.write(address, value);
         }
-        let answer = match card.status_of {
-            Some(status_of) if word == 1 && card.status_word => status_of(value),
+        let answer = match drive.model.status_of {
+            Some(status_of) if word == 1 && card.status_word => status_of.answer(value),
             _ => source(card, prm, drive, word).map_or(0, |a| drive.read(a).unwrap_or(0)),
         };
         to_master[at..at + 2].copy_from_slice(&answer.to_be_bytes());

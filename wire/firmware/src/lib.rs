@@ -1,6 +1,7 @@
 //! What an option card's firmware contains, written once for any
 //! description: the layouts gsdc generates from the descriptions (each a
-//! module of [`layouts`], found by description name with [`layout`]), the
+//! module of [`layouts`]) and the card each one makes (found by description
+//! name with [`card()`]: the layout's device tables, [`card::Card`]), the
 //! drive behind the card ([`drive::Drive`], with the parameters its manual
 //! gives), and the answers the card gives for the drive on any bus
 //! ([`pkw`]: the PKW channel, through the layout's codecs).
@@ -19,7 +20,6 @@
 include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 
 pub mod card;
-pub mod cards;
 pub mod cyclic;
 pub mod drive;
 pub mod manuals;
@@ -28,25 +28,15 @@ pub mod pkw;
 
 /// The layouts of the descriptions the firmware is built for (build.rs
 /// generates them; `WIRE_DESCRIPTIONS` chooses them), each in a module named
-/// after its file, and [`layouts::LAYOUTS`], the table of them.
+/// after its file, and [`layouts::CARDS`], the card of each.
 pub mod layouts {
-    use super::Layout;
+    use crate::card::Card;
 
     include!(concat!(env!("OUT_DIR"), "/registry.rs"));
 }
 
-/// A layout the firmware is built for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Layout {
-    /// The description's file name without `.toml`: `md810dp`.
-    pub name: &'static str,
-    /// The description's fingerprint; the GSD and GSDML built from the same
-    /// description carry it in their headers.
-    pub fingerprint: &'static str,
-}
-
-/// The layout of the description named `name` (its file name without
+/// The card of the description named `name` (its file name without
 /// `.toml`), if the firmware was built for it.
-pub fn layout(name: &str) -> Option<&'static Layout> {
-    layouts::LAYOUTS.iter().find(|l| l.name == name)
+pub fn card(name: &str) -> Option<&'static card::Card> {
+    layouts::CARDS.iter().find(|c| c.name == name)
 }

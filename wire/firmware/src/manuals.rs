@@ -6,7 +6,7 @@
 //! description without a drive here (a fixture, a card of your own) gets
 //! [`WITHOUT_MANUAL`], a drive that holds no parameter.
 
-use crate::drive::{Access, Model, Parameter};
+use crate::drive::{Access, Model, Parameter, StatusAnswer};
 
 /// The drive behind the card the description `name` describes (its file
 /// name without `.toml`).
@@ -28,6 +28,7 @@ pub const WITHOUT_MANUAL: Model = Model {
     fault_parameter: None,
     control_word: None,
     status_word: None,
+    status_of: None,
     link_lost_code: None,
 };
 
@@ -50,6 +51,7 @@ pub const MD810: Model = Model {
     // 1.5.1: every PZD word is mapped; the telegram has no control or status word.
     control_word: None,
     status_word: None,
+    status_of: None,
     // 1.8: "另当 DP 扩展卡与变频器通信中断时，会返回 0x34".
     link_lost_code: Some(0x34),
 };
@@ -111,6 +113,7 @@ pub const PI9000: Model = Model {
     // The card's PZD1 each way (9kdp1.toml, the description's own telegram).
     control_word: Some(0x2000),
     status_word: Some(0x3000),
+    status_of: None,
     link_lost_code: None,
 };
 
@@ -149,8 +152,19 @@ pub const MV810: Model = Model {
     ],
     fault_parameter: None,
     // Section 3: PZD1 carries the control and status words themselves; the
-    // manual gives them no parameter (the card's status_of answers).
+    // manual gives them no parameter (status_of answers).
     control_word: None,
     status_word: None,
+    // Section 3: control word bit 0 forward running, 1 reverse running, 4
+    // decelerate to stop, 5 coast to stop, 7 emergency stop; status word bit
+    // 0 forward running, 1 reverse running, 2 stop, 5 ready. That the drive
+    // answers at once, and is always ready, is this model's own: the manual
+    // gives the bits, not the drive's timing.
+    status_of: Some(StatusAnswer {
+        runs: &[(0, 0), (1, 1)],
+        stops: &[4, 5, 7],
+        stopped: 2,
+        always: &[5],
+    }),
     link_lost_code: None,
 };

@@ -4,25 +4,16 @@
 //! written to the [`Drive`].
 
 use crate::drive::{Drive, Refused};
-use crate::gsdc_support::U16Be;
+use crate::gsdc_support::{PkwCodec, U16Be};
 
-/// The PKW channels of the shipped descriptions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PkwKind {
-    /// PKE, IND, PWE high, PWE low with MD810's command codes.
-    PkeIndPwe,
-    /// The PROFIdrive profile's PKE (AK, SPM, PNU), IND, PWE1, PWE2.
-    Profidrive,
-    /// MV810's stations, command, address and value (PROFINET only).
-    StationCommand,
-}
-
-/// The card's answer to the PKW `request` the master sent.
-pub fn answer(kind: PkwKind, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
-    match kind {
-        PkwKind::PkeIndPwe => pke_ind_pwe(drive, request),
-        PkwKind::Profidrive => profidrive(drive, request),
-        PkwKind::StationCommand => station_command(drive, request),
+/// The card's answer to the PKW `request` the master sent, by the layout's
+/// codec `codec`; no answer (all 0) without one.
+pub fn answer(codec: PkwCodec, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
+    match codec {
+        PkwCodec::PkeIndPwe => pke_ind_pwe(drive, request),
+        PkwCodec::Profidrive => profidrive(drive, request),
+        PkwCodec::StationCommand => station_command(drive, request),
+        PkwCodec::None => [U16Be::new(0); 4],
     }
 }
 

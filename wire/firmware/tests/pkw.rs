@@ -2,9 +2,9 @@
 //! layout's codecs.
 
 use wire_firmware::drive::Drive;
-use wire_firmware::gsdc_support::U16Be;
+use wire_firmware::gsdc_support::{PkwCodec, U16Be};
 use wire_firmware::manuals;
-use wire_firmware::pkw::{answer, PkwKind};
+use wire_firmware::pkw::answer;
 
 /// `"10F0 0800 0000 1388"`, as the manuals print PKW: four hex words.
 fn pkw(hex: &str) -> [U16Be; 4] {
@@ -23,7 +23,7 @@ fn md810() -> Drive {
 #[test]
 fn md810_reads_f0_08() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
     assert_eq!(answered, pkw("10F0 0800 0000 1388"));
 }
 
@@ -32,10 +32,10 @@ fn md810_reads_f0_08() {
 #[test]
 fn md810_writes_f0_08() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("20F0 0800 0000 07D0"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("20F0 0800 0000 07D0"));
     assert_eq!(answered, pkw("10F0 0800 0000 07D0"));
     assert_eq!(drive.read(0xF008), Ok(2000));
-    let again = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
+    let again = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 0800 0000 0000"));
     assert_eq!(again, pkw("10F0 0800 0000 07D0"));
 }
 
@@ -46,16 +46,16 @@ fn md810_writes_f0_08() {
 #[test]
 fn md810_refuses_an_illegal_address_and_command() {
     let mut drive = md810();
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("10F0 6300 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("10F0 6300 0000 0000"));
     assert_eq!(answered, pkw("70F0 6300 0000 0002"));
-    let answered = answer(PkwKind::PkeIndPwe, &mut drive, &pkw("30F0 0800 0000 0000"));
+    let answered = answer(PkwCodec::PkeIndPwe, &mut drive, &pkw("30F0 0800 0000 0000"));
     assert_eq!(answered, pkw("70F0 0800 0000 0001"));
 }
 
 /// No request, no response: what a master sends before it has one.
 #[test]
 fn no_request_no_response() {
-    for kind in [PkwKind::PkeIndPwe, PkwKind::Profidrive] {
+    for kind in [PkwCodec::PkeIndPwe, PkwCodec::Profidrive] {
         let mut drive = md810();
         let answered = answer(kind, &mut drive, &pkw("0000 0000 0000 0000"));
         assert_eq!(answered, pkw("0000 0000 0000 0000"), "{kind:?}");
@@ -68,7 +68,11 @@ fn no_request_no_response() {
 fn profidrive_refuses_an_unknown_pnu() {
     let mut drive = Drive::new(manuals::for_description("profidrive"));
     // Request 1 (read) of PNU 0x3E8 = 1000, subindex 0: this test's own.
-    let answered = answer(PkwKind::Profidrive, &mut drive, &pkw("13E8 0000 0000 0000"));
+    let answered = answer(
+        PkwCodec::Profidrive,
+        &mut drive,
+        &pkw("13E8 0000 0000 0000"),
+    );
     assert_eq!(answered, pkw("73E8 0000 0000 0000"));
 }
 
@@ -93,17 +97,38 @@ fn the_diagnosis_reports_the_drive() {
 }
 
 /// MV810's card (section 3: station, command, address, value): its drive
-/// model holds the parameters at the addresses the layout's mappings give.
-#[cfg(layout = "mv810-pnet02")]
+/// model holds the parameters at the addresses the layout's mappings give,
+/// and answers its control word at the bits the layout names.
 mod mv810 {
     use super::pkw;
     use wire_firmware::drive::Drive;
+    use wire_firmware::gsdc_support::PkwCodec;
     use wire_firmware::layouts::mv810_pnet02 as layout;
     use wire_firmware::manuals;
-    use wire_firmware::pkw::{answer, PkwKind, STATION_COMMAND_REFUSED};
+    use wire_firmware::pkw::{answer, STATION_COMMAND_REFUSED};
 
     fn mv810() -> Drive {
         Drive::new(manuals::for_description("mv810-pnet02"))
+    }
+
+    #[test]
+    fn the_status_word_answers_the_control_word_at_the_layouts_bits() {
+        use layout::{control_word as c, status_word as s};
+        let answer = |control: u16| mv810().model.status_of.unwrap().answer(control);
+        let ready = s::READY_STATUS.with(0, 1);
+        let stopped = s::STOP.with(ready, 1);
+        assert_eq!(answer(0), stopped);
+        assert_eq!(
+            answer(c::FORWARD_RUNNING.with(0, 1)),
+            s::FORWARD_RUNNING.with(ready, 1)
+        );
+        assert_eq!(
+            answer(c::REVERSE_RUNNING.with(0, 1)),
+            s::REVERSE_RUNNING.with(ready, 1)
+        );
+        for stop in [c::DECELERATE_TO_STOP, c::COAST_TO_STOP, c::EMERGENCY_STOP] {
+            assert_eq!(answer(stop.with(c::FORWARD_RUNNING.with(0, 1), 1)), stopped);
+        }
     }
 
     #[test]
@@ -123,7 +148,7 @@ mod mv810 {
         drive.write(0x2B02, 4).unwrap();
         assert_eq!(
             answer(
-                PkwKind::StationCommand,
+                PkwCodec::StationCommand,
                 &mut drive,
                 &pkw("0102 0003 2B02 0001")
             ),
@@ -136,14 +161,14 @@ mod mv810 {
     fn writes_p43_02() {
         let mut drive = mv810();
         let answered = answer(
-            PkwKind::StationCommand,
+            PkwCodec::StationCommand,
             &mut drive,
             &pkw("0101 0007 2B02 0005"),
         );
         assert_eq!(answered, pkw("0101 0007 2B02 0000"));
         assert_eq!(drive.read(0x2B02), Ok(5));
         let answered = answer(
-            PkwKind::StationCommand,
+            PkwCodec::StationCommand,
             &mut drive,
             &pkw("0101 0006 2B02 0006"),
         );
@@ -157,14 +182,14 @@ mod mv810 {
     fn refuses_a_parameter_it_does_not_hold() {
         let mut drive = mv810();
         let answered = answer(
-            PkwKind::StationCommand,
+            PkwCodec::StationCommand,
             &mut drive,
             &pkw("0101 0003 2B28 0001"),
         );
         let refused = format!("0101 0083 2B28 {STATION_COMMAND_REFUSED:04X}");
         assert_eq!(answered, pkw(&refused));
         let answered = answer(
-            PkwKind::StationCommand,
+            PkwCodec::StationCommand,
             &mut drive,
             &pkw("0000 0000 0000 0000"),
         );

@@ -4,7 +4,7 @@
 //! plugged module's data.
 
 use pnio::rt::IoImage;
-use wire_firmware::card::{Card, PrmValues, Profinet};
+use wire_firmware::card::{Card, PrmValues};
 use wire_firmware::cyclic::exchange;
 use wire_firmware::drive::Drive;
 use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
@@ -14,7 +14,6 @@ pub type Decoded = Vec<(&'static Mapping, u16)>;
 
 pub struct Application {
     card: &'static Card,
-    profinet: Profinet,
     drive: Drive,
     plugged: Vec<(u16, &'static PnModule)>,
     /// Each record's values: the GSDML's until the controller writes it.
@@ -22,11 +21,7 @@ pub struct Application {
 }
 
 impl Application {
-    pub fn new(
-        card: &'static Card,
-        profinet: Profinet,
-        plugged: &[(u16, &'static PnModule)],
-    ) -> Application {
+    pub fn new(card: &'static Card, plugged: &[(u16, &'static PnModule)]) -> Application {
         let records = plugged
             .iter()
             .flat_map(|(_, m)| m.records)
@@ -43,7 +38,6 @@ impl Application {
             .collect();
         Application {
             card,
-            profinet,
             drive: Drive::new(wire_firmware::manuals::for_description(card.name)),
             plugged: plugged.to_vec(),
             records,
@@ -95,13 +89,12 @@ impl Application {
     /// One cycle over every plugged module's data. Before the AR reaches
     /// data exchange there is nothing to read, and nothing happens.
     pub fn cycle(&mut self, image: &IoImage) {
-        let prm = self
-            .records
-            .iter()
-            .flat_map(|(_, decoded)| decoded)
-            .fold(PrmValues::EMPTY, |all, &(entry, value)| {
-                all.with(core::slice::from_ref(entry), &[value])
-            });
+        let prm = PrmValues::from_entries(
+            self.records
+                .iter()
+                .flat_map(|(_, decoded)| decoded)
+                .map(|&(entry, value)| (entry.name, value)),
+        );
         for (slot, module) in &self.plugged {
             let data = module.data;
             if data.output_len == 0 {
@@ -112,7 +105,9 @@ impl Application {
                 continue;
             };
             let mut to_controller = vec![0u8; data.input_len];
-            let shape = (self.profinet.shape)(module);
+            let Some(shape) = self.card.pn_shape(module) else {
+                continue;
+            };
             exchange(
                 self.card,
                 shape,

@@ -109,19 +109,18 @@ fn main() -> ExitCode {
 }
 
 fn run(args: &Args) -> Result<(), String> {
-    let card = wire_firmware::cards::card(&args.card).ok_or(format!(
-        "the firmware has no card {:?}; its cards: {}",
+    let card = wire_firmware::card(&args.card).ok_or(format!(
+        "the firmware has no card {:?} (build it with WIRE_DESCRIPTIONS naming the description); its cards: {}",
         args.card,
-        wire_firmware::cards::CARDS
+        wire_firmware::layouts::CARDS
             .iter()
             .map(|c| c.name)
             .collect::<Vec<_>>()
             .join(", ")
     ))?;
-    let profinet = card
-        .profinet
+    let device = card
+        .pn
         .ok_or(format!("{} has no PROFINET part", card.name))?;
-    let device = profinet.device;
     let plugged = plugged_modules(card, device, &args.plug)?;
     let mac = mac_of(&args.iface)?;
     let events = Events::stdout();
@@ -170,7 +169,7 @@ fn run(args: &Args) -> Result<(), String> {
     let deadline = args
         .seconds
         .map(|s| Instant::now() + Duration::from_secs(s));
-    let mut application = drive::Application::new(card, profinet, &plugged);
+    let mut application = drive::Application::new(card, &plugged);
     while deadline.is_none_or(|d| Instant::now() < d) && !acyclic.is_finished() {
         while let Ok(seen) = seen.try_recv() {
             report(&events, &mut application, seen);
