@@ -13,7 +13,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use crate::support;
+use crate::support::{self, descriptions};
 use crate::wire_dp::{turn, wire_target};
 
 /// Whether the exchange can run here (as root); under CI it must.
@@ -60,6 +60,30 @@ fn assert_lines(text: &str, lines: &[&str]) {
     }
 }
 
+/// Every shipped description and valid fixture with [profinet], as
+/// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
+/// pass: each of its modules, two negative cases (another module ident,
+/// another input length), and one for each module in an API other than 0
+/// (a layout that says API 0).
+fn with_profinet() -> Vec<(String, String, usize)> {
+    let mut found = Vec::new();
+    for folder in ["descriptions", "tests/fixtures/valid"] {
+        for name in support::file_names(&support::checkout(folder)) {
+            let Some(stem) = name.strip_suffix(".toml") else {
+                continue;
+            };
+            let ir = descriptions::load_from(folder, &name);
+            let Some(profinet) = &ir.profinet else {
+                continue;
+            };
+            let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
+            let exchanges = profinet.modules.len() + 2 + other_apis;
+            found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
+        }
+    }
+    found
+}
+
 /// Every description and valid fixture with `[profinet]` in one run: one
 /// build of the device for their layouts.
 #[test]
@@ -67,19 +91,23 @@ fn every_profinet_description_every_module() {
     if !can_run() {
         return;
     }
-    let (status, text) = exchange(
-        &[
-            "descriptions/mv810-pnet02.toml",
-            "descriptions/md810dp.toml",
-            "tests/fixtures/valid/profidrive.toml",
-            "tests/fixtures/valid/no_warnings.toml",
-        ],
-        None,
-    );
+    let all = with_profinet();
+    let paths: Vec<&str> = all.iter().map(|(path, _, _)| path.as_str()).collect();
+    for shipped in [
+        "descriptions/mv810-pnet02.toml",
+        "descriptions/md810dp.toml",
+        "tests/fixtures/valid/profidrive.toml",
+    ] {
+        assert!(paths.contains(&shipped), "{shipped} has [profinet]");
+    }
+    let (status, text) = exchange(&paths, None);
     assert_eq!(status, 0, "{text}");
-    // Every module of the fixture without warnings (a PROFIdrive telegram,
-    // PKW and PZD modules), and its three negative cases.
-    assert_lines(&text, &["PROFINET no_warnings: 8 passed, 0 failed"]);
+    for (_, name, exchanges) in &all {
+        assert_lines(
+            &text,
+            &[&format!("PROFINET {name}: {exchanges} passed, 0 failed")],
+        );
+    }
     mv810_every_module_records_control_word_and_pkw(&text);
     md810_reads_f0_08_through_the_pkw_channel(&text);
     profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);
