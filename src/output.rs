@@ -48,6 +48,7 @@ pub fn read_device_file(path: &Path) -> Result<(FileKind, Vec<u8>), ReadError> {
     let limit = match kind {
         FileKind::Gsd => &crate::gsd::INPUT_LIMIT,
         FileKind::Gsdml => &crate::gsdml::INPUT_LIMIT,
+        FileKind::Bitmap => &crate::symbol::check::INPUT_LIMIT,
         FileKind::Neither => return Ok((kind, bytes)),
     };
     read_rest(file, known, limit, bytes).map(|bytes| (kind, bytes))
@@ -269,8 +270,15 @@ fn is_generated(path: &Path) -> io::Result<bool> {
     fs::File::open(path)?
         .take(HEADER_BYTES)
         .read_to_end(&mut head)?;
+    Ok(carries_mark(&head))
+}
+
+/// Whether a file starting with `head` carries [`GENERATED_MARK`] where
+/// gsdc's headers put it, in its first KiB.
+pub fn carries_mark(head: &[u8]) -> bool {
+    let head = &head[..head.len().min(HEADER_BYTES as usize)];
     let mark = GENERATED_MARK.as_bytes();
-    Ok(head.windows(mark.len()).any(|w| w == mark))
+    head.windows(mark.len()).any(|w| w == mark)
 }
 
 /// The name of one of gsdc's temporaries: `.NAME.gsdc-PID-RANDOM.tmp` (and

@@ -6,14 +6,10 @@
 //! nothing else. Facts no shipped description can produce (GSD choice
 //! texts, slots) are changed in a real GSD of the corpus.
 
-use std::path::{Path, PathBuf};
-
 use gsdc::device::{self, Device};
 use gsdc::diff::{Change, Class, Kind};
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use crate::support::{self, descriptions};
 
 /// An edit that must find what it replaces.
 enum Edit {
@@ -30,9 +26,7 @@ use Edit::{Cut, Description as D, File as F};
 
 /// The files a description's text builds, by name.
 fn build(name: &str, text: &str) -> Vec<gsdc::Artifact> {
-    let folder = root().join("descriptions");
-    let files = |path: &str| std::fs::read(folder.join(path)).map_err(|e| e.to_string());
-    let (ir, diagnostics) = gsdc::load_with(name, text, &files);
+    let (ir, diagnostics) = descriptions::load_text(name, text);
     let ir = ir.unwrap_or_else(|| panic!("{name} does not load: {diagnostics:#?}"));
     gsdc::compile(&ir).unwrap_or_else(|d| panic!("{name} does not compile: {d:#?}"))
 }
@@ -50,7 +44,7 @@ fn replace_once(text: &str, from: &str, to: &str, exactly_once: bool) -> String 
 /// The file of the description ending in `suffix` (`.GSD`, `.xml`), before
 /// and after the edits.
 fn files(description: &str, suffix: &str, edits: &[Edit]) -> (Vec<u8>, Vec<u8>) {
-    let text = std::fs::read_to_string(root().join("descriptions").join(description)).unwrap();
+    let text = descriptions::shipped_text(description);
     let mut changed = text.clone();
     for edit in edits {
         if let D(from, to) = edit {
@@ -144,8 +138,7 @@ fn identical_builds_have_no_change() {
         "md810-gateway.toml",
     ] {
         for suffix in [GSD, GSDML] {
-            let text =
-                std::fs::read_to_string(root().join("descriptions").join(description)).unwrap();
+            let text = descriptions::shipped_text(description);
             let Some(file) = build(description, &text)
                 .into_iter()
                 .find(|a| a.file_name.ends_with(suffix))
@@ -495,8 +488,7 @@ fn gsd_diagnosis_texts_values_and_areas() {
 /// slave): choice texts and choices, bit areas, slots.
 #[test]
 fn gsd_choices_bits_and_slots_of_a_real_file() {
-    let path = root().join("../shared/corpus/gsd/Rahix__mock.gsd");
-    let text = String::from_utf8(std::fs::read(&path).unwrap()).unwrap();
+    let text = String::from_utf8(support::corpus_file("gsd/Rahix__mock.gsd")).unwrap();
     let pair = |from: &str, to: &str| {
         assert_eq!(text.matches(from).count(), 1, "`{from}`");
         diff(text.as_bytes(), text.replacen(from, to, 1).as_bytes())
@@ -1027,5 +1019,4 @@ fn places_are_lines_and_element_paths() {
         old_place.path.as_deref(),
         Some("ApplicationProcess/ModuleList/ModuleItem[IDM_PKW_2]/VirtualSubmoduleList/VirtualSubmoduleItem[IDS_PKW_2]/RecordDataList/ParameterRecordDataItem[Index=1]/Ref[ByteOffset=0]")
     );
-    let _ = Path::new("");
 }

@@ -1,27 +1,28 @@
 //! `gsdc diff` on real releases of one device (`../shared/corpus/gsdml`),
-//! as a user runs it: the human output is snapshot-tested, and each
-//! snapshot's description is its review, read against the two files
-//! (`diff` of their texts), with every breaking change explained. Then
-//! what the command line does around the comparison: exit codes,
-//! `--fail-on`, JSON, files it cannot read or compare, descriptions.
+//! as a user runs it: the human output is snapshot-tested
+//! (`tests/snapshots/diff/`), and each snapshot's description is its
+//! review, read against the two files (`diff` of their texts), with every
+//! breaking change explained. Then what the command line does around the
+//! comparison: exit codes, `--fail-on`, JSON, files it cannot read or
+//! compare, descriptions.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+use crate::support::{self, gsdc};
 
-const CORPUS: &str = "../shared/corpus/gsdml";
+/// The releases compared, each pair's snapshot named after its test.
+const PAIRS: [&str; 4] = [
+    "rt_labs_iodevice_2019_to_2020",
+    "p_net_sample_app_2021_to_2023",
+    "p_net_sample_app_2023_to_2024",
+    "leuze_bcl348i_2012_to_2015",
+];
 
-fn gsdc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(args)
-        .output()
-        .expect("gsdc runs")
-}
-
+/// The path of a corpus GSDML file as the command line is given it.
 fn corpus(name: &str) -> String {
-    let path = format!("{CORPUS}/{name}");
-    let full = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(&path);
-    assert!(full.is_file(), "corpus file {path} is missing");
+    let path = format!("../shared/corpus/gsdml/{name}");
+    assert!(
+        support::checkout(&path).is_file(),
+        "corpus file {path} is missing"
+    );
     path
 }
 
@@ -31,22 +32,24 @@ fn diff(old: &str, new: &str, extra: &[&str]) -> (String, i32) {
     let mut args = vec!["diff", old.as_str(), new.as_str()];
     args.extend(extra);
     let out = gsdc(&args);
-    assert!(
-        out.stderr.is_empty(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    (
-        String::from_utf8(out.stdout).unwrap(),
-        out.status.code().unwrap(),
-    )
+    assert!(out.stderr.is_empty(), "{}", support::stderr(&out));
+    (support::stdout(&out), out.status.code().unwrap())
 }
 
+/// The output's snapshot, with its review as the snapshot's description.
 fn snapshot(name: &str, review: &str, output: &str) {
-    let mut settings = insta::Settings::clone_current();
-    settings.set_description(review);
-    settings.set_omit_expression(true);
-    settings.bind(|| insta::assert_snapshot!(name, output));
+    assert!(PAIRS.contains(&name), "{name} is not in PAIRS");
+    support::snapshots_in("diff", || {
+        let mut settings = insta::Settings::clone_current();
+        settings.set_description(review);
+        settings.set_omit_expression(true);
+        settings.bind(|| insta::assert_snapshot!(name, output));
+    });
+}
+
+#[test]
+fn every_snapshot_is_a_pair_of_releases() {
+    support::assert_no_orphan_snapshots("diff", PAIRS);
 }
 
 #[test]
@@ -192,15 +195,14 @@ fn json_for_ci() {
 /// GSD against a GSDML file is a usage error.
 #[test]
 fn unreadable_and_mismatched_files_exit_2() {
-    let dir = std::env::temp_dir().join(format!("gsdc-diff-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = support::scratch("unreadable");
     let broken = dir.join("broken.xml");
     std::fs::write(&broken, "<ISO15745Profile><unclosed></ISO15745Profile>").unwrap();
     let good = corpus("GSDML-V2.43-RT-Labs-P-Net-Sample-App-20230117.xml");
-    let out = gsdc(&["diff", broken.to_str().unwrap(), &good]);
+    let out = gsdc(["diff", broken.to_str().unwrap(), &good]);
     assert_eq!(out.status.code(), Some(2));
     let stdout = String::from_utf8_lossy(&out.stdout);
-    let check = gsdc(&["check", broken.to_str().unwrap()]);
+    let check = gsdc(["check", broken.to_str().unwrap()]);
     assert_eq!(
         stdout,
         String::from_utf8_lossy(&check.stdout),
@@ -210,22 +212,21 @@ fn unreadable_and_mismatched_files_exit_2() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("nothing compared"));
 
     let gsd = "../shared/corpus/gsd/Rahix__mock.gsd";
-    let out = gsdc(&["diff", gsd, &good]);
+    let out = gsdc(["diff", gsd, &good]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("compares files of one kind"));
 
-    let out = gsdc(&["diff", dir.join("missing.gsd").to_str().unwrap(), gsd]);
+    let out = gsdc(["diff", dir.join("missing.gsd").to_str().unwrap(), gsd]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read"));
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A description stands for the file of the other side's kind; two
 /// descriptions are compared file by file.
 #[test]
 fn descriptions_are_compared_by_what_they_build() {
-    let dir = std::env::temp_dir().join(format!("gsdc-diff-desc-{}", std::process::id()));
-    let out = gsdc(&[
+    let dir = support::scratch("descriptions");
+    let out = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "--out",
@@ -239,7 +240,7 @@ fn descriptions_are_compared_by_what_they_build() {
         String::from_utf8_lossy(&out.stderr)
     );
     let released = dir.join("MD810DP.GSD");
-    let out = gsdc(&[
+    let out = gsdc([
         "diff",
         released.to_str().unwrap(),
         "descriptions/md810dp.toml",
@@ -264,15 +265,10 @@ fn descriptions_are_compared_by_what_they_build() {
     );
 
     let changed = dir.join("md810dp.toml");
-    let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    let text = support::descriptions::shipped_text("md810dp.toml");
     std::fs::write(&changed, text.replace("\"12M\" = 800\n", "\"12M\" = 900\n")).unwrap();
-    std::fs::create_dir_all(dir.join("symbols")).unwrap();
-    std::fs::copy(
-        "descriptions/symbols/md810dp.png",
-        dir.join("symbols/md810dp.png"),
-    )
-    .unwrap();
-    let out = gsdc(&[
+    support::descriptions::copy_symbols(&dir);
+    let out = gsdc([
         "diff",
         "descriptions/md810dp.toml",
         changed.to_str().unwrap(),
@@ -291,5 +287,4 @@ fn descriptions_are_compared_by_what_they_build() {
         stdout.ends_with("1 breaking, 0 compatible, 0 cosmetic\n"),
         "{stdout}"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -6,31 +6,23 @@
 //! is none. Real processes and files, in a directory of their own.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-/// A directory with a copy of one shipped description (and its symbol), the
-/// release built from it, and room for builds.
+use crate::support::{self, descriptions, stderr};
+
+/// A directory with a copy of one shipped description (and the symbols),
+/// the release built from it, and room for builds.
 struct Workspace {
-    dir: PathBuf,
+    dir: support::Scratch,
     description: PathBuf,
 }
 
 impl Workspace {
     fn new(test: &str, description: &str) -> Workspace {
-        let dir = std::env::temp_dir().join(format!("gsdc-release-{test}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(dir.join("symbols")).unwrap();
-        let shipped = root().join("descriptions");
-        for symbol in std::fs::read_dir(shipped.join("symbols")).unwrap() {
-            let symbol = symbol.unwrap().path();
-            std::fs::copy(
-                &symbol,
-                dir.join("symbols").join(symbol.file_name().unwrap()),
-            )
-            .unwrap();
-        }
+        let dir = support::scratch(test);
+        descriptions::copy_symbols(&dir);
         let path = dir.join(description);
-        std::fs::copy(shipped.join(description), &path).unwrap();
+        std::fs::write(&path, descriptions::shipped_text(description)).unwrap();
         let workspace = Workspace {
             dir,
             description: path,
@@ -53,8 +45,7 @@ impl Workspace {
 
     /// `gsdc build DESCRIPTION --firmware none ARGS`.
     fn build(&self, args: &[&str]) -> Output {
-        Command::new(env!("CARGO_BIN_EXE_gsdc"))
-            .arg("build")
+        support::gsdc_command(["build"])
             .arg(&self.description)
             .args(["--firmware", "none"])
             .args(args)
@@ -74,20 +65,6 @@ impl Workspace {
         args.extend(extra);
         self.build(&args)
     }
-}
-
-impl Drop for Workspace {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.dir);
-    }
-}
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
 /// The release codes among a build's findings.
@@ -237,9 +214,14 @@ fn build_scripts_are_refused_alike() {
         .released(w.path("release"))
         .generate(&w.description, w.path("dist"));
     match result {
-        Err(gsdc::build::BuildError::Description { rendered, .. }) => {
-            assert!(rendered.contains("error[E502]"), "{rendered}");
-            assert!(rendered.contains("warning[W503]"), "{rendered}");
+        Err(gsdc::build::BuildError::Description { findings, .. }) => {
+            let codes: Vec<&str> = findings
+                .iter()
+                .flat_map(|f| f.diagnostics.iter())
+                .map(|d| d.code)
+                .filter(|code| code[1..].starts_with('5'))
+                .collect();
+            assert_eq!(codes, ["E502", "W503"]);
         }
         other => panic!("{other:?}"),
     }

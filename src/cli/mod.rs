@@ -139,17 +139,13 @@ fn display_name(path: &Path) -> String {
             '\n' => shown.push_str("\\n"),
             '\r' => shown.push_str("\\r"),
             '\t' => shown.push_str("\\t"),
-            c if c.is_control() || is_bidi_control(c) => {
+            c if c.is_control() || crate::spec::is_bidi_control(c) => {
                 shown.push_str(&format!("\\u{:04x}", u32::from(c)));
             }
             c => shown.push(c),
         }
     }
     shown
-}
-
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
 /// The IR of the description at `path`, for a command that reads it

@@ -57,7 +57,7 @@ pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
                 crate::gsdml::index::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
             is_gsdml.then(|| Device::Pn(read_gsdml(&doc, file_name)))
         }
-        crate::file_kind::FileKind::Neither => None,
+        crate::file_kind::FileKind::Bitmap | crate::file_kind::FileKind::Neither => None,
     }
 }
 

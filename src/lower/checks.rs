@@ -4,13 +4,11 @@
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, Decision, DecisionKind};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
-/// GSD string limits (GSD specification V5.1; FIELDBUS-NOTES §3).
-pub const GSD_NAME_LEN: usize = 32;
-pub const GSD_INFO_LEN: usize = 256;
+pub use crate::spec::{GSD_INFO_LEN, GSD_NAME_LEN};
 
 pub struct Checker {
     diagnostics: Diagnostics,
@@ -20,6 +18,9 @@ pub struct Checker {
     languages: BTreeSet<String>,
     /// Placeholders and gsdc's defaults, as lowering meets them.
     decisions: Vec<Decision>,
+    /// The prefix of the first name the description writes each address
+    /// with (`Numbering::written_prefixes`).
+    written_prefixes: BTreeMap<u16, String>,
 }
 
 /// Where the defaults of several items come from: `default` for all of
@@ -45,6 +46,7 @@ impl Checker {
             for_gsd,
             languages: BTreeSet::new(),
             decisions: Vec::new(),
+            written_prefixes: BTreeMap::new(),
         }
     }
 
@@ -107,6 +109,18 @@ impl Checker {
     /// The placeholders and defaults met, in the order met.
     pub fn take_decisions(&mut self) -> Vec<Decision> {
         std::mem::take(&mut self.decisions)
+    }
+
+    /// A function-code name read: the address is written back with its
+    /// prefix, the first one the description writes it with.
+    pub fn wrote_name(&mut self, address: u16, prefix: &str) {
+        self.written_prefixes
+            .entry(address)
+            .or_insert_with(|| prefix.to_string());
+    }
+
+    pub fn take_written_prefixes(&mut self) -> BTreeMap<u16, String> {
+        std::mem::take(&mut self.written_prefixes)
     }
 
     /// Every language besides English that a text used, in code order.
@@ -399,12 +413,8 @@ pub fn is_clean(s: &str) -> bool {
 fn is_unsafe_char(c: char) -> bool {
     let code = u32::from(c);
     c.is_control()
-        || matches!(
-            c,
-            '\u{2028}' | '\u{2029}' | '\u{061C}' | '\u{200E}' | '\u{200F}'
-        )
-        || ('\u{202A}'..='\u{202E}').contains(&c)
-        || ('\u{2066}'..='\u{2069}').contains(&c)
+        || matches!(c, '\u{2028}' | '\u{2029}')
+        || crate::spec::is_bidi_control(c)
         || (0xFDD0..=0xFDEF).contains(&code)
         || code & 0xFFFE == 0xFFFE
 }

@@ -21,8 +21,8 @@ use params::{default_configuration, node_count, node_words, NodeWords};
 use std::ops::Range;
 use toml::Spanned;
 
-/// A PROFIBUS slave's input and output each hold at most 244 bytes.
-const MAX_DATA_LEN: i64 = 244;
+/// A PROFIBUS slave's input and output each hold at most a telegram.
+const MAX_DATA_LEN: i64 = crate::spec::DP_MAX_TELEGRAM as i64;
 /// Node numbers, counts and words are bytes in the generated code.
 const MAX_BYTE: i64 = 0xFF;
 
@@ -76,7 +76,7 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
         })
         .collect();
     default_configuration(cx, &node_count, &words);
-    let (modules, max_modules) = modules::modules(cx, &g.modules, &limits);
+    let (modules, max_modules, fewest) = modules::modules(cx, &g.modules, &limits);
     let (nodes, node_types) = by_node(nodes, &words);
     let prm_types = std::iter::once((ParamKey::NodeCount, count_type))
         .chain(node_types)
@@ -94,6 +94,7 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
             nodes,
             modules,
             max_modules,
+            fewest,
             diagnosis: g.diagnosis.as_ref().map(|d| diagnosis::lower(cx, d)),
         },
         prm_types,

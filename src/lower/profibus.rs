@@ -4,15 +4,16 @@
 use super::checks::{Checker, GSD_NAME_LEN};
 use super::gateway;
 use super::mappings::SetSpans;
+use super::ppo::{config_bytes, ppo_layout};
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::emit::gsd::{KEY_WIDTH, MAX_LINE};
 use crate::ir::profibus::{
-    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
-    PrmBlock, PrmParam, PrmText, PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
+    Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
+    PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
+use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
+use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
@@ -29,9 +30,9 @@ const PPO_NAMES: [&str; 5] = ["PPO1", "PPO2", "PPO3", "PPO4", "PPO5"];
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
 const DEFAULT_C1_RESPONSE_TIMEOUT: u16 = 100;
-/// GSD limit: Max_User_Prm_Data_Len 0..237. (Max_Diag_Data_Len's 244 is
-/// never reached: the device-related block is at most 63 bytes.)
-const MAX_USER_PRM_LEN: usize = 237;
+/// GSD limit: Max_User_Prm_Data_Len. (Max_Diag_Data_Len's 244 is never
+/// reached: the device-related block is at most 63 bytes.)
+const MAX_USER_PRM_LEN: usize = crate::spec::DP_MAX_USER_PRM;
 /// A Unit_Diag_Area spans at most 16 bits.
 const MAX_DIAG_AREA_BITS: i64 = 16;
 /// Main slave families defined by PI (0 general .. 12 PA).
@@ -108,6 +109,9 @@ pub fn lower(
         modules,
         max_input_len,
         max_output_len,
+        max_data_len: max_input_len + max_output_len,
+        // A gateway's modules are plugged together; else one module.
+        max_module: gateway.map_or(1, |g| g.gateway.max_modules),
         baud_rates: baud_rates(cx, &p.baud_rates),
         min_slave_interval: cx.spanned_in_range(
             &p.min_slave_interval,
@@ -438,7 +442,7 @@ fn user_prm(
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
     let texts: Vec<PrmText> = mappings
         .sets()
-        .filter(|s| s.allowed.choices().is_some())
+        .filter(|s| s.allowed.choices().is_some() && in_user_prm(s))
         .zip(1..=u16::MAX)
         .map(|(s, id)| PrmText { id, set: s.key })
         .collect();
@@ -450,10 +454,12 @@ fn user_prm(
     let blocks = mappings
         .groups
         .iter()
+        .filter(|g| g.entries().any(|(set, _)| in_user_prm(set)))
         .map(|g| {
             let block_offset = end;
             let params = g
                 .entries()
+                .filter(|(set, _)| in_user_prm(set))
                 .map(|(set, entry)| {
                     let offset = end;
                     end += entry_bytes;
@@ -502,6 +508,12 @@ fn user_prm(
     }
 }
 
+/// Whether User_Prm_Data carries a set's entries: all but a setting the
+/// description keeps from a PROFIBUS master (`per_module.profibus`).
+fn in_user_prm(set: &MappingSet) -> bool {
+    set.fixed.is_none_or(|f| f.in_user_prm)
+}
+
 /// A gateway's parameters from `start` on, within the limit (E116).
 fn gateway_params(
     cx: &mut Checker,
@@ -548,11 +560,16 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
     let bits = (i64::from(length) - 1) * 8;
     let mut constants = Scope::default();
     let mut types = Scope::default();
-    let areas = raw
+    let mut areas: Vec<DiagnosisArea> = raw
         .areas
         .iter()
         .filter_map(|a| diagnosis_area(cx, a, bits, (&mut constants, &mut types)))
         .collect();
+    let taken: Vec<String> = areas
+        .iter()
+        .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
+        .collect();
+    super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
     Some(Diagnosis { length, areas })
 }
 

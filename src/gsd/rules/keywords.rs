@@ -88,7 +88,7 @@ impl<'f> Checker<'f> {
 /// The texts that blocks carry outside settings: module and parameter
 /// names, value texts and diagnosis area texts, all limited to 32.
 fn block_texts(file: &GsdFile, out: &mut Vec<Diagnostic>) {
-    const LIMIT: usize = 32;
+    const LIMIT: usize = crate::spec::GSD_NAME_LEN;
     let modules = file.modules.iter().map(|m| ("module name", &m.name));
     let params = file
         .ext_user_prm_data
