@@ -234,6 +234,8 @@ pub const GSDML: &[Rule] = &[
     rule("Visible", Text, Txt),
     rule("WebServer", Text, Feature),
     rule("LinkStateDiagnosisCapability", Text, Diag),
+    rule("LogBookEntryItem@Status", Text, Diag),
+    rule("ErrorCode2Item@ErrorCode2", Text, Diag),
     rule("MaintenanceAlarmState", Text, Diag),
     // Versions.
     rule("PNIO_Version", Version, File),
@@ -264,6 +266,14 @@ pub const GSDML: &[Rule] = &[
     rule("F_ParamDescCRC", Setting, Kind::Parameter),
     rule("F_IO_StructureDescCRC", Setting, IoData),
     rule("F_IO_StructureDescVersion", Setting, IoData).or("1"),
+    rule("F_ParameterRecordDataItem@Index", Setting, Kind::Record),
+    rule("ChangeableWithBump", Capability, Kind::Parameter).or("false"),
+    rule("DataItem@DataType", Setting, Diag),
+    rule("DataItem@Id", Setting, Diag),
+    rule("ApplicationLengthIncludesIOxS", Setting, IoData).or("false"),
+    rule("PROFIenergy@EntityClass", Setting, Feature),
+    rule("PROFIenergy@EntitySubclass", Setting, Feature),
+    rule("RemoteApplicationTimeout", Setting, Timing).or("300"),
     rule("Consistency", Ordered(CONSISTENCY), IoData).or("Item consistency").because(
         "a PLC program written for the old file may rely on all items being consistent",
     ),
@@ -289,6 +299,9 @@ pub const GSDML: &[Rule] = &[
     rule("AddressAssignment", Set, Feature).or("DCP"),
     rule("MAUTypes", Set, Feature),
     rule("MAUTypeItem@Value", Set, Feature),
+    rule("MAUTypeItem@Extension", Set, Feature),
+    rule("MAUType", Set, Feature).or("100BASETXFD"),
+    rule("ForwardingMode", Set, Timing),
     rule("SupportedRole", Set, Feature),
     rule("Writeable_IM_Records", Set, Feature),
     rule("ApplicationClass", Set, Feature),
@@ -317,6 +330,8 @@ pub const GSDML: &[Rule] = &[
     rule("MaxReductionRatioIsochroneMode", Offer, Timing),
     rule("MaxMRP_Instances", Offer, Feature),
     rule("MaxNumberIR_FrameData", Offer, Timing),
+    rule("MaxFrameStartTime", Offer, Timing).or("1600"),
+    rule("MaxRangeIR_FrameID", Offer, Timing).or("1024"),
     // What the device needs of the controller or network.
     rule("MinDeviceInterval", Demand, Timing).because(
         "a project configured with the old file may exchange data faster than the device now can",
@@ -335,6 +350,7 @@ pub const GSDML: &[Rule] = &[
     rule("RTTO", Demand, Timing),
     rule("TimeToPause", Demand, Timing),
     rule("TimeMinLengthOfStay", Demand, Timing),
+    rule("MaxRetentionTime", Demand, Timing),
     // What the device supports.
     rule("DeviceAccessSupported", Capability, Feature).or("false"),
     rule("MultipleWriteSupported", Capability, Feature).or("false"),
@@ -746,6 +762,63 @@ mod tests {
             Demand
         );
         assert_eq!(gsd_rule("physical_interface(0)").judge, Setting);
+    }
+
+    /// Every attribute the GSDML files of the corpus have, where the model
+    /// keeps it by name, has a rule: none of theirs is "not judged".
+    #[test]
+    fn every_gsdml_attribute_of_the_corpus_is_judged() {
+        use crate::device::pn::{DiagItem, Submodule};
+        use crate::device::{Attribute, Device};
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/gsdml");
+        let mut names: Vec<String> = Vec::new();
+        let mut add =
+            |attributes: &[Attribute]| names.extend(attributes.iter().map(|a| a.name.to_string()));
+        for entry in std::fs::read_dir(dir).expect("../shared/corpus/gsdml") {
+            let path = entry.unwrap().path();
+            let Some(Device::Pn(d)) = crate::device::read(&std::fs::read(&path).unwrap(), None)
+            else {
+                continue;
+            };
+            add(&d.identity);
+            add(&d.other);
+            let items = d.modules.iter().chain(d.daps.iter().map(|dap| &dap.item));
+            let mut submodules: Vec<&Submodule> = d.submodules.iter().collect();
+            for item in items {
+                add(&item.attributes);
+                submodules.extend(&item.submodules);
+                item.useable_submodules
+                    .iter()
+                    .for_each(|r| add(&r.attributes));
+            }
+            d.daps
+                .iter()
+                .flat_map(|dap| &dap.useable_modules)
+                .for_each(|r| add(&r.attributes));
+            for s in submodules {
+                add(&s.attributes);
+                for record in &s.records {
+                    add(&record.attributes);
+                    record.data.fields.iter().for_each(|f| add(&f.attributes));
+                }
+                for part in [&s.io.input, &s.io.output].into_iter().flatten() {
+                    add(&part.attributes);
+                    part.items.iter().for_each(|i| add(&i.attributes));
+                }
+            }
+            let mut diagnosis: Vec<&DiagItem> = d.diagnosis.iter().collect();
+            while let Some(item) = diagnosis.pop() {
+                add(&item.attributes);
+                diagnosis.extend(&item.extended);
+            }
+            d.unit_diagnosis.iter().for_each(|u| add(&u.attributes));
+        }
+        assert!(names.len() > 1000, "{} attributes", names.len());
+        let unjudged: std::collections::BTreeSet<&String> = names
+            .iter()
+            .filter(|n| gsdml_rule(n).judge == Unknown)
+            .collect();
+        assert!(unjudged.is_empty(), "{unjudged:?}");
     }
 
     /// Every keyword of the GSD keyword schema has a rule, or a part of the
