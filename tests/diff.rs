@@ -154,6 +154,30 @@ fn identical_builds_have_no_change() {
     }
 }
 
+/// Every real file of the corpus is read as a device, and is its own
+/// equal: the comparison finds nothing where nothing changed.
+#[test]
+fn every_corpus_file_reads_and_equals_itself() {
+    let mut read = 0;
+    for folder in ["gsd", "gsdml"] {
+        for name in support::file_names(&support::shared("corpus").join(folder)) {
+            if name.ends_with(".tsv") {
+                continue;
+            }
+            let bytes = support::corpus_file(&format!("{folder}/{name}"));
+            let device = device::read(&bytes, Some(&name))
+                .unwrap_or_else(|| panic!("{name} cannot be read"));
+            assert_eq!(
+                gsdc::diff::compare(&device, &device),
+                Some(vec![]),
+                "{name}"
+            );
+            read += 1;
+        }
+    }
+    assert_eq!(read, 61 + 16);
+}
+
 /// A change in the description that no file carries (a comment, a
 /// reason) changes nothing, though the reason is in each file's header.
 #[test]
