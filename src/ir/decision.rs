@@ -4,6 +4,8 @@
 //! description is silent. Every generated file lists them in its header; a
 //! shipping build refuses them (`gsdc build --deny-warnings`).
 
+use super::Bus;
+
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Decision {
@@ -34,6 +36,24 @@ pub enum DecisionKind {
 }
 
 impl Decision {
+    /// The bus whose device file alone the decision concerns, by the
+    /// description's key it stands at: `[profibus]` and a gateway (a
+    /// PROFIBUS-DP slave) are the GSD's, `[profinet]` the GSDML's; `None`
+    /// for what both buses share (the device, the telegram, the mappings
+    /// and settings, the parameter numbering).
+    pub fn bus(&self) -> Option<Bus> {
+        let root = self
+            .path
+            .split(['.', '[', ' '])
+            .next()
+            .unwrap_or(&self.path);
+        match root {
+            "profibus" | "gateway" => Some(Bus::Profibus),
+            "profinet" => Some(Bus::Profinet),
+            _ => None,
+        }
+    }
+
     /// One line: `Own choice: profibus.min_slave_interval = 1 (the reason)`.
     pub fn summary(&self) -> String {
         let kind = match self.kind {
