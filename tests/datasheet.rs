@@ -594,19 +594,6 @@ fn gsdc_doc_usage_and_io_errors_exit_2() {
     );
 }
 
-/// docs/datasheet.md quotes MD810's worked examples: they are what gsdc writes.
-#[test]
-fn the_guides_excerpt_is_what_gsdc_writes() {
-    let guide = include_str!("../docs/datasheet.md");
-    let start = guide.find("```markdown\n").expect("an excerpt") + "```markdown\n".len();
-    let excerpt = &guide[start..start + guide[start..].find("```").unwrap()];
-    let markdown = datasheet("md810dp.toml", ArtifactKind::DatasheetMarkdown);
-    for line in excerpt.lines() {
-        assert!(markdown.contains(line), "not in md810dp.md: {line}");
-    }
-    assert!(excerpt.lines().count() >= 3);
-}
-
 /// A description in English alone (9KDP1's manual is English): one
 /// `main`, shown, and no switch.
 #[test]
