@@ -608,8 +608,8 @@ fn one_language_needs_no_switch() {
 }
 
 /// Every language of the description has its page: a German text on a
-/// page of its own, under gsdc's English words (gsdc has its own words in
-/// English and Chinese only), on the switch by its code.
+/// page of its own, among gsdc's German words, on the switch by its own
+/// name.
 #[test]
 fn every_language_of_the_description_has_its_page() {
     let ir = descriptions::load_from("tests/fixtures/valid", "no_warnings.toml");
@@ -620,11 +620,12 @@ fn every_language_of_the_description_has_its_page() {
     let german = &html[html.find("<main lang=\"de\"").expect("a German page")..];
     assert!(german.contains("X1 Feldbuskarte"), "the German name");
     assert!(
-        german.contains("The files gsdc generates"),
-        "gsdc's English words"
+        german.contains("Die Dateien, die gsdc aus der Beschreibung erzeugt"),
+        "gsdc's German words"
     );
+    assert!(!german.contains("The files gsdc generates"), "{german}");
     assert!(
-        html.contains("<label for=\"lang-de\" lang=\"de\">de</label>"),
+        html.contains("<label for=\"lang-de\" lang=\"de\">Deutsch</label>"),
         "{html}"
     );
 }
@@ -645,7 +646,7 @@ fn a_record_is_named_in_the_pages_language() {
     let html = String::from_utf8(html.contents).unwrap();
     let (english, german) = html.split_at(html.find("<main lang=\"de\"").expect("a German page"));
     assert!(english.contains("Record 1: PZD out,"), "{english}");
-    assert!(german.contains("Record 1: PZD aus,"), "{german}");
+    assert!(german.contains("Datensatz 1: PZD aus,"), "{german}");
     assert!(!german.contains("PZD out,"), "{german}");
 }
 

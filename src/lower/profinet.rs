@@ -156,7 +156,7 @@ fn port(number: u8, media_redundancy: bool) -> Port {
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
         text: TextRef::new(
             format!("IDT_PORT_{number}"),
-            Text::en_zh(format!("Port {number}"), format!("端口 {number}")),
+            Text::gsdc(|lang| crate::i18n::files::port(lang, number)),
         ),
         default_ringport: media_redundancy && number <= 2,
     }
