@@ -103,4 +103,44 @@ phrases! {
     RECORD_SETTINGS = { en: "Drive settings", zh: "驱动器设置", de: "Antriebseinstellungen" };
 
     port(number: u8) = { en: "Port {number}", zh: "端口 {number}", de: same };
+
+    // -----------------------------------------------------------------------
+    // What gsdc decides where the description says nothing: the headers
+    // list it in English, the datasheet's checklist in the page's language.
+
+    NOT_ASSIGNED_BY_PI = { en: "not assigned by PI", zh: "非 PI 分配", de: "nicht von PI vergeben" };
+    NOT_STATED = {
+        en: "the description does not state it",
+        zh: "设备描述未说明",
+        de: "die Beschreibung gibt ihn nicht an",
+    };
+    IDENT_NUMBERS = { en: "profinet ident numbers", zh: "PROFINET 标识号", de: "PROFINET-Identnummern" };
+    IDENT_NUMBERS_RULE = {
+        en: "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
+        zh: "模块：nn 个 PZD 字为 0x0000_01nn，带 PKW 通道为 0x0000_02nn，标准报文 1 为 0x0000_0010，各子模块与其模块相同；DAP 及其子模块为 0x0000_0001；接口和各端口为其子槽号（0x8000、0x8001……）",
+        de: "Module 0x0000_01nn für nn PZD-Wörter, 0x0000_02nn mit dem PKW-Kanal, 0x0000_0010 für Standardtelegramm 1, jedes Submodul die seines Moduls; der DAP und sein Submodul 0x0000_0001; die Schnittstelle und die Ports ihre Subslots (0x8000, 0x8001...)",
+    };
+    IDENT_NUMBERS_WHY = {
+        en: "the manual gives none; the layouts carry each",
+        zh: "手册未给出；固件数据布局包含每一个",
+        de: "das Handbuch nennt keine; die Layouts enthalten jede",
+    };
+    DAP = { en: "profinet device access point", zh: "PROFINET 设备访问点", de: "PROFINET-Gerätezugangspunkt (DAP)" };
+    DAP_SERVICES = { all: "MultipleWriteSupported, LLDP_NoD_Supported, ResetToFactoryModes 2" };
+    DAP_SERVICES_WHY = {
+        en: "PNIO_Version V2.31 and later requires them; the manual does not say: the card's PROFINET stack must provide them",
+        zh: "PNIO_Version V2.31 及以后版本要求；手册未说明：扩展卡的 PROFINET 协议栈必须支持",
+        de: "PNIO_Version V2.31 und später fordert sie; das Handbuch sagt nichts dazu: der PROFINET-Stack der Karte muss sie bieten",
+    };
+    INTERFACE = { en: "profinet interface", zh: "PROFINET 接口", de: "PROFINET-Schnittstelle" };
+    INTERFACE_SERVICES = {
+        en: "RT_CLASS_1; SNMP and LLDP; DCP and PTP boundaries; startup modes Legacy and Advanced; reduction ratios 1 to 512",
+        zh: "RT_CLASS_1；SNMP 和 LLDP；DCP 和 PTP 边界；启动模式 Legacy 和 Advanced；缩减比 1 至 512",
+        de: "RT_CLASS_1; SNMP und LLDP; DCP- und PTP-Grenzen; Anlaufarten Legacy und Advanced; Untersetzungsverhältnisse 1 bis 512",
+    };
+    INTERFACE_SERVICES_WHY = {
+        en: "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
+        zh: "gsdc 为每个 PROFINET 扩展卡写入；手册未说明：扩展卡的 PROFINET 协议栈必须支持",
+        de: "gsdc schreibt sie für jede PROFINET-Karte; das Handbuch sagt nichts dazu: der PROFINET-Stack der Karte muss sie bieten",
+    };
 }

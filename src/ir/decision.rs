@@ -5,6 +5,7 @@
 //! shipping build refuses them (`gsdc build --deny-warnings`).
 
 use super::Bus;
+use crate::i18n::Phrase;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -15,6 +16,19 @@ pub struct Decision {
     /// The value as the description writes it, on one line.
     pub value: String,
     pub reason: String,
+    /// gsdc's own words for a decision gsdc made, in every language it has
+    /// words in (the strings above are their English); `None` for the
+    /// description's own choices, whose reasons are the description's.
+    pub(crate) words: Option<DecisionWords>,
+}
+
+/// gsdc's words for what it decided: the path and value where gsdc names
+/// them in words (a numbering, a requirement), and the reason.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct DecisionWords {
+    pub path: Option<Phrase>,
+    pub value: Option<Phrase>,
+    pub reason: Phrase,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]

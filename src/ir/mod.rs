@@ -5,7 +5,7 @@
 //! PROFIBUS needs lives in [`profibus`].
 
 mod cyclic;
-mod decision;
+pub(crate) mod decision;
 pub mod gateway;
 pub mod mapping;
 mod names;

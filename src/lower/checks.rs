@@ -3,6 +3,8 @@
 
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::i18n::{files, Lang, Phrase};
+use crate::ir::decision::DecisionWords;
 use crate::ir::{self, Decision, DecisionKind};
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -53,13 +55,18 @@ impl Checker {
 
     /// A placeholder, said where it is written (the warning's code and text
     /// are the caller's): listed in every generated file.
-    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String, reason: &str) {
+    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String) {
         self.push(warning);
         self.decisions.push(Decision {
             kind: DecisionKind::Placeholder,
             path: path.to_string(),
             value,
-            reason: reason.to_string(),
+            reason: files::NOT_ASSIGNED_BY_PI.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason: files::NOT_ASSIGNED_BY_PI,
+            }),
         });
     }
 
@@ -80,30 +87,42 @@ impl Checker {
             kind: DecisionKind::Default,
             path: path.to_string(),
             value,
-            reason: "the description does not state it".to_string(),
+            reason: files::NOT_STATED.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason: files::NOT_STATED,
+            }),
         });
     }
 
     /// A number gsdc gives by its own rule where the description has no
     /// key for it: listed in every header, not warned about (the layouts
     /// carry it, so the firmware cannot drift from it).
-    pub fn convention(&mut self, path: &str, value: impl ToString, reason: &str) {
+    pub fn convention(&mut self, path: Phrase, value: Phrase, reason: Phrase) {
         self.listed(DecisionKind::Convention, path, value, reason);
     }
 
     /// What gsdc's device file says the card does where the description
     /// has no key for it: listed in every header, not warned about (the
     /// firmware must do it; no value would change the file).
-    pub fn requirement(&mut self, path: &str, value: impl ToString, reason: &str) {
+    pub fn requirement(&mut self, path: Phrase, value: Phrase, reason: Phrase) {
         self.listed(DecisionKind::Requirement, path, value, reason);
     }
 
-    fn listed(&mut self, kind: DecisionKind, path: &str, value: impl ToString, reason: &str) {
+    /// A decision of gsdc's own, in its words.
+    fn listed(&mut self, kind: DecisionKind, path: Phrase, value: Phrase, reason: Phrase) {
+        let english = |phrase: Phrase| phrase.get(Lang::En).to_string();
         self.decisions.push(Decision {
             kind,
-            path: path.to_string(),
-            value: value.to_string(),
-            reason: reason.to_string(),
+            path: english(path),
+            value: english(value),
+            reason: english(reason),
+            words: Some(DecisionWords {
+                path: Some(path),
+                value: Some(value),
+                reason,
+            }),
         });
     }
 

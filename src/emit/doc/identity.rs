@@ -3,10 +3,10 @@
 
 use super::page::{code, text, Builder, Cell, Run};
 use super::{decision_kind, with_placeholder, Lang};
-use crate::i18n::sheet as w;
+use crate::i18n::{sheet as w, Phrase};
 use crate::ir::profibus::Profibus;
 use crate::ir::profinet::Profinet;
-use crate::ir::{Ir, MappingKind, PkwKind};
+use crate::ir::{Decision, Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut intro = text(lang.text(&ir.device.name));
@@ -216,9 +216,10 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let mut row = |what: &str, why: &str| rows.push(vec![text(what), vec![Run::Mark(why.into())]]);
     for decision in &ir.decisions {
         let kind = decision_kind(lang, decision.kind);
+        let (path, value, reason) = decision_in(lang, decision);
         row(
-            &format!("{} = {}", decision.path, decision.value),
-            &format!("{kind}{}{}", lang.t(w::COLON), decision.reason),
+            &format!("{path} = {value}"),
+            &format!("{kind}{}{reason}", lang.t(w::COLON)),
         );
     }
     row(lang.t(w::BYTE_ORDER), lang.t(w::BYTE_ORDER_RULE));
@@ -251,4 +252,19 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         &[lang.t(w::WHAT), lang.t(w::STATUS)],
         rows,
     );
+}
+
+/// A decision's path, value and reason in the page's language: gsdc's own
+/// words from its catalogue, the description's as the description writes
+/// them.
+fn decision_in(lang: Lang, d: &Decision) -> (&str, &str, &str) {
+    let Some(words) = d.words else {
+        return (&d.path, &d.value, &d.reason);
+    };
+    let or = |phrase: Option<Phrase>, own| phrase.map_or(own, |p| lang.t(p));
+    (
+        or(words.path, &d.path),
+        or(words.value, &d.value),
+        lang.t(words.reason),
+    )
 }
