@@ -117,8 +117,8 @@ fn code_of(words: [U16Be; 4]) -> u16 {
 fn words_table(
     doc: &mut Builder,
     lang: Lang,
-    directions: [&str; 2],
-    words: [(&str, &str, &str); 4],
+    directions: [Phrase; 2],
+    words: [(&str, Phrase, Phrase); 4],
 ) {
     let rows = words
         .iter()
@@ -127,8 +127,8 @@ fn words_table(
             vec![
                 text(word),
                 text(bytes(lang, first, first + 1)),
-                text(request),
-                text(response),
+                text(lang.t(request)),
+                text(lang.t(response)),
             ]
         })
         .collect();
@@ -137,8 +137,8 @@ fn words_table(
         &[
             lang.t(w::WORD),
             lang.t(w::BYTES),
-            directions[0],
-            directions[1],
+            lang.t(directions[0]),
+            lang.t(directions[1]),
         ],
         rows,
     );
@@ -150,20 +150,12 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     words_table(
         doc,
         lang,
-        [lang.t(w::PKE_REQUEST_HEAD), lang.t(w::PKE_RESPONSE_HEAD)],
+        [w::PKE_REQUEST_HEAD, w::PKE_RESPONSE_HEAD],
         [
-            (
-                "PKE",
-                lang.t(w::PKE_REQUEST_PKE),
-                lang.t(w::PKE_RESPONSE_PKE),
-            ),
-            ("IND", lang.t(w::PKE_IND), lang.t(w::PKE_IND)),
-            ("PWE", lang.t(w::PKE_PWE_HIGH), lang.t(w::PKE_PWE_HIGH)),
-            (
-                "PWE",
-                lang.t(w::PKE_PWE_LOW_REQUEST),
-                lang.t(w::PKE_PWE_LOW_RESPONSE),
-            ),
+            ("PKE", w::PKE_REQUEST_PKE, w::PKE_RESPONSE_PKE),
+            ("IND", w::PKE_IND, w::PKE_IND),
+            ("PWE", w::PKE_PWE_HIGH, w::PKE_PWE_HIGH),
+            ("PWE", w::PKE_PWE_LOW_REQUEST, w::PKE_PWE_LOW_RESPONSE),
         ],
     );
     let code_row = |code: u16, meaning: &str| vec![text(code.to_string()), text(meaning)];
@@ -297,31 +289,12 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     words_table(
         doc,
         lang,
+        [w::STATION_REQUEST_HEAD, w::STATION_REPLY_HEAD],
         [
-            lang.t(w::STATION_REQUEST_HEAD),
-            lang.t(w::STATION_REPLY_HEAD),
-        ],
-        [
-            (
-                "PKW0",
-                lang.t(w::STATION_PKW0_REQUEST),
-                lang.t(w::STATION_PKW0_REPLY),
-            ),
-            (
-                "PKW1",
-                lang.t(w::STATION_PKW1_REQUEST),
-                lang.t(w::STATION_PKW1_REPLY),
-            ),
-            (
-                "PKW2",
-                lang.t(w::STATION_PKW2_REQUEST),
-                lang.t(w::STATION_PKW2_REPLY),
-            ),
-            (
-                "PKW3",
-                lang.t(w::STATION_PKW3_REQUEST),
-                lang.t(w::STATION_PKW3_REPLY),
-            ),
+            ("PKW0", w::STATION_PKW0_REQUEST, w::STATION_PKW0_REPLY),
+            ("PKW1", w::STATION_PKW1_REQUEST, w::STATION_PKW1_REPLY),
+            ("PKW2", w::STATION_PKW2_REQUEST, w::STATION_PKW2_REPLY),
+            ("PKW3", w::STATION_PKW3_REQUEST, w::STATION_PKW3_REPLY),
         ],
     );
     let commands = [
@@ -469,26 +442,15 @@ fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
     words_table(
         doc,
         lang,
+        [w::PROFIDRIVE_REQUEST_HEAD, w::PROFIDRIVE_RESPONSE_HEAD],
         [
-            lang.t(w::PROFIDRIVE_REQUEST_HEAD),
-            lang.t(w::PROFIDRIVE_RESPONSE_HEAD),
-        ],
-        [
-            (
-                "PKE",
-                lang.t(w::PROFIDRIVE_PKE_REQUEST),
-                lang.t(w::PROFIDRIVE_PKE_RESPONSE),
-            ),
-            ("IND", lang.t(w::PROFIDRIVE_IND), lang.t(w::PROFIDRIVE_IND)),
-            (
-                "PWE1",
-                lang.t(w::PROFIDRIVE_PWE1),
-                lang.t(w::PROFIDRIVE_PWE1),
-            ),
+            ("PKE", w::PROFIDRIVE_PKE_REQUEST, w::PROFIDRIVE_PKE_RESPONSE),
+            ("IND", w::PROFIDRIVE_IND, w::PROFIDRIVE_IND),
+            ("PWE1", w::PROFIDRIVE_PWE1, w::PROFIDRIVE_PWE1),
             (
                 "PWE2",
-                lang.t(w::PROFIDRIVE_PWE2_REQUEST),
-                lang.t(w::PROFIDRIVE_PWE2_RESPONSE),
+                w::PROFIDRIVE_PWE2_REQUEST,
+                w::PROFIDRIVE_PWE2_RESPONSE,
             ),
         ],
     );
