@@ -10,6 +10,8 @@
 //! |---|---|
 //! | `sh` | runs each line in bash (`pipefail`) in a scratch directory, in the order of the document: it exits 0, or N where its comment says `exit N` |
 //! | `sh needs-network` | runs it in a network namespace without a network, where it must fail for want of one: the mark is true |
+//! | `sh run-by=FILE` | run by that test module (a slow exchange, say): FILE is a module of the test binary and runs each command's program |
+//! | `sh needs-root run-by=FILE` | the same, each command under `sudo`, and FILE says what it does without root (`cannot_run`) |
 //! | `console` | runs each `$ ` line as `sh` does; what follows it is what it prints, stdout and stderr in one |
 //! | `toml` | a complete description: loads without an error and compiles |
 //! | `toml fragment` | tables of a description: TOML, and each table as the description's schema takes it |
@@ -48,6 +50,7 @@ struct Block {
 enum Use<'a> {
     Run,
     NeedsNetwork,
+    RunBy { file: &'a str, root: bool },
     Console,
     Description,
     Fragment,
@@ -75,6 +78,12 @@ impl Block {
         }
         if let Some(file) = mark.strip_prefix("excerpt=") {
             return Ok(Use::Excerpt(file));
+        }
+        if let Some(file) = mark.strip_prefix("run-by=") {
+            return Ok(Use::RunBy { file, root: false });
+        }
+        if let Some(file) = mark.strip_prefix("needs-root run-by=") {
+            return Ok(Use::RunBy { file, root: true });
         }
         match (language, mark) {
             ("sh", "") => Ok(Use::Run),
@@ -460,6 +469,54 @@ fn a_command_marked_as_needing_the_network_fails_without_one() {
                     .iter()
                     .any(|w| said.contains(w)),
                 "{}: `{line}` failed for another reason than the network:\n{said}",
+                block.place
+            );
+        }
+    }
+}
+
+/// A block another test module runs: that module is part of the test
+/// binary and runs the program of each command (a command under `sudo`
+/// when the block needs root, and the module says what it does without
+/// root).
+#[test]
+fn a_block_run_by_another_test_is_run_by_it() {
+    let blocks = blocks_for(|u| matches!(u, Use::RunBy { .. }));
+    assert!(blocks.len() >= 2);
+    let modules = std::fs::read_to_string(checkout("tests/tests.rs")).unwrap();
+    for block in blocks {
+        let Ok(Use::RunBy { file, root }) = block.use_() else {
+            unreachable!()
+        };
+        let module = file
+            .strip_prefix("tests/")
+            .and_then(|f| f.strip_suffix(".rs"))
+            .unwrap_or_else(|| panic!("{}: {file} is not a test module", block.place));
+        assert!(
+            modules.contains(&format!("\nmod {module};\n")),
+            "{}: {file} is not a module of the test binary",
+            block.place
+        );
+        let test = std::fs::read_to_string(checkout(file)).unwrap();
+        for line in block.text.lines().filter(|l| !l.trim().is_empty()) {
+            let (command, _) = split_comment(line);
+            let command = match root {
+                true => command
+                    .strip_prefix("sudo ")
+                    .unwrap_or_else(|| panic!("{}: `{line}` needs root: sudo", block.place)),
+                false => command,
+            };
+            let program = command.split_whitespace().next().unwrap();
+            assert!(
+                test.contains(program),
+                "{}: {file} does not run {program}",
+                block.place
+            );
+        }
+        if root {
+            assert!(
+                test.contains("cannot_run"),
+                "{}: {file} says nothing without root",
                 block.place
             );
         }
