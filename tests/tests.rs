@@ -95,6 +95,7 @@ mod gsdml_output;
 mod gsdml_reader;
 mod import_cycles;
 mod invalid_descriptions;
+mod languages;
 mod limits;
 mod manual_texts;
 mod output_safety;
