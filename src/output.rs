@@ -25,10 +25,70 @@ pub enum ReadError {
 /// the file system gives is checked before reading, so a large file is
 /// refused without being read; the read itself stops one byte past the
 /// limit, for files whose size is not known beforehand (`/dev/zero`, pipes).
+/// For a file the user names: a pipe or `/dev/stdin` is read as they ask.
 pub fn read_input(path: &Path, limit: &InputLimit) -> Result<Vec<u8>, ReadError> {
     let file = fs::File::open(path).map_err(ReadError::Io)?;
     let known = file.metadata().map_err(ReadError::Io)?.len();
     read_rest(file, known, limit, Vec::new())
+}
+
+/// [`read_input`] for a file that a file names (a description's device
+/// symbol), which only a regular file may be: see [`open_regular`].
+pub fn read_regular_input(path: &Path, limit: &InputLimit) -> Result<Vec<u8>, ReadError> {
+    let file = open_regular(path).map_err(ReadError::Io)?;
+    let known = file.metadata().map_err(ReadError::Io)?.len();
+    read_rest(file, known, limit, Vec::new())
+}
+
+/// `path` opened for reading if it is a regular file (or a symbolic link to
+/// one); anything else is refused unread: a directory (EISDIR), a FIFO, a
+/// socket or a device ("not a regular file"), whose read could wait
+/// forever or never end. The one way gsdc opens a file that it did not
+/// create and that the user did not name on the command line: what a
+/// description names, what an output directory holds.
+///
+/// The file is opened without waiting (opening a FIFO waits for a writer
+/// otherwise; `O_NONBLOCK` does not change how a regular file reads,
+/// open(2)) and judged by the open handle, so nothing swapped in after a
+/// look at the name is read.
+pub fn open_regular(path: &Path) -> io::Result<fs::File> {
+    let file = open_without_waiting(path)?;
+    let kind = file.metadata()?.file_type();
+    if kind.is_file() {
+        Ok(file)
+    } else if kind.is_dir() {
+        Err(is_a_directory())
+    } else {
+        Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "not a regular file",
+        ))
+    }
+}
+
+#[cfg(unix)]
+fn open_without_waiting(path: &Path) -> io::Result<fs::File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK | libc::O_NOCTTY)
+        .open(path)
+}
+
+#[cfg(not(unix))]
+fn open_without_waiting(path: &Path) -> io::Result<fs::File> {
+    fs::File::open(path)
+}
+
+/// The error reading a directory gives, as the system words it.
+#[cfg(unix)]
+fn is_a_directory() -> io::Error {
+    io::Error::from_raw_os_error(libc::EISDIR)
+}
+
+#[cfg(not(unix))]
+fn is_a_directory() -> io::Error {
+    io::ErrorKind::IsADirectory.into()
 }
 
 /// The bytes of a file given to `gsdc check`, and what its first
@@ -211,7 +271,7 @@ pub fn stale_files(dir: &Path, files: &[Artifact]) -> io::Result<Vec<PathBuf>> {
             stale.push(path);
         } else if is_generated(&path)? {
             if may_name_bitmaps(&name) {
-                named.extend(bitmaps_named_in(&fs::read(&path)?));
+                named.extend(bitmaps_named_in(&read_regular(&path)?));
             }
             // A datasheet is `gsdc doc`'s, which a build never writes.
             if !produced && !is_datasheet(&name) {
@@ -266,7 +326,7 @@ fn has_extension(name: &str, extension: &str) -> bool {
 
 fn is_generated(path: &Path) -> io::Result<bool> {
     let mut head = Vec::new();
-    fs::File::open(path)?
+    open_regular(path)?
         .take(HEADER_BYTES)
         .read_to_end(&mut head)?;
     let mark = GENERATED_MARK.as_bytes();
@@ -399,21 +459,19 @@ fn remove_stale(stale: &[PathBuf], staged: &[Staged]) -> Result<Vec<PathBuf>, Wr
 }
 
 /// What `target` holds: `None` when it does not exist. Anything but a
-/// regular file (or a link to one) is an error: a directory is EISDIR, and
-/// a FIFO or device is refused rather than read, which could block forever.
+/// regular file (or a link to one) is an error ([`open_regular`]).
 fn read_target(target: &Path) -> io::Result<Option<Vec<u8>>> {
-    match fs::metadata(target) {
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(e),
-        Ok(m) if m.is_file() || m.is_dir() => {}
-        Ok(_) => {
-            return Err(io::Error::new(
-                io::ErrorKind::InvalidInput,
-                "not a regular file",
-            ))
-        }
+    match read_regular(target) {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        read => read.map(Some),
     }
-    fs::read(target).map(Some)
+}
+
+/// The bytes of the regular file at `path` ([`open_regular`]).
+fn read_regular(path: &Path) -> io::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    open_regular(path)?.read_to_end(&mut bytes)?;
+    Ok(bytes)
 }
 
 /// Writes `file` to its temporary, unless its target already holds exactly

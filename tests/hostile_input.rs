@@ -1,0 +1,128 @@
+//! Hostile input, round three (issue 26), through the command line: what a
+//! description names is read only when it is a regular file; a list of fixed
+//! length takes no item more; `build --check` beside a build sees no live
+//! temporary as stale; and nothing from an input reaches the terminal raw.
+//!
+//! Every time bound here catches hangs, not slowness: each run takes well
+//! under a second, and [`HANG`] is set for a debug build on a busy 2-core
+//! machine.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+const HANG: Duration = Duration::from_secs(20);
+
+const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
+
+/// A fresh directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("hostile-input")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+struct Run {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+/// Runs gsdc in `dir`; killed, and the test failed, after [`HANG`].
+fn gsdc(dir: &Path, args: &[&str]) -> Run {
+    let (out, err) = (dir.join("gsdc.out"), dir.join("gsdc.err"));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gsdc"))
+        .args(args)
+        .current_dir(dir)
+        .stdout(std::fs::File::create(&out).unwrap())
+        .stderr(std::fs::File::create(&err).unwrap())
+        .stdin(Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > HANG {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("gsdc {args:?} did not finish within {HANG:?}: a hang");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    let read = |path| String::from_utf8_lossy(&std::fs::read(path).unwrap()).into_owned();
+    Run {
+        code: status.code(),
+        stdout: read(&out),
+        stderr: read(&err),
+    }
+}
+
+/// The fixture without warnings, with `line` added to its `[device]`.
+fn description_with(line: &str) -> String {
+    let path = Path::new(MANIFEST).join("tests/fixtures/valid/no_warnings.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    text.replacen("[device]\n", &format!("[device]\n{line}\n"), 1)
+}
+
+fn mkfifo(path: &Path) {
+    let made = Command::new("mkfifo")
+        .arg(path)
+        .status()
+        .expect("mkfifo runs");
+    assert!(made.success(), "mkfifo {}", path.display());
+}
+
+/// Each command that reads a description, on `card.toml` in `dir`.
+const READERS: [&[&str]; 3] = [
+    &["build", "card.toml", "--out", "out"],
+    &["doc", "card.toml", "--out", "out"],
+    &[
+        "decode",
+        "card.toml",
+        "--module",
+        "PPO1",
+        "--direction",
+        "out",
+        "10F0 0000 0000 0000 0000 0000",
+    ],
+];
+
+/// A symbol that is a FIFO (or a link to one), a device, a directory or a
+/// link that loops is E141 for every command, at once and unread: opening
+/// a FIFO to read waits for a writer that never comes.
+#[test]
+fn a_symbol_that_is_not_a_regular_file_is_e141_unread() {
+    let dir = scratch("symbol-not-regular");
+    mkfifo(&dir.join("s.png"));
+    std::fs::create_dir(&dir.join("folder.png")).unwrap();
+    std::os::unix::fs::symlink("s.png", dir.join("link.png")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", dir.join("zero.png")).unwrap();
+    std::os::unix::fs::symlink("loop.png", dir.join("loop.png")).unwrap();
+    for (symbol, why) in [
+        ("s.png", "not a regular file"),
+        ("link.png", "not a regular file"),
+        ("zero.png", "not a regular file"),
+        ("folder.png", "Is a directory"),
+        ("loop.png", "symbolic links"),
+    ] {
+        let text = description_with(&format!("symbol = \"{symbol}\""));
+        std::fs::write(dir.join("card.toml"), text).unwrap();
+        for args in READERS {
+            let run = gsdc(&dir, args);
+            assert_eq!(run.code, Some(1), "{symbol} {args:?}: {}", run.stderr);
+            assert!(
+                run.stderr
+                    .contains("error[E141]: the device symbol cannot be read: ")
+                    && run.stderr.contains(why),
+                "{symbol} {args:?}: {}",
+                run.stderr
+            );
+            assert!(!dir.join("out").exists(), "{symbol} {args:?}");
+        }
+    }
+}
