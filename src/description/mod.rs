@@ -274,7 +274,7 @@ pub struct Dpv1Class2 {
     pub max_data_len: Spanned<u8>,
     /// C2_Response_Timeout, units of 10 ms.
     pub response_timeout: Spanned<u16>,
-    /// C2_Max_Count_Channels: class 2 connections at once.
+    /// C2_Max_Count_Channels: class 2 connections at once, 1..49.
     pub max_count_channels: Spanned<u8>,
     /// Max_Initiate_PDU_Length: 0 or 52..244.
     pub max_initiate_pdu_length: Spanned<u8>,

@@ -8,9 +8,9 @@ use std::collections::BTreeSet;
 use std::ops::Range;
 use toml::Spanned;
 
-/// GSD string limits (GSD specification V5.1; FIELDBUS-NOTES §3).
-pub const GSD_NAME_LEN: usize = 32;
-pub const GSD_INFO_LEN: usize = 256;
+/// The longest text a GSD block shows (a parameter's name, a value's
+/// text), as the rules hold every GSD to it.
+pub const GSD_NAME_LEN: usize = crate::gsd::BLOCK_TEXT_LEN;
 
 pub struct Checker {
     diagnostics: Diagnostics,
@@ -155,9 +155,11 @@ impl Checker {
         false
     }
 
-    /// A string that goes into the GSD: not empty, 7-bit printable ASCII
-    /// without `"`, at most `limit` characters.
-    pub fn gsd_string(&mut self, s: &Spanned<String>, limit: usize, what: &str) -> String {
+    /// A string that becomes the value of the GSD keyword `keyword`
+    /// (`Vendor_Name`): not empty, 7-bit printable ASCII without `"`, and
+    /// no longer than the keyword schema lets the keyword be.
+    pub fn gsd_string(&mut self, s: &Spanned<String>, keyword: &str, what: &str) -> String {
+        let limit = crate::gsd::keyword_max_len(keyword);
         self.check_gsd(s.get_ref(), s.span(), limit, what, GsdForm::Only);
         s.get_ref().clone()
     }
@@ -350,6 +352,36 @@ impl Checker {
         V: Copy + Into<i64>,
     {
         self.in_range((*v.get_ref()).into(), min, max, v.span(), what)
+    }
+
+    /// A number that becomes the value of the GSD keyword `keyword`
+    /// (`C2_Max_Count_Channels`), within the range the keyword schema gives
+    /// it: the range `gsdc check` holds the generated GSD to, so that the
+    /// two cannot disagree.
+    pub fn gsd_number<T, V>(&mut self, v: &Spanned<V>, keyword: &str, what: &str) -> Option<T>
+    where
+        T: TryFrom<i64>,
+        V: Copy + Into<i64>,
+    {
+        self.gsd_number_from(v, keyword, i64::MIN, what)
+    }
+
+    /// [`Checker::gsd_number`], and at least `least`: what the description
+    /// asks more of the value than the keyword's type (a class 2 channel
+    /// has at least one connection).
+    pub fn gsd_number_from<T, V>(
+        &mut self,
+        v: &Spanned<V>,
+        keyword: &str,
+        least: i64,
+        what: &str,
+    ) -> Option<T>
+    where
+        T: TryFrom<i64>,
+        V: Copy + Into<i64>,
+    {
+        let (min, max) = crate::gsd::keyword_range(keyword);
+        self.spanned_in_range(v, min.max(least), max, what)
     }
 
     /// E109: a range `[min, max]` written the wrong way round.

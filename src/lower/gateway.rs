@@ -21,8 +21,6 @@ use params::{default_configuration, node_count, node_words, NodeWords};
 use std::ops::Range;
 use toml::Spanned;
 
-/// A PROFIBUS slave's input and output each hold at most 244 bytes.
-const MAX_DATA_LEN: i64 = 244;
 /// Node numbers, counts and words are bytes in the generated code.
 const MAX_BYTE: i64 = 0xFF;
 
@@ -52,12 +50,15 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
             "the gateway's own node",
         )
     });
-    let max_len = |cx: &mut Checker, len: &Spanned<i64>, what| {
-        cx.spanned_in_range(len, 1, MAX_DATA_LEN, what)
-            .unwrap_or(MAX_DATA_LEN as u16)
+    // They become Max_Input_Len and Max_Output_Len; a gateway carries a
+    // byte at least.
+    let max_len = |cx: &mut Checker, len: &Spanned<i64>, keyword, what| {
+        let most = crate::gsd::keyword_range(keyword).1;
+        cx.gsd_number_from(len, keyword, 1, what)
+            .unwrap_or(most as u16)
     };
-    let max_input_len = max_len(cx, &g.max_input_len, "max_input_len");
-    let max_output_len = max_len(cx, &g.max_output_len, "max_output_len");
+    let max_input_len = max_len(cx, &g.max_input_len, "Max_Input_Len", "max_input_len");
+    let max_output_len = max_len(cx, &g.max_output_len, "Max_Output_Len", "max_output_len");
     let data_order = data_order(cx, &g.data_order, &span);
     let nodes = first_node..=last_node;
     let (node_count, count_type) = node_count(cx, &g.node_count, nodes.len());
