@@ -99,7 +99,7 @@ const READERS: [&[&str]; 3] = [
 fn a_symbol_that_is_not_a_regular_file_is_e141_unread() {
     let dir = scratch("symbol-not-regular");
     mkfifo(&dir.join("s.png"));
-    std::fs::create_dir(&dir.join("folder.png")).unwrap();
+    std::fs::create_dir(dir.join("folder.png")).unwrap();
     std::os::unix::fs::symlink("s.png", dir.join("link.png")).unwrap();
     std::os::unix::fs::symlink("/dev/zero", dir.join("zero.png")).unwrap();
     std::os::unix::fs::symlink("loop.png", dir.join("loop.png")).unwrap();

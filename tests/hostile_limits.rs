@@ -244,3 +244,77 @@ fn every_string_that_becomes_a_keyword_is_held_to_the_keywords_length() {
 fn a_gsd_stem_fits_bitmap_device() {
     assert!(max_len("Bitmap_Device") >= 8);
 }
+
+/// The diagnostics of `text`, which must not load.
+fn refused(text: &str) -> gsdc::Diagnostics {
+    let (ir, diagnostics) = gsdc::load("card.toml", text);
+    assert!(ir.is_none(), "{text}");
+    diagnostics
+}
+
+/// A list of fixed length with an item more (or a hundred thousand more)
+/// loaded, and the items past the length were dropped without a word; as
+/// one with an item less, it is E003 at the list, saying how many items it
+/// has.
+#[test]
+fn a_list_of_fixed_length_takes_no_item_more() {
+    let no_warnings =
+        std::fs::read_to_string(Path::new(MANIFEST).join(FIXTURES).join("no_warnings.toml"))
+            .unwrap();
+    let gateway =
+        std::fs::read_to_string(Path::new(MANIFEST).join("descriptions/md810-gateway.toml"))
+            .unwrap();
+    let many = format!("[{}]", vec!["0"; 100_000].join(", "));
+    for (text, from, to, items) in [
+        (
+            &no_warnings,
+            "status_bytes = [0, 0, 0]",
+            "status_bytes = [0, 0, 0, 1]".to_string(),
+            "4",
+        ),
+        (
+            &no_warnings,
+            "status_bytes = [0, 0, 0]",
+            "status_bytes = [0, 0]".to_string(),
+            "2",
+        ),
+        (
+            &no_warnings,
+            "status_bytes = [0, 0, 0]",
+            format!("status_bytes = {many}"),
+            "100000",
+        ),
+        (
+            &no_warnings,
+            "range = [0, 65535]",
+            "range = [0, 65535, 3]".to_string(),
+            "3",
+        ),
+        (
+            &gateway,
+            "nodes = [1, 30]",
+            "nodes = [1, 30, 99]".to_string(),
+            "3",
+        ),
+        (
+            &gateway,
+            "range = [1, 30]",
+            "range = [1, 30, 50]".to_string(),
+            "3",
+        ),
+    ] {
+        assert!(text.contains(from), "{from}");
+        let mutated = text.replacen(from, &to, 1);
+        let diagnostics = refused(&mutated);
+        let d = diagnostics.iter().next().unwrap();
+        assert_eq!(d.code, "E003", "{to:.40}: {diagnostics:?}");
+        assert!(
+            d.message
+                .contains(&format!("invalid length {items}, expected a list of")),
+            "{}",
+            d.message
+        );
+        let at = mutated.find(&to).unwrap() + to.find('[').unwrap();
+        assert_eq!(d.span.as_ref().map(|s| s.start), Some(at), "{to:.40}");
+    }
+}

@@ -13,6 +13,7 @@ pub use params::place;
 use super::checks::Checker;
 use crate::description::gateway as raw;
 use crate::description::Description;
+use crate::description::Exactly;
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{DataOrder, Gateway, Node, ParamKey};
 use crate::ir::profibus::PrmType;
@@ -220,8 +221,8 @@ fn words_of(words: u32) -> String {
 }
 
 /// `[first, last]` within a byte, first not above last.
-fn node_numbers(cx: &mut Checker, nodes: &Spanned<[Spanned<i64>; 2]>) -> (u8, u8) {
-    let [first, last] = nodes.get_ref();
+fn node_numbers(cx: &mut Checker, nodes: &Spanned<Exactly<Spanned<i64>, 2>>) -> (u8, u8) {
+    let Exactly([first, last]) = nodes.get_ref();
     let first: u8 = cx
         .spanned_in_range(first, 0, MAX_BYTE, "a node number")
         .unwrap_or(1);

@@ -346,7 +346,7 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
         }
     };
     let status_bytes = match &d.status_bytes {
-        Some(bytes) => *bytes.get_ref(),
+        Some(bytes) => bytes.get_ref().0,
         None => {
             cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near.clone());
             [0; 3]
