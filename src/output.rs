@@ -229,11 +229,46 @@ pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Writte
     write_with(&OsDisk, dir, files, prune)
 }
 
-/// What `dir/file_name` holds: `None` when it does not exist; an error for
-/// anything but a regular file, which is refused unread.
+/// What a directory holds against the files a build would write there.
+#[derive(Debug)]
+#[non_exhaustive]
+pub struct OnDisk {
+    /// What the directory holds at each file's name, in the order given:
+    /// `None` when nothing; an error for anything but a regular file,
+    /// which is refused unread.
+    pub files: Vec<io::Result<Option<Vec<u8>>>>,
+    /// Its stale files ([`stale_files`]).
+    pub stale: Vec<PathBuf>,
+    /// Why the directory could not be locked (a file system without
+    /// locks): temporaries were then left out of `stale`, as they could be
+    /// a build's at work.
+    pub not_locked: Option<io::Error>,
+}
+
+/// What `dir` holds against `files`, for `gsdc build --check`, read under
+/// a shared lock on `dir`: a build into `dir` at work (which holds it
+/// exclusively) is waited for, so what is read is one build's whole set,
+/// and a temporary found is one no build is at work on.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
-pub fn existing(dir: &Path, file_name: &str) -> io::Result<Option<Vec<u8>>> {
-    read_target(&dir.join(file_name))
+pub fn on_disk(dir: &Path, files: &[Artifact]) -> io::Result<OnDisk> {
+    // Held until the end of this function: closing the handle unlocks.
+    let handle = match fs::File::open(dir) {
+        Ok(handle) => Some(handle),
+        // No directory: every file is missing, and nothing is stale.
+        Err(e) if e.kind() == io::ErrorKind::NotFound => None,
+        Err(e) => return Err(e),
+    };
+    let not_locked = handle.as_ref().and_then(|h| h.lock_shared().err());
+    let held = files
+        .iter()
+        .map(|file| read_target(&dir.join(&file.file_name)))
+        .collect();
+    let stale = stale_files(dir, files, not_locked.is_none())?;
+    Ok(OnDisk {
+        files: held,
+        stale,
+        not_locked,
+    })
 }
 
 /// The mark every file gsdc generates carries in its header.
@@ -250,7 +285,11 @@ const HEADER_BYTES: u64 = 1024;
 /// a symbol, or were not given. Sorted by name; none when `dir` does not
 /// exist. Called before a build replaces its files, it sees the bitmaps the
 /// files it replaces named.
-pub fn stale_files(dir: &Path, files: &[Artifact]) -> io::Result<Vec<PathBuf>> {
+///
+/// Temporaries only when the caller holds a lock on `dir` (`locked`): a
+/// build at work holds it and its temporaries, so only then is every
+/// temporary one a build left behind.
+fn stale_files(dir: &Path, files: &[Artifact], locked: bool) -> io::Result<Vec<PathBuf>> {
     let entries = match fs::read_dir(dir) {
         Ok(entries) => entries,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Vec::new()),
@@ -268,7 +307,9 @@ pub fn stale_files(dir: &Path, files: &[Artifact]) -> io::Result<Vec<PathBuf>> {
         let produced = files.iter().any(|f| name == f.file_name);
         let path = entry.path();
         if is_temporary(&name) {
-            stale.push(path);
+            if locked {
+                stale.push(path);
+            }
         } else if is_generated(&path)? {
             if may_name_bitmaps(&name) {
                 named.extend(bitmaps_named_in(&read_regular(&path)?));
@@ -388,18 +429,10 @@ fn write_with(
     // What is stale is seen before the files are replaced (a replaced
     // device file still names the bitmaps it used) and before this build's
     // own temporaries are made.
-    let mut stale = match prune {
-        true => stale_files(dir, files).map_err(|e| cannot("read", e))?,
+    let stale = match prune {
+        true => stale_files(dir, files, not_locked.is_none()).map_err(|e| cannot("read", e))?,
         false => Vec::new(),
     };
-    // Without the lock a temporary may be another build's, at work.
-    if not_locked.is_some() {
-        stale.retain(|path| {
-            !path
-                .file_name()
-                .is_some_and(|n| is_temporary(&n.to_string_lossy()))
-        });
-    }
     let mut staged = Vec::new();
     let mut outcomes = Vec::new();
     for file in files {
@@ -813,7 +846,7 @@ mod tests {
         std::os::unix::fs::symlink("OLD.GSD", dir.join("link.GSD")).unwrap();
         let files = [artifact("A.GSD", header.as_bytes())];
         assert_eq!(
-            stale_files(&dir, &files).unwrap(),
+            stale_files(&dir, &files, true).unwrap(),
             [
                 dir.join(".A.GSD.gsdc-9-0123456789abcdef.tmp"),
                 dir.join("OLD.GSD")
@@ -826,7 +859,9 @@ mod tests {
             names_in(&dir),
             ["A.GSD", "late.txt", "link.GSD", "notes.txt"]
         );
-        assert!(stale_files(&dir.join("none"), &files).unwrap().is_empty());
+        assert!(stale_files(&dir.join("none"), &files, true)
+            .unwrap()
+            .is_empty());
         fs::remove_dir_all(dir).unwrap();
     }
 
@@ -849,7 +884,7 @@ mod tests {
             artifact("A.GSD", gsd("A").as_bytes()),
             artifact("A.bmp", b"BM"),
         ];
-        let stale = stale_files(&dir, &files).unwrap();
+        let stale = stale_files(&dir, &files, true).unwrap();
         let names: Vec<String> = stale
             .iter()
             .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
@@ -882,7 +917,7 @@ mod tests {
         let e = write_files(&dir, &[artifact("A.GSD", b"a")], false).unwrap_err();
         assert_eq!(e.path, dir.join("A.GSD"));
         assert!(e.to_string().contains("not a regular file"), "{e}");
-        assert!(existing(&dir, "A.GSD").is_err());
+        assert!(read_target(&dir.join("A.GSD")).is_err());
         fs::remove_dir_all(dir).unwrap();
     }
 

@@ -126,3 +126,54 @@ fn a_symbol_that_is_not_a_regular_file_is_e141_unread() {
         }
     }
 }
+
+/// `gsdc build --check` beside a build into the same directory took that
+/// build's temporaries for a killed build's and named them stale (exit 1).
+/// A build at work holds the directory's lock exclusively while its
+/// temporaries exist: here the test holds it, with a temporary made as a
+/// build makes one. `--check` waits until the lock is released, and then
+/// the temporary is gone and the directory in step.
+#[test]
+fn check_waits_for_a_build_at_work_and_names_none_of_its_temporaries() {
+    let dir = scratch("check-beside-build");
+    let text = description_with("");
+    std::fs::write(dir.join("card.toml"), text).unwrap();
+    let build = gsdc(&dir, &["build", "card.toml", "--out", "out"]);
+    assert_eq!(build.code, Some(0), "{}", build.stderr);
+
+    let out = dir.join("out");
+    let lock = std::fs::File::open(&out).unwrap();
+    lock.lock().unwrap();
+    let temporary = out.join(".X1DP.GSD.gsdc-1-0123456789abcdef.tmp");
+    std::fs::write(&temporary, "half a GSD").unwrap();
+    let check = std::thread::scope(|scope| {
+        let check = scope.spawn(|| gsdc(&dir, &["build", "card.toml", "--out", "out", "--check"]));
+        std::thread::sleep(Duration::from_millis(1500));
+        assert!(
+            !check.is_finished(),
+            "--check did not wait for the build at work"
+        );
+        std::fs::remove_file(&temporary).unwrap();
+        lock.unlock().unwrap();
+        check.join().unwrap()
+    });
+    assert_eq!(check.code, Some(0), "{}{}", check.stdout, check.stderr);
+    assert_eq!(check.stdout, "");
+}
+
+/// A temporary that no build at work holds is a killed build's: stale.
+#[test]
+fn check_names_a_killed_builds_temporary_stale() {
+    let dir = scratch("check-leftover");
+    std::fs::write(dir.join("card.toml"), description_with("")).unwrap();
+    let build = gsdc(&dir, &["build", "card.toml", "--out", "out"]);
+    assert_eq!(build.code, Some(0), "{}", build.stderr);
+    let temporary = ".X1DP.GSD.gsdc-1-0123456789abcdef.tmp";
+    std::fs::write(dir.join("out").join(temporary), "half a GSD").unwrap();
+    let check = gsdc(&dir, &["build", "card.toml", "--out", "out", "--check"]);
+    assert_eq!(check.code, Some(1), "{}", check.stderr);
+    assert_eq!(
+        check.stdout,
+        format!("stale: out/{temporary} (gsdc generated it, and no description given gives it)\n")
+    );
+}

@@ -7,7 +7,7 @@
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
 use crate::build::{merge, Compiler, Config, Refused};
-use crate::output::{existing, stale_files, write_files, Outcome};
+use crate::output::{on_disk, write_files, Outcome};
 use crate::{Artifact, ArtifactKind, Language};
 use std::path::{Path, PathBuf};
 
@@ -179,12 +179,26 @@ pub(super) fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact
 }
 
 /// `--check`: compares, writes nothing, prints a unified diff per differing
-/// file and names each stale file.
+/// file and names each stale file. What DIR holds is read as one build
+/// left it: a build at work is waited for (`crate::output::on_disk`).
 fn check_all(files: &[Artifact], out: &Path) -> Status {
+    let held = match on_disk(out, files) {
+        Ok(held) => held,
+        Err(e) => {
+            warn(&format!("error: cannot read {}: {e}", display_name(out)));
+            return Status::UsageOrIo;
+        }
+    };
+    if let Some(e) = &held.not_locked {
+        warn(&format!(
+            "warning: cannot lock {} ({e}): a build writing into it at the same time could be compared half done; its temporaries are not named",
+            display_name(out)
+        ));
+    }
     let mut status = Status::Ok;
-    for file in files {
+    for (file, on_disk) in files.iter().zip(held.files) {
         let path = out.join(&file.file_name);
-        match existing(out, &file.file_name) {
+        match on_disk {
             Ok(Some(on_disk)) if on_disk == file.contents => {}
             Ok(on_disk) => {
                 say(difference(&path, on_disk.as_deref(), file).trim_end());
@@ -196,22 +210,12 @@ fn check_all(files: &[Artifact], out: &Path) -> Status {
             }
         }
     }
-    match stale_files(out, files) {
-        Ok(stale) => {
-            for path in &stale {
-                say(&format!(
-                    "stale: {} (gsdc generated it, and no description given gives it)",
-                    display_name(path)
-                ));
-            }
-            if !stale.is_empty() {
-                status = status.max(Status::InputErrors);
-            }
-        }
-        Err(e) => {
-            warn(&format!("error: cannot read {}: {e}", display_name(out)));
-            status = Status::UsageOrIo;
-        }
+    for path in &held.stale {
+        say(&format!(
+            "stale: {} (gsdc generated it, and no description given gives it)",
+            display_name(path)
+        ));
+        status = status.max(Status::InputErrors);
     }
     if status == Status::InputErrors {
         warn(&format!(
