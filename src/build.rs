@@ -319,8 +319,7 @@ impl Findings {
             text: &self.text,
         };
         for warning in self.warnings() {
-            let location = source.location(warning);
-            println!("cargo:warning={location}: {}", warning.message);
+            println!("cargo:warning={}", source.one_line(warning));
         }
     }
 }

@@ -177,3 +177,101 @@ fn check_names_a_killed_builds_temporary_stale() {
         format!("stale: out/{temporary} (gsdc generated it, and no description given gives it)\n")
     );
 }
+
+/// Whether a terminal would take any of `output` as a command or reorder
+/// it: a control character other than the line end, or a mark that
+/// reorders text.
+fn raw_controls(output: &str) -> Vec<char> {
+    output
+        .chars()
+        .filter(|&c| {
+            (c.is_control() && c != '\n')
+                || matches!(c, '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+        })
+        .collect()
+}
+
+#[track_caller]
+fn assert_escaped(run: &Run, escaped: &str) {
+    let all = format!("{}{}", run.stdout, run.stderr);
+    assert_eq!(raw_controls(&all), [], "{all:?}");
+    assert!(all.contains(escaped), "no {escaped} in {all}");
+}
+
+/// A keyword with an escape sequence and a right-to-left override: W205's
+/// headline printed both raw (the quoted line showed `?` for the first,
+/// the second raw).
+#[test]
+fn check_shows_a_keywords_control_characters_escaped() {
+    let dir = scratch("check-escapes");
+    let gsd = "#Profibus_DP\r\nGSD_Revision = 5\r\nX\u{1b}[31mY\u{202E}Z = 1\r\n";
+    std::fs::write(dir.join("A.GSD"), gsd).unwrap();
+    let run = gsdc(&dir, &["check", "A.GSD"]);
+    assert_eq!(run.code, Some(1), "{}", run.stderr);
+    assert_escaped(
+        &run,
+        "warning[W205]: unknown keyword `X\\u001b[31mY\\u202eZ`",
+    );
+    assert_escaped(&run, "3 | X\\u001b[31mY\\u202eZ = 1");
+}
+
+/// `gsdc decode` quotes its arguments in E410, E413 and E416, which put
+/// them on the terminal raw; E411 quoted a hex argument whole (131 KB of
+/// stderr for 131,071 digits).
+#[test]
+fn decode_shows_its_arguments_escaped_and_shortened() {
+    let dir = scratch("decode-escapes");
+    std::fs::write(dir.join("card.toml"), description_with("")).unwrap();
+    let decode = |extra: &[&str]| {
+        let mut args = vec!["decode", "card.toml"];
+        args.extend_from_slice(extra);
+        let run = gsdc(&dir, &args);
+        assert_eq!(run.code, Some(1), "{args:?}: {}", run.stderr);
+        run
+    };
+    let telegram = "10F0 0000 0000 0000 0000 0000";
+    let module = decode(&[
+        "--module",
+        "PPO\u{1b}[31m1\u{202E}",
+        "--direction",
+        "out",
+        telegram,
+    ]);
+    assert_escaped(
+        &module,
+        "error[E413]: the description has no module `PPO\\u001b[31m1\\u202e`",
+    );
+    let digit = decode(&["--prm", "00 \u{202E}1"]);
+    assert_escaped(&digit, "error[E410]: `\\u202e` is not a hex digit");
+    let value = decode(&[
+        "--module",
+        "PPO1",
+        "--direction",
+        "out",
+        "--mapping",
+        "pzd_out=\u{1b}[2J",
+        telegram,
+    ]);
+    assert_escaped(&value, "error[E416]: `\\u001b[2J` is not a mapping value");
+
+    // One argument holds at most 128 KiB (Linux's MAX_ARG_STRLEN).
+    let digits = "A".repeat(131_071);
+    let odd = decode(&["--prm", &digits]);
+    assert_eq!(raw_controls(&odd.stderr), []);
+    assert!(
+        odd.stderr.contains("error[E411]: `AAAA"),
+        "{:.400}",
+        odd.stderr
+    );
+    assert!(
+        odd.stderr
+            .contains("AAAA` has 131071 hex digits: a byte is two"),
+        "{:.400}",
+        odd.stderr
+    );
+    assert!(
+        odd.stderr.len() < 3_000,
+        "{} bytes of stderr",
+        odd.stderr.len()
+    );
+}

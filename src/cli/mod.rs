@@ -125,26 +125,11 @@ fn note_failure(result: std::io::Result<()>) {
 
 /// A path as the human output shows it: control characters (a newline
 /// that would start a fake line, an escape sequence) and the marks that
-/// reorder text (U+202E) escaped as the JSON output escapes them, so that a
-/// file name cannot pass for other output.
+/// reorder text (U+202E) escaped as the JSON output escapes them
+/// ([`crate::unicode::escape`]), so that a file name cannot pass for other
+/// output.
 fn display_name(path: &Path) -> String {
-    let mut shown = String::new();
-    for c in path.to_string_lossy().chars() {
-        match c {
-            '\n' => shown.push_str("\\n"),
-            '\r' => shown.push_str("\\r"),
-            '\t' => shown.push_str("\\t"),
-            c if c.is_control() || is_bidi_control(c) => {
-                shown.push_str(&format!("\\u{:04x}", u32::from(c)));
-            }
-            c => shown.push(c),
-        }
-    }
-    shown
-}
-
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+    crate::unicode::escape(&path.to_string_lossy()).into_owned()
 }
 
 /// The IR of the description at `path`, for a command that reads it

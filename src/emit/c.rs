@@ -929,7 +929,7 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 fn comment_text(text: &str) -> String {
     let mut visible = String::with_capacity(text.len());
     for c in text.chars() {
-        if (c.is_control() && !c.is_whitespace()) || is_bidi_control(c) {
+        if (c.is_control() && !c.is_whitespace()) || crate::unicode::is_bidi_control(c) {
             let _ = write!(visible, "<U+{:04X}>", u32::from(c));
         } else {
             visible.push(c);
@@ -942,11 +942,6 @@ fn comment_text(text: &str) -> String {
         }
     }
     out
-}
-
-/// The characters that reorder text on screen (Unicode's Bidi_Control).
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
 /// A C string literal of `text`: printable ASCII as it is (`\`, `"` and `?`

@@ -4,6 +4,7 @@
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, Decision, DecisionKind};
+use crate::unicode::is_unsafe;
 use std::collections::BTreeSet;
 use std::ops::Range;
 use toml::Spanned;
@@ -140,7 +141,7 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) else {
+        let Some(bad) = s.chars().find(|&c| is_unsafe(c)) else {
             return !empty;
         };
         self.push(
@@ -421,30 +422,13 @@ pub fn is_gsd_char(c: char) -> bool {
 /// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked
 /// again.
 pub fn is_clean(s: &str) -> bool {
-    !s.trim().is_empty() && !s.chars().any(is_unsafe_char)
-}
-
-/// Control characters (C0, DEL, C1), the line and paragraph separators,
-/// the bidirectional formatting characters (which reorder what a reader
-/// sees: a name could read differently from what the compiler sees) and the
-/// Unicode noncharacters.
-fn is_unsafe_char(c: char) -> bool {
-    let code = u32::from(c);
-    c.is_control()
-        || matches!(
-            c,
-            '\u{2028}' | '\u{2029}' | '\u{061C}' | '\u{200E}' | '\u{200F}'
-        )
-        || ('\u{202A}'..='\u{202E}').contains(&c)
-        || ('\u{2066}'..='\u{2069}').contains(&c)
-        || (0xFDD0..=0xFDEF).contains(&code)
-        || code & 0xFFFE == 0xFFFE
+    !s.trim().is_empty() && !s.chars().any(is_unsafe)
 }
 
 /// A character as a message shows it: itself in backticks when it prints,
 /// its code point when it does not.
 pub fn char_name(c: char) -> String {
-    if is_unsafe_char(c) || c.is_whitespace() && c != ' ' {
+    if is_unsafe(c) || c.is_whitespace() && c != ' ' {
         format!("U+{:04X}", u32::from(c))
     } else {
         format!("`{c}`")
