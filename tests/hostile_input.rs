@@ -275,3 +275,95 @@ fn decode_shows_its_arguments_escaped_and_shortened() {
         odd.stderr.len()
     );
 }
+
+/// Waits until the file at `path` is closed after being read, for at most
+/// [`HANG`]: an inotify watch (`IN_CLOSE_NOWRITE`), made before `start`
+/// runs.
+fn after_first_read<T>(path: &Path, start: impl FnOnce() -> T) -> T {
+    use std::os::unix::ffi::OsStrExt;
+    let name = std::ffi::CString::new(path.as_os_str().as_bytes()).unwrap();
+    // SAFETY: plain system calls on a descriptor this function owns and
+    // closes, with a buffer that outlives them.
+    unsafe {
+        let fd = libc::inotify_init1(libc::IN_CLOEXEC);
+        assert!(fd >= 0, "inotify_init1");
+        let watch = libc::inotify_add_watch(fd, name.as_ptr(), libc::IN_CLOSE_NOWRITE);
+        assert!(watch >= 0, "inotify_add_watch");
+        let started = start();
+        let mut poll = libc::pollfd {
+            fd,
+            events: libc::POLLIN,
+            revents: 0,
+        };
+        let ready = libc::poll(&mut poll, 1, HANG.as_millis() as i32);
+        assert_eq!(ready, 1, "{} was not read within {HANG:?}", path.display());
+        let mut event = [0u8; 4096];
+        assert!(libc::read(fd, event.as_mut_ptr().cast(), event.len()) > 0);
+        libc::close(fd);
+        started
+    }
+}
+
+/// `check --xsd` checked a GSDML file's text with gsdc's rules, then had
+/// libxml2 read the file from disk again: a file replaced between the two
+/// reads was validated unchecked, and its findings placed against the other
+/// text. Here a file the schema accepts is replaced, as soon as gsdc has
+/// read it, by one the schema rejects: what gsdc reports is the first
+/// file's verdict, every time.
+#[test]
+fn check_validates_the_text_it_read_not_the_file_again() {
+    let dir = scratch("xsd-swap");
+    let description = Path::new(MANIFEST).join("descriptions/md810dp.toml");
+    let build = gsdc(
+        &dir,
+        &[
+            "build",
+            description.to_str().unwrap(),
+            "--out",
+            "out",
+            "--firmware",
+            "none",
+        ],
+    );
+    assert_eq!(build.code, Some(0), "{}", build.stderr);
+    let gsdml = std::fs::read_dir(dir.join("out"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| p.extension().is_some_and(|e| e == "xml"))
+        .unwrap();
+    // Megabytes of comment keep gsdc's rules busy for a while after the
+    // read, so that the file is replaced before it could be read again.
+    let padding = format!("<!-- {} -->\n", "padding ".repeat(1 << 19));
+    let accepted = std::fs::read_to_string(&gsdml).unwrap() + &padding;
+    let rejected = accepted.replacen("<ProfileBody>", "<ProfileBody><NoSuchElement/>", 1);
+    assert_ne!(accepted, rejected);
+    let schema = std::env::var("GSDC_GSDML_XSD_DIR")
+        .unwrap_or_else(|_| format!("{MANIFEST}/../shared/reference/gsdml-xsd-v2.44"));
+    let replacement = dir.join("replacement.xml");
+    for attempt in 0..5 {
+        std::fs::write(&gsdml, &accepted).unwrap();
+        std::fs::write(&replacement, &rejected).unwrap();
+        let check = std::thread::scope(|scope| {
+            let check = after_first_read(&gsdml, || {
+                scope.spawn(|| gsdc(&dir, &["check", "--xsd", &schema, gsdml.to_str().unwrap()]))
+            });
+            std::fs::rename(&replacement, &gsdml).unwrap();
+            check.join().unwrap()
+        });
+        assert!(
+            !check.stdout.contains("E399"),
+            "attempt {attempt}:\n{}",
+            check.stdout
+        );
+        assert_eq!(
+            check.code,
+            Some(0),
+            "attempt {attempt}: {}{}",
+            check.stdout,
+            check.stderr
+        );
+    }
+    // The file the schema rejects, checked whole, is rejected.
+    let check = gsdc(&dir, &["check", "--xsd", &schema, gsdml.to_str().unwrap()]);
+    assert!(check.stdout.contains("error[E399]"), "{}", check.stdout);
+}
