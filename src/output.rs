@@ -232,6 +232,7 @@ pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Writte
 /// What a directory holds against the files a build would write there.
 #[derive(Debug)]
 #[non_exhaustive]
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub struct OnDisk {
     /// What the directory holds at each file's name, in the order given:
     /// `None` when nothing; an error for anything but a regular file,
