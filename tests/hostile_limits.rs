@@ -318,3 +318,27 @@ fn a_list_of_fixed_length_takes_no_item_more() {
         assert_eq!(d.span.as_ref().map(|s| s.start), Some(at), "{to:.40}");
     }
 }
+
+/// `writeable_im_records = []` (a card whose controller writes no I&M
+/// record) loaded and reached E900: gsdc wrote `Writeable_IM_Records=""`,
+/// which its GSDML check refuses. Found by tests/hostile_properties.rs.
+#[test]
+fn no_writable_im_record_is_no_writeable_im_records_attribute() {
+    let name = "no_warnings.toml";
+    let text = with(
+        FIXTURES,
+        name,
+        "profinet.writeable_im_records",
+        Value::Array(Vec::new()),
+    );
+    assert_eq!(errors(FIXTURES, name, &text), Vec::<&str>::new());
+    let (ir, _) = gsdc::load(name, &text);
+    let gsdml = gsdc::compile(&ir.unwrap())
+        .unwrap()
+        .into_iter()
+        .find(|a| a.kind == gsdc::ArtifactKind::Gsdml)
+        .unwrap();
+    let gsdml = String::from_utf8(gsdml.contents).unwrap();
+    assert!(gsdml.contains("<VirtualSubmoduleItem ID=\"IDS_DAP\" SubmoduleIdentNumber=\"0x00000001\" MayIssueProcessAlarm=\"false\">"), "{gsdml}");
+    assert!(!gsdml.contains("Writeable_IM_Records"));
+}

@@ -9,10 +9,10 @@
 const SYMBOL: &[u8] = include_bytes!("../../descriptions/symbols/md810dp.png");
 
 /// The elements of a datasheet page: HTML, and SVG for the diagrams.
-const ELEMENTS: [&str; 31] = [
+const ELEMENTS: [&str; 32] = [
     "a", "body", "caption", "code", "figcaption", "figure", "g", "h1", "h2", "h3", "head",
     "html", "input", "label", "li", "main", "meta", "nav", "ol", "p", "rect", "strong", "style",
-    "svg", "table", "tbody", "td", "text", "th", "thead", "title",
+    "svg", "table", "tbody", "td", "text", "th", "thead", "title", "tr",
 ];
 
 libfuzzer_sys::fuzz_target!(|text: &str| {
