@@ -529,7 +529,7 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-/// Compiles `include`, a C translation unit in `dir`, as C99 with every
+/// Compiles `unit`, a C translation unit, in `dir` as C99 with every
 /// warning an error; the compiler's complaint if it fails.
 fn compile_c(dir: &Path, unit: &str) -> Result<(), String> {
     std::fs::write(dir.join("unit.c"), unit).unwrap();
@@ -547,6 +547,11 @@ fn compile_c(dir: &Path, unit: &str) -> Result<(), String> {
         .arg(dir.join("unit.c"))
         .output()
         .expect("gcc runs: ./scripts/test.sh installs it");
+    verdict(&output)
+}
+
+/// A compiler's verdict: its complaint when it failed.
+fn verdict(output: &std::process::Output) -> Result<(), String> {
     match output.status.success() {
         true => Ok(()),
         false => Err(String::from_utf8_lossy(&output.stderr).into_owned()),
@@ -591,10 +596,7 @@ fn compile_rust(dir: &Path, modules: &[(String, String)]) -> Result<(), String> 
         .arg(dir.join("lib.rs"))
         .output()
         .expect("rustc runs");
-    match output.status.success() {
-        true => Ok(()),
-        false => Err(String::from_utf8_lossy(&output.stderr).into_owned()),
-    }
+    verdict(&output)
 }
 
 /// The layouts of mutated descriptions: each C layout in a translation unit
