@@ -4,13 +4,18 @@
 # missing: libxml2 and libclang for the PI schema validation in the tests;
 # gcc, g++ and clang for the C layouts, which tests/c_header.rs compiles and
 # runs; Chromium and fonts with Latin and Chinese glyphs for the datasheet
-# tests, which load each datasheet in a headless browser; strace, with which
-# tests/output_safety.rs kills a build in the middle of an fsync.
+# tests, which load each datasheet in a headless browser; and for
+# tests/output_safety.rs, which runs as root: mount (a read-only and a full
+# tmpfs), e2fsprogs (chattr +i), util-linux (unshare --pid) and strace (a
+# build killed in the middle of an fsync).
+#
+# With CI=true (.ci/run sets it) a test that still cannot run here fails
+# instead of skipping: run this as root there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 missing=()
-for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei strace; do
+for package in libclang-dev libxml2-dev libxml2-utils pkg-config gcc g++ clang chromium fonts-liberation fonts-wqy-microhei mount e2fsprogs util-linux strace; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -gt 0 ]; then

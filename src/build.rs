@@ -13,9 +13,11 @@
 //! ```
 //!
 //! and in the firmware, the support module once at the crate root and each
-//! layout in a module of its own:
+//! layout in a module of its own (firmware code, not a doctest: it needs the
+//! build script's OUT_DIR; tests/firmware/src/lib.rs does this and is built
+//! and tested by the tests):
 //!
-//! ```ignore
+//! ```text
 //! include!(concat!(env!("OUT_DIR"), "/gsdc_support.rs"));
 //! pub mod md810dp {
 //!     include!(concat!(env!("OUT_DIR"), "/md810dp_layout.rs"));
@@ -27,8 +29,8 @@
 //! both layouts).
 //!
 //! It prints `cargo:rerun-if-changed` for the description and the files it
-//! names (its device symbol), so cargo runs it again when one of them
-//! changes, and writes only files whose content changed. Warnings (placeholder ident numbers) become `cargo:warning`
+//! reads (the device symbol, which only [`generate`] reads: the layouts do
+//! not carry it), so cargo runs it again when one of them changes, and writes only files whose content changed. Warnings (placeholder ident numbers) become `cargo:warning`
 //! lines, or refuse the build with [`Config::deny_warnings`]. With
 //! [`Config::xsd`], or the environment variable [`XSD_ENV`], each GSDML is
 //! validated against the PI schema before anything is written:
@@ -146,14 +148,16 @@ impl Config {
         description: impl AsRef<Path>,
         out_dir: impl AsRef<Path>,
     ) -> Result<Vec<PathBuf>, BuildError> {
-        let files = self.build_script_compile(description.as_ref(), true)?;
+        let files = self.build_script_compile(description.as_ref(), Writes::Everything)?;
         write(&files, out_dir.as_ref())
     }
 
     /// Writes only the firmware layout in `language` (`<stem>_layout.rs`
     /// or `<stem>_layout.h`) and the support file it is built from into
     /// `out_dir`; returns the layout's path. No GSDML is written, so none is
-    /// validated: firmware crates need no libxml2.
+    /// validated: firmware crates need no libxml2; no device file is
+    /// written, so the device symbol is not read: a firmware crate needs no
+    /// bitmap beside its description.
     pub fn generate_layout(
         &self,
         description: impl AsRef<Path>,
@@ -165,16 +169,15 @@ impl Config {
         let mut files: Vec<Artifact> = self
             .clone()
             .firmware(&[language])
-            .build_script_compile(description, false)?
+            .build_script_compile(description, Writes::LayoutsOnly)?
             .into_iter()
             .filter(|a| a.kind.language() == Some(language))
             .collect();
         // The layout first: its path is the one returned.
         files.sort_by_key(|a| !matches!(a.kind, ArtifactKind::RustLayout | ArtifactKind::CHeader));
         if files.is_empty() {
-            return Err(BuildError::Description {
+            return Err(BuildError::NoLayout {
                 path: description.to_path_buf(),
-                rendered: "the description gives no firmware layout".into(),
             });
         }
         let mut paths = write(&files, out_dir.as_ref())?;
@@ -199,21 +202,24 @@ impl Config {
             deny_warnings: self.deny_warnings,
             schema,
             firmware: self.firmware.clone(),
+            writes: Writes::Everything,
         })
     }
 
     /// [`Compiler::compile`] as a build script needs it: the `cargo:` lines
     /// that make cargo run it again when an input changes, warnings as
     /// `cargo:warning`, and the findings rendered into the error. The
-    /// schema, if any, only when the GSDML is to be `validated`.
+    /// schema, if any, and the device symbol only when device files are
+    /// written.
     fn build_script_compile(
         &self,
         description: &Path,
-        validated: bool,
+        writes: Writes,
     ) -> Result<Vec<Artifact>, BuildError> {
         println!("cargo:rerun-if-changed={}", description.display());
-        let xsd = self.xsd.as_deref().filter(|_| validated);
-        if validated {
+        let device_files = writes == Writes::Everything;
+        let xsd = self.xsd.as_deref().filter(|_| device_files);
+        if device_files {
             println!("cargo:rerun-if-env-changed={XSD_ENV}");
         }
         if let Some(dir) = xsd {
@@ -221,7 +227,9 @@ impl Config {
             println!("cargo:rerun-if-changed={}", schema.display());
         }
         let name = description.display().to_string();
-        let compiled = self.compiler_with(xsd)?.compile(description, &name)?;
+        let mut compiler = self.compiler_with(xsd)?;
+        compiler.writes = writes;
+        let compiled = compiler.compile(description, &name)?;
         for path in &compiled.beside {
             println!("cargo:rerun-if-changed={}", path.display());
         }
@@ -234,7 +242,8 @@ impl Config {
             }
             Err(refused) => Err(BuildError::Description {
                 path: description.to_path_buf(),
-                rendered: compiled.render(refused, usize::MAX),
+                findings: compiled.findings,
+                refused,
             }),
         }
     }
@@ -247,6 +256,17 @@ pub(crate) struct Compiler {
     schema: Option<Schema>,
     /// The languages whose firmware layouts a build writes.
     firmware: Vec<Language>,
+    writes: Writes,
+}
+
+/// What a build writes: what it reads follows from it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Writes {
+    /// The device files too, with the device symbol they name.
+    Everything,
+    /// Firmware layouts alone (a build script's `generate_rust`): nothing
+    /// beside the description is read.
+    LayoutsOnly,
 }
 
 /// What one description gave: what to show, and the files or why there are
@@ -260,12 +280,32 @@ pub(crate) struct Compiled {
     pub files: Result<Vec<Artifact>, Refused>,
     /// The files beside the description that it read ([`Loaded::beside`]).
     pub beside: Vec<PathBuf>,
+    /// Its datasheet's names and fingerprint, when it loaded.
+    pub datasheet: Option<Datasheet>,
+}
+
+/// A description's datasheet as `gsdc doc` writes it: its files and the
+/// fingerprint they carry. A build does not write it; `gsdc build --check`
+/// names one in the directory that carries another description's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Datasheet {
+    pub file_names: [String; 2],
+    pub fingerprint: crate::ir::Fingerprint,
+}
+
+impl Datasheet {
+    fn of(ir: &crate::Ir) -> Datasheet {
+        Datasheet {
+            file_names: crate::emit::doc::file_names(ir),
+            fingerprint: ir.fingerprint,
+        }
+    }
 }
 
 /// Why a description gave no files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
-pub(crate) enum Refused {
+pub enum Refused {
     /// The description, or a GSDML it gives, has errors.
     Errors,
     /// It has warnings, and warnings are denied.
@@ -324,19 +364,15 @@ impl Findings {
     }
 }
 
-impl Compiled {
-    /// Every finding rendered (at most `max` per text), then what refused
-    /// the description.
-    pub fn render(&self, refused: Refused, max: usize) -> String {
-        let mut out: String = self.findings.iter().flat_map(|f| f.rendered(max)).collect();
-        out += match refused {
-            Refused::Errors => "nothing written: fix the errors above",
-            Refused::Warnings => {
-                "nothing written: the description has warnings, and they are denied"
-            }
-        };
-        out
-    }
+/// Every finding rendered (at most `max` per text), then what refused the
+/// description.
+fn render(findings: &[Findings], refused: Refused, max: usize) -> String {
+    let mut out: String = findings.iter().flat_map(|f| f.rendered(max)).collect();
+    out += match refused {
+        Refused::Errors => "nothing written: fix the errors above",
+        Refused::Warnings => "nothing written: the description has warnings, and they are denied",
+    };
+    out
 }
 
 impl Compiler {
@@ -350,8 +386,9 @@ impl Compiler {
             findings,
             ir,
             beside,
-        } = load_file(path, name)?;
+        } = load_file_for(path, name, self.writes)?;
         let mut description = findings;
+        let datasheet = ir.as_ref().map(Datasheet::of);
         let files = match ir.map(|ir| crate::emit::compile_for(&ir, &self.firmware)) {
             Some(Ok(files)) => Some(files),
             Some(Err(problems)) => {
@@ -360,7 +397,9 @@ impl Compiler {
             }
             None => None,
         };
-        Ok(self.judge(description, files, beside))
+        let mut compiled = self.judge(description, files, beside);
+        compiled.datasheet = datasheet;
+        Ok(compiled)
     }
 
     /// The verdict on a description's files: errors refuse them, then
@@ -379,6 +418,7 @@ impl Compiler {
                 findings,
                 files: Err(Refused::Errors),
                 beside,
+                datasheet: None,
             };
         };
         let from = &findings[0].name;
@@ -396,6 +436,7 @@ impl Compiler {
             findings,
             files,
             beside,
+            datasheet: None,
         }
     }
 
@@ -440,6 +481,11 @@ pub struct Loaded {
 /// reads a description starts here. `name` names it in diagnostics. `Err`
 /// only when the file cannot be read.
 pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
+    load_file_for(path, name, Writes::Everything)
+}
+
+/// [`load_file`], reading what a build that `writes` these files needs.
+fn load_file_for(path: &Path, name: &str, writes: Writes) -> Result<Loaded, BuildError> {
     let unread = |text: String, diagnostic| Loaded {
         findings: Findings {
             name: name.to_string(),
@@ -473,7 +519,10 @@ pub fn load_file(path: &Path, name: &str) -> Result<Loaded, BuildError> {
         beside.borrow_mut().push(folder.join(name));
         read_beside(folder, name)
     };
-    let (ir, diagnostics) = crate::load_with(&source_name, text, &files);
+    let (ir, diagnostics) = match writes {
+        Writes::Everything => crate::load_with(&source_name, text, &files),
+        Writes::LayoutsOnly => crate::load_for_layouts(&source_name, text),
+    };
     Ok(Loaded {
         findings: Findings {
             name: name.to_string(),
@@ -499,31 +548,62 @@ fn read_beside(folder: &Path, name: &str) -> Result<Vec<u8>, String> {
     })
 }
 
-/// Two descriptions that give files of one name with different contents.
+/// Two descriptions that cannot be built together: they give files of one
+/// name with different contents, or C layouts that declare the same names
+/// (their prefixes meet: `m.toml`'s `m_pkw_pzd2_out_t` is also
+/// `m_pkw.toml`'s), which could not be included in one translation unit.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub(crate) struct Collision {
-    pub file_name: String,
+    pub clash: Clash,
     pub first: PathBuf,
     pub second: PathBuf,
 }
 
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum Clash {
+    /// The file's name.
+    File(String),
+    /// The names both C layouts declare, in order.
+    CNames(Vec<String>),
+}
+
 impl fmt::Display for Collision {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} and {} both give {}, with different contents",
-            self.first.display(),
-            self.second.display(),
-            self.file_name
-        )
+        let (first, second) = (self.first.display(), self.second.display());
+        write!(f, "{first} and {second} {}", self.clash)
+    }
+}
+
+/// What two descriptions both give: `both give x_y_layout.rs, with
+/// different contents`, `both declare the C names `a`, `b` (...)`.
+impl fmt::Display for Clash {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Clash::File(name) => write!(f, "both give {name}, with different contents"),
+            Clash::CNames(names) => {
+                const SHOWN: usize = 3;
+                let shown: Vec<String> =
+                    names.iter().take(SHOWN).map(|n| format!("`{n}`")).collect();
+                let more = match names.len() {
+                    n if n > SHOWN => format!(" and {} more", n - SHOWN),
+                    _ => String::new(),
+                };
+                write!(
+                    f,
+                    "both declare the C names {}{more}: their layouts cannot be included together",
+                    shown.join(", ")
+                )
+            }
+        }
     }
 }
 
 /// The files of several descriptions as one set, each once: a file that two
 /// descriptions give with the same bytes (a support module every layout
 /// shares, the same description given twice) is one file; two different
-/// files of one name are a collision, and every collision is returned.
+/// files of one name, or two C layouts that declare a name both, are a
+/// collision, and every collision is returned.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Vec<Collision>> {
     let mut merged: Vec<(PathBuf, Artifact)> = Vec::new();
@@ -533,11 +613,14 @@ pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>
             match merged.iter().find(|(_, a)| a.file_name == file.file_name) {
                 Some((_, same)) if same.contents == file.contents => {}
                 Some((first, _)) => collisions.push(Collision {
-                    file_name: file.file_name,
+                    clash: Clash::File(file.file_name),
                     first: first.clone(),
                     second: description.clone(),
                 }),
-                None => merged.push((description.clone(), file)),
+                None => {
+                    collisions.extend(c_name_clashes(&merged, &description, &file));
+                    merged.push((description.clone(), file));
+                }
             }
         }
     }
@@ -548,6 +631,36 @@ pub(crate) fn merge(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>
     }
 }
 
+/// The names a new C layout declares that a layout of another description
+/// already declares, one collision per description.
+fn c_name_clashes(
+    merged: &[(PathBuf, Artifact)],
+    description: &Path,
+    file: &Artifact,
+) -> Vec<Collision> {
+    if file.kind != ArtifactKind::CHeader {
+        return Vec::new();
+    }
+    let names = c_names(file);
+    merged
+        .iter()
+        .filter(|(_, other)| other.kind == ArtifactKind::CHeader)
+        .filter_map(|(first, other)| {
+            let both: Vec<String> = c_names(other).intersection(&names).cloned().collect();
+            (!both.is_empty()).then(|| Collision {
+                clash: Clash::CNames(both),
+                first: first.clone(),
+                second: description.to_path_buf(),
+            })
+        })
+        .collect()
+}
+
+fn c_names(header: &Artifact) -> std::collections::BTreeSet<String> {
+    let text = String::from_utf8_lossy(&header.contents);
+    crate::emit::c::declared_names(&text).into_iter().collect()
+}
+
 /// Why a build wrote nothing, or not everything.
 #[derive(Debug)]
 #[non_exhaustive]
@@ -555,9 +668,18 @@ pub enum BuildError {
     /// The description could not be read.
     Read { path: PathBuf, error: io::Error },
     /// The description has errors, or warnings while they are denied, or a
-    /// GSDML it gives breaks the PI schema: the diagnostics, rendered as
-    /// gsdc prints them. Nothing was written.
-    Description { path: PathBuf, rendered: String },
+    /// GSDML it gives breaks the PI schema. Nothing was written. The
+    /// findings are values (each diagnostic's code, severity, message, place
+    /// and help, with the text it points into: the description's, then each
+    /// refused GSDML's), so a build script can act on a code; `Display`
+    /// renders them as gsdc prints them.
+    Description {
+        path: PathBuf,
+        findings: Vec<Findings>,
+        refused: Refused,
+    },
+    /// A layout was asked for, and the description gives none.
+    NoLayout { path: PathBuf },
     /// The files could not all be written: the path, the OS error, and the
     /// files already replaced (as far as the disk allowed, none).
     Write(WriteError),
@@ -571,7 +693,12 @@ impl fmt::Display for BuildError {
             BuildError::Read { path, error } => {
                 write!(f, "cannot read {}: {error}", path.display())
             }
-            BuildError::Description { rendered, .. } => f.write_str(rendered),
+            BuildError::Description {
+                findings, refused, ..
+            } => f.write_str(&render(findings, *refused, usize::MAX)),
+            BuildError::NoLayout { path } => {
+                write!(f, "{} gives no firmware layout", path.display())
+            }
             BuildError::Write(e) => e.fmt(f),
             BuildError::Schema { dir, why } => {
                 write!(f, "cannot use the PI schema in {}: {why}", dir.display())
@@ -585,7 +712,9 @@ impl std::error::Error for BuildError {
         match self {
             BuildError::Read { error, .. } => Some(error),
             BuildError::Write(e) => Some(e),
-            BuildError::Description { .. } | BuildError::Schema { .. } => None,
+            BuildError::Description { .. }
+            | BuildError::NoLayout { .. }
+            | BuildError::Schema { .. } => None,
         }
     }
 }
@@ -619,6 +748,78 @@ mod tests {
             file_name: file_name.into(),
             contents: contents.as_bytes().to_vec(),
         }
+    }
+
+    /// `m.toml`'s module "PKW + 2 PZD" and `m_pkw.toml`'s "2 PZD" both
+    /// give `m_pkw_pzd2_out_t` in C: different files, but one translation
+    /// unit cannot hold both. The build refuses the pair, naming both; the
+    /// same description twice, or two whose prefixes do not meet, build.
+    #[test]
+    fn c_layouts_whose_names_meet_collide() {
+        let text = include_str!("../descriptions/mv810-pnet02.toml");
+        let files = |name: &str, text: &str| {
+            let ir = crate::testing::load(name, text).0.unwrap();
+            // The C layouts alone: both give one GSDML file name too.
+            let mut files = crate::compile(&ir).unwrap();
+            files.retain(|f| f.kind == ArtifactKind::CHeader);
+            (PathBuf::from(name), files)
+        };
+        let without_pkw = text.replace("module_pkw = \"with\"", "module_pkw = \"without\"");
+        assert_ne!(without_pkw, text);
+        let collisions = merge(vec![
+            files("m.toml", text),
+            files("m_pkw.toml", &without_pkw),
+        ])
+        .unwrap_err();
+        assert_eq!(collisions.len(), 1, "{collisions:?}");
+        let Clash::CNames(names) = &collisions[0].clash else {
+            panic!("{collisions:?}");
+        };
+        assert!(names.iter().any(|n| n == "m_pkw_pzd2_out_t"), "{names:?}");
+        assert!(names
+            .iter()
+            .all(|n| n.to_ascii_lowercase().starts_with("m_pkw_")));
+        let message = collisions[0].to_string();
+        assert!(
+            message.starts_with("m.toml and m_pkw.toml both declare the C names `"),
+            "{message}"
+        );
+        assert!(merge(vec![files("m.toml", text), files("m.toml", text)]).is_ok());
+        assert!(merge(vec![
+            files("m.toml", text),
+            files("n_pkw.toml", &without_pkw)
+        ])
+        .is_ok());
+    }
+
+    /// A build script gets the findings as values: the code and the place
+    /// of each, with the text it points into, as well as their rendering.
+    #[test]
+    fn a_refused_description_gives_its_diagnostics_as_values() {
+        let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let fixture = manifest.join("tests/fixtures/invalid/address_out_of_range.toml");
+        let out = std::env::temp_dir().join(format!("gsdc-build-error-{}", std::process::id()));
+        let error = generate(&fixture, &out).unwrap_err();
+        assert!(!out.exists());
+        let BuildError::Description {
+            findings, refused, ..
+        } = &error
+        else {
+            panic!("{error:?}");
+        };
+        assert_eq!(*refused, Refused::Errors);
+        let description = &findings[0];
+        let e101 = description
+            .diagnostics
+            .iter()
+            .find(|d| d.code == "E101")
+            .unwrap();
+        let span = e101.span.clone().unwrap();
+        let (line, _) = crate::line_col(&description.text, span.start);
+        assert!(description.text.lines().nth(line - 1).is_some());
+        let rendered = error.to_string();
+        assert!(rendered.contains("error[E101]"), "{rendered}");
+        assert!(rendered.ends_with("nothing written: fix the errors above"));
     }
 
     #[test]

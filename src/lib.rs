@@ -26,6 +26,7 @@ mod load;
 mod lower;
 mod pkw;
 pub mod rules;
+mod spec;
 mod spelling;
 mod symbol;
 #[cfg(test)]
@@ -72,7 +73,17 @@ pub fn load_with(
     files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
 ) -> (Option<Ir>, Diagnostics) {
     match load::parse(text) {
-        Ok(desc) => lower::lower(&desc, source_name, text, files),
+        Ok(desc) => lower::lower(&desc, source_name, text, Some(files)),
+        Err(diagnostics) => (None, diagnostics),
+    }
+}
+
+/// [`load`] for the firmware layouts alone: the files the description names
+/// are not read, and the IR has no device symbol (only the device files
+/// carry it), so a firmware crate needs no bitmap beside its description.
+pub(crate) fn load_for_layouts(source_name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
+    match load::parse(text) {
+        Ok(desc) => lower::lower(&desc, source_name, text, None),
         Err(diagnostics) => (None, diagnostics),
     }
 }

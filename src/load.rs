@@ -95,6 +95,8 @@ fn classify(message: &str) -> (&'static str, &'static str, String) {
             "missing key",
             "add the key; docs/description.md shows a complete example".into(),
         )
+    } else if let Some(help) = quoted_date(message) {
+        ("E003", "a string, not a date", help)
     } else if message.starts_with("invalid type")
         || message.starts_with("invalid value")
         || message.starts_with("unknown variant")
@@ -118,6 +120,22 @@ fn classify(message: &str) -> (&'static str, &'static str, String) {
             "the description must be valid TOML (https://toml.io)".into(),
         )
     }
+}
+
+/// The help for a date written as a string (`date = "2026-12-01"`): TOML
+/// writes dates bare. The string is suggested as it is when it is a TOML
+/// date or date-time.
+fn quoted_date(message: &str) -> Option<String> {
+    let quoted = message
+        .strip_prefix("invalid type: string \"")?
+        .strip_suffix("\", expected a TOML datetime")?;
+    let example = match quoted.parse::<toml::value::Datetime>() {
+        Ok(_) => quoted,
+        Err(_) => "2026-12-01",
+    };
+    Some(format!(
+        "remove the quotes: TOML writes a date without them, date = {example} (or a date-time, date = 2026-12-01T07:14:47)"
+    ))
 }
 
 fn first_line(message: &str) -> String {
@@ -153,6 +171,30 @@ mod tests {
             None
         );
         assert_eq!(did_you_mean("missing field `name`"), None);
+    }
+
+    #[test]
+    fn a_quoted_date_is_told_to_lose_its_quotes() {
+        let help = |m| quoted_date(m).unwrap();
+        assert!(
+            help("invalid type: string \"2026-12-01\", expected a TOML datetime").starts_with(
+                "remove the quotes: TOML writes a date without them, date = 2026-12-01 "
+            )
+        );
+        assert!(
+            help("invalid type: string \"2026-12-01T07:14:47\", expected a TOML datetime")
+                .contains("date = 2026-12-01T07:14:47 ")
+        );
+        // Not a date in any form: the example is a date.
+        assert!(
+            help("invalid type: string \"1 Dec\", expected a TOML datetime")
+                .contains("date = 2026-12-01 ")
+        );
+        assert_eq!(
+            quoted_date("invalid type: integer `5`, expected a TOML datetime"),
+            None
+        );
+        assert_eq!(quoted_date("invalid type: string \"x\", expected u8"), None);
     }
 
     #[test]

@@ -108,6 +108,7 @@ pub fn read_device_file(path: &Path) -> Result<(FileKind, Vec<u8>), ReadError> {
     let limit = match kind {
         FileKind::Gsd => &crate::gsd::INPUT_LIMIT,
         FileKind::Gsdml => &crate::gsdml::INPUT_LIMIT,
+        FileKind::Bitmap => &crate::symbol::check::INPUT_LIMIT,
         FileKind::Neither => return Ok((kind, bytes)),
     };
     read_rest(file, known, limit, bytes).map(|bytes| (kind, bytes))
@@ -229,45 +230,43 @@ pub fn write_files(dir: &Path, files: &[Artifact], prune: bool) -> Result<Writte
     write_with(&OsDisk, dir, files, prune)
 }
 
-/// What a directory holds against the files a build would write there.
-#[derive(Debug)]
-#[non_exhaustive]
+/// What `dir/file_name` holds: `None` when it does not exist; an error for
+/// anything but a regular file, which is refused unread.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
-pub struct OnDisk {
-    /// What the directory holds at each file's name, in the order given:
-    /// `None` when nothing; an error for anything but a regular file,
-    /// which is refused unread.
-    pub files: Vec<io::Result<Option<Vec<u8>>>>,
-    /// Its stale files ([`stale_files`]).
-    pub stale: Vec<PathBuf>,
+pub fn existing(dir: &Path, file_name: &str) -> io::Result<Option<Vec<u8>>> {
+    read_target(&dir.join(file_name))
+}
+
+/// A shared lock on a directory, held until it is dropped (closing the
+/// handle unlocks): a build into the directory, which locks it
+/// exclusively, waits until then, and taking it waits for a build at work
+/// to finish. For `--check`, which so reads one build's whole set, and
+/// finds no temporary but a killed build's.
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
+pub struct SharedLock {
+    _handle: Option<fs::File>,
     /// Why the directory could not be locked (a file system without
-    /// locks): temporaries were then left out of `stale`, as they could be
-    /// a build's at work.
+    /// locks): a temporary in it could then be a build's at work.
     pub not_locked: Option<io::Error>,
 }
 
-/// What `dir` holds against `files`, for `gsdc build --check`, read under
-/// a shared lock on `dir`: a build into `dir` at work (which holds it
-/// exclusively) is waited for, so what is read is one build's whole set,
-/// and a temporary found is one no build is at work on.
+/// Locks `dir` shared ([`SharedLock`]); a directory that does not exist
+/// needs no lock.
 #[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
-pub fn on_disk(dir: &Path, files: &[Artifact]) -> io::Result<OnDisk> {
-    // Held until the end of this function: closing the handle unlocks.
+pub fn lock_shared(dir: &Path) -> io::Result<SharedLock> {
     let handle = match fs::File::open(dir) {
-        Ok(handle) => Some(handle),
-        // No directory: every file is missing, and nothing is stale.
-        Err(e) if e.kind() == io::ErrorKind::NotFound => None,
+        Ok(handle) => handle,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Ok(SharedLock {
+                _handle: None,
+                not_locked: None,
+            })
+        }
         Err(e) => return Err(e),
     };
-    let not_locked = handle.as_ref().and_then(|h| h.lock_shared().err());
-    let held = files
-        .iter()
-        .map(|file| read_target(&dir.join(&file.file_name)))
-        .collect();
-    let stale = stale_files(dir, files, not_locked.is_none())?;
-    Ok(OnDisk {
-        files: held,
-        stale,
+    let not_locked = handle.lock_shared().err();
+    Ok(SharedLock {
+        _handle: Some(handle),
         not_locked,
     })
 }
@@ -290,7 +289,8 @@ const HEADER_BYTES: u64 = 1024;
 /// Temporaries only when the caller holds a lock on `dir` (`locked`): a
 /// build at work holds it and its temporaries, so only then is every
 /// temporary one a build left behind.
-fn stale_files(dir: &Path, files: &[Artifact], locked: bool) -> io::Result<Vec<PathBuf>> {
+#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
+pub fn stale_files(dir: &Path, files: &[Artifact], locked: bool) -> io::Result<Vec<PathBuf>> {
     let entries = match fs::read_dir(dir) {
         Ok(entries) => entries,
         Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Vec::new()),
@@ -371,8 +371,15 @@ fn is_generated(path: &Path) -> io::Result<bool> {
     open_regular(path)?
         .take(HEADER_BYTES)
         .read_to_end(&mut head)?;
+    Ok(carries_mark(&head))
+}
+
+/// Whether a file starting with `head` carries [`GENERATED_MARK`] where
+/// gsdc's headers put it, in its first KiB.
+pub fn carries_mark(head: &[u8]) -> bool {
+    let head = &head[..head.len().min(HEADER_BYTES as usize)];
     let mark = GENERATED_MARK.as_bytes();
-    Ok(head.windows(mark.len()).any(|w| w == mark))
+    head.windows(mark.len()).any(|w| w == mark)
 }
 
 /// The name of one of gsdc's temporaries: `.NAME.gsdc-PID-RANDOM.tmp` (and
@@ -918,7 +925,7 @@ mod tests {
         let e = write_files(&dir, &[artifact("A.GSD", b"a")], false).unwrap_err();
         assert_eq!(e.path, dir.join("A.GSD"));
         assert!(e.to_string().contains("not a regular file"), "{e}");
-        assert!(read_target(&dir.join("A.GSD")).is_err());
+        assert!(existing(&dir, "A.GSD").is_err());
         fs::remove_dir_all(dir).unwrap();
     }
 

@@ -8,7 +8,7 @@
 // The support code is written for firmware, which uses all of it; the
 // library uses the parts below, and the Rust emitter's tests all of it
 // (`emit::rust::support_tests`). Loaded here only, once.
-#[allow(dead_code)]
+#[allow(dead_code, unused_imports)]
 #[path = "../templates/support/mod.rs"]
 pub(crate) mod support;
 
@@ -20,6 +20,24 @@ pub(crate) use support::U16Be;
 pub(crate) use support::{pkw_pke_ind_pwe, pkw_profidrive, pkw_station_command};
 #[cfg_attr(not(feature = "cli"), allow(unused_imports))] // the command line uses them
 pub(crate) use support::{BitField, PKW_BYTES};
+
+/// A gateway's diagnosis places as the firmware's codecs take them: where
+/// the block holds the type, the node and the code, and the node numbers.
+/// The datasheet's encoder and the decoder read no types, so none are
+/// listed.
+pub(crate) fn gateway_diag_layout(
+    g: &crate::ir::Gateway,
+    d: &crate::ir::gateway::Diagnosis,
+) -> support::gateway::DiagLayout {
+    support::gateway::DiagLayout {
+        type_at: d.type_at.into(),
+        node_at: d.node_at.into(),
+        code_at: d.code_at.into(),
+        first_node: g.first_node,
+        last_node: g.last_node,
+        types: &[],
+    }
+}
 
 /// The four PKW words at the start of `bytes`, high byte first (words past
 /// the end of a short slice are zero).

@@ -4,7 +4,22 @@
 //! document gives them. E codes are errors, W codes warnings; the document
 //! says what each rule asks and why.
 
-use crate::diag::Severity;
+/// How bad a finding is: a rule's code says it (E, W).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum Severity {
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
 
 /// A rule: its stable code, its severity and its title.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -93,6 +108,8 @@ pub const RULES: &[Rule] = &[
     rule("E153", "standard telegram 1 without PROFIdrive said"),
     rule("E154", "a parameter beyond the PROFIdrive PNUs"),
     rule("E155", "not a function-code prefix or separator"),
+    rule("E156", "function-code widths not both given"),
+    rule("E157", "a per-module setting's PROFIBUS side not said"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),
@@ -165,6 +182,11 @@ pub const RULES: &[Rule] = &[
     rule("E320", "attribute value malformed"),
     rule("E399", "not valid against the PI schema"),
     rule("E400", "neither a GSD nor a GSDML file"),
+    rule("E401", "a device symbol that is not a whole bitmap"),
+    rule(
+        "W402",
+        "a device symbol not of 70 x 40 pixels in 16 colours",
+    ),
     rule("E410", "not a hex digit"),
     rule("E411", "odd number of hex digits"),
     rule("E412", "wrong length"),

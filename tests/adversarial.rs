@@ -7,10 +7,11 @@
 //! Every time bound catches hangs, not slowness: each case takes well under
 //! a second, and [`HANG`] is set for a debug build on a busy 2-core machine.
 
+use crate::support;
 use gsdc::Diagnostics;
 use std::fs::File;
 use std::net::TcpListener;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
@@ -64,14 +65,6 @@ fn big_text() -> &'static str {
     })
 }
 
-/// A fresh directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-adversarial-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// A 200 MB file that costs no disk and no time to make: a hole.
 fn sparse(path: &Path) {
     File::create(path).unwrap().set_len(BIG as u64).unwrap();
@@ -92,7 +85,7 @@ fn gsdc(dir: &Path, args: &[&str]) -> Run {
     let mut child = Command::new("sh")
         .arg("-c")
         .arg("ulimit -d 131072 && exec \"$0\" \"$@\"")
-        .arg(env!("CARGO_BIN_EXE_gsdc"))
+        .arg(support::GSDC)
         .args(args)
         .current_dir(dir)
         .stdout(out.try_clone().unwrap())
@@ -171,21 +164,20 @@ fn a_description_nested_10000_deep_is_e001() {
     ] {
         assert_finds(&load(&text), "E001", "recurs");
     }
-    let dir = scratch("deep-toml");
+    let dir = support::scratch("deep-toml");
     for (name, text) in [
         ("arrays.toml", nested_arrays(10_000)),
         ("tables.toml", nested_tables(10_000)),
     ] {
         assert_rejected(&build_file(&dir, name, text.as_bytes()), "E001");
     }
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn a_200_mb_description_is_e006_unread() {
     assert_finds(&load(big_text()), "E006", "larger than 1 MiB");
 
-    let dir = scratch("big-toml");
+    let dir = support::scratch("big-toml");
     sparse(&dir.join("big.toml"));
     let run = gsdc(&dir, &["build", "big.toml", "--out", "out"]);
     assert_rejected(&run, "E006");
@@ -197,14 +189,13 @@ fn a_200_mb_description_is_e006_unread() {
     // A file with no known size is read up to the limit only.
     assert_rejected(&gsdc(&dir, &["build", "/dev/zero", "--out", "out"]), "E006");
     assert!(!dir.join("out").exists());
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn a_description_with_nul_bytes_or_not_utf8_is_rejected() {
     let nul = b"[device]\nvendor = \"a\0b\"\n";
     assert_finds(&load(std::str::from_utf8(nul).unwrap()), "E001", "");
-    let dir = scratch("nul-toml");
+    let dir = support::scratch("nul-toml");
     assert_rejected(&build_file(&dir, "nul.toml", nul), "E001");
 
     std::fs::write(
@@ -215,7 +206,6 @@ fn a_description_with_nul_bytes_or_not_utf8_is_rejected() {
     let e = gsdc::build::generate(dir.join("latin1.toml"), dir.join("out")).unwrap_err();
     assert!(e.to_string().contains("error[E000]"), "{e}");
     assert!(e.to_string().contains("latin1.toml:2:12"), "{e}");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 // GSDML (XML).
@@ -247,12 +237,11 @@ fn gsdml(body: &str) -> String {
 #[test]
 fn entity_expansion_is_refused_with_the_dtd() {
     assert_finds(&check_gsdml(BILLION_LAUGHS.as_bytes()), "E300", "DTD");
-    let dir = scratch("laughs");
+    let dir = support::scratch("laughs");
     assert_rejected(
         &check_file(&dir, "laughs.xml", BILLION_LAUGHS.as_bytes()),
         "E300",
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// External entities and DTDs are neither resolved nor fetched: a listener
@@ -270,7 +259,7 @@ fn external_entities_and_dtds_are_never_fetched() {
         "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY xxe SYSTEM \"file:///etc/passwd\"><!ENTITY web SYSTEM \"{url}\">]>\n{}",
         gsdml("&xxe;&web;")
     );
-    let dir = scratch("external");
+    let dir = support::scratch("external");
     for (name, text) in [("dtd.xml", &external_dtd), ("entity.xml", &external_entity)] {
         assert_finds(&check_gsdml(text.as_bytes()), "E300", "DTD");
         let run = check_file(&dir, name, text.as_bytes());
@@ -282,7 +271,6 @@ fn external_entities_and_dtds_are_never_fetched() {
         std::io::ErrorKind::WouldBlock,
         "gsdc connected to the URL of an external DTD or entity"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
@@ -297,9 +285,8 @@ fn xml_nested_10000_deep_is_e300() {
         "E300",
         "nest deeper than 256",
     );
-    let dir = scratch("deep-xml");
+    let dir = support::scratch("deep-xml");
     assert_rejected(&check_file(&dir, "deep.xml", deep.as_bytes()), "E300");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// roxmltree's checks for duplicate attributes and for namespaces are
@@ -323,12 +310,11 @@ fn xml_with_floods_of_attributes_or_namespaces_is_e300() {
         "E300",
         "more than 64 XML namespaces",
     );
-    let dir = scratch("namespaces");
+    let dir = support::scratch("namespaces");
     assert_rejected(
         &check_file(&dir, "namespaces.xml", many_namespaces.as_bytes()),
         "E300",
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// 16 MiB of empty elements took roxmltree 500 MB and 2 s (debug) before
@@ -338,7 +324,7 @@ fn xml_with_floods_of_attributes_or_namespaces_is_e300() {
 fn xml_with_millions_of_empty_elements_is_e300_before_the_tree() {
     let empty = gsdml(&"<a/>".repeat(4_000_000));
     assert!(empty.len() < 16 << 20);
-    let dir = scratch("empty-elements");
+    let dir = support::scratch("empty-elements");
     let run = check_file(&dir, "empty.xml", empty.as_bytes());
     assert_rejected(&run, "E300");
     assert!(
@@ -346,7 +332,6 @@ fn xml_with_millions_of_empty_elements_is_e300_before_the_tree() {
         "{}",
         run.output
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
@@ -369,10 +354,9 @@ fn xml_with_nul_bytes_or_not_utf8_is_e300() {
         .map(|b| if b == b'~' { 0xFF } else { b })
         .collect();
     assert_finds(&check_gsdml(&not_utf8), "E300", "not valid UTF-8");
-    let dir = scratch("nul-xml");
+    let dir = support::scratch("nul-xml");
     assert_rejected(&check_file(&dir, "nul.xml", nul.as_bytes()), "E300");
     assert_rejected(&check_file(&dir, "latin1.xml", &not_utf8), "E300");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 // GSD.
@@ -397,10 +381,9 @@ fn a_gsd_line_of_1_mb_gives_a_finding_per_bad_identifier() {
         diagnostics.iter().any(|d| d.code == "W209"),
         "{diagnostics:?}"
     );
-    let dir = scratch("long-line");
+    let dir = support::scratch("long-line");
     assert_rejected(&check_file(&dir, "long.gsd", text.as_bytes()), "E201");
     assert_rejected(&check_file(&dir, "string.gsd", string.as_bytes()), "E206");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// 100 000 modules, each with a malformed config: a finding per module.
@@ -415,9 +398,8 @@ fn a_gsd_with_100000_modules_gives_a_finding_per_module() {
         diagnostics.errors().filter(|d| d.code == "E201").count(),
         100_000
     );
-    let dir = scratch("modules");
+    let dir = support::scratch("modules");
     assert_rejected(&check_file(&dir, "modules.gsd", text.as_bytes()), "E201");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
@@ -434,9 +416,8 @@ fn a_gsd_with_nul_bytes_is_e230_once() {
         .contains("NUL byte in the file (10000 more after it)"));
     let at = text.find('\0').unwrap();
     assert_eq!(nul[0].span, Some(at..at + 1));
-    let dir = scratch("nul-gsd");
+    let dir = support::scratch("nul-gsd");
     assert_rejected(&check_file(&dir, "nul.gsd", text.as_bytes()), "E230");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// Bytes that are not UTF-8 are read as Latin-1, as vendors' files need;
@@ -457,11 +438,10 @@ fn binary_garbage_as_a_gsd_is_e200_and_e230_and_neither_to_check() {
     let diagnostics = check_gsd(&garbage);
     assert_finds(&diagnostics, "E200", "#Profibus_DP");
     assert!(diagnostics.iter().any(|d| d.code == "E230"));
-    let dir = scratch("garbage");
+    let dir = support::scratch("garbage");
     let run = check_file(&dir, "garbage.gsd", &garbage);
     assert_rejected(&run, "E400");
     assert_eq!(run.output.lines().count(), 1, "{}", run.output);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
@@ -484,7 +464,7 @@ fn sparse_after(path: &Path, head: &[u8]) {
 /// read to tell (the CLI runs with 128 MiB of data here).
 #[test]
 fn check_refuses_200_mb_files_unread() {
-    let dir = scratch("big-check");
+    let dir = support::scratch("big-check");
     sparse_after(&dir.join("big.txt"), b"#Profibus_DP\r\n");
     sparse_after(&dir.join("big.gsd"), b"<?xml version=\"1.0\"?>\n");
     sparse(&dir.join("zeros.xml"));
@@ -493,5 +473,4 @@ fn check_refuses_200_mb_files_unread() {
     for neither in ["zeros.xml", "/dev/zero", "/dev/urandom"] {
         assert_rejected(&gsdc(&dir, &["check", neither]), "E400");
     }
-    std::fs::remove_dir_all(dir).unwrap();
 }

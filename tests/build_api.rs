@@ -2,44 +2,30 @@
 //! its options (deny warnings, the PI schema), and an error that says what
 //! went wrong in a form a program can match.
 
-#[path = "common/refusing_xsd.rs"]
-mod refusing_xsd;
-
+use crate::support::xsd::{pi_schema, refusing_schema};
+use crate::support::{self, stderr};
 use gsdc::build::{BuildError, Config};
-use refusing_xsd::refusing_schema;
 use std::error::Error;
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
+use std::path::PathBuf;
 
 fn description(name: &str) -> PathBuf {
-    Path::new(MANIFEST).join("descriptions").join(name)
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-build-api-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn pi_schema() -> PathBuf {
-    Path::new(MANIFEST).join("../shared/reference/gsdml-xsd-v2.44")
+    support::checkout("descriptions").join(name)
 }
 
 #[test]
 fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
-    let out = scratch("deny");
+    let out = support::scratch("deny");
     let md810 = description("md810dp.toml");
     let e = Config::new()
         .deny_warnings(true)
         .generate(&md810, &out)
         .unwrap_err();
-    let BuildError::Description { path, rendered } = &e else {
+    let BuildError::Description { path, findings, .. } = &e else {
         panic!("{e:?}");
     };
     assert_eq!(path, &md810);
+    assert!(findings[0].diagnostics.iter().any(|d| d.code == "W101"));
+    let rendered = e.to_string();
     assert!(rendered.contains("warning[W101]"), "{rendered}");
     let text = std::fs::read_to_string(&md810).unwrap();
     let line = 1 + text[..text.find("ident_number = {").unwrap()]
@@ -60,12 +46,11 @@ fn deny_warnings_refuses_the_placeholders_with_their_diagnostics() {
         "device files, their symbols, both layouts and their support files"
     );
     assert!(paths.iter().all(|p| p.is_file()));
-    std::fs::remove_dir_all(out).unwrap();
 }
 
 #[test]
 fn errors_say_which_file_and_what_went_wrong() {
-    let dir = scratch("errors");
+    let dir = support::scratch("errors");
     let missing = dir.join("missing.toml");
     match gsdc::build::generate(&missing, &dir) {
         Err(BuildError::Read { path, error }) => {
@@ -90,14 +75,14 @@ fn errors_say_which_file_and_what_went_wrong() {
         other => panic!("{other:?}"),
     }
 
-    let invalid = Path::new(MANIFEST).join("tests/fixtures/invalid/unknown_ppo.toml");
-    match gsdc::build::generate_rust(&invalid, &dir) {
-        Err(BuildError::Description { path, rendered }) => {
-            assert_eq!(path, invalid);
-            assert!(rendered.contains("error[E104]"), "{rendered}");
-        }
-        other => panic!("{other:?}"),
-    }
+    let invalid = support::checkout("tests/fixtures/invalid/unknown_ppo.toml");
+    let e = gsdc::build::generate_rust(&invalid, &dir).unwrap_err();
+    let BuildError::Description { path, findings, .. } = &e else {
+        panic!("{e:?}");
+    };
+    assert_eq!(path, &invalid);
+    assert!(findings[0].diagnostics.iter().any(|d| d.code == "E104"));
+    assert!(e.to_string().contains("error[E104]"), "{e}");
 
     let no_schema = Config::new()
         .xsd(dir.join("no-schema"))
@@ -106,24 +91,22 @@ fn errors_say_which_file_and_what_went_wrong() {
         matches!(&no_schema, Err(BuildError::Schema { dir: d, .. }) if *d == dir.join("no-schema")),
         "{no_schema:?}"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// One pipeline: the build script's error holds, line for line, the
 /// diagnostics `gsdc build` prints for the same description.
 #[test]
 fn the_build_script_reports_what_gsdc_build_reports() {
-    let invalid = Path::new(MANIFEST).join("tests/fixtures/invalid/unknown_ppo.toml");
-    let dir = scratch("same");
-    let cli = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("build")
+    let invalid = support::checkout("tests/fixtures/invalid/unknown_ppo.toml");
+    let dir = support::scratch("same");
+    let cli = support::gsdc_command(["build"])
         .arg(&invalid)
         .arg("--out")
         .arg(&dir)
         .output()
         .unwrap();
     assert_eq!(cli.status.code(), Some(1));
-    let printed = String::from_utf8(cli.stderr).unwrap();
+    let printed = stderr(&cli);
     let from_cli: Vec<&str> = printed
         .lines()
         .filter(|l| !l.is_empty() && !l.starts_with("nothing written"))
@@ -136,14 +119,13 @@ fn the_build_script_reports_what_gsdc_build_reports() {
         .collect();
     assert!(from_cli.len() > 5, "{printed}");
     assert_eq!(from_api, from_cli);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A build script's `generate` with a schema the GSDML breaks writes
 /// nothing; `generate_rust` writes no GSDML, so validates none.
 #[test]
 fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
-    let dir = scratch("schema");
+    let dir = support::scratch("schema");
     let refusing = refusing_schema(&dir);
     let out = dir.join("out");
     let mv810 = description("mv810-pnet02.toml");
@@ -173,5 +155,4 @@ fn a_build_script_with_a_schema_refuses_the_gsdml_but_not_the_layout() {
         6,
         "the GSDML, its symbol, both layouts and their support files"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }

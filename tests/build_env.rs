@@ -1,19 +1,17 @@
 //! `GSDC_BUILD_XSD` reaches build scripts: `gsdc::build::generate` and
-//! `Config::new` take the PI schema directory it names. A test binary of
-//! its own, as the variable is the whole process's.
+//! `Config::new` take the PI schema directory it names. The variable is
+//! the whole process's, so the test runs in a process of its own.
 
-#[path = "common/refusing_xsd.rs"]
-mod refusing_xsd;
-
-use refusing_xsd::refusing_schema;
-use std::path::Path;
+use crate::support::{self, xsd::refusing_schema};
 
 #[test]
 fn the_environment_variable_names_the_schema_of_every_build() {
-    let dir = std::env::temp_dir().join(format!("gsdc-build-env-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    if support::ran_in_own_process() {
+        return;
+    }
+    let dir = support::scratch("env");
     let refusing = refusing_schema(&dir);
-    let mv810 = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/mv810-pnet02.toml");
+    let mv810 = support::checkout("descriptions/mv810-pnet02.toml");
     let out = dir.join("out");
 
     std::env::set_var(gsdc::build::XSD_ENV, &refusing);
@@ -36,5 +34,4 @@ fn the_environment_variable_names_the_schema_of_every_build() {
         "empty is unset: the GSDML, its symbol, two layouts, two support files"
     );
     std::env::remove_var(gsdc::build::XSD_ENV);
-    std::fs::remove_dir_all(dir).unwrap();
 }

@@ -1,24 +1,20 @@
-//! The C layouts gsdc writes for the shipped descriptions: snapshots
-//! reviewed line by line against the Rust layouts and the manuals; all of
-//! them compiled in one translation unit with gcc, and with clang where it
-//! is installed, as C99, C11 and C++17 with every warning an error; and the
-//! C programs `tests/c/manuals.c`, which round-trips the manuals' telegrams,
-//! and `tests/c/support.c`, which tests the support header at its edges,
-//! compiled the same ways and run.
+//! The C layouts gsdc writes for the shipped descriptions (their
+//! snapshots, reviewed line by line against the Rust layouts and the
+//! manuals, are in outputs.rs): all of them compiled in one translation
+//! unit with gcc and clang as C99, C11 and C++17 with every warning an
+//! error; and the C programs `tests/c/manuals.c`, which round-trips the
+//! manuals' telegrams, and `tests/c/support.c`, which tests the support
+//! header at its edges, compiled the same ways and run.
 //!
 //! gcc and g++ must be installed (`./scripts/test.sh` installs them and
-//! clang): without them these tests fail, they do not skip.
+//! clang): without them these tests fail, they do not skip. Without clang
+//! they leave its builds out, and fail under CI.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-use descriptions::load;
-
+use crate::support::descriptions::{self, load};
+use crate::support::{self, Scratch};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use std::sync::OnceLock;
-
-use descriptions::SHIPPED as DESCRIPTIONS;
 
 /// Every warning a firmware team is likely to turn on, each an error.
 const WARNINGS: [&str; 9] = [
@@ -87,14 +83,9 @@ const BUILDS: [Build; 6] = [
 ];
 
 /// The builds whose compiler is installed. gcc and g++ must be; clang is
-/// used where it is.
+/// used where it is, and must be under CI.
 fn builds() -> Vec<&'static Build> {
-    let installed = |compiler: &str| {
-        Command::new(compiler)
-            .arg("--version")
-            .output()
-            .is_ok_and(|o| o.status.success())
-    };
+    let installed = |compiler: &str| support::succeeds(Command::new(compiler).arg("--version"));
     let mut builds = Vec::new();
     for build in &BUILDS {
         if installed(build.compiler) {
@@ -105,7 +96,10 @@ fn builds() -> Vec<&'static Build> {
                 build.compiler
             );
         } else {
-            eprintln!("{} is not installed: not compiled with it", build.compiler);
+            support::cannot_run(&format!(
+                "{} is not installed: not compiled with it",
+                build.compiler
+            ));
         }
     }
     builds
@@ -117,58 +111,38 @@ fn artifacts(name: &str) -> Vec<Artifact> {
 
 /// The text of the one artifact of `kind` that `name` gives.
 fn artifact(name: &str, kind: ArtifactKind) -> (String, String) {
-    let mut found = artifacts(name).into_iter().filter(|a| a.kind == kind);
-    let artifact = found
-        .next()
-        .unwrap_or_else(|| panic!("{name}: no {kind:?}"));
-    assert!(found.next().is_none(), "{name}: two {kind:?}");
-    (
-        artifact.file_name,
-        String::from_utf8(artifact.contents).unwrap(),
-    )
+    descriptions::one(artifacts(name), kind)
 }
 
 fn header(name: &str) -> String {
     artifact(name, ArtifactKind::CHeader).1
 }
 
-/// A directory of this test's own under the target directory, emptied.
-fn scratch_dir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("c-header")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+/// Every shipped description's C layout, the PROFIdrive fixture's, and the
+/// support header, written as `gsdc build` writes them into a scratch
+/// directory `<test>-include`.
+fn include_dir(test: &str) -> Scratch {
+    let dir = support::scratch(&format!("{test}-include"));
+    let fixture = gsdc::compile(&descriptions::load_from(
+        "tests/fixtures/valid",
+        "profidrive.toml",
+    ))
+    .unwrap();
+    let shipped = descriptions::shipped()
+        .into_iter()
+        .map(|name| artifacts(&name));
+    for artifacts in shipped.chain([fixture]) {
+        for a in artifacts {
+            if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
+                std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
+            }
+        }
+    }
     dir
 }
 
-/// Every description's C layout, the PROFIdrive fixture's, and the support
-/// header, written once for all tests of this file, as `gsdc build` writes
-/// them.
-fn include_dir() -> &'static Path {
-    static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
-        let dir = scratch_dir("include");
-        let fixture = gsdc::compile(&descriptions::load_from(
-            "tests/fixtures/valid",
-            "profidrive.toml",
-        ))
-        .unwrap();
-        for artifacts in DESCRIPTIONS.map(artifacts).into_iter().chain([fixture]) {
-            for a in artifacts {
-                if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
-                    std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
-                }
-            }
-        }
-        dir
-    })
-}
-
 fn c_source(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/c")
-        .join(name)
+    support::checkout("tests/c").join(name)
 }
 
 fn run(mut command: Command) -> Output {
@@ -187,33 +161,14 @@ fn assert_success(what: &str, output: &Output) {
     );
 }
 
-#[test]
-fn md810dp_layout_snapshot() {
-    insta::assert_snapshot!("md810dp_layout.h", header("md810dp.toml"));
-}
-
-#[test]
-fn mv810_pnet02_layout_snapshot() {
-    insta::assert_snapshot!("mv810_pnet02_layout.h", header("mv810-pnet02.toml"));
-}
-
-#[test]
-fn powtran_9kdp1_layout_snapshot() {
-    insta::assert_snapshot!("9kdp1_layout.h", header("9kdp1.toml"));
-}
-
-#[test]
-fn md810_gateway_layout_snapshot() {
-    insta::assert_snapshot!("md810_gateway_layout.h", header("md810-gateway.toml"));
-}
-
 /// The support header is the same for every description, so a build of
 /// several writes one.
 #[test]
 fn every_description_gives_the_same_support_header() {
-    let support = artifact(DESCRIPTIONS[0], ArtifactKind::CSupport);
+    let shipped = descriptions::shipped();
+    let support = artifact(&shipped[0], ArtifactKind::CSupport);
     assert_eq!(support.0, "gsdc_support.h");
-    for name in &DESCRIPTIONS[1..] {
+    for name in &shipped[1..] {
         assert_eq!(artifact(name, ArtifactKind::CSupport), support, "{name}");
     }
 }
@@ -223,7 +178,8 @@ fn every_description_gives_the_same_support_header() {
 /// line past 100 columns.
 #[test]
 fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
-    let support = artifact(DESCRIPTIONS[0], ArtifactKind::CSupport).1;
+    let shipped = descriptions::shipped();
+    let support = artifact(&shipped[0], ArtifactKind::CSupport).1;
     let includes = |text: &str| -> Vec<String> {
         text.lines()
             .filter(|l| l.starts_with("#include"))
@@ -238,7 +194,7 @@ fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
             "#include <stdint.h>"
         ]
     );
-    for name in DESCRIPTIONS {
+    for name in &shipped {
         let text = header(name);
         assert_eq!(includes(&text), ["#include \"gsdc_support.h\""], "{name}");
         for text in [&text, &support] {
@@ -270,10 +226,10 @@ fn headers_hold_wire_data_in_byte_arrays_and_include_only_standard_headers() {
 /// every installed compiler as C99, C11 and C++17 without a warning.
 #[test]
 fn all_layouts_compile_together_in_one_translation_unit() {
-    let include = include_dir();
-    let out = scratch_dir("all-layouts");
+    let include = include_dir("all-layouts");
+    let out = support::scratch("all-layouts");
     for (i, build) in builds().into_iter().enumerate() {
-        let mut command = build.command(include, &["-ffreestanding", "-c"]);
+        let mut command = build.command(&include, &["-ffreestanding", "-c"]);
         command
             .arg(c_source("all_layouts.c"))
             .arg("-o")
@@ -412,11 +368,11 @@ fn the_support_header_holds_at_its_edges() {
 /// Compiles `tests/c/<source>` with every installed compiler as C and as
 /// C++, runs it, and checks that it ran `tests`, in order, all passing.
 fn compile_and_run(source: &str, defines: &[String], tests: &[&str]) {
-    let include = include_dir();
-    let out = scratch_dir(source);
+    let include = include_dir(source);
+    let out = support::scratch(source);
     for (i, build) in builds().into_iter().enumerate() {
         let program = out.join(format!("program_{i}"));
-        let mut command = build.command(include, &[]);
+        let mut command = build.command(&include, &[]);
         command
             .args(defines)
             .arg(c_source(source))
@@ -442,8 +398,8 @@ fn compile_and_run(source: &str, defines: &[String], tests: &[&str]) {
 /// right size compiles.
 #[test]
 fn a_size_check_that_fails_stops_the_compilation() {
-    let include = include_dir();
-    let dir = scratch_dir("size-check");
+    let include = include_dir("size-check");
+    let dir = support::scratch("size-check");
     let source = |bytes: u32| {
         let path = dir.join(format!("ppo5_{bytes}.c"));
         std::fs::write(
@@ -459,7 +415,7 @@ fn a_size_check_that_fails_stops_the_compilation() {
     let (right, wrong) = (source(32), source(31));
     for build in builds() {
         let compile = |path: &Path| {
-            let mut command = build.command(include, &["-c", "-o"]);
+            let mut command = build.command(&include, &["-c", "-o"]);
             command.arg(dir.join("check.o")).arg(path);
             run(command)
         };
@@ -479,11 +435,7 @@ fn a_size_check_that_fails_stops_the_compilation() {
 /// together: the layout says which support it needs.
 #[test]
 fn a_layout_refuses_the_support_header_of_another_release() {
-    let dir = scratch_dir("other-release");
-    for entry in std::fs::read_dir(include_dir()).unwrap() {
-        let path = entry.unwrap().path();
-        std::fs::copy(&path, dir.join(path.file_name().unwrap())).unwrap();
-    }
+    let dir = include_dir("other-release");
     let support = dir.join("gsdc_support.h");
     let text = std::fs::read_to_string(&support).unwrap();
     let ours = text
@@ -510,8 +462,8 @@ fn a_layout_refuses_the_support_header_of_another_release() {
 /// nothing else.
 #[test]
 fn generate_c_writes_the_layout_and_its_support_header() {
-    let dir = scratch_dir("generate-c");
-    let description = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/md810dp.toml");
+    let dir = support::scratch("generate-c");
+    let description = support::checkout("descriptions/md810dp.toml");
     let layout = gsdc::build::generate_c(&description, &dir).unwrap();
     assert_eq!(layout, dir.join("md810dp_layout.h"));
     let mut written: Vec<String> = std::fs::read_dir(&dir)
@@ -557,7 +509,7 @@ slave_family = "1"
 "#;
     let (ir, diagnostics) = gsdc::load("bare.toml", text);
     assert!(!diagnostics.has_errors(), "{diagnostics:?}");
-    let dir = scratch_dir("bare");
+    let dir = support::scratch("bare");
     for a in gsdc::compile(&ir.unwrap()).unwrap() {
         if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
             std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
@@ -595,7 +547,7 @@ fn a_gateway_with_dpv1_bit_areas_and_a_16_bit_count_round_trips() {
         .replacen("type = \"Unsigned8\"", "bits = [4, 7]", 1);
     let (ir, diagnostics) = descriptions::load_text("gw_variant.toml", &text);
     assert!(!diagnostics.has_errors(), "{diagnostics:?}");
-    let dir = scratch_dir("gateway-variant");
+    let dir = support::scratch("gateway-variant");
     for a in gsdc::compile(&ir.unwrap()).unwrap() {
         if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
             std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();

@@ -2,45 +2,16 @@
 //! their content, streams, UTF-16, names that would fake output, and
 //! findings printed as each file is done.
 
+use crate::support::{self, gsdc, gsdc_command, stderr, stdout};
 use std::io::{BufRead, BufReader, Write};
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::path::Path;
+use std::process::{Command, Stdio};
 
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
-const PI_SCHEMA: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../shared/reference/gsdml-xsd-v2.44"
-);
 const MV810_GSDML: &str = "GSDML-V2.32-MEGMEET-MV800-20230830.xml";
-
-fn gsdc() -> Command {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_gsdc"));
-    command.current_dir(MANIFEST);
-    command
-}
-
-fn run(args: &[&str]) -> Output {
-    gsdc().args(args).output().unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-check-files-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// The files `gsdc build` writes for `description` into `dir`.
 fn built(description: &str, dir: &Path) {
-    let output = run(&["build", description, "--out", dir.to_str().unwrap()]);
+    let output = gsdc(["build", description, "--out", dir.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
 }
 
@@ -51,11 +22,12 @@ fn utf16le_with_mark(text: &str) -> Vec<u8> {
 }
 
 /// `gsdc check dist/*`: the GSD and the GSDML are checked whatever their
-/// names; the firmware layout beside them is one line, E400, not 723
-/// findings of a GSD check; so is a file of zeros named `.xml`.
+/// names; the firmware layout beside them is one line, a note that gsdc made
+/// it, not 723 findings of a GSD check; a file of zeros named `.xml` is one
+/// line too, E400.
 #[test]
 fn files_are_told_apart_by_their_content() {
-    let dir = scratch("kinds");
+    let dir = support::scratch("kinds");
     built("descriptions/md810dp.toml", &dir);
     std::fs::rename(dir.join("MD810DP.GSD"), dir.join("gsd.txt")).unwrap();
     std::fs::rename(
@@ -71,7 +43,7 @@ fn files_are_told_apart_by_their_content() {
         path("md810dp_layout.rs"),
         path("zeros.xml"),
     );
-    let output = run(&["check", &gsd, &gsdml, &layout, &zeros]);
+    let output = gsdc(["check", &gsd, &gsdml, &layout, &zeros]);
     assert_eq!(output.status.code(), Some(1));
     let lines: Vec<String> = stdout(&output).lines().map(str::to_string).collect();
     let neither = |name: &str| {
@@ -88,9 +60,11 @@ fn files_are_told_apart_by_their_content() {
         lines[lines.len() - 3],
         format!("{gsdml}: 1 error(s), 0 warning(s)")
     );
-    assert_eq!(lines[lines.len() - 2], neither(&layout));
+    assert_eq!(
+        lines[lines.len() - 2],
+        format!("note: {layout} is made by gsdc (a firmware layout, support file or datasheet), not a device file: skipped")
+    );
     assert_eq!(lines[lines.len() - 1], neither(&zeros));
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A file through a pipe: `/dev/stdin` is read once, as GSDML or GSD by
@@ -98,11 +72,10 @@ fn files_are_told_apart_by_their_content() {
 /// the PI schema from the text, as a file from disk is.
 #[test]
 fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
-    let dir = scratch("stdin");
+    let dir = support::scratch("stdin");
     built("descriptions/mv810-pnet02.toml", &dir);
     let from_stdin = |bytes: &[u8], extra: &[&str]| {
-        let mut child = gsdc()
-            .arg("check")
+        let mut child = gsdc_command(["check"])
             .args(extra)
             .arg("/dev/stdin")
             .stdin(Stdio::piped())
@@ -114,7 +87,9 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
         child.wait_with_output().unwrap()
     };
     let gsdml = std::fs::read(dir.join(MV810_GSDML)).unwrap();
-    for extra in [&[][..], &["--xsd", PI_SCHEMA][..]] {
+    let pi_schema = support::xsd::pi_schema();
+    let pi_schema = pi_schema.to_str().unwrap();
+    for extra in [&[][..], &["--xsd", pi_schema][..]] {
         let output = from_stdin(&gsdml, extra);
         assert_eq!(output.status.code(), Some(0), "{}", stdout(&output));
         assert_eq!(stdout(&output), "/dev/stdin: 0 error(s), 0 warning(s)\n");
@@ -125,7 +100,7 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
         "DataType=\"UInt16\"",
         1,
     );
-    let output = from_stdin(broken.as_bytes(), &["--xsd", PI_SCHEMA]);
+    let output = from_stdin(broken.as_bytes(), &["--xsd", pi_schema]);
     assert_eq!(output.status.code(), Some(1));
     let said = stdout(&output);
     assert!(
@@ -133,9 +108,7 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
         "{said}"
     );
 
-    let gsd =
-        std::fs::read(MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_modular.gsd")
-            .unwrap();
+    let gsd = support::corpus_file("gsd/mbuesch__dummy_modular.gsd");
     let output = from_stdin(&gsd, &[]);
     assert_eq!(output.status.code(), Some(1));
     assert!(
@@ -143,7 +116,6 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
         "{}",
         stdout(&output)
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A GSDML saved as UTF-16 that declares it, which xmllint validates, is
@@ -151,7 +123,7 @@ fn a_device_file_given_through_dev_stdin_is_checked_by_its_content() {
 /// a GSD saved as UTF-16 is one finding that says so.
 #[test]
 fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
-    let dir = scratch("utf16");
+    let dir = support::scratch("utf16");
     built("descriptions/mv810-pnet02.toml", &dir);
     let text = std::fs::read_to_string(dir.join(MV810_GSDML)).unwrap();
     let declared = text.replacen("encoding=\"utf-8\"", "encoding=\"UTF-16\"", 1);
@@ -159,9 +131,10 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
     let wide = dir.join("utf16").join(MV810_GSDML);
     std::fs::create_dir_all(wide.parent().unwrap()).unwrap();
     std::fs::write(&wide, utf16le_with_mark(&declared)).unwrap();
+    let pi_schema = support::xsd::pi_schema();
     let xmllint = Command::new("xmllint")
         .args(["--noout", "--schema"])
-        .arg(format!("{PI_SCHEMA}/GSDML-DeviceProfile-v2.44.xsd"))
+        .arg(pi_schema.join("GSDML-DeviceProfile-v2.44.xsd"))
         .arg(&wide)
         .output()
         .unwrap();
@@ -169,30 +142,28 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
     let wide_arg = wide.to_str().unwrap();
     for args in [
         vec!["check", wide_arg],
-        vec!["check", "--xsd", PI_SCHEMA, wide_arg],
+        vec!["check", "--xsd", pi_schema.to_str().unwrap(), wide_arg],
     ] {
-        let output = run(&args);
+        let output = gsdc(&args);
         assert_eq!(output.status.code(), Some(0), "{}", stdout(&output));
         assert!(stdout(&output).ends_with(": 0 error(s), 0 warning(s)\n"));
     }
     let piped = Command::new("sh")
         .arg("-c")
         .arg("\"$0\" check --xsd \"$1\" /dev/stdin < \"$2\"")
-        .arg(env!("CARGO_BIN_EXE_gsdc"))
-        .arg(PI_SCHEMA)
+        .arg(support::GSDC)
+        .arg(&pi_schema)
         .arg(&wide)
         .output()
         .unwrap();
     assert_eq!(piped.status.code(), Some(0), "{}", stdout(&piped));
 
     // A Latin-1 file: its text, as UTF-16.
-    let bytes =
-        std::fs::read(MANIFEST.to_string() + "/../shared/corpus/gsd/ivangre4__SIEM8045.gse")
-            .unwrap();
+    let bytes = support::corpus_file("gsd/ivangre4__SIEM8045.gse");
     let gsd = gsdc::gsd::decode(&bytes).into_owned();
     let wide_gsd = dir.join("SIEM8045.GSE");
     std::fs::write(&wide_gsd, utf16le_with_mark(&gsd)).unwrap();
-    let output = run(&["check", wide_gsd.to_str().unwrap()]);
+    let output = gsdc(["check", wide_gsd.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     let said = stdout(&output);
     assert_eq!(said.matches("error[").count(), 1, "{said}");
@@ -201,7 +172,6 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
         "{said}"
     );
     assert!(said.contains("1 error(s), 0 warning(s)"), "{said}");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A file's findings are printed as soon as it and the files before it are
@@ -209,13 +179,12 @@ fn utf16_gsdml_is_read_and_a_utf16_gsd_is_one_finding() {
 /// second, a FIFO nobody has written yet.
 #[test]
 fn findings_are_printed_as_each_file_is_done() {
-    let dir = scratch("streaming");
+    let dir = support::scratch("streaming");
     let fifo = dir.join("later.gsd");
     let made = Command::new("mkfifo").arg(&fifo).status().unwrap();
     assert!(made.success());
     let first = "../shared/corpus/gsd/ivangre4__SIEM8045.gse";
-    let mut child = gsdc()
-        .arg("check")
+    let mut child = gsdc_command(["check"])
         .arg(first)
         .arg(&fifo)
         .stdout(Stdio::piped())
@@ -237,7 +206,7 @@ fn findings_are_printed_as_each_file_is_done() {
         "gsdc ended: {printed:?}"
     );
     // Only now the second file gets its content, and gsdc its end.
-    let gsd = std::fs::read(MANIFEST.to_string() + "/" + first).unwrap();
+    let gsd = std::fs::read(support::checkout(first)).unwrap();
     std::fs::write(&fifo, gsd).unwrap();
     let rest: Vec<String> = lines.map(Result::unwrap).collect();
     assert!(child.wait().unwrap().success());
@@ -245,7 +214,6 @@ fn findings_are_printed_as_each_file_is_done() {
         rest.last().unwrap(),
         &format!("{}: 0 error(s), 0 warning(s)", fifo.display())
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A file name with a line end and an escape sequence in it cannot print a
@@ -253,15 +221,15 @@ fn findings_are_printed_as_each_file_is_done() {
 /// as the JSON output does.
 #[test]
 fn control_characters_in_file_names_are_escaped() {
-    let dir = scratch("names");
+    let dir = support::scratch("names");
     let fake = "x.gsd\nall.gsd: 0 error(s), 0 warning(s)\u{1b}[2K";
     let path = dir.join(fake);
-    std::fs::copy(
-        MANIFEST.to_string() + "/../shared/corpus/gsd/mbuesch__dummy_modular.gsd",
+    std::fs::write(
         &path,
+        support::corpus_file("gsd/mbuesch__dummy_modular.gsd"),
     )
     .unwrap();
-    let output = run(&["check", path.to_str().unwrap()]);
+    let output = gsdc(["check", path.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(1));
     let said = stdout(&output);
     assert!(
@@ -282,13 +250,13 @@ fn control_characters_in_file_names_are_escaped() {
         "{said}"
     );
 
-    let json = run(&["check", "--format", "json", path.to_str().unwrap()]);
+    let json = gsdc(["check", "--format", "json", path.to_str().unwrap()]);
     let last: serde_json::Value =
         serde_json::from_str(stdout(&json).lines().last().unwrap()).unwrap();
     assert_eq!(last["file"], path.to_str().unwrap(), "JSON keeps the name");
 
     let missing = dir.join("gone\n.gsd");
-    let output = run(&["check", missing.to_str().unwrap()]);
+    let output = gsdc(["check", missing.to_str().unwrap()]);
     assert_eq!(output.status.code(), Some(2));
     assert_eq!(stderr(&output).lines().count(), 1, "{}", stderr(&output));
     assert!(
@@ -296,5 +264,4 @@ fn control_characters_in_file_names_are_escaped() {
         "{}",
         stderr(&output)
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }

@@ -1,14 +1,12 @@
 //! What `gsdc check` says about a handful of real vendor files, rendered as
-//! a user sees it. Each snapshot was read against the file it is about.
+//! a user sees it (`tests/snapshots/check/`). Each snapshot was read
+//! against the file it is about.
 
+use crate::support;
 use gsdc::Source;
 
-const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
-
 fn findings(folder: &str, name: &str) -> String {
-    let path = format!("{CORPUS}/{folder}/{name}");
-    let bytes =
-        std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
+    let bytes = support::corpus_file(&format!("{folder}/{name}"));
     let (text, diagnostics) = if name.ends_with(".xml") {
         let text = gsdc::gsdml::decode(&bytes).unwrap().into_owned();
         let diagnostics = gsdc::gsdml::check(&text, Some(name));
@@ -34,7 +32,10 @@ fn findings_of_real_files() {
         ("gsdml", "GSDML-V2.4-RT-Labs-P-Net-Sample-App-20210507.xml"),
         ("gsdml-invalid", "neg_dup_module_id.xml"),
     ];
-    for (folder, name) in files {
-        insta::assert_snapshot!(format!("check__{name}"), findings(folder, name));
-    }
+    support::snapshots_in("check", || {
+        for (folder, name) in files {
+            insta::assert_snapshot!(name, findings(folder, name));
+        }
+    });
+    support::assert_no_orphan_snapshots("check", files.map(|(_, name)| name));
 }

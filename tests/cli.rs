@@ -1,61 +1,23 @@
 //! The command line as a user runs it: exit codes, what is written, and
 //! that nothing is written when a description has an error.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-#[path = "common/refusing_xsd.rs"]
-mod refusing_xsd;
-
+use crate::support::xsd::{pi_schema, refusing_schema};
+use crate::support::{self, descriptions, file_names, gsdc, stderr, stdout};
 use gsdc::ArtifactKind;
-use refusing_xsd::refusing_schema;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn gsdc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .map(|entries| {
-            entries
-                .map(|e| e.unwrap().file_name().into_string().unwrap())
-                .collect()
-        })
-        .unwrap_or_default();
-    names.sort();
-    names
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
+use std::process::Command;
 
 #[test]
 fn build_writes_the_gsd_and_exits_0() {
-    let out = scratch("build");
-    let output = gsdc(&[
+    let out = support::scratch("build");
+    let output = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "--out",
         out.to_str().unwrap(),
     ]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    let written = files_in(&out);
+    let written = file_names(&out);
     for expected in [
         "MD810DP.GSD",
         "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
@@ -75,26 +37,26 @@ fn build_writes_the_gsd_and_exits_0() {
     assert!(stderr(&output).contains("warning[W101]"));
     assert!(stderr(&output).contains("descriptions/md810dp.toml:"));
 
-    let again = gsdc(&[
+    let again = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "--out",
         out.to_str().unwrap(),
     ]);
-    let said = String::from_utf8_lossy(&again.stdout);
+    let said = stdout(&again);
     assert!(!said.contains("wrote"), "{said}");
     assert_eq!(
         said.matches("unchanged").count(),
-        files_in(&out).len(),
+        file_names(&out).len(),
         "{said}"
     );
-    std::fs::remove_dir_all(out).unwrap();
 }
 
 #[test]
 fn an_invalid_description_exits_1_and_writes_nothing() {
-    let out = scratch("invalid");
-    let output = gsdc(&[
+    let dir = support::scratch("invalid");
+    let out = dir.join("out");
+    let output = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "tests/fixtures/invalid/unknown_ppo.toml",
@@ -105,31 +67,30 @@ fn an_invalid_description_exits_1_and_writes_nothing() {
     assert!(stderr(&output).contains("error[E104]"));
     assert!(stderr(&output).contains("tests/fixtures/invalid/unknown_ppo.toml:26:22"));
     assert!(
-        files_in(&out).is_empty(),
+        !out.exists(),
         "the valid description was not written either"
     );
 }
 
 #[test]
 fn a_missing_description_exits_2() {
-    let output = gsdc(&["build", "descriptions/no-such-card.toml", "--out", "/tmp"]);
+    let output = gsdc(["build", "descriptions/no-such-card.toml", "--out", "/tmp"]);
     assert_eq!(output.status.code(), Some(2));
     assert!(stderr(&output).contains("cannot read descriptions/no-such-card.toml"));
 }
 
 #[test]
 fn usage_errors_exit_2() {
-    assert_eq!(gsdc(&["build"]).status.code(), Some(2));
-    assert_eq!(gsdc(&["frobnicate"]).status.code(), Some(2));
+    assert_eq!(gsdc(["build"]).status.code(), Some(2));
+    assert_eq!(gsdc(["frobnicate"]).status.code(), Some(2));
 }
 
 #[test]
 fn a_description_that_is_not_utf8_exits_1() {
-    let dir = scratch("latin1");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = support::scratch("latin1");
     let path = dir.join("card.toml");
     std::fs::write(&path, b"[device]\nvendor = \"M\xfcller\"\n").unwrap();
-    let output = gsdc(&[
+    let output = gsdc([
         "build",
         path.to_str().unwrap(),
         "--out",
@@ -142,20 +103,18 @@ fn a_description_that_is_not_utf8_exits_1() {
         "{}",
         stderr(&output)
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
-    let dir = scratch("check");
+    let dir = support::scratch("check");
     let out = dir.join("dist");
     let description = dir.join("md810dp.toml");
-    std::fs::create_dir_all(&dir).unwrap();
     std::fs::copy("descriptions/md810dp.toml", &description).unwrap();
     descriptions::copy_symbols(&dir);
     let (description, out_arg) = (description.to_str().unwrap(), out.to_str().unwrap());
 
-    let missing = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    let missing = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(
         missing.status.code(),
         Some(1),
@@ -169,16 +128,14 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     );
 
     assert_eq!(
-        gsdc(&["build", description, "--out", out_arg])
-            .status
-            .code(),
+        gsdc(["build", description, "--out", out_arg]).status.code(),
         Some(0)
     );
-    let before: Vec<(String, Vec<u8>)> = files_in(&out)
+    let before: Vec<(String, Vec<u8>)> = file_names(&out)
         .into_iter()
         .map(|f| (f.clone(), std::fs::read(out.join(&f)).unwrap()))
         .collect();
-    let in_step = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    let in_step = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(in_step.status.code(), Some(0), "{}", stderr(&in_step));
     assert!(in_step.stdout.is_empty());
 
@@ -187,7 +144,7 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     let mut bytes = std::fs::read(&bitmap).unwrap();
     bytes[100] ^= 0xFF;
     std::fs::write(&bitmap, &bytes).unwrap();
-    let changed = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    let changed = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(changed.status.code(), Some(1));
     assert!(
         stdout(&changed).starts_with(&format!("differs: {} (not text)\n", bitmap.display())),
@@ -207,24 +164,23 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
         text.replace("min_slave_interval = 1", "min_slave_interval = 2"),
     )
     .unwrap();
-    let changed = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    let changed = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(changed.status.code(), Some(1));
-    let diff = String::from_utf8_lossy(&changed.stdout);
+    let diff = stdout(&changed);
     assert!(diff.contains("-Min_Slave_Intervall         = 1"), "{diff}");
     assert!(diff.contains("+Min_Slave_Intervall         = 2"), "{diff}");
-    let after: Vec<(String, Vec<u8>)> = files_in(&out)
+    let after: Vec<(String, Vec<u8>)> = file_names(&out)
         .into_iter()
         .map(|f| (f.clone(), std::fs::read(out.join(&f)).unwrap()))
         .collect();
     assert_eq!(before, after, "--check wrote nothing");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
-    let out = scratch("check-gsd");
+    let out = support::scratch("check-gsd");
     assert_eq!(
-        gsdc(&[
+        gsdc([
             "build",
             "descriptions/md810dp.toml",
             "--out",
@@ -234,12 +190,12 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
         .code(),
         Some(0)
     );
-    let clean = gsdc(&["check", out.join("MD810DP.GSD").to_str().unwrap()]);
+    let clean = gsdc(["check", out.join("MD810DP.GSD").to_str().unwrap()]);
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
-    assert!(String::from_utf8_lossy(&clean.stdout).contains("0 error(s)"));
+    assert!(stdout(&clean).contains("0 error(s)"));
 
     // Max_Input_Len beyond 244 (the corpus lists it as a known finding).
-    let broken = gsdc(&["check", "../shared/corpus/gsd/mbuesch__dummy_modular.gsd"]);
+    let broken = gsdc(["check", "../shared/corpus/gsd/mbuesch__dummy_modular.gsd"]);
     assert_eq!(broken.status.code(), Some(1));
     assert!(
         stdout(&broken).contains("error[E208]"),
@@ -247,16 +203,15 @@ fn check_exits_0_on_a_clean_file_1_on_errors_2_when_missing() {
         stdout(&broken)
     );
 
-    assert_eq!(gsdc(&["check", "no-such-file.gsd"]).status.code(), Some(2));
-    std::fs::remove_dir_all(out).unwrap();
+    assert_eq!(gsdc(["check", "no-such-file.gsd"]).status.code(), Some(2));
 }
 
 #[test]
 fn check_reads_gsdml_in_latin1_and_rejects_the_broken_corpus() {
     let leuze = "../shared/corpus/gsdml/GSDML-V2.31-LEUZE-BCL348i-20150923.xml";
-    let clean = gsdc(&["check", leuze]);
+    let clean = gsdc(["check", leuze]);
     assert_eq!(clean.status.code(), Some(0), "{}", stderr(&clean));
-    let dangling = gsdc(&[
+    let dangling = gsdc([
         "check",
         "../shared/corpus/gsdml-invalid/neg_dangling_moduleref.xml",
     ]);
@@ -332,9 +287,10 @@ fn check_json_lines_have_the_documented_fields_and_a_summary_per_file_in_argumen
 /// `--xsd DIR` adds the PI schema's findings (E399) to gsdc's own rules.
 #[test]
 fn check_xsd_adds_the_schemas_findings() {
-    let schema = "../shared/reference/gsdml-xsd-v2.44";
+    let schema = pi_schema();
+    let schema = schema.to_str().unwrap();
     let broken = "../shared/corpus/gsdml-invalid/neg_bad_datatype.xml";
-    let with_schema = gsdc(&["check", "--xsd", schema, broken]);
+    let with_schema = gsdc(["check", "--xsd", schema, broken]);
     assert_eq!(with_schema.status.code(), Some(1));
     let findings = stdout(&with_schema);
     assert!(findings.contains("error[E309]"), "{findings}");
@@ -343,12 +299,12 @@ fn check_xsd_adds_the_schemas_findings() {
         "{findings}"
     );
     assert!(
-        !stdout(&gsdc(&["check", broken])).contains("E399"),
+        !stdout(&gsdc(["check", broken])).contains("E399"),
         "no schema unless asked"
     );
 
-    let generated = scratch("xsd");
-    let build = gsdc(&[
+    let generated = support::scratch("xsd");
+    let build = gsdc([
         "build",
         "descriptions/mv810-pnet02.toml",
         "--out",
@@ -356,13 +312,12 @@ fn check_xsd_adds_the_schemas_findings() {
     ]);
     assert_eq!(build.status.code(), Some(0));
     let gsdml = generated.join("GSDML-V2.32-MEGMEET-MV800-20230830.xml");
-    let clean = gsdc(&["check", "--xsd", schema, gsdml.to_str().unwrap()]);
+    let clean = gsdc(["check", "--xsd", schema, gsdml.to_str().unwrap()]);
     assert_eq!(clean.status.code(), Some(0), "{}", stdout(&clean));
 
-    let missing = gsdc(&["check", "--xsd", "/no/such/dir", broken]);
+    let missing = gsdc(["check", "--xsd", "/no/such/dir", broken]);
     assert_eq!(missing.status.code(), Some(2));
     assert!(stderr(&missing).contains("GSDML-DeviceProfile-v2.44.xsd is missing"));
-    std::fs::remove_dir_all(generated).unwrap();
 }
 
 /// A description with a hundred thousand errors on one 800 KB line: the
@@ -370,8 +325,7 @@ fn check_xsd_adds_the_schemas_findings() {
 /// counted; the output stays small and the run short.
 #[test]
 fn a_hostile_description_gives_bounded_output() {
-    let dir = scratch("hostile");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = support::scratch("hostile");
     let path = dir.join("ppo.toml");
     let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
     let many = vec!["\"PPO9\""; 100_000].join(", ");
@@ -385,7 +339,7 @@ fn a_hostile_description_gives_bounded_output() {
     assert_ne!(hostile, text);
     std::fs::write(&path, hostile).unwrap();
     let started = std::time::Instant::now();
-    let output = gsdc(&[
+    let output = gsdc([
         "build",
         path.to_str().unwrap(),
         "--out",
@@ -424,13 +378,12 @@ fn a_hostile_description_gives_bounded_output() {
         "{} bytes of diagnostics",
         errors.len()
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A copy of the MD810 description in `dir` under `name`, with each
 /// `(from, to)` replaced (each must occur).
 fn md810_copy(dir: &Path, name: &str, replacements: &[(&str, &str)]) -> PathBuf {
-    let mut text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    let mut text = descriptions::shipped_text("md810dp.toml");
     for (from, to) in replacements {
         assert!(text.contains(from), "{from}");
         text = text.replace(from, to);
@@ -447,10 +400,10 @@ const NO_WARNINGS: &str = "tests/fixtures/valid/no_warnings.toml";
 
 #[test]
 fn deny_warnings_refuses_a_description_with_warnings_and_passes_one_without() {
-    let dir = scratch("deny");
+    let dir = support::scratch("deny");
     let out = dir.join("out");
     let out_arg = out.to_str().unwrap();
-    let refused = gsdc(&[
+    let refused = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "--out",
@@ -469,11 +422,10 @@ fn deny_warnings_refuses_a_description_with_warnings_and_passes_one_without() {
     );
     assert!(!out.exists(), "nothing written, not even the directory");
 
-    let passed = gsdc(&["build", NO_WARNINGS, "--out", out_arg, "--deny-warnings"]);
+    let passed = gsdc(["build", NO_WARNINGS, "--out", out_arg, "--deny-warnings"]);
     assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
     assert!(!stderr(&passed).contains("warning"), "{}", stderr(&passed));
-    assert_eq!(files_in(&out).len(), 6);
-    std::fs::remove_dir_all(dir).unwrap();
+    assert_eq!(file_names(&out).len(), 6);
 }
 
 /// Two descriptions that give different files of one name: exit 1 before
@@ -481,7 +433,7 @@ fn deny_warnings_refuses_a_description_with_warnings_and_passes_one_without() {
 /// file twice (the same description given twice) is one file.
 #[test]
 fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
-    let dir = scratch("collide");
+    let dir = support::scratch("collide");
     let out = dir.join("out");
     let out_arg = out.to_str().unwrap();
     // x-y.toml and x_y.toml both give x_y_layout.rs (and .h); the second
@@ -495,7 +447,7 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
             ("date = 2026-11-22", "date = 2026-11-23"),
         ],
     );
-    let collided = gsdc(&[
+    let collided = gsdc([
         "build",
         dashed.to_str().unwrap(),
         underscored.to_str().unwrap(),
@@ -521,7 +473,7 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
         "other.toml",
         &[("min_slave_interval = 1", "min_slave_interval = 2")],
     );
-    let collided = gsdc(&[
+    let collided = gsdc([
         "build",
         "descriptions/md810dp.toml",
         renamed.to_str().unwrap(),
@@ -536,7 +488,7 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
     );
     assert!(!out.exists());
 
-    let twice = gsdc(&[
+    let twice = gsdc([
         "build",
         "descriptions/md810dp.toml",
         "descriptions/md810dp.toml",
@@ -546,8 +498,7 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
     assert_eq!(twice.status.code(), Some(0), "{}", stderr(&twice));
     // MD810's six files and its two symbols, once.
     assert_eq!(stdout(&twice).matches("wrote").count(), 8);
-    assert_eq!(files_in(&out).len(), 8);
-    std::fs::remove_dir_all(dir).unwrap();
+    assert_eq!(file_names(&out).len(), 8);
 }
 
 /// After a description changes its GSD's file name and its GSDML's date,
@@ -556,21 +507,19 @@ fn two_descriptions_giving_one_file_name_exit_1_writing_nothing() {
 /// (not the user's file, not the datasheet).
 #[test]
 fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
-    let dir = scratch("stale");
+    let dir = support::scratch("stale");
     let out = dir.join("out");
     let out_arg = out.to_str().unwrap();
     let description = md810_copy(&dir, "md810dp.toml", &[]);
     let description = description.to_str().unwrap();
     assert_eq!(
-        gsdc(&["build", description, "--out", out_arg])
-            .status
-            .code(),
+        gsdc(["build", description, "--out", out_arg]).status.code(),
         Some(0)
     );
     std::fs::write(out.join("README.txt"), "the user's own file").unwrap();
     // The datasheet beside the files, as the README's commands put it: it
     // carries gsdc's mark, but is `gsdc doc`'s, never a build's stale file.
-    let doc = gsdc(&["doc", description, "--out", out_arg]);
+    let doc = gsdc(["doc", description, "--out", out_arg]);
     assert_eq!(doc.status.code(), Some(0), "{}", stderr(&doc));
     md810_copy(
         &dir,
@@ -584,9 +533,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
         ],
     );
     assert_eq!(
-        gsdc(&["build", description, "--out", out_arg])
-            .status
-            .code(),
+        gsdc(["build", description, "--out", out_arg]).status.code(),
         Some(0)
     );
     // The old GSD's symbol is stale with it: a bitmap has no mark, but the
@@ -603,7 +550,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
         );
     }
 
-    let check = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    let check = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(check.status.code(), Some(1));
     let listed: Vec<String> = stdout(&check)
         .lines()
@@ -619,7 +566,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
     }
     assert!(stderr(&check).contains("--prune"), "{}", stderr(&check));
 
-    let pruned = gsdc(&["build", description, "--out", out_arg, "--prune"]);
+    let pruned = gsdc(["build", description, "--out", out_arg, "--prune"]);
     assert_eq!(pruned.status.code(), Some(0), "{}", stderr(&pruned));
     for name in old {
         assert!(
@@ -629,7 +576,7 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
         );
     }
     assert_eq!(
-        files_in(&out),
+        file_names(&out),
         [
             "GSDML-0A11-0810-MD810.bmp",
             "GSDML-V2.32-INOVANCE-MD810-20261123.xml",
@@ -644,24 +591,36 @@ fn stale_outputs_are_reported_by_check_and_removed_by_prune() {
             "md810dp_layout.rs"
         ]
     );
-    let in_step = gsdc(&["build", description, "--out", out_arg, "--check"]);
+    // The datasheet is still the old description's: --check names it (not
+    // as a build's stale file) until `gsdc doc` writes it again.
+    let old_datasheet = gsdc(["build", description, "--out", out_arg, "--check"]);
+    assert_eq!(old_datasheet.status.code(), Some(1));
+    assert!(
+        stdout(&old_datasheet)
+            .lines()
+            .all(|l| l.starts_with("stale datasheet: ")),
+        "{}",
+        stdout(&old_datasheet)
+    );
+    let doc = gsdc(["doc", description, "--out", out_arg]);
+    assert_eq!(doc.status.code(), Some(0), "{}", stderr(&doc));
+    let in_step = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(in_step.status.code(), Some(0), "{}", stdout(&in_step));
     assert_eq!(
-        gsdc(&["build", description, "--out", out_arg, "--check", "--prune"])
+        gsdc(["build", description, "--out", out_arg, "--check", "--prune"])
             .status
             .code(),
         Some(2),
         "--prune with --check is a usage error"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// Every file gsdc writes carries the mark `--check` and `--prune` know
 /// gsdc's files by, where they look for it.
 #[test]
 fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
-    for name in descriptions::SHIPPED {
-        let ir = descriptions::load(name);
+    for name in descriptions::shipped() {
+        let ir = descriptions::load(&name);
         // A bitmap has no room for text: --check and --prune cannot tell
         // gsdc's device symbols from a user's (see the README).
         let files = gsdc::compile(&ir).unwrap();
@@ -685,7 +644,7 @@ fn every_generated_file_carries_the_generated_mark_in_its_first_kib() {
 /// never exit 0 or a panic; a reader that stops early (`| head`) is not.
 #[test]
 fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
-    let dir = scratch("full");
+    let dir = support::scratch("full");
     let full = || {
         std::fs::OpenOptions::new()
             .write(true)
@@ -693,8 +652,7 @@ fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
             .unwrap()
     };
     let run = |args: &[&str], stdout_full: bool, stderr_full: bool| {
-        let mut command = Command::new(env!("CARGO_BIN_EXE_gsdc"));
-        command.args(args).current_dir(env!("CARGO_MANIFEST_DIR"));
+        let mut command = support::gsdc_command(args);
         if stdout_full {
             command.stdout(full());
         }
@@ -732,7 +690,7 @@ fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
     }
     // The files were written all the same (MD810's six and its two
     // symbols); only the report was lost.
-    assert_eq!(files_in(&out).len(), 8);
+    assert_eq!(file_names(&out).len(), 8);
 
     // The corpus has files with errors: exit 1, as if all was read.
     let piped = Command::new("bash")
@@ -740,16 +698,13 @@ fn unwritable_stdout_or_stderr_exits_2_without_a_panic() {
         .arg(
             "\"$0\" check ../shared/corpus/gsd/*.gs? | head -c 1 >/dev/null; echo ${PIPESTATUS[0]}",
         )
-        .arg(env!("CARGO_BIN_EXE_gsdc"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .arg(support::GSDC)
+        .current_dir(support::CHECKOUT)
         .output()
         .unwrap();
     assert_eq!(stdout(&piped).trim(), "1", "{}", stderr(&piped));
     assert!(!stderr(&piped).contains("panicked"), "{}", stderr(&piped));
-    std::fs::remove_dir_all(dir).unwrap();
 }
-
-const PI_SCHEMA: &str = "../shared/reference/gsdml-xsd-v2.44";
 
 /// `build --xsd DIR` validates each GSDML against the schema before
 /// anything is written: the PI schema passes every shipped description; a
@@ -759,7 +714,7 @@ const PI_SCHEMA: &str = "../shared/reference/gsdml-xsd-v2.44";
 /// without the schema is a usage error.
 #[test]
 fn build_xsd_validates_each_gsdml_before_anything_is_written() {
-    let dir = scratch("build-xsd");
+    let dir = support::scratch("build-xsd");
     let out = dir.join("out");
     let out_arg = out.to_str().unwrap();
     let all = [
@@ -767,18 +722,19 @@ fn build_xsd_validates_each_gsdml_before_anything_is_written() {
         "descriptions/mv810-pnet02.toml",
         "descriptions/9kdp1.toml",
     ];
-    let mut args = vec!["build", "--xsd", PI_SCHEMA, "--out", out_arg];
+    let schema = pi_schema();
+    let mut args = vec!["build", "--xsd", schema.to_str().unwrap(), "--out", out_arg];
     args.extend(all);
     let passed = gsdc(&args);
     assert_eq!(passed.status.code(), Some(0), "{}", stderr(&passed));
     // md810dp: GSD, GSDML, a symbol beside each, two layouts; mv810-pnet02:
     // GSDML, symbol, two layouts; 9kdp1 (PROFIBUS only): GSD, symbol, two
     // layouts; the two support files once.
-    assert_eq!(files_in(&out).len(), 6 + 4 + 4 + 2);
+    assert_eq!(file_names(&out).len(), 6 + 4 + 4 + 2);
     std::fs::remove_dir_all(&out).unwrap();
 
     let refusing = refusing_schema(&dir);
-    let refused = gsdc(&[
+    let refused = gsdc([
         "build",
         "descriptions/mv810-pnet02.toml",
         "--xsd",
@@ -799,36 +755,32 @@ fn build_xsd_validates_each_gsdml_before_anything_is_written() {
     assert!(said.contains("nothing written"), "{said}");
     assert!(!out.exists());
 
-    let from_env = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(["build", "descriptions/mv810-pnet02.toml", "--out", out_arg])
-        .env(gsdc::build::XSD_ENV, &refusing)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
+    let from_env =
+        support::gsdc_command(["build", "descriptions/mv810-pnet02.toml", "--out", out_arg])
+            .env(gsdc::build::XSD_ENV, &refusing)
+            .output()
+            .unwrap();
     assert_eq!(from_env.status.code(), Some(1), "{}", stderr(&from_env));
     assert!(stderr(&from_env).contains("error[E399]"));
     assert!(!out.exists());
     // An empty variable is unset, as build scripts read it.
-    let empty_env = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(["build", "descriptions/9kdp1.toml", "--out", out_arg])
+    let empty_env = support::gsdc_command(["build", "descriptions/9kdp1.toml", "--out", out_arg])
         .env(gsdc::build::XSD_ENV, "")
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .unwrap();
     assert_eq!(empty_env.status.code(), Some(0), "{}", stderr(&empty_env));
     std::fs::remove_dir_all(&out).unwrap();
 
-    let missing = gsdc(&["build", all[0], "--xsd", "/no/such/dir", "--out", out_arg]);
+    let missing = gsdc(["build", all[0], "--xsd", "/no/such/dir", "--out", out_arg]);
     assert_eq!(missing.status.code(), Some(2));
     assert!(stderr(&missing).contains("GSDML-DeviceProfile-v2.44.xsd is missing"));
     assert!(!out.exists());
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// The help of each command shows every flag with an example.
 #[test]
 fn help_shows_an_example_of_every_flag() {
-    let build = stdout(&gsdc(&["build", "--help"]));
+    let build = stdout(&gsdc(["build", "--help"]));
     for flag in [
         "--check",
         "--prune",
@@ -845,7 +797,7 @@ fn help_shows_an_example_of_every_flag() {
             "no example with {flag} in {build}"
         );
     }
-    let check = stdout(&gsdc(&["check", "--help"]));
+    let check = stdout(&gsdc(["check", "--help"]));
     for flag in ["--format json", "--xsd", "/dev/stdin"] {
         assert!(
             check
@@ -860,7 +812,7 @@ fn help_shows_an_example_of_every_flag() {
 /// an unknown language is a usage error.
 #[test]
 fn firmware_languages_choose_the_layouts_written() {
-    let dir = scratch("firmware");
+    let dir = support::scratch("firmware");
     let build = |out: &str, firmware: Option<&str>| {
         let out = dir.join(out);
         let mut args = vec![
@@ -878,17 +830,16 @@ fn firmware_languages_choose_the_layouts_written() {
     let (output, out) = build("c", Some("c"));
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     assert_eq!(
-        files_in(&out),
+        file_names(&out),
         ["9KDP1.GSD", "9KDP1.bmp", "9kdp1_layout.h", "gsdc_support.h"]
     );
     let (output, out) = build("none", Some("none"));
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(files_in(&out), ["9KDP1.GSD", "9KDP1.bmp"]);
+    assert_eq!(file_names(&out), ["9KDP1.GSD", "9KDP1.bmp"]);
     let (output, out) = build("both", None);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(files_in(&out).len(), 6);
+    assert_eq!(file_names(&out).len(), 6);
     let (output, _) = build("bad", Some("rust,cobol"));
     assert_eq!(output.status.code(), Some(2));
     assert!(stderr(&output).contains("cobol"), "{}", stderr(&output));
-    std::fs::remove_dir_all(dir).unwrap();
 }

@@ -1,26 +1,12 @@
 //! `gsdc decode` as a user runs it: the tables, the JSON document, and each
 //! error with its code, place and exit code.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
+use crate::support::{self, descriptions, stderr, stdout};
+use std::process::Output;
 
-use std::process::{Command, Output};
-
+/// Runs `gsdc decode` with `args`.
 fn gsdc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("decode")
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8(output.stdout.clone()).unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
+    support::gsdc(["decode"].iter().chain(args))
 }
 
 /// Runs a decode that must succeed; its stdout.
@@ -529,6 +515,9 @@ fn an_invalid_description_exits_1() {
     assert!(stderr(&output).contains("error[E104]"));
 }
 
+/// The folder of tests/snapshots this file's snapshots are in.
+const SNAPSHOTS: &str = "decode";
+
 /// The tables as a person sees them, reviewed line by line.
 #[test]
 fn snapshot_md810_read_answer_with_prm() {
@@ -545,7 +534,9 @@ fn snapshot_md810_read_answer_with_prm() {
         &prm,
         "10F0 0800 0000 1388 1388 0000",
     ]);
-    insta::assert_snapshot!("md810_read_answer_with_prm", out);
+    support::snapshots_in(SNAPSHOTS, || {
+        insta::assert_snapshot!("md810_read_answer_with_prm", out);
+    });
 }
 
 #[test]
@@ -560,7 +551,9 @@ fn snapshot_mv810_status_word() {
         "pzd_in=3",
         "01 02 00 83 2B 02 00 02 0468 1388",
     ]);
-    insta::assert_snapshot!("mv810_status_word", out);
+    support::snapshots_in(SNAPSHOTS, || {
+        insta::assert_snapshot!("mv810_status_word", out)
+    });
 }
 
 // ---------------------------------------------------------------------------
@@ -775,27 +768,11 @@ fn gateway_errors_point_into_their_argument() {
 }
 
 /// The gateway with each slave's TPDO words in bits 0-3 and RPDO words in
-/// bits 4-7 of one byte, written beside the test's other scratch files.
-fn gateway_in_bit_areas() -> std::path::PathBuf {
-    let text =
-        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(GATEWAY))
-            .unwrap()
-            .replacen(
-                "name = \"Slave {n} TPDO words\"\ntype = \"Unsigned8\"",
-                "name = \"Slave {n} TPDO words\"\nbits = [0, 3]",
-                1,
-            )
-            .replacen(
-                "name = \"Slave {n} RPDO words\"\ntype = \"Unsigned8\"",
-                "name = \"Slave {n} RPDO words\"\nbits = [4, 7]",
-                1,
-            );
-    assert_eq!(text.matches("bits = [").count(), 2);
-    let dir = std::env::temp_dir().join(format!("gsdc-decode-bits-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    descriptions::copy_symbols(&dir);
+/// bits 4-7 of one byte, written into `dir` with the symbols it names.
+fn gateway_in_bit_areas(dir: &std::path::Path) -> std::path::PathBuf {
+    descriptions::copy_symbols(dir);
     let path = dir.join("md810-gateway-bits.toml");
-    std::fs::write(&path, text).unwrap();
+    std::fs::write(&path, descriptions::gateway_in_bit_areas()).unwrap();
     path
 }
 
@@ -803,7 +780,8 @@ fn gateway_in_bit_areas() -> std::path::PathBuf {
 /// sharing bytes, one not allowed, the card's refusal, and a drive fault.
 #[test]
 fn snapshot_gateway_bit_areas_and_drive_fault() {
-    let path = gateway_in_bit_areas();
+    let dir = support::scratch("gateway-bits");
+    let path = gateway_in_bit_areas(&dir);
     // 2 slaves; slave 1 sends 8 and receives 9 words (byte 1 = 0x98), slave 2 sends 8.
     let prm = format!("02 98 08{}", " 00".repeat(28));
     let out = decoded(&[
@@ -813,8 +791,9 @@ fn snapshot_gateway_bit_areas_and_drive_fault() {
         "--diag",
         "05 04 02 12 34",
     ]);
-    let _ = std::fs::remove_dir_all(path.parent().unwrap());
-    insta::assert_snapshot!("gateway_bit_areas_and_drive_fault", out);
+    support::snapshots_in(SNAPSHOTS, || {
+        insta::assert_snapshot!("gateway_bit_areas_and_drive_fault", out);
+    });
 }
 
 /// The words of a shell command line: blanks separate them, single quotes

@@ -1,41 +1,13 @@
-//! The datasheets of the shipped descriptions (`gsdc doc`): snapshots read
-//! line by line, the diagrams' geometry from the SVG's own numbers, the
-//! facts they must show, determinism, and the command line.
+//! The datasheets of the shipped descriptions (`gsdc doc`; their snapshots,
+//! read line by line, are in outputs.rs): the diagrams' geometry from the
+//! SVG's own numbers, the facts they must show, determinism, and the
+//! command line.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
-use gsdc::{Artifact, ArtifactKind};
-use std::process::Command;
-
-use descriptions::SHIPPED as DESCRIPTIONS;
+use crate::support::{self, descriptions, gsdc, stderr, stdout};
+use gsdc::ArtifactKind;
 
 fn datasheet(name: &str, kind: ArtifactKind) -> String {
-    let artifact: Artifact = gsdc::document(&descriptions::load(name))
-        .into_iter()
-        .find(|a| a.kind == kind)
-        .expect("both files");
-    String::from_utf8(artifact.contents).unwrap()
-}
-
-#[test]
-fn markdown_snapshots() {
-    for name in DESCRIPTIONS {
-        let stem = name.trim_end_matches(".toml");
-        insta::assert_snapshot!(
-            format!("{stem}.md"),
-            datasheet(name, ArtifactKind::DatasheetMarkdown)
-        );
-    }
-}
-
-/// One HTML page in full, the smallest: structure, CSS, the switch, SVG.
-#[test]
-fn html_snapshot() {
-    insta::assert_snapshot!(
-        "9kdp1.html",
-        datasheet("9kdp1.toml", ArtifactKind::DatasheetHtml)
-    );
+    descriptions::output_text(&descriptions::load(name), kind)
 }
 
 #[test]
@@ -62,9 +34,9 @@ fn file_names_and_kinds() {
 
 #[test]
 fn deterministic_self_contained_and_without_paths() {
-    for name in DESCRIPTIONS {
-        let first = gsdc::document(&descriptions::load(name));
-        assert_eq!(first, gsdc::document(&descriptions::load(name)), "{name}");
+    for name in descriptions::shipped() {
+        let first = gsdc::document(&descriptions::load(&name));
+        assert_eq!(first, gsdc::document(&descriptions::load(&name)), "{name}");
         for file in &first {
             let text = String::from_utf8(file.contents.clone()).unwrap();
             let without_svg_namespace = text.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
@@ -169,17 +141,16 @@ fn figures(html: &str) -> Vec<Figure> {
 
 /// The HTML datasheets of the shipped descriptions and of the PROFIdrive
 /// fixture (whose PPO1 has the profile's PKW words), by name.
-fn html_datasheets() -> Vec<(&'static str, String)> {
+fn html_datasheets() -> Vec<(String, String)> {
     let fixture = descriptions::load_from("tests/fixtures/valid", "profidrive.toml");
-    let fixture_html = gsdc::document(&fixture)
+    let fixture_html = descriptions::output_text(&fixture, ArtifactKind::DatasheetHtml);
+    descriptions::shipped()
         .into_iter()
-        .find(|a| a.kind == ArtifactKind::DatasheetHtml)
-        .map(|a| String::from_utf8(a.contents).unwrap())
-        .unwrap();
-    DESCRIPTIONS
-        .iter()
-        .map(|&name| (name, datasheet(name, ArtifactKind::DatasheetHtml)))
-        .chain([("profidrive.toml", fixture_html)])
+        .map(|name| {
+            let html = datasheet(&name, ArtifactKind::DatasheetHtml);
+            (name, html)
+        })
+        .chain([("profidrive.toml".to_string(), fixture_html)])
         .collect()
 }
 
@@ -317,11 +288,7 @@ fn table_rows(markdown: &str, caption: &str) -> Vec<Vec<String>> {
 #[test]
 fn the_profidrive_channel_has_the_profiles_ids_and_worked_examples() {
     let ir = descriptions::load_from("tests/fixtures/valid", "profidrive.toml");
-    let md = gsdc::document(&ir)
-        .into_iter()
-        .find(|a| a.kind == ArtifactKind::DatasheetMarkdown)
-        .map(|a| String::from_utf8(a.contents).unwrap())
-        .unwrap();
+    let md = descriptions::output_text(&ir, ArtifactKind::DatasheetMarkdown);
     let first_cells = |caption: &str| -> Vec<String> {
         table_rows(&md, caption)
             .into_iter()
@@ -440,17 +407,14 @@ fn the_gateway_datasheet_is_chapter_2() {
         .map(|r| r[1].trim_matches('`').to_string())
         .collect::<Vec<_>>()
         .join(" ");
-    let decoded = std::process::Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args([
-            "decode",
-            "descriptions/md810-gateway.toml",
-            "--format",
-            "json",
-        ])
-        .args(["--prm", &prm])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
+    let decoded = gsdc([
+        "decode",
+        "descriptions/md810-gateway.toml",
+        "--format",
+        "json",
+        "--prm",
+        &prm,
+    ]);
     assert_eq!(decoded.status.code(), Some(0));
     let decoded: serde_json::Value = serde_json::from_slice(&decoded.stdout).unwrap();
     let totals = &decoded["prm"]["gateway"];
@@ -549,38 +513,19 @@ fn the_gateway_example_is_drawn_slave_by_slave() {
 // ---------------------------------------------------------------------------
 // The command line
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-doc-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
-
-fn gsdc(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap()
-}
-
 #[test]
 fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
-    let out = scratch("ok");
+    let out = support::scratch("ok");
     let out_arg = out.to_str().unwrap();
-    let first = gsdc(&[
+    let first = gsdc([
         "doc",
         "descriptions/md810dp.toml",
         "descriptions/9kdp1.toml",
         "--out",
         out_arg,
     ]);
-    assert_eq!(
-        first.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&first.stderr)
-    );
-    let stdout = String::from_utf8_lossy(&first.stdout);
+    assert_eq!(first.status.code(), Some(0), "{}", stderr(&first));
+    let stdout = stdout(&first);
     for file in ["md810dp.html", "md810dp.md", "9kdp1.html", "9kdp1.md"] {
         assert!(
             stdout.contains(&format!("wrote {}", out.join(file).display())),
@@ -595,21 +540,21 @@ fn gsdc_doc_writes_both_files_and_leaves_unchanged_ones_alone() {
             .unwrap();
         assert_eq!(written, expected.contents, "{file}");
     }
-    let again = gsdc(&["doc", "descriptions/md810dp.toml", "--out", out_arg]);
-    let said = String::from_utf8_lossy(&again.stdout);
+    let again = gsdc(["doc", "descriptions/md810dp.toml", "--out", out_arg]);
+    let said = support::stdout(&again);
     assert!(!said.contains("wrote"), "{said}");
     assert_eq!(
         said.matches("unchanged").count(),
         2,
         "the HTML and the Markdown: {said}"
     );
-    let _ = std::fs::remove_dir_all(&out);
 }
 
 #[test]
 fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
-    let out = scratch("bad");
-    let run = gsdc(&[
+    let dir = support::scratch("bad");
+    let out = dir.join("out");
+    let run = gsdc([
         "doc",
         "descriptions/md810dp.toml",
         "tests/fixtures/invalid/unknown_ppo.toml",
@@ -617,7 +562,7 @@ fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
         out.to_str().unwrap(),
     ]);
     assert_eq!(run.status.code(), Some(1));
-    let stderr = String::from_utf8_lossy(&run.stderr);
+    let stderr = stderr(&run);
     assert!(
         stderr.contains("E104") && stderr.contains("nothing written"),
         "{stderr}"
@@ -627,21 +572,22 @@ fn gsdc_doc_writes_nothing_when_a_description_has_an_error() {
 
 #[test]
 fn gsdc_doc_usage_and_io_errors_exit_2() {
-    let missing = gsdc(&[
+    let dir = support::scratch("missing");
+    let out = dir.join("out");
+    let missing = gsdc([
         "doc",
         "descriptions/no-such.toml",
         "--out",
-        scratch("missing").to_str().unwrap(),
+        out.to_str().unwrap(),
     ]);
     assert_eq!(missing.status.code(), Some(2));
-    let said = String::from_utf8_lossy(&missing.stderr);
+    let said = stderr(&missing);
     assert!(
         said.starts_with("error: cannot read descriptions/no-such.toml: No such file"),
         "said once: {said}"
     );
-    assert_eq!(gsdc(&["doc"]).status.code(), Some(2));
-    let help = gsdc(&["doc", "--help"]);
-    let help = String::from_utf8_lossy(&help.stdout);
+    assert_eq!(gsdc(["doc"]).status.code(), Some(2));
+    let help = stdout(&gsdc(["doc", "--help"]));
     assert!(
         help.contains("gsdc doc descriptions/md810dp.toml --out dist"),
         "{help}"
@@ -700,10 +646,7 @@ fn every_language_of_the_description_has_its_page() {
 /// German page, not the English name.
 #[test]
 fn a_record_is_named_in_the_pages_language() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/fixtures/valid/no_warnings.toml"
-    );
+    let path = support::checkout("tests/fixtures/valid/no_warnings.toml");
     let text = std::fs::read_to_string(path).unwrap().replace(
         "pzd_out = 1\n",
         "pzd_out = { index = 1, name = { en = \"PZD out\", de = \"PZD aus\" } }\n",
@@ -722,12 +665,8 @@ fn a_record_is_named_in_the_pages_language() {
 /// MinDeviceInterval counts 31.25 µs: 10 is 312.5 µs, not 312.
 #[test]
 fn the_update_time_is_exact_to_the_quarter_microsecond() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/descriptions/mv810-pnet02.toml"
-    ))
-    .unwrap()
-    .replace("min_device_interval = 32", "min_device_interval = 10");
+    let text = descriptions::shipped_text("mv810-pnet02.toml")
+        .replace("min_device_interval = 32", "min_device_interval = 10");
     let ir = descriptions::load_text("mv810-pnet02.toml", &text)
         .0
         .unwrap();
@@ -738,8 +677,9 @@ fn the_update_time_is_exact_to_the_quarter_microsecond() {
 
 #[test]
 fn gsdc_doc_refuses_two_descriptions_with_one_name() {
-    let out = scratch("twice");
-    let run = gsdc(&[
+    let dir = support::scratch("twice");
+    let out = dir.join("out");
+    let run = gsdc([
         "doc",
         "descriptions/md810dp.toml",
         "descriptions/md810dp.toml",
@@ -747,19 +687,14 @@ fn gsdc_doc_refuses_two_descriptions_with_one_name() {
         out.to_str().unwrap(),
     ]);
     // The same description twice gives the same files: written once.
-    assert_eq!(
-        run.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
     std::fs::remove_dir_all(&out).unwrap();
-    let copy = scratch("other");
+    let copy = support::scratch("other");
     descriptions::copy_symbols(&copy);
     let other = copy.join("md810dp.toml");
-    let text = std::fs::read_to_string("descriptions/md810dp.toml").unwrap();
+    let text = descriptions::shipped_text("md810dp.toml");
     std::fs::write(&other, text.replace("md810\"", "md810-b\"")).unwrap();
-    let run = gsdc(&[
+    let run = gsdc([
         "doc",
         "descriptions/md810dp.toml",
         other.to_str().unwrap(),
@@ -767,7 +702,7 @@ fn gsdc_doc_refuses_two_descriptions_with_one_name() {
         out.to_str().unwrap(),
     ]);
     assert_eq!(run.status.code(), Some(1));
-    let said = String::from_utf8_lossy(&run.stderr);
+    let said = stderr(&run);
     assert!(said.contains("both give md810dp.html"), "{said}");
     assert!(!out.exists());
 }

@@ -7,12 +7,8 @@
 //!
 //! Screenshots are left in target/datasheet-screenshots/ to look at.
 
-#[path = "common/chromium.rs"]
-mod chromium;
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
-use chromium::{base64, file_url, Browser};
+use crate::support::chromium::{base64, file_url, Browser};
+use crate::support::{self, descriptions};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
@@ -79,7 +75,7 @@ const GATEWAY_NODE_BOXES: usize = 15 + 8;
 
 #[test]
 fn datasheets_render_in_chromium_as_a_reader_sees_them() {
-    let dir = scratch();
+    let dir = support::scratch("datasheets");
     let mut browser = Browser::start("datasheets");
     for (name, expected) in EXPECTED {
         let ir = descriptions::load(name);
@@ -148,13 +144,6 @@ fn datasheets_render_in_chromium_as_a_reader_sees_them() {
         assert!(errors.is_empty(), "{name}: console errors {errors:#?}");
         browser.events.clear();
     }
-}
-
-fn scratch() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-datasheets-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn write_datasheet(ir: &gsdc::Ir, dir: &Path) -> PathBuf {

@@ -2,12 +2,8 @@
 //! placeholder, each value the description marks as its own choice, each
 //! default gsdc applied; and the description's translations are said.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
+use crate::support::descriptions;
 use gsdc::ir::DecisionKind;
-
-use descriptions::SHIPPED as DESCRIPTIONS;
 
 /// The comment lines at the top of a generated file, as text.
 fn head(text: &str) -> String {
@@ -34,8 +30,8 @@ fn words(text: &str) -> String {
 
 #[test]
 fn every_header_lists_every_decision() {
-    for name in DESCRIPTIONS {
-        let ir = descriptions::load(name);
+    for name in descriptions::shipped() {
+        let ir = descriptions::load(&name);
         assert!(
             ir.decisions
                 .iter()
@@ -99,11 +95,7 @@ fn translations_are_said_as_such() {
 /// choices of its own instead of the ones it ships with.)
 #[test]
 fn a_marked_choice_is_warned_about_at_its_value() {
-    let shipped = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/descriptions/9kdp1.toml"
-    ))
-    .unwrap();
+    let shipped = descriptions::shipped_text("9kdp1.toml");
     let (head, rest) = shipped
         .split_once("\n[choices]\n")
         .expect("9kdp1.toml has [choices]");

@@ -8,8 +8,7 @@
 //! - the shipped descriptions and the guide's example conform to the
 //!   schema, and descriptions with a misspelt key or an unknown kind do not.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
+use crate::support::descriptions;
 
 use serde_json::Value as Json;
 use toml::Value as Toml;
@@ -243,7 +242,7 @@ fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
             ("object", Toml::Table(_)) | ("array", Toml::Array(_)) => true,
             ("integer", Toml::Integer(_)) | ("boolean", Toml::Boolean(_)) => true,
             ("string", Toml::String(_)) => true,
-            ("string", Toml::Datetime(_)) => node["format"] == "date",
+            ("string", Toml::Datetime(d)) => datetime_fits(node, d),
             _ => false,
         };
         if !is {
@@ -305,6 +304,23 @@ fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
     Ok(())
 }
 
+/// The two forms of a date the schema takes, as the patterns it writes.
+const DATE_PATTERN: &str = "^[0-9]{4}-[0-9]{2}-[0-9]{2}$";
+const LOCAL_DATE_TIME_PATTERN: &str =
+    "^[0-9]{4}-[0-9]{2}-[0-9]{2}[Tt ][0-9]{2}:[0-9]{2}(:[0-9]{2})?$";
+
+/// Whether a TOML date or date-time is what a string node's pattern
+/// takes: a date, or a local date-time (no offset). Another pattern fails
+/// the test until this reader knows it.
+fn datetime_fits(node: &Json, d: &toml::value::Datetime) -> bool {
+    match node.get("pattern").and_then(Json::as_str) {
+        Some(DATE_PATTERN) => d.date.is_some() && d.time.is_none(),
+        Some(LOCAL_DATE_TIME_PATTERN) => d.date.is_some() && d.time.is_some() && d.offset.is_none(),
+        Some(other) => panic!("a pattern this test cannot read: {other}"),
+        None => false,
+    }
+}
+
 /// The schema of `key` under `patternProperties`. The schema uses one form
 /// of pattern, `^[a-z]{N}$` (language codes); another form fails the test
 /// until this reader knows it.
@@ -319,16 +335,6 @@ fn pattern_property<'a>(node: &'a Json, key: &str) -> Option<&'a Json> {
         let matches = key.len() == count && key.bytes().all(|b| b.is_ascii_lowercase());
         matches.then_some(schema)
     })
-}
-
-/// The guide's TOML examples: the complete one and the gateway's.
-fn guide_examples() -> Vec<&'static str> {
-    let guide = include_str!("../docs/description.md");
-    guide
-        .split("```toml\n")
-        .skip(1)
-        .map(|rest| &rest[..rest.find("```").unwrap()])
-        .collect()
 }
 
 #[test]
@@ -350,14 +356,20 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
             include_str!("fixtures/valid/profidrive.toml"),
         ),
     ];
-    let examples = guide_examples()
+    let examples = descriptions::guide_examples()
         .into_iter()
         .map(|e| ("the guide's example", e));
     for (name, text) in valid.into_iter().chain(examples) {
         let value: Toml = text.parse::<toml::Table>().map(Toml::Table).unwrap();
         conforms(&root, &root, &value).unwrap_or_else(|why| panic!("{name}: {why}"));
     }
+    // A second release on one day: a local date-time.
+    let mut second_release: toml::Table = md810();
+    second_release["profinet"]["date"] = "2026-12-01T07:14:47".parse().map(Toml::Datetime).unwrap();
+    conforms(&root, &root, &Toml::Table(second_release)).unwrap();
     let invalid = [
+        include_str!("fixtures/invalid/gsdml_date_with_offset.toml"),
+        include_str!("fixtures/invalid/gsdml_date_quoted.toml"),
         include_str!("fixtures/invalid/unknown_key.toml"),
         include_str!("fixtures/invalid/profibus_key_typo.toml"),
         include_str!("fixtures/invalid/unknown_pkw_kind.toml"),

@@ -4,13 +4,9 @@
 //! bytes each time, the GSD read by gsd-parser and the GSDML valid against
 //! the PI schema.
 
-#[path = "common/xsd.rs"]
-mod xsd;
-
+use crate::support::{self, descriptions, xsd};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::Path;
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
 
 fn compile(path: &Path) -> Vec<Artifact> {
     let loaded = gsdc::build::load_file(path, "with-symbol").unwrap();
@@ -21,14 +17,13 @@ fn compile(path: &Path) -> Vec<Artifact> {
 }
 
 fn text(files: &[Artifact], kind: ArtifactKind) -> String {
-    let file = files.iter().find(|f| f.kind == kind).unwrap();
-    String::from_utf8(file.contents.clone()).unwrap()
+    descriptions::one(files.to_vec(), kind).1
 }
 
 #[test]
 fn the_symbol_is_beside_the_gsd_and_the_gsdml() {
     // md810dp.toml names symbols/md810dp.png.
-    let path = Path::new(MANIFEST).join("descriptions/md810dp.toml");
+    let path = support::checkout("descriptions/md810dp.toml");
     let files = compile(&path);
     let bitmaps: Vec<(&str, &[u8])> = files
         .iter()
@@ -66,7 +61,7 @@ fn the_symbol_is_beside_the_gsd_and_the_gsdml() {
 /// Without a symbol, neither file names one.
 #[test]
 fn no_symbol_no_bitmap() {
-    let files = compile(&Path::new(MANIFEST).join("tests/fixtures/valid/no_warnings.toml"));
+    let files = compile(&support::checkout("tests/fixtures/valid/no_warnings.toml"));
     assert!(files.iter().all(|f| f.kind != ArtifactKind::DeviceSymbol));
     assert!(!text(&files, ArtifactKind::Gsd).contains("Bitmap_Device"));
     assert!(!text(&files, ArtifactKind::Gsdml).contains("Graphic"));

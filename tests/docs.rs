@@ -1,15 +1,7 @@
 //! The complete examples in docs/description.md are descriptions gsdc
 //! accepts and compiles, so the guide cannot drift from the format.
 
-/// The guide's TOML examples, in order.
-fn examples() -> Vec<&'static str> {
-    let guide = include_str!("../docs/description.md");
-    guide
-        .split("```toml\n")
-        .skip(1)
-        .map(|rest| &rest[..rest.find("```").unwrap()])
-        .collect()
-}
+use crate::support::descriptions::guide_examples;
 
 fn compiled(example: &str) -> gsdc::Ir {
     let (ir, diagnostics) = gsdc::load("example.toml", example);
@@ -22,7 +14,7 @@ fn compiled(example: &str) -> gsdc::Ir {
 
 #[test]
 fn the_guides_example_compiles() {
-    let ir = compiled(examples()[0]);
+    let ir = compiled(guide_examples()[0]);
     assert!(ir.profibus.is_some() && ir.profinet.is_some());
 }
 
@@ -30,7 +22,7 @@ fn the_guides_example_compiles() {
 /// bytes of input) and 64 words of RPDO (128 bytes of output).
 #[test]
 fn the_gateway_example_compiles_with_the_manuals_totals() {
-    let ir = compiled(examples()[1]);
+    let ir = compiled(guide_examples()[1]);
     let gateway = ir.gateway.unwrap();
     let in_use = &gateway.nodes[..usize::from(gateway.node_count.default)];
     let words = |direction| -> u16 {

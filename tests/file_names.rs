@@ -3,20 +3,10 @@
 //! ASCII letters, digits and `_`, so `Müller.toml` builds and a newline in a
 //! name cannot start a line of its own in a GSD.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use crate::support::{self, descriptions, file_names, stderr};
+use std::path::Path;
 
 const MD810: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions/md810dp.toml");
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gsdc-file-names-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// Builds the MD810 description copied to `dir/<file_name>`; the names of
 /// the files written.
@@ -25,8 +15,7 @@ fn build_as(dir: &Path, file_name: &str) -> Vec<String> {
     std::fs::copy(MD810, &description).unwrap();
     descriptions::copy_symbols(dir);
     let out = dir.join("out");
-    let output = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("build")
+    let output = support::gsdc_command(["build"])
         .arg(&description)
         .arg("--out")
         .arg(&out)
@@ -36,14 +25,9 @@ fn build_as(dir: &Path, file_name: &str) -> Vec<String> {
         output.status.code(),
         Some(0),
         "{file_name:?}: {}",
-        String::from_utf8_lossy(&output.stderr)
+        stderr(&output)
     );
-    let mut names: Vec<String> = std::fs::read_dir(&out)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    names.sort();
-    names
+    file_names(&out)
 }
 
 #[test]
@@ -53,7 +37,7 @@ fn a_name_outside_ascii_or_with_a_newline_gives_valid_files() {
         ("a\nb.toml", "a_b.toml", "a_b"),
         ("x`y\\z.toml", "x_y_z.toml", "x_y_z"),
     ] {
-        let dir = scratch(stem);
+        let dir = support::scratch(stem);
         let names = build_as(&dir, file_name);
         assert!(names.contains(&format!("{stem}_layout.rs")), "{names:?}");
         assert!(names.contains(&format!("{stem}_layout.h")), "{names:?}");

@@ -3,19 +3,14 @@
 //! limits as default configurations, and what the rules refuse, each at its
 //! line and column.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
+use crate::support::descriptions;
 use gsdc::ir::gateway::{DiagCode, Gateway};
 use gsdc::ir::Direction;
 
 const NAME: &str = "md810-gateway.toml";
 
 fn text() -> String {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("descriptions")
-        .join(NAME);
-    std::fs::read_to_string(path).unwrap()
+    descriptions::shipped_text(NAME)
 }
 
 /// The description with each `from` (found exactly once) replaced.

@@ -1,38 +1,27 @@
-//! The firmware layouts gsdc writes for the shipped descriptions: snapshots
-//! reviewed against the manuals, formatted as rustfmt formats them, and
-//! compiled, linted and run in the no_std crate `tests/firmware`.
+//! The firmware layouts gsdc writes for the shipped descriptions (their
+//! snapshots, reviewed against the manuals, are in outputs.rs): formatted
+//! as rustfmt formats them, and compiled, linted and run in the no_std
+//! crate `tests/firmware`.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-use descriptions::load;
-
-use std::path::{Path, PathBuf};
+use crate::support::{self, descriptions};
+use gsdc::ArtifactKind;
+use std::path::Path;
 use std::process::Command;
 
-use descriptions::SHIPPED as DESCRIPTIONS;
-
-/// The artifact of a shipped description whose name ends in `suffix`: its
-/// file name and text.
-fn artifact(name: &str, suffix: &str) -> (String, String) {
-    let artifacts = gsdc::compile(&load(name)).unwrap();
-    let found = artifacts
-        .into_iter()
-        .find(|a| a.file_name.ends_with(suffix))
-        .unwrap_or_else(|| panic!("{name}: no artifact ending in {suffix}"));
-    (found.file_name, String::from_utf8(found.contents).unwrap())
-}
-
-fn layout(name: &str) -> (String, String) {
-    artifact(name, "_layout.rs")
+/// The file of `kind` a shipped description gives: its name and text.
+fn artifact(name: &str, kind: ArtifactKind) -> (String, String) {
+    descriptions::one(gsdc::compile(&descriptions::load(name)).unwrap(), kind)
 }
 
 /// Every description gives the same support module, with every part
 /// inlined once as a module of its own.
 #[test]
 fn the_support_module_is_one_for_all_and_inlines_its_parts() {
-    let support = artifact(DESCRIPTIONS[0], "gsdc_support.rs");
-    for name in &DESCRIPTIONS[1..] {
-        assert_eq!(artifact(name, "gsdc_support.rs"), support, "{name}");
+    let shipped = descriptions::shipped();
+    let support = artifact(&shipped[0], ArtifactKind::RustSupport);
+    assert_eq!(support.0, "gsdc_support.rs");
+    for name in &shipped[1..] {
+        assert_eq!(artifact(name, ArtifactKind::RustSupport), support, "{name}");
     }
     let text = support.1;
     for part in [
@@ -51,49 +40,17 @@ fn the_support_module_is_one_for_all_and_inlines_its_parts() {
     assert!(text.contains("pub struct PkwTelegram<const PZD: usize, const BYTES: usize>"));
 }
 
-/// A directory of this test's own under the target directory.
-fn scratch_dir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-#[test]
-fn md810dp_layout_snapshot() {
-    insta::assert_snapshot!("md810dp_layout.rs", layout("md810dp.toml").1);
-}
-
-#[test]
-fn mv810_pnet02_layout_snapshot() {
-    insta::assert_snapshot!("mv810_pnet02_layout.rs", layout("mv810-pnet02.toml").1);
-}
-
-#[test]
-fn powtran_9kdp1_layout_snapshot() {
-    insta::assert_snapshot!("9kdp1_layout.rs", layout("9kdp1.toml").1);
-}
-
-#[test]
-fn md810_gateway_layout_snapshot() {
-    insta::assert_snapshot!("md810_gateway_layout.rs", layout("md810-gateway.toml").1);
-}
-
 /// Each layout is exactly what rustfmt makes of it. The files are checked
 /// in a directory of their own, so no rustfmt.toml of the project applies.
 #[test]
 fn layouts_are_formatted_as_rustfmt_formats_them() {
-    let dir = scratch_dir("rustfmt-check");
-    let support = artifact(DESCRIPTIONS[0], "gsdc_support.rs");
+    let dir = support::scratch("rustfmt-check");
+    let support = artifact(&descriptions::shipped()[0], ArtifactKind::RustSupport);
     // Every shipped description's layout and every valid fixture's (the
     // PROFIdrive card's among them), and the support module.
-    let layouts = descriptions::all_valid().into_iter().map(|(_, ir)| {
-        let file = gsdc::compile(&ir)
-            .unwrap()
-            .into_iter()
-            .find(|a| a.kind == gsdc::ArtifactKind::RustLayout)
-            .unwrap();
-        (file.file_name, String::from_utf8(file.contents).unwrap())
-    });
+    let layouts = descriptions::all_valid()
+        .into_iter()
+        .map(|(_, ir)| descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::RustLayout));
     for (file_name, text) in layouts.chain([support]) {
         let path = dir.join(&file_name);
         std::fs::write(&path, text).unwrap();
@@ -117,8 +74,10 @@ fn layouts_are_formatted_as_rustfmt_formats_them() {
 /// it again when a description or a symbol it names changes.
 #[test]
 fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
-    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/firmware");
-    let target_dir = scratch_dir("firmware-target");
+    let crate_dir = support::checkout("tests/firmware");
+    // Kept from run to run, as a target directory is: cargo rebuilds what
+    // changed.
+    let target_dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("firmware-target");
     for args in [
         &["test", "--quiet"][..],
         &["clippy", "--quiet", "--all-targets", "--", "-D", "warnings"],
@@ -146,13 +105,12 @@ fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
         }
     }
     let reruns = build_script_output(&target_dir);
-    let descriptions = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions");
-    for name in DESCRIPTIONS {
+    for name in descriptions::shipped() {
         assert!(
             reruns.contains(&format!("descriptions/{name}\n")),
             "{reruns}"
         );
-        let text = std::fs::read_to_string(descriptions.join(name)).unwrap();
+        let text = descriptions::shipped_text(&name);
         let symbol = text
             .lines()
             .find_map(|l| l.strip_prefix("symbol = \""))

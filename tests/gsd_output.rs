@@ -1,50 +1,34 @@
-//! The GSD files gsdc writes for the shipped descriptions: snapshots
-//! reviewed against the manuals, an independent parser's reading compared
-//! with the IR, and determinism.
+//! The GSD files gsdc writes for the shipped descriptions (their
+//! snapshots, reviewed against the manuals, are in outputs.rs): ASCII,
+//! CRLF and 80 columns, an independent parser's reading compared with the
+//! IR, and determinism.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-use descriptions::load;
-
+use crate::support::descriptions::{self, load};
 use gsd_parser::{PrmBuilder, PrmValueConstraint, UserPrmDataType};
 use gsdc::ir::profibus::{PrmType, PrmValue, Profibus};
 use gsdc::ir::{Allowed, Ir};
+use gsdc::ArtifactKind;
 use std::path::Path;
 
-const DESCRIPTIONS: [&str; 3] = ["md810dp.toml", "9kdp1.toml", "md810-gateway.toml"];
+/// The shipped descriptions with a PROFIBUS part, each with its IR.
+fn with_profibus() -> Vec<(String, Ir)> {
+    let mut found = descriptions::load_shipped();
+    found.retain(|(_, ir)| ir.profibus.is_some());
+    assert!(!found.is_empty());
+    found
+}
 
 fn gsd_of(ir: &Ir) -> (String, &Profibus) {
-    let artifacts = gsdc::compile(ir).unwrap();
     let profibus = ir.profibus.as_ref().unwrap();
-    let gsd = artifacts
-        .iter()
-        .find(|a| a.file_name == profibus.file_name)
-        .expect("a GSD artifact");
-    (String::from_utf8(gsd.contents.clone()).unwrap(), profibus)
-}
-
-#[test]
-fn md810dp_gsd_snapshot() {
-    let (gsd, _) = gsd_of(&load("md810dp.toml"));
-    insta::assert_snapshot!("MD810DP.GSD", gsd.replace("\r\n", "\n"));
-}
-
-#[test]
-fn powtran_9kdp1_gsd_snapshot() {
-    let (gsd, _) = gsd_of(&load("9kdp1.toml"));
-    insta::assert_snapshot!("9KDP1.GSD", gsd.replace("\r\n", "\n"));
-}
-
-#[test]
-fn md810_gateway_gsd_snapshot() {
-    let (gsd, _) = gsd_of(&load("md810-gateway.toml"));
-    insta::assert_snapshot!("MD810GW.GSD", gsd.replace("\r\n", "\n"));
+    let (file_name, gsd) = descriptions::one(gsdc::compile(ir).unwrap(), ArtifactKind::Gsd);
+    assert_eq!(file_name, profibus.file_name);
+    (gsd, profibus)
 }
 
 #[test]
 fn gsd_files_are_ascii_crlf_and_at_most_80_columns() {
-    for name in DESCRIPTIONS {
-        let (gsd, _) = gsd_of(&load(name));
+    for (name, ir) in with_profibus() {
+        let (gsd, _) = gsd_of(&ir);
         assert!(gsd.is_ascii(), "{name}");
         assert!(gsd.ends_with("\r\n"), "{name}");
         for line in gsd.split_terminator("\r\n") {
@@ -56,9 +40,9 @@ fn gsd_files_are_ascii_crlf_and_at_most_80_columns() {
 
 #[test]
 fn two_builds_give_identical_bytes() {
-    for name in DESCRIPTIONS {
-        let first = gsdc::compile(&load(name)).unwrap();
-        let second = gsdc::compile(&load(name)).unwrap();
+    for (name, _) in with_profibus() {
+        let first = gsdc::compile(&load(&name)).unwrap();
+        let second = gsdc::compile(&load(&name)).unwrap();
         assert_eq!(first, second, "{name}");
     }
 }
@@ -143,8 +127,7 @@ fn parsed_params(prm: &gsd_parser::UserPrmData) -> Vec<ParsedParam> {
 /// telegram's length and default bytes.
 #[test]
 fn gsd_parser_reads_what_the_ir_says() {
-    for name in DESCRIPTIONS {
-        let ir = load(name);
+    for (name, ir) in with_profibus() {
         let (text, profibus) = gsd_of(&ir);
         let parsed = gsd_parser::parser::parse(Path::new(&profibus.file_name), &text)
             .unwrap_or_else(|e| panic!("{name}: gsd-parser rejects the GSD: {e}"));
@@ -205,7 +188,7 @@ fn md810_parameter_telegram_is_status_bytes_then_f0_00_everywhere() {
 /// description states them, and gsd-parser reads the file.
 #[test]
 fn im_and_the_class_2_channel_are_in_the_gsd() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/valid/no_warnings.toml");
+    let path = crate::support::checkout("tests/fixtures/valid/no_warnings.toml");
     let loaded = gsdc::build::load_file(&path, "no_warnings.toml").unwrap();
     assert!(
         loaded.findings.diagnostics.is_empty(),
@@ -232,21 +215,7 @@ fn im_and_the_class_2_channel_are_in_the_gsd() {
 /// gsd-parser reads the bit areas where the IR puts them.
 #[test]
 fn gateway_words_as_bit_areas_share_a_byte_per_slave() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("descriptions/md810-gateway.toml");
-    let text = std::fs::read_to_string(path).unwrap();
-    let packed =
-        ["TPDO", "RPDO"]
-            .iter()
-            .zip(["[0, 3]", "[4, 7]"])
-            .fold(text, |text, (pdo, bits)| {
-                let name = format!("name = \"Slave {{n}} {pdo} words\"\n");
-                text.replacen(
-                    &format!("{name}type = \"Unsigned8\""),
-                    &format!("{name}bits = {bits}"),
-                    1,
-                )
-            });
-    assert_eq!(packed.matches("bits = [").count(), 2, "{packed}");
+    let packed = descriptions::gateway_in_bit_areas();
     let (ir, diagnostics) = descriptions::load_text("md810-gateway.toml", &packed);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
     let (gsd, profibus) = gsd_of(&ir);

@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use crate::support;
 use gsdc::gsd::{self, Arg, Baud, PrmDataType, Value};
 use gsdc::{Diagnostics, Severity};
 
@@ -13,7 +14,7 @@ use gsdc::{Diagnostics, Severity};
 // Corpus
 
 fn corpus_dir() -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus/gsd"))
+    support::shared("corpus/gsd")
 }
 
 /// Every GSD file of the corpus (by name), read as bytes. Fails, never

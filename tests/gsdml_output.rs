@@ -1,28 +1,28 @@
-//! The GSDML files gsdc writes for the shipped descriptions: snapshots
-//! reviewed against the manuals, the file read back with roxmltree and
-//! compared with the IR, and determinism. Validation against PI's schema
-//! lives in its own test.
+//! The GSDML files gsdc writes for the shipped descriptions (their
+//! snapshots, reviewed against the manuals, are in outputs.rs): the file
+//! read back with roxmltree and compared with the IR, and determinism.
+//! Validation against PI's schema lives in xsd.rs.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-use descriptions::load;
-
+use crate::support::descriptions::{self, load};
 use gsdc::ir::profinet::{ModuleKind, ParameterRecord, Profinet};
 use gsdc::ir::{Allowed, Ir};
+use gsdc::ArtifactKind;
 use roxmltree::{Document, Node};
 use std::collections::BTreeSet;
 
-/// The descriptions with a PROFINET part.
-const DESCRIPTIONS: [&str; 2] = ["mv810-pnet02.toml", "md810dp.toml"];
+/// The shipped descriptions with a PROFINET part, each with its IR.
+fn with_profinet() -> Vec<(String, Ir)> {
+    let mut found = descriptions::load_shipped();
+    found.retain(|(_, ir)| ir.profinet.is_some());
+    assert!(!found.is_empty());
+    found
+}
 
 fn gsdml_of(ir: &Ir) -> (String, &Profinet) {
     let profinet = ir.profinet.as_ref().expect("a PROFINET part");
-    let artifacts = gsdc::compile(ir).unwrap();
-    let gsdml = artifacts
-        .iter()
-        .find(|a| a.file_name == profinet.file_name)
-        .expect("a GSDML artifact");
-    (String::from_utf8(gsdml.contents.clone()).unwrap(), profinet)
+    let (file_name, gsdml) = descriptions::one(gsdc::compile(ir).unwrap(), ArtifactKind::Gsdml);
+    assert_eq!(file_name, profinet.file_name);
+    (gsdml, profinet)
 }
 
 fn elements<'a, 'i>(
@@ -51,24 +51,11 @@ fn english<'a>(doc: &'a Document, text_id: &str) -> &'a str {
 }
 
 #[test]
-fn mv810_gsdml_snapshot() {
-    let (gsdml, _) = gsdml_of(&load("mv810-pnet02.toml"));
-    insta::assert_snapshot!("GSDML-V2.32-MEGMEET-MV800-20230830.xml", gsdml);
-}
-
-#[test]
-fn md810_gsdml_snapshot() {
-    let ir = load("md810dp.toml");
-    let (gsdml, profinet) = gsdml_of(&ir);
-    insta::assert_snapshot!(profinet.file_name.as_str(), gsdml);
-}
-
-#[test]
 fn two_builds_give_identical_bytes() {
-    for name in DESCRIPTIONS {
+    for (name, _) in with_profinet() {
         assert_eq!(
-            gsdc::compile(&load(name)).unwrap(),
-            gsdc::compile(&load(name)).unwrap(),
+            gsdc::compile(&load(&name)).unwrap(),
+            gsdc::compile(&load(&name)).unwrap(),
             "{name}"
         );
     }
@@ -95,8 +82,7 @@ fn the_header_names_generator_source_and_fingerprint() {
 /// Each module's ident number, and its IO data both ways, are the IR's.
 #[test]
 fn modules_are_the_irs() {
-    for name in DESCRIPTIONS {
-        let ir = load(name);
+    for (name, ir) in with_profinet() {
         let (text, profinet) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
         let modules: Vec<Node> = elements(&doc, "ModuleItem").collect();
@@ -165,8 +151,8 @@ fn modules_are_the_irs() {
 /// language defines one that nothing uses.
 #[test]
 fn every_text_id_is_defined_in_every_language() {
-    for name in DESCRIPTIONS {
-        let (text, _) = gsdml_of(&load(name));
+    for (name, ir) in with_profinet() {
+        let (text, _) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
         let referenced: BTreeSet<&str> = doc
             .descendants()
@@ -286,8 +272,7 @@ fn mv810_p43_enumerations_have_15_and_26_values() {
 /// is not changeable.
 #[test]
 fn record_refs_fit_their_records() {
-    for name in DESCRIPTIONS {
-        let ir = load(name);
+    for (name, ir) in with_profinet() {
         let (text, profinet) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
         let records_of = |submodule_id: &str| -> Vec<Node> {
@@ -309,7 +294,7 @@ fn record_refs_fit_their_records() {
             };
             assert!(expected.contains(&records.len()), "{name}: {}", module.id);
             assert_eq!(records.len(), module.records.len(), "{name}: {}", module.id);
-            check_records(&ir, &module.records, &records, name);
+            check_records(&ir, &module.records, &records, &name);
         }
     }
 }
@@ -391,8 +376,7 @@ fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &
 /// What the DAP must and must not say, beyond the schema.
 #[test]
 fn the_dap_keeps_the_rules_beyond_the_schema() {
-    for name in DESCRIPTIONS {
-        let ir = load(name);
+    for (name, ir) in with_profinet() {
         let (text, profinet) = gsdml_of(&ir);
         let doc = Document::parse(&text).unwrap();
         let dap = elements(&doc, "DeviceAccessPointItem").next().unwrap();
@@ -478,7 +462,7 @@ fn mutate(text: &str, from: &str, to: &str) -> String {
     text.replacen(from, to, 1)
 }
 
-/// The fixture of a PROFIdrive card (tests/fixtures/valid/profidrive.toml).
+/// A valid fixture (tests/fixtures/valid/).
 fn fixture(name: &str) -> Ir {
     descriptions::load_from("tests/fixtures/valid", name)
 }

@@ -3,16 +3,9 @@
 
 use std::collections::BTreeMap;
 
+use crate::support::{self, descriptions, xsd};
 use gsdc::gsdml::{check, decode};
 use gsdc::Diagnostic;
-
-#[path = "common/xsd.rs"]
-mod xsd;
-
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
-const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
 
 // ---------------------------------------------------------------------------
 // Corpus
@@ -20,9 +13,12 @@ const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
 /// The decoded `.xml` files of a corpus folder, by name. A missing corpus
 /// fails the test: it must not pass by checking nothing.
 fn corpus(folder: &str) -> Vec<(String, String)> {
-    let path = format!("{CORPUS}/{folder}");
+    let path = support::shared("corpus").join(folder);
     let entries = std::fs::read_dir(&path).unwrap_or_else(|e| {
-        panic!("the corpus folder {path} is missing ({e}); the tests read ../shared/corpus")
+        panic!(
+            "the corpus folder {} is missing ({e}); the tests read ../shared/corpus",
+            path.display()
+        )
     });
     let mut files: Vec<(String, String)> = entries
         .map(|entry| entry.expect("readable corpus folder").path())
@@ -37,7 +33,7 @@ fn corpus(folder: &str) -> Vec<(String, String)> {
         })
         .collect();
     files.sort();
-    assert!(!files.is_empty(), "no .xml files in {path}");
+    assert!(!files.is_empty(), "no .xml files in {}", path.display());
     files
 }
 
@@ -141,7 +137,7 @@ fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
     let files = generated_gsdml();
     assert_eq!(
         files.len(),
-        4,
+        5,
         "the shipped PROFINET descriptions and fixtures"
     );
     for (name, text) in &files {

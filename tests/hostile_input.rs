@@ -7,23 +7,12 @@
 //! under a second, and [`HANG`] is set for a debug build on a busy 2-core
 //! machine.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use crate::support::{self, scratch, CHECKOUT as MANIFEST};
+use std::path::Path;
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
 const HANG: Duration = Duration::from_secs(20);
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
-
-/// A fresh directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("hostile-input")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 struct Run {
     code: Option<i32>,
@@ -34,8 +23,7 @@ struct Run {
 /// Runs gsdc in `dir`; killed, and the test failed, after [`HANG`].
 fn gsdc(dir: &Path, args: &[&str]) -> Run {
     let (out, err) = (dir.join("gsdc.out"), dir.join("gsdc.err"));
-    let mut child = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(args)
+    let mut child = support::gsdc_command(args)
         .current_dir(dir)
         .stdout(std::fs::File::create(&out).unwrap())
         .stderr(std::fs::File::create(&err).unwrap())
@@ -70,7 +58,7 @@ fn description_with(line: &str) -> String {
 }
 
 fn mkfifo(path: &Path) {
-    let made = Command::new("mkfifo")
+    let made = std::process::Command::new("mkfifo")
         .arg(path)
         .status()
         .expect("mkfifo runs");

@@ -6,10 +6,9 @@
 //! description reach E900 ("a bug in gsdc"). The limits are read here from
 //! the schema file itself, so the test holds the loader to the file.
 
+use crate::support::{descriptions::copy_symbols, scratch, CHECKOUT as MANIFEST};
 use std::path::Path;
 use toml::{Table, Value};
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
 
 /// What the schema says of `keyword`: its type and the fields of limits.
 fn schema(keyword: &str) -> Table {
@@ -162,14 +161,8 @@ fn every_number_that_becomes_a_keyword_is_held_to_the_keywords_range() {
     // Of a description without DPV1, which needs revision 3 or later.
     let text =
         std::fs::read_to_string(Path::new(MANIFEST).join("descriptions/9kdp1.toml")).unwrap();
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hostile-limits");
-    std::fs::create_dir_all(dir.join("symbols")).unwrap();
-    let symbol = "symbols/9kdp1.png";
-    std::fs::copy(
-        Path::new(MANIFEST).join("descriptions").join(symbol),
-        dir.join(symbol),
-    )
-    .unwrap();
+    let dir = scratch("gsd-revision");
+    copy_symbols(&dir);
     let text = text.replacen("[profibus]\n", "[profibus]\ngsd_revision = 5\n", 1);
     std::fs::write(dir.join("9kdp1.toml"), text).unwrap();
     let folder = dir.to_str().unwrap();
@@ -213,8 +206,7 @@ fn every_string_that_becomes_a_keyword_is_held_to_the_keywords_length() {
                 "[profibus]\nimplementation_type = \"I\"\n",
                 1,
             );
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("hostile-strings");
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = scratch("strings");
         std::fs::write(dir.join(name), text).unwrap();
         let folder = dir.to_str().unwrap();
         let try_len = |n: usize| {

@@ -16,25 +16,21 @@
 //!    The layouts of the mutations that change a text compile: all the
 //!    Rust layouts in one crate, each C layout in a translation unit.
 //! 2. Every file two descriptions build into one directory can be used
-//!    together: all the C layouts in one translation unit, all the Rust
-//!    layouts in one crate, for every shipped description and valid
-//!    fixture under every stem of [`STEMS`] paired with another.
-//!
-//! The C names of some pairs collide today; the fix is the C emitter's, in
-//! progress elsewhere (issue 26's C-name items). Those cases, and only
-//! those, are listed as expected failures ([`KNOWN_C_COLLISIONS`],
-//! [`KNOWN_E900`]): each must still fail, so that the test says when the
-//! fix lands and the list is to be emptied.
+//!    together: all the C layouts in one translation unit (and no macro
+//!    defined by two of them: an include guard of one name compiles
+//!    without a word and loses the second header), all the Rust layouts in
+//!    one crate, for every shipped description and valid fixture under
+//!    every stem of [`STEMS`] paired with another; or the build refuses
+//!    them, as it refuses two whose files or C names meet.
 //!
 //! gcc and rustc must be installed (`./scripts/test.sh` installs gcc).
 
+use crate::support::{descriptions, scratch, CHECKOUT as MANIFEST};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use toml::{Table, Value};
-
-const MANIFEST: &str = env!("CARGO_MANIFEST_DIR");
 
 /// File stems a description may have: plain; gsdc's own name, which the
 /// support files carry; ones with no letter, only a `_`, or non-ASCII,
@@ -89,28 +85,7 @@ const ALL: [&str; 3] = [
 /// `text` loaded as `<stem>.toml` beside the shipped descriptions, whose
 /// symbols it may name.
 fn load(stem: &str, text: &str) -> (Option<gsdc::Ir>, gsdc::Diagnostics) {
-    let dir = Path::new(MANIFEST).join("descriptions");
-    gsdc::load_with(&format!("{stem}.toml"), text, &|path: &str| {
-        std::fs::read(dir.join(path)).map_err(|e| e.to_string())
-    })
-}
-
-/// The words of the prefix gsdc gives the C names of a layout of `stem`:
-/// the runs of ASCII letters and digits of the stem, behind `gsdc` when
-/// there is none or the first starts with a digit (as `src/emit/c.rs`).
-fn c_prefix(stem: &str) -> String {
-    let words: Vec<String> = stem
-        .split(|c: char| !c.is_ascii_alphanumeric())
-        .filter(|w| !w.is_empty())
-        .map(str::to_ascii_lowercase)
-        .collect();
-    match words.first() {
-        Some(first) if !first.starts_with(|c: char| c.is_ascii_digit()) => words.join("_"),
-        _ => std::iter::once("gsdc".to_string())
-            .chain(words)
-            .collect::<Vec<_>>()
-            .join("_"),
-    }
+    descriptions::load_text(&format!("{stem}.toml"), text)
 }
 
 // ---------------------------------------------------------------------------
@@ -378,43 +353,22 @@ impl Tally {
     }
 }
 
-/// A gateway's layout under a stem whose C prefix is `gsdc` alone (`gsdc`,
-/// `_`, `ü`) declares names gsdc's support header declares too: E900 until
-/// the C emitter's fix (issue 26, "a gateway whose C prefix is gsdc"). The
-/// mutations keep gateways off those stems; the descriptions as shipped
-/// meet them in [`every_valid_description_compiles_under_every_stem`].
-fn known_e900(source: &str, stem: &str) -> bool {
-    KNOWN_E900.contains(&source) && c_prefix(stem) == "gsdc"
-}
-
-const KNOWN_E900: [&str; 1] = ["descriptions/md810-gateway.toml"];
-
-/// Each shipped description and valid fixture under each stem: it
-/// compiles, but for the known collisions, which must still fail.
+/// Each shipped description and valid fixture under each stem compiles:
+/// a gateway's layout under a stem whose C prefix is `gsdc` alone (`gsdc`,
+/// `_`, `ü`) declared the names of gsdc's support header, E900 (issue 26).
 #[test]
 fn every_valid_description_compiles_under_every_stem() {
-    let mut unexpected = Vec::new();
-    let mut fixed = Vec::new();
+    let mut failures = Vec::new();
     for source in sources(&VALID) {
         for stem in STEMS {
             let (ir, diagnostics) = load(stem, &source.text);
             let ir = ir.unwrap_or_else(|| panic!("{} as {stem}: {diagnostics:?}", source.name));
-            match (gsdc::compile(&ir), known_e900(&source.name, stem)) {
-                (Ok(_), false) => {}
-                (Ok(_), true) => fixed.push(format!("{} as {stem}.toml", source.name)),
-                (Err(problems), true) if problems.iter().all(|d| d.code == "E900") => {}
-                (Err(problems), _) => {
-                    unexpected.push(format!("{} as {stem}.toml: {problems:?}", source.name))
-                }
+            if let Err(problems) = gsdc::compile(&ir) {
+                failures.push(format!("{} as {stem}.toml: {problems:?}", source.name));
             }
         }
     }
-    assert_eq!(unexpected, Vec::<String>::new());
-    assert_eq!(
-        fixed,
-        Vec::<String>::new(),
-        "these compile now: the C emitter's fix landed; empty KNOWN_E900"
-    );
+    assert_eq!(failures, Vec::<String>::new());
 }
 
 #[test]
@@ -488,13 +442,9 @@ fn mutate(sources: &[(usize, &Source)], layouts: usize) -> Tally {
         let document = Value::Table(table);
         let mut found = Vec::new();
         values(&document, &mut Vec::new(), &mut found);
-        let is_gateway = document.get("gateway").is_some();
         for (leaf, (path, value)) in found.iter().enumerate() {
             let turn = index * 7919 + leaf;
-            let mut stem = STEMS[turn % STEMS.len()];
-            if is_gateway && c_prefix(stem) == "gsdc" {
-                stem = "card"; // KNOWN_E900
-            }
+            let stem = STEMS[turn % STEMS.len()];
             for (shown, replacement) in
                 replacements(stem, &document, path, value, turn, share, &strings, &limits)
             {
@@ -519,15 +469,6 @@ const MAX_MUTATED_LAYOUTS: usize = 150;
 
 // ---------------------------------------------------------------------------
 // Compiling layouts.
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("hostile-properties")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// Compiles `unit`, a C translation unit, in `dir` as C99 with every
 /// warning an error; the compiler's complaint if it fails.
@@ -639,32 +580,6 @@ fn compile_layouts(sets: &[(String, Vec<gsdc::Artifact>)]) {
 // ---------------------------------------------------------------------------
 // 2. What two descriptions build can be used together.
 
-/// Two descriptions whose C layouts declare names in common, today: the C
-/// emitter's fix is in progress (issue 26: identifier prefixes checked
-/// against every other name a build writes). Each must still fail here;
-/// when one stops failing, the fix has landed: empty the list and drop
-/// [`same_c_prefix`].
-///
-/// `m` and `m_pkw`: a PKW module of the description built as `m` is named
-/// `M_PKW_PZD<n>_...`, as the `PZD<n>` module of the one built as
-/// `m_pkw` is.
-const KNOWN_C_COLLISIONS: [(&str, &str, &str, &str); 7] = [
-    ("md810dp", "m", "md810dp", "m_pkw"),
-    ("md810dp", "m", "no_warnings", "m_pkw"),
-    ("mv810-pnet02", "m", "md810dp", "m_pkw"),
-    ("no_warnings", "m", "md810dp", "m_pkw"),
-    ("mv810-pnet02", "m", "no_warnings", "m_pkw"),
-    ("mv810-pnet02", "m", "profidrive", "m_pkw"),
-    ("no_warnings", "m", "no_warnings", "m_pkw"),
-];
-
-/// Two stems of one C prefix (`gsdc` and `_`: no word of their own) give
-/// two layouts of one include guard and the same names: a known collision
-/// too, until the C emitter's fix.
-fn same_c_prefix(a: &str, b: &str) -> bool {
-    c_prefix(a) == c_prefix(b)
-}
-
 /// A description of the repository under a stem.
 #[derive(Clone, Copy)]
 struct Item<'a> {
@@ -673,44 +588,24 @@ struct Item<'a> {
 }
 
 impl Item<'_> {
-    /// `md810dp`, as [`KNOWN_C_COLLISIONS`] names descriptions.
-    fn description(&self) -> &str {
-        let name = self.source.name.rsplit('/').next().unwrap();
-        name.strip_suffix(".toml").unwrap()
-    }
-
     fn shown(&self) -> String {
         format!("{} as {}.toml", self.source.name, self.stem)
     }
 }
 
-fn known_collision(a: Item, b: Item) -> bool {
-    let listed = |x: Item, y: Item| {
-        KNOWN_C_COLLISIONS.contains(&(x.description(), x.stem, y.description(), y.stem))
-    };
-    listed(a, b) || listed(b, a) || same_c_prefix(a.stem, b.stem)
-}
-
-/// The pairs built: every two stems, with two pairs of descriptions in
-/// turn; and every pair of descriptions under the stems one of whose C
-/// prefixes starts the other's (`m`, `m_pkw`). A gateway is kept off the
-/// stems whose C prefix is `gsdc` alone ([`KNOWN_E900`]).
+/// The pairs built: every two stems, with a pair of descriptions in turn;
+/// and every pair of descriptions under the stems one of whose C
+/// prefixes starts the other's (`m`, `m_pkw`: a PKW module of the first is
+/// named `M_PKW_PZD<n>_...`, as the `PZD<n>` module of the second is).
 fn pairs(sources: &[Source]) -> Vec<(Item<'_>, Item<'_>)> {
     let n = sources.len();
-    let fits = |source: &Source, stem: &str| {
-        !(KNOWN_E900.contains(&source.name.as_str()) && c_prefix(stem) == "gsdc")
-    };
     let mut pairs = Vec::new();
     let mut turn = 0;
     for (i, a) in STEMS.iter().enumerate() {
         for b in &STEMS[i + 1..] {
-            for _ in 0..2 {
-                turn += 1;
-                let (x, y) = (&sources[turn % n], &sources[(turn * 7 + 3) % n]);
-                if fits(x, a) && fits(y, b) {
-                    pairs.push((Item { source: x, stem: a }, Item { source: y, stem: b }));
-                }
-            }
+            turn += 1;
+            let (x, y) = (&sources[turn % n], &sources[(turn * 5 + 3) % n]);
+            pairs.push((Item { source: x, stem: a }, Item { source: y, stem: b }));
         }
     }
     for x in sources {
@@ -732,7 +627,8 @@ fn pairs(sources: &[Source]) -> Vec<(Item<'_>, Item<'_>)> {
 
 /// What a build of two descriptions gave.
 enum Built {
-    /// The build refused them: they give a file of one name.
+    /// The build refused them: they give a file, or declare a C name, of
+    /// one name.
     Refused,
     /// The directory it wrote.
     Written(PathBuf),
@@ -743,26 +639,16 @@ fn build(dir: &Path, a: Item, b: Item) -> Built {
     let _ = std::fs::remove_dir_all(dir);
     std::fs::create_dir_all(dir.join("a")).unwrap();
     std::fs::create_dir_all(dir.join("b")).unwrap();
-    let symbols = Path::new(MANIFEST).join("descriptions/symbols");
     let mut args = vec!["build".to_string()];
     for (side, item) in [("a", a), ("b", b)] {
         let folder = dir.join(side);
-        std::fs::create_dir_all(folder.join("symbols")).unwrap();
-        for entry in std::fs::read_dir(&symbols).unwrap() {
-            let path = entry.unwrap().path();
-            std::fs::copy(
-                &path,
-                folder.join("symbols").join(path.file_name().unwrap()),
-            )
-            .unwrap();
-        }
+        descriptions::copy_symbols(&folder);
         let file = folder.join(format!("{}.toml", item.stem));
         std::fs::write(&file, &item.source.text).unwrap();
         args.push(file.to_string_lossy().into_owned());
     }
     let out = dir.join("out");
-    let output = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .args(&args)
+    let output = crate::support::gsdc_command(&args)
         .arg("--out")
         .arg(&out)
         .output()
@@ -770,7 +656,7 @@ fn build(dir: &Path, a: Item, b: Item) -> Built {
     let stderr = String::from_utf8_lossy(&output.stderr);
     match output.status.code() {
         Some(0) => Built::Written(out),
-        Some(1) if stderr.contains("both give") => Built::Refused,
+        Some(1) if stderr.contains("may come from one description only") => Built::Refused,
         _ => panic!("gsdc build {} {}:\n{stderr}", a.shown(), b.shown()),
     }
 }
@@ -840,8 +726,8 @@ fn what_two_descriptions_build_can_be_used_together() {
     let dir = scratch("pairs");
     let rust_dir = scratch("pairs-rust");
     let mut cache = BTreeMap::new();
-    let mut rust_layouts: BTreeMap<Vec<u8>, String> = BTreeMap::new();
-    let (mut unexpected, mut fixed, mut refused, mut built) = (Vec::new(), Vec::new(), 0, 0);
+    let mut rust_layouts: BTreeMap<String, (String, String)> = BTreeMap::new();
+    let (mut conflicts, mut refused, mut built) = (Vec::new(), 0, 0);
     for (a, b) in pairs(&sources) {
         let out = match build(&dir.join("build"), a, b) {
             Built::Refused => {
@@ -855,33 +741,27 @@ fn what_two_descriptions_build_can_be_used_together() {
             let path = entry.unwrap().path();
             let name = path.file_name().unwrap().to_string_lossy().into_owned();
             if name.ends_with("_layout.rs") {
-                let contents = std::fs::read(&path).unwrap();
+                // Once per code: the stems change only the header comment.
+                let contents = std::fs::read_to_string(&path).unwrap();
+                let code: String = contents.lines().filter(|l| !l.starts_with("//")).collect();
                 let module = format!("m{}", rust_layouts.len());
-                rust_layouts.entry(contents).or_insert(module);
+                rust_layouts.entry(code).or_insert((module, contents));
             } else if name == "gsdc_support.rs" {
                 std::fs::copy(&path, rust_dir.join(name)).unwrap();
             }
         }
-        let pair = format!("{} + {}", a.shown(), b.shown());
-        match (c_conflict(&out, &mut cache), known_collision(a, b)) {
-            (None, false) | (Some(_), true) => {}
-            (None, true) => fixed.push(pair),
-            (Some(why), false) => unexpected.push(format!("{pair}:\n{why}")),
+        if let Some(why) = c_conflict(&out, &mut cache) {
+            conflicts.push(format!("{} + {}:\n{why}", a.shown(), b.shown()));
         }
     }
     eprintln!(
-        "{built} pairs built, {refused} refused (a file of one name), {} Rust layouts",
+        "{built} pairs built, {refused} refused (a file or a C name of one name), {} Rust layouts",
         rust_layouts.len()
     );
-    assert!(unexpected.is_empty(), "{}", unexpected.join("\n"));
-    assert!(
-        fixed.is_empty(),
-        "these pairs can be used together now: the C emitter's fix landed; empty KNOWN_C_COLLISIONS and same_c_prefix:\n{}",
-        fixed.join("\n")
-    );
+    assert!(conflicts.is_empty(), "{}", conflicts.join("\n"));
     let modules: Vec<(String, String)> = rust_layouts
-        .into_iter()
-        .map(|(contents, module)| {
+        .into_values()
+        .map(|(module, contents)| {
             let file = format!("{module}.rs");
             std::fs::write(rust_dir.join(&file), contents).unwrap();
             (module, file)

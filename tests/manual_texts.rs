@@ -14,9 +14,8 @@
 //!   `x` for the number (`PZDx(master->slaver)`, MD810 1.6 step 5);
 //! - `…` marks words of the manual left out: each part must occur, in order.
 
+use crate::support::{self, descriptions};
 use toml::{Table, Value};
-
-const SEEDS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/seeds/");
 
 /// Each shipped description and the seed of its manual.
 const DESCRIPTIONS: [(&str, &str); 4] = [
@@ -194,19 +193,16 @@ fn unquoted(description: &str, manual: &str) -> (Vec<String>, usize) {
     (failures, checked.len())
 }
 
-fn read(path: &str) -> String {
-    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"))
-}
-
 fn description(name: &str) -> String {
-    read(&format!(
-        "{}/descriptions/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    ))
+    descriptions::shipped_text(name)
 }
 
+/// The running text of the manual `../shared/seeds/<seed>`.
 fn manual(seed: &str) -> String {
-    running_text(&read(&format!("{SEEDS}{seed}")))
+    let path = support::shared("seeds").join(seed);
+    running_text(
+        &std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display())),
+    )
 }
 
 #[test]

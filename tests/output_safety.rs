@@ -4,14 +4,15 @@
 //! or temporary file is left behind; a file already there is never replaced
 //! by a broken one.
 //!
-//! A read-only and a full file system are real tmpfs mounts when the tests
-//! may mount (as root); elsewhere those cases are skipped here and covered
-//! by the failing-disk unit tests in `src/output.rs`. Permission bits are
-//! not used: root ignores them.
+//! A read-only and a full file system are real tmpfs mounts, an
+//! immutable file is `chattr +i`, builds in PID namespaces run under
+//! `unshare`, and a build is killed in its `fsync` by `strace`: all need
+//! root (CI runs as root, `scripts/test.sh` installs the tools). Where they
+//! cannot run, those cases are left to the failing-disk unit tests in
+//! `src/output.rs` and the kills at random times; under CI they fail.
+//! Permission bits are not used: root ignores them.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-
+use crate::support::{self, descriptions, file_names, stderr};
 use gsdc::build::{write_files, Outcome};
 use gsdc::{Artifact, ArtifactKind};
 use std::path::{Path, PathBuf};
@@ -30,26 +31,15 @@ const MD810_FILES: [&str; 8] = [
     "gsdc_support.h",
 ];
 
-fn scratch(name: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("gsdc-output-safety-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// `gsdc build <description> --out <out>`, not yet started.
+fn build_command(description: &Path, out: &Path) -> Command {
+    let mut command = support::gsdc_command(["build"]);
+    command.arg(description).arg("--out").arg(out);
+    command
 }
 
 fn build(description: &Path, out: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("build")
-        .arg(description)
-        .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
+    build_command(description, out).output().unwrap()
 }
 
 /// Exit 2, and stderr names `path` and says `os_error`.
@@ -62,15 +52,6 @@ fn assert_io_error(output: &Output, path: &Path, os_error: &str) {
         "no {} and {os_error:?} in {stderr}",
         path.display()
     );
-}
-
-fn names_in(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .collect();
-    names.sort();
-    names
 }
 
 /// The MD810 files with stale contents, as a previous release left them.
@@ -86,7 +67,7 @@ fn assert_untouched(dir: &Path) {
     let mut expected = MD810_FILES.map(String::from).to_vec();
     expected.sort();
     assert_eq!(
-        names_in(dir),
+        file_names(dir),
         expected,
         "a temporary or partial file is left"
     );
@@ -99,19 +80,21 @@ fn assert_untouched(dir: &Path) {
 }
 
 /// A tmpfs mounted for one test, unmounted when dropped; `None` where this
-/// process may not mount.
+/// process may not mount (and under CI, a failure).
 struct Tmpfs(PathBuf);
 
 impl Tmpfs {
     fn mount(dir: &Path, size: &str) -> Option<Tmpfs> {
         let options = format!("size={size}");
-        let mounted = Command::new("mount")
-            .args(["-t", "tmpfs", "-o", &options, "tmpfs"])
-            .arg(dir)
-            .output()
-            .is_ok_and(|o| o.status.success());
+        let mounted = support::succeeds(
+            Command::new("mount")
+                .args(["-t", "tmpfs", "-o", &options, "tmpfs"])
+                .arg(dir),
+        );
         if !mounted {
-            eprintln!("cannot mount a tmpfs here: the case is left to src/output.rs's unit tests");
+            support::cannot_run(
+                "cannot mount a tmpfs here (it takes root): the case is left to src/output.rs's unit tests",
+            );
         }
         mounted.then(|| Tmpfs(dir.to_path_buf()))
     }
@@ -134,11 +117,11 @@ impl Drop for Tmpfs {
 
 #[test]
 fn a_missing_output_directory_is_created() {
-    let dir = scratch("missing");
+    let dir = support::scratch("missing");
     let out = dir.join("a/b/dist");
     let output = build(Path::new(MD810), &out);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
-    assert_eq!(names_in(&out).len(), MD810_FILES.len());
+    assert_eq!(file_names(&out).len(), MD810_FILES.len());
 
     let files = [Artifact::new(ArtifactKind::Gsd, "X.GSD", b"x".to_vec())];
     let lib_out = dir.join("c/d");
@@ -147,12 +130,11 @@ fn a_missing_output_directory_is_created() {
         [Outcome::Written]
     );
     assert_eq!(std::fs::read(lib_out.join("X.GSD")).unwrap(), b"x");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn an_output_directory_under_a_file_cannot_be_created() {
-    let dir = scratch("under-file");
+    let dir = support::scratch("under-file");
     std::fs::write(dir.join("file"), b"").unwrap();
     let out = dir.join("file/dist");
     let output = build(Path::new(MD810), &out);
@@ -164,14 +146,13 @@ fn an_output_directory_under_a_file_cannot_be_created() {
         e.contains(&out.display().to_string()) && e.contains("os error 20"),
         "{e}"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// `dist/MD810DP.GSD` is a directory: the error names it, and neither it
 /// nor the files that could have been written are changed.
 #[test]
 fn an_output_path_that_is_a_directory_changes_nothing() {
-    let dir = scratch("is-dir");
+    let dir = support::scratch("is-dir");
     old_files(&dir);
     let gsd = dir.join(MD810_FILES[0]);
     std::fs::remove_file(&gsd).unwrap();
@@ -180,16 +161,15 @@ fn an_output_path_that_is_a_directory_changes_nothing() {
     let output = build(Path::new(MD810), &dir);
     assert_io_error(&output, &gsd, "Is a directory (os error 21)");
     assert!(stderr(&output).contains("no file was changed"));
-    assert!(names_in(&gsd) == ["keep"]);
+    assert!(file_names(&gsd) == ["keep"]);
     std::fs::remove_dir_all(&gsd).unwrap();
     std::fs::write(&gsd, format!("old {}", MD810_FILES[0])).unwrap();
     assert_untouched(&dir);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn a_description_that_is_a_symlink_loop_exits_2() {
-    let dir = scratch("loop");
+    let dir = support::scratch("loop");
     let description = dir.join("loop.toml");
     std::os::unix::fs::symlink("loop.toml", &description).unwrap();
     let output = build(&description, &dir.join("out"));
@@ -202,12 +182,11 @@ fn a_description_that_is_a_symlink_loop_exits_2() {
 
     let e = gsdc::build::generate(&description, dir.join("out")).unwrap_err();
     assert!(e.to_string().contains("os error 40"), "{e}");
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 #[test]
 fn a_read_only_output_directory_changes_nothing() {
-    let dir = scratch("read-only");
+    let dir = support::scratch("read-only");
     let Some(fs) = Tmpfs::mount(&dir, "1m") else {
         return;
     };
@@ -217,15 +196,14 @@ fn a_read_only_output_directory_changes_nothing() {
     let first = dir.join(MD810_FILES[0]);
     assert_io_error(&output, &first, "Read-only file system (os error 30)");
     assert_untouched(&dir);
-    drop(fs);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// 64 KiB hold the old files and the new GSD, not the 59 KB GSDML as well.
 #[test]
 fn a_full_disk_changes_nothing_and_leaves_no_partial_file() {
-    let dir = scratch("full");
-    let Some(fs) = Tmpfs::mount(&dir, "64k") else {
+    let dir = support::scratch("full");
+    // Unmounted when the test ends, before the scratch directory goes.
+    let Some(_tmpfs) = Tmpfs::mount(&dir, "64k") else {
         return;
     };
     old_files(&dir);
@@ -238,25 +216,19 @@ fn a_full_disk_changes_nothing_and_leaves_no_partial_file() {
     let e = gsdc::build::generate(MD810, &dir).unwrap_err().to_string();
     assert!(e.contains("os error 28"), "{e}");
     assert_untouched(&dir);
-    drop(fs);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// The GSDML is immutable (`chattr +i`, which binds root too): its rename
 /// fails after the GSD's succeeded, and the error says the GSD was written.
 #[test]
 fn a_failure_after_some_files_were_written_names_them() {
-    let dir = scratch("partly");
+    let dir = support::scratch("partly");
     old_files(&dir);
     let gsdml = dir.join(MD810_FILES[1]);
-    let immutable = Command::new("chattr")
-        .arg("+i")
-        .arg(&gsdml)
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !immutable {
-        eprintln!("chattr +i does not work here: the case is left to src/output.rs's unit tests");
-        std::fs::remove_dir_all(dir).unwrap();
+    if !support::succeeds(Command::new("chattr").arg("+i").arg(&gsdml)) {
+        support::cannot_run(
+            "chattr +i does not work here (it takes root and e2fsprogs): the case is left to src/output.rs's unit tests",
+        );
         return;
     }
     let output = build(Path::new(MD810), &dir);
@@ -280,11 +252,10 @@ fn a_failure_after_some_files_were_written_names_them() {
         );
     }
     assert_eq!(
-        names_in(&dir).len(),
+        file_names(&dir).len(),
         MD810_FILES.len(),
         "a temporary is left"
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// Two versions of the MD810 description, `a/md810dp.toml` and
@@ -298,7 +269,7 @@ struct TwoVersions {
 
 impl TwoVersions {
     fn new(dir: &Path) -> TwoVersions {
-        let text = std::fs::read_to_string(MD810).unwrap();
+        let text = descriptions::shipped_text("md810dp.toml");
         let versions = [
             text.clone(),
             text.replace("min_slave_interval = 1", "min_slave_interval = 2"),
@@ -338,7 +309,7 @@ impl TwoVersions {
     /// Panics on a mixed set, a partial file or a file left over.
     #[track_caller]
     fn version_in(&self, dir: &Path) -> usize {
-        let mut found: Vec<(String, Vec<u8>)> = names_in(dir)
+        let mut found: Vec<(String, Vec<u8>)> = file_names(dir)
             .into_iter()
             .map(|name| {
                 let contents = std::fs::read(dir.join(&name)).unwrap();
@@ -368,7 +339,7 @@ impl TwoVersions {
 /// where a killed build's temporary would be is removed, not followed.
 #[test]
 fn symbolic_links_in_the_output_directory_are_never_written_through() {
-    let dir = scratch("symlink");
+    let dir = support::scratch("symlink");
     let out = dir.join("out");
     std::fs::create_dir_all(&out).unwrap();
     let victim = dir.join("victim");
@@ -395,14 +366,13 @@ fn symbolic_links_in_the_output_directory_are_never_written_through() {
     );
     let mut expected = MD810_FILES.map(String::from).to_vec();
     expected.sort();
-    assert_eq!(names_in(&out), expected);
-    std::fs::remove_dir_all(dir).unwrap();
+    assert_eq!(file_names(&out), expected);
 }
 
 #[test]
 fn a_replaced_file_keeps_its_mode() {
     use std::os::unix::fs::PermissionsExt;
-    let dir = scratch("mode");
+    let dir = support::scratch("mode");
     old_files(&dir);
     let gsd = dir.join(MD810_FILES[0]);
     std::fs::set_permissions(&gsd, std::fs::Permissions::from_mode(0o600)).unwrap();
@@ -411,7 +381,6 @@ fn a_replaced_file_keeps_its_mode() {
     assert_ne!(std::fs::read_to_string(&gsd).unwrap(), "old MD810DP.GSD");
     let mode = std::fs::metadata(&gsd).unwrap().permissions().mode();
     assert_eq!(mode & 0o777, 0o600);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A build into a directory another holds waits for it: while this test
@@ -419,7 +388,7 @@ fn a_replaced_file_keeps_its_mode() {
 /// it is released, gsdc writes.
 #[test]
 fn a_build_waits_for_the_directory_another_build_holds() {
-    let dir = scratch("lock");
+    let dir = support::scratch("lock");
     let versions = TwoVersions::new(&dir);
     let out = dir.join("out");
     assert_eq!(
@@ -428,11 +397,7 @@ fn a_build_waits_for_the_directory_another_build_holds() {
     );
     let held = std::fs::File::open(&out).unwrap();
     held.lock().unwrap();
-    let mut waiting = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-        .arg("build")
-        .arg(&versions.descriptions[1])
-        .arg("--out")
-        .arg(&out)
+    let mut waiting = build_command(&versions.descriptions[1], &out)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
         .spawn()
@@ -443,7 +408,6 @@ fn a_build_waits_for_the_directory_another_build_holds() {
     held.unlock().unwrap();
     assert!(waiting.wait().unwrap().success());
     assert_eq!(versions.version_in(&out), 1);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// Two builds of the two versions into one directory at once, 25 times:
@@ -452,16 +416,15 @@ fn a_build_waits_for_the_directory_another_build_holds() {
 /// process 1, 25 times more.
 #[test]
 fn concurrent_builds_of_different_descriptions_never_mix_their_files() {
-    let dir = scratch("concurrent");
+    let dir = support::scratch("concurrent");
     let versions = TwoVersions::new(&dir);
     let out = dir.join("out");
-    let gsdc = env!("CARGO_BIN_EXE_gsdc");
-    let unshared = Command::new("unshare")
-        .args(["--pid", "--fork", "true"])
-        .output()
-        .is_ok_and(|o| o.status.success());
+    let gsdc = support::GSDC;
+    let unshared = support::succeeds(Command::new("unshare").args(["--pid", "--fork", "true"]));
     if !unshared {
-        eprintln!("unshare --pid does not work here: the builds run without PID namespaces only");
+        support::cannot_run(
+            "unshare --pid does not work here (it takes root): the builds run without PID namespaces only",
+        );
     }
     let wrappers: &[&[&str]] = if unshared {
         &[&[], &["unshare", "--pid", "--fork"]]
@@ -510,7 +473,6 @@ fn concurrent_builds_of_different_descriptions_never_mix_their_files() {
         "the directory held version a {} and b {} times",
         seen[0], seen[1]
     );
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// A build killed in the middle of an `fsync` (strace injects SIGKILL into
@@ -519,7 +481,7 @@ fn concurrent_builds_of_different_descriptions_never_mix_their_files() {
 /// the temporaries, says so, and writes its set whole.
 #[test]
 fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
-    let dir = scratch("killed");
+    let dir = support::scratch("killed");
     let versions = TwoVersions::new(&dir);
     let out = dir.join("out");
     assert_eq!(
@@ -529,7 +491,7 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
     let killed = Command::new("strace")
         .args(["-f", "-qq", "-o", "/dev/null", "-e", "trace=fsync"])
         .args(["-e", "inject=fsync:signal=KILL:when=2"])
-        .arg(env!("CARGO_BIN_EXE_gsdc"))
+        .arg(support::GSDC)
         .arg("build")
         .arg(&versions.descriptions[1])
         .arg("--out")
@@ -541,13 +503,12 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
         o.status.signal() == Some(9) || o.status.code() == Some(128 + 9)
     };
     let Some(killed) = killed.ok().filter(killed_by_sigkill) else {
-        eprintln!(
-            "strace cannot inject a SIGKILL here: the case is left to the kills at random times"
+        support::cannot_run(
+            "strace cannot inject a SIGKILL here (it needs strace and ptrace): the case is left to the kills at random times",
         );
-        std::fs::remove_dir_all(dir).unwrap();
         return;
     };
-    let leftovers: Vec<String> = names_in(&out)
+    let leftovers: Vec<String> = file_names(&out)
         .into_iter()
         .filter(|name| name.contains(".gsdc-"))
         .collect();
@@ -555,7 +516,7 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
         leftovers.len(),
         2,
         "{:?}: {}",
-        names_in(&out),
+        file_names(&out),
         stderr(&killed)
     );
     let after = build(&versions.descriptions[1], &out);
@@ -568,7 +529,6 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
         assert!(stderr(&after).contains(&named), "{}", stderr(&after));
     }
     assert_eq!(versions.version_in(&out), 1);
-    std::fs::remove_dir_all(dir).unwrap();
 }
 
 /// Builds killed at random times, 40 of them, alternating the two
@@ -577,7 +537,7 @@ fn a_build_killed_while_syncing_leaves_temporaries_the_next_build_removes() {
 /// holds its version whole and no temporary.
 #[test]
 fn builds_killed_at_random_times_never_leave_a_partial_file() {
-    let dir = scratch("random-kills");
+    let dir = support::scratch("random-kills");
     let versions = TwoVersions::new(&dir);
     let out = dir.join("out");
     assert_eq!(
@@ -597,11 +557,7 @@ fn builds_killed_at_random_times_never_leave_a_partial_file() {
         state ^= state >> 7;
         state ^= state << 17;
         let delay = duration.mul_f64((state % 1000) as f64 / 1000.0);
-        let mut child = Command::new(env!("CARGO_BIN_EXE_gsdc"))
-            .arg("build")
-            .arg(&versions.descriptions[round % 2])
-            .arg("--out")
-            .arg(&out)
+        let mut child = build_command(&versions.descriptions[round % 2], &out)
             .stdout(std::process::Stdio::null())
             .stderr(std::process::Stdio::null())
             .spawn()
@@ -609,7 +565,7 @@ fn builds_killed_at_random_times_never_leave_a_partial_file() {
         std::thread::sleep(delay);
         let _ = child.kill();
         let _ = child.wait();
-        for name in names_in(&out) {
+        for name in file_names(&out) {
             let contents = std::fs::read(out.join(&name)).unwrap();
             if name.contains(".gsdc-") {
                 left += 1;
@@ -631,5 +587,4 @@ fn builds_killed_at_random_times_never_leave_a_partial_file() {
         Some(0)
     );
     assert_eq!(versions.version_in(&out), 0);
-    std::fs::remove_dir_all(dir).unwrap();
 }

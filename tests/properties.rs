@@ -4,9 +4,7 @@
 //! gsd-parser; compiling twice gives identical bytes. (The compile fuzz
 //! target covers the descriptions that break rules.)
 
-#[path = "common/xsd.rs"]
-mod xsd;
-
+use crate::support::xsd;
 use proptest::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;

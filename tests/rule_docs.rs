@@ -2,25 +2,16 @@
 //! and title, in its order; it holds exactly the codes the source emits; and
 //! every description code has an invalid fixture that shows it.
 
+use crate::support::{self, descriptions};
 use std::collections::BTreeSet;
-use std::path::Path;
 
 /// Codes written as string literals (`"E104"`) anywhere under src/.
 fn codes_in_source() -> BTreeSet<String> {
-    let mut codes = BTreeSet::new();
-    let mut dirs = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("src")];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                dirs.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") && !path.ends_with("src/rules.rs")
-            {
-                codes.extend(literal_codes(&std::fs::read_to_string(path).unwrap()));
-            }
-        }
-    }
-    codes
+    support::rust_files("src")
+        .into_iter()
+        .filter(|path| !path.ends_with("src/rules.rs"))
+        .flat_map(|path| literal_codes(&std::fs::read_to_string(path).unwrap()))
+        .collect()
 }
 
 fn literal_codes(text: &str) -> Vec<String> {
@@ -83,21 +74,15 @@ fn errors_are_e_and_warnings_w() {
 
 #[test]
 fn every_description_code_has_a_fixture() {
-    let fixtures_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/invalid");
-    let expected: BTreeSet<String> = std::fs::read_dir(fixtures_dir)
-        .unwrap()
-        .filter_map(|e| {
-            let text = std::fs::read_to_string(e.unwrap().path()).ok()?;
-            Some(
-                text.lines()
-                    .find_map(|l| l.strip_prefix("# expect: "))?
-                    .trim()
-                    .to_string(),
-            )
+    let expected: BTreeSet<String> = descriptions::invalid_fixtures()
+        .iter()
+        .filter_map(|path| {
+            let text = std::fs::read_to_string(path).unwrap();
+            descriptions::expected_code(&text).map(str::to_string)
         })
         .collect();
-    // E000 needs bytes that are not UTF-8 (tests/cli.rs), E006 a file over
-    // 1 MiB (tests/adversarial.rs); W1xx are warnings.
+    // E000 needs bytes that are not UTF-8 (cli.rs), E006 a file over 1 MiB
+    // (adversarial.rs); W1xx are warnings.
     let uncovered: Vec<String> = codes_in_source()
         .into_iter()
         .filter(|c| c.starts_with("E0") || c.starts_with("E1"))

@@ -3,19 +3,11 @@
 //! broken corpus file at the place that was broken. This proves the harness
 //! that later validates the project's own GSDML.
 
-#[path = "common/descriptions.rs"]
-mod descriptions;
-#[path = "common/xsd.rs"]
-mod xsd;
-
+use crate::support::{self, descriptions, xsd};
 use gsdc::gsdml::decode;
 
-const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
-
 fn read(folder: &str, name: &str) -> String {
-    let path = format!("{CORPUS}/{folder}/{name}");
-    let bytes =
-        std::fs::read(&path).unwrap_or_else(|e| panic!("corpus file {path} is missing ({e})"));
+    let bytes = support::corpus_file(&format!("{folder}/{name}"));
     decode(&bytes)
         .unwrap_or_else(|d| panic!("{name}: {}", d.message))
         .into_owned()
@@ -23,8 +15,7 @@ fn read(folder: &str, name: &str) -> String {
 
 /// (file, whether xmllint accepted it against V2.44) from MANIFEST.tsv.
 fn manifest() -> Vec<(String, bool)> {
-    let path = format!("{CORPUS}/gsdml/MANIFEST.tsv");
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path} is missing ({e})"));
+    let text = String::from_utf8(support::corpus_file("gsdml/MANIFEST.tsv")).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines
         .next()
@@ -113,6 +104,7 @@ fn generated_gsdml_validates_against_the_pi_schema() {
         [
             "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
             "GSDML-V2.32-MEGMEET-MV800-20230830.xml",
+            "GSDML-V2.32-Acme-AX200-20261201-071447.xml",
             "GSDML-V2.32-Acme-X1-20260131.xml",
             "GSDML-V2.32-Acme-X2-20260228.xml",
         ],

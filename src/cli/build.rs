@@ -6,8 +6,8 @@
 //! `crate::output::write_files`).
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
-use crate::build::{merge, Compiler, Config, Refused};
-use crate::output::{on_disk, write_files, Outcome};
+use crate::build::{merge, Clash, Compiler, Config, Datasheet, Refused};
+use crate::output::{existing, lock_shared, stale_files, write_files, Outcome, SharedLock};
 use crate::{Artifact, ArtifactKind, Language};
 use std::path::{Path, PathBuf};
 
@@ -96,22 +96,26 @@ pub fn run(args: &Args) -> Status {
             return Status::UsageOrIo;
         }
     };
-    let files = match compile_all(&mut compiler, &args.descriptions).and_then(merged) {
+    let mut datasheets = Vec::new();
+    let compiled = compile_all(&mut compiler, &args.descriptions, &mut datasheets);
+    let files = match compiled.and_then(merged) {
         Ok(files) => files,
         Err(status) => return status,
     };
     if args.check {
-        check_all(&files, &args.out)
+        check_all(&files, &datasheets, &args.out)
     } else {
         write_all(&files, &args.out, args.prune)
     }
 }
 
 /// The files of every description, with their findings printed, or the
-/// status to exit with when one gave none (after saying why).
+/// status to exit with when one gave none (after saying why); each one's
+/// datasheet, with the description's path, into `datasheets`.
 fn compile_all(
     compiler: &mut Compiler,
     descriptions: &[PathBuf],
+    datasheets: &mut Vec<(PathBuf, Datasheet)>,
 ) -> Result<Vec<(PathBuf, Vec<Artifact>)>, Status> {
     let mut status = Status::Ok;
     let mut denied = false;
@@ -131,6 +135,7 @@ fn compile_all(
                 warn(&rendered.join("\n"));
             }
         }
+        datasheets.extend(compiled.datasheet.map(|d| (path.clone(), d)));
         match compiled.files {
             Ok(files) => sets.push((path.clone(), files)),
             Err(refused) => {
@@ -166,42 +171,93 @@ pub(super) fn display_error(e: &crate::build::BuildError, path: &Path) -> String
 pub(super) fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact>, Status> {
     merge(sets).map_err(|collisions| {
         for c in &collisions {
+            let clash = match &c.clash {
+                Clash::File(name) => Clash::File(display_name(Path::new(name))),
+                names => names.clone(),
+            };
             warn(&format!(
-                "error: {} and {} both give {}, with different contents",
+                "error: {} and {} {clash}",
                 display_name(&c.first),
                 display_name(&c.second),
-                display_name(Path::new(&c.file_name)),
             ));
         }
-        warn("nothing written: each file may come from one description only (rename a file_name, or a description)");
+        warn("nothing written: each file, and each C name, may come from one description only (rename a file_name, or a description)");
         Status::InputErrors
     })
 }
 
 /// `--check`: compares, writes nothing, prints a unified diff per differing
-/// file and names each stale file. What DIR holds is read as one build
-/// left it: a build at work is waited for (`crate::output::on_disk`).
-fn check_all(files: &[Artifact], out: &Path) -> Status {
-    let held = match on_disk(out, files) {
-        Ok(held) => held,
+/// file and names each stale file, and each datasheet in `out` that carries
+/// another fingerprint than its description's. What `out` holds is read
+/// as one build left it: a build at work is waited for ([`read_lock`]).
+fn check_all(files: &[Artifact], datasheets: &[(PathBuf, Datasheet)], out: &Path) -> Status {
+    let lock = match read_lock(out) {
+        Ok(lock) => lock,
+        Err(status) => return status,
+    };
+    let mut status = differing(files, out, difference);
+    match stale_files(out, files, lock.not_locked.is_none()) {
+        Ok(stale) => {
+            for path in &stale {
+                say(&format!(
+                    "stale: {} (gsdc generated it, and no description given gives it)",
+                    display_name(path)
+                ));
+            }
+            if !stale.is_empty() {
+                status = status.max(Status::InputErrors);
+            }
+        }
         Err(e) => {
             warn(&format!("error: cannot read {}: {e}", display_name(out)));
-            return Status::UsageOrIo;
+            status = Status::UsageOrIo;
         }
-    };
-    if let Some(e) = &held.not_locked {
+    }
+    if status == Status::InputErrors {
+        warn(&format!(
+            "out of step: run `gsdc build --prune` without --check to update {}",
+            display_name(out)
+        ));
+    }
+    // Each says how to update it: `gsdc doc`, not a build.
+    for (description, datasheet) in datasheets {
+        status = status.max(datasheet_in_step(description, datasheet, out));
+    }
+    status
+}
+
+/// A shared lock on `out`, for comparing what it holds: a build or `gsdc
+/// doc` writing into it at work is waited for, so that its files are
+/// compared whole and its temporaries are not taken for a killed build's.
+/// On a file system without locks, a warning.
+pub(super) fn read_lock(out: &Path) -> Result<SharedLock, Status> {
+    let lock = lock_shared(out).map_err(|e| {
+        warn(&format!("error: cannot open {}: {e}", display_name(out)));
+        Status::UsageOrIo
+    })?;
+    if let Some(e) = &lock.not_locked {
         warn(&format!(
             "warning: cannot lock {} ({e}): a build writing into it at the same time could be compared half done; its temporaries are not named",
             display_name(out)
         ));
     }
+    Ok(lock)
+}
+
+/// How a file in the output directory (`None`: missing) differs from the
+/// one generated, as `--check` shows it.
+pub(super) type Shown = fn(&Path, Option<&[u8]>, &Artifact) -> String;
+
+/// Prints, as `shown`, each of `files` that differs from its copy in `out`
+/// or is missing there; writes nothing.
+pub(super) fn differing(files: &[Artifact], out: &Path, shown: Shown) -> Status {
     let mut status = Status::Ok;
-    for (file, on_disk) in files.iter().zip(held.files) {
+    for file in files {
         let path = out.join(&file.file_name);
-        match on_disk {
+        match existing(out, &file.file_name) {
             Ok(Some(on_disk)) if on_disk == file.contents => {}
             Ok(on_disk) => {
-                say(difference(&path, on_disk.as_deref(), file).trim_end());
+                say(shown(&path, on_disk.as_deref(), file).trim_end());
                 status = status.max(Status::InputErrors);
             }
             Err(e) => {
@@ -210,20 +266,56 @@ fn check_all(files: &[Artifact], out: &Path) -> Status {
             }
         }
     }
-    for path in &held.stale {
+    status
+}
+
+/// Names each file of `datasheet` in `out` whose fingerprint is not its
+/// description's: a datasheet `gsdc doc` wrote before the description
+/// changed. A datasheet not there is no concern of a build's.
+fn datasheet_in_step(description: &Path, datasheet: &Datasheet, out: &Path) -> Status {
+    let mut status = Status::Ok;
+    for name in &datasheet.file_names {
+        let path = out.join(name);
+        let carried = match existing(out, name) {
+            Ok(None) => continue,
+            Ok(Some(on_disk)) => fingerprint_in(&on_disk),
+            Err(e) => {
+                warn(&format!("error: cannot read {}: {e}", display_name(&path)));
+                status = Status::UsageOrIo;
+                continue;
+            }
+        };
+        let expected = datasheet.fingerprint.to_string();
+        if carried.as_deref() == Some(expected.as_str()) {
+            continue;
+        }
+        let carries = carried.map_or_else(
+            || "no fingerprint".to_string(),
+            |f| format!("fingerprint {f}"),
+        );
         say(&format!(
-            "stale: {} (gsdc generated it, and no description given gives it)",
-            display_name(path)
+            "stale datasheet: {} carries {carries}, not {}'s {expected} (run `gsdc doc {} --out {}`)",
+            display_name(&path),
+            display_name(description),
+            display_name(description),
+            display_name(out),
         ));
         status = status.max(Status::InputErrors);
     }
-    if status == Status::InputErrors {
-        warn(&format!(
-            "out of step: run `gsdc build --prune` without --check to update {}",
-            display_name(out)
-        ));
-    }
     status
+}
+
+/// The description fingerprint a file of gsdc's carries in its header
+/// (`Description fingerprint: 9d36b38bb37b5338`).
+fn fingerprint_in(contents: &[u8]) -> Option<String> {
+    const LABEL: &[u8] = b"Description fingerprint: ";
+    let head = &contents[..contents.len().min(1024)];
+    let at = head.windows(LABEL.len()).position(|w| w == LABEL)? + LABEL.len();
+    let digits = head[at..]
+        .iter()
+        .take_while(|b| b.is_ascii_hexdigit())
+        .count();
+    String::from_utf8(head[at..at + digits].to_vec()).ok()
 }
 
 /// How the file on disk (`None`: missing) differs from the generated one:

@@ -15,12 +15,13 @@ use std::sync::{Condvar, Mutex, MutexGuard};
 
 pub const EXAMPLES: &str = "Examples:
   gsdc check MD810DP.GSD GSDML-V2.32-MEGMEET-MV800-20230830.xml
-  gsdc check dist/*                     # device files are told by their content; any other file is one line
+  gsdc check dist/*                     # device files and symbols are told by their content; gsdc's layouts are skipped
   gsdc check --format json vendor/*     # a JSON object per finding, and {\"file\",\"errors\",\"warnings\"} per file
   gsdc check --xsd ../pi/gsdml-xsd-v2.44 vendor/*.xml   # also the PI schema (feature `xsd`)
   unzip -p device.zip '*.xml' | gsdc check /dev/stdin
 
-Exit codes: 0 no errors, 1 a file has errors or is neither a GSD nor a GSDML file,
+Exit codes: 0 no errors, 1 a file has errors or is neither a GSD, a GSDML, a device
+symbol nor one of gsdc's own files (layouts, support files, datasheets: skipped),
 2 usage or I/O error (a file that cannot be read, output that cannot be written).";
 
 #[derive(clap::Args)]
@@ -219,7 +220,26 @@ fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report
                 render(&name, &text, &Diagnostics(vec![d]), format)
             }
         },
+        FileKind::Bitmap => render(&name, "", &crate::symbol::check::check(&bytes), format),
+        FileKind::Neither if crate::output::carries_mark(&bytes) => gsdcs_own(&name, format),
         FileKind::Neither => neither(&name, format),
+    }
+}
+
+/// A file gsdc made that is no device file (a firmware layout, a support
+/// file, a datasheet): one note, and not checked; `gsdc check dist/*` after
+/// a build passes. gsdc's own GSD and GSDML files are checked.
+fn gsdcs_own(name: &str, format: Format) -> Report {
+    const WHAT: &str =
+        "made by gsdc (a firmware layout, support file or datasheet), not a device file";
+    let output = match format {
+        Format::Human => format!("note: {name} is {WHAT}: skipped"),
+        Format::Json => super::json::skipped(name, WHAT),
+    };
+    Report::Checked {
+        output,
+        not_shown: None,
+        errors: 0,
     }
 }
 

@@ -4,15 +4,17 @@
 //! the files are written as `gsdc build` writes them (all or nothing, the
 //! directory locked).
 
-use super::build::{merged, write_all};
-use super::{load_description, warn, Status};
+use super::build::{differing, merged, read_lock, write_all};
+use super::{display_name, load_description, warn, Status};
+use crate::Artifact;
 use std::path::{Path, PathBuf};
 
-pub const EXAMPLES: &str = "Example:
-  gsdc doc descriptions/md810dp.toml --out dist   # dist/md810dp.html, dist/md810dp.md
+pub const EXAMPLES: &str = "Examples:
+  gsdc doc descriptions/md810dp.toml --out dist           # dist/md810dp.html, dist/md810dp.md
+  gsdc doc descriptions/*.toml --out dist --check         # in CI: are the datasheets in step?
 
-Exit codes: 0 ok, 1 a description has errors, or two give datasheets of one name;
-2 usage or I/O error.";
+Exit codes: 0 ok, 1 a description has errors, two give datasheets of one name,
+or --check found a datasheet out of step; 2 usage or I/O error.";
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -22,6 +24,10 @@ pub struct Args {
     /// Directory to write into; created if missing.
     #[arg(long, short, default_value = ".", value_name = "DIR")]
     out: PathBuf,
+    /// Write nothing: exit 1 and name each datasheet in DIR that differs from
+    /// what the descriptions give, or is missing.
+    #[arg(long)]
+    check: bool,
 }
 
 pub fn run(args: &Args) -> Status {
@@ -38,12 +44,41 @@ pub fn run(args: &Args) -> Status {
         return status;
     }
     match merged(sets) {
+        Ok(files) if args.check => check_all(&files, &args.out),
         Ok(files) => write_all(&files, &args.out, false),
         Err(status) => status,
     }
 }
 
+/// `--check`: names each datasheet that differs from the one in `out` or is
+/// missing; nothing written. Names, not diffs: a page's diff is pages of
+/// markup, and `gsdc doc` rewrites it whole. A `gsdc doc` at work on `out`
+/// is waited for, as `gsdc build --check` waits.
+fn check_all(files: &[Artifact], out: &Path) -> Status {
+    let _lock = match read_lock(out) {
+        Ok(lock) => lock,
+        Err(status) => return status,
+    };
+    let status = differing(files, out, named);
+    if status == Status::InputErrors {
+        warn(&format!(
+            "out of step: run `gsdc doc` without --check to update {}",
+            display_name(out)
+        ));
+    }
+    status
+}
+
+fn named(path: &Path, on_disk: Option<&[u8]>, _: &Artifact) -> String {
+    let what = if on_disk.is_some() {
+        "differs"
+    } else {
+        "missing"
+    };
+    format!("{what}: {}", display_name(path))
+}
+
 /// The datasheet of one description.
-fn document_one(path: &Path) -> Result<Vec<crate::Artifact>, Status> {
+fn document_one(path: &Path) -> Result<Vec<Artifact>, Status> {
     load_description(path).map(|ir| crate::document(&ir))
 }

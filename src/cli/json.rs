@@ -46,6 +46,24 @@ pub fn finding(source: &Source, d: &Diagnostic) -> String {
     })
 }
 
+/// The summary of a file not checked, and why: no findings.
+#[derive(Serialize)]
+struct Skipped<'a> {
+    file: &'a str,
+    errors: usize,
+    warnings: usize,
+    skipped: &'a str,
+}
+
+pub fn skipped(file: &str, why: &str) -> String {
+    to_line(&Skipped {
+        file,
+        errors: 0,
+        warnings: 0,
+        skipped: why,
+    })
+}
+
 pub fn summary(file: &str, errors: usize, warnings: usize) -> String {
     to_line(&Summary {
         file,

@@ -3,7 +3,6 @@
 //! (through the firmware's `DiagArea`); a gateway's block is read by its
 //! type instead (`super::gateway`).
 
-use super::gateway::GatewayDiagnosis;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::Diagnosis;
 use crate::pkw::DiagArea;
@@ -19,6 +18,46 @@ pub struct DiagnosisBlock {
     pub areas: Vec<Area>,
     /// A gateway's block: its type, node and code.
     pub gateway: Option<GatewayDiagnosis>,
+}
+
+/// A gateway's diagnosis block, read by its type.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct GatewayDiagnosis {
+    #[serde(rename = "type")]
+    pub kind: DiagByte,
+    pub node: DiagNode,
+    /// `None` for a type the description does not name: its code's size
+    /// is unknown.
+    pub code: Option<DiagCodeValue>,
+}
+
+/// The type: its byte in the block (the header is byte 0), its value, and
+/// the description's text; `None` for a type it does not name.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DiagByte {
+    pub at: usize,
+    pub value: u8,
+    pub text: Option<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DiagNode {
+    pub at: usize,
+    pub value: u8,
+    /// The node numbers, both ends included, and whether `value` is one.
+    pub range: [u8; 2],
+    pub allowed: bool,
+}
+
+/// The code: one byte or a 16-bit number, high byte first, from `at`.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DiagCodeValue {
+    pub at: usize,
+    pub bytes: u8,
+    pub value: u16,
+    /// A listed code's text (`None` for a code the type does not list), or
+    /// what a 16-bit code is (`Drive fault code`).
+    pub text: Option<String>,
 }
 
 /// A `Unit_Diag_Area`: bits counted from the byte after the header.

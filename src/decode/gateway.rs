@@ -2,56 +2,17 @@
 //! force adds up to, a module's words (each node's, when the configuration
 //! and the data order say which), and the diagnosis block read by its type.
 
-use super::diagnosis::{check_header, DiagnosisBlock};
+use super::diagnosis::{
+    check_header, DiagByte, DiagCodeValue, DiagNode, DiagnosisBlock, GatewayDiagnosis,
+};
 use super::hex::Hex;
-use super::mapping::{MappingInForce, ValueSource};
-use super::telegram::{DecodedWord, Telegram};
+use super::mapping::MappingInForce;
+use super::module::word_name;
+use super::telegram::{DecodedWord, GatewayData, NodeTotals, NodeWord, Telegram};
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{DataOrder, DiagCode, DiagType, Diagnosis, Gateway, Module, Node, Param};
 use crate::ir::Direction;
 use crate::pkw::support::gateway as firmware;
-use serde::Serialize;
-
-/// What the node configuration in force adds up to, and why the card
-/// refuses it when it does.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct NodeTotals {
-    /// The nodes in use: the first `node_count` node numbers.
-    pub node_count: u16,
-    /// Words the nodes in use send (the master's input) and receive.
-    pub input_words: u32,
-    pub output_words: u32,
-    /// The same in bytes, and the most the gateway carries.
-    pub input_len: u32,
-    pub output_len: u32,
-    pub max_input_len: u16,
-    pub max_output_len: u16,
-    /// Why the card refuses the configuration, checked as the firmware's
-    /// `totals` checks it; `None` when it takes it.
-    pub refused: Option<String>,
-}
-
-/// A gateway module's telegram: the configuration its words are read
-/// against.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct GatewayData {
-    /// `parameter_telegram` with `--prm`, else `default`.
-    pub source: ValueSource,
-    pub nodes: NodeTotals,
-    /// Whether each word is named after its node: the module carries all
-    /// the words the nodes in use carry its way, so the data order places
-    /// them. A module that carries part of them could be anywhere in the
-    /// data, depending on the modules plugged before it.
-    pub attributed: bool,
-}
-
-/// The node a word of a gateway module belongs to, and its number among
-/// that node's words, from 1.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-pub struct NodeWord {
-    pub node: u8,
-    pub word: u16,
-}
 
 /// The node configuration in force, added up.
 pub(super) fn totals(g: &Gateway, mapping: &MappingInForce) -> NodeTotals {
@@ -170,11 +131,6 @@ pub(super) fn telegram(
     }
 }
 
-/// A gateway module's word `n`, from 1: `word 3`.
-pub(super) fn word_name(n: u8) -> String {
-    format!("word {n}")
-}
-
 /// Every word of the data one way, as the description's data order puts
 /// the nodes' words.
 fn in_data_order(
@@ -198,46 +154,6 @@ fn in_data_order(
 
 // ---------------------------------------------------------------------------
 // Diagnosis
-
-/// A gateway's diagnosis block, read by its type.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct GatewayDiagnosis {
-    #[serde(rename = "type")]
-    pub kind: DiagByte,
-    pub node: DiagNode,
-    /// `None` for a type the description does not name: its code's size
-    /// is unknown.
-    pub code: Option<DiagCodeValue>,
-}
-
-/// The type: its byte in the block (the header is byte 0), its value, and
-/// the description's text; `None` for a type it does not name.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct DiagByte {
-    pub at: usize,
-    pub value: u8,
-    pub text: Option<String>,
-}
-
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct DiagNode {
-    pub at: usize,
-    pub value: u8,
-    /// The node numbers, both ends included, and whether `value` is one.
-    pub range: [u8; 2],
-    pub allowed: bool,
-}
-
-/// The code: one byte or a 16-bit number, high byte first, from `at`.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct DiagCodeValue {
-    pub at: usize,
-    pub bytes: u8,
-    pub value: u16,
-    /// A listed code's text (`None` for a code the type does not list), or
-    /// what a 16-bit code is (`Drive fault code`).
-    pub text: Option<String>,
-}
 
 /// Decodes the block `hex` holds: as long as its header says, the header
 /// being one of the types' lengths (E417 at the header otherwise, or when
@@ -302,14 +218,7 @@ pub(super) fn diagnosis(
 /// The code of a block of type `t`, read as the firmware reads it.
 fn code(g: &Gateway, d: &Diagnosis, t: &DiagType, block: &[u8]) -> DiagCodeValue {
     // The firmware's readers need only the places; the type was checked above.
-    let layout = firmware::DiagLayout {
-        type_at: d.type_at.into(),
-        node_at: d.node_at.into(),
-        code_at: d.code_at.into(),
-        first_node: g.first_node,
-        last_node: g.last_node,
-        types: &[],
-    };
+    let layout = crate::pkw::gateway_diag_layout(g, d);
     let invariant =
         "lowering makes a type's blocks end with its code, and the header gave this type's length";
     let (value, text) = match &t.code {

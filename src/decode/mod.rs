@@ -18,16 +18,16 @@ mod mapping;
 mod module;
 mod pkw_channel;
 mod prm;
+mod profidrive;
 mod telegram;
 
-pub use diagnosis::DiagnosisBlock;
-pub use gateway::{GatewayData, GatewayDiagnosis, NodeTotals};
+pub use diagnosis::{DiagnosisBlock, GatewayDiagnosis};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, Module};
 pub use pkw_channel::{Channel, Pkw, PkwSide};
 pub use prm::Prm;
-pub use telegram::{Carried, DecodedWord, Telegram};
+pub use telegram::{Carried, DecodedWord, GatewayData, NodeTotals, Telegram};
 
 use crate::diag::Diagnostic;
 use crate::ir::{Direction, Ir};

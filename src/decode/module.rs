@@ -87,6 +87,12 @@ impl Module<'_> {
         }
     }
 
+    /// Whether it is a PROFIdrive card's standard telegram 1, whose PZD1 is
+    /// the profile's STW1 or ZSW1.
+    pub fn is_profidrive_telegram(self) -> bool {
+        matches!(self, Module::Profinet(m) if m.is_profidrive())
+    }
+
     /// The name of each word in `direction`, in telegram order.
     pub fn word_names(self, ir: &Ir, direction: Direction) -> Vec<String> {
         match self {
@@ -98,7 +104,7 @@ impl Module<'_> {
                 items.iter().map(|item| item.text.text.en.clone()).collect()
             }
             Module::Ppo(m) => ppo_word_names(ir, m.layout, direction),
-            Module::Gateway(_, m) => (1..=m.words).map(super::gateway::word_name).collect(),
+            Module::Gateway(_, m) => (1..=m.words).map(word_name).collect(),
         }
     }
 
@@ -229,6 +235,11 @@ fn pkw_word_names(kind: PkwKind) -> &'static [&'static str] {
         PkwKind::Profidrive => &["PKE", "IND", "PWE1", "PWE2"],
         PkwKind::None => &[],
     }
+}
+
+/// A gateway module's word `n`, from 1: `word 3`.
+pub(super) fn word_name(n: u8) -> String {
+    format!("word {n}")
 }
 
 #[cfg(test)]

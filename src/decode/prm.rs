@@ -3,8 +3,9 @@
 //! entry, high byte first, then a gateway's parameters (bytes, words or bit
 //! areas), and what a gateway's add up to.
 
-use super::gateway::{totals, NodeTotals};
+use super::gateway::totals;
 use super::mapping::{meaning, MappingInForce, ValueSource};
+use super::telegram::NodeTotals;
 use crate::ir::profibus::{self, PrmHolds, UserPrm};
 use crate::ir::Ir;
 use serde::Serialize;

@@ -1,12 +1,12 @@
 //! A cyclic telegram of one module: each word with its name and value, the
 //! PKW request or response, the control or status word's fields, and what
 //! each mapped PZD word carries under the mapping in force. A gateway's
-//! modules are read in `super::gateway`.
+//! modules are read in `super::gateway`, into the types here.
 
-use super::gateway::{GatewayData, NodeWord};
 use super::mapping::{meaning, MappingInForce, ValueSource};
 use super::module::Module;
 use super::pkw_channel::{self, Pkw};
+use super::profidrive;
 use crate::ir::{Direction, Ir, Layout, MappingKind, Word};
 use crate::pkw::{pkw_words, BitField, PKW_BYTES};
 use serde::Serialize;
@@ -21,6 +21,47 @@ pub struct Telegram {
     pub pkw: Option<Pkw>,
     /// A gateway module's: the node configuration it is read against.
     pub gateway: Option<GatewayData>,
+}
+
+/// What the node configuration in force adds up to, and why the card
+/// refuses it when it does.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct NodeTotals {
+    /// The nodes in use: the first `node_count` node numbers.
+    pub node_count: u16,
+    /// Words the nodes in use send (the master's input) and receive.
+    pub input_words: u32,
+    pub output_words: u32,
+    /// The same in bytes, and the most the gateway carries.
+    pub input_len: u32,
+    pub output_len: u32,
+    pub max_input_len: u16,
+    pub max_output_len: u16,
+    /// Why the card refuses the configuration, checked as the firmware's
+    /// `totals` checks it; `None` when it takes it.
+    pub refused: Option<String>,
+}
+
+/// A gateway module's telegram: the configuration its words are read
+/// against.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct GatewayData {
+    /// `parameter_telegram` with `--prm`, else `default`.
+    pub source: ValueSource,
+    pub nodes: NodeTotals,
+    /// Whether each word is named after its node: the module carries all
+    /// the words the nodes in use carry its way, so the data order places
+    /// them. A module that carries part of them could be anywhere in the
+    /// data, depending on the modules plugged before it.
+    pub attributed: bool,
+}
+
+/// The node a word of a gateway module belongs to, and its number among
+/// that node's words, from 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct NodeWord {
+    pub node: u8,
+    pub word: u16,
 }
 
 /// One 16-bit word, high byte first.
@@ -88,7 +129,7 @@ pub(super) fn decode(
                 .filter(|_| module.is_mapped())
                 .and_then(|n| carried(ir, direction, n, mapping));
             let fields = match pzd {
-                Some(n) if module.has_vendor_words() => word_fields(ir, direction, n, value),
+                Some(1) => first_word_fields(ir, module, direction, value),
                 _ => Vec::new(),
             };
             DecodedWord {
@@ -140,15 +181,26 @@ fn pzd_kind(direction: Direction) -> MappingKind {
     }
 }
 
-/// The fields of PZD1 when it is the control or status word.
-fn word_fields(ir: &Ir, direction: Direction, n: usize, value: u16) -> Vec<Field> {
-    match ir.telegram.word(direction) {
-        Some(word) if n == 1 => fields(word, value),
-        _ => Vec::new(),
-    }
+/// The fields of PZD1 when it is a control or status word: the
+/// description's, or in a PROFIdrive card's standard telegram 1 the
+/// profile's STW1 and ZSW1; with every set bit neither names.
+fn first_word_fields(ir: &Ir, module: Module<'_>, direction: Direction, value: u16) -> Vec<Field> {
+    let mut fields = if module.has_vendor_words() {
+        match ir.telegram.word(direction) {
+            Some(word) => described_fields(word, value),
+            None => return Vec::new(),
+        }
+    } else if module.is_profidrive_telegram() {
+        profidrive_fields(direction, value)
+    } else {
+        return Vec::new();
+    };
+    fields.extend(undescribed_bits(&fields, value));
+    fields.sort_by_key(|f| f.first);
+    fields
 }
 
-fn fields(word: &Word, value: u16) -> Vec<Field> {
+fn described_fields(word: &Word, value: u16) -> Vec<Field> {
     word.bits
         .iter()
         .map(|field| {
@@ -164,6 +216,36 @@ fn fields(word: &Word, value: u16) -> Vec<Field> {
                 value: bits,
                 text,
             }
+        })
+        .collect()
+}
+
+/// The profile's bits of STW1 (out) or ZSW1 (in), each its own field.
+fn profidrive_fields(direction: Direction, value: u16) -> Vec<Field> {
+    (0..)
+        .zip(profidrive::word_bits(direction))
+        .map(|(bit, name)| Field {
+            first: bit,
+            last: bit,
+            name: (*name).to_string(),
+            value: (value >> bit) & 1,
+            text: None,
+        })
+        .collect()
+}
+
+/// A field for each bit set in `value` that none of `fields` covers: the
+/// card sets or reads it, and the description does not say what it means.
+fn undescribed_bits(fields: &[Field], value: u16) -> Vec<Field> {
+    (0..16u8)
+        .filter(|&bit| value >> bit & 1 == 1)
+        .filter(|&bit| !fields.iter().any(|f| (f.first..=f.last).contains(&bit)))
+        .map(|bit| Field {
+            first: bit,
+            last: bit,
+            name: format!("bit {bit} (not described)"),
+            value: 1,
+            text: None,
         })
         .collect()
 }

@@ -346,20 +346,32 @@ fn mv810_standard_message_1_names_its_words() {
 }
 
 /// PROFIdrive's standard telegram 1 has the profile's fixed words: no
-/// mapping, no vendor bits.
+/// mapping, and STW1's bits the profile's, even where the description
+/// names the bits of its vendor telegrams' control word.
 #[test]
 fn profidrive_standard_telegram_1_names_the_profiles_words() {
-    let ir = profidrive();
-    let t = decode(&ir, "standard telegram 1", Out, "047F 4000");
-    let names: Vec<&str> = t.words.iter().map(|w| w.name.as_str()).collect();
-    assert_eq!(
-        names,
-        ["STW1 (control word 1)", "NSOLL_A (speed setpoint A)"]
+    let text = include_str!("../../tests/fixtures/valid/profidrive.toml").replace(
+        "profidrive = true\n",
+        "profidrive = true\ncontrol_word = { name = \"Vendor word\", bits = [{ bit = 0, name = \"Run\" }] }\n",
     );
-    assert!(t
-        .words
-        .iter()
-        .all(|w| w.carries.is_none() && w.fields.is_empty()));
+    let with_vendor_word = crate::load("profidrive.toml", &text).0.unwrap();
+    for ir in [profidrive(), with_vendor_word] {
+        let t = decode(&ir, "standard telegram 1", Out, "047F 4000");
+        let names: Vec<&str> = t.words.iter().map(|w| w.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["STW1 (control word 1)", "NSOLL_A (speed setpoint A)"]
+        );
+        assert!(t.words.iter().all(|w| w.carries.is_none()));
+        let stw1 = &t.words[0].fields;
+        assert_eq!(stw1.len(), 11);
+        assert_eq!((stw1[0].name.as_str(), stw1[0].value), ("ON (0: OFF1)", 1));
+        assert_eq!(
+            (stw1[10].name.as_str(), stw1[10].value),
+            ("Control by PLC", 1)
+        );
+        assert!(t.words[1].fields.is_empty());
+    }
 }
 
 fn md810_default_prm() -> String {

@@ -82,6 +82,10 @@ pub struct FunctionCodes {
     /// How prefix base plus group, and the index, make the address;
     /// `bytes` when not given.
     pub address: Option<Spanned<AddressScheme>>,
+    /// The digits of every group and index, leading zeros written: required
+    /// without a separator (Siemens `P1120`: 2 and 2).
+    pub group_digits: Option<Spanned<u8>>,
+    pub index_digits: Option<Spanned<u8>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -211,6 +215,20 @@ pub struct PerModule {
     pub user_defined: Spanned<Address>,
     /// Standard telegram 1, when it is offered.
     pub standard_telegram_1: Option<Spanned<Address>>,
+    /// With `[profibus]`, which has no modules that could fix it: whether
+    /// the master sets it in User_Prm_Data. Required there.
+    pub profibus: Option<Spanned<OnProfibus>>,
+}
+
+/// What a setting fixed per PROFINET module is on PROFIBUS.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum OnProfibus {
+    /// A parameter of User_Prm_Data, as any setting: the master sets it.
+    User,
+    /// Not in User_Prm_Data: the master cannot set it; the drive keeps
+    /// its own value.
+    Absent,
 }
 
 #[derive(Debug, Deserialize)]

@@ -17,18 +17,21 @@
 //! the `comment` filter, which wraps it as [`comment`] does here.
 
 use super::{
-    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+    bit_range, capitalised, group_doc, hex16, hex8, mapping_literal, range_doc, Artifact,
+    ArtifactKind,
 };
 use crate::diag::Diagnostic;
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
+use crate::ir::profinet::RecordReading;
 use crate::ir::profinet::{self, Profinet};
-use crate::ir::{Direction, Ident, Ir, Layout, PkwKind, ValueSet, Word};
+use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, PkwKind, ValueSet, Word};
 use serde::Serialize;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 mod gateway;
+mod tables;
 
 const TEMPLATE: &str = include_str!("../../templates/c/layout.h.jinja");
 
@@ -58,6 +61,8 @@ struct Context {
     profibus: Option<ProfibusItems>,
     gateway: Option<gateway::Items>,
     profinet: Option<ProfinetItems>,
+    /// The device tables, finished.
+    tables: String,
 }
 
 /// A PPO type or PROFINET module: its shape, and one telegram each way.
@@ -121,6 +126,9 @@ struct GroupItem {
     entries: Vec<EntryItem>,
     defaults: String,
     user_prm_offset: Option<u16>,
+    /// The entries User_Prm_Data carries, by place, when not all
+    /// (`UserPrm::partial`); empty when it carries all.
+    user_prm_entries: Vec<usize>,
     record_index: Option<u16>,
     /// A module's PZD record holds the words it transports.
     record_prefix: bool,
@@ -261,9 +269,22 @@ pub fn file_name(ir: &Ir) -> String {
 /// The prefix of every name a layout declares, spelt from the layout's
 /// stem: `md810dp` for `md810dp.toml`, `mv810_pnet02` for
 /// `mv810-pnet02.toml`, and `gsdc_9kdp1` for `9kdp1.toml`, since a C name
-/// cannot start with a digit.
+/// cannot start with a digit (and the support header names nothing
+/// `gsdc_` and a digit). Every other name that starts with the word `gsdc`
+/// is the support header's: a stem that spells it (`gsdc.toml`,
+/// `Gsdc-prm.toml`) or no word at all (`_.toml`, `网关.toml`) is prefixed
+/// `layout` (`layout_gsdc`, `layout`), so that no layout can declare
+/// `gsdc_node_totals` beside the support header's.
 fn prefix(ir: &Ir) -> Ident {
-    Ident::from_text(&super::layout_stem(ir), "gsdc")
+    let stem = super::layout_stem(ir);
+    let ident = Ident::from_text(&stem, "gsdc");
+    match ident.words() {
+        [gsdc, next, ..] if gsdc == "gsdc" && next.starts_with(|c: char| c.is_ascii_digit()) => {
+            ident
+        }
+        [gsdc, ..] if gsdc == "gsdc" => Ident::from_text(&format!("layout_{stem}"), "layout"),
+        _ => ident,
+    }
 }
 
 /// `gsdc_support.h`: the hand-written support header, with the release that
@@ -326,6 +347,7 @@ fn context(ir: &Ir) -> Context {
             .zip(ir.profibus.as_ref())
             .map(|(g, pb)| gateway::items(&names, g, pb)),
         profinet: ir.profinet.as_ref().map(|pn| profinet_items(&names, pn)),
+        tables: tables::render(&names, &super::tables::tables(ir)),
         p,
         l,
     }
@@ -406,53 +428,41 @@ fn pkw_doc(kind: PkwKind) -> Option<String> {
 // ---------------------------------------------------------------------------
 // Telegrams
 
-/// A PPO type or a PROFINET module, before it is formatted.
-struct Module {
-    ident: Ident,
-    doc: String,
-    layout: Layout,
-    standard_telegram_1: bool,
-}
-
 /// Each PPO type, then each PROFINET module.
 fn modules(ir: &Ir, names: &Names) -> Vec<ModuleItem> {
-    let ppos = ir.profibus.iter().flat_map(|p| {
-        p.modules.iter().map(move |m| Module {
-            ident: m.ident.clone(),
-            doc: format!("\"{}\" of {}", m.name, p.file_name),
-            layout: m.layout,
-            standard_telegram_1: false,
-        })
-    });
-    let modules = ir.profinet.iter().flat_map(|p| {
-        p.modules.iter().map(|m| Module {
-            ident: m.ident.clone(),
-            doc: format!(
-                "PROFINET module \"{}\" ({}_IDENT)",
-                m.name.text.en,
-                names.upper(&m.ident.upper_snake())
-            ),
-            layout: m.layout,
-            standard_telegram_1: m.is_profidrive(),
-        })
-    });
-    ppos.chain(modules)
+    ir.cyclic_modules()
         .map(|m| module_item(ir, names, &m))
         .collect()
 }
 
-fn module_item(ir: &Ir, names: &Names, m: &Module) -> ModuleItem {
+/// `"PPO1" of MD810DP.GSD`, `PROFINET module "PKW + 12 PZD" (MD810DP_PKW_PZD12_IDENT)`.
+fn module_doc(names: &Names, m: &CyclicModule) -> String {
+    match m.bus {
+        Bus::Profibus => format!("\"{}\" of {}", m.name, m.file_name),
+        Bus::Profinet => format!(
+            "PROFINET module \"{}\" ({}_IDENT)",
+            m.name,
+            names.upper(&m.ident.upper_snake())
+        ),
+    }
+}
+
+fn module_item(ir: &Ir, names: &Names, m: &CyclicModule) -> ModuleItem {
     let words = match m.layout.pzd_words {
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_offset = 2 * u16::from(m.layout.pkw_words());
+    let pzd_offset = m.layout.pzd_offset();
     let place = if m.layout.pkw {
         format!("the PKW channel in bytes 0-7, {words} from byte {pzd_offset}")
     } else {
         format!("{words} from byte 0")
     };
-    let doc = format!("{}: {} bytes each way, {place}.", m.doc, m.layout.bytes());
+    let doc = format!(
+        "{}: {} bytes each way, {place}.",
+        module_doc(names, m),
+        m.layout.bytes()
+    );
     let base = m.ident.snake();
     ModuleItem {
         name: names.upper(&base),
@@ -468,12 +478,18 @@ fn module_item(ir: &Ir, names: &Names, m: &Module) -> ModuleItem {
     }
 }
 
-fn telegram_item(ir: &Ir, names: &Names, m: &Module, base: &str, dir: Direction) -> TelegramItem {
+fn telegram_item(
+    ir: &Ir,
+    names: &Names,
+    m: &CyclicModule,
+    base: &str,
+    dir: Direction,
+) -> TelegramItem {
     let (suffix, way, word, standard) = match dir {
         Direction::Out => ("out", "Master to drive", "control word", "STW1 and NSOLL_A"),
         Direction::In => ("in", "Drive to master", "status word", "ZSW1 and NIST_A"),
     };
-    let pzd1 = match (m.standard_telegram_1, ir.telegram.word(dir)) {
+    let pzd1 = match (m.is_profidrive(), ir.telegram.word(dir)) {
         (true, _) => format!(": PROFIdrive {standard}."),
         (false, Some(_)) => format!(
             "; PZD1 is the {word}, {}_*.",
@@ -557,6 +573,7 @@ fn value_set_item(names: &Names, scope: &str, values: &ValueSet) -> ValueSetItem
 
 fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
     let module = g.kind.key();
+    let record = ir.profinet.as_ref().and_then(|p| p.record(g.kind));
     let single = g.sets.len() == 1;
     let mut end = 0;
     let sets = g
@@ -592,8 +609,13 @@ fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
             .as_ref()
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
-        record_index: ir.profinet.as_ref().and_then(|p| p.record_index(g.kind)),
-        record_prefix: matches!(g.kind, MappingKind::PzdOut | MappingKind::PzdIn),
+        user_prm_entries: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.partial(g))
+            .unwrap_or_default(),
+        record_index: record.map(|r| r.index),
+        record_prefix: record.is_some_and(|r| r.reading == RecordReading::Prefix),
         record_length: g.record_length,
         fixed: fixed_items(ir, names, g, &name),
         name,
@@ -608,16 +630,14 @@ fn fixed_items(ir: &Ir, names: &Names, g: &MappingGroup, group: &str) -> Vec<Fix
     };
     g.sets
         .iter()
-        .filter(|set| set.fixed.is_some())
-        .map(|set| {
-            let modules: Vec<String> = profinet
+        .filter_map(|set| Some((set, profinet.fixed(set.key)?)))
+        .map(|(set, fixed)| {
+            let modules: Vec<String> = fixed
                 .modules
                 .iter()
-                .flat_map(|m| m.records.iter().flat_map(move |r| r.refs.iter().map(move |f| (m, f))))
-                .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
-                .map(|(m, f)| {
-                    let ident = names.upper(&format!("{}_IDENT", m.ident.snake()));
-                    format!("{{ {ident}, {}U }}", f.default)
+                .map(|(ident, _, value)| {
+                    let ident = names.upper(&format!("{}_IDENT", ident.snake()));
+                    format!("{{ {ident}, {value}U }}")
                 })
                 .collect();
             let name = format!("{group}_FIXED_{}", set.key.first);
@@ -846,16 +866,12 @@ fn profinet_items(names: &Names, p: &Profinet) -> ProfinetItems {
 // C text
 
 fn hex_bytes(bytes: &[u8]) -> Vec<String> {
-    bytes.iter().map(|b| format!("0x{b:02X}U")).collect()
-}
-
-fn hex16(value: u16) -> String {
-    format!("0x{value:04X}")
+    bytes.iter().map(|&b| format!("{}U", hex8(b))).collect()
 }
 
 /// `0x00000202UL`: an unsigned long, which holds 32 bits where int has 16.
 fn hex32(value: u32) -> String {
-    format!("0x{value:08X}UL")
+    format!("{}UL", super::hex32(value))
 }
 
 /// `#define NAME { a, b }`, wrapped with continuation lines when long.
@@ -929,7 +945,7 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 fn comment_text(text: &str) -> String {
     let mut visible = String::with_capacity(text.len());
     for c in text.chars() {
-        if (c.is_control() && !c.is_whitespace()) || crate::unicode::is_bidi_control(c) {
+        if (c.is_control() && !c.is_whitespace()) || crate::spec::is_bidi_control(c) {
             let _ = write!(visible, "<U+{:04X}>", u32::from(c));
         } else {
             visible.push(c);
@@ -1001,7 +1017,7 @@ fn breaks(file_name: &str, what: String) -> Diagnostic {
 /// The names a header declares at file scope: macros, the types of
 /// `typedef struct`/`enum` and function pointers, enumerators, functions,
 /// and the names of compile-time checks (types in C99).
-fn declared_names(text: &str) -> Vec<String> {
+pub(crate) fn declared_names(text: &str) -> Vec<String> {
     let mut names = Vec::new();
     for line in text.lines() {
         let found = if let Some(rest) = line.strip_prefix("#define ") {
@@ -1011,7 +1027,7 @@ fn declared_names(text: &str) -> Vec<String> {
         } else if line.starts_with("static inline ") {
             line.split('(')
                 .next()
-                .and_then(|head| head.rsplit(' ').next())
+                .and_then(|head| head.rsplit([' ', '*']).next())
         } else if line.starts_with("typedef ") && line.contains("(*") {
             line.split("(*").nth(1).and_then(identifier_at_start)
         } else {
@@ -1091,6 +1107,29 @@ mod tests {
         let ir = load("9kdp1.toml", include_str!("../../descriptions/9kdp1.toml"));
         assert_eq!(file_name(&ir), "9kdp1_layout.h");
         assert_eq!(prefix(&ir).upper_snake(), "GSDC_9KDP1");
+    }
+
+    /// A gateway whose stem spells the support header's `gsdc` (or no word,
+    /// which gave it the fallback `gsdc`) declared `gsdc_node_totals` twice:
+    /// E900, a bug in gsdc, for a description the loader accepts. Its prefix
+    /// is `layout` now, and the header passes its verification.
+    #[test]
+    fn a_stem_that_spells_gsdc_gets_a_prefix_of_its_own() {
+        let text = include_str!("../../descriptions/md810-gateway.toml");
+        for (name, expected) in [
+            ("gsdc.toml", "layout_gsdc"),
+            ("Gsdc.toml", "layout_gsdc"),
+            ("gsdc-prm.toml", "layout_gsdc_prm"),
+            ("_.toml", "layout"),
+            ("é.toml", "layout"),
+            ("网关.toml", "layout"),
+            ("gsdc_9.toml", "gsdc_9"),
+            ("gsdcx.toml", "gsdcx"),
+        ] {
+            let ir = load(name, text);
+            assert_eq!(prefix(&ir).snake(), expected, "{name}");
+            assert!(crate::compile(&ir).is_ok(), "{name}");
+        }
     }
 
     /// A timeout is a plain value: its bounds and default in decimal, and
@@ -1206,20 +1245,55 @@ mod tests {
         assert!(messages[1].contains("`GSDC_PKW_BYTES` twice"));
     }
 
-    /// Rust keeps a field's mask and its values apart; C does not: a value
-    /// named "Mask" is refused, and nothing is written.
+    /// Rust keeps a field's mask and its values apart, a diagnosis area's
+    /// bits and its values, a gateway's diagnosis types and their codes; C
+    /// does not. A value whose C name meets another takes its number, as in
+    /// Rust, and the layout is written: such names used to be E900, a bug in
+    /// gsdc, for descriptions the loader accepts.
     #[test]
-    fn a_description_whose_names_meet_in_c_gives_no_files() {
-        let text = include_str!("../../descriptions/mv810-pnet02.toml")
+    fn a_value_whose_c_name_meets_another_takes_its_number() {
+        let word = include_str!("../../descriptions/mv810-pnet02.toml")
             .replace("en = \"Asynchronous\"", "en = \"Mask\"");
-        let ir = load("mv810-pnet02.toml", &text);
-        let problems = crate::compile(&ir).unwrap_err();
-        let messages: Vec<_> = problems.iter().map(|d| d.message.as_str()).collect();
-        assert_eq!(
-            messages,
-            ["gsdc generated mv810_pnet02_layout.h declaring \
-              `MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK` twice; nothing was written"]
+        let area = include_str!("../../descriptions/md810dp.toml").replace(
+            "[[profibus.diagnosis.areas]]",
+            "[[profibus.diagnosis.areas]]\nbit = [7, 7]\nvalues = [{ value = 1, text = \"Last\" }]\n\n[[profibus.diagnosis.areas]]",
         );
+        let gateway = include_str!("../../descriptions/md810-gateway.toml")
+            .replace(
+                "en = \"CANopen network fault\"",
+                "en = \"Parameter error code node\"",
+            )
+            .replace(
+                "en = \"Node in the configuration not online\"",
+                "en = \"Node\"",
+            )
+            .replace("en = \"Drive reports fault\"", "en = \"Type at\"");
+        for (name, text, declared) in [
+            (
+                "mv810-pnet02.toml",
+                word,
+                "#define MV810_PNET02_STATUS_WORD_MOTOR_TYPE_MASK_0 0U",
+            ),
+            (
+                "md810dp.toml",
+                area,
+                "#define MD810DP_DIAGNOSIS_BIT_7_LAST_1 1U",
+            ),
+            (
+                "md810-gateway.toml",
+                gateway,
+                "#define MD810_GATEWAY_DIAG_PARAMETER_ERROR_CODE_NODE_34 34U",
+            ),
+        ] {
+            let ir = load(name, &text);
+            let files = crate::compile(&ir).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+            let header = files
+                .iter()
+                .find(|f| f.kind == ArtifactKind::CHeader)
+                .unwrap();
+            let header = String::from_utf8_lossy(&header.contents);
+            assert!(header.contains(declared), "{name}: {declared}");
+        }
     }
 
     #[test]

@@ -7,10 +7,9 @@ use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
 const TEMPLATE: &str = include_str!("../../templates/gsd.jinja");
-/// Longest line gsdc writes, line end excluded.
-pub const MAX_LINE: usize = 80;
-/// Keys are padded to this width so the `=` line up.
-pub(crate) const KEY_WIDTH: usize = 28;
+/// Longest line gsdc writes, line end excluded; keys are padded to
+/// KEY_WIDTH so the `=` line up.
+use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 
 #[derive(Serialize)]
 struct Context<'a> {
@@ -140,7 +139,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         vendor: &d.vendor,
         model: &d.model,
         revision: &d.revision,
-        ident_number: format!("0x{:04X}", p.ident_number),
+        ident_number: super::hex16(p.ident_number),
         notes: notes(ir),
         hardware_release: &d.hardware_release,
         software_release: &d.software_release,
@@ -162,8 +161,8 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         min_slave_interval: p.min_slave_interval,
         max_input_len: p.max_input_len,
         max_output_len: p.max_output_len,
-        max_data_len: p.max_input_len + p.max_output_len,
-        max_module: ir.gateway.as_ref().map_or(1, |g| g.max_modules),
+        max_data_len: p.max_data_len,
+        max_module: p.max_module,
         slave_family: &p.slave_family,
         max_diag_data_len: p.max_diag_data_len,
         diag_areas: diag_areas(ir, p),
@@ -326,7 +325,7 @@ fn allowed(allowed: &Allowed) -> String {
 fn hex_list(bytes: &[u8]) -> String {
     bytes
         .iter()
-        .map(|b| format!("0x{b:02X}"))
+        .map(|&b| super::hex8(b))
         .collect::<Vec<_>>()
         .join(",")
 }

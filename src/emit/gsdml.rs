@@ -6,6 +6,7 @@
 //! every ID and TextId comes from the IR, so the same description always
 //! gives the same bytes.
 
+use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
     ConformanceClass, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
@@ -143,14 +144,6 @@ impl Doc {
         text.push('\n');
         text
     }
-}
-
-fn hex16(value: u16) -> String {
-    format!("0x{value:04X}")
-}
-
-fn hex32(value: u32) -> String {
-    format!("0x{value:08X}")
 }
 
 fn header(doc: &mut Doc, ir: &Ir, p: &Profinet) {

@@ -5,6 +5,7 @@ pub mod doc;
 pub mod gsd;
 pub mod gsdml;
 pub mod rust;
+mod tables;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Direction, Holds, Ir, MappingKind, PkwKind};
@@ -159,7 +160,7 @@ pub(crate) fn layout_contents(ir: &Ir) -> String {
 /// decimal.
 fn mapping_literal(holds: Holds, value: u16) -> String {
     match holds {
-        Holds::Address => format!("0x{value:04X}"),
+        Holds::Address => hex16(value),
         Holds::Value | Holds::Choice => value.to_string(),
     }
 }
@@ -206,6 +207,21 @@ fn capitalised(text: &str) -> String {
     chars
         .next()
         .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}
+
+/// `0x0A`: a byte as every output but the datasheet writes it.
+pub(crate) fn hex8(value: u8) -> String {
+    format!("0x{value:02X}")
+}
+
+/// `0x0A10`: a 16-bit number as every output but the datasheet writes it.
+pub(crate) fn hex16(value: u16) -> String {
+    format!("0x{value:04X}")
+}
+
+/// `0x00000202`: a 32-bit number in eight digits.
+pub(crate) fn hex32(value: u32) -> String {
+    format!("0x{value:08X}")
 }
 
 /// `a, b and c` (or `a, b or c`).

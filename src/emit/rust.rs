@@ -7,14 +7,17 @@
 //! (identifiers, literals, doc lines) so the template only arranges them.
 
 mod gateway;
+mod tables;
 
 use super::{
-    bit_range, capitalised, group_doc, mapping_literal, range_doc, Artifact, ArtifactKind,
+    bit_range, capitalised, group_doc, hex16, hex8, mapping_literal, range_doc, Artifact,
+    ArtifactKind,
 };
-use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
+use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingSet};
 use crate::ir::profibus::{Diagnosis, Profibus};
+use crate::ir::profinet::RecordReading;
 use crate::ir::profinet::{self, Profinet};
-use crate::ir::{Direction, Ir, Layout, PkwKind, Telegram, ValueSet, Word};
+use crate::ir::{Bus, CyclicModule, Direction, Ir, PkwKind, Telegram, ValueSet, Word};
 use serde::Serialize;
 
 const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
@@ -23,7 +26,7 @@ const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja");
 /// is replaced by the part's text.
 pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
 const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
-const SUPPORT_PARTS: [(&str, &str); 5] = [
+const SUPPORT_PARTS: [(&str, &str); 6] = [
     (
         "pkw_pke_ind_pwe",
         include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
@@ -44,6 +47,7 @@ const SUPPORT_PARTS: [(&str, &str); 5] = [
         "gateway",
         include_str!("../../templates/support/gateway.rs"),
     ),
+    ("device", include_str!("../../templates/support/device.rs")),
 ];
 
 #[derive(Serialize)]
@@ -62,6 +66,8 @@ struct Context<'a> {
     profibus: Option<ProfibusItems>,
     profinet: Option<ProfinetItems>,
     gateway: Option<gateway::Items>,
+    /// The device tables, finished.
+    tables: String,
 }
 
 #[derive(Serialize)]
@@ -113,6 +119,9 @@ struct Group {
     sets: Vec<SetAllowed>,
     entries: Vec<Entry>,
     user_prm_offset: Option<u16>,
+    /// The entries User_Prm_Data carries, by place, when not all
+    /// (`UserPrm::partial`); empty when it carries all.
+    user_prm_entries: Vec<usize>,
     record_index: Option<u16>,
     /// How `decode_record` reads the record: `read_record` (every entry) or
     /// `read_record_prefix` (a module's PZD record holds its words).
@@ -328,6 +337,7 @@ fn context(ir: &Ir) -> Context<'_> {
             .zip(ir.profibus.as_ref())
             .map(|(g, p)| gateway::items(g, p)),
         groups: ir.mappings.groups.iter().map(|g| group(ir, g)).collect(),
+        tables: tables::render(&super::tables::tables(ir)),
     }
 }
 
@@ -380,38 +390,9 @@ fn direction_text(direction: Direction) -> DirectionText {
     }
 }
 
-/// A PPO type or a PROFINET module: one telegram each way.
-struct Module {
-    /// The aliases' names without the direction.
-    base: String,
-    doc: String,
-    layout: Layout,
-    profidrive_telegram_1: bool,
-}
-
 /// Each PPO type, then each PROFINET module, both ways.
 fn telegrams(ir: &Ir) -> Vec<TelegramAlias> {
-    let ppos = ir.profibus.iter().flat_map(|p| {
-        p.modules.iter().map(move |m| Module {
-            base: m.ident.camel(),
-            doc: format!("\"{}\" of {}", m.name, p.file_name),
-            layout: m.layout,
-            profidrive_telegram_1: false,
-        })
-    });
-    let modules = ir.profinet.iter().flat_map(|p| {
-        p.modules.iter().map(|m| Module {
-            base: m.ident.camel(),
-            doc: format!(
-                "PROFINET module \"{}\" ([`{}_IDENT`])",
-                m.name.text.en,
-                m.ident.upper_snake()
-            ),
-            layout: m.layout,
-            profidrive_telegram_1: m.is_profidrive(),
-        })
-    });
-    ppos.chain(modules)
+    ir.cyclic_modules()
         .flat_map(|m| {
             Direction::BOTH
                 .iter()
@@ -420,20 +401,32 @@ fn telegrams(ir: &Ir) -> Vec<TelegramAlias> {
         .collect()
 }
 
-fn telegram_alias(telegram: &Telegram, m: &Module, direction: Direction) -> TelegramAlias {
+/// `"PPO1" of MD810DP.GSD`, `PROFINET module "PKW + 12 PZD" ([`PKW_PZD12_IDENT`])`.
+fn module_doc(m: &CyclicModule) -> String {
+    match m.bus {
+        Bus::Profibus => format!("\"{}\" of {}", m.name, m.file_name),
+        Bus::Profinet => format!(
+            "PROFINET module \"{}\" ([`{}_IDENT`])",
+            m.name,
+            m.ident.upper_snake()
+        ),
+    }
+}
+
+fn telegram_alias(telegram: &Telegram, m: &CyclicModule, direction: Direction) -> TelegramAlias {
     let dir = direction_text(direction);
     let words = match m.layout.pzd_words {
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_doc = match (m.profidrive_telegram_1, telegram.word(direction)) {
+    let pzd_doc = match (m.is_profidrive(), telegram.word(direction)) {
         (true, _) => format!("PROFIdrive {}.", dir.standard_telegram_1),
         (false, Some(_)) => format!("{words}; PZD1 is the word of [`{}`].", dir.word_module),
         (false, None) => format!("{words}."),
     };
     let mut doc = vec![format!(
         "{}, {}: {} bytes.",
-        m.doc,
+        module_doc(m),
         dir.name,
         m.layout.bytes()
     )];
@@ -442,7 +435,7 @@ fn telegram_alias(telegram: &Telegram, m: &Module, direction: Direction) -> Tele
     }
     doc.push(pzd_doc);
     TelegramAlias {
-        name: format!("{}{}", m.base, dir.suffix),
+        name: format!("{}{}", m.ident.camel(), dir.suffix),
         doc,
         generic: if m.layout.pkw {
             "PkwTelegram"
@@ -509,6 +502,7 @@ fn value_enum(values: &ValueSet, doc: String) -> ValueEnum {
 
 fn group(ir: &Ir, g: &MappingGroup) -> Group {
     let single = g.sets.len() == 1;
+    let record = ir.profinet.as_ref().and_then(|p| p.record(g.kind));
     Group {
         module: g.kind.key(),
         doc: group_doc(g.kind),
@@ -519,9 +513,14 @@ fn group(ir: &Ir, g: &MappingGroup) -> Group {
             .as_ref()
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|b| b.offset),
-        record_index: ir.profinet.as_ref().and_then(|p| p.record_index(g.kind)),
-        record_reader: match g.kind {
-            MappingKind::PzdOut | MappingKind::PzdIn => "read_record_prefix",
+        user_prm_entries: ir
+            .profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.partial(g))
+            .unwrap_or_default(),
+        record_index: record.map(|r| r.index),
+        record_reader: match record.map(|r| r.reading) {
+            Some(RecordReading::Prefix) => "read_record_prefix",
             _ => "read_record",
         },
         record_length: g.record_length,
@@ -537,23 +536,18 @@ fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
     };
     g.sets
         .iter()
-        .filter(|set| set.fixed.is_some())
-        .map(|set| {
-            let modules = profinet
+        .filter_map(|set| Some((set, profinet.fixed(set.key)?)))
+        .map(|(set, fixed)| Fixed {
+            constant: format!("FIXED_{}", set.key.first),
+            doc: format!(
+                "The value of \"{}\" each PROFINET module fixes, by its ident number: the module writes it; the user cannot change it.",
+                doc_text(&set.entries[0].name.en)
+            ),
+            modules: fixed
                 .modules
                 .iter()
-                .flat_map(|m| m.records.iter().flat_map(move |r| r.refs.iter().map(move |f| (m, f))))
-                .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
-                .map(|(m, f)| (format!("super::{}_IDENT", m.ident.upper_snake()), f.default))
-                .collect();
-            Fixed {
-                constant: format!("FIXED_{}", set.key.first),
-                doc: format!(
-                    "The value of \"{}\" each PROFINET module fixes, by its ident number: the module writes it; the user cannot change it.",
-                    doc_text(&set.entries[0].name.en)
-                ),
-                modules,
-            }
+                .map(|(ident, _, value)| (format!("super::{}_IDENT", ident.upper_snake()), *value))
+                .collect(),
         })
         .collect()
 }
@@ -709,13 +703,9 @@ fn profinet_items(p: &Profinet) -> ProfinetItems {
 fn hex_bytes(bytes: &[u8]) -> String {
     bytes
         .iter()
-        .map(|b| format!("0x{b:02X}"))
+        .map(|&b| hex8(b))
         .collect::<Vec<_>>()
         .join(", ")
-}
-
-fn hex16(value: u16) -> String {
-    format!("0x{value:04X}")
 }
 
 /// `0x0000_0202`: eight digits in two groups, as ident numbers are written.

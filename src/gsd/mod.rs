@@ -21,17 +21,11 @@ mod rules;
 mod schema;
 
 pub use config::{io_lengths, CfgError, IoLengths};
-pub(crate) use schema::{keyword_max_len, keyword_range};
-
-/// The longest text a block carries outside its settings: a module's or a
-/// parameter's name, a PrmText's or a diagnosis value's text (32
-/// characters, GSD specification V5.1; FIELDBUS-NOTES §3). The rules hold
-/// every GSD to it, and the loader every such text of a description.
-pub(crate) const BLOCK_TEXT_LEN: usize = 32;
 pub use model::{
     Allowed, Arg, Baud, Block, ExtUserPrmData, GsdFile, IndexedText, Module, PrmDataType, PrmText,
     Setting, Slot, Spanned, UnitDiagArea, UnitDiagType, Value,
 };
+pub(crate) use schema::{keyword_max_len, keyword_range};
 
 /// Bytes as vendors write them: UTF-8 if valid, else Latin-1 (each byte one
 /// char). 272 of 654 real files are Latin-1 (umlauts in texts), and Latin-1

@@ -4,12 +4,12 @@
 
 use foldhash::{HashMap, HashMapExt};
 
-use crate::gsd::model::{ExtUserPrmData, GsdFile, PrmDataType, Setting};
+use crate::gsd::model::{ExtUserPrmData, GsdFile, Module, PrmDataType, Setting};
 
 /// No parameter telegram is longer than a PROFIBUS frame can carry, so the
 /// default telegram never grows past this (entries beyond it are reported by
 /// rule E219 and left out here).
-pub const MAX_TELEGRAM: usize = 244;
+pub const MAX_TELEGRAM: usize = crate::spec::DP_MAX_TELEGRAM;
 
 /// Which family of parameter keywords: the plain ones, or PROFIsafe's `F_`
 /// ones inside a module.
@@ -168,6 +168,24 @@ pub fn occupied(offset: i64, data: &ExtUserPrmData) -> Vec<(i64, u8)> {
     (0..ty.value.size() as i64)
         .map(|i| (offset + i, mask))
         .collect()
+}
+
+// The default telegrams are methods of the model, built here: the model
+// describes the file, this module what a master makes of it.
+impl GsdFile {
+    /// The station's default User_Prm_Data telegram (without the 7 standard
+    /// bytes of the Set_Prm telegram), as a master sends it unchanged.
+    pub fn default_user_prm_data(&self) -> Vec<u8> {
+        default_telegram(self, &self.settings, Family::Plain)
+    }
+}
+
+impl Module {
+    /// The module's default parameter bytes (its part of User_Prm_Data),
+    /// built like [`GsdFile::default_user_prm_data`].
+    pub fn default_prm_data(&self, file: &GsdFile) -> Vec<u8> {
+        default_telegram(file, &self.settings, Family::Plain)
+    }
 }
 
 #[cfg(test)]

@@ -18,56 +18,21 @@ use crate::gsd::model::{
 };
 use crate::gsd::schema;
 
-/// Block keywords: the opening keyword (normalized) and the closing one as
-/// the specification spells it.
-const BLOCKS: [(&str, &str); 11] = [
-    ("module", "EndModule"),
-    ("extuserprmdata", "EndExtUserPrmData"),
-    ("prmtext", "EndPrmText"),
-    ("unitdiagtype", "EndUnitDiagType"),
-    ("unit_diag_area", "Unit_Diag_Area_End"),
-    ("x_unit_diag_area", "X_Unit_Diag_Area_End"),
-    ("slotdefinition", "EndSlotDefinition"),
-    ("physical_interface", "End_Physical_Interface"),
-    ("version_firmware_download", "End_Version_Firmware_Download"),
-    ("jokerblock_type", "End_Jokerblock_Type"),
-    ("data_area_beg", "Data_Area_End"),
-];
-
-/// The keywords of lines inside blocks besides settings, which the schema
-/// does not list: its table holds them too (see [`schema::key_of`]), so a
-/// block's lines allocate no keys either.
-pub(crate) fn inner_keywords() -> impl Iterator<Item = &'static str> {
-    const LINES: [&str; 12] = [
-        "Text",
-        "Value",
-        "X_Value",
-        "Slot",
-        "Bit",
-        "BitArea",
-        "Unsigned8",
-        "Unsigned16",
-        "Unsigned32",
-        "Signed8",
-        "Signed16",
-        "Signed32",
-    ];
-    BLOCKS.iter().map(|(_, end)| *end).chain(LINES)
-}
-
 fn end_keyword(open_key: &str) -> &'static str {
-    BLOCKS
+    schema::BLOCKS
         .iter()
         .find(|(open, _)| *open == open_key)
         .map_or("", |(_, end)| end)
 }
 
 fn is_opener(key: &str) -> bool {
-    BLOCKS.iter().any(|(open, _)| *open == key)
+    schema::BLOCKS.iter().any(|(open, _)| *open == key)
 }
 
 fn is_end(key: &str) -> bool {
-    BLOCKS.iter().any(|(_, end)| end.eq_ignore_ascii_case(key))
+    schema::BLOCKS
+        .iter()
+        .any(|(_, end)| end.eq_ignore_ascii_case(key))
 }
 
 fn ends(key: &str, open_key: &str) -> bool {

@@ -9,7 +9,44 @@ use foldhash::{HashMap, HashMapExt};
 
 use serde::Deserialize;
 
-use crate::gsd::model::Baud;
+use crate::spec::Baud;
+
+/// Block keywords: the opening keyword (normalized) and the closing one as
+/// the specification spells it.
+pub(crate) const BLOCKS: [(&str, &str); 11] = [
+    ("module", "EndModule"),
+    ("extuserprmdata", "EndExtUserPrmData"),
+    ("prmtext", "EndPrmText"),
+    ("unitdiagtype", "EndUnitDiagType"),
+    ("unit_diag_area", "Unit_Diag_Area_End"),
+    ("x_unit_diag_area", "X_Unit_Diag_Area_End"),
+    ("slotdefinition", "EndSlotDefinition"),
+    ("physical_interface", "End_Physical_Interface"),
+    ("version_firmware_download", "End_Version_Firmware_Download"),
+    ("jokerblock_type", "End_Jokerblock_Type"),
+    ("data_area_beg", "Data_Area_End"),
+];
+
+/// The keywords of lines inside blocks besides settings, which the schema
+/// does not list: its table holds them too (see [`key_of`]), so a
+/// block's lines allocate no keys either.
+pub(crate) fn inner_keywords() -> impl Iterator<Item = &'static str> {
+    const LINES: [&str; 12] = [
+        "Text",
+        "Value",
+        "X_Value",
+        "Slot",
+        "Bit",
+        "BitArea",
+        "Unsigned8",
+        "Unsigned16",
+        "Unsigned32",
+        "Signed8",
+        "Signed16",
+        "Signed32",
+    ];
+    BLOCKS.iter().map(|(_, end)| *end).chain(LINES)
+}
 
 /// A keyword's value type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -165,7 +202,7 @@ impl Schema {
             }
             by_key.insert(key, Entry::Keyword(Keyword { name, spec }));
         }
-        for name in crate::gsd::reader::inner_keywords() {
+        for name in inner_keywords() {
             // A keyword of the schema keeps its entry, should one share a name.
             by_key
                 .entry(name.to_ascii_lowercase().into())

@@ -1,52 +1,7 @@
 //! GSDML schema versions and the file naming convention
 //! `GSDML-V<x.yy>-<Vendor>-<Family>-<yyyymmdd>[-hhmmss].xml`.
 
-use std::fmt;
-
-/// A GSDML schema version. The minor part is a decimal fraction: V2.4 is
-/// V2.40 and comes after V2.35 and before V2.41; V2.3 is V2.30.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Version {
-    major: u8,
-    hundredths: u8,
-}
-
-impl Version {
-    /// The newest schema gsdc knows (`shared/reference/gsdml-xsd-v2.44`).
-    pub const LATEST: Version = Version::new(2, 44);
-
-    pub const fn new(major: u8, hundredths: u8) -> Self {
-        Version { major, hundredths }
-    }
-
-    /// `V2.32`, `v2.4` or `2.25`.
-    pub fn parse(text: &str) -> Option<Self> {
-        let text = text.strip_prefix(['V', 'v']).unwrap_or(text);
-        let (major, minor) = text.split_once('.')?;
-        let all_digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-        if !all_digits(major) || !all_digits(minor) || minor.len() > 2 {
-            return None;
-        }
-        let minor_value: u8 = minor.parse().ok()?;
-        let hundredths = if minor.len() == 1 {
-            minor_value * 10
-        } else {
-            minor_value
-        };
-        Some(Version::new(major.parse().ok()?, hundredths))
-    }
-}
-
-impl fmt::Display for Version {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let Version { major, hundredths } = *self;
-        if hundredths % 10 == 0 {
-            write!(f, "V{major}.{}", hundredths / 10)
-        } else {
-            write!(f, "V{major}.{hundredths:02}")
-        }
-    }
-}
+pub use crate::spec::GsdmlVersion as Version;
 
 /// The schema version of `xsi:schemaLocation`, read from the file name of
 /// its schema: `... ..\xsd\GSDML-DeviceProfile-V2.32.xsd`.

@@ -30,6 +30,9 @@ pub struct Gateway {
     /// Max_Module: the most modules any configuration within the limits
     /// needs, when each direction is made of as few modules as it can be.
     pub max_modules: u8,
+    /// How each total of words within the limits is made of as few modules
+    /// as it can be.
+    pub fewest: Fewest,
     pub diagnosis: Option<Diagnosis>,
 }
 
@@ -54,12 +57,14 @@ impl Gateway {
             .iter()
             .filter(|m| m.direction == direction)
             .collect();
-        let sizes: Vec<u8> = modules.iter().map(|m| m.words).collect();
-        let fewest = fewest_by_total(&sizes, words);
+        let last = match direction {
+            Direction::In => &self.fewest.input,
+            Direction::Out => &self.fewest.output,
+        };
         let mut plugged = Vec::new();
         let mut total = words;
         while total > 0 {
-            let (_, size) = fewest[total]?;
+            let size = (*last.get(total)?)?;
             // A direction offers each size once.
             plugged.push(*modules.iter().find(|m| m.words == size)?);
             total -= usize::from(size);
@@ -144,37 +149,15 @@ pub struct Module {
     pub ident: Ident,
 }
 
-/// For each total of 0..=`words` words: the fewest modules of `sizes` (words
-/// each) that make it, and the largest size the last of them can be
-/// (`(0, 0)` for no words); `None` for a total no set of them makes.
-/// Lowering takes Max_Module from it, the datasheet the modules of its
-/// example.
-pub(crate) fn fewest_by_total(sizes: &[u8], words: usize) -> Vec<Option<(usize, u8)>> {
-    let mut fewest: Vec<Option<(usize, u8)>> = vec![None; words + 1];
-    fewest[0] = Some((0, 0));
-    for total in 1..=words {
-        fewest[total] = sizes
-            .iter()
-            .filter_map(|&size| {
-                let (before, _) = fewest[total.checked_sub(usize::from(size))?]?;
-                Some((before + 1, size))
-            })
-            .min_by_key(|&(n, size)| (n, std::cmp::Reverse(size)));
-    }
-    fewest
-}
-
-/// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
-/// the whole length, bit 6 words, bits 5-4 direction (01 input, 10
-/// output), bits 3-0 length - 1.
-pub(crate) fn config_byte(direction: Direction, words: u8, consistent: bool) -> u8 {
-    debug_assert!((1..=super::profibus::MAX_WORDS_PER_IDENTIFIER).contains(&words));
-    let consistency = if consistent { 0x80 } else { 0 };
-    let way = match direction {
-        Direction::In => 0x10,
-        Direction::Out => 0x20,
-    };
-    consistency | 0x40 | way | (words - 1)
+/// For each total of 0..=the limit words, each way: the size of the last
+/// module of the fewest that make it (`None` for 0 words, and for a total
+/// no set of modules makes). Lowering computes it; the datasheet's example
+/// reads it through [`Gateway::fewest_modules`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Fewest {
+    pub input: Vec<Option<u8>>,
+    pub output: Vec<Option<u8>>,
 }
 
 /// The device-related diagnosis: the header byte (block length, bits 7-6 =
@@ -257,22 +240,5 @@ mod tests {
         );
         assert_eq!(words(Direction::Out, 64), [16, 16, 16, 16]);
         assert!(words(Direction::In, 0).is_empty());
-    }
-
-    #[test]
-    fn sizes_that_leave_a_total_out_make_none_of_it() {
-        let fewest = fewest_by_total(&[2, 4], 8);
-        assert_eq!(fewest[0], Some((0, 0)));
-        assert_eq!(fewest[1], None);
-        assert_eq!(fewest[6], Some((2, 4)));
-        assert_eq!(fewest[8], Some((2, 4)));
-    }
-
-    #[test]
-    fn config_bytes_say_words_direction_and_length() {
-        assert_eq!(config_byte(Direction::In, 1, false), 0x50);
-        assert_eq!(config_byte(Direction::In, 16, false), 0x5F);
-        assert_eq!(config_byte(Direction::Out, 8, false), 0x67);
-        assert_eq!(config_byte(Direction::Out, 16, true), 0xEF);
     }
 }

@@ -156,6 +156,9 @@ pub enum Holds {
 pub struct FixedByModule {
     pub user_defined: u16,
     pub standard_telegram_1: Option<u16>,
+    /// Whether User_Prm_Data carries the setting, a PROFIBUS master setting
+    /// it, as the description says; true without `[profibus]`.
+    pub in_user_prm: bool,
 }
 
 /// What a mapping may hold: a parameter address within a range, or one of

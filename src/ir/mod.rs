@@ -4,6 +4,7 @@
 //! Identity, telegram and mappings are shared by every bus; what only
 //! PROFIBUS needs lives in [`profibus`].
 
+mod cyclic;
 mod decision;
 pub mod gateway;
 pub mod mapping;
@@ -13,6 +14,7 @@ pub mod profibus;
 pub mod profinet;
 pub mod telegram;
 
+pub use cyclic::{Bus, CyclicModule, ModuleId};
 pub use decision::{Decision, DecisionKind};
 pub use gateway::Gateway;
 pub use mapping::{

@@ -116,6 +116,11 @@ impl Scope {
         candidate
     }
 
+    /// Takes `ident` for a name the scope's owner writes itself.
+    pub(crate) fn reserve(&mut self, ident: &Ident) {
+        self.insert(ident);
+    }
+
     fn is_taken(&self, ident: &Ident) -> bool {
         self.camel.contains(&ident.camel()) || self.snake.contains(&ident.snake())
     }

@@ -2,9 +2,10 @@
 //! modules with their config bytes, the parameter telegram and diagnosis.
 
 use super::{
-    EntryKey, Ident, Ir, Layout, MappingEntry, MappingKind, MappingSet, SetKey, Text, ValueSet,
+    EntryKey, Ident, Ir, Layout, MappingEntry, MappingGroup, MappingKind, MappingSet, SetKey, Text,
+    ValueSet,
 };
-pub use crate::gsd::Baud;
+pub use crate::spec::Baud;
 use std::fmt;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -20,6 +21,10 @@ pub struct Profibus {
     /// Max_Input_Len and Max_Output_Len: the largest module's bytes.
     pub max_input_len: u16,
     pub max_output_len: u16,
+    /// Max_Data_Len: input and output together.
+    pub max_data_len: u16,
+    /// Max_Module: the most modules a master plugs.
+    pub max_module: u8,
     /// Supported baud rates with MaxTsdr in bit times, slowest first.
     pub baud_rates: Vec<(Baud, u16)>,
     /// Units of 100 us.
@@ -75,42 +80,8 @@ pub struct PpoModule {
     pub ident: Ident,
 }
 
-/// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
-/// the whole length, bit 6 words, bits 5-4 direction (11 = in and out),
-/// bits 3-0 length - 1.
-const CONSISTENT_WORDS_IN_OUT: u8 = 0b1111_0000;
-
 /// Words one general identifier byte can carry.
 pub const MAX_WORDS_PER_IDENTIFIER: u8 = 16;
-
-/// PPO1 `0xF3,0xF1`: the PKW as 4 consistent words in and out, then the PZD
-/// as one consistent block in and out. Lowering keeps `pzd_words` within
-/// 1..=16.
-pub(crate) fn config_bytes(layout: Layout) -> Vec<u8> {
-    let pkw = layout.pkw.then(|| identifier(super::telegram::PKW_WORDS));
-    pkw.into_iter()
-        .chain(std::iter::once(identifier(layout.pzd_words)))
-        .collect()
-}
-
-fn identifier(words: u8) -> u8 {
-    debug_assert!((1..=MAX_WORDS_PER_IDENTIFIER).contains(&words));
-    CONSISTENT_WORDS_IN_OUT | (words - 1)
-}
-
-/// The standard PPO types: (PKW, PZD words). PPO5's PZD count may differ per
-/// device (MD810 has 12), so the description gives it.
-pub(crate) fn ppo_layout(ppo: u8, ppo5_pzd_words: u8) -> Option<Layout> {
-    let (pkw, pzd_words) = match ppo {
-        1 => (true, 2),
-        2 => (true, 6),
-        3 => (false, 2),
-        4 => (false, 6),
-        5 => (true, ppo5_pzd_words),
-        _ => return None,
-    };
-    Some(Layout::new(pkw, pzd_words))
-}
 
 /// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
 /// DPV1 status bytes), then one block of Unsigned16 parameters per group of
@@ -138,6 +109,25 @@ impl UserPrm {
 
     pub fn block(&self, kind: MappingKind) -> Option<&PrmBlock> {
         self.blocks.iter().find(|b| b.kind == kind)
+    }
+
+    /// Where the entries of `group` that User_Prm_Data carries stand among
+    /// the group's, in order, when it carries some and not all (a setting a
+    /// PROFIBUS master cannot set); `None` when it carries all or none.
+    pub fn partial(&self, group: &MappingGroup) -> Option<Vec<usize>> {
+        let block = self.block(group.kind)?;
+        let carried: Vec<usize> = group
+            .entries()
+            .enumerate()
+            .filter(|(_, (_, e))| {
+                block
+                    .params
+                    .iter()
+                    .any(|p| p.value == PrmValue::Entry(e.key))
+            })
+            .map(|(i, _)| i)
+            .collect();
+        (carried.len() < group.entry_count()).then_some(carried)
     }
 
     /// The parameter that holds `value`, where the plan places it; `None`
@@ -359,10 +349,6 @@ pub const STANDARD_DIAG_BYTES: u8 = 6;
 mod tests {
     use super::*;
 
-    fn config(ppo: u8, ppo5: u8) -> Vec<u8> {
-        config_bytes(ppo_layout(ppo, ppo5).unwrap())
-    }
-
     /// Every parameter is found by what it holds, a mapping entry or a
     /// gateway parameter; an entry the telegram does not carry is not.
     #[test]
@@ -389,26 +375,6 @@ mod tests {
             };
             assert_eq!(user_prm.placed(PrmValue::Entry(setting)), None, "{name}");
         }
-    }
-
-    #[test]
-    fn ppo_config_bytes_match_the_profidrive_table() {
-        assert_eq!(config(1, 12), [0xF3, 0xF1]);
-        assert_eq!(config(2, 12), [0xF3, 0xF5]);
-        assert_eq!(config(3, 12), [0xF1]);
-        assert_eq!(config(4, 12), [0xF5]);
-        assert_eq!(config(5, 12), [0xF3, 0xFB]);
-        assert_eq!(config(5, 10), [0xF3, 0xF9]);
-    }
-
-    #[test]
-    fn ppo_lengths_in_bytes() {
-        let bytes = |ppo| ppo_layout(ppo, 12).unwrap().bytes();
-        assert_eq!(
-            [bytes(1), bytes(2), bytes(3), bytes(4), bytes(5)],
-            [12, 20, 4, 12, 32]
-        );
-        assert!(ppo_layout(6, 12).is_none());
     }
 
     #[test]

@@ -4,7 +4,7 @@
 //! only writes them down.
 
 use super::{EntryKey, Ident, Layout, MappingKind, SetKey, Text};
-pub use crate::gsdml::Version;
+pub use crate::spec::GsdmlVersion as Version;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -37,6 +37,11 @@ pub struct Profinet {
     pub value_items: Vec<ValueItem>,
     /// The device symbol's GraphicItem, when the device has a symbol.
     pub device_symbol: Option<GraphicItem>,
+    /// How firmware reads the record of each kind of mapping a module
+    /// carries, in the order of the kinds.
+    pub records: Vec<RecordPlan>,
+    /// The value each module fixes, for each set fixed per module.
+    pub fixed: Vec<FixedValues>,
 }
 
 /// A GraphicItem: its ID and GraphicFile, the bitmap's name beside the
@@ -50,14 +55,48 @@ pub struct GraphicItem {
 }
 
 impl Profinet {
-    /// The record index of a kind of mapping, when a module carries it.
-    pub fn record_index(&self, kind: MappingKind) -> Option<u16> {
-        self.modules
-            .iter()
-            .flat_map(|m| &m.records)
-            .find(|r| r.kind == kind)
-            .map(|r| r.index)
+    /// The record of a kind of mapping, when a module carries it.
+    pub fn record(&self, kind: MappingKind) -> Option<&RecordPlan> {
+        self.records.iter().find(|r| r.kind == kind)
     }
+
+    /// The values modules fix for the set `key`, when they fix one.
+    pub fn fixed(&self, key: SetKey) -> Option<&FixedValues> {
+        self.fixed.iter().find(|f| f.set == key)
+    }
+}
+
+/// The record of one kind of mapping, as firmware reads what the
+/// controller writes: each module's record of the kind has this index.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct RecordPlan {
+    pub kind: MappingKind,
+    pub index: u16,
+    /// Bytes with every entry of the kind, two each.
+    pub length: u16,
+    pub reading: RecordReading,
+}
+
+/// How much of a record the controller writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RecordReading {
+    /// Every entry.
+    Whole,
+    /// The first entries: a module's PZD record holds the words the
+    /// module transports; the others keep their defaults.
+    Prefix,
+}
+
+/// The value of a set fixed per module, for each module that carries it:
+/// the module writes it; the user cannot change it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct FixedValues {
+    pub set: SetKey,
+    /// The module (its name in generated code and its ident number) and
+    /// its value, in module order.
+    pub modules: Vec<(Ident, u32, u16)>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -66,12 +105,28 @@ pub struct Date {
     pub year: u16,
     pub month: u8,
     pub day: u8,
+    /// The local time of day, for a second release on one day.
+    pub time: Option<TimeOfDay>,
+}
+
+/// A local time of day in whole seconds, as a GSDML file name gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct TimeOfDay {
+    pub hour: u8,
+    pub minute: u8,
+    pub second: u8,
 }
 
 impl Date {
-    /// `yyyymmdd`, as GSDML file names write it.
+    /// `yyyymmdd`, or `yyyymmdd-hhmmss` with a time, as GSDML file names
+    /// write it.
     pub fn compact(self) -> String {
-        format!("{:04}{:02}{:02}", self.year, self.month, self.day)
+        let date = format!("{:04}{:02}{:02}", self.year, self.month, self.day);
+        match self.time {
+            None => date,
+            Some(t) => format!("{date}-{:02}{:02}{:02}", t.hour, t.minute, t.second),
+        }
     }
 }
 
@@ -94,6 +149,10 @@ impl TextRef {
 
 /// The device access point's ModuleIdentNumber and its submodule's.
 pub const DAP_IDENT: u32 = 0x0000_0001;
+/// The subslot of a submodule the GSDML gives none (FixedInSubslots'
+/// default): the DAP's own, a module's one data submodule.
+pub const DAP_SUBSLOT: u16 = 1;
+pub const DEFAULT_SUBSLOT: u16 = 1;
 /// Subslots of the interface and of its first port (IEC 61158-6-10). They
 /// are also the submodule ident numbers of the interface and the ports, as
 /// p-net does it, so firmware and GSDML share one number for each.
@@ -198,6 +257,16 @@ impl Module {
     /// A PROFIdrive telegram: the profile's, in the profile's API.
     pub fn is_profidrive(&self) -> bool {
         self.api == PROFIDRIVE_API
+    }
+
+    /// The subslot of its data submodule: after PROFIdrive's access point,
+    /// or the default.
+    pub fn data_subslot(&self) -> u16 {
+        if self.access_point.is_some() {
+            PROFIDRIVE_DATA_SUBSLOT
+        } else {
+            DEFAULT_SUBSLOT
+        }
     }
 }
 

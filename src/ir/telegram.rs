@@ -116,4 +116,14 @@ impl Layout {
     pub fn bytes(self) -> u16 {
         2 * (u16::from(self.pkw_words()) + u16::from(self.pzd_words))
     }
+
+    /// The byte where the PZD words start: after the PKW channel.
+    pub fn pzd_offset(self) -> u16 {
+        2 * u16::from(self.pkw_words())
+    }
+
+    /// The byte where PZD word `n` (from 1) starts.
+    pub fn pzd_word_offset(self, n: u8) -> u16 {
+        self.pzd_offset() + 2 * u16::from(n - 1)
+    }
 }

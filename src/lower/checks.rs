@@ -5,13 +5,11 @@ use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, Decision, DecisionKind};
 use crate::unicode::is_unsafe;
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
-/// The longest text a GSD block shows (a parameter's name, a value's
-/// text), as the rules hold every GSD to it.
-pub const GSD_NAME_LEN: usize = crate::gsd::BLOCK_TEXT_LEN;
+pub use crate::spec::GSD_NAME_LEN;
 
 pub struct Checker {
     diagnostics: Diagnostics,
@@ -21,6 +19,9 @@ pub struct Checker {
     languages: BTreeSet<String>,
     /// Placeholders and gsdc's defaults, as lowering meets them.
     decisions: Vec<Decision>,
+    /// The prefix of the first name the description writes each address
+    /// with (`Numbering::written_prefixes`).
+    written_prefixes: BTreeMap<u16, String>,
 }
 
 /// Where the defaults of several items come from: `default` for all of
@@ -46,6 +47,7 @@ impl Checker {
             for_gsd,
             languages: BTreeSet::new(),
             decisions: Vec::new(),
+            written_prefixes: BTreeMap::new(),
         }
     }
 
@@ -108,6 +110,18 @@ impl Checker {
     /// The placeholders and defaults met, in the order met.
     pub fn take_decisions(&mut self) -> Vec<Decision> {
         std::mem::take(&mut self.decisions)
+    }
+
+    /// A function-code name read: the address is written back with its
+    /// prefix, the first one the description writes it with.
+    pub fn wrote_name(&mut self, address: u16, prefix: &str) {
+        self.written_prefixes
+            .entry(address)
+            .or_insert_with(|| prefix.to_string());
+    }
+
+    pub fn take_written_prefixes(&mut self) -> BTreeMap<u16, String> {
+        std::mem::take(&mut self.written_prefixes)
     }
 
     /// Every language besides English that a text used, in code order.

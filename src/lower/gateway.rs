@@ -78,7 +78,7 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
         })
         .collect();
     default_configuration(cx, &node_count, &words);
-    let (modules, max_modules) = modules::modules(cx, &g.modules, &limits);
+    let (modules, max_modules, fewest) = modules::modules(cx, &g.modules, &limits);
     let (nodes, node_types) = by_node(nodes, &words);
     let prm_types = std::iter::once((ParamKey::NodeCount, count_type))
         .chain(node_types)
@@ -96,6 +96,7 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
             nodes,
             modules,
             max_modules,
+            fewest,
             diagnosis: g.diagnosis.as_ref().map(|d| diagnosis::lower(cx, d)),
         },
         prm_types,

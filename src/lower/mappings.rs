@@ -155,6 +155,10 @@ fn fixed_by_module(
             Some(v) => Some(value(v)?),
             None => None,
         },
+        in_user_prm: per_module
+            .profibus
+            .as_ref()
+            .is_none_or(|p| *p.get_ref() == raw::OnProfibus::User),
     })
 }
 

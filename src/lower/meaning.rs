@@ -7,6 +7,7 @@ use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profinet::ModuleKind;
 use crate::ir::{MappingKind, Mappings, Profibus, Profinet};
+use toml::Spanned;
 
 pub fn check(
     cx: &mut Checker,
@@ -64,8 +65,10 @@ fn unmapped_words(
     }
 }
 
-/// E140: a setting fixed per module needs PROFINET modules, and a GSD
-/// cannot hold it (a PROFIBUS parameter is the device's, not a module's).
+/// E140: a setting fixed per module needs PROFINET modules that fix it.
+/// With `[profibus]` too, whose PPO types fix nothing, the description says
+/// whether User_Prm_Data carries it (E157 when it does not say; E002 for
+/// `profibus` without `[profibus]`).
 fn per_module_settings(
     cx: &mut Checker,
     desc: &raw::Description,
@@ -82,8 +85,6 @@ fn per_module_settings(
         };
         let problem = if profinet.is_none() {
             Some("per_module needs PROFINET modules: the description has no [profinet]")
-        } else if profibus.is_some() {
-            Some("a GSD's parameters are the device's, not a module's: per_module cannot be in a description with [profibus]")
         } else if per_module.get_ref().standard_telegram_1.is_some() && !telegram_1 {
             Some("standard telegram 1 is not offered: set standard_telegram_1 = true or drop its value")
         } else {
@@ -100,5 +101,29 @@ fn per_module_settings(
                 .help(problem),
             );
         }
+        on_profibus(cx, per_module, profibus.is_some());
+    }
+}
+
+/// Whether the description says what a PROFIBUS master does with a setting
+/// fixed per PROFINET module, where there is one to say it of.
+fn on_profibus(cx: &mut Checker, per_module: &Spanned<raw::PerModule>, has_profibus: bool) {
+    match (&per_module.get_ref().profibus, has_profibus) {
+        (None, true) => cx.push(
+            Diagnostic::error(
+                "E157",
+                "a setting fixed per PROFINET module does not say what it is on PROFIBUS",
+            )
+            .at(per_module.span())
+            .label("no `profibus` here")
+            .help("PPO types fix nothing: say profibus = \"user\" (User_Prm_Data carries it and the master sets it, as any setting) or profibus = \"absent\" (the master cannot set it; the drive keeps its own value)"),
+        ),
+        (Some(said), false) => cx.push(
+            Diagnostic::error("E002", "`profibus` in a description without [profibus]")
+                .at(said.span())
+                .label("means nothing here")
+                .help("remove it: it says what a PROFIBUS master does with the setting"),
+        ),
+        _ => {}
     }
 }

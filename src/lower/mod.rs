@@ -9,6 +9,7 @@ mod choices;
 mod gateway;
 mod mappings;
 mod meaning;
+mod ppo;
 mod profibus;
 mod profinet;
 mod telegram;
@@ -19,15 +20,21 @@ use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 use checks::Checker;
 use toml::Spanned;
 
+/// Reads a file the description names (its symbol), relative to it: its
+/// bytes, or why it cannot.
+pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
+
 /// Lowers a parsed description: the IR when there is no error, and every
 /// diagnostic, warnings included. `source_name` is the file name written into
 /// generated headers; `text` is the description's text, for the fingerprint.
-/// `files` gives the bytes of a file the description names (its symbol).
+/// `files` gives the bytes of a file the description names (its symbol);
+/// without it nothing is read and the IR has no device symbol, which only
+/// the device files need (a build of firmware layouts alone).
 pub fn lower(
     desc: &Description,
     source_name: &str,
     text: &str,
-    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+    files: Option<Files<'_>>,
 ) -> (Option<Ir>, Diagnostics) {
     if let Some(missing) = missing_key(desc, text) {
         return (None, Diagnostics(vec![missing]));
@@ -91,6 +98,10 @@ pub fn lower(
     decisions.extend(choices::lower(&mut cx, &desc.choices, text));
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
     let languages = cx.languages();
+    let numbering = numbering.map(|mut n| {
+        n.written_prefixes = cx.take_written_prefixes();
+        n
+    });
     let diagnostics = cx.finish();
     if diagnostics.has_errors() {
         return (None, diagnostics);
@@ -153,13 +164,13 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
     )
 }
 
-fn lower_device(
-    cx: &mut Checker,
-    d: &raw::Device,
-    files: &dyn Fn(&str) -> Result<Vec<u8>, String>,
-) -> ir::Device {
+fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> ir::Device {
     ir::Device {
-        symbol: d.symbol.as_ref().and_then(|path| symbol(cx, path, files)),
+        symbol: d
+            .symbol
+            .as_ref()
+            .zip(files)
+            .and_then(|(path, files)| symbol(cx, path, files)),
         vendor: cx.gsd_string(&d.vendor, "Vendor_Name", "vendor"),
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, "Model_Name", "model"),
@@ -289,7 +300,7 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
     }
     check_separator(cx, &f.separator);
     // A prefix refused is left out, so that names with the others still resolve.
-    let prefixes = f
+    let prefixes: Vec<(String, u8)> = f
         .prefixes
         .iter()
         .filter(|(p, _)| valid_prefix(cx, p))
@@ -297,17 +308,87 @@ fn lower_numbering(cx: &mut Checker, f: &raw::FunctionCodes) -> Numbering {
         .collect();
     // A wrong radix was reported above; 16 only keeps names from failing twice.
     let radix = if radix == 10 { 10 } else { 16 };
-    Numbering::new(f.separator.get_ref().clone(), radix, prefixes, scheme)
+    let widths = widths(cx, f);
+    if f.separator.get_ref().is_empty() && radix == 16 {
+        prefixes_apart(cx, f);
+    }
+    let numbering = Numbering::new(f.separator.get_ref().clone(), radix, prefixes, scheme);
+    match widths {
+        Some(widths) => numbering.with_widths(widths),
+        None => numbering,
+    }
+}
+
+/// The digits of a group and an index (E101 beyond 1..3), given both or
+/// neither; E156 without a separator unless both are given: `P1120` is
+/// P1.120 or P11.20 or P112.0 until they say.
+fn widths(cx: &mut Checker, f: &raw::FunctionCodes) -> Option<ir::numbering::Widths> {
+    let digits = |cx: &mut Checker, key: &Option<Spanned<u8>>, what| {
+        key.as_ref().map(|d| cx.spanned_in_range(d, 1, 3, what))
+    };
+    let group = digits(cx, &f.group_digits, "group_digits");
+    let index = digits(cx, &f.index_digits, "index_digits");
+    match (group, index) {
+        (Some(group), Some(index)) => Some(ir::numbering::Widths {
+            group: group?,
+            index: index?,
+        }),
+        (None, None) if !f.separator.get_ref().is_empty() => None,
+        _ => {
+            let (span, label) = match (&f.group_digits, &f.index_digits) {
+                (Some(g), _) => (g.span(), "no index_digits beside it"),
+                (None, Some(i)) => (i.span(), "no group_digits beside it"),
+                (None, None) => (f.separator.span(), "no separator, and no widths"),
+            };
+            cx.push(
+                Diagnostic::error("E156", "the function codes' widths are not both given")
+                    .at(span)
+                    .label(label)
+                    .help("give group_digits and index_digits, the digits every name writes (Siemens' P1120: 2 and 2), or neither with a separator; without one they say where the group ends"),
+            );
+            None
+        }
+    }
+}
+
+/// E155: without a separator, a hex group may start right after a prefix:
+/// a prefix that is another one and hex digits (`F` and `FA`: is `FA12`
+/// prefix FA, or F and group A?) makes names ambiguous.
+fn prefixes_apart(cx: &mut Checker, f: &raw::FunctionCodes) {
+    for longer in f.prefixes.keys() {
+        let shadows = f.prefixes.keys().find(|shorter| {
+            longer
+                .get_ref()
+                .strip_prefix(shorter.get_ref().as_str())
+                .is_some_and(|rest| !rest.is_empty() && rest.chars().all(|c| c.is_ascii_hexdigit()))
+        });
+        if let Some(shorter) = shadows {
+            cx.push(
+                Diagnostic::error(
+                    "E155",
+                    format!(
+                        "the function-code prefix `{}` is `{}` and hex digits: without a separator its names could be either's",
+                        longer.get_ref(),
+                        shorter.get_ref()
+                    ),
+                )
+                .at(longer.span())
+                .label("ambiguous prefix")
+                .help("write a separator between group and index, or prefixes that do not start with one another"),
+            );
+        }
+    }
 }
 
 /// E155: a function-code name is `<prefix><group><separator><index>`, and
 /// generated code writes names in comments: the separator is punctuation or
 /// spaces, a prefix letters, so that neither holds the other nor a digit of
-/// a group or an index, and a name is never code. Empty ones and control
-/// characters are E117 and E135, as in any text.
+/// a group or an index, and a name is never code. Either may be empty (no
+/// separator: Siemens' P1120, with the widths; no prefix: ABB's 2202);
+/// blanks alone are E117, control characters E135, as in any text.
 fn check_separator(cx: &mut Checker, separator: &Spanned<String>) {
     let (text, span) = (separator.get_ref(), separator.span());
-    if !cx.non_empty(text, span.clone(), "function-code separator") {
+    if text.is_empty() || !cx.non_empty(text, span.clone(), "function-code separator") {
         return;
     }
     if let Some(bad) = text
@@ -329,9 +410,12 @@ fn check_separator(cx: &mut Checker, separator: &Spanned<String>) {
     }
 }
 
-/// Whether a prefix is ASCII letters (E155; see [`check_separator`]).
+/// Whether a prefix is ASCII letters or empty (E155; see [`check_separator`]).
 fn valid_prefix(cx: &mut Checker, prefix: &Spanned<String>) -> bool {
     let (text, span) = (prefix.get_ref(), prefix.span());
+    if text.is_empty() {
+        return true;
+    }
     if !cx.non_empty(text, span.clone(), "function-code prefix") {
         return false;
     }
@@ -368,9 +452,15 @@ fn resolve_address(
                 );
                 None
             }
-            Some(numbering) => match numbering.parse(name) {
-                Ok(value) => Some(value),
+            Some(numbering) => match numbering.read(name) {
+                Ok(named) => {
+                    cx.wrote_name(named.address, named.prefix);
+                    Some(named.address)
+                }
                 Err(why) => {
+                    let example = numbering
+                        .example()
+                        .map_or_else(String::new, |e| format!(", e.g. {e}"));
                     cx.push(
                         Diagnostic::error(
                             "E106",
@@ -379,9 +469,8 @@ fn resolve_address(
                         .at(address.span())
                         .label("not a function code")
                         .help(format!(
-                            "write it as <prefix><group>{}<index>, e.g. {}, or as a number",
-                            numbering.separator,
-                            numbering.example().unwrap_or_else(|| "61452".into())
+                            "the description numbers parameters as {}{example}; or write the number",
+                            numbering.form()
                         )),
                     );
                     None

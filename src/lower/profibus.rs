@@ -4,15 +4,16 @@
 use super::checks::{Checker, GSD_NAME_LEN};
 use super::gateway;
 use super::mappings::SetSpans;
+use super::ppo::{config_bytes, ppo_layout};
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::emit::gsd::{KEY_WIDTH, MAX_LINE};
 use crate::ir::profibus::{
-    config_bytes, ppo_layout, Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule,
-    PrmBlock, PrmParam, PrmText, PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
+    Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
+    PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, Mappings, PkwKind, Scope, Telegram};
+use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
+use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
@@ -105,6 +106,9 @@ pub fn lower(
         modules,
         max_input_len,
         max_output_len,
+        max_data_len: max_input_len + max_output_len,
+        // A gateway's modules are plugged together; else one module.
+        max_module: gateway.map_or(1, |g| g.gateway.max_modules),
         baud_rates: baud_rates(cx, &p.baud_rates),
         min_slave_interval: cx.gsd_number(
             &p.min_slave_interval,
@@ -447,7 +451,7 @@ fn user_prm(
     let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
     let texts: Vec<PrmText> = mappings
         .sets()
-        .filter(|s| s.allowed.choices().is_some())
+        .filter(|s| s.allowed.choices().is_some() && in_user_prm(s))
         .zip(1..=u16::MAX)
         .map(|(s, id)| PrmText { id, set: s.key })
         .collect();
@@ -459,10 +463,12 @@ fn user_prm(
     let blocks = mappings
         .groups
         .iter()
+        .filter(|g| g.entries().any(|(set, _)| in_user_prm(set)))
         .map(|g| {
             let block_offset = end;
             let params = g
                 .entries()
+                .filter(|(set, _)| in_user_prm(set))
                 .map(|(set, entry)| {
                     let offset = end;
                     end += entry_bytes;
@@ -510,6 +516,12 @@ fn user_prm(
         texts,
         len: saturate(end),
     }
+}
+
+/// Whether User_Prm_Data carries a set's entries: all but a setting the
+/// description keeps from a PROFIBUS master (`per_module.profibus`).
+fn in_user_prm(set: &MappingSet) -> bool {
+    set.fixed.is_none_or(|f| f.in_user_prm)
 }
 
 /// A gateway's parameters from `start` on, within the limit (E116).
@@ -560,11 +572,16 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
     let bits = (i64::from(length) - 1) * 8;
     let mut constants = Scope::default();
     let mut types = Scope::default();
-    let areas = raw
+    let mut areas: Vec<DiagnosisArea> = raw
         .areas
         .iter()
         .filter_map(|a| diagnosis_area(cx, a, bits, (&mut constants, &mut types)))
         .collect();
+    let taken: Vec<String> = areas
+        .iter()
+        .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
+        .collect();
+    super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
     Some(Diagnosis { length, areas })
 }
 

@@ -5,7 +5,7 @@ use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{
-    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, Version,
+    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
     FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
@@ -80,6 +80,8 @@ pub fn lower(
         "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
     );
     let value_items = records::value_items(mappings, &modules);
+    let reading_plans = records::reading_plans(mappings, &modules);
+    let fixed = records::fixed_values(mappings, &modules);
     let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
     Some(Profinet {
         file_name: format!(
@@ -132,6 +134,8 @@ pub fn lower(
         }),
         modules,
         value_items,
+        records: reading_plans,
+        fixed,
     })
 }
 
@@ -227,23 +231,52 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
     version
 }
 
+/// The GSDML file name's date: a TOML local date, or a local date-time in
+/// whole seconds for a second release on one day (PI's naming allows
+/// `-yyyymmdd-hhmmss`; TIA Portal does not refresh an installed file name,
+/// FIELDBUS-NOTES.md). A time with an offset is refused: the name has no
+/// zone, and converting it would write a time the description does not.
 fn date(cx: &mut Checker, d: &Spanned<toml::value::Datetime>) -> Option<Date> {
-    match (d.get_ref().date, d.get_ref().time, d.get_ref().offset) {
-        (Some(date), None, None) => Some(Date {
-            year: date.year,
-            month: date.month,
-            day: date.day,
-        }),
-        _ => {
-            cx.push(
-                Diagnostic::error("E131", "the GSDML date must be a date without a time")
-                    .at(d.span())
-                    .label("not a plain date")
-                    .help("write a TOML date like date = 2023-08-30"),
-            );
-            None
-        }
+    let value = d.get_ref();
+    let problem = match (value.date, value.time, value.offset) {
+        (Some(date), time, None) => match time.map(time_of_day).transpose() {
+            Ok(time) => {
+                return Some(Date {
+                    year: date.year,
+                    month: date.month,
+                    day: date.day,
+                    time,
+                })
+            }
+            Err(problem) => problem,
+        },
+        (Some(_), _, Some(_)) => "the GSDML date has a time zone, which a file name cannot show",
+        (None, ..) => "the GSDML date is a time of day without a date",
+    };
+    cx.push(
+        Diagnostic::error("E131", problem)
+            .at(d.span())
+            .label("not a local date or date-time")
+            .help("write a TOML date, date = 2023-08-30, or a local date-time in whole seconds for a second release on one day, date = 2023-08-30T07:14:47 (the file name ends -20230830-071447)"),
+    );
+    None
+}
+
+/// A TOML time as a file name's `hhmmss`: whole seconds, no leap second.
+/// TOML 1.1 may leave the seconds out: they are 00.
+fn time_of_day(time: toml::value::Time) -> Result<TimeOfDay, &'static str> {
+    let second = time.second.unwrap_or(0);
+    if time.nanosecond.is_some_and(|n| n != 0) {
+        return Err("the GSDML date has fractions of a second, which a file name cannot show");
     }
+    if second > 59 {
+        return Err("the GSDML date has second 60, which a file name cannot show");
+    }
+    Ok(TimeOfDay {
+        hour: time.hour,
+        minute: time.minute,
+        second,
+    })
 }
 
 /// Vendor and family as they go into the file name: letters, digits, `_`

@@ -43,7 +43,7 @@ fn lower_word(cx: &mut Checker, w: &raw::Word, what: &str) -> ir::Word {
     let mut used = 0u32;
     let mut constants = Scope::default();
     let mut types = Scope::default();
-    let bits = w
+    let mut bits: Vec<ir::BitField> = w
         .bits
         .iter()
         .filter_map(|b| {
@@ -61,6 +61,11 @@ fn lower_word(cx: &mut Checker, w: &raw::Word, what: &str) -> ir::Word {
             Some(field)
         })
         .collect();
+    let taken: Vec<String> = bits
+        .iter()
+        .flat_map(|b| ["mask", "shift"].map(|s| format!("{}_{s}", b.ident.snake())))
+        .collect();
+    apart_in_c(taken, bits.iter_mut().filter_map(|b| b.values.as_mut()));
     ir::Word {
         name: cx.text(&w.name, None, what),
         bits,
@@ -242,4 +247,41 @@ pub fn value_set(
         })
         .collect();
     ValueSet { ident, choices }
+}
+
+/// C declares the constants of a word or a block and the values of their
+/// sets in one namespace, `<CONSTANT>_MASK` beside `<SET>_<VALUE>`, where
+/// Rust keeps them apart (a constant, and a variant of an enum). A value
+/// whose C name is `taken`, or another value's, gets its number as a tag
+/// (`MASK_3`), as names that meet in Rust do: no description the loader
+/// accepts gives a C layout that declares a name twice.
+pub(in crate::lower) fn apart_in_c<'a>(
+    taken: impl IntoIterator<Item = String>,
+    sets: impl IntoIterator<Item = &'a mut ValueSet>,
+) {
+    let mut taken: BTreeSet<String> = taken.into_iter().collect();
+    for set in sets {
+        let base = set.ident.snake();
+        let c_name = |ident: &Ident| format!("{base}_{}", ident.snake());
+        let mut variants: BTreeSet<String> = set.choices.iter().map(|c| c.ident.camel()).collect();
+        for choice in &mut set.choices {
+            // Free: no C name taken, and no other variant of the enum.
+            let free = |ident: &Ident| {
+                !taken.contains(&c_name(ident))
+                    && (*ident == choice.ident || !variants.contains(&ident.camel()))
+            };
+            let mut ident = choice.ident.clone();
+            let mut n = 1;
+            while !free(&ident) {
+                ident = match n {
+                    1 => choice.ident.tagged(choice.value),
+                    _ => choice.ident.tagged(choice.value).tagged(n),
+                };
+                n += 1;
+            }
+            taken.insert(c_name(&ident));
+            variants.insert(ident.camel());
+            choice.ident = ident;
+        }
+    }
 }

@@ -41,6 +41,8 @@
 //! [`DeviceBitmap::approximated_pixels`] counts the pixels that did not, so a
 //! caller can say so.
 
+pub mod check;
+
 use std::fmt;
 use std::io::Cursor;
 

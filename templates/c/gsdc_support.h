@@ -1604,6 +1604,336 @@ static inline gsdc_diag_result_t gsdc_diag_encode(const gsdc_diag_layout_t *layo
     return result;
 }
 
+/* ------------------------------------------------------------------------
+ * Device tables: what a PROFIBUS-DP slave and a PROFINET IO device built
+ * from a layout need to know of the device, the same types in every layout
+ * (<prefix>_dp_device() and <prefix>_pn_device()), so one slave or device
+ * serves any description. A list is a pointer and its count (NULL and 0
+ * when empty). */
+
+/* Which PKW codec of this header the card's telegrams carry. */
+typedef enum {
+    GSDC_PKW_CODEC_NONE = 0,
+    /* gsdc_pke_* */
+    GSDC_PKW_CODEC_PKE_IND_PWE,
+    /* gsdc_station_* */
+    GSDC_PKW_CODEC_STATION_COMMAND,
+    /* gsdc_profidrive_* */
+    GSDC_PKW_CODEC_PROFIDRIVE
+} gsdc_pkw_codec_t;
+
+/* A `Module` of the GSD: its name as the GSD writes it, its config bytes as
+ * Chk_Cfg carries them, its bytes of input (the slave sends them) and of
+ * output, whether its telegrams start with the PKW channel, and its PZD
+ * words each way (0 for a gateway's module, whose words are the nodes'). */
+typedef struct {
+    const char *name;
+    const uint8_t *config;
+    size_t config_count;
+    size_t input_len;
+    size_t output_len;
+    bool pkw;
+    size_t pzd_words;
+} gsdc_dp_module_t;
+
+/* How a parameter is stored, as the GSD names it. */
+typedef enum {
+    GSDC_PRM_DATA_TYPE_UNSIGNED8 = 0,
+    GSDC_PRM_DATA_TYPE_UNSIGNED16,
+    /* Bit(first_bit) of the byte at the offset. */
+    GSDC_PRM_DATA_TYPE_BIT,
+    /* BitArea(first_bit-last_bit) of the byte at the offset. */
+    GSDC_PRM_DATA_TYPE_BIT_AREA
+} gsdc_prm_data_type_t;
+
+/* An ExtUserPrmData where User_Prm_Data holds it: its name as the GSD
+ * writes it, its offset, type and bits (0 and 7, or 15, for a number), its
+ * default, and what it may hold: min to max, and one of `values` when the
+ * GSD lists them. */
+typedef struct {
+    const char *name;
+    size_t offset;
+    gsdc_prm_data_type_t data_type;
+    uint8_t first_bit;
+    uint8_t last_bit;
+    uint16_t default_value;
+    uint16_t min;
+    uint16_t max;
+    const uint16_t *values;
+    size_t values_count;
+} gsdc_dp_param_t;
+
+/* User_Prm_Data: its length, the DPV1 status bytes at its start (NULL
+ * without DPV1) and every ExtUserPrmData of the GSD. */
+typedef struct {
+    size_t len;
+    const uint8_t *dpv1_status;
+    size_t dpv1_status_count;
+    const gsdc_dp_param_t *params;
+    size_t params_count;
+} gsdc_user_prm_t;
+
+/* A gateway's node totals: the bytes of input and output the nodes in use
+ * carry, as User_Prm_Data (`len` bytes) sets them; false when it is refused. */
+typedef bool (*gsdc_node_totals_t)(const uint8_t *user_prm, size_t len, size_t *input_len,
+                                   size_t *output_len);
+
+/* A PROFIBUS-DP slave: its ident number, every Module of the GSD,
+ * Max_Module, a gateway's node totals (NULL for a card whose configuration
+ * is one module), User_Prm_Data, the bytes of its device-related diagnosis
+ * block with the header (0 without one) and its PKW codec. */
+typedef struct {
+    uint16_t ident_number;
+    const gsdc_dp_module_t *modules;
+    size_t modules_count;
+    size_t max_modules;
+    gsdc_node_totals_t node_totals;
+    gsdc_user_prm_t user_prm;
+    size_t diagnosis_len;
+    gsdc_pkw_codec_t pkw;
+} gsdc_dp_device_t;
+
+/* Whether the GSD allows `param` to hold `value`. */
+static inline bool gsdc_dp_param_allows(const gsdc_dp_param_t *param, uint16_t value)
+{
+    bool allowed = (value >= param->min) && (value <= param->max);
+    if (allowed && (param->values_count > 0U)) {
+        size_t i;
+        allowed = false;
+        for (i = 0U; i < param->values_count; i++) {
+            allowed = allowed || (param->values[i] == value);
+        }
+    }
+    return allowed;
+}
+
+/* The parameter the GSD names `name`; NULL when it has none. */
+static inline const gsdc_dp_param_t *gsdc_dp_param_find(const gsdc_user_prm_t *user_prm,
+                                                        const char *name)
+{
+    const gsdc_dp_param_t *found = NULL;
+    size_t i;
+    for (i = 0U; (found == NULL) && (i < user_prm->params_count); i++) {
+        const char *a = user_prm->params[i].name;
+        const char *b = name;
+        while ((*a != '\0') && (*a == *b)) {
+            a++;
+            b++;
+        }
+        if (*a == *b) {
+            found = &user_prm->params[i];
+        }
+    }
+    return found;
+}
+
+/* The bits of a Bit or BitArea, as a mask from bit 0. */
+static inline uint16_t gsdc_dp_param_mask(const gsdc_dp_param_t *param)
+{
+    return (uint16_t)((1UL << (param->last_bit - param->first_bit + 1U)) - 1UL);
+}
+
+/* The value of `param` in User_Prm_Data (`len` bytes) into `value`:
+ * GSDC_PRM_LENGTH when it does not fit, GSDC_PRM_NOT_ALLOWED when the GSD
+ * does not allow it; `value` is written only when the result is GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_dp_param_read(const gsdc_dp_param_t *param,
+                                                   const uint8_t *bytes, size_t len,
+                                                   uint16_t *value)
+{
+    size_t size = 1U;
+    gsdc_prm_result_t result = gsdc_prm_ok();
+    if (param->data_type == GSDC_PRM_DATA_TYPE_UNSIGNED16) {
+        size = 2U;
+    }
+    if ((param->offset > len) || (size > len - param->offset)) {
+        result.fault = GSDC_PRM_LENGTH;
+        result.expected = param->offset + size;
+        result.found = len;
+    } else {
+        uint16_t found;
+        if (size == 2U) {
+            found = gsdc_u16be_get(&bytes[param->offset]);
+        } else if (param->data_type == GSDC_PRM_DATA_TYPE_UNSIGNED8) {
+            found = bytes[param->offset];
+        } else {
+            found = (uint16_t)((unsigned int)bytes[param->offset] >> param->first_bit);
+            found = (uint16_t)(found & gsdc_dp_param_mask(param));
+        }
+        if (gsdc_dp_param_allows(param, found)) {
+            *value = found;
+        } else {
+            result.fault = GSDC_PRM_NOT_ALLOWED;
+            result.offset = param->offset;
+            result.value = found;
+        }
+    }
+    return result;
+}
+
+/* GSDC_PRM_OK when User_Prm_Data (`len` bytes) has the table's length and
+ * every parameter a value the GSD allows; else the first fault, and
+ * Chk_Prm answers Prm_Fault. */
+static inline gsdc_prm_result_t gsdc_user_prm_check(const gsdc_user_prm_t *user_prm,
+                                                    const uint8_t *bytes, size_t len)
+{
+    gsdc_prm_result_t result = gsdc_prm_check_len(len, user_prm->len);
+    size_t i;
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < user_prm->params_count); i++) {
+        uint16_t value;
+        result = gsdc_dp_param_read(&user_prm->params[i], bytes, len, &value);
+    }
+    return result;
+}
+
+/* Whether the slave takes the configuration `config` (Chk_Cfg's `len`
+ * bytes) with User_Prm_Data `user_prm` (`prm_len` bytes): at most
+ * max_modules modules, each one's config bytes in turn; one at least, except
+ * for a gateway, whose modules carry as many bytes as the nodes in use (none
+ * for nodes without words). Its bytes of input and output go into
+ * `input_len` and `output_len`, written only when it is taken. */
+static inline bool gsdc_dp_check_config(const gsdc_dp_device_t *device,
+                                        const uint8_t *user_prm, size_t prm_len,
+                                        const uint8_t *config, size_t len, size_t *input_len,
+                                        size_t *output_len)
+{
+    size_t at = 0U;
+    size_t plugged = 0U;
+    size_t input = 0U;
+    size_t output = 0U;
+    bool taken = true;
+    while (taken && (at < len)) {
+        const gsdc_dp_module_t *found = NULL;
+        size_t m;
+        for (m = 0U; (found == NULL) && (m < device->modules_count); m++) {
+            const gsdc_dp_module_t *module = &device->modules[m];
+            bool same = module->config_count <= len - at;
+            size_t i;
+            for (i = 0U; same && (i < module->config_count); i++) {
+                same = config[at + i] == module->config[i];
+            }
+            if (same) {
+                found = module;
+            }
+        }
+        if (found == NULL) {
+            taken = false;
+        } else {
+            at += found->config_count;
+            input += found->input_len;
+            output += found->output_len;
+            plugged++;
+        }
+    }
+    taken = taken && (plugged <= device->max_modules);
+    if (device->node_totals == NULL) {
+        taken = taken && (plugged >= 1U);
+    } else if (taken) {
+        size_t nodes_input;
+        size_t nodes_output;
+        taken = device->node_totals(user_prm, prm_len, &nodes_input, &nodes_output) &&
+                (nodes_input == input) && (nodes_output == output);
+    }
+    if (taken) {
+        *input_len = input;
+        *output_len = output;
+    }
+    return taken;
+}
+
+/* A submodule: its subslot, ident number and bytes of IO data. */
+typedef struct {
+    uint16_t subslot;
+    uint32_t ident;
+    size_t input_len;
+    size_t output_len;
+} gsdc_pn_submodule_t;
+
+/* How much of a record the controller writes: every entry (exactly len
+ * bytes), or the first entries (at most len bytes; the others keep their
+ * defaults). */
+typedef enum {
+    GSDC_RECORD_READING_WHOLE = 0,
+    GSDC_RECORD_READING_PREFIX
+} gsdc_record_reading_t;
+
+/* A parameter record of a module's data submodule: its index, its bytes
+ * (two per entry), how much of it the controller writes, its entries in
+ * record order, each one a place in a layout's group of mappings, whose
+ * entry_allows checks it, and each entry's value as the GSDML gives it
+ * (DefaultValue: its default, or the value the module fixes), which fills
+ * what a prefix leaves out. */
+typedef struct {
+    uint16_t index;
+    size_t len;
+    gsdc_record_reading_t reading;
+    gsdc_entry_allows_t allows;
+    const size_t *entries;
+    size_t entries_count;
+    const uint16_t *defaults;
+    size_t defaults_count;
+} gsdc_pn_record_t;
+
+/* A module of the GSDML: its English name, ident number, the slots it may
+ * be plugged into, its API (0, or PROFIdrive's 0x3A00), PROFIdrive's module
+ * access point (NULL without one), its data submodule and its records. */
+typedef struct {
+    const char *name;
+    uint32_t ident;
+    const uint16_t *slots;
+    size_t slots_count;
+    uint32_t api;
+    const gsdc_pn_submodule_t *access_point;
+    gsdc_pn_submodule_t data;
+    const gsdc_pn_record_t *records;
+    size_t records_count;
+} gsdc_pn_module_t;
+
+/* A PROFINET IO device: its identity, the device access point in slot 0
+ * (its module ident number and its own submodule), the interface submodule and its
+ * ports, every module of the GSDML and its PKW codec. */
+typedef struct {
+    uint16_t vendor_id;
+    uint16_t device_id;
+    uint32_t dap_ident;
+    gsdc_pn_submodule_t dap_submodule;
+    gsdc_pn_submodule_t interface_submodule;
+    const gsdc_pn_submodule_t *ports;
+    size_t ports_count;
+    const gsdc_pn_module_t *modules;
+    size_t modules_count;
+    gsdc_pkw_codec_t pkw;
+} gsdc_pn_device_t;
+
+/* The entries' values of a record the controller wrote (`len` bytes) into
+ * the first entries_count of `values`, each one checked; `values` is
+ * written only when the result is GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *record,
+                                                      const uint8_t *bytes, size_t len,
+                                                      uint16_t *values)
+{
+    gsdc_prm_result_t result = gsdc_prm_check_prefix_len(len, record->len);
+    size_t count = len / 2U;
+    size_t i;
+    if (record->reading == GSDC_RECORD_READING_WHOLE) {
+        result = gsdc_prm_check_len(len, record->len);
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < count); i++) {
+        uint16_t value = gsdc_word_get(bytes, i);
+        if (!record->allows(record->entries[i], value)) {
+            result.fault = GSDC_PRM_NOT_ALLOWED;
+            result.offset = 2U * i;
+            result.value = value;
+        }
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->defaults_count); i++) {
+        values[i] = record->defaults[i];
+        if (i < count) {
+            values[i] = gsdc_word_get(bytes, i);
+        }
+    }
+    return result;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -18,6 +18,13 @@ pub mod diagnosis;
 /// Gateways: node parameters, their totals, word modules and diagnosis.
 pub mod gateway;
 
+/// The device tables: the same types in every layout, for one slave or
+/// device that serves any description.
+pub mod device;
+
+pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, UserPrm};
+pub use device::{PnDevice, PnModule, PnRecord, PnSubmodule, PrmDataType, RecordReading};
+
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
 /// so a `#[repr(C)]` struct of words has no padding.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

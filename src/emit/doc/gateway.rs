@@ -655,15 +655,7 @@ fn example_node(g: &Gateway) -> u8 {
 
 fn types_table(doc: &mut Builder, g: &Gateway, d: &Diagnosis, lang: Lang) {
     let node = example_node(g);
-    let layout = firmware::DiagLayout {
-        type_at: d.type_at.into(),
-        node_at: d.node_at.into(),
-        code_at: d.code_at.into(),
-        first_node: g.first_node,
-        last_node: g.last_node,
-        // The encoder does not read the types.
-        types: &[],
-    };
+    let layout = crate::pkw::gateway_diag_layout(g, d);
     // Blocks as the firmware's encoder makes them.
     let block = |len: u8, kind: u8| firmware::DiagBlock::<64>::new(len, &layout, kind, node);
     let mut rows = Vec::new();

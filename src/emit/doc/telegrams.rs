@@ -6,9 +6,11 @@ use super::page::{code, text, Builder, Cell};
 use super::svg::{self, Align, Item, Line, Rect, Style, Svg, Weight};
 use super::{bits, bytes, parameter_name, Lang};
 use crate::ir::profinet::{self, ModuleKind};
-use crate::ir::{Allowed, Direction, EntryKey, Ir, Layout, MappingKind, PkwKind, Word};
+use crate::ir::{
+    Allowed, Bus, Direction, EntryKey, Ir, Layout, MappingKind, ModuleId, PkwKind, Word,
+};
 
-/// A PPO type or a PROFINET module.
+/// A PPO type or a PROFINET module, named in the page's language.
 struct Module<'a> {
     name: String,
     bus: Bus,
@@ -19,31 +21,27 @@ struct Module<'a> {
     profinet: Option<&'a profinet::Module>,
 }
 
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Bus {
-    Profibus,
-    Profinet,
-}
-
 /// The PPO types and PROFINET modules, named in `lang`.
 fn modules(ir: &Ir, lang: Lang) -> Vec<Module<'_>> {
-    let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(|m| Module {
-        name: m.name.clone(),
-        bus: Bus::Profibus,
-        layout: m.layout,
-        config: Some(&m.config),
-        ident: None,
-        profinet: None,
-    });
-    let pn = ir.profinet.iter().flat_map(|p| &p.modules).map(|m| Module {
-        name: lang.text(&m.name.text).to_string(),
-        bus: Bus::Profinet,
-        layout: m.layout,
-        config: None,
-        ident: Some(m.ident_number),
-        profinet: Some(m),
-    });
-    ppos.chain(pn).collect()
+    ir.cyclic_modules()
+        .map(|m| Module {
+            name: m
+                .profinet
+                .map_or(m.name, |p| lang.text(&p.name.text))
+                .to_string(),
+            bus: m.bus,
+            layout: m.layout,
+            config: match m.id {
+                ModuleId::Config(bytes) => Some(bytes),
+                ModuleId::IdentNumber(_) => None,
+            },
+            ident: match m.id {
+                ModuleId::Config(_) => None,
+                ModuleId::IdentNumber(number) => Some(number),
+            },
+            profinet: m.profinet,
+        })
+        .collect()
 }
 
 fn direction_name(lang: Lang, direction: Direction) -> &'static str {
@@ -266,7 +264,6 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
     } else {
         Vec::new()
     };
-    let pkw_bytes = 2 * u16::from(m.layout.pkw_words());
     let data_items = m
         .profinet
         .filter(|p| p.kind == ModuleKind::StandardTelegram1)
@@ -275,7 +272,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
             Direction::In => &p.input,
         });
     let pzd = (1..=m.layout.pzd_words).map(|n| {
-        let first_byte = pkw_bytes + 2 * u16::from(n - 1);
+        let first_byte = m.layout.pzd_word_offset(n);
         let label = format!("PZD{n}");
         if let Some(items) = data_items {
             let item = &items[usize::from(m.layout.pkw_words() + n - 1)];

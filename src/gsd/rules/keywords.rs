@@ -4,7 +4,6 @@ use crate::diag::Diagnostic;
 use crate::gsd::model::{Arg, GsdFile, Setting, Value};
 use crate::gsd::rules::{file_span, scopes};
 use crate::gsd::schema::{self, is_nonstandard_spelling, Keyword, Kind};
-use crate::gsd::BLOCK_TEXT_LEN;
 
 /// Suggestions cost a scan of the schema each; a file made of nothing but
 /// unknown keywords gets them for its first few only.
@@ -87,9 +86,9 @@ impl<'f> Checker<'f> {
 }
 
 /// The texts that blocks carry outside settings: module and parameter
-/// names, value texts and diagnosis area texts, all limited to
-/// [`BLOCK_TEXT_LEN`].
+/// names, value texts and diagnosis area texts, all limited to 32.
 fn block_texts(file: &GsdFile, out: &mut Vec<Diagnostic>) {
+    const LIMIT: usize = crate::spec::GSD_NAME_LEN;
     let modules = file.modules.iter().map(|m| ("module name", &m.name));
     let params = file
         .ext_user_prm_data
@@ -106,8 +105,8 @@ fn block_texts(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     let diag = areas.map(|v| ("diagnosis text", &v.text));
     for (what, text) in modules.chain(params).chain(values).chain(diag) {
         let len = text.value.chars().count();
-        if len > BLOCK_TEXT_LEN {
-            out.push(too_long(what, len, BLOCK_TEXT_LEN, text.span.clone()));
+        if len > LIMIT {
+            out.push(too_long(what, len, LIMIT, text.span.clone()));
         }
     }
 }

@@ -4,7 +4,7 @@
 
 use crate::diag::Diagnostic;
 
-const MAX_LINE: usize = 80;
+use crate::spec::GSD_LINE_WIDTH as MAX_LINE;
 
 pub(crate) fn output_format(text: &str) -> Vec<Diagnostic> {
     let mut out = Vec::new();
@@ -17,7 +17,7 @@ pub(crate) fn output_format(text: &str) -> Vec<Diagnostic> {
             out.push(
                 Diagnostic::error("E240", format!("line longer than {MAX_LINE} characters"))
                     .at(start + past..span.end)
-                    .label("past column 80")
+                    .label(format!("past column {MAX_LINE}"))
                     .help("continue the line with `\\` at its end"),
             );
         }

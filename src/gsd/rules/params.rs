@@ -10,9 +10,8 @@ use crate::diag::Diagnostic;
 use crate::gsd::model::{Allowed, ExtUserPrmData, GsdFile, PrmDataType, Setting, Spanned};
 use crate::gsd::prm::{self, Family, Layout};
 
-/// The user parameter bytes a Set_Prm telegram carries at most (244 minus
-/// the 7 standard bytes).
-const MAX_USER_PRM: i64 = 237;
+/// The user parameter bytes a Set_Prm telegram carries at most.
+const MAX_USER_PRM: i64 = crate::spec::DP_MAX_USER_PRM as i64;
 
 type Params<'a> = HashMap<i64, &'a ExtUserPrmData>;
 

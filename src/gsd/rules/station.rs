@@ -164,7 +164,7 @@ const DIAG_BIT_KEYS: [&str; 8] = [
 fn diag_bits(file: &GsdFile, out: &mut Vec<Diagnostic>) {
     let Some(max_len) = file
         .number("Max_Diag_Data_Len")
-        .filter(|n| (6..=244).contains(n))
+        .filter(|n| (6..=crate::spec::DP_MAX_TELEGRAM as i64).contains(n))
     else {
         return;
     };

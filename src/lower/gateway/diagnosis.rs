@@ -5,7 +5,7 @@
 //! cannot say (the area's note in the GSD says it).
 
 use super::super::checks::{Checker, GSD_NAME_LEN};
-use super::super::telegram::value_set;
+use super::super::telegram::{apart_in_c, value_set};
 use crate::description::gateway as raw;
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{DiagCode, DiagType, Diagnosis, GsdArea};
@@ -30,11 +30,30 @@ pub fn lower(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Diagnosis {
         );
     }
     let mut seen = Seen::default();
-    let types: Vec<DiagType> = raw_types
+    // The layouts' own names beside the types': a type is not `TYPE_AT`.
+    for own in [
+        &["type", "at"][..],
+        &["node", "at"],
+        &["code", "at"],
+        &["max", "len"],
+        &["types"],
+    ] {
+        seen.names.reserve(&Ident::of(own));
+    }
+    let mut types: Vec<DiagType> = raw_types
         .get_ref()
         .iter()
         .filter_map(|t| diag_type(cx, t, &mut seen))
         .collect();
+    let taken: Vec<String> = types
+        .iter()
+        .flat_map(|t| [t.ident.snake(), format!("{}_len", t.ident.snake())])
+        .collect();
+    let codes = types.iter_mut().filter_map(|t| match &mut t.code {
+        DiagCode::Listed(set) => Some(set),
+        DiagCode::Word(_) => None,
+    });
+    apart_in_c(taken, codes);
     Diagnosis {
         type_at: TYPE_AT,
         node_at: NODE_AT,

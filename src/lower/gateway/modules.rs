@@ -5,18 +5,19 @@ use super::super::checks::Checker;
 use super::words_of;
 use crate::description::gateway as raw;
 use crate::diag::Diagnostic;
-use crate::ir::gateway::{config_byte, fewest_by_total, Module};
+use crate::ir::gateway::{Fewest, Module};
 use crate::ir::profibus::MAX_WORDS_PER_IDENTIFIER;
 use crate::ir::{Direction, Ident};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
-/// The modules, input first, each size ascending, and Max_Module.
+/// The modules, input first, each size ascending, Max_Module, and how each
+/// total within the limits is made of as few of them as it can be.
 pub(super) fn modules(
     cx: &mut Checker,
     m: &raw::Modules,
     limits: &[(Direction, u16)],
-) -> (Vec<Module>, u8) {
+) -> (Vec<Module>, u8, Fewest) {
     let sizes = module_sizes(cx, &m.words);
     let fewest: Result<Vec<usize>, u16> = limits
         .iter()
@@ -58,7 +59,21 @@ pub(super) fn modules(
             }
         })
         .collect();
-    (modules, u8::try_from(most).unwrap_or(u8::MAX))
+    let last_of = |direction| {
+        let max_len = limits
+            .iter()
+            .find(|(d, _)| *d == direction)
+            .map_or(0, |l| l.1);
+        fewest_by_total(&sizes, usize::from(max_len / 2))
+            .into_iter()
+            .map(|f| f.map(|(_, size)| size).filter(|&size| size > 0))
+            .collect()
+    };
+    let fewest = Fewest {
+        input: last_of(Direction::In),
+        output: last_of(Direction::Out),
+    };
+    (modules, u8::try_from(most).unwrap_or(u8::MAX), fewest)
 }
 
 /// The sizes, ascending, each 1..=16 words (one identifier byte) and once.
@@ -95,6 +110,39 @@ fn fewest_modules(sizes: &[u8], words: u16) -> Result<usize, u16> {
         })
 }
 
+/// For each total of 0..=`words` words: the fewest modules of `sizes` (words
+/// each) that make it, and the largest size the last of them can be
+/// (`(0, 0)` for no words); `None` for a total no set of them makes.
+/// Lowering takes Max_Module from it, the datasheet the modules of its
+/// example.
+fn fewest_by_total(sizes: &[u8], words: usize) -> Vec<Option<(usize, u8)>> {
+    let mut fewest: Vec<Option<(usize, u8)>> = vec![None; words + 1];
+    fewest[0] = Some((0, 0));
+    for total in 1..=words {
+        fewest[total] = sizes
+            .iter()
+            .filter_map(|&size| {
+                let (before, _) = fewest[total.checked_sub(usize::from(size))?]?;
+                Some((before + 1, size))
+            })
+            .min_by_key(|&(n, size)| (n, std::cmp::Reverse(size)));
+    }
+    fewest
+}
+
+/// Config identifier bits (IEC 61158 / EN 50170): bit 7 consistency over
+/// the whole length, bit 6 words, bits 5-4 direction (01 input, 10
+/// output), bits 3-0 length - 1.
+fn config_byte(direction: Direction, words: u8, consistent: bool) -> u8 {
+    debug_assert!((1..=MAX_WORDS_PER_IDENTIFIER).contains(&words));
+    let consistency = if consistent { 0x80 } else { 0 };
+    let way = match direction {
+        Direction::In => 0x10,
+        Direction::Out => 0x20,
+    };
+    consistency | 0x40 | way | (words - 1)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,5 +156,22 @@ mod tests {
         assert_eq!(fewest_modules(&all, 122), Ok(8));
         assert_eq!(fewest_modules(&[2, 4], 8), Err(1));
         assert_eq!(fewest_modules(&[1], 0), Ok(0));
+    }
+
+    #[test]
+    fn sizes_that_leave_a_total_out_make_none_of_it() {
+        let fewest = fewest_by_total(&[2, 4], 8);
+        assert_eq!(fewest[0], Some((0, 0)));
+        assert_eq!(fewest[1], None);
+        assert_eq!(fewest[6], Some((2, 4)));
+        assert_eq!(fewest[8], Some((2, 4)));
+    }
+
+    #[test]
+    fn config_bytes_say_words_direction_and_length() {
+        assert_eq!(config_byte(Direction::In, 1, false), 0x50);
+        assert_eq!(config_byte(Direction::In, 16, false), 0x5F);
+        assert_eq!(config_byte(Direction::Out, 8, false), 0x67);
+        assert_eq!(config_byte(Direction::Out, 16, true), 0xEF);
     }
 }

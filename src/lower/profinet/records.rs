@@ -5,7 +5,10 @@
 use super::ids::{kind_tag, value_tag};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Module, ModuleKind, ParameterRecord, RecordRef, TextRef, ValueItem};
+use crate::ir::profinet::{
+    self, FixedValues, Module, ModuleKind, ParameterRecord, RecordReading, RecordRef, TextRef,
+    ValueItem,
+};
 use crate::ir::{Layout, MappingEntry, MappingKind, MappingSet, Mappings, Text};
 use crate::lower::checks::Checker;
 use std::collections::{BTreeMap, BTreeSet};
@@ -183,6 +186,55 @@ fn ref_value<'a>(
         }
         _ => None,
     }
+}
+
+/// How firmware reads each kind of record some module carries: its index,
+/// the bytes of every entry, and whether a module's record holds them all
+/// or the first (a PZD record holds the words the module transports).
+pub fn reading_plans(mappings: &Mappings, modules: &[Module]) -> Vec<profinet::RecordPlan> {
+    mappings
+        .groups
+        .iter()
+        .filter_map(|group| {
+            let record = modules
+                .iter()
+                .flat_map(|m| &m.records)
+                .find(|r| r.kind == group.kind)?;
+            let reading = match group.kind {
+                MappingKind::PzdOut | MappingKind::PzdIn => RecordReading::Prefix,
+                MappingKind::Dpv1Index | MappingKind::Setting => RecordReading::Whole,
+            };
+            Some(profinet::RecordPlan {
+                kind: group.kind,
+                index: record.index,
+                // Entries per kind are bounded by lowering (at most 256 a set).
+                length: u16::try_from(2 * group.entries().count()).unwrap_or(u16::MAX),
+                reading,
+            })
+        })
+        .collect()
+}
+
+/// For each set fixed per module: every module whose records carry it,
+/// with the value the module fixes.
+pub fn fixed_values(mappings: &Mappings, modules: &[Module]) -> Vec<FixedValues> {
+    mappings
+        .sets()
+        .filter(|set| set.fixed.is_some())
+        .map(|set| FixedValues {
+            set: set.key,
+            modules: modules
+                .iter()
+                .flat_map(|m| {
+                    m.records
+                        .iter()
+                        .flat_map(move |r| r.refs.iter().map(move |f| (m, f)))
+                })
+                .filter(|(_, f)| set.entries.iter().any(|e| e.key == f.entry))
+                .map(|(m, f)| (m.ident.clone(), m.ident_number, f.default))
+                .collect(),
+        })
+        .collect()
 }
 
 /// gsdc's name of a record, in English and gsdc's Chinese.

@@ -1,0 +1,377 @@
+//! The device tables, language-neutral: what a PROFIBUS-DP slave and a
+//! PROFINET IO device need to know of the card (identity, modules, the
+//! parameter telegram, records, diagnosis, the PKW codec), built once from
+//! the plan as records of named fields holding numbers, texts, lists and
+//! references to what the layout already declares. The Rust and C emitters
+//! each write the same tables in their own syntax (`rust/tables.rs`,
+//! `c/tables.rs`) over the support types of the same names
+//! (`templates/support/device.rs`, `gsdc_support.h`), so a fact added here
+//! is written once and reaches both languages.
+
+use crate::ir::profibus::{self, PrmHolds, PrmType, Profibus};
+use crate::ir::profinet::{self, Profinet, RecordReading};
+use crate::ir::{Allowed, Ident, Ir, MappingKind, PkwKind};
+
+/// A table the layout declares: `DP_DEVICE` in Rust, `<prefix>_dp_device()`
+/// in C.
+pub(crate) struct Table {
+    pub name: Ident,
+    pub doc: String,
+    pub record: Record,
+}
+
+/// A value of a support type: its fields in declaration order.
+pub(crate) struct Record {
+    /// `dp device`: `gsdc::DpDevice`, `gsdc_dp_device_t`.
+    pub ty: Ident,
+    pub fields: Vec<(&'static str, Value)>,
+}
+
+pub(crate) enum Value {
+    /// An unsigned number, in decimal.
+    Number(u64),
+    /// An unsigned number in hex, with this many digits (4 or 8).
+    Hex(u32, usize),
+    Bool(bool),
+    Text(String),
+    /// A variant of a support enum: the enum's name, the variant's.
+    Variant(Ident, Ident),
+    /// A list of values of one kind.
+    List(Elem, Vec<Value>),
+    /// A value that may be absent: a list of scalars, or one record.
+    Optional(Elem, Option<Box<Value>>),
+    Record(Record),
+    /// Entries of a group of mappings, by their place in the group (from
+    /// 0), in the order a record holds them.
+    Entries(MappingKind, Vec<usize>),
+    /// Whether the layout declares the gateway's node totals function.
+    NodeTotals(bool),
+}
+
+/// What a list or an optional value holds, as C declares it.
+#[derive(Clone, Copy)]
+pub(crate) enum Elem {
+    Byte,
+    Word,
+    /// A place in a list.
+    Index,
+    /// A record of the support type of this name.
+    Record(&'static str),
+}
+
+/// `dp device` as an identifier, which each language spells.
+pub(crate) fn type_ident(name: &str) -> Ident {
+    Ident::of(&name.split(' ').collect::<Vec<_>>())
+}
+
+fn record(ty: &str, fields: Vec<(&'static str, Value)>) -> Record {
+    Record {
+        ty: type_ident(ty),
+        fields,
+    }
+}
+
+fn number(n: impl Into<u64>) -> Value {
+    Value::Number(n.into())
+}
+
+fn size(n: usize) -> Value {
+    Value::Number(n as u64)
+}
+
+fn variant(ty: &str, name: &str) -> Value {
+    Value::Variant(type_ident(ty), type_ident(name))
+}
+
+/// The tables of a description: the PROFIBUS device with `[profibus]`, the
+/// PROFINET device with `[profinet]`.
+pub(crate) fn tables(ir: &Ir) -> Vec<Table> {
+    let dp = ir.profibus.as_ref().map(|p| Table {
+        name: Ident::of(&["dp", "device"]),
+        doc: format!(
+            "The PROFIBUS-DP slave {} describes: its identity, every module, \
+             User_Prm_Data with every parameter by the GSD's name, the \
+             diagnosis block and the PKW codec.",
+            p.file_name
+        ),
+        record: dp_device(ir, p),
+    });
+    let pn = ir.profinet.as_ref().map(|p| Table {
+        name: Ident::of(&["pn", "device"]),
+        doc: format!(
+            "The PROFINET IO device {} describes: its identity, the device \
+             access point with its interface and ports, every module with its \
+             submodules and parameter records, and the PKW codec.",
+            p.file_name
+        ),
+        record: pn_device(ir, p),
+    });
+    dp.into_iter().chain(pn).collect()
+}
+
+fn pkw_codec(kind: PkwKind) -> Value {
+    let name = match kind {
+        PkwKind::None => "none",
+        PkwKind::PkeIndPwe => "pke ind pwe",
+        PkwKind::StationCommandAddressValue => "station command",
+        PkwKind::Profidrive => "profidrive",
+    };
+    variant("pkw codec", name)
+}
+
+// ---------------------------------------------------------------------------
+// PROFIBUS
+
+fn dp_device(ir: &Ir, p: &Profibus) -> Record {
+    record(
+        "dp device",
+        vec![
+            ("ident_number", Value::Hex(p.ident_number.into(), 4)),
+            (
+                "modules",
+                Value::List(Elem::Record("dp module"), dp_modules(ir, p)),
+            ),
+            ("max_modules", number(p.max_module)),
+            ("node_totals", Value::NodeTotals(ir.gateway.is_some())),
+            ("user_prm", Value::Record(user_prm(ir, p))),
+            (
+                "diagnosis_len",
+                number(p.max_diag_data_len - profibus::STANDARD_DIAG_BYTES),
+            ),
+            ("pkw", pkw_codec(ir.telegram.pkw)),
+        ],
+    )
+}
+
+/// Every `Module` of the GSD: the PPO types, or a gateway's word modules.
+fn dp_modules(ir: &Ir, p: &Profibus) -> Vec<Value> {
+    let ppos = p.modules.iter().map(|m| {
+        let bytes = usize::from(m.layout.bytes());
+        dp_module(
+            &m.name,
+            &m.config,
+            (bytes, bytes),
+            m.layout.pkw,
+            m.layout.pzd_words,
+        )
+    });
+    let words = ir.gateway.iter().flat_map(|g| &g.modules).map(|m| {
+        let bytes = 2 * usize::from(m.words);
+        let lengths = match m.direction {
+            crate::ir::Direction::In => (bytes, 0),
+            crate::ir::Direction::Out => (0, bytes),
+        };
+        dp_module(&m.name, &[m.config], lengths, false, 0)
+    });
+    ppos.chain(words).collect()
+}
+
+fn dp_module(
+    name: &str,
+    config: &[u8],
+    (input_len, output_len): (usize, usize),
+    pkw: bool,
+    pzd_words: u8,
+) -> Value {
+    Value::Record(record(
+        "dp module",
+        vec![
+            ("name", Value::Text(name.to_string())),
+            ("config", bytes(config)),
+            ("input_len", size(input_len)),
+            ("output_len", size(output_len)),
+            ("pkw", Value::Bool(pkw)),
+            ("pzd_words", number(pzd_words)),
+        ],
+    ))
+}
+
+fn bytes(bytes: &[u8]) -> Value {
+    Value::List(
+        Elem::Byte,
+        bytes.iter().map(|&b| Value::Hex(b.into(), 2)).collect(),
+    )
+}
+
+fn user_prm(ir: &Ir, p: &Profibus) -> Record {
+    let status = p.dpv1.map(|d| Box::new(bytes(&d.status_bytes)));
+    let params = p.user_prm.params().map(|param| {
+        let facts = ir.prm_facts(param);
+        let (data_type, first, last) = match param.data_type {
+            PrmType::Unsigned8 => ("unsigned8", 0, 7),
+            PrmType::Unsigned16 => ("unsigned16", 0, 15),
+            PrmType::Bits { first, last } if first == last => ("bit", first, last),
+            PrmType::Bits { first, last } => ("bit area", first, last),
+        };
+        let (min, max, values) = allowed(&facts.holds);
+        Value::Record(record(
+            "dp param",
+            vec![
+                ("name", Value::Text(facts.name.for_gsd().to_string())),
+                ("offset", number(param.offset)),
+                ("data_type", variant("prm data type", data_type)),
+                ("first_bit", number(first)),
+                ("last_bit", number(last)),
+                ("default_value", number(facts.default)),
+                ("min", number(min)),
+                ("max", number(max)),
+                ("values", Value::List(Elem::Word, values)),
+            ],
+        ))
+    });
+    record(
+        "user prm",
+        vec![
+            ("len", number(p.user_prm.len)),
+            ("dpv1_status", Value::Optional(Elem::Byte, status)),
+            (
+                "params",
+                Value::List(Elem::Record("dp param"), params.collect()),
+            ),
+        ],
+    )
+}
+
+/// The range of a parameter, and its values when the GSD lists them.
+fn allowed(holds: &PrmHolds) -> (u16, u16, Vec<Value>) {
+    match holds {
+        PrmHolds::Mapping { set, .. } => match &set.allowed {
+            Allowed::Range { min, max } => (*min, *max, Vec::new()),
+            Allowed::Choices(values) => {
+                // Lowering keeps a mapping's values within Unsigned16.
+                let mut sorted: Vec<u16> = values
+                    .choices
+                    .iter()
+                    .filter_map(|c| u16::try_from(c.value).ok())
+                    .collect();
+                sorted.sort_unstable();
+                let (min, max) = (sorted[0], sorted[sorted.len() - 1]);
+                (min, max, sorted.into_iter().map(number).collect())
+            }
+        },
+        PrmHolds::Number { min, max } => (*min, *max, Vec::new()),
+    }
+}
+
+// ---------------------------------------------------------------------------
+// PROFINET
+
+fn pn_device(ir: &Ir, p: &Profinet) -> Record {
+    let fixed = |subslot: u16, ident: u32| submodule(subslot, ident, (0, 0));
+    record(
+        "pn device",
+        vec![
+            ("vendor_id", Value::Hex(p.vendor_id.into(), 4)),
+            ("device_id", Value::Hex(p.device_id.into(), 4)),
+            ("dap_ident", Value::Hex(profinet::DAP_IDENT, 8)),
+            (
+                "dap_submodule",
+                fixed(profinet::DAP_SUBSLOT, profinet::DAP_IDENT),
+            ),
+            (
+                "interface_submodule",
+                fixed(
+                    profinet::INTERFACE_SUBSLOT,
+                    profinet::INTERFACE_SUBSLOT.into(),
+                ),
+            ),
+            (
+                "ports",
+                Value::List(
+                    Elem::Record("pn submodule"),
+                    p.ports
+                        .iter()
+                        .map(|port| fixed(port.subslot, port.subslot.into()))
+                        .collect(),
+                ),
+            ),
+            (
+                "modules",
+                Value::List(
+                    Elem::Record("pn module"),
+                    p.modules.iter().map(|m| pn_module(ir, m)).collect(),
+                ),
+            ),
+            ("pkw", pkw_codec(ir.telegram.pkw)),
+        ],
+    )
+}
+
+fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) -> Value {
+    Value::Record(record(
+        "pn submodule",
+        vec![
+            ("subslot", Value::Hex(subslot.into(), 4)),
+            ("ident", Value::Hex(ident, 8)),
+            ("input_len", size(input_len)),
+            ("output_len", size(output_len)),
+        ],
+    ))
+}
+
+fn pn_module(ir: &Ir, m: &profinet::Module) -> Value {
+    let access_point = m.access_point.as_ref().map(|_| {
+        Box::new(submodule(
+            profinet::ACCESS_POINT_SUBSLOT,
+            profinet::ACCESS_POINT_IDENT,
+            (0, 0),
+        ))
+    });
+    let io = (2 * m.input.len(), 2 * m.output.len());
+    let records = m.records.iter().map(|r| pn_record(ir, r)).collect();
+    Value::Record(record(
+        "pn module",
+        vec![
+            ("name", Value::Text(m.name.text.en.clone())),
+            ("ident", Value::Hex(m.ident_number, 8)),
+            (
+                "slots",
+                Value::List(Elem::Word, vec![number(profinet::MODULE_SLOT)]),
+            ),
+            ("api", Value::Hex(m.api, 8)),
+            (
+                "access_point",
+                Value::Optional(Elem::Record("pn submodule"), access_point),
+            ),
+            ("data", submodule(m.data_subslot(), m.ident_number, io)),
+            ("records", Value::List(Elem::Record("pn record"), records)),
+        ],
+    ))
+}
+
+fn pn_record(ir: &Ir, r: &profinet::ParameterRecord) -> Value {
+    let group = ir
+        .mappings
+        .group(r.kind)
+        .expect("lowering makes records of groups it made");
+    let positions = r
+        .refs
+        .iter()
+        .map(|f| {
+            group
+                .entries()
+                .position(|(_, e)| e.key == f.entry)
+                .expect("a record refers to entries of its group")
+        })
+        .collect();
+    let reading = match ir.profinet.as_ref().and_then(|p| p.record(r.kind)) {
+        Some(plan) if plan.reading == RecordReading::Prefix => "prefix",
+        _ => "whole",
+    };
+    Value::Record(record(
+        "pn record",
+        vec![
+            ("index", number(r.index)),
+            ("len", number(r.length)),
+            ("reading", variant("record reading", reading)),
+            ("entries", Value::Entries(r.kind, positions)),
+            (
+                "defaults",
+                Value::List(
+                    Elem::Word,
+                    r.refs.iter().map(|f| number(f.default)).collect(),
+                ),
+            ),
+        ],
+    ))
+}

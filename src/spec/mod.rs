@@ -1,0 +1,68 @@
+//! Facts of the fieldbus specifications that more than one part of gsdc
+//! needs (the lowering that keeps a description within them, the rules
+//! that check a file against them, the emitters that write to them), each
+//! in one place: FIELDBUS-NOTES names the sources. The IR, the readers and
+//! the emitters depend on this module; it depends on none of them.
+
+mod baud;
+mod gsdml_version;
+
+pub use baud::Baud;
+pub use gsdml_version::Version as GsdmlVersion;
+
+/// The bytes a PROFIBUS-DP telegram carries at most: a slave's input, its
+/// output, its parameter telegram, its diagnosis (IEC 61158-6-3).
+pub const DP_MAX_TELEGRAM: usize = 244;
+
+/// The user parameter bytes a Set_Prm telegram carries at most: the
+/// telegram less its 7 standard bytes (GSD Max_User_Prm_Data_Len 0..237).
+pub const DP_MAX_USER_PRM: usize = DP_MAX_TELEGRAM - 7;
+
+/// The characters of a GSD name or text: a module, a parameter, a value
+/// text, a diagnosis text (GSD specification V5.1, FIELDBUS-NOTES §3).
+pub const GSD_NAME_LEN: usize = 32;
+
+/// The columns of a line of a GSD gsdc writes (DESIGN.md, Outputs); vendor
+/// files may be wider.
+pub const GSD_LINE_WIDTH: usize = 80;
+
+/// gsdc's GSD writes each value after its key padded to this many columns.
+pub const GSD_KEY_WIDTH: usize = 28;
+
+/// The characters that reorder text on screen (Unicode's Bidi_Control):
+/// a name with one could read differently from what a compiler or a
+/// terminal sees.
+pub fn is_bidi_control(c: char) -> bool {
+    matches!(
+        c,
+        '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}'
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The limits here that are also GSD keywords' are the keyword
+    /// schema's, which the loader and the checker take them from.
+    #[test]
+    fn the_limits_agree_with_the_gsd_keyword_schema() {
+        let max = |keyword| crate::gsd::keyword_range(keyword).1 as usize;
+        assert_eq!(DP_MAX_USER_PRM, max("Max_User_Prm_Data_Len"));
+        assert_eq!(DP_MAX_TELEGRAM, max("Max_Input_Len"));
+        assert_eq!(DP_MAX_TELEGRAM, max("Max_Output_Len"));
+        assert_eq!(GSD_NAME_LEN, crate::gsd::keyword_max_len("Unit_Diag_Bit"));
+    }
+
+    /// Unicode 15's Bidi_Control property: 12 characters.
+    #[test]
+    fn the_bidi_controls_are_unicodes_twelve() {
+        let all: Vec<char> = (0..=0x10FFFF)
+            .filter_map(char::from_u32)
+            .filter(|&c| is_bidi_control(c))
+            .collect();
+        assert_eq!(all.len(), 12);
+        assert!(all.contains(&'\u{061C}'));
+        assert!(!is_bidi_control('\u{2028}'));
+    }
+}

@@ -1,0 +1,327 @@
+// The device tables (gsdc templates/support/device.rs): what a PROFIBUS-DP
+// slave and a PROFINET IO device built from a layout need to know of the
+// device, the same types in every layout (`DP_DEVICE`, `PN_DEVICE`), so one
+// slave or device serves any description. Every number in a table comes
+// from the description through the plan the GSD and the GSDML are written
+// from.
+
+use super::{check_len, read_bytes, Mapping, PrmError};
+
+/// Which PKW codec of the support module the card's telegrams carry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PkwCodec {
+    /// No PKW channel.
+    None,
+    /// `pkw_pke_ind_pwe`.
+    PkeIndPwe,
+    /// `pkw_station_command`.
+    StationCommand,
+    /// `pkw_profidrive`.
+    Profidrive,
+}
+
+/// A gateway's node totals: the bytes of input and output the nodes in use
+/// carry, as User_Prm_Data sets them; `None` when it is refused.
+pub type NodeTotals = fn(&[u8]) -> Option<(usize, usize)>;
+
+/// A PROFIBUS-DP slave: its identity, the modules its GSD offers, its
+/// User_Prm_Data and its diagnosis block.
+#[derive(Clone, Copy, Debug)]
+pub struct DpDevice {
+    pub ident_number: u16,
+    /// Every `Module` of the GSD, in its order.
+    pub modules: &'static [DpModule],
+    /// Max_Module: the most modules a configuration plugs.
+    pub max_modules: usize,
+    /// A gateway's node totals from User_Prm_Data (input and output bytes
+    /// the nodes in use carry), which the plugged modules must equal;
+    /// `None` for a card whose configuration is one module.
+    pub node_totals: Option<NodeTotals>,
+    pub user_prm: UserPrm,
+    /// The most bytes of the device-related diagnosis block, its header
+    /// included (Max_Diag_Data_Len less the standard 6); 0 without one.
+    pub diagnosis_len: usize,
+    pub pkw: PkwCodec,
+}
+
+/// A `Module` of the GSD.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpModule {
+    /// As the GSD writes it: `Module = "PPO1"`.
+    pub name: &'static str,
+    /// Its config identifier bytes, as Chk_Cfg carries them.
+    pub config: &'static [u8],
+    /// Bytes of input (the slave sends them) and of output.
+    pub input_len: usize,
+    pub output_len: usize,
+    /// Whether its telegrams start with the PKW channel.
+    pub pkw: bool,
+    /// Its PZD words each way; 0 for a gateway's module, whose words are
+    /// the nodes'.
+    pub pzd_words: usize,
+}
+
+/// User_Prm_Data: its length, the DPV1 status bytes at its start, and
+/// every `ExtUserPrmData` of the GSD.
+#[derive(Clone, Copy, Debug)]
+pub struct UserPrm {
+    pub len: usize,
+    pub dpv1_status: Option<&'static [u8]>,
+    pub params: &'static [DpParam],
+}
+
+/// How a parameter is stored, as the GSD names it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PrmDataType {
+    Unsigned8,
+    Unsigned16,
+    /// `Bit(first_bit)` of the byte at the offset.
+    Bit,
+    /// `BitArea(first_bit-last_bit)` of the byte at the offset.
+    BitArea,
+}
+
+/// An `ExtUserPrmData` where User_Prm_Data holds it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpParam {
+    /// As the GSD writes it: `ExtUserPrmData = 1 "PZD2 out"`.
+    pub name: &'static str,
+    pub offset: usize,
+    pub data_type: PrmDataType,
+    /// The bits of a `Bit` or `BitArea`; 0 and 7 (or 15) for a number.
+    pub first_bit: u8,
+    pub last_bit: u8,
+    pub default_value: u16,
+    /// What it may hold: `min` to `max`, and one of `values` when the GSD
+    /// lists them (empty: every value of the range).
+    pub min: u16,
+    pub max: u16,
+    pub values: &'static [u16],
+}
+
+impl DpParam {
+    /// Whether the GSD allows `value`.
+    pub fn allows(&self, value: u16) -> bool {
+        (self.min..=self.max).contains(&value)
+            && (self.values.is_empty() || self.values.contains(&value))
+    }
+
+    /// Its value in `user_prm`, refused unless the GSD allows it.
+    pub fn read(&self, user_prm: &[u8]) -> Result<u16, PrmError> {
+        let at = self.offset;
+        let value = match self.data_type {
+            PrmDataType::Unsigned16 => u16::from_be_bytes(read_bytes(user_prm, at)?),
+            PrmDataType::Unsigned8 => read_bytes::<1>(user_prm, at)?[0].into(),
+            PrmDataType::Bit | PrmDataType::BitArea => {
+                let byte = u16::from(read_bytes::<1>(user_prm, at)?[0]);
+                (byte >> self.first_bit) & self.mask()
+            }
+        };
+        if self.allows(value) {
+            Ok(value)
+        } else {
+            Err(PrmError::NotAllowed {
+                offset: self.offset,
+                value,
+            })
+        }
+    }
+
+    /// Writes `value` into `user_prm`, leaving the other bits of a byte the
+    /// parameter shares; refused unless the GSD allows it.
+    pub fn write(&self, user_prm: &mut [u8], value: u16) -> Result<(), PrmError> {
+        let not_allowed = PrmError::NotAllowed {
+            offset: self.offset,
+            value,
+        };
+        if !self.allows(value) {
+            return Err(not_allowed);
+        }
+        let end = self.offset.saturating_add(self.len());
+        let expected = PrmError::Length {
+            expected: end,
+            found: user_prm.len(),
+        };
+        let bytes = user_prm.get_mut(self.offset..end).ok_or(expected)?;
+        match self.data_type {
+            PrmDataType::Unsigned16 => bytes.copy_from_slice(&value.to_be_bytes()),
+            PrmDataType::Unsigned8 => {
+                bytes[0] = u8::try_from(value).map_err(|_| not_allowed)?;
+            }
+            PrmDataType::Bit | PrmDataType::BitArea => {
+                let mask = self.mask() << self.first_bit;
+                let bits = (value << self.first_bit) & mask;
+                bytes[0] = (bytes[0] & !(mask as u8)) | bits as u8;
+            }
+        }
+        Ok(())
+    }
+
+    /// Bytes from the offset on.
+    const fn len(&self) -> usize {
+        match self.data_type {
+            PrmDataType::Unsigned16 => 2,
+            _ => 1,
+        }
+    }
+
+    /// The values a `Bit` or `BitArea` holds, as a mask from bit 0.
+    const fn mask(&self) -> u16 {
+        (1 << (self.last_bit - self.first_bit + 1)) - 1
+    }
+}
+
+impl UserPrm {
+    /// The parameter the GSD names `name`.
+    pub fn param(&self, name: &str) -> Option<&DpParam> {
+        self.params.iter().find(|p| p.name == name)
+    }
+
+    /// Refuses User_Prm_Data of a wrong length or with a value the GSD does
+    /// not allow: Chk_Prm answers Prm_Fault then.
+    pub fn check(&self, user_prm: &[u8]) -> Result<(), PrmError> {
+        check_len(user_prm, self.len)?;
+        let read = |p: &DpParam| p.read(user_prm).map(|_| ());
+        self.params.iter().try_for_each(read)
+    }
+
+    /// User_Prm_Data of the GSD's defaults: what a master sends when the
+    /// user changes nothing.
+    pub fn defaults(&self, user_prm: &mut [u8]) -> Result<(), PrmError> {
+        check_len(user_prm, self.len)?;
+        user_prm.fill(0);
+        if let Some(status) = self.dpv1_status {
+            user_prm[..status.len()].copy_from_slice(status);
+        }
+        self.params
+            .iter()
+            .try_for_each(|p| p.write(user_prm, p.default_value))
+    }
+}
+
+impl DpDevice {
+    /// The input and output bytes of the configuration `config` (Chk_Cfg's
+    /// bytes) when the slave takes it with User_Prm_Data `user_prm`: at most
+    /// `max_modules` modules, each one's config bytes in turn; one at least,
+    /// except for a gateway, whose modules carry as many bytes as the nodes
+    /// in use (none for nodes without words). `None`: refused.
+    pub fn check_config(&self, user_prm: &[u8], config: &[u8]) -> Option<(usize, usize)> {
+        let (mut input, mut output, mut plugged) = (0, 0, 0);
+        let mut rest = config;
+        while !rest.is_empty() {
+            let module = self.modules.iter().find(|m| rest.starts_with(m.config))?;
+            rest = &rest[module.config.len()..];
+            input += module.input_len;
+            output += module.output_len;
+            plugged += 1;
+        }
+        let fits = match self.node_totals {
+            Some(totals) => totals(user_prm)? == (input, output),
+            None => plugged > 0,
+        };
+        (fits && plugged <= self.max_modules).then_some((input, output))
+    }
+}
+
+/// A PROFINET IO device: its identity, its device access point with the
+/// interface and ports, and the modules its GSDML offers.
+#[derive(Clone, Copy, Debug)]
+pub struct PnDevice {
+    pub vendor_id: u16,
+    pub device_id: u16,
+    /// The device access point, in slot 0: its module ident number and its
+    /// own submodule.
+    pub dap_ident: u32,
+    pub dap_submodule: PnSubmodule,
+    pub interface_submodule: PnSubmodule,
+    pub ports: &'static [PnSubmodule],
+    /// Every module of the GSDML, in its order.
+    pub modules: &'static [PnModule],
+    pub pkw: PkwCodec,
+}
+
+/// A submodule: where it sits and its IO data in bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PnSubmodule {
+    pub subslot: u16,
+    pub ident: u32,
+    pub input_len: usize,
+    pub output_len: usize,
+}
+
+/// A module of the GSDML.
+#[derive(Clone, Copy, Debug)]
+pub struct PnModule {
+    /// As the GSDML names it, in English.
+    pub name: &'static str,
+    pub ident: u32,
+    /// The slots it may be plugged into.
+    pub slots: &'static [u16],
+    /// The API its submodules are in: 0, or PROFIdrive's 0x3A00.
+    pub api: u32,
+    /// PROFIdrive's module access point: a submodule without data.
+    pub access_point: Option<PnSubmodule>,
+    /// The submodule with the IO data.
+    pub data: PnSubmodule,
+    pub records: &'static [PnRecord],
+}
+
+/// How much of a record the controller writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RecordReading {
+    /// Every entry: exactly `len` bytes.
+    Whole,
+    /// The first entries, two bytes each, at most `len` bytes; the others
+    /// keep their defaults.
+    Prefix,
+}
+
+/// A parameter record of a module's data submodule.
+#[derive(Clone, Copy, Debug)]
+pub struct PnRecord {
+    pub index: u16,
+    /// Bytes, as the GSDML gives them: two per entry.
+    pub len: usize,
+    pub reading: RecordReading,
+    /// Its entries in record order, one Unsigned16 each.
+    pub entries: &'static [&'static Mapping],
+    /// Each entry's value as the GSDML gives it (DefaultValue): its
+    /// default, or the value the module fixes.
+    pub defaults: &'static [u16],
+}
+
+impl PnRecord {
+    /// The entries' values of a record the controller wrote, into the first
+    /// `entries.len()` of `values`, each one checked, the entries a prefix
+    /// leaves out with their defaults; nothing is written when it is
+    /// refused.
+    pub fn decode(&self, bytes: &[u8], values: &mut [u16]) -> Result<(), PrmError> {
+        let count = bytes.len() / 2;
+        let fits = match self.reading {
+            RecordReading::Whole => bytes.len() == self.len,
+            RecordReading::Prefix => 2 * count == bytes.len() && bytes.len() <= self.len,
+        };
+        if !fits || values.len() < self.defaults.len() {
+            return Err(PrmError::Length {
+                expected: self.len,
+                found: bytes.len(),
+            });
+        }
+        for (i, entry) in self.entries.iter().enumerate().take(count) {
+            let value = u16::from_be_bytes(read_bytes(bytes, 2 * i)?);
+            if !entry.allowed.contains(value) {
+                return Err(PrmError::NotAllowed {
+                    offset: 2 * i,
+                    value,
+                });
+            }
+        }
+        for (i, (value, default)) in values.iter_mut().zip(self.defaults).enumerate() {
+            *value = match read_bytes(bytes, 2 * i) {
+                Ok(pair) => u16::from_be_bytes(pair),
+                Err(_) => *default,
+            };
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,225 @@
+/* The device tables of one C layout, dumped in the lines of
+ * tests/firmware/device_files.rs, which reads the same facts from the GSD
+ * and the GSDML: tests/device_tables_c.rs compiles this file once per
+ * layout and compares. Generic: the layout is named by the macros
+ * LAYOUT_HEADER, DP_DEVICE and PN_DEVICE (each table's function, left
+ * undefined when the layout has none). Besides the dump, it uses the
+ * support functions as a slave would: User_Prm_Data of the defaults passes
+ * gsdc_user_prm_check, every parameter is found by its name, and a card of
+ * one module takes each module's config bytes. A failure prints FAILED and
+ * exits 1. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include LAYOUT_HEADER
+
+static void fail(const char *what)
+{
+    printf("FAILED: %s\n", what);
+    exit(1);
+}
+
+/* As Rust's {:?} prints an ASCII or UTF-8 name. */
+static void print_name(const char *name)
+{
+    putchar('"');
+    for (; *name != '\0'; name++) {
+        if ((*name == '"') || (*name == '\\')) {
+            putchar('\\');
+        }
+        putchar(*name);
+    }
+    putchar('"');
+}
+
+#ifdef DP_DEVICE
+static void print_hex(const uint8_t *bytes, size_t count)
+{
+    size_t i;
+    for (i = 0U; i < count; i++) {
+        printf("%s%02X", (i == 0U) ? "" : " ", (unsigned int)bytes[i]);
+    }
+}
+
+/* `0-5`, `0,2,7`: the values the parameter allows, as runs. */
+static void print_allowed(const gsdc_dp_param_t *param)
+{
+    unsigned long v = 0UL;
+    bool first = true;
+    while (v <= 0xFFFFUL) {
+        if (gsdc_dp_param_allows(param, (uint16_t)v)) {
+            unsigned long last = v;
+            while ((last < 0xFFFFUL) && gsdc_dp_param_allows(param, (uint16_t)(last + 1UL))) {
+                last++;
+            }
+            if (!first) {
+                putchar(',');
+            }
+            if (last == v) {
+                printf("%lu", v);
+            } else {
+                printf("%lu-%lu", v, last);
+            }
+            first = false;
+            v = last + 1UL;
+        } else {
+            v++;
+        }
+    }
+}
+
+static const char *data_type_name(gsdc_prm_data_type_t type)
+{
+    const char *name = "BitArea";
+    if (type == GSDC_PRM_DATA_TYPE_UNSIGNED8) {
+        name = "Unsigned8";
+    } else if (type == GSDC_PRM_DATA_TYPE_UNSIGNED16) {
+        name = "Unsigned16";
+    } else if (type == GSDC_PRM_DATA_TYPE_BIT) {
+        name = "Bit";
+    }
+    return name;
+}
+
+/* The parameter's default written into `bytes`, as a master would. */
+static void put_default(const gsdc_dp_param_t *p, uint8_t *bytes)
+{
+    if (p->data_type == GSDC_PRM_DATA_TYPE_UNSIGNED16) {
+        gsdc_u16be_put(&bytes[p->offset], p->default_value);
+    } else if (p->data_type == GSDC_PRM_DATA_TYPE_UNSIGNED8) {
+        bytes[p->offset] = (uint8_t)p->default_value;
+    } else {
+        bytes[p->offset] = (uint8_t)(bytes[p->offset] | (p->default_value << p->first_bit));
+    }
+}
+
+static void dump_dp(const gsdc_dp_device_t *d)
+{
+    uint8_t user_prm[256] = {0U};
+    size_t i;
+    printf("ident 0x%04X\n", (unsigned int)d->ident_number);
+    for (i = 0U; i < d->modules_count; i++) {
+        const gsdc_dp_module_t *m = &d->modules[i];
+        printf("module ");
+        print_name(m->name);
+        printf(" config ");
+        print_hex(m->config, m->config_count);
+        printf(" in %lu out %lu pkw %d pzd %lu\n", (unsigned long)m->input_len,
+               (unsigned long)m->output_len, m->pkw ? 1 : 0, (unsigned long)m->pzd_words);
+    }
+    printf("max_modules %lu\n", (unsigned long)d->max_modules);
+    printf("user_prm %lu dpv1 ", (unsigned long)d->user_prm.len);
+    if (d->user_prm.dpv1_status == NULL) {
+        printf("none");
+    } else {
+        print_hex(d->user_prm.dpv1_status, d->user_prm.dpv1_status_count);
+    }
+    printf("\n");
+    for (i = 0U; i < d->user_prm.params_count; i++) {
+        const gsdc_dp_param_t *p = &d->user_prm.params[i];
+        printf("param ");
+        print_name(p->name);
+        printf(" offset %lu %s bits %u-%u default %u allowed ", (unsigned long)p->offset,
+               data_type_name(p->data_type), (unsigned int)p->first_bit,
+               (unsigned int)p->last_bit, (unsigned int)p->default_value);
+        print_allowed(p);
+        printf("\n");
+        if (gsdc_dp_param_find(&d->user_prm, p->name) != p) {
+            fail("a parameter is not found by its name");
+        }
+        put_default(p, user_prm);
+    }
+    printf("diagnosis %lu\n", (unsigned long)d->diagnosis_len);
+    for (i = 0U; i < d->user_prm.dpv1_status_count; i++) {
+        user_prm[i] = d->user_prm.dpv1_status[i];
+    }
+    if ((d->user_prm.len > sizeof user_prm) ||
+        (gsdc_user_prm_check(&d->user_prm, user_prm, d->user_prm.len).fault != GSDC_PRM_OK)) {
+        fail("User_Prm_Data of the defaults is refused");
+    }
+    for (i = 0U; (d->node_totals == NULL) && (i < d->modules_count); i++) {
+        const gsdc_dp_module_t *m = &d->modules[i];
+        size_t input = 0U;
+        size_t output = 0U;
+        if (!gsdc_dp_check_config(d, user_prm, d->user_prm.len, m->config, m->config_count,
+                                  &input, &output) ||
+            (input != m->input_len) || (output != m->output_len)) {
+            fail("a module's config bytes are refused");
+        }
+    }
+}
+#endif
+
+#ifdef PN_DEVICE
+static void print_submodule(const gsdc_pn_submodule_t *s)
+{
+    printf("submodule %u %lu in %lu out %lu\n", (unsigned int)s->subslot,
+           (unsigned long)s->ident, (unsigned long)s->input_len, (unsigned long)s->output_len);
+}
+
+static void dump_record(const gsdc_pn_record_t *r)
+{
+    uint8_t bytes[512];
+    uint16_t values[256];
+    size_t i;
+    if (r->defaults_count > 256U) {
+        fail("a record longer than the test's buffer");
+    }
+    for (i = 0U; i < r->defaults_count; i++) {
+        gsdc_word_put(bytes, i, r->defaults[i]);
+    }
+    if (gsdc_pn_record_decode(r, bytes, 2U * r->defaults_count, values).fault != GSDC_PRM_OK) {
+        fail("a record of the GSDML's defaults is refused");
+    }
+    printf("record %u len %lu reads", (unsigned int)r->index, (unsigned long)r->len);
+    for (i = 0U; i < r->entries_count; i++) {
+        printf(" %u", (unsigned int)values[i]);
+    }
+    printf("\n");
+}
+
+static void dump_pn(const gsdc_pn_device_t *d)
+{
+    size_t i;
+    size_t j;
+    printf("vendor %u device %u\n", (unsigned int)d->vendor_id, (unsigned int)d->device_id);
+    printf("dap %lu submodule %u %lu\n", (unsigned long)d->dap_ident,
+           (unsigned int)d->dap_submodule.subslot, (unsigned long)d->dap_submodule.ident);
+    printf("interface %u %lu\n", (unsigned int)d->interface_submodule.subslot,
+           (unsigned long)d->interface_submodule.ident);
+    for (i = 0U; i < d->ports_count; i++) {
+        printf("port %u %lu\n", (unsigned int)d->ports[i].subslot,
+               (unsigned long)d->ports[i].ident);
+    }
+    for (i = 0U; i < d->modules_count; i++) {
+        const gsdc_pn_module_t *m = &d->modules[i];
+        printf("module ");
+        print_name(m->name);
+        printf(" ident %lu slots", (unsigned long)m->ident);
+        for (j = 0U; j < m->slots_count; j++) {
+            printf(" %u", (unsigned int)m->slots[j]);
+        }
+        printf(" api %lu\n", (unsigned long)m->api);
+        if (m->access_point != NULL) {
+            print_submodule(m->access_point);
+        }
+        print_submodule(&m->data);
+        for (j = 0U; j < m->records_count; j++) {
+            dump_record(&m->records[j]);
+        }
+    }
+}
+#endif
+
+int main(void)
+{
+#ifdef DP_DEVICE
+    printf("[dp]\n");
+    dump_dp(DP_DEVICE());
+#endif
+#ifdef PN_DEVICE
+    printf("[pn]\n");
+    dump_pn(PN_DEVICE());
+#endif
+    return 0;
+}

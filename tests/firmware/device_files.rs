@@ -1,0 +1,250 @@
+//! What the GSD and the GSDML of a description say a slave or device is,
+//! read without gsdc (the GSD by gsd-parser, the GSDML by roxmltree), as
+//! lines of text: the Rust tables (tests/device_tables.rs of the firmware
+//! crate) and the C tables (gsdc's tests/device_tables_c.rs, through
+//! tests/c/device_tables.c) are dumped in the same lines and compared with
+//! these, so both languages answer to the device files, not to gsdc.
+//!
+//! A line per fact: `ident 0x0810`, `module "PPO1" config F3 F1 in 12 out 12
+//! pkw 1 pzd 2`, `param "PZD2 out" offset 5 Unsigned16 bits 0-15 default 0
+//! allowed 0-65535`, `record 1 len 4 reads 0 0`...
+
+#![allow(dead_code)] // each includer uses its part
+
+use std::path::Path;
+
+/// The GSD's slave: its ident number, modules, Max_Module, User_Prm_Data
+/// and the most bytes of its device-related diagnosis.
+pub fn dp_lines(gsd: &Path) -> Vec<String> {
+    let text = std::fs::read(gsd).unwrap();
+    let text = String::from_utf8_lossy(&text);
+    let parsed = gsd_parser::parser::parse(gsd, &text).unwrap();
+    let mut lines = vec![format!("ident 0x{:04X}", parsed.ident_number)];
+    for m in &parsed.available_modules {
+        let (input, output) = config_lengths(&m.config);
+        let (pkw, pzd) = ppo_words(&m.config);
+        lines.push(format!(
+            "module {:?} config {} in {input} out {output} pkw {} pzd {pzd}",
+            m.name,
+            hex(&m.config),
+            u8::from(pkw)
+        ));
+    }
+    lines.push(format!("max_modules {}", parsed.max_modules));
+    let prm = &parsed.user_prm_data;
+    let status = prm
+        .data_const
+        .iter()
+        .find(|(offset, _)| *offset == 0)
+        .map_or_else(|| "none".to_string(), |(_, bytes)| hex(bytes));
+    // The length of the telegram a master builds from the GSD (gsd-parser
+    // leaves `length` to modules' parameters).
+    let len = gsd_parser::PrmBuilder::new(prm).into_bytes().len();
+    lines.push(format!("user_prm {len} dpv1 {status}"));
+    for (offset, def) in &prm.data_ref {
+        let (kind, first, last) = match def.data_type {
+            gsd_parser::UserPrmDataType::Unsigned8 => ("Unsigned8", 0, 7),
+            gsd_parser::UserPrmDataType::Unsigned16 => ("Unsigned16", 0, 15),
+            gsd_parser::UserPrmDataType::Bit(b) => ("Bit", b, b),
+            gsd_parser::UserPrmDataType::BitArea(f, l) => ("BitArea", f, l),
+            other => panic!("gsdc writes no {other:?}"),
+        };
+        let allowed = allowed_text((0..=0xFFFF).filter(|&v| def.constraint.is_valid(v)));
+        lines.push(format!(
+            "param {:?} offset {offset} {kind} bits {first}-{last} default {} allowed {allowed}",
+            def.name, def.default_value
+        ));
+    }
+    lines.push(format!(
+        "diagnosis {}",
+        parsed.max_diag_data_length.saturating_sub(6)
+    ));
+    lines
+}
+
+/// `0-5`, `0,2,7` or `1-3,9`: the values, as runs.
+pub fn allowed_text(values: impl Iterator<Item = i64>) -> String {
+    let mut runs: Vec<(i64, i64)> = Vec::new();
+    for v in values {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == v => *last = v,
+            _ => runs.push((v, v)),
+        }
+    }
+    runs.iter()
+        .map(|&(a, b)| {
+            if a == b {
+                a.to_string()
+            } else {
+                format!("{a}-{b}")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+pub fn hex(bytes: &[u8]) -> String {
+    bytes
+        .iter()
+        .map(|b| format!("{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Bytes of input and output the config identifiers say (general format:
+/// bits 5-4 the direction, bit 6 words, bits 3-0 the length less one).
+fn config_lengths(config: &[u8]) -> (usize, usize) {
+    config.iter().fold((0, 0), |(input, output), &byte| {
+        let unit = if byte & 0x40 != 0 { 2 } else { 1 };
+        let len = unit * (usize::from(byte & 0x0F) + 1);
+        match (byte >> 4) & 0x03 {
+            0b01 => (input + len, output),
+            0b10 => (input, output + len),
+            0b11 => (input + len, output + len),
+            _ => (input, output),
+        }
+    })
+}
+
+/// A PPO's channels from its identifiers: the PKW's 4 consistent words
+/// each way first, when it has one, then the PZD's; a module that carries
+/// one direction only (a gateway's) has neither.
+fn ppo_words(config: &[u8]) -> (bool, usize) {
+    let words = |byte: u8| usize::from(byte & 0x0F) + 1;
+    let both_ways = |byte: u8| (byte >> 4) & 0x03 == 0b11;
+    match config {
+        [0xF3, pzd] if both_ways(*pzd) => (true, words(*pzd)),
+        [pzd] if both_ways(*pzd) => (false, words(*pzd)),
+        _ => (false, 0),
+    }
+}
+
+/// The GSDML's device: its identity, the device access point with its
+/// interface and ports, and each module with its submodules and records.
+/// A record's `reads` are the values of its Refs' defaults: what the device
+/// must read from a record of those bytes.
+pub fn pn_lines(gsdml: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(gsdml).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let find = |name: &str| {
+        doc.descendants()
+            .find(|n| n.has_tag_name(name))
+            .unwrap_or_else(|| panic!("no {name}"))
+    };
+    let identity = find("DeviceIdentity");
+    let mut lines = vec![format!(
+        "vendor {} device {}",
+        number(attr(identity, "VendorID")),
+        number(attr(identity, "DeviceID"))
+    )];
+    let dap = find("DeviceAccessPointItem");
+    let dap_submodule = dap
+        .descendants()
+        .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
+        .unwrap();
+    lines.push(format!(
+        "dap {} submodule {} {}",
+        number(attr(dap, "ModuleIdentNumber")),
+        number(dap_submodule.attribute("FixedInSubslots").unwrap_or("1")),
+        number(attr(dap_submodule, "SubmoduleIdentNumber"))
+    ));
+    for (tag, what) in [
+        ("InterfaceSubmoduleItem", "interface"),
+        ("PortSubmoduleItem", "port"),
+    ] {
+        for n in dap.descendants().filter(|n| n.has_tag_name(tag)) {
+            lines.push(format!(
+                "{what} {} {}",
+                number(attr(n, "SubslotNumber")),
+                number(attr(n, "SubmoduleIdentNumber"))
+            ));
+        }
+    }
+    let text_of = |id: &str| {
+        doc.descendants()
+            .filter(|n| n.has_tag_name("PrimaryLanguage"))
+            .flat_map(|l| l.children())
+            .find(|t| t.attribute("TextId") == Some(id))
+            .map(|t| attr(t, "Value").to_string())
+            .unwrap_or_else(|| panic!("no text {id}"))
+    };
+    for module in doc.descendants().filter(|n| n.has_tag_name("ModuleItem")) {
+        let id = attr(module, "ID");
+        let slots = dap
+            .descendants()
+            .find(|n| n.has_tag_name("ModuleItemRef") && attr(*n, "ModuleItemTarget") == id)
+            .map(|r| attr(r, "AllowedInSlots").to_string())
+            .unwrap();
+        let name = module
+            .children()
+            .find(|n| n.has_tag_name("ModuleInfo"))
+            .and_then(|info| info.children().find(|n| n.has_tag_name("Name")))
+            .map(|n| text_of(attr(n, "TextId")))
+            .unwrap();
+        let submodules: Vec<_> = module
+            .descendants()
+            .filter(|n| n.has_tag_name("VirtualSubmoduleItem"))
+            .collect();
+        let api = submodules[0].attribute("API").unwrap_or("0");
+        lines.push(format!(
+            "module {name:?} ident {} slots {slots} api {}",
+            number(attr(module, "ModuleIdentNumber")),
+            number(api)
+        ));
+        for s in submodules {
+            let bytes = |direction: &str| -> usize {
+                s.descendants()
+                    .filter(|n| n.has_tag_name(direction))
+                    .flat_map(|d| d.children().filter(|n| n.has_tag_name("DataItem")))
+                    .map(|d| data_type_len(attr(d, "DataType")))
+                    .sum()
+            };
+            lines.push(format!(
+                "submodule {} {} in {} out {}",
+                number(s.attribute("FixedInSubslots").unwrap_or("1")),
+                number(attr(s, "SubmoduleIdentNumber")),
+                bytes("Input"),
+                bytes("Output")
+            ));
+            for record in s
+                .descendants()
+                .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
+            {
+                let reads: Vec<&str> = record
+                    .children()
+                    .filter(|n| n.has_tag_name("Ref"))
+                    .map(|r| attr(r, "DefaultValue"))
+                    .collect();
+                lines.push(format!(
+                    "record {} len {} reads {}",
+                    attr(record, "Index"),
+                    attr(record, "Length"),
+                    reads.join(" ")
+                ));
+            }
+        }
+    }
+    lines
+}
+
+fn attr<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> &'a str {
+    node.attribute(name)
+        .unwrap_or_else(|| panic!("{} without {name}", node.tag_name().name()))
+}
+
+/// A GSDML number, decimal or `0x` hex, in decimal.
+fn number(text: &str) -> u64 {
+    match text.strip_prefix("0x") {
+        Some(hex) => u64::from_str_radix(hex, 16).unwrap(),
+        None => text.parse().unwrap(),
+    }
+}
+
+fn data_type_len(data_type: &str) -> usize {
+    match data_type {
+        "Unsigned8" | "Integer8" => 1,
+        "Unsigned16" | "Integer16" => 2,
+        "Unsigned32" | "Integer32" | "Float32" => 4,
+        other => panic!("gsdc writes no {other}"),
+    }
+}
