@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 mkdir -p corpus/description corpus/compile corpus/gsd corpus/gsdml
 cp ../descriptions/*.toml ../tests/fixtures/invalid/*.toml corpus/description/
-cp ../descriptions/*.toml corpus/compile/
+cp ../descriptions/*.toml ../tests/fixtures/valid/*.toml corpus/compile/
 cp ../../shared/corpus/gsd/*.[gG][sS]? corpus/gsd/
 cp ../../shared/corpus/gsdml/*.xml ../../shared/corpus/gsdml-invalid/*.xml corpus/gsdml/
 # gsdc doc: the descriptions that load; gsdc decode: each with arguments,
