@@ -95,6 +95,7 @@ mod hostile_limits;
 mod hostile_properties;
 mod import_cycles;
 mod invalid_descriptions;
+mod languages;
 mod limits;
 mod manual_texts;
 mod output_safety;
