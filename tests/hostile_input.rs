@@ -10,7 +10,7 @@
 use crate::support::{self, scratch, CHECKOUT as MANIFEST};
 use std::path::Path;
 use std::process::Stdio;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 const HANG: Duration = Duration::from_secs(20);
 
@@ -30,18 +30,7 @@ fn gsdc(dir: &Path, args: &[&str]) -> Run {
         .stdin(Stdio::null())
         .spawn()
         .unwrap();
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > HANG {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("gsdc {args:?} did not finish within {HANG:?}: a hang");
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
+    let status = support::wait_within(&mut child, HANG, &format!("gsdc {args:?}"));
     let read = |path| String::from_utf8_lossy(&std::fs::read(path).unwrap()).into_owned();
     Run {
         code: status.code(),
