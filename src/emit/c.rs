@@ -103,6 +103,8 @@ struct FieldItem {
 
 #[derive(Serialize)]
 struct ValueSetItem {
+    /// `MV810_PNET02_STATUS_WORD_MOTOR_TYPE`: the start of its values' names.
+    prefix: String,
     is_value: String,
     choices: Vec<ChoiceItem>,
 }
@@ -411,11 +413,12 @@ fn header(ir: &Ir, p: &str, l: &str) -> String {
 }
 
 fn pkw_doc(kind: PkwKind) -> Option<String> {
-    let (name, codec) = match kind {
+    let name = super::pkw_name(kind)?;
+    let codec = match kind {
         PkwKind::None => return None,
-        PkwKind::PkeIndPwe => ("PKE, IND, PWE", "gsdc_pke"),
-        PkwKind::StationCommandAddressValue => ("station, command, address, value", "gsdc_station"),
-        PkwKind::Profidrive => ("PROFIdrive: PKE, IND, PWE1, PWE2", "gsdc_profidrive"),
+        PkwKind::PkeIndPwe => "gsdc_pke",
+        PkwKind::StationCommandAddressValue => "gsdc_station",
+        PkwKind::Profidrive => "gsdc_profidrive",
     };
     Some(comment(&format!(
         "The PKW channel ({name}) in bytes 0-7 of the telegrams that have one: \
@@ -518,11 +521,9 @@ fn word_item(names: &Names, dir: Direction, word: &Word) -> WordItem {
         .map(|b| {
             let name = format!("{base}_{}", b.ident.upper_snake());
             let values = b.values.as_ref().map(|v| value_set_item(names, module, v));
-            let see = if values.is_some() {
-                "; its values follow"
-            } else {
-                ""
-            };
+            let see = values
+                .as_ref()
+                .map_or_else(String::new, |v| format!("; values in {}_*", v.prefix));
             FieldItem {
                 doc: comment(&format!(
                     "{}: {}{see}.",
@@ -555,6 +556,7 @@ fn field_mask(first: u8, last: u8) -> u16 {
 fn value_set_item(names: &Names, scope: &str, values: &ValueSet) -> ValueSetItem {
     let base = format!("{scope}_{}", values.ident.snake());
     ValueSetItem {
+        prefix: names.upper(&base),
         is_value: names.lower(&format!("{base}_is_value")),
         choices: values
             .choices
@@ -643,7 +645,7 @@ fn fixed_items(ir: &Ir, names: &Names, g: &MappingGroup, group: &str) -> Vec<Fix
             let name = format!("{group}_FIXED_{}", set.key.first);
             FixedItem {
                 doc: comment(&format!(
-                    "The value of \"{}\" each PROFINET module fixes, by its ident number: the module writes it; the user cannot change it. An initializer of gsdc_module_value_t[{name}_COUNT].",
+                    "The value of \"{}\" each PROFINET module fixes, by its ident number: the module writes it; the user cannot change it, an initializer of gsdc_module_value_t[{name}_COUNT].",
                     set.entries[0].name.en
                 )),
                 initializer: initializer(&name, &modules),
@@ -676,17 +678,23 @@ fn set_item(names: &Names, module: &str, set: &MappingSet, single: bool, end: us
             check: range_check(&name, *min, *max),
             name,
         },
-        Allowed::Choices(values) => SetItem {
-            doc: comment(&format!("{holder} holds one of these values.")),
-            allowed: names.lower(&base),
-            allowed_doc,
-            end,
-            choices: Some(value_set_item(names, module, values)),
-            min: String::new(),
-            max: String::new(),
-            check: Vec::new(),
-            name,
-        },
+        Allowed::Choices(values) => {
+            let choices = value_set_item(names, module, values);
+            SetItem {
+                doc: comment(&format!(
+                    "{holder} holds one of the values of {}_*.",
+                    choices.prefix
+                )),
+                allowed: names.lower(&base),
+                allowed_doc,
+                end,
+                choices: Some(choices),
+                min: String::new(),
+                max: String::new(),
+                check: Vec::new(),
+                name,
+            }
+        }
     }
 }
 
@@ -807,8 +815,9 @@ fn diagnosis_items(names: &Names, file_name: &str, d: &Diagnosis) -> DiagnosisIt
             .map(|a| AreaItem {
                 name: names.upper(&format!("diagnosis_{}", a.ident.snake())),
                 doc: comment(&format!(
-                    "{} of the device-related diagnosis; its values follow.",
-                    bit_range(a.first_bit, a.last_bit)
+                    "{} of the device-related diagnosis; values in {}_*.",
+                    bit_range(a.first_bit, a.last_bit),
+                    names.upper(&format!("diagnosis_{}", a.values.ident.snake()))
                 )),
                 first: a.first_bit,
                 last: a.last_bit,

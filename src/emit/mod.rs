@@ -224,6 +224,16 @@ pub(crate) fn hex32(value: u32) -> String {
     format!("0x{value:08X}")
 }
 
+/// The PKW channel's words as the layouts name them, or `None` without one.
+pub(crate) fn pkw_name(kind: PkwKind) -> Option<&'static str> {
+    match kind {
+        PkwKind::None => None,
+        PkwKind::PkeIndPwe => Some("PKE, IND, PWE"),
+        PkwKind::StationCommandAddressValue => Some("station, command, address, value"),
+        PkwKind::Profidrive => Some("PROFIdrive: PKE, IND, PWE1, PWE2"),
+    }
+}
+
 /// `a, b and c` (or `a, b or c`).
 pub(crate) fn joined(items: &[&str], conjunction: &str) -> String {
     match items {

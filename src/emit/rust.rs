@@ -60,6 +60,7 @@ struct Context<'a> {
     /// Header comment lines: translations and decisions, wrapped.
     notes: Vec<String>,
     pkw_module: Option<&'static str>,
+    pkw_doc: String,
     telegrams: Vec<TelegramAlias>,
     words: Vec<WordModule>,
     groups: Vec<Group>,
@@ -175,8 +176,10 @@ struct ProfibusItems {
 
 #[derive(Serialize)]
 struct DiagnosisItems {
-    /// Bytes of the block, the header included; also the header byte.
+    /// Bytes of the block, the header included.
     len: u8,
+    /// The header byte, which says the length.
+    header: String,
     areas: Vec<DiagAreaItem>,
 }
 
@@ -324,6 +327,11 @@ fn context(ir: &Ir) -> Context<'_> {
             PkwKind::StationCommandAddressValue => Some("pkw_station_command"),
             PkwKind::Profidrive => Some("pkw_profidrive"),
         },
+        pkw_doc: super::pkw_name(ir.telegram.pkw).map_or_else(String::new, |name| {
+            format!(
+                "The PKW channel ({name}) in bytes 0-7 of the telegrams that have one: the master's requests are decoded with [`PkwRequest::decode`] into [`PkwRequest`], the drive's answers encoded from [`PkwResponse`] with [`PkwResponse::encode`]."
+            )
+        }),
         telegrams: telegrams(ir),
         words: Direction::BOTH
             .iter()
@@ -364,8 +372,6 @@ struct DirectionText {
     /// Of the alias's name.
     suffix: &'static str,
     name: &'static str,
-    /// What reads or writes the PKW channel in this direction.
-    pkw: &'static str,
     /// The module of the word PZD1 carries, when the description has it.
     word_module: &'static str,
     standard_telegram_1: &'static str,
@@ -376,14 +382,12 @@ fn direction_text(direction: Direction) -> DirectionText {
         Direction::Out => DirectionText {
             suffix: "Out",
             name: "master to drive",
-            pkw: "PkwRequest::decode",
             word_module: "control_word",
             standard_telegram_1: "STW1 and NSOLL_A",
         },
         Direction::In => DirectionText {
             suffix: "In",
             name: "drive to master",
-            pkw: "PkwResponse::encode",
             word_module: "status_word",
             standard_telegram_1: "ZSW1 and NIST_A",
         },
@@ -419,24 +423,31 @@ fn telegram_alias(telegram: &Telegram, m: &CyclicModule, direction: Direction) -
         1 => "PZD1".to_string(),
         n => format!("PZD1 to PZD{n}"),
     };
-    let pzd_doc = match (m.is_profidrive(), telegram.word(direction)) {
-        (true, _) => format!("PROFIdrive {}.", dir.standard_telegram_1),
-        (false, Some(_)) => format!("{words}; PZD1 is the word of [`{}`].", dir.word_module),
-        (false, None) => format!("{words}."),
+    let place = if m.layout.pkw {
+        format!(
+            "the PKW channel in bytes 0-7, {words} from byte {}",
+            m.layout.pzd_offset()
+        )
+    } else {
+        format!("{words} from byte 0")
     };
-    let mut doc = vec![format!(
-        "{}, {}: {} bytes.",
-        module_doc(m),
-        dir.name,
-        m.layout.bytes()
-    )];
-    if m.layout.pkw {
-        doc.push(format!("The PKW channel: see [`{}`].", dir.pkw));
-    }
-    doc.push(pzd_doc);
+    let pzd1 = match (m.is_profidrive(), telegram.word(direction)) {
+        (true, _) => format!(": PROFIdrive {}.", dir.standard_telegram_1),
+        (false, Some(_)) => format!(
+            "; PZD1 is the {}, [`{}`].",
+            dir.word_module.replace('_', " "),
+            dir.word_module
+        ),
+        (false, None) => ".".to_string(),
+    };
     TelegramAlias {
         name: format!("{}{}", m.ident.camel(), dir.suffix),
-        doc,
+        doc: vec![format!(
+            "{}: {} bytes each way, {place}. {}{pzd1}",
+            module_doc(m),
+            m.layout.bytes(),
+            capitalised(dir.name)
+        )],
         generic: if m.layout.pkw {
             "PkwTelegram"
         } else {
@@ -558,7 +569,7 @@ fn set_allowed(set: &MappingSet, single: bool) -> SetAllowed {
     let holder = if single {
         "each entry".to_string()
     } else {
-        doc_text(&set.entries[0].name.en)
+        format!("\"{}\"", doc_text(&set.entries[0].name.en))
     };
     // The name as the description writes it (P43.01, not p43.01); only
     // gsdc's own words are capitalised to begin a sentence.
@@ -652,7 +663,7 @@ fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
             let values = value_enum(&a.values, format!("The values of [`{constant}`]."));
             DiagAreaItem {
                 doc: format!(
-                    "{} of the device-related diagnosis: values in [`{}`].",
+                    "{} of the device-related diagnosis; values in [`{}`].",
                     bit_range(a.first_bit, a.last_bit),
                     values.name
                 ),
@@ -665,6 +676,7 @@ fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
         .collect();
     DiagnosisItems {
         len: d.length,
+        header: hex8(d.length),
         areas,
     }
 }
@@ -750,7 +762,7 @@ mod tests {
     fn a_range_of_plain_values_is_written_in_decimal() {
         let layout = emit(&crate::testing::mv810_with_timeout());
         for line in [
-            "/// Communication timeout (P43.24) holds a value from 0 to 60000.\n",
+            "/// \"Communication timeout (P43.24)\" holds a value from 0 to 60000.\n",
             "min: 0,\n",
             "max: 60000,\n",
             "default: 100,\n",
@@ -766,7 +778,7 @@ mod tests {
     fn a_setting_is_named_as_the_description_writes_it() {
         let layout = emit(&crate::testing::mv810_with_timeout());
         assert!(
-            layout.contains("/// What Message type (P43.01) may hold.\n"),
+            layout.contains("/// What \"Message type (P43.01)\" may hold.\n"),
             "{layout}"
         );
     }

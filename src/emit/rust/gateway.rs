@@ -96,7 +96,7 @@ pub(super) fn items(g: &Gateway, p: &Profibus) -> Items {
         max_output_len: g.max_output_len,
         node_count: Field {
             doc: format!(
-                "\"{}\": how many nodes are in use, {} at most.",
+                "\"{}\": how many nodes are in use, the first ones from [`FIRST_NODE`], {} at most.",
                 doc_text(&count.name.en),
                 count.max
             ),
@@ -159,11 +159,14 @@ fn diag_items(d: &Diagnosis) -> DiagItems {
             let (code_enum, code_doc) = match &t.code {
                 DiagCode::Listed(set) => (
                     Some(set.ident.camel()),
-                    format!("`code` is one of [`{}`]", set.ident.camel()),
+                    format!("the code is one byte, one of [`{}`]", set.ident.camel()),
                 ),
                 DiagCode::Word(name) => (
                     None,
-                    format!("`code` is the {}, high byte first", doc_text(&name.en)),
+                    format!(
+                        "the code is the {}, two bytes, high byte first",
+                        doc_text(&name.en)
+                    ),
                 ),
             };
             let code_type = code_enum.clone().unwrap_or_else(|| "u16".into());
@@ -171,9 +174,10 @@ fn diag_items(d: &Diagnosis) -> DiagItems {
                 one_line: format!("node: u8, code: {code_type}").len() <= 35,
                 code_type,
                 doc: format!(
-                    "Type {}, \"{}\", at `node`: {code_doc}.",
+                    "Type {}, \"{}\": blocks of {} bytes, the header included; {code_doc}.",
                     t.value,
-                    doc_text(&t.text.en)
+                    doc_text(&t.text.en),
+                    t.len
                 ),
                 variant,
                 value: t.value,
