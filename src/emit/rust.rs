@@ -74,7 +74,7 @@ struct Context<'a> {
 #[derive(Serialize)]
 struct TelegramAlias {
     name: String,
-    doc: Vec<String>,
+    doc: String,
     /// `PkwTelegram` or `PzdTelegram`.
     generic: &'static str,
     pzd_words: u8,
@@ -238,9 +238,20 @@ pub fn emit(ir: &Ir) -> String {
 }
 
 fn render(template: &str, ir: &Ir) -> Result<String, minijinja::Error> {
-    super::code_templates()
-        .template_from_str(template)?
-        .render(context(ir))
+    let mut env = super::code_templates();
+    env.add_filter("doc", |text: String, indent: Option<usize>| {
+        doc_comment(&text, indent.unwrap_or(0))
+    });
+    env.template_from_str(template)?.render(context(ir))
+}
+
+/// `text` as `///` lines indented by `indent`, wrapped at 80 columns.
+fn doc_comment(text: &str, indent: usize) -> String {
+    super::wrap_words(text, 80 - indent - 4)
+        .iter()
+        .map(|line| format!("{:indent$}/// {line}", ""))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// `gsdc_support.rs`: the support code as one module, `gsdc_support`, with
@@ -442,12 +453,12 @@ fn telegram_alias(telegram: &Telegram, m: &CyclicModule, direction: Direction) -
     };
     TelegramAlias {
         name: format!("{}{}", m.ident.camel(), dir.suffix),
-        doc: vec![format!(
+        doc: format!(
             "{}: {} bytes each way, {place}. {}{pzd1}",
             module_doc(m),
             m.layout.bytes(),
             capitalised(dir.name)
-        )],
+        ),
         generic: if m.layout.pkw {
             "PkwTelegram"
         } else {

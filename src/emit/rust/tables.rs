@@ -18,9 +18,8 @@ pub(super) fn render(tables: &[Table]) -> String {
     let mut out = String::new();
     for table in tables {
         out.push('\n');
-        for line in super::super::wrap_words(&table.doc, MAX_WIDTH - 4) {
-            out.push_str(&format!("/// {line}\n"));
-        }
+        out.push_str(&super::doc_comment(&table.doc, 0));
+        out.push('\n');
         let ty = type_name(&table.record);
         let head = format!("pub const {}: {ty} = ", table.name.upper_snake());
         let value = record(&table.record, 0, head.len());
