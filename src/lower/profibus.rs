@@ -83,7 +83,6 @@ pub fn lower(
             .help("apply to PI for an ident number before shipping the GSD"),
             "profibus.ident_number",
             value,
-            "not assigned by PI",
         );
     }
     let modules = modules(cx, p, telegram);

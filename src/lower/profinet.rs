@@ -64,21 +64,20 @@ pub fn lower(
             io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
-    cx.convention(
-        "profinet ident numbers",
-        "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
-        "the manual gives none; the layouts carry each",
-    );
-    cx.requirement(
-        "profinet device access point",
-        "MultipleWriteSupported, LLDP_NoD_Supported, ResetToFactoryModes 2",
-        "PNIO_Version V2.31 and later requires them; the manual does not say: the card's PROFINET stack must provide them",
-    );
-    cx.requirement(
-        "profinet interface",
-        "RT_CLASS_1; SNMP and LLDP; DCP and PTP boundaries; startup modes Legacy and Advanced; reduction ratios 1 to 512",
-        "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
-    );
+    {
+        use crate::i18n::files as w;
+        cx.convention(
+            w::IDENT_NUMBERS,
+            w::IDENT_NUMBERS_RULE,
+            w::IDENT_NUMBERS_WHY,
+        );
+        cx.requirement(w::DAP, w::DAP_SERVICES, w::DAP_SERVICES_WHY);
+        cx.requirement(
+            w::INTERFACE,
+            w::INTERFACE_SERVICES,
+            w::INTERFACE_SERVICES_WHY,
+        );
+    }
     let value_items = records::value_items(mappings, &modules);
     let reading_plans = records::reading_plans(mappings, &modules);
     let fixed = records::fixed_values(mappings, &modules);
@@ -156,7 +155,7 @@ fn port(number: u8, media_redundancy: bool) -> Port {
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
         text: TextRef::new(
             format!("IDT_PORT_{number}"),
-            Text::en_zh(format!("Port {number}"), format!("端口 {number}")),
+            Text::gsdc(|lang| crate::i18n::files::port(lang, number)),
         ),
         default_ringport: media_redundancy && number <= 2,
     }
@@ -312,7 +311,6 @@ fn placeholder_warning(
                 .help("use the vendor ID PI assigned and the device ID the vendor assigned before shipping"),
             &format!("profinet.{key}"),
             value,
-            "not assigned by PI",
         );
     }
 }
