@@ -212,7 +212,7 @@ fn an_overview_has_a_box_per_word_of_every_module() {
             .unwrap()
             .modules
             .iter()
-            .map(|m| m.layout),
+            .filter_map(|m| m.layout),
     );
     let pn = words(
         &mut ir

@@ -228,7 +228,7 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
     for expected in [
         ir.profibus
             .as_ref()
-            .map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
+            .map(|p| words(p.modules.iter().filter_map(|m| m.layout).collect())),
         ir.profinet
             .as_ref()
             .map(|p| words(p.modules.iter().map(|m| m.layout).collect())),
@@ -255,7 +255,11 @@ fn check_shown(name: &str, ir: &gsdc::Ir, shown: &Value, lang: &str) {
     let layouts: Vec<(String, gsdc::ir::Layout)> = ir
         .profibus
         .iter()
-        .flat_map(|p| p.modules.iter().map(|m| (m.name.clone(), m.layout)))
+        .flat_map(|p| {
+            p.modules
+                .iter()
+                .filter_map(|m| Some((m.name.clone(), m.layout?)))
+        })
         .chain(ir.profinet.iter().flat_map(|p| {
             p.modules
                 .iter()

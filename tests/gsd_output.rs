@@ -142,7 +142,7 @@ fn gsd_parser_reads_what_the_ir_says() {
 
         if ir.gateway.is_none() {
             // One PPO type at a time: the largest sets the limits.
-            let largest = profibus.modules.iter().map(|m| m.layout.bytes()).max();
+            let largest = profibus.modules.iter().map(|m| m.input_len).max();
             assert_eq!(Some(profibus.max_input_len), largest, "{name}");
             assert_eq!(Some(profibus.max_output_len), largest, "{name}");
         }

@@ -46,7 +46,7 @@ pub fn telegram(
     let bytes = hex.exactly(module.bytes(), &module.name(), &module.summary())?;
     let cyclic = |layout| telegram::decode(ir, module, layout, direction, bytes, mapping);
     Ok(match module {
-        Module::Ppo(m) => cyclic(m.layout),
+        Module::Ppo(_, layout) => cyclic(layout),
         Module::Profinet(m) => cyclic(m.layout),
         Module::Gateway(g, m) => gateway::telegram(g, m, bytes, mapping),
     })

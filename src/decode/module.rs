@@ -4,14 +4,15 @@
 
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{self, Gateway};
-use crate::ir::profibus::PpoModule;
+use crate::ir::profibus::DpModule;
 use crate::ir::profinet::{self, ModuleKind};
 use crate::ir::{Direction, Ir, Layout, PkwKind};
 
 /// A module of either bus, as the description's IR has it.
 #[derive(Debug, Clone, Copy)]
 pub enum Module<'a> {
-    Ppo(&'a PpoModule),
+    /// A GSD module with a telegram: a PPO type or a vendor's module.
+    Ppo(&'a DpModule, Layout),
     Profinet(&'a profinet::Module),
     /// A gateway's module: words one way, of the nodes of the second bus.
     Gateway(&'a Gateway, &'a gateway::Module),
@@ -22,7 +23,7 @@ impl Module<'_> {
     /// PZD`, `INPUT 16 words`).
     pub fn name(self) -> String {
         match self {
-            Module::Ppo(m) => format!("PPO{}", m.ppo),
+            Module::Ppo(m, _) => m.ppo.map_or_else(|| m.name.clone(), |n| format!("PPO{n}")),
             Module::Profinet(m) => m.name.text.en.clone(),
             Module::Gateway(_, m) => m.name.clone(),
         }
@@ -33,7 +34,7 @@ impl Module<'_> {
     fn is_called(self, name: &str) -> bool {
         let wanted = squeeze(name);
         let gsd_name = match self {
-            Module::Ppo(m) => Some(&m.name),
+            Module::Ppo(m, _) => Some(&m.name),
             Module::Profinet(_) | Module::Gateway(..) => None,
         };
         squeeze(&self.name()) == wanted || gsd_name.is_some_and(|n| squeeze(n) == wanted)
@@ -43,7 +44,7 @@ impl Module<'_> {
     /// gateway's module has words one way only.
     pub fn layout(self) -> Option<Layout> {
         match self {
-            Module::Ppo(m) => Some(m.layout),
+            Module::Ppo(_, layout) => Some(layout),
             Module::Profinet(m) => Some(m.layout),
             Module::Gateway(..) => None,
         }
@@ -52,7 +53,7 @@ impl Module<'_> {
     /// Bytes of its telegram (each way, or the one way it goes).
     pub fn bytes(self) -> usize {
         match self {
-            Module::Ppo(m) => m.layout.bytes().into(),
+            Module::Ppo(_, layout) => layout.bytes().into(),
             Module::Profinet(m) => m.layout.bytes().into(),
             Module::Gateway(_, m) => 2 * usize::from(m.words),
         }
@@ -62,7 +63,7 @@ impl Module<'_> {
     fn only_direction(self) -> Option<Direction> {
         match self {
             Module::Gateway(_, m) => Some(m.direction),
-            Module::Ppo(_) | Module::Profinet(_) => None,
+            Module::Ppo(..) | Module::Profinet(_) => None,
         }
     }
 
@@ -71,7 +72,7 @@ impl Module<'_> {
     /// nodes'.
     pub fn is_mapped(self) -> bool {
         match self {
-            Module::Ppo(_) => true,
+            Module::Ppo(..) => true,
             Module::Profinet(m) => m.kind == ModuleKind::Pzd,
             Module::Gateway(..) => false,
         }
@@ -81,7 +82,7 @@ impl Module<'_> {
     /// PROFIdrive's standard telegram 1 it is the profile's STW1 or ZSW1.
     pub fn has_vendor_words(self) -> bool {
         match self {
-            Module::Ppo(_) => true,
+            Module::Ppo(..) => true,
             Module::Profinet(m) => !m.is_profidrive(),
             Module::Gateway(..) => false,
         }
@@ -103,7 +104,7 @@ impl Module<'_> {
                 };
                 items.iter().map(|item| item.text.text.en.clone()).collect()
             }
-            Module::Ppo(m) => ppo_word_names(ir, m.layout, direction),
+            Module::Ppo(_, layout) => ppo_word_names(ir, layout, direction),
             Module::Gateway(_, m) => (1..=m.words).map(word_name).collect(),
         }
     }
@@ -135,7 +136,11 @@ impl Module<'_> {
 /// Every module of the description: the PPO types, then the PROFINET
 /// modules, then a gateway's, in the order of the device files.
 fn modules(ir: &Ir) -> Vec<Module<'_>> {
-    let ppos = ir.profibus.iter().flat_map(|p| &p.modules).map(Module::Ppo);
+    let ppos = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .filter_map(|m| Some(Module::Ppo(m, m.layout?)));
     let profinet = ir
         .profinet
         .iter()

@@ -67,6 +67,8 @@ impl Prm {
                     mapping.set(entry, param.value, ValueSource::ParameterTelegram)
                 }
                 profibus::PrmValue::Gateway(key) => mapping.set_gateway(key, param.value),
+                // The card's own parameters map nothing.
+                profibus::PrmValue::Card(_) => {}
             }
         }
         mapping
@@ -76,6 +78,7 @@ impl Prm {
 /// Decodes `bytes`, which must be as long as `user_prm`.
 pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
     debug_assert_eq!(bytes.len(), usize::from(user_prm.len));
+    let dpv1 = ir.profibus.as_ref().is_some_and(|p| p.dpv1.is_some());
     let constant = user_prm
         .constant
         .iter()
@@ -83,8 +86,12 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
         .enumerate()
         .map(|(offset, (&default, &value))| ConstantByte {
             offset,
-            // Lowering puts the DPV1 status bytes there, and only them.
-            name: format!("DPV1_Status_{}", offset + 1),
+            // A DPV1 slave's first three are its status bytes; a
+            // description may state more (`[profibus.user_prm] constant`).
+            name: match (dpv1, offset) {
+                (true, 0..=2) => format!("DPV1_Status_{}", offset + 1),
+                _ => format!("Ext_User_Prm_Data_Const byte {offset}"),
+            },
             value,
             default,
         })
@@ -97,6 +104,7 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
             let facts = ir.prm_facts(param);
             let meaning = |value| match facts.holds {
                 PrmHolds::Mapping { set, .. } => meaning(ir, &set.allowed, value),
+                PrmHolds::Card(p) => meaning(ir, &p.allowed, value),
                 PrmHolds::Number { .. } => None,
             };
             PrmValue {
@@ -111,7 +119,7 @@ pub(super) fn decode(ir: &Ir, user_prm: &UserPrm, bytes: &[u8]) -> Prm {
                 default_meaning: meaning(facts.default),
                 range: match facts.holds {
                     PrmHolds::Number { min, max } => Some([min, max]),
-                    PrmHolds::Mapping { .. } => None,
+                    PrmHolds::Mapping { .. } | PrmHolds::Card(_) => None,
                 },
                 allowed: facts.holds.contains(value),
             }

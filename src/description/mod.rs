@@ -4,6 +4,7 @@
 //! diagnostic may point at is `Spanned`. No `flatten` or untagged enums here:
 //! they lose spans. Lowering ([`crate::lower`]) turns this into the IR.
 
+pub mod dp;
 pub mod gateway;
 mod values;
 
@@ -254,6 +255,39 @@ pub struct Profibus {
     pub freeze_mode: bool,
     #[serde(default)]
     pub sync_mode: bool,
+    /// Fail_Safe: the card takes a master's Data_Exchange without output
+    /// data (the master's clear state).
+    pub fail_safe: Option<Spanned<bool>>,
+    /// Set_Slave_Add_supp: a master may set the station address.
+    pub set_slave_address: Option<Spanned<bool>>,
+    /// Redundancy: the card has redundant transmission.
+    pub redundancy: Option<Spanned<bool>>,
+    /// Repeater_Ctrl_Sig and 24V_Pins: what the connector's pins carry (0
+    /// not connected, 1 RS-485, 2 TTL; 0 none, 1 input, 2 output).
+    pub repeater_ctrl_sig: Option<Spanned<u8>>,
+    pub pins_24v: Option<Spanned<u8>>,
+    /// WD_Base_1ms_supp: the watchdog counts in 1 ms.
+    pub wd_base_1ms: Option<Spanned<bool>>,
+    /// Publisher_supp: the card publishes its inputs (DXB).
+    pub publisher: Option<Spanned<bool>>,
+    /// Modular_Station: true (the default) for a card whose modules the
+    /// master picks; false for a compact one, of one fixed module.
+    pub modular_station: Option<Spanned<bool>>,
+    /// Modul_Offset: the slot the first module is numbered by (0 or 1).
+    pub modul_offset: Option<Spanned<u8>>,
+    /// Max_Module and the most bytes of data, when they say more than the
+    /// modules need.
+    pub max_module: Option<Spanned<u8>>,
+    pub max_input_len: Option<Spanned<u8>>,
+    pub max_output_len: Option<Spanned<u8>>,
+    pub max_data_len: Option<Spanned<u16>>,
+    /// The modules in the vendor's own layout (instead of `ppo_types`).
+    pub modules: Option<Spanned<Vec<dp::DpModule>>>,
+    /// The fixed bytes of User_Prm_Data and its stated length.
+    pub user_prm: Option<Spanned<dp::UserPrm>>,
+    /// The card's own User_Prm_Data parameters, at their bytes.
+    #[serde(default)]
+    pub parameters: Vec<dp::Parameter>,
     pub dpv1: Option<Spanned<Dpv1>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }
@@ -282,6 +316,11 @@ pub struct Dpv1 {
     /// I&M functions (Ident_Maintenance_supp), read over the class 2
     /// channel; not written, a warning (PI requires them of new slaves).
     pub ident_maintenance: Option<bool>,
+    /// DPV1_Data_Types: the card takes the DPV1 data types in User_Prm_Data.
+    pub data_types: Option<Spanned<bool>>,
+    /// Check_Cfg_Mode: true when the card checks the configuration less
+    /// strictly than byte for byte.
+    pub check_cfg_mode: Option<Spanned<bool>>,
 }
 
 /// DPV1 class 2 (MSAC_2): GSD revision 3 keywords.
@@ -307,6 +346,9 @@ pub struct Diagnosis {
     pub length: Spanned<u8>,
     #[serde(default)]
     pub areas: Vec<DiagnosisArea>,
+    /// Bits with the text shown while each is set (Unit_Diag_Bit).
+    #[serde(default)]
+    pub bits: Vec<dp::DiagnosisBit>,
 }
 
 #[derive(Debug, Deserialize)]

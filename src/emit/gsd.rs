@@ -2,7 +2,7 @@
 //! wrapped to 80 columns with `\` continuations and given CRLF line ends.
 
 use crate::ir::gateway::Gateway;
-use crate::ir::profibus::{PrmHolds, Profibus};
+use crate::ir::profibus::{PrmHolds, PrmTextOf, Profibus};
 use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
@@ -39,17 +39,43 @@ struct Context<'a> {
     max_output_len: u16,
     max_data_len: u16,
     max_module: u8,
+    modular_station: u8,
+    /// Which of the four limits above the GSD writes.
+    limits: Limits,
+    features: Features,
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
+    diag_bits: Vec<Value<'a>>,
     dpv1: Option<Dpv1>,
     prm_len: u16,
+    /// Max_User_Prm_Data_Len: the telegram's length, or more when stated.
+    prm_max_len: u16,
     prm_const: Option<String>,
+    /// The constant bytes are exactly the DPV1 status bytes.
+    prm_const_is_status: bool,
     prm_texts: Vec<PrmText<'a>>,
     params: Vec<Param<'a>>,
     /// What the modules are, for the comment above them.
     modules_note: &'static str,
     modules: Vec<Module<'a>>,
+}
+
+#[derive(Serialize)]
+struct Limits {
+    max_module: bool,
+    max_input_len: bool,
+    max_output_len: bool,
+    max_data_len: bool,
+}
+
+/// The DP keywords gsdc always writes (0 unless stated), and those it
+/// writes only when stated.
+#[derive(Serialize)]
+struct Features {
+    fail_safe: u8,
+    set_slave_address: u8,
+    stated: Vec<(&'static str, u8)>,
 }
 
 #[derive(Serialize)]
@@ -80,6 +106,8 @@ struct Dpv1 {
     c1_response_timeout: u16,
     c2: Option<Class2>,
     ident_maintenance: u8,
+    /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
+    stated: Vec<(&'static str, u8)>,
 }
 
 #[derive(Serialize)]
@@ -105,13 +133,17 @@ struct Param<'a> {
     allowed: String,
     text_ref: Option<u16>,
     offset: u16,
+    /// `Changeable = 0` and `Visible = 0` when so.
+    fixed: bool,
+    hidden: bool,
 }
 
 #[derive(Serialize)]
 struct Module<'a> {
     name: &'a str,
     config: String,
-    reference: u8,
+    reference: Option<u16>,
+    info: Option<&'a str>,
 }
 
 /// The GSD text of a description with a PROFIBUS part.
@@ -163,9 +195,26 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         max_output_len: p.max_output_len,
         max_data_len: p.max_data_len,
         max_module: p.max_module,
+        modular_station: p.modular_station.into(),
+        limits: Limits {
+            max_module: p.limits_written.max_module,
+            max_input_len: p.limits_written.max_input_len,
+            max_output_len: p.limits_written.max_output_len,
+            max_data_len: p.limits_written.max_data_len,
+        },
+        features: features(p),
         slave_family: &p.slave_family,
         max_diag_data_len: p.max_diag_data_len,
         diag_areas: diag_areas(ir, p),
+        diag_bits: p
+            .diagnosis
+            .iter()
+            .flat_map(|d| &d.bits)
+            .map(|b| Value {
+                value: b.bit.into(),
+                text: b.text.for_gsd(),
+            })
+            .collect(),
         dpv1: p.dpv1.map(|d| Dpv1 {
             c1_read_write: d.c1_read_write.into(),
             c1_max_data_len: d.c1_max_data_len,
@@ -177,27 +226,39 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 max_initiate_pdu_length: c2.max_initiate_pdu_length,
             }),
             ident_maintenance: d.ident_maintenance.into(),
+            stated: stated(&[
+                ("DPV1_Data_Types", d.data_types),
+                ("Check_Cfg_Mode", d.check_cfg_mode),
+            ]),
         }),
         prm_len: p.user_prm.len,
+        prm_max_len: p.user_prm.max_len.map_or(p.user_prm.len, u16::from),
         prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
+        prm_const_is_status: p
+            .dpv1
+            .is_some_and(|d| d.status_bytes[..] == p.user_prm.constant[..]),
         prm_texts: p
             .user_prm
             .texts
             .iter()
-            .map(|t| PrmText {
-                id: t.id,
-                values: ir
-                    .mappings
-                    .set(t.set)
-                    .allowed
-                    .choices()
-                    .map_or_else(Vec::new, |v| values(&v.choices)),
+            .map(|t| {
+                let allowed = match t.of {
+                    PrmTextOf::Set(set) => &ir.mappings.set(set).allowed,
+                    PrmTextOf::Card(index) => &p.user_prm.card_params[index].allowed,
+                };
+                PrmText {
+                    id: t.id,
+                    values: allowed
+                        .choices()
+                        .map_or_else(Vec::new, |v| values(&v.choices)),
+                }
             })
             .collect(),
         params: params(ir, p),
         modules_note: match ir.gateway {
             Some(_) => "word blocks; plug them until INPUT and OUTPUT equal the nodes' words",
-            None => "one PPO type at a time",
+            None if p.modules.iter().all(|m| m.ppo.is_some()) => "one PPO type at a time",
+            None => "the card's own",
         },
         modules: match &ir.gateway {
             Some(g) => gateway_modules(g),
@@ -207,11 +268,37 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 .map(|m| Module {
                     name: &m.name,
                     config: hex_list(&m.config),
-                    reference: m.ppo,
+                    reference: m.reference,
+                    info: m.info.as_deref(),
                 })
                 .collect(),
         },
     }
+}
+
+fn features(p: &Profibus) -> Features {
+    let f = &p.features;
+    let flag = |v: Option<bool>| v.map(u8::from);
+    Features {
+        fail_safe: f.fail_safe.unwrap_or(false).into(),
+        set_slave_address: f.set_slave_address.unwrap_or(false).into(),
+        stated: stated(&[
+            ("Redundancy", flag(f.redundancy)),
+            ("Repeater_Ctrl_Sig", f.repeater_ctrl_sig),
+            ("24V_Pins", f.pins_24v),
+            ("WD_Base_1ms_supp", flag(f.wd_base_1ms)),
+            ("Publisher_supp", flag(f.publisher)),
+            ("Modul_Offset", f.modul_offset),
+        ]),
+    }
+}
+
+/// The keywords among `keywords` a description states, with their values.
+fn stated<T: Copy + Into<u8>>(keywords: &[(&'static str, Option<T>)]) -> Vec<(&'static str, u8)> {
+    keywords
+        .iter()
+        .filter_map(|&(keyword, v)| Some((keyword, v?.into())))
+        .collect()
 }
 
 fn gateway_modules(g: &Gateway) -> Vec<Module<'_>> {
@@ -220,7 +307,8 @@ fn gateway_modules(g: &Gateway) -> Vec<Module<'_>> {
         .map(|m| Module {
             name: &m.name,
             config: hex_list(&[m.config]),
-            reference: m.reference,
+            reference: Some(m.reference.into()),
+            info: None,
         })
         .collect()
 }
@@ -293,10 +381,13 @@ fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
                 default: facts.default,
                 allowed: match facts.holds {
                     PrmHolds::Mapping { set, .. } => allowed(&set.allowed),
+                    PrmHolds::Card(p) => allowed(&p.allowed),
                     PrmHolds::Number { min, max } => format!("{min}-{max}"),
                 },
                 text_ref: param.text,
                 offset: param.offset,
+                fixed: matches!(facts.holds, PrmHolds::Card(p) if !p.changeable),
+                hidden: matches!(facts.holds, PrmHolds::Card(p) if !p.visible),
             }
         })
         .collect()

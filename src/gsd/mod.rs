@@ -12,7 +12,7 @@ use std::borrow::Cow;
 use crate::diag::InputLimit;
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 
-mod config;
+pub(crate) mod config;
 mod lexer;
 pub(crate) mod model;
 pub(crate) mod prm;

@@ -48,17 +48,20 @@ impl CyclicModule<'_> {
 }
 
 impl Ir {
-    /// Each PPO type of the GSD, then each module of the GSDML.
+    /// Each module of the GSD with a telegram (a PPO type, a vendor's
+    /// module of PKW and PZD words), then each module of the GSDML.
     pub fn cyclic_modules(&self) -> impl Iterator<Item = CyclicModule<'_>> {
         let ppos = self.profibus.iter().flat_map(|p| {
-            p.modules.iter().map(move |m| CyclicModule {
-                bus: Bus::Profibus,
-                name: &m.name,
-                file_name: &p.file_name,
-                ident: &m.ident,
-                layout: m.layout,
-                id: ModuleId::Config(&m.config),
-                profinet: None,
+            p.modules.iter().filter_map(move |m| {
+                Some(CyclicModule {
+                    bus: Bus::Profibus,
+                    name: &m.name,
+                    file_name: &p.file_name,
+                    ident: &m.ident,
+                    layout: m.layout?,
+                    id: ModuleId::Config(&m.config),
+                    profinet: None,
+                })
             })
         });
         let modules = self.profinet.iter().flat_map(|p| {

@@ -2,8 +2,8 @@
 //! modules with their config bytes, the parameter telegram and diagnosis.
 
 use super::{
-    EntryKey, Ident, Ir, Layout, MappingEntry, MappingGroup, MappingKind, MappingSet, SetKey, Text,
-    ValueSet,
+    Allowed, EntryKey, Ident, Ir, Layout, MappingEntry, MappingGroup, MappingKind, MappingSet,
+    SetKey, Text, ValueSet,
 };
 pub use crate::spec::Baud;
 use std::fmt;
@@ -17,14 +17,24 @@ pub struct Profibus {
     /// Not assigned by PI: the files say so.
     pub ident_placeholder: bool,
     pub implementation_type: Option<String>,
-    pub modules: Vec<PpoModule>,
-    /// Max_Input_Len and Max_Output_Len: the largest module's bytes.
+    pub modules: Vec<DpModule>,
+    /// Max_Input_Len and Max_Output_Len: the largest module's bytes, or
+    /// what the description states.
     pub max_input_len: u16,
     pub max_output_len: u16,
-    /// Max_Data_Len: input and output together.
+    /// Max_Data_Len: input and output together, or as stated.
     pub max_data_len: u16,
     /// Max_Module: the most modules a master plugs.
     pub max_module: u8,
+    /// Modular_Station: the master picks modules; false for a compact
+    /// station of one fixed module.
+    pub modular_station: bool,
+    /// Which of Max_Module, Max_Input_Len, Max_Output_Len and Max_Data_Len
+    /// the GSD writes: all for a modular station, those stated for a
+    /// compact one.
+    pub limits_written: LimitsWritten,
+    /// DP keywords the description states beyond the ones above.
+    pub features: Features,
     /// Supported baud rates with MaxTsdr in bit times, slowest first.
     pub baud_rates: Vec<(Baud, u16)>,
     /// Units of 100 us.
@@ -54,6 +64,9 @@ pub struct Dpv1 {
     pub c2: Option<Dpv1Class2>,
     /// Ident_Maintenance_supp: I&M over the class 2 channel.
     pub ident_maintenance: bool,
+    /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
+    pub data_types: Option<bool>,
+    pub check_cfg_mode: Option<bool>,
 }
 
 /// The DPV1 class 2 channel (MSAC_2).
@@ -67,17 +80,55 @@ pub struct Dpv1Class2 {
     pub max_initiate_pdu_length: u8,
 }
 
-/// A PPO type as a module: PPO1..PPO5.
+/// A module of the GSD: a PPO type, or a module of the vendor's layout.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
-pub struct PpoModule {
-    pub ppo: u8,
+pub struct DpModule {
+    /// The PPO type it is (1..5), when the description names one.
+    pub ppo: Option<u8>,
     pub name: String,
-    pub layout: Layout,
+    /// Its module reference number, written after its config bytes.
+    pub reference: Option<u16>,
+    /// Its `Info_Text`.
+    pub info: Option<String>,
+    /// Its telegram when it is the PKW channel (or not) and as many PZD
+    /// words each way; `None` for data of another shape (words one way
+    /// only, bytes, two PKW channels), which only its config bytes and
+    /// lengths describe.
+    pub layout: Option<Layout>,
     /// The config identifier bytes Chk_Cfg carries for this module.
     pub config: Vec<u8>,
+    /// Bytes to the master and from it.
+    pub input_len: u16,
+    pub output_len: u16,
     /// Its name in generated code: `ppo1`.
     pub ident: Ident,
+}
+
+/// Which of the length keywords the GSD writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct LimitsWritten {
+    pub max_module: bool,
+    pub max_input_len: bool,
+    pub max_output_len: bool,
+    pub max_data_len: bool,
+}
+
+/// DP keywords a description may state: `None` is what gsdc writes
+/// unstated (0 for Fail_Safe and Set_Slave_Add_supp, which it always
+/// writes; nothing for the others).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Features {
+    pub fail_safe: Option<bool>,
+    pub set_slave_address: Option<bool>,
+    pub redundancy: Option<bool>,
+    pub repeater_ctrl_sig: Option<u8>,
+    pub pins_24v: Option<u8>,
+    pub wd_base_1ms: Option<bool>,
+    pub publisher: Option<bool>,
+    pub modul_offset: Option<u8>,
 }
 
 /// Words one general identifier byte can carry.
@@ -89,7 +140,11 @@ pub const MAX_WORDS_PER_IDENTIFIER: u8 = 16;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct UserPrm {
+    /// The bytes from byte 0 no parameter sets (the DPV1 status bytes).
     pub constant: Vec<u8>,
+    /// The card's own parameters, where the description puts them.
+    pub card: Vec<PrmParam>,
+    pub card_params: Vec<CardParam>,
     pub blocks: Vec<PrmBlock>,
     /// A gateway's parameters, after the blocks: bit areas share a byte.
     pub gateway: Vec<PrmParam>,
@@ -97,13 +152,16 @@ pub struct UserPrm {
     pub texts: Vec<PrmText>,
     /// Bytes of the whole telegram.
     pub len: u16,
+    /// Max_User_Prm_Data_Len when the description states more than `len`.
+    pub max_len: Option<u8>,
 }
 
 impl UserPrm {
+    /// Every parameter: the card's, the mappings', a gateway's.
     pub fn params(&self) -> impl Iterator<Item = &PrmParam> {
-        self.blocks
+        self.card
             .iter()
-            .flat_map(|b| &b.params)
+            .chain(self.blocks.iter().flat_map(|b| &b.params))
             .chain(&self.gateway)
     }
 
@@ -166,6 +224,21 @@ pub struct PrmParam {
 pub enum PrmValue {
     Entry(EntryKey),
     Gateway(super::gateway::ParamKey),
+    /// The card's own parameter: its place in `UserPrm::card_params`.
+    Card(usize),
+}
+
+/// A User_Prm_Data parameter of the card itself (`[[profibus.parameters]]`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct CardParam {
+    pub name: Text,
+    pub default: u16,
+    pub allowed: Allowed,
+    /// False: the engineering tool lets nobody change it (`Changeable = 0`).
+    pub changeable: bool,
+    /// False: the tool does not show it (`Visible = 0`).
+    pub visible: bool,
 }
 
 /// How a parameter is stored, big-endian.
@@ -259,6 +332,8 @@ pub enum PrmHolds<'a> {
     },
     /// A number in a range: a gateway's node count or words.
     Number { min: u16, max: u16 },
+    /// A card parameter's range or choices.
+    Card(&'a CardParam),
 }
 
 impl PrmHolds<'_> {
@@ -266,6 +341,7 @@ impl PrmHolds<'_> {
         match self {
             PrmHolds::Mapping { set, .. } => set.allowed.contains(value.into()),
             PrmHolds::Number { min, max } => (*min..=*max).contains(&value),
+            PrmHolds::Card(p) => p.allowed.contains(value.into()),
         }
     }
 }
@@ -296,6 +372,19 @@ impl Ir {
                     },
                 }
             }
+            PrmValue::Card(index) => {
+                let p = &self
+                    .profibus
+                    .as_ref()
+                    .expect("lowering places card parameters only in a GSD")
+                    .user_prm
+                    .card_params[index];
+                PrmFacts {
+                    name: &p.name,
+                    default: p.default,
+                    holds: PrmHolds::Card(p),
+                }
+            }
         }
     }
 
@@ -314,22 +403,40 @@ impl Ir {
     }
 }
 
-/// A `PrmText`: the texts of a set's choices.
+/// A `PrmText`: the texts of a set's choices, or of a card parameter's.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct PrmText {
     /// Its reference number, from 1.
     pub id: u16,
-    pub set: SetKey,
+    pub of: PrmTextOf,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum PrmTextOf {
+    Set(SetKey),
+    /// A card parameter, by its place in `UserPrm::card_params`.
+    Card(usize),
 }
 
 /// Device-related diagnosis: the block length (header byte included) and
-/// texts for values of bit areas counted from the first byte after the header.
+/// texts for values of bit areas and for bits, counted from the first byte
+/// after the header.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Diagnosis {
     pub length: u8,
     pub areas: Vec<DiagnosisArea>,
+    pub bits: Vec<DiagnosisBit>,
+}
+
+/// `Unit_Diag_Bit`: a bit's text, shown while it is set.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DiagnosisBit {
+    pub bit: u16,
+    pub text: Text,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

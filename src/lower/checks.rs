@@ -229,6 +229,13 @@ impl Checker {
         s.get_ref().clone()
     }
 
+    /// A string the GSD writes as it is, at most `limit` characters (a
+    /// module's or parameter's name).
+    pub fn gsd_name(&mut self, s: &Spanned<String>, limit: usize, what: &str) -> String {
+        self.check_gsd(s.get_ref(), s.span(), limit, what, GsdForm::Only);
+        s.get_ref().clone()
+    }
+
     /// A text a GSD shows in a comment (a choice's reason): any length, but
     /// 7-bit printable ASCII when the description has a GSD.
     pub fn gsd_comment(&mut self, s: &str, span: Range<usize>, what: &str) {

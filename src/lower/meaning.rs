@@ -31,7 +31,7 @@ fn unmapped_words(
     let ppo_words = profibus
         .into_iter()
         .flat_map(|p| &p.modules)
-        .map(|m| m.layout.pzd_words);
+        .filter_map(|m| Some(m.layout?.pzd_words));
     let module_words = profinet
         .into_iter()
         .flat_map(|p| &p.modules)

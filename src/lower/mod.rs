@@ -5,6 +5,8 @@
 //! documented in `docs/rules.md`.
 
 mod checks;
+mod dp_modules;
+mod dp_params;
 mod choices;
 mod gateway;
 mod mappings;
@@ -138,7 +140,7 @@ fn safe_file_name(name: &str) -> String {
 }
 
 /// E004 for a key only a gateway's description may leave out (`[telegram]`,
-/// `ppo_types`), said as the TOML stage says any other missing key: alone,
+/// `ppo_types`, which `[[profibus.modules]]` may replace), said as the TOML stage says any other missing key: alone,
 /// at the table that lacks it.
 fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
     if desc.gateway.is_some() {
@@ -152,7 +154,8 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
         ("telegram", 0..0)
     } else {
         let profibus = desc.profibus.as_ref()?;
-        if profibus.get_ref().ppo_types.is_some() {
+        let p = profibus.get_ref();
+        if p.ppo_types.is_some() || p.modules.is_some() {
             return None;
         }
         ("ppo_types", first_line(profibus.span()))

@@ -9,8 +9,9 @@ use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::{
-    Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
-    PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
+    Baud, Diagnosis, DiagnosisArea, DiagnosisBit, DpModule, Dpv1, Dpv1Class2, Features,
+    LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue, Profibus, UserPrm,
+    STANDARD_DIAG_BYTES,
 };
 use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
@@ -47,7 +48,11 @@ pub fn lower(
         Some(r) => cx.gsd_number(r, "GSD_Revision", "gsd_revision")?,
         None => DEFAULT_GSD_REVISION,
     };
-    let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
+    let constant = super::dp_params::constant(p.user_prm.as_ref());
+    let dpv1 = p
+        .dpv1
+        .as_ref()
+        .and_then(|d| lower_dpv1(cx, d, constant.as_ref()));
     if let (Some(d), Some(revision)) = (&dpv1, &p.gsd_revision) {
         if d.ident_maintenance && gsd_revision < IM_GSD_REVISION {
             cx.push(
@@ -66,7 +71,13 @@ pub fn lower(
             );
         }
     }
-    let user_prm = user_prm(cx, dpv1.as_ref(), mappings, set_spans, gateway);
+    let user_prm = user_prm(
+        cx,
+        p,
+        (dpv1.as_ref(), constant),
+        (mappings, set_spans),
+        gateway,
+    );
     let ident = p.ident_number.get_ref();
     if ident.placeholder {
         let value = format!("0x{:04X}", ident.value.get_ref());
@@ -83,16 +94,13 @@ pub fn lower(
         );
     }
     let modules = modules(cx, p, telegram);
-    let max_len = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
-    // A gateway's modules are plugged together up to its limits.
-    let (max_input_len, max_output_len) = gateway.map_or((max_len, max_len), |g| {
-        (g.gateway.max_input_len, g.gateway.max_output_len)
-    });
     let diagnosis = p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d));
     let device_diag_len = diagnosis.as_ref().map(|d| d.length).or_else(|| {
         let d = gateway?.gateway.diagnosis.as_ref()?;
         Some(d.max_len)
     });
+    let limits = limits(cx, p, &modules, gateway);
+    let features = features(cx, p, gsd_revision);
     Some(Profibus {
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
@@ -103,11 +111,13 @@ pub fn lower(
             .as_ref()
             .map(|i| cx.gsd_string(i, "Implementation_Type", "implementation_type")),
         modules,
-        max_input_len,
-        max_output_len,
-        max_data_len: max_input_len + max_output_len,
-        // A gateway's modules are plugged together; else one module.
-        max_module: gateway.map_or(1, |g| g.gateway.max_modules),
+        max_input_len: limits.input,
+        max_output_len: limits.output,
+        max_data_len: limits.data,
+        max_module: limits.module,
+        modular_station: limits.modular,
+        limits_written: limits.written,
+        features,
         baud_rates: baud_rates(cx, &p.baud_rates),
         min_slave_interval: cx.gsd_number(
             &p.min_slave_interval,
@@ -124,6 +134,136 @@ pub fn lower(
         bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
         diagnosis,
     })
+}
+
+/// Max_Module and the data lengths: what the modules need, or what the
+/// description states, never less (E174); a gateway's, its limits.
+struct Limits {
+    module: u8,
+    input: u16,
+    output: u16,
+    data: u16,
+    modular: bool,
+    written: LimitsWritten,
+}
+
+fn limits(
+    cx: &mut Checker,
+    p: &raw::Profibus,
+    modules: &[DpModule],
+    gateway: Option<&gateway::Lowered>,
+) -> Limits {
+    let most = |f: fn(&DpModule) -> u16| modules.iter().map(f).max().unwrap_or(0);
+    let (input, output) = gateway.map_or_else(
+        || (most(|m| m.input_len), most(|m| m.output_len)),
+        |g| (g.gateway.max_input_len, g.gateway.max_output_len),
+    );
+    let data = most(|m| m.input_len + m.output_len);
+    let module = gateway.map_or(1, |g| g.gateway.max_modules);
+    let modular = p.modular_station.as_ref().is_none_or(|m| *m.get_ref());
+    if let (false, Some(m)) = (modular, &p.modular_station) {
+        if modules.len() != 1 {
+            cx.push(
+                Diagnostic::error("E173", format!("a compact station has one module; this one has {}", modules.len()))
+                    .at(m.span())
+                    .label("modular_station = false")
+                    .help("a compact station (Modular_Station = 0) is its one module: give one, or make the station modular"),
+            );
+        }
+    }
+    let mut stated = |v: &Option<Spanned<u8>>, derived: u16, keyword: &str| -> (u16, bool) {
+        let Some(v) = v else {
+            return (derived, false);
+        };
+        let value = u16::from(*v.get_ref());
+        if value < derived {
+            cx.push(
+                Diagnostic::error("E174", format!("{keyword} = {value} is less than the modules need ({derived})"))
+                    .at(v.span())
+                    .label("too small")
+                    .help(format!("state at least {derived}, or leave it out: gsdc writes what the modules need")),
+            );
+        }
+        let (min, max) = crate::gsd::keyword_range(keyword);
+        cx.in_range::<u16>(i64::from(value), min, max, v.span(), keyword);
+        (value.max(derived), true)
+    };
+    let (input, input_stated) = stated(&p.max_input_len, input, "Max_Input_Len");
+    let (output, output_stated) = stated(&p.max_output_len, output, "Max_Output_Len");
+    let (module, module_stated) = stated(&p.max_module, module.into(), "Max_Module");
+    let (data, data_stated) = match &p.max_data_len {
+        Some(v) => {
+            let value = *v.get_ref();
+            if value < data {
+                cx.push(
+                    Diagnostic::error("E174", format!("Max_Data_Len = {value} is less than a module needs ({data})"))
+                        .at(v.span())
+                        .label("too small")
+                        .help(format!("state at least {data}, or leave it out: gsdc writes what the modules need")),
+                );
+            }
+            let (min, max) = crate::gsd::keyword_range("Max_Data_Len");
+            cx.in_range::<u16>(i64::from(value), min, max, v.span(), "Max_Data_Len");
+            (value.max(data), true)
+        }
+        None => (input + output, false),
+    };
+    Limits {
+        module: u8::try_from(module).unwrap_or(u8::MAX),
+        input,
+        output,
+        data,
+        modular,
+        written: LimitsWritten {
+            max_module: modular || module_stated,
+            max_input_len: modular || input_stated,
+            max_output_len: modular || output_stated,
+            max_data_len: modular || data_stated,
+        },
+    }
+}
+
+/// The DP keywords a description may state, each within its keyword's
+/// range and no newer than the GSD's revision (E172).
+fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
+    let mut flag = |v: &Option<Spanned<bool>>, keyword: &str| {
+        let v = v.as_ref()?;
+        since_revision(cx, keyword, v.span(), gsd_revision);
+        Some(*v.get_ref())
+    };
+    let fail_safe = flag(&p.fail_safe, "Fail_Safe");
+    let set_slave_address = flag(&p.set_slave_address, "Set_Slave_Add_supp");
+    let redundancy = flag(&p.redundancy, "Redundancy");
+    let wd_base_1ms = flag(&p.wd_base_1ms, "WD_Base_1ms_supp");
+    let publisher = flag(&p.publisher, "Publisher_supp");
+    let mut number = |v: &Option<Spanned<u8>>, keyword: &str| {
+        let v = v.as_ref()?;
+        since_revision(cx, keyword, v.span(), gsd_revision);
+        cx.gsd_number(v, keyword, keyword)
+    };
+    Features {
+        fail_safe,
+        set_slave_address,
+        redundancy,
+        repeater_ctrl_sig: number(&p.repeater_ctrl_sig, "Repeater_Ctrl_Sig"),
+        pins_24v: number(&p.pins_24v, "24V_Pins"),
+        wd_base_1ms,
+        publisher,
+        modul_offset: number(&p.modul_offset, "Modul_Offset"),
+    }
+}
+
+/// E172: a keyword the GSD's revision does not have yet.
+fn since_revision(cx: &mut Checker, keyword: &str, span: Range<usize>, gsd_revision: u8) {
+    let since = crate::gsd::schema::keyword(keyword).revision;
+    if i64::from(gsd_revision) < since {
+        cx.push(
+            Diagnostic::error("E172", format!("{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"))
+                .at(span)
+                .label(format!("needs revision {since}"))
+                .help(format!("set gsd_revision = {since} or later, or leave this out")),
+        );
+    }
 }
 
 /// `MD810DP` of `MD810DP.GSD`: the GSD's bitmap takes its name (8.3, so at
@@ -155,7 +295,7 @@ fn file_name(cx: &mut Checker, name: &Spanned<String>) -> String {
     text.clone()
 }
 
-fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoModule> {
+fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<DpModule> {
     let ppo5_pzd_words = match &p.ppo5_pzd_words {
         Some(w) => cx
             .spanned_in_range(w, 1, 16, "ppo5_pzd_words")
@@ -164,7 +304,12 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
     };
     if let Some(words) = &p.ppo5_pzd_words {
         let ppo5 = p.ppo_types.as_ref().map(Spanned::get_ref);
-        if !ppo5.is_some_and(|types| types.iter().any(|t| t.get_ref() == "PPO5")) {
+        let in_modules = p.modules.as_ref().is_some_and(|m| {
+            m.get_ref()
+                .iter()
+                .any(|m| m.ppo.as_ref().is_some_and(|t| t.get_ref() == "PPO5"))
+        });
+        if !in_modules && !ppo5.is_some_and(|types| types.iter().any(|t| t.get_ref() == "PPO5")) {
             cx.push(
                 Diagnostic::error("E002", "ppo5_pzd_words without PPO5 in ppo_types")
                     .at(words.span())
@@ -172,6 +317,17 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
                     .help("ppo5_pzd_words gives PPO5's PZD words: add \"PPO5\" to ppo_types, or remove it"),
             );
         }
+    }
+    if let Some(modules) = &p.modules {
+        if let Some(types) = &p.ppo_types {
+            cx.push(
+                Diagnostic::error("E170", "both ppo_types and profibus.modules")
+                    .at(types.span())
+                    .label("remove this or [[profibus.modules]]")
+                    .help("the modules are the PPO types gsdc lays out, or the modules [[profibus.modules]] gives (each may be a PPO type: `ppo = \"PPO1\"`)"),
+            );
+        }
+        return super::dp_modules::lower(cx, modules, ppo5_pzd_words, telegram);
     }
     // Without a gateway, lowering refused a description without them.
     let Some(ppo_types) = &p.ppo_types else {
@@ -192,7 +348,7 @@ fn modules(cx: &mut Checker, p: &raw::Profibus, telegram: &Telegram) -> Vec<PpoM
         .filter_map(|name| {
             let module = ppo_module(cx, name, ppo5_pzd_words, telegram)?;
             if !seen.insert(module.ppo) {
-                cx.duplicate(format!("PPO{}", module.ppo), name.span());
+                cx.duplicate(name.get_ref().clone(), name.span());
                 return None;
             }
             Some(module)
@@ -205,7 +361,7 @@ fn ppo_module(
     name: &Spanned<String>,
     ppo5_pzd_words: u8,
     telegram: &Telegram,
-) -> Option<PpoModule> {
+) -> Option<DpModule> {
     let written = name.get_ref().as_str();
     let number = (1..).zip(PPO_NAMES).find(|(_, n)| *n == written);
     let Some((ppo, layout)) = number.and_then(|(n, _)| Some((n, ppo_layout(n, ppo5_pzd_words)?)))
@@ -252,11 +408,15 @@ fn ppo_module(
         );
     }
     let pkw = if layout.pkw { "4 PKW + " } else { "" };
-    Some(PpoModule {
-        ppo,
+    Some(DpModule {
+        ppo: Some(ppo),
         name: format!("PPO{ppo}: {pkw}{} PZD", layout.pzd_words),
-        layout,
+        reference: Some(ppo.into()),
+        info: None,
+        layout: Some(layout),
         config: config_bytes(layout),
+        input_len: layout.bytes(),
+        output_len: layout.bytes(),
         ident: Ident::of(&[&format!("ppo{ppo}")]),
     })
 }
@@ -323,7 +483,11 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
 
 /// The DPV1 class 1 channel; what the description leaves out is gsdc's
 /// default, said (W104) where the description would state it.
-fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
+fn lower_dpv1(
+    cx: &mut Checker,
+    d: &Spanned<raw::Dpv1>,
+    constant: Option<&(Vec<u8>, Range<usize>)>,
+) -> Option<Dpv1> {
     let near = d.span();
     let d = d.get_ref();
     let c1_max_data_len = match &d.c1_max_data_len {
@@ -348,9 +512,25 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
             DEFAULT_C1_RESPONSE_TIMEOUT
         }
     };
-    let status_bytes = match &d.status_bytes {
-        Some(bytes) => bytes.get_ref().0,
-        None => {
+    let status_bytes = match (&d.status_bytes, constant) {
+        (Some(bytes), Some(_)) => {
+            cx.duplicate("the DPV1 status bytes (status_bytes and user_prm.constant)".into(), bytes.span());
+            bytes.get_ref().0
+        }
+        (Some(bytes), None) => bytes.get_ref().0,
+        (None, Some((bytes, span))) => match bytes.get(..3) {
+            Some(&[a, b, c]) => [a, b, c],
+            _ => {
+                cx.push(
+                    Diagnostic::error("E101", "user_prm.constant is shorter than the DPV1 status bytes")
+                        .at(span.clone())
+                        .label("fewer than 3 bytes")
+                        .help("a DPV1 slave's User_Prm_Data starts with DPV1_Status_1..3: give them first"),
+                );
+                [0; 3]
+            }
+        },
+        (None, None) => {
             cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near.clone());
             [0; 3]
         }
@@ -367,6 +547,8 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
         status_bytes,
         c2,
         ident_maintenance: d.ident_maintenance == Some(true),
+        data_types: d.data_types.as_ref().map(|v| *v.get_ref()),
+        check_cfg_mode: d.check_cfg_mode.as_ref().map(|v| *v.get_ref()),
     })
 }
 
@@ -442,22 +624,45 @@ fn max_user_prm_len() -> usize {
 /// numbered from 1 in the same order.
 fn user_prm(
     cx: &mut Checker,
-    dpv1: Option<&Dpv1>,
-    mappings: &Mappings,
-    set_spans: &SetSpans,
+    p: &raw::Profibus,
+    (dpv1, stated): (Option<&Dpv1>, Option<(Vec<u8>, Range<usize>)>),
+    (mappings, set_spans): (&Mappings, &SetSpans),
     gateway: Option<&gateway::Lowered>,
 ) -> UserPrm {
-    let constant = dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec());
-    let texts: Vec<PrmText> = mappings
+    let constant = match stated {
+        Some((bytes, _)) => bytes,
+        None => dpv1.map_or_else(Vec::new, |d| d.status_bytes.to_vec()),
+    };
+    let mut ids = 1..=u16::MAX;
+    let mut text_ids = 1..=u16::MAX;
+    let card = super::dp_params::lower(cx, &p.parameters, &mut ids, &mut text_ids);
+    let mut texts: Vec<PrmText> = card
+        .params
+        .iter()
+        .filter_map(|param| match (param.text, param.value) {
+            (Some(id), PrmValue::Card(index)) => Some(PrmText {
+                id,
+                of: PrmTextOf::Card(index),
+            }),
+            _ => None,
+        })
+        .collect();
+    let sets: Vec<PrmText> = mappings
         .sets()
         .filter(|s| s.allowed.choices().is_some() && in_user_prm(s))
-        .zip(1..=u16::MAX)
-        .map(|(s, id)| PrmText { id, set: s.key })
+        .zip(&mut text_ids)
+        .map(|(s, id)| PrmText {
+            id,
+            of: PrmTextOf::Set(s.key),
+        })
         .collect();
-    let text_of = |set| texts.iter().find(|t| t.set == set).map(|t| t.id);
+    let text_of = |set| {
+        sets.iter()
+            .find(|t| t.of == PrmTextOf::Set(set))
+            .map(|t| t.id)
+    };
     let entry_bytes = usize::from(PrmType::Unsigned16.bytes());
-    let mut end = constant.len();
-    let mut ids = 1..=u16::MAX;
+    let mut end = constant.len().max(card.end);
     let mut overflowing = None;
     let blocks = mappings
         .groups
@@ -508,13 +713,47 @@ fn user_prm(
         Some(g) => gateway_params(cx, g, end, &mut ids),
         None => (Vec::new(), end),
     };
+    texts.extend(sets);
+    if end > max_user_prm_len() && card.end == end {
+        cx.push(
+            Diagnostic::error(
+                "E116",
+                format!(
+                    "the parameter telegram would be {end} bytes; GSD allows {}",
+                    max_user_prm_len()
+                ),
+            )
+            .at_opt(p.parameters.last().map(|p| p.offset.span()))
+            .label("a parameter runs past the limit")
+            .help("User_Prm_Data holds at most 237 bytes"),
+        );
+    }
     UserPrm {
         constant,
+        card: card.params,
+        card_params: card.facts,
         blocks,
         gateway,
         texts,
         len: saturate(end),
+        max_len: max_length(cx, p, end),
     }
+}
+
+/// `[profibus.user_prm] max_length`: Max_User_Prm_Data_Len when it says
+/// more than the telegram's `len` bytes, never less (E174).
+fn max_length(cx: &mut Checker, p: &raw::Profibus, len: usize) -> Option<u8> {
+    let max = p.user_prm.as_ref()?.get_ref().max_length.as_ref()?;
+    let value: u8 = cx.gsd_number(max, "Max_User_Prm_Data_Len", "max_length")?;
+    if usize::from(value) < len {
+        cx.push(
+            Diagnostic::error("E174", format!("max_length = {value} is less than the parameter telegram's {len} bytes"))
+                .at(max.span())
+                .label("too small")
+                .help(format!("state at least {len}, or leave it out: gsdc writes the telegram's length")),
+        );
+    }
+    Some(value)
 }
 
 /// Whether User_Prm_Data carries a set's entries: all but a setting the
@@ -581,7 +820,35 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
         .collect();
     super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
-    Some(Diagnosis { length, areas })
+    let bits = raw
+        .bits
+        .iter()
+        .filter_map(|b| diagnosis_bit(cx, b, bits))
+        .collect();
+    Some(Diagnosis {
+        length,
+        areas,
+        bits,
+    })
+}
+
+/// `Unit_Diag_Bit`: a bit within the block, its text for the GSD.
+fn diagnosis_bit(cx: &mut Checker, b: &raw::dp::DiagnosisBit, bits: i64) -> Option<DiagnosisBit> {
+    let bit = *b.bit.get_ref();
+    if i64::from(bit) >= bits {
+        cx.push(
+            Diagnostic::error("E115", format!("bit {bit} is not within the diagnosis"))
+                .at(b.bit.span())
+                .label(format!("the device bytes hold bits 0..{bits}"))
+                .help("bit 0 is the first byte after the header; raise the length or move the bit"),
+        );
+        return None;
+    }
+    let limit = crate::gsd::keyword_max_len("Unit_Diag_Bit");
+    Some(DiagnosisBit {
+        bit,
+        text: cx.text(&b.text, Some(limit), "diagnosis text"),
+    })
 }
 
 /// An area named after its bits: `BITS_8_15` and `Bits8To15`.

@@ -10,15 +10,16 @@ use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
 use crate::ir::profinet::ParameterRecord;
-use crate::ir::{EntryKey, Ir, MappingKind};
+use crate::ir::{Allowed, EntryKey, Ir, MappingKind};
 use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    let gateway_params = ir
+    // Parameters that map nothing: a gateway's, the card's own.
+    let other_params = ir
         .profibus
         .as_ref()
-        .is_some_and(|p| !p.user_prm.gateway.is_empty());
-    if ir.mappings.groups.is_empty() && !gateway_params {
+        .is_some_and(|p| !p.user_prm.gateway.is_empty() || !p.user_prm.card.is_empty());
+    if ir.mappings.groups.is_empty() && !other_params {
         return;
     }
     doc.section(
@@ -67,7 +68,8 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     let prm = &p.user_prm;
     doc.subsection("user-prm", lang.t(w::USER_PRM_HEADING));
     let intro = w::user_prm_intro(lang, prm.len);
-    let types = if prm.gateway.is_empty() {
+    // The gateway's sentence says every type, the card's own among them.
+    let types = if prm.gateway.is_empty() && prm.card.is_empty() {
         lang.t(w::USER_PRM_TYPES)
     } else {
         lang.t(w::USER_PRM_GATEWAY_TYPES)
@@ -78,7 +80,7 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     let mut rows: Vec<Vec<Cell>> = Vec::new();
     if !prm.constant.is_empty() {
         let last = prm.constant.len() as u16 - 1;
-        let name = if p.dpv1.is_some() {
+        let name = if p.dpv1.is_some_and(|d| d.status_bytes[..] == prm.constant[..]) {
             lang.t(w::DPV1_STATUS)
         } else {
             lang.t(w::CONSTANT)
@@ -132,6 +134,11 @@ fn param_row(ir: &Ir, lang: Lang, param: &PrmParam) -> Vec<Cell> {
             w::range(lang, min, max),
             text("—"),
         ),
+        PrmHolds::Card(p) => (
+            card_value(lang, &p.allowed, facts.default),
+            card_allowed(lang, &p.allowed),
+            text("—"),
+        ),
     };
     vec![
         text(bytes(lang, param.offset, last)),
@@ -141,6 +148,30 @@ fn param_row(ir: &Ir, lang: Lang, param: &PrmParam) -> Vec<Cell> {
         text(range),
         drive,
     ]
+}
+
+/// A card parameter's value, with its choice's text when it has one.
+fn card_value(lang: Lang, allowed: &Allowed, value: u16) -> String {
+    allowed
+        .choices()
+        .and_then(|set| set.choices.iter().find(|c| c.value == i64::from(value)))
+        .map_or_else(
+            || value.to_string(),
+            |c| format!("{value}: {}", lang.text(&c.text)),
+        )
+}
+
+/// A card parameter's range, or its choices one by one.
+fn card_allowed(lang: Lang, allowed: &Allowed) -> String {
+    match allowed {
+        Allowed::Range { min, max } => w::range(lang, min, max),
+        Allowed::Choices(set) => set
+            .choices
+            .iter()
+            .map(|c| format!("{}: {}", c.value, lang.text(&c.text)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    }
 }
 
 fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -272,6 +303,12 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
             .iter()
             .filter(|a| a.first_bit < bit_of_byte + 8 && a.last_bit >= bit_of_byte)
             .map(|a| format!("Unit_Diag_Area {}", bits(lang, a.first_bit, a.last_bit)))
+            .chain(
+                d.bits
+                    .iter()
+                    .filter(|b| (bit_of_byte..bit_of_byte + 8).contains(&b.bit))
+                    .map(|b| format!("Unit_Diag_Bit({}): {}", b.bit, lang.text(&b.text))),
+            )
             .collect();
         let content = if areas.is_empty() {
             lang.t(w::DEVICE_RELATED_UNDESCRIBED).to_string()

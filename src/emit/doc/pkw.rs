@@ -15,7 +15,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         .profibus
         .iter()
         .flat_map(|p| &p.modules)
-        .any(|m| m.layout.pkw)
+        .any(|m| m.layout.is_some_and(|l| l.pkw))
         || ir
             .profinet
             .iter()

@@ -149,16 +149,16 @@ fn dp_device(ir: &Ir, p: &Profibus) -> Record {
     )
 }
 
-/// Every `Module` of the GSD: the PPO types, or a gateway's word modules.
+/// Every `Module` of the GSD: the PPO types or the vendor's modules, or a
+/// gateway's word modules.
 fn dp_modules(ir: &Ir, p: &Profibus) -> Vec<Value> {
     let ppos = p.modules.iter().map(|m| {
-        let bytes = usize::from(m.layout.bytes());
         dp_module(
             &m.name,
             &m.config,
-            (bytes, bytes),
-            m.layout.pkw,
-            m.layout.pzd_words,
+            (m.input_len.into(), m.output_len.into()),
+            m.layout.is_some_and(|l| l.pkw),
+            m.layout.map_or(0, |l| l.pzd_words),
         )
     });
     let words = ir.gateway.iter().flat_map(|g| &g.modules).map(|m| {
@@ -237,8 +237,12 @@ fn user_prm(ir: &Ir, p: &Profibus) -> Record {
 
 /// The range of a parameter, and its values when the GSD lists them.
 fn allowed(holds: &PrmHolds) -> (u16, u16, Vec<Value>) {
-    match holds {
-        PrmHolds::Mapping { set, .. } => match &set.allowed {
+    let values = match holds {
+        PrmHolds::Mapping { set, .. } => &set.allowed,
+        PrmHolds::Card(p) => &p.allowed,
+        PrmHolds::Number { min, max } => return (*min, *max, Vec::new()),
+    };
+    match values {
             Allowed::Range { min, max } => (*min, *max, Vec::new()),
             Allowed::Choices(values) => {
                 // Lowering keeps a mapping's values within Unsigned16.
@@ -251,8 +255,6 @@ fn allowed(holds: &PrmHolds) -> (u16, u16, Vec<Value>) {
                 let (min, max) = (sorted[0], sorted[sorted.len() - 1]);
                 (min, max, sorted.into_iter().map(number).collect())
             }
-        },
-        PrmHolds::Number { min, max } => (*min, *max, Vec::new()),
     }
 }
 

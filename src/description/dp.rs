@@ -1,0 +1,107 @@
+//! The parts of `[profibus]` that say what a vendor's GSD says in its own
+//! way: modules of its own layout, User_Prm_Data parameters at their bytes
+//! and bits, the fixed bytes under them, diagnosis bits. `gsdc import`
+//! writes them for a card whose GSD exists already; a new card may use them
+//! too.
+
+use super::{BitRange, Choice, Exactly, Text};
+use serde::Deserialize;
+use toml::Spanned;
+
+/// `[[profibus.modules]]`: a module as the vendor lays it out, its config
+/// identifiers derived from what its data is (never typed as bytes).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DpModule {
+    /// The GSD's `Module = "name"`, as the vendor writes it.
+    pub name: Spanned<String>,
+    /// The module reference number (GSD revision 3 and later), written on
+    /// the line after the module's.
+    pub reference: Option<Spanned<u16>>,
+    /// The module's `Info_Text`.
+    pub info: Option<Spanned<String>>,
+    /// A PPO type's layout and config bytes (`PPO1`: `0xF3,0xF1`).
+    pub ppo: Option<Spanned<String>>,
+    /// Its config identifiers in order, each what one identifier carries.
+    pub data: Option<Spanned<Vec<Spanned<Identifier>>>>,
+}
+
+/// One config identifier: the PKW channel, words or bytes each way or one
+/// way, or an empty place (`{}`, 0x00). `*_out` and `*_in` together, or
+/// `vendor`, make the special format (IEC 61158-6-3), whose length bytes
+/// say each way on its own.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Identifier {
+    /// The PKW channel: 4 consistent words each way (`0xF3`).
+    #[serde(default)]
+    pub pkw: bool,
+    /// Words in and out, as many each way.
+    pub words: Option<Spanned<u8>>,
+    /// Words from the master (outputs).
+    pub words_out: Option<Spanned<u8>>,
+    /// Words to the master (inputs).
+    pub words_in: Option<Spanned<u8>>,
+    pub bytes: Option<Spanned<u8>>,
+    pub bytes_out: Option<Spanned<u8>>,
+    pub bytes_in: Option<Spanned<u8>>,
+    /// Consistent over the whole length (bit 7); true when unsaid.
+    pub consistent: Option<Spanned<bool>>,
+    /// The manufacturer-specific bytes of a special-format identifier.
+    pub vendor: Option<Spanned<Vec<Spanned<u8>>>>,
+}
+
+/// `[profibus.user_prm]`: the bytes of User_Prm_Data no parameter sets,
+/// and its stated most length.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UserPrm {
+    /// The bytes from byte 0 (the DPV1 status bytes first, for a DPV1
+    /// slave): `Ext_User_Prm_Data_Const(0)`. Parameters may lie over them.
+    #[serde(default)]
+    pub constant: Vec<Spanned<u8>>,
+    /// `Max_User_Prm_Data_Len`, when it says more than the parameter
+    /// telegram's length.
+    pub max_length: Option<Spanned<u8>>,
+}
+
+/// `[[profibus.parameters]]`: a User_Prm_Data parameter of the card itself,
+/// at the byte (and bits) its GSD puts it: an `ExtUserPrmData` and its
+/// `Ext_User_Prm_Data_Ref`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Parameter {
+    pub name: Spanned<String>,
+    /// Its byte in User_Prm_Data.
+    pub offset: Spanned<u8>,
+    /// `Unsigned8` or `Unsigned16` (the default); not with `bits`.
+    #[serde(rename = "type")]
+    pub data_type: Option<Spanned<PrmType>>,
+    /// Bits of the byte at `offset` (`Bit(n)`: one, `BitArea(first-last)`).
+    pub bits: Option<Spanned<BitRange>>,
+    pub default: Spanned<i64>,
+    /// What it may hold, both ends included; its type's values when unsaid.
+    pub range: Option<Spanned<Exactly<Spanned<i64>, 2>>>,
+    /// Or one of these, each with the text the engineering tool shows.
+    pub choices: Option<Spanned<Vec<Choice>>>,
+    /// False: the tool shows the value and lets nobody change it.
+    pub changeable: Option<Spanned<bool>>,
+    /// False: the tool does not show it.
+    pub visible: Option<Spanned<bool>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum PrmType {
+    Unsigned8,
+    Unsigned16,
+}
+
+/// `Unit_Diag_Bit(n) = "text"`: a bit of the device-related block with the
+/// text the tool shows while it is set.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosisBit {
+    /// Counted from the first byte after the header, as the areas' bits.
+    pub bit: Spanned<u16>,
+    pub text: Spanned<Text>,
+}
