@@ -23,6 +23,7 @@ mod file_kind;
 pub mod gsd;
 pub mod gsdml;
 mod i18n;
+pub mod import;
 pub mod ir;
 mod latin1;
 mod load;

@@ -205,5 +205,8 @@ pub const RULES: &[Rule] = &[
     rule("E501", "a GSDML changed under its released file name"),
     rule("E502", "a GSD changed under its released Revision"),
     rule("W503", "a breaking change under the released ident number"),
+    rule("W600", "not imported: no place in the description"),
+    rule("E601", "the import builds another device"),
+    rule("E602", "a file gsdc cannot import"),
     rule("E900", "generated file breaks a rule"),
 ];

@@ -5,6 +5,7 @@ mod check;
 mod decode;
 mod diff;
 mod doc;
+mod import;
 mod json;
 
 use clap::{Parser, Subcommand};
@@ -40,6 +41,9 @@ enum Command {
     /// Write the datasheet of each description: `DIR/<stem>.html` (one page, no script) and `DIR/<stem>.md`.
     #[command(after_help = doc::EXAMPLES)]
     Doc(doc::Args),
+    /// Write a description from a card's GSD file; its build must be the same device.
+    #[command(after_help = import::EXAMPLES)]
+    Import(import::Args),
 }
 
 /// What a run ends with, as the exit code says it.
@@ -87,6 +91,7 @@ fn run(cli: Cli) -> Status {
         Command::Decode(args) => decode::run(&args),
         Command::Diff(args) => diff::run(&args),
         Command::Doc(args) => doc::run(&args),
+        Command::Import(args) => import::run(&args),
     }
 }
 

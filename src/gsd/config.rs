@@ -93,10 +93,7 @@ fn add_special(lengths: &mut IoLengths, bytes: &[u8], at: usize) -> Result<usize
 #[non_exhaustive]
 pub enum Identifier {
     /// One byte of the general format.
-    General {
-        direction: Direction,
-        data: Length,
-    },
+    General { direction: Direction, data: Length },
     /// The special format: the length bytes of each way it has, then the
     /// manufacturer-specific bytes. With neither way nor bytes, `0x00`: an
     /// empty place.
@@ -142,11 +139,6 @@ impl Length {
             count: (byte & mask) + 1,
             consistent: byte & 0x80 != 0,
         }
-    }
-
-    /// Bytes of data.
-    pub fn bytes(self) -> u32 {
-        u32::from(self.count) * if self.words { 2 } else { 1 }
     }
 }
 
@@ -300,7 +292,10 @@ mod tests {
                 vendor: vec![0xFD, 0x01, 0x61]
             }
         );
-        assert_eq!(identifiers(&[0xC1, 0x0F]), Err(CfgError { at: 0, needs: 3 }));
+        assert_eq!(
+            identifiers(&[0xC1, 0x0F]),
+            Err(CfgError { at: 0, needs: 3 })
+        );
     }
 
     #[test]

@@ -87,20 +87,29 @@ fn module(
             return None;
         }
     };
-    let pkw = layout.is_some_and(|l| l.pkw) || m.data.as_ref().is_some_and(|d| d.get_ref().iter().any(|i| i.get_ref().pkw));
+    let pkw = layout.is_some_and(|l| l.pkw)
+        || m.data
+            .as_ref()
+            .is_some_and(|d| d.get_ref().iter().any(|i| i.get_ref().pkw));
     if pkw && telegram.pkw == PkwKind::None {
         cx.push(
-            Diagnostic::error("E121", format!("module \"{name}\" carries a PKW channel, but the telegram has none"))
-                .at(m.name.span())
-                .label("has PKW")
-                .help("set telegram.pkw to the channel's kind, or drop the module's PKW"),
+            Diagnostic::error(
+                "E121",
+                format!("module \"{name}\" carries a PKW channel, but the telegram has none"),
+            )
+            .at(m.name.span())
+            .label("has PKW")
+            .help("set telegram.pkw to the channel's kind, or drop the module's PKW"),
         );
     }
     if let Some(l) = layout.filter(|l| l.pzd_words > telegram.pzd_words) {
         cx.push(
             Diagnostic::error(
                 "E113",
-                format!("module \"{name}\" has {} PZD words; the telegram has {}", l.pzd_words, telegram.pzd_words),
+                format!(
+                    "module \"{name}\" has {} PZD words; the telegram has {}",
+                    l.pzd_words, telegram.pzd_words
+                ),
             )
             .at(m.name.span())
             .label("longer than the telegram")
@@ -164,8 +173,16 @@ fn identifier(cx: &mut Checker, id: &Spanned<raw::Identifier>) -> Option<(Identi
         return wrong(cx, "more than one length for one way");
     }
     if i.pkw {
-        if !(both.is_empty() && output.is_empty() && input.is_empty() && i.vendor.is_none() && i.consistent.is_none()) {
-            return wrong(cx, "the PKW channel is 4 consistent words each way, nothing else");
+        if !(both.is_empty()
+            && output.is_empty()
+            && input.is_empty()
+            && i.vendor.is_none()
+            && i.consistent.is_none())
+        {
+            return wrong(
+                cx,
+                "the PKW channel is 4 consistent words each way, nothing else",
+            );
         }
         let data = Length {
             words: true,
@@ -212,7 +229,10 @@ fn identifier(cx: &mut Checker, id: &Spanned<raw::Identifier>) -> Option<(Identi
         return Some((Identifier::General { direction, data }, false));
     }
     if !both.is_empty() {
-        return wrong(cx, "the special format says each way on its own: words_out and words_in");
+        return wrong(
+            cx,
+            "the special format says each way on its own: words_out and words_in",
+        );
     }
     let vendor: Vec<u8> = i
         .vendor
@@ -220,7 +240,10 @@ fn identifier(cx: &mut Checker, id: &Spanned<raw::Identifier>) -> Option<(Identi
         .map(|v| v.get_ref().iter().map(|b| *b.get_ref()).collect())
         .unwrap_or_default();
     if vendor.len() > MAX_VENDOR_BYTES {
-        return wrong(cx, "a special identifier carries at most 14 manufacturer bytes");
+        return wrong(
+            cx,
+            "a special identifier carries at most 14 manufacturer bytes",
+        );
     }
     let output = match output.first() {
         Some(&d) => Some(length(cx, d, MAX_SPECIAL_COUNT)?),
@@ -276,7 +299,9 @@ fn layout(ids: &[(Identifier, bool)]) -> Option<Layout> {
             Direction::Input => inp += count,
         }
     }
-    let words = u8::try_from(out).ok().filter(|&w| out == inp && (1..=16).contains(&w))?;
+    let words = u8::try_from(out)
+        .ok()
+        .filter(|&w| out == inp && (1..=16).contains(&w))?;
     Some(Layout::new(pkw, words))
 }
 
@@ -309,8 +334,14 @@ mod tests {
         let out2 = (general(Direction::Output, 2), false);
         let in2 = (general(Direction::Input, 2), false);
         let in6 = (general(Direction::Input, 6), false);
-        assert_eq!(layout(&[empty.clone(), out2.clone(), in2.clone()]), Some(Layout::new(false, 2)));
-        assert_eq!(layout(&[pkw.clone(), out2.clone(), in2.clone()]), Some(Layout::new(true, 2)));
+        assert_eq!(
+            layout(&[empty.clone(), out2.clone(), in2.clone()]),
+            Some(Layout::new(false, 2))
+        );
+        assert_eq!(
+            layout(&[pkw.clone(), out2.clone(), in2.clone()]),
+            Some(Layout::new(true, 2))
+        );
         assert_eq!(layout(&[out2.clone(), in6]), None);
         assert_eq!(layout(&[out2.clone(), pkw.clone(), in2]), None);
         assert_eq!(layout(&[pkw]), None);

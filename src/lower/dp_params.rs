@@ -42,10 +42,18 @@ pub(super) fn lower(
             let at = offset + byte;
             if let Some((_, _, other)) = taken.iter().find(|(o, m, _)| *o == at && m & mask != 0) {
                 cx.push(
-                    Diagnostic::error("E114", format!("parameter \"{}\" overlaps another at byte {at}", p.name.get_ref()))
-                        .at(p.offset.span())
-                        .label("bits taken already")
-                        .help(format!("\"{other}\" takes some of its bits: two parameters cannot share a bit")),
+                    Diagnostic::error(
+                        "E114",
+                        format!(
+                            "parameter \"{}\" overlaps another at byte {at}",
+                            p.name.get_ref()
+                        ),
+                    )
+                    .at(p.offset.span())
+                    .label("bits taken already")
+                    .help(format!(
+                        "\"{other}\" takes some of its bits: two parameters cannot share a bit"
+                    )),
                 );
             }
             taken.push((at, *mask, p.name.get_ref().clone()));
@@ -113,10 +121,13 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
     let allowed = match (&p.range, &p.choices) {
         (Some(_), Some(choices)) => {
             cx.push(
-                Diagnostic::error("E119", format!("parameter \"{name}\" has both `range` and `choices`"))
-                    .at(choices.span())
-                    .label("choices given here")
-                    .help("a parameter takes a value within a range, or one of its choices"),
+                Diagnostic::error(
+                    "E119",
+                    format!("parameter \"{name}\" has both `range` and `choices`"),
+                )
+                .at(choices.span())
+                .label("choices given here")
+                .help("a parameter takes a value within a range, or one of its choices"),
             );
             return None;
         }
@@ -145,10 +156,13 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
     let default: u16 = cx.spanned_in_range(&p.default, 0, most, "the parameter's default")?;
     if !allowed.contains(i64::from(default)) {
         cx.push(
-            Diagnostic::error("E108", format!("default {default} is not among the values parameter \"{name}\" allows"))
-                .at(p.default.span())
-                .label("not allowed")
-                .help("pick a default within the range or among the choices"),
+            Diagnostic::error(
+                "E108",
+                format!("default {default} is not among the values parameter \"{name}\" allows"),
+            )
+            .at(p.default.span())
+            .label("not allowed")
+            .help("pick a default within the range or among the choices"),
         );
     }
     Some((
@@ -164,7 +178,9 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
 }
 
 /// `[profibus.user_prm] constant`, its span when given.
-pub(super) fn constant(user_prm: Option<&Spanned<raw::UserPrm>>) -> Option<(Vec<u8>, Range<usize>)> {
+pub(super) fn constant(
+    user_prm: Option<&Spanned<raw::UserPrm>>,
+) -> Option<(Vec<u8>, Range<usize>)> {
     let u = user_prm?;
     let bytes = &u.get_ref().constant;
     let span = bytes.first()?.span().start..bytes.last()?.span().end;

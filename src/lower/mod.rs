@@ -5,9 +5,9 @@
 //! documented in `docs/rules.md`.
 
 mod checks;
+mod choices;
 mod dp_modules;
 mod dp_params;
-mod choices;
 mod gateway;
 mod mappings;
 mod meaning;
@@ -20,6 +20,9 @@ use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 use checks::Checker;
+/// For `gsdc import`, which recognises PPO types by their config bytes.
+pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
+pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
 use toml::Spanned;
 
 /// Reads a file the description names (its symbol), relative to it: its

@@ -28,7 +28,7 @@ const IM_GSD_REVISION: u8 = 5;
 /// spelling (FIELDBUS-NOTES §1).
 const PPO_NAMES: [&str; 5] = ["PPO1", "PPO2", "PPO3", "PPO4", "PPO5"];
 /// PROFIdrive's PPO5 has 10 PZD words.
-const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
+pub(crate) const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
 const DEFAULT_C1_RESPONSE_TIMEOUT: u16 = 100;
 /// A Unit_Diag_Area spans at most 16 bits.
@@ -178,10 +178,15 @@ fn limits(
         let value = u16::from(*v.get_ref());
         if value < derived {
             cx.push(
-                Diagnostic::error("E174", format!("{keyword} = {value} is less than the modules need ({derived})"))
-                    .at(v.span())
-                    .label("too small")
-                    .help(format!("state at least {derived}, or leave it out: gsdc writes what the modules need")),
+                Diagnostic::error(
+                    "E174",
+                    format!("{keyword} = {value} is less than the modules need ({derived})"),
+                )
+                .at(v.span())
+                .label("too small")
+                .help(format!(
+                    "state at least {derived}, or leave it out: gsdc writes what the modules need"
+                )),
             );
         }
         let (min, max) = crate::gsd::keyword_range(keyword);
@@ -196,10 +201,15 @@ fn limits(
             let value = *v.get_ref();
             if value < data {
                 cx.push(
-                    Diagnostic::error("E174", format!("Max_Data_Len = {value} is less than a module needs ({data})"))
-                        .at(v.span())
-                        .label("too small")
-                        .help(format!("state at least {data}, or leave it out: gsdc writes what the modules need")),
+                    Diagnostic::error(
+                        "E174",
+                        format!("Max_Data_Len = {value} is less than a module needs ({data})"),
+                    )
+                    .at(v.span())
+                    .label("too small")
+                    .help(format!(
+                        "state at least {data}, or leave it out: gsdc writes what the modules need"
+                    )),
                 );
             }
             let (min, max) = crate::gsd::keyword_range("Max_Data_Len");
@@ -258,10 +268,17 @@ fn since_revision(cx: &mut Checker, keyword: &str, span: Range<usize>, gsd_revis
     let since = crate::gsd::schema::keyword(keyword).revision;
     if i64::from(gsd_revision) < since {
         cx.push(
-            Diagnostic::error("E172", format!("{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"))
-                .at(span)
-                .label(format!("needs revision {since}"))
-                .help(format!("set gsd_revision = {since} or later, or leave this out")),
+            Diagnostic::error(
+                "E172",
+                format!(
+                    "{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"
+                ),
+            )
+            .at(span)
+            .label(format!("needs revision {since}"))
+            .help(format!(
+                "set gsd_revision = {since} or later, or leave this out"
+            )),
         );
     }
 }
@@ -514,7 +531,10 @@ fn lower_dpv1(
     };
     let status_bytes = match (&d.status_bytes, constant) {
         (Some(bytes), Some(_)) => {
-            cx.duplicate("the DPV1 status bytes (status_bytes and user_prm.constant)".into(), bytes.span());
+            cx.duplicate(
+                "the DPV1 status bytes (status_bytes and user_prm.constant)".into(),
+                bytes.span(),
+            );
             bytes.get_ref().0
         }
         (Some(bytes), None) => bytes.get_ref().0,
@@ -747,10 +767,15 @@ fn max_length(cx: &mut Checker, p: &raw::Profibus, len: usize) -> Option<u8> {
     let value: u8 = cx.gsd_number(max, "Max_User_Prm_Data_Len", "max_length")?;
     if usize::from(value) < len {
         cx.push(
-            Diagnostic::error("E174", format!("max_length = {value} is less than the parameter telegram's {len} bytes"))
-                .at(max.span())
-                .label("too small")
-                .help(format!("state at least {len}, or leave it out: gsdc writes the telegram's length")),
+            Diagnostic::error(
+                "E174",
+                format!("max_length = {value} is less than the parameter telegram's {len} bytes"),
+            )
+            .at(max.span())
+            .label("too small")
+            .help(format!(
+                "state at least {len}, or leave it out: gsdc writes the telegram's length"
+            )),
         );
     }
     Some(value)

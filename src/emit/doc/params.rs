@@ -80,7 +80,10 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     let mut rows: Vec<Vec<Cell>> = Vec::new();
     if !prm.constant.is_empty() {
         let last = prm.constant.len() as u16 - 1;
-        let name = if p.dpv1.is_some_and(|d| d.status_bytes[..] == prm.constant[..]) {
+        let name = if p
+            .dpv1
+            .is_some_and(|d| d.status_bytes[..] == prm.constant[..])
+        {
             lang.t(w::DPV1_STATUS)
         } else {
             lang.t(w::CONSTANT)

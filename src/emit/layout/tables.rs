@@ -243,18 +243,18 @@ fn allowed(holds: &PrmHolds) -> (u16, u16, Vec<Value>) {
         PrmHolds::Number { min, max } => return (*min, *max, Vec::new()),
     };
     match values {
-            Allowed::Range { min, max } => (*min, *max, Vec::new()),
-            Allowed::Choices(values) => {
-                // Lowering keeps a mapping's values within Unsigned16.
-                let mut sorted: Vec<u16> = values
-                    .choices
-                    .iter()
-                    .filter_map(|c| u16::try_from(c.value).ok())
-                    .collect();
-                sorted.sort_unstable();
-                let (min, max) = (sorted[0], sorted[sorted.len() - 1]);
-                (min, max, sorted.into_iter().map(number).collect())
-            }
+        Allowed::Range { min, max } => (*min, *max, Vec::new()),
+        Allowed::Choices(values) => {
+            // Lowering keeps a mapping's values within Unsigned16.
+            let mut sorted: Vec<u16> = values
+                .choices
+                .iter()
+                .filter_map(|c| u16::try_from(c.value).ok())
+                .collect();
+            sorted.sort_unstable();
+            let (min, max) = (sorted[0], sorted[sorted.len() - 1]);
+            (min, max, sorted.into_iter().map(number).collect())
+        }
     }
 }
 

@@ -1,0 +1,644 @@
+//! A GSD file's device ([`DpDevice`]) written as a description: identity,
+//! timing, DP features, the modules by what their config identifiers carry
+//! (a PPO type's by its name), the card's User_Prm_Data parameters and
+//! constant bytes, DPV1 and diagnosis. Each keyword the description has no
+//! place for is a warning at its line (W600); whether leaving it out makes
+//! another device is the round trip's to judge (`super::round_trip`).
+
+use super::toml_out::{hex, list, quote, TomlOut};
+use super::Notes;
+use crate::device::dp::{DpDevice, DpModule, Keyword};
+use crate::device::{Allowed, Field, ParameterData, Value};
+use crate::gsd::config::{identifiers, Direction, Identifier, Length};
+use crate::gsd::Value as GsdValue;
+
+/// Keywords the description states, by their schema key.
+const IMPORTED: &[&str] = &[
+    "gsd_revision",
+    "vendor_name",
+    "model_name",
+    "revision",
+    "ident_number",
+    "hardware_release",
+    "software_release",
+    "ordernumber",
+    "info_text",
+    "implementation_type",
+    "<baud>_supp",
+    "maxtsdr_<baud>",
+    "auto_baud_supp",
+    "freeze_mode_supp",
+    "sync_mode_supp",
+    "set_slave_add_supp",
+    "fail_safe",
+    "redundancy",
+    "repeater_ctrl_sig",
+    "24v_pins",
+    "wd_base_1ms_supp",
+    "publisher_supp",
+    "min_slave_intervall",
+    "modular_station",
+    "modul_offset",
+    "max_module",
+    "max_input_len",
+    "max_output_len",
+    "max_data_len",
+    "slave_family",
+    "max_diag_data_len",
+    "max_user_prm_data_len",
+    "dpv1_slave",
+    "c1_read_write_supp",
+    "c1_max_data_len",
+    "c1_response_timeout",
+    "c2_read_write_supp",
+    "c2_max_data_len",
+    "c2_response_timeout",
+    "c2_max_count_channels",
+    "max_initiate_pdu_length",
+    "ident_maintenance_supp",
+    "dpv1_data_types",
+    "check_cfg_mode",
+];
+
+/// Keywords gsdc writes with one value only: the description need not say
+/// them when the file has that value.
+const FIXED: &[(&str, i64)] = &[("protocol_ident", 0), ("station_type", 0), ("fms_supp", 0)];
+
+/// The description of `device`, read from `file`; `None` when the file is
+/// not a drive's (no module is a telegram of PKW and PZD words).
+pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Option<String> {
+    let telegram = telegram(device);
+    let Some(pzd_words) = telegram.pzd_words else {
+        notes.refuse(
+            "no module of this GSD is a drive's telegram (PZD words each way, after a PKW channel or not): the description format describes drive option cards",
+        );
+        return None;
+    };
+    for k in &device.keywords {
+        let fixed = FIXED.iter().find(|(key, _)| *key == k.key);
+        let said = IMPORTED.contains(&k.key.as_str())
+            || fixed.is_some_and(|(_, v)| k.value.as_number() == Some(*v));
+        if !said {
+            notes.unsaid(&k.name, &k.place, "the description has no key for it");
+        }
+    }
+    for s in &device.slots {
+        notes.unsaid(
+            &format!("Slot({})", s.number),
+            &s.place,
+            "the description has no SlotDefinition",
+        );
+    }
+    let mut out = TomlOut::default();
+    out.comment(&format!(
+        "Imported by gsdc import from {file}. Every value below is the file's,"
+    ));
+    out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
+    device_table(&mut out, device);
+    out.table("telegram");
+    out.string("pkw", if telegram.pkw { "pke-ind-pwe" } else { "none" });
+    out.key("pzd_words", pzd_words);
+    profibus(&mut out, device, file, notes);
+    manual(&mut out);
+    out.table("choices");
+    let reason = quote(&format!("imported from {file}"));
+    for table in ["device", "telegram", "profibus"] {
+        out.key(&quote(table), &reason);
+    }
+    Some(out.finish())
+}
+
+/// The PKW channel's presence and the most PZD words of the modules whose
+/// data is a telegram.
+struct TelegramShape {
+    pkw: bool,
+    pzd_words: Option<u8>,
+}
+
+fn telegram(device: &DpDevice) -> TelegramShape {
+    let shapes: Vec<(bool, u8)> = device
+        .modules
+        .iter()
+        .filter_map(|m| shape(&identifiers(&m.config).ok()?))
+        .collect();
+    TelegramShape {
+        pkw: shapes.iter().any(|(pkw, _)| *pkw),
+        pzd_words: shapes.iter().map(|(_, w)| *w).max(),
+    }
+}
+
+/// A module's telegram: the PKW channel first or not, then words whose sum
+/// is the same each way (1..=16).
+fn shape(ids: &[Identifier]) -> Option<(bool, u8)> {
+    let data: Vec<&Identifier> = ids.iter().filter(|i| !is_empty(i)).collect();
+    let pkw = data.len() > 1 && data.first().is_some_and(|i| is_pkw(i));
+    let (mut out, mut inp) = (0u32, 0u32);
+    for id in &data[usize::from(pkw)..] {
+        let Identifier::General { direction, data } = id else {
+            return None;
+        };
+        if !data.words {
+            return None;
+        }
+        let count = u32::from(data.count);
+        match direction {
+            Direction::Both => (out, inp) = (out + count, inp + count),
+            Direction::Output => out += count,
+            Direction::Input => inp += count,
+        }
+    }
+    let words = u8::try_from(out)
+        .ok()
+        .filter(|&w| out == inp && (1..=16).contains(&w))?;
+    Some((pkw, words))
+}
+
+fn is_empty(id: &Identifier) -> bool {
+    matches!(id, Identifier::Special { output: None, input: None, vendor } if vendor.is_empty())
+}
+
+/// `0xF3`: 4 consistent words each way, the PKW channel when data follows.
+fn is_pkw(id: &Identifier) -> bool {
+    matches!(id, Identifier::General { direction: Direction::Both, data } if *data == PKW)
+}
+
+const PKW: Length = Length {
+    words: true,
+    count: 4,
+    consistent: true,
+};
+
+fn text_of<'a>(device: &'a DpDevice, keyword: &str) -> Option<&'a str> {
+    device.keyword(keyword)?.value.as_str()
+}
+
+fn number_of(device: &DpDevice, keyword: &str) -> Option<i64> {
+    device.keyword(keyword)?.value.as_number()
+}
+
+fn device_table(out: &mut TomlOut, device: &DpDevice) {
+    out.table("device");
+    let model = text_of(device, "Model_Name").unwrap_or_default();
+    for (key, keyword) in [
+        ("vendor", "Vendor_Name"),
+        ("family", "Model_Name"),
+        ("model", "Model_Name"),
+        ("revision", "Revision"),
+        ("hardware_release", "Hardware_Release"),
+        ("software_release", "Software_Release"),
+    ] {
+        if let Some(text) = text_of(device, keyword) {
+            out.string(key, text);
+        }
+    }
+    // A GSD names no family and no PROFINET name: the model stands for both.
+    out.string("name", model);
+    if let Some(order) = text_of(device, "OrderNumber") {
+        out.string("order_number", order);
+    }
+    if let Some(info) = text_of(device, "Info_Text") {
+        out.string("info", info);
+    }
+}
+
+fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes) {
+    out.table("profibus");
+    out.string("file_name", &gsd_file_name(file, notes));
+    if let Some(r) = number_of(device, "GSD_Revision") {
+        out.key("gsd_revision", r);
+    }
+    if let Some(ident) = device.ident_number() {
+        out.key("ident_number", format!("{{ value = 0x{ident:04X} }}"));
+    }
+    if let Some(t) = text_of(device, "Implementation_Type") {
+        out.string("implementation_type", t);
+    }
+    if let Some(n) = number_of(device, "Min_Slave_Intervall") {
+        out.key("min_slave_interval", n);
+    }
+    if let Some(k) = device.keyword("Slave_Family") {
+        out.string("slave_family", &family(k));
+    }
+    for (key, keyword) in [
+        ("auto_baud", "Auto_Baud_supp"),
+        ("freeze_mode", "Freeze_Mode_supp"),
+        ("sync_mode", "Sync_Mode_supp"),
+        ("fail_safe", "Fail_Safe"),
+        ("set_slave_address", "Set_Slave_Add_supp"),
+        ("redundancy", "Redundancy"),
+        ("wd_base_1ms", "WD_Base_1ms_supp"),
+        ("publisher", "Publisher_supp"),
+        ("modular_station", "Modular_Station"),
+    ] {
+        if let Some(n) = number_of(device, keyword) {
+            out.key(key, n != 0);
+        }
+    }
+    for (key, keyword) in [
+        ("repeater_ctrl_sig", "Repeater_Ctrl_Sig"),
+        ("pins_24v", "24V_Pins"),
+        ("modul_offset", "Modul_Offset"),
+        ("max_module", "Max_Module"),
+        ("max_input_len", "Max_Input_Len"),
+        ("max_output_len", "Max_Output_Len"),
+        ("max_data_len", "Max_Data_Len"),
+    ] {
+        if let Some(n) = number_of(device, keyword) {
+            out.key(key, n);
+        }
+    }
+    modules(out, device, notes);
+    user_prm(out, device, notes);
+    out.table("profibus.baud_rates");
+    for (baud, max_tsdr) in device.baud_rates() {
+        out.key(&quote(baud.as_str()), max_tsdr.unwrap_or(0));
+    }
+    dpv1(out, device);
+    diagnosis(out, device, notes);
+}
+
+/// The file's name when it is one a GSD may have (8.3, a GSD extension),
+/// else the last 8 letters, digits and `_` of its stem with `.GSD`.
+fn gsd_file_name(file: &str, notes: &mut Notes) -> String {
+    let (stem, ext) = file.rsplit_once('.').unwrap_or((file, "GSD"));
+    let ext_ok =
+        ["GSD", "GSE", "GSG", "GSF", "GSI", "GSS"].contains(&ext.to_ascii_uppercase().as_str());
+    let kept: Vec<char> = stem
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect();
+    if ext_ok && kept.len() == stem.chars().count() && (1..=8).contains(&kept.len()) {
+        return file.to_string();
+    }
+    let tail: String = kept[kept.len().saturating_sub(8)..].iter().collect();
+    let name = format!(
+        "{}.{}",
+        if tail.is_empty() { "IMPORTED" } else { &tail },
+        if ext_ok { ext } else { "GSD" }
+    );
+    notes.note(format!(
+        "`{file}` is not a GSD file name (8.3): the description names it `{name}`"
+    ));
+    name
+}
+
+fn family(k: &Keyword) -> String {
+    match &k.value {
+        GsdValue::Family { main, sub } => std::iter::once(main.to_string())
+            .chain(sub.iter().cloned())
+            .collect::<Vec<_>>()
+            .join("@"),
+        other => other
+            .as_number()
+            .map_or_else(String::new, |n| n.to_string()),
+    }
+}
+
+fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+    for m in &device.modules {
+        out.array_item("profibus.modules");
+        out.string("name", &m.name);
+        if let Some(r) = m.reference {
+            out.key("reference", r);
+        }
+        for k in &m.keywords {
+            match (k.key.as_str(), k.value.as_str()) {
+                ("info_text", Some(info)) => out.string("info", info),
+                _ => notes.unsaid(
+                    &k.name,
+                    &k.place,
+                    &format!(
+                        "module \"{}\": the description's modules have no key for it",
+                        m.name
+                    ),
+                ),
+            }
+        }
+        module_data(out, m, notes);
+        for (what, data) in [
+            ("User_Prm_Data part", &m.user_prm_data),
+            ("PROFIsafe parameters", &m.safety_prm_data),
+        ] {
+            if !data.is_empty() {
+                let place = data.fields.first().map(|f| &f.place).unwrap_or(&m.place);
+                notes.unsaid(
+                    &format!("module \"{}\"'s {what}", m.name),
+                    place,
+                    "the description has no module-specific parameters",
+                );
+            }
+        }
+    }
+}
+
+/// `ppo = "PPOn"` for a standard PPO type's bytes, else `data`.
+fn module_data(out: &mut TomlOut, m: &DpModule, notes: &mut Notes) {
+    let ppo = (1..=5u8).find(|&n| {
+        crate::lower::ppo_layout(n, crate::lower::DEFAULT_PPO5_PZD_WORDS)
+            .is_some_and(|layout| crate::lower::ppo_config_bytes(layout) == m.config)
+    });
+    if let Some(n) = ppo {
+        out.string("ppo", &format!("PPO{n}"));
+        return;
+    }
+    let ids = match identifiers(&m.config) {
+        Ok(ids) => ids,
+        Err(_) => {
+            notes.unsaid(
+                &format!("module \"{}\"'s config bytes", m.name),
+                &m.place,
+                "a special identifier announces more bytes than there are",
+            );
+            return;
+        }
+    };
+    let pkw_first = shape(&ids).is_some_and(|(pkw, _)| pkw);
+    let written: Vec<String> = ids
+        .iter()
+        .enumerate()
+        .map(|(i, id)| {
+            identifier(
+                id,
+                pkw_first && i == ids.iter().position(|i| !is_empty(i)).unwrap_or(0),
+            )
+        })
+        .collect();
+    out.key("data", list(written));
+}
+
+/// One identifier as the description writes it.
+fn identifier(id: &Identifier, as_pkw: bool) -> String {
+    let length = |l: &Length, way: &str| -> Vec<String> {
+        let unit = if l.words { "words" } else { "bytes" };
+        vec![format!("{unit}{way} = {}", l.count)]
+    };
+    let mut parts: Vec<String> = match id {
+        Identifier::General { .. } if as_pkw => vec!["pkw = true".into()],
+        Identifier::General { direction, data } => {
+            let way = match direction {
+                Direction::Both => "",
+                Direction::Output => "_out",
+                Direction::Input => "_in",
+            };
+            let mut p = length(data, way);
+            if !data.consistent {
+                p.push("consistent = false".into());
+            }
+            p
+        }
+        Identifier::Special {
+            output,
+            input,
+            vendor,
+        } => {
+            let mut p: Vec<String> = output.iter().flat_map(|l| length(l, "_out")).collect();
+            p.extend(input.iter().flat_map(|l| length(l, "_in")));
+            if output.iter().chain(input).any(|l| !l.consistent) {
+                p.push("consistent = false".into());
+            }
+            if !vendor.is_empty() {
+                p.push(format!("vendor = {}", list(vendor.iter().map(|b| hex(*b)))));
+            }
+            p
+        }
+    };
+    if parts.is_empty() {
+        return "{}".into();
+    }
+    parts.dedup();
+    format!("{{ {} }}", parts.join(", "))
+}
+
+/// `[profibus.user_prm]` and `[[profibus.parameters]]`.
+fn user_prm(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+    let prm = &device.user_prm_data;
+    let constant = constant_bytes(prm, number_of(device, "DPV1_Slave") == Some(1));
+    let max_length = number_of(device, "Max_User_Prm_Data_Len");
+    if !constant.is_empty() || max_length.is_some() {
+        out.table("profibus.user_prm");
+        if !constant.is_empty() {
+            out.key("constant", list(constant.iter().map(|b| hex(*b))));
+        }
+        if let Some(max) = max_length {
+            out.key("max_length", max);
+        }
+    }
+    for field in &prm.fields {
+        parameter(out, field, notes);
+    }
+}
+
+/// The constant bytes from byte 0, gaps and the declared length filled
+/// with zeros (what the master sends there), and a DPV1 slave's three
+/// status bytes at least.
+fn constant_bytes(prm: &ParameterData, dpv1: bool) -> Vec<u8> {
+    let end = prm
+        .consts
+        .iter()
+        .map(|c| c.byte_offset as usize + c.bytes.len())
+        .chain(prm.length.map(|l| l as usize))
+        .chain(dpv1.then_some(3))
+        .max()
+        .unwrap_or(0);
+    let mut bytes = vec![0u8; end];
+    for c in &prm.consts {
+        let at = c.byte_offset as usize;
+        bytes[at..at + c.bytes.len()].copy_from_slice(&c.bytes);
+    }
+    bytes
+}
+
+fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
+    let name = f.name.primary.to_string();
+    let kind = match (f.data_type.as_str(), f.bits) {
+        ("Unsigned8", None) => "type = \"Unsigned8\"".to_string(),
+        ("Unsigned16", None) => "type = \"Unsigned16\"".to_string(),
+        ("Bit" | "BitArea", Some(b)) if b.length == 1 => format!("bits = {}", b.offset),
+        ("Bit" | "BitArea", Some(b)) => {
+            format!("bits = [{}, {}]", b.offset, b.offset + b.length - 1)
+        }
+        (other, _) => {
+            let what = format!("parameter \"{name}\" of type {other}");
+            notes.unsaid(
+                &what,
+                &f.place,
+                "card parameters are Unsigned8, Unsigned16, Bit or BitArea",
+            );
+            return;
+        }
+    };
+    out.array_item("profibus.parameters");
+    out.string("name", &name);
+    out.key("offset", f.byte_offset);
+    out.key(
+        kind.split(" = ").next().unwrap_or_default(),
+        kind.split_once(" = ").map_or("", |(_, v)| v),
+    );
+    let default = match &f.default {
+        Some(Value::Int(v)) => *v,
+        _ => 0,
+    };
+    out.key("default", default);
+    if !f.choices.is_empty() {
+        let choices = f.choices.iter().filter_map(|c| match &c.value {
+            Value::Int(v) if allows(&f.allowed, *v) => Some(format!(
+                "{{ value = {v}, text = {} }}",
+                quote(&c.text.primary)
+            )),
+            _ => None,
+        });
+        out.key("choices", list(choices));
+    } else if let Allowed::Ranges(ranges) = &f.allowed {
+        let ints: Vec<(i128, i128)> = ranges
+            .iter()
+            .filter_map(|(a, b)| match (a, b) {
+                (Value::Int(a), Value::Int(b)) => Some((*a, *b)),
+                _ => None,
+            })
+            .collect();
+        match ints.as_slice() {
+            [(min, max)] => out.key("range", format!("[{min}, {max}]")),
+            _ => notes.unsaid(
+                &format!("parameter \"{name}\"'s allowed values"),
+                &f.place,
+                "a card parameter without texts takes one range of values",
+            ),
+        }
+    }
+    if !f.changeable {
+        out.key("changeable", false);
+    }
+    if !f.visible {
+        out.key("visible", false);
+    }
+    for a in &f.attributes {
+        notes.unsaid(
+            &format!("parameter \"{name}\"'s {}", a.name),
+            &a.place,
+            "the description's parameters have no key for it",
+        );
+    }
+}
+
+/// Whether a value is among those a parameter allows (its texts may name
+/// more).
+fn allows(allowed: &Allowed, value: i128) -> bool {
+    match allowed {
+        Allowed::Any => true,
+        Allowed::Ranges(ranges) => ranges.iter().any(|(a, b)| match (a, b) {
+            (Value::Int(a), Value::Int(b)) => (*a..=*b).contains(&value),
+            _ => false,
+        }),
+    }
+}
+
+fn dpv1(out: &mut TomlOut, device: &DpDevice) {
+    if number_of(device, "DPV1_Slave") != Some(1) {
+        return;
+    }
+    out.table("profibus.dpv1");
+    let flag = |keyword| number_of(device, keyword).map(|n| n != 0);
+    if let Some(rw) = flag("C1_Read_Write_supp") {
+        out.key("c1_read_write", rw);
+    }
+    for (key, keyword) in [
+        ("c1_max_data_len", "C1_Max_Data_Len"),
+        ("c1_response_timeout", "C1_Response_Timeout"),
+    ] {
+        if let Some(n) = number_of(device, keyword) {
+            out.key(key, n);
+        }
+    }
+    for (key, keyword) in [
+        ("ident_maintenance", "Ident_Maintenance_supp"),
+        ("data_types", "DPV1_Data_Types"),
+        ("check_cfg_mode", "Check_Cfg_Mode"),
+    ] {
+        if let Some(v) = flag(keyword) {
+            out.key(key, v);
+        }
+    }
+    if flag("C2_Read_Write_supp") == Some(true) {
+        out.table("profibus.dpv1.c2");
+        for (key, keyword) in [
+            ("max_data_len", "C2_Max_Data_Len"),
+            ("response_timeout", "C2_Response_Timeout"),
+            ("max_count_channels", "C2_Max_Count_Channels"),
+            ("max_initiate_pdu_length", "Max_Initiate_PDU_Length"),
+        ] {
+            if let Some(n) = number_of(device, keyword) {
+                out.key(key, n);
+            }
+        }
+    }
+}
+
+fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+    let d = &device.diagnosis;
+    let length = number_of(device, "Max_Diag_Data_Len").map_or(0, |n| n - 6);
+    if length <= 0 && d.areas.is_empty() && d.bits.is_empty() {
+        return;
+    }
+    out.table("profibus.diagnosis");
+    out.key("length", length);
+    let bits: Vec<String> = d
+        .bits
+        .iter()
+        .filter_map(|b| {
+            if b.when_clear || b.help.is_some() {
+                let what = if b.when_clear {
+                    "Unit_Diag_Not_Bit"
+                } else {
+                    "Unit_Diag_Bit_Help"
+                };
+                notes.unsaid(
+                    &format!("{what}({})", b.bit),
+                    &b.place,
+                    "the description's diagnosis bits are shown while set, without help",
+                );
+            }
+            (!b.when_clear)
+                .then(|| format!("{{ bit = {}, text = {} }}", b.bit, quote(&b.text.primary)))
+        })
+        .collect();
+    if !bits.is_empty() {
+        out.key("bits", format!("[\n    {},\n]", bits.join(",\n    ")));
+    }
+    for a in &d.areas {
+        out.array_item("profibus.diagnosis.areas");
+        out.key("bit", format!("[{}, {}]", a.first, a.last));
+        let values = a.values.iter().map(|v| {
+            format!(
+                "{{ value = {}, text = {} }}",
+                v.value,
+                quote(&v.text.primary)
+            )
+        });
+        out.key("values", list(values));
+    }
+    for t in &d.types {
+        notes.unsaid(
+            &format!("UnitDiagType = {}", t.id),
+            &t.place,
+            "the description has no diagnosis types",
+        );
+    }
+    for c in &d.channel {
+        notes.unsaid(
+            &format!("Channel_Diag({})", c.value),
+            &c.place,
+            "the description has no channel diagnosis",
+        );
+    }
+}
+
+/// `[manual]`, for the maintainer to fill, as comments: its title and
+/// languages cannot be imported, and the description must load without.
+fn manual(out: &mut TomlOut) {
+    out.comment("");
+    out.comment("Fill in the manual the values come from, then confirm each value under");
+    out.comment("[choices] against it and remove its mark:");
+    out.comment("[manual]");
+    out.comment("title = \"...\"");
+    out.comment("languages = [\"en\"]");
+}
