@@ -98,6 +98,7 @@ mod gsdml_reader;
 mod hostile_input;
 mod hostile_limits;
 mod hostile_properties;
+mod import;
 mod import_cycles;
 mod invalid_descriptions;
 mod languages;

@@ -49,8 +49,9 @@ struct Context<'a> {
     diag_bits: Vec<Value<'a>>,
     dpv1: Option<Dpv1>,
     prm_len: u16,
-    /// Max_User_Prm_Data_Len: the telegram's length, or more when stated.
-    prm_max_len: u16,
+    /// Max_User_Prm_Data_Len: the telegram's length, or more when stated;
+    /// unwritten when 0 and unstated (a slave without parameters).
+    prm_max_len: Option<u16>,
     prm_const: Option<String>,
     /// The constant bytes are exactly the DPV1 status bytes.
     prm_const_is_status: bool,
@@ -232,7 +233,10 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             ]),
         }),
         prm_len: p.user_prm.len,
-        prm_max_len: p.user_prm.max_len.map_or(p.user_prm.len, u16::from),
+        prm_max_len: match p.user_prm.max_len {
+            Some(max) => Some(max.into()),
+            None => (p.user_prm.len > 0).then_some(p.user_prm.len),
+        },
         prm_const: (!p.user_prm.constant.is_empty()).then(|| hex_list(&p.user_prm.constant)),
         prm_const_is_status: p
             .dpv1

@@ -247,6 +247,9 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes)
             out.key(key, n);
         }
     }
+    if let Some(words) = ppo5_pzd_words(device) {
+        out.key("ppo5_pzd_words", words);
+    }
     modules(out, device, notes);
     user_prm(out, device, notes);
     out.table("profibus.baud_rates");
@@ -295,6 +298,7 @@ fn family(k: &Keyword) -> String {
 }
 
 fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+    let ppo5_words = ppo5_pzd_words(device).unwrap_or(crate::lower::DEFAULT_PPO5_PZD_WORDS);
     for m in &device.modules {
         out.array_item("profibus.modules");
         out.string("name", &m.name);
@@ -314,7 +318,7 @@ fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
                 ),
             }
         }
-        module_data(out, m, notes);
+        module_data(out, m, ppo5_words, notes);
         for (what, data) in [
             ("User_Prm_Data part", &m.user_prm_data),
             ("PROFIsafe parameters", &m.safety_prm_data),
@@ -331,10 +335,26 @@ fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     }
 }
 
-/// `ppo = "PPOn"` for a standard PPO type's bytes, else `data`.
-fn module_data(out: &mut TomlOut, m: &DpModule, notes: &mut Notes) {
+/// The PZD words of the file's PPO5: a module named PPO5 of the PKW
+/// channel and one block of words each way, when it has not PROFIdrive's
+/// 10 words.
+fn ppo5_pzd_words(device: &DpDevice) -> Option<u8> {
+    device.modules.iter().find_map(|m| {
+        let ids = identifiers(&m.config).ok()?;
+        let (true, words) = shape(&ids)? else {
+            return None;
+        };
+        let named = m.name.to_ascii_uppercase().contains("PPO5");
+        let one_block = ids.len() == 2;
+        (named && one_block && words != crate::lower::DEFAULT_PPO5_PZD_WORDS).then_some(words)
+    })
+}
+
+/// `ppo = "PPOn"` for a standard PPO type's bytes (PPO5 with the file's
+/// words), else `data`.
+fn module_data(out: &mut TomlOut, m: &DpModule, ppo5_words: u8, notes: &mut Notes) {
     let ppo = (1..=5u8).find(|&n| {
-        crate::lower::ppo_layout(n, crate::lower::DEFAULT_PPO5_PZD_WORDS)
+        crate::lower::ppo_layout(n, ppo5_words)
             .is_some_and(|layout| crate::lower::ppo_config_bytes(layout) == m.config)
     });
     if let Some(n) = ppo {

@@ -1,0 +1,243 @@
+//! `gsdc import`: the shipped descriptions' own GSD files and every file of
+//! the corpus written back as descriptions, each judged by its round trip
+//! (the import's build against the file, by `gsdc diff`); the README's
+//! table of drive files is this module's output.
+
+use crate::support::{self, descriptions};
+use gsdc::import::{import, Imported};
+use gsdc::ArtifactKind;
+
+/// A GSD without its header comment (the lines up to the second `;===`
+/// rule, which name the description and its fingerprint and choices).
+fn body(gsd: &str) -> &str {
+    let rule = ";====";
+    let first = gsd.find(rule).expect("a header rule");
+    let second = first
+        + rule.len()
+        + gsd[first + rule.len()..]
+            .find(rule)
+            .expect("a closing rule");
+    let end = second + gsd[second..].find('\n').expect("a line end") + 1;
+    &gsd[end..]
+}
+
+fn codes(imported: &Imported) -> Vec<&'static str> {
+    imported.diagnostics.iter().map(|d| d.code).collect()
+}
+
+/// Every GSD of a shipped description that is not a gateway's imports, and
+/// the import's build is that GSD byte for byte below the header but for
+/// its `Bitmap_Device` line; every
+/// other file gsdc ships (a gateway's GSD, GSDML files) is refused, E602.
+#[test]
+fn shipped_gsd_files_import_and_rebuild_byte_identical_below_the_header_but_the_bitmap() {
+    let mut imported_files = 0;
+    for (name, ir) in descriptions::load_shipped() {
+        for file in gsdc::compile(&ir).unwrap() {
+            if !matches!(file.kind, ArtifactKind::Gsd | ArtifactKind::Gsdml) {
+                continue;
+            }
+            let imported = import(&file.file_name, &file.contents);
+            if file.kind == ArtifactKind::Gsdml || ir.gateway.is_some() {
+                assert_eq!(imported.description, None, "{}", file.file_name);
+                assert!(
+                    codes(&imported).contains(&"E602"),
+                    "{}: {:?}",
+                    file.file_name,
+                    imported.diagnostics
+                );
+                continue;
+            }
+            let toml = imported
+                .description
+                .as_deref()
+                .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
+            assert!(imported.round_trip.is_clean(), "{name}");
+            let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", toml);
+            let rebuilt = rebuilt.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
+            let (file_name, gsd) =
+                descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsd);
+            assert_eq!(file_name, file.file_name);
+            let original = String::from_utf8(file.contents).unwrap();
+            // The device symbol is a file of its own, which the import
+            // does not read (W600): its line is the one difference.
+            let without_bitmap = |text: &str| {
+                text.split_inclusive('\n')
+                    .filter(|l| !l.starts_with("Bitmap_Device"))
+                    .collect::<String>()
+            };
+            assert_eq!(body(&gsd), without_bitmap(body(&original)), "{name}");
+            assert!(codes(&imported).iter().all(|c| *c == "W600"));
+            // Everything imported is marked as the description's own choice.
+            assert!(toml.contains(&format!(
+                "\"profibus\" = \"imported from {}\"",
+                file.file_name
+            )));
+            assert!(toml.contains(&format!(
+                "ident_number = {{ value = 0x{:04X} }}",
+                rebuilt.profibus.as_ref().unwrap().ident_number
+            )));
+            imported_files += 1;
+        }
+    }
+    assert_eq!(imported_files, 2, "9KDP1.GSD and MD810DP.GSD");
+}
+
+/// A corpus file and what its import says.
+struct Row {
+    file: String,
+    imported: Imported,
+}
+
+fn corpus_rows(folder: &str, extensions: &[&str]) -> Vec<Row> {
+    let mut files: Vec<String> = std::fs::read_dir(support::shared("corpus").join(folder))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| {
+            extensions
+                .iter()
+                .any(|e| n.to_ascii_lowercase().ends_with(e))
+        })
+        .collect();
+    files.sort();
+    files
+        .into_iter()
+        .map(|file| {
+            let bytes = support::corpus_file(&format!("{folder}/{file}"));
+            let imported = import(&file, &bytes);
+            Row { file, imported }
+        })
+        .collect()
+}
+
+/// The drive files: the GSD files the corpus's manifest marks as having
+/// PPO modules, and the GSDML files of ABB's FENA and SEW's MOVI-C.
+fn drive_gsd_files() -> Vec<String> {
+    let manifest = std::fs::read_to_string(support::shared("corpus/gsd/MANIFEST.tsv")).unwrap();
+    manifest
+        .lines()
+        .skip(1)
+        .filter(|l| l.trim_end().ends_with("\tTrue"))
+        .map(|l| l.split('\t').next().unwrap().to_string())
+        .collect()
+}
+
+/// What stops a round trip, in a few words each: the refusal, or the
+/// subjects of the changes (E601), each once.
+fn outcome(imported: &Imported) -> String {
+    if imported.description.is_some() {
+        return format!(
+            "round trip clean ({} not imported, all cosmetic)",
+            imported.unsaid
+        );
+    }
+    let mut stops: Vec<String> = imported
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| {
+            let message = d
+                .message
+                .split_once(": ")
+                .map_or(d.message.as_str(), |(_, m)| m);
+            let subject = match d.code {
+                "E601" => message.split(" (").next().unwrap_or(message),
+                _ => message,
+            };
+            format!("{} {}", d.code, subject.replace('|', "/"))
+        })
+        .collect();
+    stops.sort();
+    stops.dedup();
+    stops.join("; ")
+}
+
+const TABLE_START: &str = "<!-- import table: tests/import.rs writes it -->\n";
+const TABLE_END: &str = "<!-- end of the import table -->\n";
+
+/// Every corpus file imports without a crash; each refused one says why
+/// with an error; each written one round-trips clean. The README's table
+/// of drive files is what the imports give (`GSDC_WRITE_IMPORT_TABLE=1`
+/// writes it).
+#[test]
+fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
+    let gsd = corpus_rows("gsd", &[".gsd", ".gse", ".gsg", ".gsf", ".gsi", ".gss"]);
+    let gsdml = corpus_rows("gsdml", &[".xml"]);
+    assert!(gsd.len() >= 60 && gsdml.len() >= 16);
+    for row in gsd.iter().chain(&gsdml) {
+        match &row.imported.description {
+            Some(_) => assert!(row.imported.round_trip.is_clean(), "{}", row.file),
+            None => assert!(
+                row.imported.diagnostics.has_errors(),
+                "{}: refused without an error",
+                row.file
+            ),
+        }
+    }
+    let drives = drive_gsd_files();
+    assert!(drives.len() >= 17, "{drives:?}");
+    let mut table = String::from("| file | import |\n|---|---|\n");
+    let drive_gsdml = |f: &str| f.contains("-ABB-FENA-") || f.contains("-SEW-MOVI-C-");
+    for row in gsd
+        .iter()
+        .filter(|r| drives.contains(&r.file))
+        .chain(gsdml.iter().filter(|r| drive_gsdml(&r.file)))
+    {
+        table.push_str(&format!(
+            "| `{}` | {} |\n",
+            row.file,
+            outcome(&row.imported)
+        ));
+    }
+    let readme_path = support::checkout("README.md");
+    let readme = std::fs::read_to_string(&readme_path).unwrap();
+    let start = readme.find(TABLE_START).expect("the README's import table") + TABLE_START.len();
+    let end = start + readme[start..].find(TABLE_END).expect("the table's end");
+    if std::env::var_os("GSDC_WRITE_IMPORT_TABLE").is_some() {
+        let written = format!("{}{table}{}", &readme[..start], &readme[end..]);
+        std::fs::write(&readme_path, written).unwrap();
+        return;
+    }
+    assert_eq!(&readme[start..end], table, "README.md's import table is stale: GSDC_WRITE_IMPORT_TABLE=1 cargo test --test tests import::");
+}
+
+/// The command: writes the description, never over a file; a GSDML file
+/// is refused, exit 1, nothing written.
+#[test]
+fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
+    let dir = support::scratch("command");
+    let ir = descriptions::load("9kdp1.toml");
+    let (name, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
+    let gsd_path = dir.join(&name);
+    std::fs::write(&gsd_path, gsd).unwrap();
+    let out = dir.join("9kdp1.toml");
+    let run = support::gsdc([
+        "import".as_ref(),
+        gsd_path.as_os_str(),
+        "--out".as_ref(),
+        out.as_os_str(),
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", support::stderr(&run));
+    assert!(support::stderr(&run).contains("round trip: 0 breaking, 0 compatible"));
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(descriptions::load_text("9kdp1.toml", &written).0.is_some());
+    let again = support::gsdc([
+        "import".as_ref(),
+        gsd_path.as_os_str(),
+        "--out".as_ref(),
+        out.as_os_str(),
+    ]);
+    assert_eq!(again.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), written);
+    let gsdml = support::shared("corpus/gsdml/GSDML-V2.33-ABB-FENA-20170914.xml");
+    let refused_out = dir.join("fena.toml");
+    let refused = support::gsdc([
+        "import".as_ref(),
+        gsdml.as_os_str(),
+        "--out".as_ref(),
+        refused_out.as_os_str(),
+    ]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(support::stderr(&refused).contains("error[E602]"));
+    assert!(!refused_out.exists());
+}
