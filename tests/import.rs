@@ -170,7 +170,7 @@ const TABLE_START: &str = "<!-- import table: tests/import.rs writes it -->\n";
 const TABLE_END: &str = "<!-- end of the import table -->\n";
 
 /// Every corpus file imports without a crash; each refused one says why
-/// with an error; each written one round-trips clean; the drive GSD files
+/// with an error; each written one round-trips clean and builds; the drive GSD files
 /// that round-trip clean are at least the 11 found when this was written.
 /// The README's table of drive files is what the imports give (`GSDC_WRITE_IMPORT_TABLE=1`
 /// writes it).
@@ -181,7 +181,14 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
     assert!(gsd.len() >= 60 && gsdml.len() >= 16);
     for row in gsd.iter().chain(&gsdml) {
         match &row.imported.description {
-            Some(_) => assert!(row.imported.round_trip.is_clean(), "{}", row.file),
+            Some(toml) => {
+                assert!(row.imported.round_trip.is_clean(), "{}", row.file);
+                // The round trip writes only the GSD: the whole build,
+                // layouts and the check of every file, must pass too.
+                let (ir, diagnostics) = descriptions::load_text("imported.toml", toml);
+                let ir = ir.unwrap_or_else(|| panic!("{}: {diagnostics:#?}", row.file));
+                gsdc::compile(&ir).unwrap_or_else(|e| panic!("{}: {e:#?}", row.file));
+            }
             None => assert!(
                 row.imported.diagnostics.has_errors(),
                 "{}: refused without an error",

@@ -15,7 +15,6 @@ mod toml_out;
 use crate::device::{Device, Place};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::diff::{Change, Class};
-use crate::ArtifactKind;
 
 /// What an import gives: the description (none when refused or when it
 /// would describe another device), and every diagnostic, against `text`.
@@ -89,8 +88,10 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     }
 }
 
-/// Builds the description and compares its GSD with the file's device;
-/// `None` (and an error) when the description does not build.
+/// Loads the description, writes its GSD (the file a build writes; the
+/// layouts and the datasheet do not enter the comparison) and compares it
+/// with the file's device; `None` (and an error) when the description does
+/// not load.
 fn rebuilt_changes(
     file_name: &str,
     toml: &str,
@@ -102,21 +103,14 @@ fn rebuilt_changes(
         file_name.rsplit_once('.').map_or(file_name, |(s, _)| s)
     );
     let (ir, diagnostics) = crate::load(&name, toml);
-    let built = ir.map(|ir| crate::compile(&ir));
     let errors: Vec<&Diagnostic> = diagnostics.errors().collect();
-    let artifacts = match built {
-        Some(Ok(artifacts)) if errors.is_empty() => artifacts,
-        Some(Err(more)) => {
-            notes.not_built(more.errors());
-            return None;
-        }
-        _ => {
-            notes.not_built(errors.into_iter());
-            return None;
-        }
+    let (Some(ir), true) = (ir, errors.is_empty()) else {
+        notes.not_built(errors.into_iter());
+        return None;
     };
-    let gsd = artifacts.iter().find(|a| a.kind == ArtifactKind::Gsd)?;
-    let new = crate::device::read(&gsd.contents, Some(&gsd.file_name))?;
+    let profibus = ir.profibus.as_ref()?;
+    let gsd = crate::emit::gsd::emit(&ir, profibus);
+    let new = crate::device::read(gsd.as_bytes(), Some(&profibus.file_name))?;
     crate::diff::compare(old, &new)
 }
 
