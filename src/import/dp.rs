@@ -168,6 +168,24 @@ const PKW: Length = Length {
     consistent: true,
 };
 
+/// `key = n` for each keyword the file has, as a number.
+fn numbers(out: &mut TomlOut, device: &DpDevice, keys: &[(&str, &str)]) {
+    for (key, keyword) in keys {
+        if let Some(n) = number_of(device, keyword) {
+            out.key(key, n);
+        }
+    }
+}
+
+/// `key = true` or `false` for each keyword the file has, 0 or not.
+fn flags(out: &mut TomlOut, device: &DpDevice, keys: &[(&str, &str)]) {
+    for (key, keyword) in keys {
+        if let Some(n) = number_of(device, keyword) {
+            out.key(key, n != 0);
+        }
+    }
+}
+
 fn text_of<'a>(device: &'a DpDevice, keyword: &str) -> Option<&'a str> {
     device.keyword(keyword)?.value.as_str()
 }
@@ -219,34 +237,34 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes)
     if let Some(k) = device.keyword("Slave_Family") {
         out.string("slave_family", &family(k));
     }
-    for (key, keyword) in [
-        ("auto_baud", "Auto_Baud_supp"),
-        ("freeze_mode", "Freeze_Mode_supp"),
-        ("sync_mode", "Sync_Mode_supp"),
-        ("fail_safe", "Fail_Safe"),
-        ("set_slave_address", "Set_Slave_Add_supp"),
-        ("redundancy", "Redundancy"),
-        ("wd_base_1ms", "WD_Base_1ms_supp"),
-        ("publisher", "Publisher_supp"),
-        ("modular_station", "Modular_Station"),
-    ] {
-        if let Some(n) = number_of(device, keyword) {
-            out.key(key, n != 0);
-        }
-    }
-    for (key, keyword) in [
-        ("repeater_ctrl_sig", "Repeater_Ctrl_Sig"),
-        ("pins_24v", "24V_Pins"),
-        ("modul_offset", "Modul_Offset"),
-        ("max_module", "Max_Module"),
-        ("max_input_len", "Max_Input_Len"),
-        ("max_output_len", "Max_Output_Len"),
-        ("max_data_len", "Max_Data_Len"),
-    ] {
-        if let Some(n) = number_of(device, keyword) {
-            out.key(key, n);
-        }
-    }
+    flags(
+        out,
+        device,
+        &[
+            ("auto_baud", "Auto_Baud_supp"),
+            ("freeze_mode", "Freeze_Mode_supp"),
+            ("sync_mode", "Sync_Mode_supp"),
+            ("fail_safe", "Fail_Safe"),
+            ("set_slave_address", "Set_Slave_Add_supp"),
+            ("redundancy", "Redundancy"),
+            ("wd_base_1ms", "WD_Base_1ms_supp"),
+            ("publisher", "Publisher_supp"),
+            ("modular_station", "Modular_Station"),
+        ],
+    );
+    numbers(
+        out,
+        device,
+        &[
+            ("repeater_ctrl_sig", "Repeater_Ctrl_Sig"),
+            ("pins_24v", "24V_Pins"),
+            ("modul_offset", "Modul_Offset"),
+            ("max_module", "Max_Module"),
+            ("max_input_len", "Max_Input_Len"),
+            ("max_output_len", "Max_Output_Len"),
+            ("max_data_len", "Max_Data_Len"),
+        ],
+    );
     if let Some(words) = ppo5_pzd_words(device) {
         out.key("ppo5_pzd_words", words);
     }
@@ -557,39 +575,36 @@ fn dpv1(out: &mut TomlOut, device: &DpDevice) {
         return;
     }
     out.table("profibus.dpv1");
-    let flag = |keyword| number_of(device, keyword).map(|n| n != 0);
-    if let Some(rw) = flag("C1_Read_Write_supp") {
-        out.key("c1_read_write", rw);
-    }
-    for (key, keyword) in [
-        ("c1_max_data_len", "C1_Max_Data_Len"),
-        ("c1_response_timeout", "C1_Response_Timeout"),
-    ] {
-        if let Some(n) = number_of(device, keyword) {
-            out.key(key, n);
-        }
-    }
-    for (key, keyword) in [
-        ("ident_maintenance", "Ident_Maintenance_supp"),
-        ("data_types", "DPV1_Data_Types"),
-        ("check_cfg_mode", "Check_Cfg_Mode"),
-    ] {
-        if let Some(v) = flag(keyword) {
-            out.key(key, v);
-        }
-    }
-    if flag("C2_Read_Write_supp") == Some(true) {
+    numbers(
+        out,
+        device,
+        &[
+            ("c1_max_data_len", "C1_Max_Data_Len"),
+            ("c1_response_timeout", "C1_Response_Timeout"),
+        ],
+    );
+    flags(
+        out,
+        device,
+        &[
+            ("c1_read_write", "C1_Read_Write_supp"),
+            ("ident_maintenance", "Ident_Maintenance_supp"),
+            ("data_types", "DPV1_Data_Types"),
+            ("check_cfg_mode", "Check_Cfg_Mode"),
+        ],
+    );
+    if number_of(device, "C2_Read_Write_supp").is_some_and(|n| n != 0) {
         out.table("profibus.dpv1.c2");
-        for (key, keyword) in [
-            ("max_data_len", "C2_Max_Data_Len"),
-            ("response_timeout", "C2_Response_Timeout"),
-            ("max_count_channels", "C2_Max_Count_Channels"),
-            ("max_initiate_pdu_length", "Max_Initiate_PDU_Length"),
-        ] {
-            if let Some(n) = number_of(device, keyword) {
-                out.key(key, n);
-            }
-        }
+        numbers(
+            out,
+            device,
+            &[
+                ("max_data_len", "C2_Max_Data_Len"),
+                ("response_timeout", "C2_Response_Timeout"),
+                ("max_count_channels", "C2_Max_Count_Channels"),
+                ("max_initiate_pdu_length", "Max_Initiate_PDU_Length"),
+            ],
+        );
     }
 }
 

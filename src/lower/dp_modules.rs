@@ -264,7 +264,7 @@ fn identifier(cx: &mut Checker, id: &Spanned<raw::Identifier>) -> Option<(Identi
 }
 
 /// The lengths of a pair (words, bytes) that are given.
-fn given<'a>(pair: [(&'a Option<Spanned<u8>>, bool); 2]) -> Vec<(&'a Spanned<u8>, bool)> {
+fn given(pair: [(&Option<Spanned<u8>>, bool); 2]) -> Vec<(&Spanned<u8>, bool)> {
     pair.into_iter()
         .filter_map(|(v, words)| Some((v.as_ref()?, words)))
         .collect()

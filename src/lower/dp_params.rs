@@ -177,10 +177,11 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
     ))
 }
 
+/// The stated constant bytes of User_Prm_Data and their span.
+pub(super) type Constant = (Vec<u8>, Range<usize>);
+
 /// `[profibus.user_prm] constant`, its span when given.
-pub(super) fn constant(
-    user_prm: Option<&Spanned<raw::UserPrm>>,
-) -> Option<(Vec<u8>, Range<usize>)> {
+pub(super) fn constant(user_prm: Option<&Spanned<raw::UserPrm>>) -> Option<Constant> {
     let u = user_prm?;
     let bytes = &u.get_ref().constant;
     let span = bytes.first()?.span().start..bytes.last()?.span().end;

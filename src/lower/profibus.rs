@@ -171,51 +171,27 @@ fn limits(
             );
         }
     }
-    let mut stated = |v: &Option<Spanned<u8>>, derived: u16, keyword: &str| -> (u16, bool) {
-        let Some(v) = v else {
+    let mut stated = |value: Option<(u16, Range<usize>)>, derived: u16, keyword: &str| {
+        let Some((value, span)) = value else {
             return (derived, false);
         };
-        let value = u16::from(*v.get_ref());
-        if value < derived {
-            cx.push(
-                Diagnostic::error(
-                    "E174",
-                    format!("{keyword} = {value} is less than the modules need ({derived})"),
-                )
-                .at(v.span())
-                .label("too small")
-                .help(format!(
-                    "state at least {derived}, or leave it out: gsdc writes what the modules need"
-                )),
-            );
-        }
+        at_least(
+            cx,
+            (keyword, value, span.clone()),
+            derived,
+            "what the modules need",
+        );
         let (min, max) = crate::gsd::keyword_range(keyword);
-        cx.in_range::<u16>(i64::from(value), min, max, v.span(), keyword);
+        cx.in_range::<u16>(i64::from(value), min, max, span, keyword);
         (value.max(derived), true)
     };
-    let (input, input_stated) = stated(&p.max_input_len, input, "Max_Input_Len");
-    let (output, output_stated) = stated(&p.max_output_len, output, "Max_Output_Len");
-    let (module, module_stated) = stated(&p.max_module, module.into(), "Max_Module");
-    let (data, data_stated) = match &p.max_data_len {
-        Some(v) => {
-            let value = *v.get_ref();
-            if value < data {
-                cx.push(
-                    Diagnostic::error(
-                        "E174",
-                        format!("Max_Data_Len = {value} is less than a module needs ({data})"),
-                    )
-                    .at(v.span())
-                    .label("too small")
-                    .help(format!(
-                        "state at least {data}, or leave it out: gsdc writes what the modules need"
-                    )),
-                );
-            }
-            let (min, max) = crate::gsd::keyword_range("Max_Data_Len");
-            cx.in_range::<u16>(i64::from(value), min, max, v.span(), "Max_Data_Len");
-            (value.max(data), true)
-        }
+    let given = |v: &Option<Spanned<u8>>| v.as_ref().map(|v| (u16::from(*v.get_ref()), v.span()));
+    let (input, input_stated) = stated(given(&p.max_input_len), input, "Max_Input_Len");
+    let (output, output_stated) = stated(given(&p.max_output_len), output, "Max_Output_Len");
+    let (module, module_stated) = stated(given(&p.max_module), module.into(), "Max_Module");
+    let data_given = p.max_data_len.as_ref().map(|v| (*v.get_ref(), v.span()));
+    let (data, data_stated) = match data_given {
+        Some(_) => stated(data_given, data, "Max_Data_Len"),
         None => (input + output, false),
     };
     Limits {
@@ -503,7 +479,7 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
 fn lower_dpv1(
     cx: &mut Checker,
     d: &Spanned<raw::Dpv1>,
-    constant: Option<&(Vec<u8>, Range<usize>)>,
+    constant: Option<&super::dp_params::Constant>,
 ) -> Option<Dpv1> {
     let near = d.span();
     let d = d.get_ref();
@@ -645,7 +621,7 @@ fn max_user_prm_len() -> usize {
 fn user_prm(
     cx: &mut Checker,
     p: &raw::Profibus,
-    (dpv1, stated): (Option<&Dpv1>, Option<(Vec<u8>, Range<usize>)>),
+    (dpv1, stated): (Option<&Dpv1>, Option<super::dp_params::Constant>),
     (mappings, set_spans): (&Mappings, &SetSpans),
     gateway: Option<&gateway::Lowered>,
 ) -> UserPrm {
@@ -716,18 +692,9 @@ fn user_prm(
         })
         .collect();
     if let Some(set) = overflowing {
-        cx.push(
-            Diagnostic::error(
-                "E116",
-                format!(
-                    "the parameter telegram would be {end} bytes; GSD allows {}",
-                    max_user_prm_len()
-                ),
-            )
-            .at_opt(set_spans.get(&set).cloned())
-            .label("this mapping runs past the limit")
-            .help("map fewer PZD words or DPV1 indexes"),
-        );
+        let span = set_spans.get(&set).cloned();
+        let too_long = telegram_too_long(end, span, "this mapping runs past the limit");
+        cx.push(too_long.help("map fewer PZD words or DPV1 indexes"));
     }
     let (gateway, end) = match gateway {
         Some(g) => gateway_params(cx, g, end, &mut ids),
@@ -735,18 +702,9 @@ fn user_prm(
     };
     texts.extend(sets);
     if end > max_user_prm_len() && card.end == end {
-        cx.push(
-            Diagnostic::error(
-                "E116",
-                format!(
-                    "the parameter telegram would be {end} bytes; GSD allows {}",
-                    max_user_prm_len()
-                ),
-            )
-            .at_opt(p.parameters.last().map(|p| p.offset.span()))
-            .label("a parameter runs past the limit")
-            .help("User_Prm_Data holds at most 237 bytes"),
-        );
+        let span = p.parameters.last().map(|p| p.offset.span());
+        let too_long = telegram_too_long(end, span, "a parameter runs past the limit");
+        cx.push(too_long.help("User_Prm_Data holds at most 237 bytes"));
     }
     UserPrm {
         constant,
@@ -765,20 +723,43 @@ fn user_prm(
 fn max_length(cx: &mut Checker, p: &raw::Profibus, len: usize) -> Option<u8> {
     let max = p.user_prm.as_ref()?.get_ref().max_length.as_ref()?;
     let value: u8 = cx.gsd_number(max, "Max_User_Prm_Data_Len", "max_length")?;
-    if usize::from(value) < len {
+    let needed = u16::try_from(len).unwrap_or(u16::MAX);
+    let stated = ("max_length", value.into(), max.span());
+    at_least(cx, stated, needed, "the parameter telegram's length");
+    Some(value)
+}
+
+/// E116: a parameter telegram of `end` bytes, longer than GSD allows.
+fn telegram_too_long(end: usize, span: Option<Range<usize>>, label: &str) -> Diagnostic {
+    let most = max_user_prm_len();
+    Diagnostic::error(
+        "E116",
+        format!("the parameter telegram would be {end} bytes; GSD allows {most}"),
+    )
+    .at_opt(span)
+    .label(label)
+}
+
+/// E174: a stated limit below what the description needs.
+fn at_least(
+    cx: &mut Checker,
+    (key, value, span): (&str, u16, Range<usize>),
+    needed: u16,
+    what: &str,
+) {
+    if value < needed {
         cx.push(
             Diagnostic::error(
                 "E174",
-                format!("max_length = {value} is less than the parameter telegram's {len} bytes"),
+                format!("{key} = {value} is less than {what} ({needed})"),
             )
-            .at(max.span())
+            .at(span)
             .label("too small")
             .help(format!(
-                "state at least {len}, or leave it out: gsdc writes the telegram's length"
+                "state at least {needed}, or leave it out: gsdc writes {what}"
             )),
         );
     }
-    Some(value)
 }
 
 /// Whether User_Prm_Data carries a set's entries: all but a setting the
