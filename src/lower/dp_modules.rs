@@ -68,6 +68,18 @@ fn module(
             let (number, layout) = ppo_type(cx, ppo, ppo5_pzd_words)?;
             (Some(number), config_bytes(layout), Some(layout))
         }
+        (None, Some(data)) if data.get_ref().is_empty() => {
+            cx.push(
+                Diagnostic::error(
+                    "E117",
+                    format!("module \"{}\" has no data", m.name.get_ref()),
+                )
+                .at(data.span())
+                .label("no identifier")
+                .help("a module carries one config identifier at least; `{}` is an empty place"),
+            );
+            return None;
+        }
         (None, Some(data)) => {
             let ids: Vec<(Identifier, bool)> = data
                 .get_ref()

@@ -826,11 +826,16 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
         .collect();
     super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
-    let bits = raw
-        .bits
-        .iter()
-        .filter_map(|b| diagnosis_bit(cx, b, bits))
-        .collect();
+    let mut seen = std::collections::BTreeSet::new();
+    let mut lowered = Vec::new();
+    for b in &raw.bits {
+        if !seen.insert(*b.bit.get_ref()) {
+            cx.duplicate(format!("diagnosis bit {}", b.bit.get_ref()), b.bit.span());
+            continue;
+        }
+        lowered.extend(diagnosis_bit(cx, b, bits));
+    }
+    let bits = lowered;
     Some(Diagnosis {
         length,
         areas,

@@ -36,7 +36,12 @@ pub fn dp_lines(gsd: &Path) -> Vec<String> {
         .data_const
         .iter()
         .find(|(offset, _)| *offset == 0)
-        .map_or_else(|| "none".to_string(), |(_, bytes)| hex(bytes));
+        // DPV1_Status_1..3: the first bytes of the constant at byte 0
+        // (a card may state more, under its own parameters).
+        .map_or_else(
+            || "none".to_string(),
+            |(_, bytes)| hex(&bytes[..bytes.len().min(3)]),
+        );
     // The length of the telegram a master builds from the GSD (gsd-parser
     // leaves `length` to modules' parameters).
     let len = gsd_parser::PrmBuilder::new(prm).into_bytes().len();
@@ -92,18 +97,39 @@ pub fn hex(bytes: &[u8]) -> String {
 }
 
 /// Bytes of input and output the config identifiers say (general format:
-/// bits 5-4 the direction, bit 6 words, bits 3-0 the length less one).
+/// bits 5-4 the direction, bit 6 words, bits 3-0 the length less one; or
+/// the special format, whose length bytes say each way).
 fn config_lengths(config: &[u8]) -> (usize, usize) {
-    config.iter().fold((0, 0), |(input, output), &byte| {
-        let unit = if byte & 0x40 != 0 { 2 } else { 1 };
-        let len = unit * (usize::from(byte & 0x0F) + 1);
-        match (byte >> 4) & 0x03 {
-            0b01 => (input + len, output),
-            0b10 => (input, output + len),
-            0b11 => (input + len, output + len),
-            _ => (input, output),
+    let (mut input, mut output) = (0, 0);
+    let mut bytes = config.iter().copied();
+    while let Some(id) = bytes.next() {
+        let direction = (id >> 4) & 0x03;
+        if direction == 0 {
+            // The special format (IEC 61158-6-3): bit 7 an output length
+            // byte follows, bit 6 an input one, bits 3-0 that many
+            // manufacturer bytes after them.
+            let special = |length: u8| {
+                let unit = if length & 0x40 != 0 { 2 } else { 1 };
+                unit * (usize::from(length & 0x3F) + 1)
+            };
+            if id & 0x80 != 0 {
+                output += bytes.next().map_or(0, special);
+            }
+            if id & 0x40 != 0 {
+                input += bytes.next().map_or(0, special);
+            }
+            bytes.by_ref().take(usize::from(id & 0x0F)).for_each(drop);
+            continue;
         }
-    })
+        let unit = if id & 0x40 != 0 { 2 } else { 1 };
+        let len = unit * (usize::from(id & 0x0F) + 1);
+        match direction {
+            0b01 => input += len,
+            0b10 => output += len,
+            _ => (input, output) = (input + len, output + len),
+        }
+    }
+    (input, output)
 }
 
 /// A PPO's channels from its identifiers: the PKW's 4 consistent words
