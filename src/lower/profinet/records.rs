@@ -50,9 +50,9 @@ pub fn plans(
         MappingKind::Dpv1Index => m.dpv1_index.is_some(),
         MappingKind::Setting => !desc.settings.is_empty(),
     };
-    // Each index in use, with where the description writes it (not at all
-    // for gsdc's default).
-    let mut used: BTreeMap<u16, Option<Range<usize>>> = BTreeMap::new();
+    // Each index in use, with the kind of its record and where the
+    // description writes it (not at all for gsdc's default).
+    let mut used: BTreeMap<u16, (MappingKind, Option<Range<usize>>)> = BTreeMap::new();
     kinds
         .into_iter()
         .filter_map(|(kind, given, default)| {
@@ -74,22 +74,24 @@ pub fn plans(
                 }
             };
             match used.get(&index) {
-                // Shown where the description writes the index: here, or at
-                // the other record when this one is gsdc's default.
-                Some(other) => {
-                    let (span, label) = match written {
-                        Some(span) => (Some(span), "used by another record".to_string()),
-                        None => (other.clone(), format!("{}'s index by default", kind.key())),
-                    };
-                    cx.push(
-                        Diagnostic::error("E105", format!("record index {index} is used twice"))
-                            .at_opt(span)
-                            .label(label)
-                            .help("give each record its own index under [profinet.records]"),
+                Some((other_kind, other)) => {
+                    two_records(
+                        cx,
+                        index,
+                        (kind, written.clone()),
+                        (*other_kind, other.clone()),
                     );
                 }
                 None => {
-                    used.insert(index, written);
+                    if !custom_index_clash(
+                        cx,
+                        desc,
+                        mappings,
+                        index,
+                        (kind, written.clone(), p.span()),
+                    ) {
+                        used.insert(index, (kind, written));
+                    }
                 }
             }
             let name = match given.as_ref().and_then(|r| r.get_ref().name.as_ref()) {
@@ -99,6 +101,109 @@ pub fn plans(
             Some(RecordPlan { kind, index, name })
         })
         .collect()
+}
+
+/// E105: two parameter records at one index, shown where the description
+/// writes each index (one of them may be gsdc's default, written nowhere).
+fn two_records(
+    cx: &mut Checker,
+    index: u16,
+    (kind, written): (MappingKind, Option<Range<usize>>),
+    (other_kind, other): (MappingKind, Option<Range<usize>>),
+) {
+    let label = |kind: MappingKind, written: bool| match written {
+        true => format!("the record of {}", kind.key()),
+        false => format!("{}'s record has index {index} by default", kind.key()),
+    };
+    let (first, second) = match (written, other) {
+        (Some(here), other) => (
+            (here, label(kind, true)),
+            other.map(|o| (o, label(other_kind, true))),
+        ),
+        (None, Some(other)) => {
+            let both = format!("{}, and {}", label(other_kind, true), label(kind, false));
+            ((other, both), None)
+        }
+        (None, None) => unreachable!("gsdc's default indexes differ"),
+    };
+    let mut d = Diagnostic::error(
+        "E105",
+        format!(
+            "record index {index} is used twice: the records of {} and {} would be one record of each module",
+            other_kind.key(),
+            kind.key()
+        ),
+    )
+    .at(first.0)
+    .label(first.1)
+    .help("give each record its own index under [profinet.records]");
+    if let Some((span, label)) = second {
+        d = d.also(span, label);
+    }
+    cx.push(d);
+}
+
+/// E105 when a parameter record's index is one of the custom indexes
+/// (`[mappings.dpv1_index]`), which are records of the same numbers on
+/// each module: a read of the custom index would read the parameter
+/// record. `record` is the kind, where its index is written (nowhere for
+/// gsdc's default) and the `[profinet]` table. Whether it clashed.
+fn custom_index_clash(
+    cx: &mut Checker,
+    desc: &raw::Description,
+    mappings: &Mappings,
+    index: u16,
+    (kind, written, profinet): (MappingKind, Option<Range<usize>>, Range<usize>),
+) -> bool {
+    let (Some(custom), Some(group)) = (
+        &desc.mappings.dpv1_index,
+        mappings.group(MappingKind::Dpv1Index),
+    ) else {
+        return false;
+    };
+    let Some((_, entry)) = group
+        .entries()
+        .find(|(_, e)| u16::from(e.key.number) == index)
+    else {
+        return false;
+    };
+    let label = match written {
+        Some(_) => format!("the record of {}", kind.key()),
+        None => format!(
+            "{}'s record has index {index} by default: no `{}` here",
+            kind.key(),
+            kind.key()
+        ),
+    };
+    cx.push(
+        Diagnostic::error(
+            "E105",
+            format!(
+                "record index {index} is used twice: the record of {} and the custom index {}",
+                kind.key(),
+                entry.name.en
+            ),
+        )
+        .at(written.unwrap_or(profinet))
+        .label(label)
+        .also(
+            custom.first.span(),
+            format!(
+                "{} to {} are records {} to {} of each module",
+                group.sets[0].entries[0].name.en,
+                group.sets.last().and_then(|s| s.entries.last()).map_or("", |e| e.name.en.as_str()),
+                custom.first.get_ref(),
+                custom.last.get_ref()
+            ),
+        )
+        .help(format!(
+            "give the record of {} an index outside the custom indexes {} to {} under [profinet.records]",
+            kind.key(),
+            custom.first.get_ref(),
+            custom.last.get_ref()
+        )),
+    );
+    true
 }
 
 /// E139: a record for a kind of mapping the description does not have.
