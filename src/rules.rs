@@ -110,6 +110,7 @@ pub const RULES: &[Rule] = &[
     rule("E155", "not a function-code prefix or separator"),
     rule("E156", "function-code widths not both given"),
     rule("E157", "a per-module setting's PROFIBUS side not said"),
+    rule("E158", "set at the drive and written by the master"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

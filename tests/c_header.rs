@@ -256,7 +256,7 @@ const MANUAL_TESTS: [&str; 38] = [
     "mv810_error_reply",
     "mv810_control_and_status_words",
     "mv810_standard_telegram_1_is_two_words",
-    "mv810_mapping_records",
+    "mv810_mappings_set_at_the_drive",
     "pi9000_command_word_in_ppo3",
     "pi9000_fault_code_diagnosis",
     "pi9000_default_user_prm",

@@ -180,6 +180,21 @@ pub struct Mapping {
     /// DPV1 indexes only: the bytes of the record each index reads and
     /// writes; the layout refuses records of another length.
     pub record_length: Option<Spanned<u8>>,
+    /// Where the drive's parameters of these mappings are set.
+    pub set_at: Option<Spanned<SetAt>>,
+}
+
+/// Where a mapping's or setting's drive parameters are set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SetAt {
+    /// At the drive (its keypad, a PKW write, the drive's own tool): no
+    /// User_Prm_Data or parameter record carries them, and the master
+    /// writes nothing at startup.
+    Drive,
+    /// By the master at every startup: User_Prm_Data on PROFIBUS, the
+    /// module's parameter records on PROFINET.
+    Master,
 }
 
 /// One drive parameter with its meaning, like MV810's P43.01 (0 standard
@@ -199,6 +214,8 @@ pub struct Setting {
     /// cannot change (MV810's P43.01: 1 for user-defined modules, 0 for
     /// standard telegram 1).
     pub per_module: Option<Spanned<PerModule>>,
+    /// Where the drive parameter is set.
+    pub set_at: Option<Spanned<SetAt>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -19,7 +19,7 @@ pub use decision::{Decision, DecisionKind};
 pub use gateway::Gateway;
 pub use mapping::{
     Allowed, EntryKey, FixedByModule, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet,
-    Mappings, SetKey,
+    Mappings, SetAt, SetKey,
 };
 pub use names::Ident;
 pub(crate) use names::Scope;

@@ -508,10 +508,11 @@ fn user_prm(
     }
 }
 
-/// Whether User_Prm_Data carries a set's entries: all but a setting the
-/// description keeps from a PROFIBUS master (`per_module.profibus`).
+/// Whether User_Prm_Data carries a set's entries: all the master sets,
+/// but a setting the description keeps from a PROFIBUS master
+/// (`per_module.profibus`); none set at the drive.
 fn in_user_prm(set: &MappingSet) -> bool {
-    set.fixed.is_none_or(|f| f.in_user_prm)
+    set.master_writes() && set.fixed.is_none_or(|f| f.in_user_prm)
 }
 
 /// A gateway's parameters from `start` on, within the limit (E116).

@@ -9,7 +9,7 @@ use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
 use crate::ir::profinet::ParameterRecord;
-use crate::ir::{EntryKey, Ir, MappingKind};
+use crate::ir::{EntryKey, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -28,7 +28,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             lang.t("Parameters: mappings and settings", "参数：映射与设置")
         },
     );
-    if let Some(p) = &ir.profibus {
+    where_set(doc, ir, lang);
+    if let Some(p) = ir.profibus.as_ref().filter(|p| p.user_prm.len > 0) {
         user_prm(doc, ir, p, lang);
     }
     dpv1_indexes(doc, ir, lang);
@@ -47,6 +48,111 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         }
     }
     choices(doc, ir, lang);
+}
+
+/// Where each set's drive parameters are set, and what carries them: the
+/// master's User_Prm_Data and records, or nothing, at the drive.
+fn where_set(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let sets: Vec<&MappingSet> = ir.mappings.sets().collect();
+    if sets.is_empty() {
+        return;
+    }
+    doc.subsection(
+        "where-set",
+        lang.t("Where each mapping is set", "各映射在何处设置"),
+    );
+    let by_master = sets.iter().any(|s| s.master_writes());
+    let at_drive = sets.iter().any(|s| !s.master_writes());
+    if by_master {
+        doc.para(text(lang.t(
+            "Set by the master: the configuration tool holds the values, and the master writes them at every startup, on PROFIBUS in the parameter telegram (User_Prm_Data), on PROFINET in the module's parameter records. A value changed at the drive is overwritten at the next startup.",
+            "由主站设置：数值保存在组态软件中，主站在每次启动时写入，PROFIBUS 通过参数报文（User_Prm_Data），PROFINET 通过模块的参数记录。在变频器上修改的值会在下次启动时被覆盖。",
+        )));
+    }
+    if at_drive {
+        doc.para(text(lang.t(
+            "Set at the drive: with its keypad, a PKW write or the drive's own tool, as its parameters. No parameter telegram or record carries them: the master writes nothing at startup, and the card uses what the drive holds.",
+            "在变频器上设置：通过键盘、PKW 写操作或变频器自身的工具，作为其功能参数设置。参数报文和参数记录都不包含这些参数：主站在启动时不写入任何值，扩展卡使用变频器中保存的值。",
+        )));
+    }
+    let rows = sets
+        .iter()
+        .map(|set| {
+            let first = &set.entries[0];
+            let last = &set.entries[set.entries.len() - 1];
+            let parameters = match (first.parameter, last.parameter) {
+                (Some(a), Some(b)) if a != b => code(lang.f(
+                    format!(
+                        "{} to {}",
+                        super::parameter_name(ir, a),
+                        super::parameter_name(ir, b)
+                    ),
+                    format!(
+                        "{}～{}",
+                        super::parameter_name(ir, a),
+                        super::parameter_name(ir, b)
+                    ),
+                )),
+                _ => drive_parameter(ir, first),
+            };
+            vec![
+                text(super::set_name(lang, set)),
+                parameters,
+                text(match set.master_writes() {
+                    true => lang.t("by the master", "由主站设置"),
+                    false => lang.t("at the drive", "在变频器上设置"),
+                }),
+                text(carriers(ir, lang, set)),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t("Where each mapping is set", "各映射的设置位置"),
+        &[
+            lang.t("Mapping", "映射"),
+            lang.t("Drive parameters", "变频器参数"),
+            lang.t("Set", "设置"),
+            lang.t("Carried by", "承载方式"),
+        ],
+        rows,
+    );
+}
+
+/// What carries a set's values to the card: User_Prm_Data's bytes, the
+/// PROFINET record, or nothing (set at the drive).
+fn carriers(ir: &Ir, lang: Lang, set: &MappingSet) -> String {
+    let mut found = Vec::new();
+    let placed = |e: &crate::ir::MappingEntry| {
+        ir.profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.placed(PrmValue::Entry(e.key)))
+    };
+    if let (Some(first), Some(last)) = (
+        set.entries.first().and_then(placed),
+        set.entries.last().and_then(placed),
+    ) {
+        let end = last.offset + last.data_type.bytes() - 1;
+        found.push(format!("User_Prm_Data {}", bytes(lang, first.offset, end)));
+    }
+    let record = ir.profinet.as_ref().and_then(|p| {
+        p.modules.iter().flat_map(|m| &m.records).find(|r| {
+            r.refs
+                .iter()
+                .any(|f| set.entries.iter().any(|e| e.key == f.entry))
+        })
+    });
+    if let Some(record) = record {
+        found.push(lang.f(
+            format!("record {}", record.index),
+            format!("记录 {}", record.index),
+        ));
+    }
+    match found.is_empty() {
+        true => lang
+            .t("nothing: the drive holds them", "无：由变频器保存")
+            .to_string(),
+        false => found.join(lang.t("; ", "；")),
+    }
 }
 
 /// For each record index, the longest record a module carries.

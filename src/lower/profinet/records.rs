@@ -50,6 +50,12 @@ pub fn plans(
         MappingKind::Dpv1Index => m.dpv1_index.is_some(),
         MappingKind::Setting => !desc.settings.is_empty(),
     };
+    // The master writes a record of a kind when it sets one of its sets.
+    let master_writes = |kind| {
+        mappings
+            .group(kind)
+            .is_some_and(|g| g.sets.iter().any(MappingSet::master_writes))
+    };
     // Each index in use, with the kind of its record and where the
     // description writes it (not at all for gsdc's default).
     let mut used: BTreeMap<u16, (MappingKind, Option<Range<usize>>)> = BTreeMap::new();
@@ -62,6 +68,12 @@ pub fn plans(
             }
             // A kind whose mappings failed has said why.
             mappings.group(kind)?;
+            if !master_writes(kind) {
+                if let Some(span) = written {
+                    set_at_the_drive(cx, kind, span, set_at_span(desc, kind));
+                }
+                return None;
+            }
             let index = match given.as_ref().zip(written.clone()) {
                 Some((record, span)) => {
                     let index = *record.get_ref().index.get_ref();
@@ -206,6 +218,46 @@ fn custom_index_clash(
     true
 }
 
+/// E158: a record for a kind of mapping the description sets at the drive,
+/// where the master writes nothing.
+fn set_at_the_drive(
+    cx: &mut Checker,
+    kind: MappingKind,
+    span: Range<usize>,
+    said: Option<Range<usize>>,
+) {
+    let table = match kind {
+        MappingKind::Setting => "every setting of [[settings]] has".to_string(),
+        kind => format!("[mappings.{}] has", kind.key()),
+    };
+    let mut d = Diagnostic::error(
+        "E158",
+        format!("a record for {}, which the drive's own settings hold", kind.key()),
+    )
+    .at(span)
+    .label("the master would write it at every startup")
+    .help(format!(
+        "{table} set_at = \"drive\": no record carries it; remove this index, or say set_at = \"master\" if the master sets it"
+    ));
+    if let Some(said) = said {
+        d = d.also(said, "set at the drive");
+    }
+    cx.push(d);
+}
+
+/// Where the description says a kind is set at the drive: the mapping's
+/// `set_at`, or the first setting's.
+fn set_at_span(desc: &raw::Description, kind: MappingKind) -> Option<Range<usize>> {
+    let m = &desc.mappings;
+    let said = match kind {
+        MappingKind::PzdOut => m.pzd_out.as_ref()?.set_at.as_ref(),
+        MappingKind::PzdIn => m.pzd_in.as_ref()?.set_at.as_ref(),
+        MappingKind::Dpv1Index => m.dpv1_index.as_ref()?.set_at.as_ref(),
+        MappingKind::Setting => desc.settings.iter().find_map(|s| s.set_at.as_ref()),
+    };
+    said.map(Spanned::span)
+}
+
 /// E139: a record for a kind of mapping the description does not have.
 fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
     let table = match kind {
@@ -284,6 +336,9 @@ fn ref_value<'a>(
         MappingKind::PzdOut | MappingKind::PzdIn => entry.key.number <= layout.pzd_words,
         _ => true,
     };
+    if !set.master_writes() {
+        return None;
+    }
     match (module, set.fixed) {
         (ModuleKind::Pzd, fixed) if carried => Some((set, entry, fixed.map(|f| f.user_defined))),
         (ModuleKind::StandardTelegram1, Some(fixed)) => {

@@ -402,47 +402,29 @@ mod mv810 {
         assert_eq!(TELEGRAM1_IDENT, 0x10);
     }
 
-    /// The PZD mappings as PROFINET records: PZD2..12 out by P43.02..12.
+    /// The PZD mappings are P43.02..P43.12 (out) and P43.13..P43.23 (in),
+    /// with section 3's choices (15 and 26 values, "15～30：保留" and
+    /// "26～30：保留" left out). Section 4 sets them, and P43.01, at the
+    /// drive, as function codes: no module carries a parameter record, so
+    /// the controller writes nothing at startup and the card keeps what the
+    /// keypad set.
     #[test]
-    fn mapping_records() {
+    fn mappings_set_at_the_drive() {
         assert_eq!(
             pzd_out::MAPPINGS.map(|m| m.parameter.unwrap() - p43_02()),
             core::array::from_fn(|i| i as u16)
         );
         assert_eq!(pzd_in::MAPPINGS[0].parameter, Some(0x2B0D)); // P43.13
-        let mut record = [0; 22];
-        record[1] = 1; // PZD2: frequency reference
-        assert_eq!(pzd_out::decode_record(&record).unwrap()[0], 1);
-        record[3] = 15; // PZD3: 15 is reserved
-        assert_eq!(
-            pzd_out::decode_record(&record),
-            Err(PrmError::NotAllowed {
-                offset: 2,
-                value: 15
-            })
-        );
-        assert_eq!(
-            settings::decode_record(&[0, 1]),
-            Ok([settings::Choice::UserDefinedMessage.value()])
-        );
+        assert!((0..=14).all(|v| pzd_out::ALLOWED.contains(v)));
+        assert!(!pzd_out::ALLOWED.contains(15));
+        assert!((0..=25).all(|v| pzd_in::ALLOWED.contains(v)));
+        assert!(!pzd_in::ALLOWED.contains(26));
+        assert!(settings::ALLOWED.contains(settings::Choice::UserDefinedMessage.value()));
         assert_eq!(settings::DEFAULTS, [1]);
-    }
-
-    /// Section 4: P43.01 is 0 for standard message 1 and 1 for the
-    /// user-defined message, so each module fixes it: standard telegram 1
-    /// writes 0, every module of PKW and PZD words 1.
-    #[test]
-    fn each_module_fixes_the_message_type() {
-        for (ident, value) in settings::FIXED_1 {
-            let expected = if ident == TELEGRAM1_IDENT {
-                settings::Choice::StandardMessage1
-            } else {
-                settings::Choice::UserDefinedMessage
-            };
-            assert_eq!(settings::Choice::from_value(value), Some(expected));
+        assert_eq!(PN_DEVICE.modules.len(), 13);
+        for module in PN_DEVICE.modules {
+            assert!(module.records.is_empty(), "{}", module.name);
         }
-        assert!(settings::FIXED_1.contains(&(PKW_PZD12_IDENT, 1)));
-        assert!(settings::FIXED_1.contains(&(TELEGRAM1_IDENT, 0)));
     }
 }
 
