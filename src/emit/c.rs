@@ -600,7 +600,7 @@ fn group_item(ir: &Ir, names: &Names, g: &MappingGroup) -> GroupItem {
     GroupItem {
         lower: names.lower(module),
         field: module,
-        doc: comment(group_doc(g.kind)),
+        doc: comment(&group_doc(g)),
         sets,
         entries,
         defaults,

@@ -8,7 +8,7 @@ pub mod rust;
 mod tables;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Direction, Holds, Ir, MappingKind, PkwKind};
+use crate::ir::{Direction, Holds, Ir, MappingGroup, MappingKind, PkwKind};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -180,16 +180,24 @@ fn range_doc(holder: &str, holds: Holds, min: u16, max: u16) -> String {
     )
 }
 
-/// What a group of mappings is, in the generated code's doc comments.
-fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
+/// What a group of mappings is, and where its drive parameters are set,
+/// in the generated code's doc comments.
+fn group_doc(g: &MappingGroup) -> String {
+    let what = match g.kind {
         MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
         MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
         MappingKind::Dpv1Index => {
             "The DPV1 record indexes: the parameter each one reads and writes."
         }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
+        MappingKind::Setting => "Single drive parameters.",
+    };
+    let by_master = g.sets.iter().filter(|s| s.master_writes()).count();
+    let set = match (by_master, g.sets.len() - by_master) {
+        (_, 0) => "The master writes them at startup.",
+        (0, _) => "Set at the drive (keypad, PKW, the drive's own tool): the master writes none of them, and no parameter record or User_Prm_Data carries them.",
+        _ => "The master writes some of them at startup, those User_Prm_Data or the records carry; the others are set at the drive.",
+    };
+    format!("{what} {set}")
 }
 
 /// `Bit 3`, `Bits 9-10`: a field's bits, to begin a doc comment.

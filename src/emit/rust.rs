@@ -115,7 +115,7 @@ struct Variant {
 #[derive(Serialize)]
 struct Group {
     module: &'static str,
-    doc: &'static str,
+    doc: String,
     sets: Vec<SetAllowed>,
     entries: Vec<Entry>,
     user_prm_offset: Option<u16>,
@@ -505,7 +505,7 @@ fn group(ir: &Ir, g: &MappingGroup) -> Group {
     let record = ir.profinet.as_ref().and_then(|p| p.record(g.kind));
     Group {
         module: g.kind.key(),
-        doc: group_doc(g.kind),
+        doc: group_doc(g),
         sets: g.sets.iter().map(|set| set_allowed(set, single)).collect(),
         entries: g.sets.iter().flat_map(|set| set_entries(ir, set)).collect(),
         user_prm_offset: ir
