@@ -324,6 +324,22 @@ pub struct Diagnosis {
     pub length: Spanned<u8>,
     #[serde(default)]
     pub areas: Vec<DiagnosisArea>,
+    /// What the block reports, as the manual says it.
+    pub info: Option<Spanned<Text>>,
+    /// What each byte after the header is, numbered as the diagnosis
+    /// (the 6 standard bytes, then the header at byte 6).
+    #[serde(default)]
+    pub bytes: Vec<DiagnosisByte>,
+}
+
+/// One byte of the device-related block, as the manual names it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosisByte {
+    /// Counted from the diagnosis' first byte: 7 is the first after the
+    /// header, as SFC13's record numbers it.
+    pub byte: Spanned<u8>,
+    pub text: Spanned<Text>,
 }
 
 #[derive(Debug, Deserialize)]

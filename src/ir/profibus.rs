@@ -330,6 +330,18 @@ pub struct PrmText {
 pub struct Diagnosis {
     pub length: u8,
     pub areas: Vec<DiagnosisArea>,
+    /// What the block reports, as the manual says it.
+    pub info: Option<Text>,
+    /// What bytes after the header are, by their place in the diagnosis
+    /// (the header is byte [`STANDARD_DIAG_BYTES`]), ascending.
+    pub bytes: Vec<(u8, Text)>,
+}
+
+impl Diagnosis {
+    /// What byte `at` of the diagnosis is, when the description says.
+    pub fn byte(&self, at: u8) -> Option<&Text> {
+        self.bytes.iter().find(|(b, _)| *b == at).map(|(_, t)| t)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -571,7 +571,49 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
         .collect();
     super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
-    Some(Diagnosis { length, areas })
+    let info = raw
+        .info
+        .as_ref()
+        .map(|i| cx.text(i, None, "the diagnosis' info"));
+    let bytes = diagnosis_bytes(cx, &raw.bytes, length);
+    Some(Diagnosis {
+        length,
+        areas,
+        info,
+        bytes,
+    })
+}
+
+/// Each byte the description names, within the block after its header
+/// (E101) and named once (E105), in the order of the bytes.
+fn diagnosis_bytes(
+    cx: &mut Checker,
+    given: &[raw::DiagnosisByte],
+    length: u8,
+) -> Vec<(u8, crate::ir::Text)> {
+    let header = STANDARD_DIAG_BYTES;
+    let last = header + length - 1;
+    let mut bytes: Vec<(u8, crate::ir::Text)> = Vec::new();
+    for b in given {
+        let at = *b.byte.get_ref();
+        if !(header + 1..=last).contains(&at) {
+            cx.push(
+                Diagnostic::error("E101", format!("byte {at} is not in the device-related block"))
+                    .at(b.byte.span())
+                    .label(format!("the block's bytes after its header are {} to {last}", header + 1))
+                    .help(format!("bytes are counted from the diagnosis' first: 0 to {} the standard diagnosis, {header} the header", header - 1)),
+            );
+            continue;
+        }
+        let text = cx.text(&b.text, None, "a diagnosis byte's text");
+        if bytes.iter().any(|(known, _)| *known == at) {
+            cx.duplicate(format!("diagnosis byte {at}"), b.byte.span());
+            continue;
+        }
+        bytes.push((at, text));
+    }
+    bytes.sort_by_key(|(at, _)| *at);
+    bytes
 }
 
 /// An area named after its bits: `BITS_8_15` and `Bits8To15`.
@@ -625,4 +667,44 @@ fn diagnosis_area(
         ident: constants.unique(constant, first),
         values: value_set(cx, ident, &a.values, (0, max_value), Some(GSD_NAME_LEN)),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    /// md810dp with its diagnosis bytes as `bytes`.
+    fn with_bytes(bytes: &str) -> crate::Diagnostics {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let start = text.find("bytes = [\n").expect("md810dp names its bytes");
+        let end = start + text[start..].find("\n]\n").unwrap() + 3;
+        let text = format!("{}bytes = {bytes}\n{}", &text[..start], &text[end..]);
+        crate::testing::load("md810dp.toml", &text).1
+    }
+
+    fn errors(d: &crate::Diagnostics) -> Vec<(&'static str, String)> {
+        d.errors().map(|e| (e.code, e.message.clone())).collect()
+    }
+
+    /// The bytes after the header are 7 and 8 of a 3-byte block: byte 6 is
+    /// the header, 9 past the block; a byte named twice is one too many.
+    #[test]
+    fn diagnosis_bytes_are_those_after_the_header() {
+        let ir_text = |b: &str| errors(&with_bytes(b));
+        assert_eq!(
+            ir_text("[{ byte = 7, text = \"x\" }, { byte = 8, text = \"y\" }]"),
+            []
+        );
+        for outside in [6, 9] {
+            assert_eq!(
+                ir_text(&format!("[{{ byte = {outside}, text = \"x\" }}]")),
+                [(
+                    "E101",
+                    format!("byte {outside} is not in the device-related block")
+                )]
+            );
+        }
+        assert_eq!(
+            ir_text("[{ byte = 7, text = \"x\" }, { byte = 7, text = \"y\" }]"),
+            [("E105", "diagnosis byte 7 is given twice".to_string())]
+        );
+    }
 }

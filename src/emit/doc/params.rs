@@ -392,6 +392,9 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         format!("The slave's diagnosis: {STANDARD_DIAG_BYTES} standard bytes, then the device-related block of {} bytes, its header byte first (bits 7-6 = 00, bits 5-0 = the block's length). Unit_Diag_Area bits count from bit 0 of the byte after the header.", d.length),
         format!("从站诊断数据：{STANDARD_DIAG_BYTES} 个标准字节，之后是 {} 字节的设备专用诊断块，首字节为块头（位 7-6 = 00，位 5-0 = 块长度）。Unit_Diag_Area 的位从块头后一个字节的位 0 算起。", d.length),
     )));
+    if let Some(info) = &d.info {
+        doc.para(text(lang.text(info)));
+    }
     doc.table(
         lang.t("The diagnosis, byte by byte", "诊断数据各字节"),
         &[lang.t("Byte", "字节"), lang.t("Content", "内容")],
@@ -420,13 +423,20 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
             .filter(|a| a.first_bit < bit_of_byte + 8 && a.last_bit >= bit_of_byte)
             .map(|a| format!("Unit_Diag_Area {}", bits(lang, a.first_bit, a.last_bit)))
             .collect();
-        let content = if areas.is_empty() {
-            lang.t("device-related, not described", "设备专用，未定义")
-                .to_string()
-        } else {
-            areas.join(", ")
+        let at = header + byte;
+        let said = d.byte(at).map(|t| lang.text(t).to_string());
+        let content = match (said, areas.is_empty()) {
+            (Some(said), true) => said,
+            (Some(said), false) => lang.f(
+                format!("{said}: {}", areas.join(", ")),
+                format!("{said}：{}", areas.join("、")),
+            ),
+            (None, false) => areas.join(", "),
+            (None, true) => lang
+                .t("device-related, not described", "设备专用，未定义")
+                .to_string(),
         };
-        let at = u16::from(header + byte);
+        let at = u16::from(at);
         rows.push(vec![text(bytes(lang, at, at)), text(content)]);
     }
     rows
