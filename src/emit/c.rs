@@ -792,11 +792,15 @@ fn diagnosis_items(names: &Names, file_name: &str, d: &Diagnosis) -> DiagnosisIt
     let empty: Vec<String> = std::iter::once(header)
         .chain((1..d.length).map(|_| "0x00U".to_string()))
         .collect();
+    let said: String = super::diagnosis_said(d)
+        .iter()
+        .map(|line| format!(" {line}"))
+        .collect();
     DiagnosisItems {
         doc: comment(&format!(
             "The device-related diagnosis {file_name} describes: a header byte, \
              then the bytes its Unit_Diag_Areas read. Each area's bits are \
-             read and written with gsdc_diag_area_get and gsdc_diag_area_set."
+             read and written with gsdc_diag_area_get and gsdc_diag_area_set.{said}"
         )),
         len: d.length,
         header: format!("0x{:02X}U", d.length),

@@ -200,6 +200,23 @@ fn group_doc(g: &MappingGroup) -> String {
     format!("{what} {set}")
 }
 
+/// What the description says of the device-related diagnosis block and of
+/// its bytes, in English, for the layouts' comments: one line each.
+fn diagnosis_said(d: &crate::ir::profibus::Diagnosis) -> Vec<String> {
+    let header = crate::ir::profibus::STANDARD_DIAG_BYTES;
+    d.info
+        .iter()
+        .map(|info| format!("{}.", info.en.trim_end_matches('.')))
+        .chain(d.bytes.iter().map(|(at, text)| {
+            format!(
+                "Byte {at} of the diagnosis (byte {} of the block): {}.",
+                at - header,
+                text.en.trim_end_matches('.')
+            )
+        }))
+        .collect()
+}
+
 /// `Bit 3`, `Bits 9-10`: a field's bits, to begin a doc comment.
 fn bit_range(first: u16, last: u16) -> String {
     if first == last {

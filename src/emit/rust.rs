@@ -178,6 +178,9 @@ struct DiagnosisItems {
     /// Bytes of the block, the header included; also the header byte.
     len: u8,
     areas: Vec<DiagAreaItem>,
+    /// What the description says of the block and of its bytes, a
+    /// paragraph each.
+    said: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -666,6 +669,10 @@ fn diagnosis_items(d: &Diagnosis) -> DiagnosisItems {
     DiagnosisItems {
         len: d.length,
         areas,
+        said: super::diagnosis_said(d)
+            .iter()
+            .map(|line| doc_text(line))
+            .collect(),
     }
 }
 
