@@ -22,11 +22,16 @@ pub struct Diagnostic {
     /// Short text printed under the caret.
     pub label: Option<Box<str>>,
     pub help: Option<Box<str>>,
-    /// The GSD keyword or GSDML element the diagnostic is about, for tools.
-    pub subject: Option<Box<str>>,
-    /// A second place the finding is about, with its own label: the other
-    /// of two things that clash (two records at one index).
-    pub also: Option<Box<Also>>,
+    /// What few diagnostics have, boxed so that a diagnostic stays small
+    /// (it is the error of many a `Result`): see [`Diagnostic::subject`]
+    /// and [`Diagnostic::also`].
+    pub(crate) extra: Option<Box<Extra>>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub(crate) struct Extra {
+    subject: Option<Box<str>>,
+    also: Option<Also>,
 }
 
 /// The second place of a diagnostic about two.
@@ -58,8 +63,7 @@ impl Diagnostic {
             span: None,
             label: None,
             help: None,
-            subject: None,
-            also: None,
+            extra: None,
         }
     }
 
@@ -84,12 +88,23 @@ impl Diagnostic {
     }
 
     /// The other place a finding about two is about, and what is there.
-    pub fn also(mut self, span: Range<usize>, label: impl Into<String>) -> Self {
-        self.also = Some(Box::new(Also {
+    pub fn also_at(mut self, span: Range<usize>, label: impl Into<String>) -> Self {
+        self.extra.get_or_insert_default().also = Some(Also {
             span,
             label: label.into().into_boxed_str(),
-        }));
+        });
         self
+    }
+
+    /// The GSD keyword or GSDML element the diagnostic is about, for tools.
+    pub fn subject(&self) -> Option<&str> {
+        self.extra.as_ref()?.subject.as_deref()
+    }
+
+    /// The second place of a finding about two things that clash (two
+    /// records at one index), with its label.
+    pub fn also(&self) -> Option<&Also> {
+        self.extra.as_ref()?.also.as_ref()
     }
 
     pub fn is_error(&self) -> bool {
@@ -130,12 +145,11 @@ impl Diagnostics {
     /// yet, with `subject_at(offset)`.
     pub fn name_subjects(&mut self, mut subject_at: impl FnMut(usize) -> Option<String>) {
         for d in &mut self.0 {
-            if d.subject.is_none() {
-                d.subject = d
-                    .span
-                    .as_ref()
-                    .and_then(|span| subject_at(span.start))
-                    .map(String::into_boxed_str);
+            if d.subject().is_none() {
+                let subject = d.span.as_ref().and_then(|span| subject_at(span.start));
+                if let Some(subject) = subject {
+                    d.extra.get_or_insert_default().subject = Some(subject.into_boxed_str());
+                }
             }
         }
     }
@@ -249,7 +263,7 @@ impl Source<'_> {
                 String::new()
             }
         };
-        if let Some(also) = &diagnostic.also {
+        if let Some(also) = diagnostic.also() {
             let also_pad =
                 self.render_snippet(&mut out, also.span.clone(), ":::", Some(&also.label));
             pad = pad.max(also_pad);
@@ -438,7 +452,7 @@ mod tests {
         let d = Diagnostic::error("E105", "two records at index 1")
             .at(index..index + 1)
             .label("this one")
-            .also(first..first + 1, "and this one")
+            .also_at(first..first + 1, "and this one")
             .help("move one");
         let rendered = Source {
             name: "x.toml",

@@ -111,6 +111,8 @@ pub const RULES: &[Rule] = &[
     rule("E156", "function-code widths not both given"),
     rule("E157", "a per-module setting's PROFIBUS side not said"),
     rule("E158", "set at the drive and written by the master"),
+    rule("E159", "a set-up step disagrees with a mapping"),
+    rule("E160", "an example the telegrams cannot carry"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -50,11 +50,11 @@ pub fn finding(source: &Source, d: &Diagnostic) -> String {
         column,
         severity: d.severity.as_str(),
         code: d.code,
-        subject: d.subject.as_deref(),
+        subject: d.subject(),
         message: &d.message,
         label: d.label.as_deref(),
         help: d.help.as_deref(),
-        also: d.also.as_deref().map(|also| {
+        also: d.also().map(|also| {
             let (line, column) = line_col(source.text, also.span.start);
             AlsoAt {
                 line,

@@ -36,6 +36,104 @@ pub struct Description {
     pub profinet: Option<Spanned<Profinet>>,
     /// A card that carries the data of another bus's nodes.
     pub gateway: Option<Spanned<gateway::Gateway>>,
+    /// What the manual tells the user to set on the drive and the card,
+    /// group by group as it gives them.
+    #[serde(default)]
+    pub setup: Vec<SetupGroup>,
+    /// The manual's worked examples of telegrams, byte by byte.
+    #[serde(default)]
+    pub examples: Vec<Example>,
+}
+
+/// A group of set-up steps: one table of the manual, or one of the ways
+/// it describes (MV810's conventional PN, PN to 485 master, PN to 485
+/// slave).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupGroup {
+    /// The manual's section: `1.2`, `4`, `V-2-1`.
+    pub section: Spanned<String>,
+    /// The manual's heading of the group, or of the way it describes.
+    pub title: Option<Spanned<Text>>,
+    /// What the manual says before the steps.
+    pub info: Option<Spanned<Text>>,
+    pub steps: Vec<SetupStep>,
+    /// What the manual says after them.
+    pub note: Option<Spanned<Text>>,
+}
+
+/// One thing the manual tells the user to set or look at: a drive
+/// parameter (or a run of them), or an item that is not one (a DIP
+/// switch, an LED, a parameter of the master's configuration).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupStep {
+    /// A drive parameter, as the manual writes it.
+    pub parameter: Option<Spanned<Address>>,
+    /// A run of drive parameters, first and last: `["P43.02", "P43.12"]`.
+    pub parameters: Option<Spanned<[Spanned<Address>; 2]>>,
+    /// What is set when it is not a drive parameter: `"1,2"` (DIP
+    /// switches), `"Green"` (an LED), `"PZD3(master->slaver)"`.
+    pub item: Option<Spanned<Text>>,
+    /// The manual's name of it: `DP 地址`, `Power Indicator`.
+    pub name: Option<Spanned<Text>>,
+    /// The value to set, as the manual prints it: `"2"`, `"3.0 s"`.
+    pub value: Option<Spanned<Text>>,
+    /// The factory default the manual gives.
+    pub default: Option<Spanned<String>>,
+    /// What the manual says of it.
+    pub meaning: Option<Spanned<Text>>,
+    /// A table of settings and what each means (DIP switch positions).
+    #[serde(default)]
+    pub values: Vec<SetupValue>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupValue {
+    pub value: Spanned<Text>,
+    pub text: Spanned<Text>,
+}
+
+/// A telegram the manual prints, byte by byte.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Example {
+    /// The manual's section: `1.4.2`.
+    pub section: Spanned<String>,
+    /// The module (PPO type or PROFINET module) whose telegram it is; for
+    /// the PKW words alone, every module with the PKW channel when absent.
+    pub module: Option<Spanned<String>>,
+    pub direction: Spanned<ExampleDirection>,
+    /// Which words the bytes are: the module's whole telegram, or its PKW
+    /// words.
+    pub part: Option<Spanned<ExamplePart>>,
+    /// As the manual prints them: hex words or bytes, and a name for a word
+    /// the manual leaves open (`70F0 0800 0000 errCode`).
+    pub bytes: Spanned<String>,
+    /// The values a named word stands for: `{ errCode = [1, 2, 3, 4] }`.
+    #[serde(default)]
+    pub placeholders: BTreeMap<Spanned<String>, Spanned<Vec<Spanned<i64>>>>,
+    /// What the manual says the telegram is.
+    pub meaning: Spanned<Text>,
+    /// The caption of the manual's figure that shows it.
+    pub figure: Option<Spanned<Text>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ExampleDirection {
+    /// Master to drive.
+    Out,
+    /// Drive to master.
+    In,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ExamplePart {
+    Telegram,
+    Pkw,
 }
 
 /// The vendor's manual the description's texts and values come from.

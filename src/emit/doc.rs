@@ -15,6 +15,7 @@ mod identity;
 mod page;
 mod params;
 mod pkw;
+mod setup;
 mod svg;
 mod telegrams;
 
@@ -150,6 +151,7 @@ fn document(ir: &Ir, lang: Lang) -> page::Doc {
     );
     let mut doc = Builder::new(lang, title);
     identity::section(&mut doc, ir, lang);
+    setup::section(&mut doc, ir, lang);
     telegrams::section(&mut doc, ir, lang);
     telegrams::words_section(&mut doc, ir, lang);
     gateway::section(&mut doc, ir, lang);

@@ -7,6 +7,7 @@
 mod cyclic;
 mod decision;
 pub mod gateway;
+pub mod manual;
 pub mod mapping;
 mod names;
 pub mod numbering;
@@ -53,6 +54,10 @@ pub struct Ir {
     pub profinet: Option<Profinet>,
     /// A gateway's nodes, parameters and diagnosis (with `profibus`).
     pub gateway: Option<Gateway>,
+    /// What the manual tells the user to set on the drive and the card.
+    pub setup: Vec<manual::SetupGroup>,
+    /// The manual's worked examples, each a telegram the modules carry.
+    pub examples: Vec<manual::Example>,
 }
 
 /// A text in English and any other languages the description gives.

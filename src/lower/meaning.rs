@@ -95,7 +95,7 @@ fn per_module_settings(
                 )
                 .at(per_module.span())
                 .label("each module would write it at startup")
-                .also(drive.span(), "set at the drive")
+                .also_at(drive.span(), "set at the drive")
                 .help("a module's parameter record writes the value it fixes; a setting set at the drive has no record: remove per_module, or say set_at = \"master\""),
             );
             continue;

@@ -7,6 +7,7 @@
 mod checks;
 mod choices;
 mod gateway;
+mod manual;
 mod mappings;
 mod meaning;
 mod ppo;
@@ -90,6 +91,13 @@ pub fn lower(
             &set_spans,
         );
     }
+    let setup = manual::setup(&mut cx, &desc.setup, numbering.as_ref(), &mappings);
+    let telegrams = manual::Telegrams {
+        pkw: telegram.pkw,
+        profibus: profibus.as_ref().and_then(Option::as_ref),
+        profinet: profinet.as_ref().and_then(Option::as_ref),
+    };
+    let examples = manual::examples(&mut cx, &desc.examples, &telegrams);
     let manual_languages = desc
         .manual
         .as_ref()
@@ -119,6 +127,8 @@ pub fn lower(
         profibus: profibus.flatten(),
         profinet: profinet.flatten(),
         gateway: gateway.map(|g| g.gateway),
+        setup,
+        examples,
     };
     (Some(ir), diagnostics)
 }

@@ -4,7 +4,8 @@
 
 use super::page::{code, text, Builder, Cell, Run};
 use super::{bytes, parameter_name, Lang};
-use crate::ir::{Holds, Ir, PkwKind};
+use crate::ir::manual::{Example, ExamplePart, ExampleWord};
+use crate::ir::{Direction, Holds, Ir, PkwKind};
 use crate::pkw::profidrive::{Meaning, PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
 use crate::pkw::{pkw_station_command as station, U16Be};
@@ -286,6 +287,9 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
         errors.iter().map(|(e, m)| code_row(e.code(), m)).collect(),
     );
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
@@ -311,22 +315,22 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
             telegram(done(0), &[('v', done(ANY))]),
         ),
     ];
-    for (error, meaning) in &errors {
-        let failed = pke::PkwResponse::Failed {
-            address,
-            error: *error,
-        }
-        .encode();
-        rows.push(example_row(
-            lang.f(format!("read {name}"), format!("读 {name}")),
-            telegram(read, &[]),
-            &lang.f(
-                format!("cannot execute: {meaning}"),
-                format!("无法执行：{meaning}"),
+    // The error code varies: any of the table's (not one guessed for a read).
+    let failed = |error| pke::PkwResponse::Failed { address, error }.encode();
+    let (first, last) = (errors[0].0, errors[errors.len() - 1].0);
+    rows.push(example_row(
+        lang.f(format!("read {name}"), format!("读 {name}")),
+        telegram(read, &[]),
+        &lang.f(
+            format!(
+                "cannot execute: error code eeee, {} to {}",
+                first.code(),
+                last.code()
             ),
-            telegram(failed, &[]),
-        ));
-    }
+            format!("无法执行：错误代码 eeee，{}～{}", first.code(), last.code()),
+        ),
+        telegram(failed(first), &[('e', every_bit_of_pwe_low(failed(first)))]),
+    ));
     rows.push(example_row(
         lang.t("no request", "无请求").to_string(),
         telegram(pke::PkwRequest::None.encode(), &[]),
@@ -334,9 +338,163 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         telegram(pke::PkwResponse::None.encode(), &[]),
     ));
     examples_table(doc, lang, rows);
-    doc.para(text(
-        lang.t("vvvv: the parameter's value.", "vvvv：参数值。"),
-    ));
+    doc.para(text(lang.t(
+        "vvvv: the parameter's value; eeee: the error code.",
+        "vvvv：参数值；eeee：错误代码。",
+    )));
+}
+
+/// The manual's examples of the PKW channel, as it prints them, each read
+/// by the firmware's codec; whether there are any.
+fn manual_examples(doc: &mut Builder, ir: &Ir, lang: Lang) -> bool {
+    let examples: Vec<&Example> = ir
+        .examples
+        .iter()
+        .filter(|e| e.part == ExamplePart::Pkw || example_layout(ir, e).is_some_and(|l| l.pkw))
+        .collect();
+    if examples.is_empty() {
+        return false;
+    }
+    doc.para(text(lang.t(
+        "The manual's examples, as it prints them; the last column is what the firmware layout's codec reads in them (gsdc's words).",
+        "手册中的示例，按手册原样列出；最后一列为固件数据布局的解码代码对其的解读（gsdc 的说明）。",
+    )));
+    let rows = examples
+        .iter()
+        .map(|e| {
+            let mut manual = e.section.clone();
+            if let Some(figure) = &e.figure {
+                manual = lang.f(
+                    format!("{manual}, {}", lang.text(figure)),
+                    format!("{manual}，{}", lang.text(figure)),
+                );
+            }
+            vec![
+                text(manual),
+                text(match &e.module {
+                    Some(module) => module.clone(),
+                    None => lang
+                        .t("the PKW words of every module", "各模块的 PKW")
+                        .to_string(),
+                }),
+                text(match e.direction {
+                    Direction::Out => lang.t("master → drive", "主站 → 变频器"),
+                    Direction::In => lang.t("drive → master", "变频器 → 主站"),
+                }),
+                code(e.printed.clone()),
+                text(lang.text(&e.meaning)),
+                text(read_by_codec(ir, lang, e)),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t("Worked examples of the manual", "手册中的应用举例"),
+        &[
+            lang.t("Manual", "手册"),
+            lang.t("Module", "模块"),
+            lang.t("Direction", "方向"),
+            lang.t("Bytes as printed", "数据（手册原样）"),
+            lang.t("Meaning (the manual's)", "含义（手册原文）"),
+            lang.t("Read by the codec", "解码结果"),
+        ],
+        rows,
+    );
+    true
+}
+
+/// The layout of an example's module, when it names one.
+fn example_layout(ir: &Ir, e: &Example) -> Option<crate::ir::Layout> {
+    let module = e.module.as_deref()?;
+    let ppo = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .find(|m| m.name == module)
+        .map(|m| m.layout);
+    let pn = || {
+        ir.profinet
+            .iter()
+            .flat_map(|p| &p.modules)
+            .find(|m| m.name.text.en == module)
+            .map(|m| m.layout)
+    };
+    ppo.or_else(pn)
+}
+
+/// What the codec reads in each telegram the example stands for: one, or
+/// one per value of its named word (`errCode = 1: ...`).
+fn read_by_codec(ir: &Ir, lang: Lang, e: &Example) -> String {
+    let named: Vec<(&str, &[u16])> = e
+        .words
+        .iter()
+        .filter_map(|w| match w {
+            ExampleWord::Named { name, values } => Some((name.as_str(), values.as_slice())),
+            ExampleWord::Bytes(_) => None,
+        })
+        .collect();
+    let read = |bytes: &[u8]| codec_summary(ir, lang, e.direction, crate::pkw::pkw_words(bytes));
+    let instances = e.instances();
+    match named.as_slice() {
+        [(name, values)] if values.len() == instances.len() => values
+            .iter()
+            .zip(&instances)
+            .map(|(value, bytes)| format!("{name} = {value}: {}", read(bytes)))
+            .collect::<Vec<_>>()
+            .join(lang.t("; ", "；")),
+        _ => instances
+            .iter()
+            .map(|bytes| read(bytes))
+            .collect::<Vec<_>>()
+            .join(lang.t("; ", "；")),
+    }
+}
+
+/// One PKW request or response in words: `read F0-08`, `done: F0-08 =
+/// 5000 (0x1388)`, `cannot execute F0-08: illegal command`.
+fn codec_summary(ir: &Ir, lang: Lang, direction: Direction, words: [U16Be; 4]) -> String {
+    let name = |address| parameter_name(ir, address);
+    let value = |v: u16| format!("{v} (0x{v:04X})");
+    match (ir.telegram.pkw, direction) {
+        (PkwKind::PkeIndPwe, Direction::Out) => match pke::PkwRequest::decode(&words) {
+            Ok(pke::PkwRequest::None) => lang.t("no request", "无请求").into(),
+            Ok(pke::PkwRequest::Read { address }) => lang.f(
+                format!("read {}", name(address)),
+                format!("读 {}", name(address)),
+            ),
+            Ok(pke::PkwRequest::Write { address, value: v }) => lang.f(
+                format!("change {} to {}", name(address), value(v)),
+                format!("将 {} 改为 {}", name(address), value(v)),
+            ),
+            Err(_) => lang.t("refused", "拒绝").into(),
+        },
+        (PkwKind::PkeIndPwe, Direction::In) => match pke::PkwResponse::decode(&words) {
+            Ok(pke::PkwResponse::None) => lang.t("no request", "无请求").into(),
+            Ok(pke::PkwResponse::Done { address, value: v }) => lang.f(
+                format!("done: {} = {}", name(address), value(v)),
+                format!("操作正确：{} = {}", name(address), value(v)),
+            ),
+            Ok(pke::PkwResponse::Failed { address, error }) => {
+                let meaning = error_codes(lang)
+                    .iter()
+                    .find(|(e, _)| *e == error)
+                    .map_or("", |(_, m)| *m);
+                lang.f(
+                    format!("cannot execute {}: {meaning}", name(address)),
+                    format!("无法执行 {}：{meaning}", name(address)),
+                )
+            }
+            Err(_) => lang.t("refused", "拒绝").into(),
+        },
+        // Lowering checked that the codec takes every example.
+        (_, Direction::Out) => lang.t("a request the codec reads", "可解码的请求").into(),
+        (_, Direction::In) => lang.t("a response the codec reads", "可解码的响应").into(),
+    }
+}
+
+/// `words` with PWE low's every bit changed: the word varies whole.
+fn every_bit_of_pwe_low(mut words: [U16Be; 4]) -> [U16Be; 4] {
+    words[3] = U16Be::new(!words[3].get());
+    words
 }
 
 fn error_codes(lang: Lang) -> [(pke::PkwErrorCode, &'static str); 4] {
@@ -446,6 +604,9 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         "The manual lists no error codes: the reply to a failed request carries the drive's error code in PKW3.",
         "手册未列出错误码：错误应答在 PKW3 中返回变频器的错误码。",
     )));
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
@@ -740,6 +901,9 @@ fn any_parameter(subindex: u8) -> profidrive::Parameter {
 
 fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
     use profidrive::{PkwRequest as Q, PkwResponse as R};
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };

@@ -150,7 +150,7 @@ fn two_records(
     .label(first.1)
     .help("give each record its own index under [profinet.records]");
     if let Some((span, label)) = second {
-        d = d.also(span, label);
+        d = d.also_at(span, label);
     }
     cx.push(d);
 }
@@ -198,7 +198,7 @@ fn custom_index_clash(
         )
         .at(written.unwrap_or(profinet))
         .label(label)
-        .also(
+        .also_at(
             custom.first.span(),
             format!(
                 "{} to {} are records {} to {} of each module",
@@ -240,7 +240,7 @@ fn set_at_the_drive(
         "{table} set_at = \"drive\": no record carries it; remove this index, or say set_at = \"master\" if the master sets it"
     ));
     if let Some(said) = said {
-        d = d.also(said, "set at the drive");
+        d = d.also_at(said, "set at the drive");
     }
     cx.push(d);
 }

@@ -1,0 +1,124 @@
+//! Setting up the drive: what the manual tells the user to set on the drive
+//! and the card (parameters, switches) and the indicators it describes,
+//! group by group as the manual gives them, before the telegrams.
+
+use super::page::{code, text, Builder, Cell};
+use super::{parameter_name, Lang};
+use crate::ir::manual::{SetupGroup, SetupStep, SetupTarget};
+use crate::ir::Ir;
+
+pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    if ir.setup.is_empty() {
+        return;
+    }
+    doc.section("setup", lang.t("Setting up the drive", "变频器设置"));
+    doc.para(text(lang.t(
+        "What the manual tells the user to set on the drive and the card, and what it says of them, each table as the section of the manual it names gives it.",
+        "手册要求在变频器和扩展卡上进行的设置及其说明，每个表格按所注明的手册章节列出。",
+    )));
+    for group in &ir.setup {
+        group_table(doc, ir, lang, group);
+    }
+}
+
+fn group_table(doc: &mut Builder, ir: &Ir, lang: Lang, group: &SetupGroup) {
+    if let Some(info) = &group.info {
+        doc.para(text(lang.text(info)));
+    }
+    let has = |f: fn(&SetupStep) -> bool| group.steps.iter().any(f);
+    let columns = [
+        has(|s| s.name.is_some()),
+        has(|s| s.value.is_some()),
+        has(|s| s.default.is_some()),
+        has(|s| s.meaning.is_some() || !s.values.is_empty()),
+    ];
+    let head: Vec<&str> = [
+        lang.t("Setting", "设置项"),
+        lang.t("Name", "名称"),
+        lang.t("Value", "值"),
+        lang.t("Default", "默认值"),
+        lang.t("Meaning", "含义"),
+    ]
+    .into_iter()
+    .zip(std::iter::once(true).chain(columns))
+    .filter_map(|(h, shown)| shown.then_some(h))
+    .collect();
+    let rows = group
+        .steps
+        .iter()
+        .map(|step| {
+            let cells = [
+                (true, target(ir, lang, &step.target)),
+                (columns[0], optional(lang, step.name.as_ref())),
+                (columns[1], optional(lang, step.value.as_ref())),
+                (columns[2], text(step.default.as_deref().unwrap_or("—"))),
+                (columns[3], text(meaning(lang, step))),
+            ];
+            cells
+                .into_iter()
+                .filter_map(|(shown, cell)| shown.then_some(cell))
+                .collect()
+        })
+        .collect();
+    let caption = match &group.title {
+        Some(title) => lang.f(
+            format!("Manual {}: {}", group.section, lang.text(title)),
+            format!("手册 {}：{}", group.section, lang.text(title)),
+        ),
+        None => lang.f(
+            format!("Manual {}", group.section),
+            format!("手册 {}", group.section),
+        ),
+    };
+    doc.table(caption, &head, rows);
+    if let Some(note) = &group.note {
+        doc.para(text(lang.text(note)));
+    }
+}
+
+/// What a step sets: a drive parameter as the drive names it, a run of
+/// them, or the manual's item.
+fn target(ir: &Ir, lang: Lang, target: &SetupTarget) -> Cell {
+    match target {
+        SetupTarget::Parameter(address) => code(parameter_name(ir, *address)),
+        SetupTarget::Parameters(first, last) => code(lang.f(
+            format!(
+                "{} to {}",
+                parameter_name(ir, *first),
+                parameter_name(ir, *last)
+            ),
+            format!(
+                "{}～{}",
+                parameter_name(ir, *first),
+                parameter_name(ir, *last)
+            ),
+        )),
+        SetupTarget::Item(item) => text(lang.text(item)),
+        _ => text("—"),
+    }
+}
+
+fn optional(lang: Lang, t: Option<&crate::ir::Text>) -> Cell {
+    text(t.map_or("—", |t| lang.text(t)))
+}
+
+/// The meaning, then the table of values the manual gives, each with its
+/// text: `配置 DP 节地址; 0: 禁止 DP 功能; 1~125: DP 通讯地址`.
+fn meaning(lang: Lang, step: &SetupStep) -> String {
+    let values = step.values.iter().map(|(value, meaning)| {
+        lang.f(
+            format!("{}: {}", lang.text(value), lang.text(meaning)),
+            format!("{}：{}", lang.text(value), lang.text(meaning)),
+        )
+    });
+    let parts: Vec<String> = step
+        .meaning
+        .iter()
+        .map(|m| lang.text(m).to_string())
+        .chain(values)
+        .collect();
+    match parts.is_empty() {
+        true => "—".to_string(),
+        false => parts.join(lang.t("; ", "；")),
+    }
+}
