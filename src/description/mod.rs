@@ -365,10 +365,11 @@ pub struct Profibus {
     pub slave_family: Spanned<String>,
     #[serde(default)]
     pub auto_baud: bool,
-    #[serde(default)]
-    pub freeze_mode: bool,
-    #[serde(default)]
-    pub sync_mode: bool,
+    /// Freeze_Mode_supp, Sync_Mode_supp and Fail_Safe: what the card's DP
+    /// stack does; gsdc's default (false, W104) when unsaid.
+    pub freeze_mode: Option<Spanned<bool>>,
+    pub sync_mode: Option<Spanned<bool>>,
+    pub fail_safe: Option<Spanned<bool>>,
     pub dpv1: Option<Spanned<Dpv1>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }

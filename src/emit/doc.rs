@@ -275,6 +275,7 @@ fn decision_kind(lang: Lang, kind: DecisionKind) -> &'static str {
         DecisionKind::Placeholder => lang.t("placeholder", "占位值"),
         DecisionKind::Choice => lang.t("the description's own choice", "描述文件自行确定"),
         DecisionKind::Convention => lang.t("gsdc's numbering", "gsdc 编号"),
+        DecisionKind::Layout => lang.t("gsdc's layout", "gsdc 布局"),
         DecisionKind::Requirement => lang.t("required of the firmware", "固件须支持"),
         _ => lang.t("gsdc's default", "gsdc 默认值"),
     }

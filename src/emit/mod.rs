@@ -277,6 +277,7 @@ pub(crate) fn header_notes(ir: &Ir) -> Vec<String> {
         }
     }
     notes.extend(ir.decisions.iter().map(|d| d.summary()));
+    notes.extend(ir.wording.iter().map(|w| w.summary()));
     notes
 }
 

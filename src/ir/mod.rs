@@ -58,6 +58,47 @@ pub struct Ir {
     pub setup: Vec<manual::SetupGroup>,
     /// The manual's worked examples, each a telegram the modules carry.
     pub examples: Vec<manual::Example>,
+    /// The texts of the device files that no manual gives: gsdc wrote them
+    /// (a module's name, a port's), or wrote them around the description's
+    /// words (a module's info text). Every generated file lists them.
+    pub wording: Vec<Wording>,
+}
+
+/// A text gsdc wrote into a device file: where it stands and what it is.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Wording {
+    /// `GSDML IDT_PORT_1`, `GSD Module`.
+    pub place: String,
+    pub text: Text,
+    /// Whether it has the description's words in it, gsdc's around them.
+    pub around_the_descriptions: bool,
+}
+
+impl Wording {
+    /// One line for the headers, in English (a GSD's header is ASCII):
+    /// `gsdc's wording: GSDML IDT_PORT_1 = "Port 1" (gsdc's, not the
+    /// description's)`.
+    pub fn summary(&self) -> String {
+        let others: Vec<&str> = self
+            .text
+            .others
+            .iter()
+            .map(|(code, _)| code.as_str())
+            .collect();
+        let translated = match others.as_slice() {
+            [] => String::new(),
+            codes => format!("; in {} gsdc's translation", codes.join(", ")),
+        };
+        let whose = match self.around_the_descriptions {
+            true => "gsdc's words around the description's",
+            false => "gsdc's, not the description's",
+        };
+        format!(
+            "gsdc's wording: {} = \"{}\" ({whose}{translated})",
+            self.place, self.text.en
+        )
+    }
 }
 
 /// A text in English and any other languages the description gives.

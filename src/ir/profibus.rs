@@ -33,6 +33,9 @@ pub struct Profibus {
     pub auto_baud: bool,
     pub freeze_mode: bool,
     pub sync_mode: bool,
+    /// Fail_Safe: the slave takes a Data_Exchange without output data (a
+    /// master in Clear) as well as one with zeros.
+    pub fail_safe: bool,
     pub dpv1: Option<Dpv1>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,

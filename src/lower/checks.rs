@@ -21,6 +21,10 @@ pub struct Checker {
     /// The prefix of the first name the description writes each address
     /// with (`Numbering::written_prefixes`).
     written_prefixes: BTreeMap<u16, String>,
+    /// Every text the description gives, in every language, and those
+    /// lowering renders from them (a mapping's name for each entry): what
+    /// the device files say that gsdc did not write.
+    given: BTreeSet<String>,
 }
 
 /// Where the defaults of several items come from: `default` for all of
@@ -47,6 +51,7 @@ impl Checker {
             languages: BTreeSet::new(),
             decisions: Vec::new(),
             written_prefixes: BTreeMap::new(),
+            given: BTreeSet::new(),
         }
     }
 
@@ -88,6 +93,13 @@ impl Checker {
     /// carry it, so the firmware cannot drift from it).
     pub fn convention(&mut self, path: &str, value: impl ToString, reason: &str) {
         self.listed(DecisionKind::Convention, path, value, reason);
+    }
+
+    /// How gsdc lays out bytes the manual gives no place for (User_Prm_Data's
+    /// offsets, config identifiers): listed in every header, not warned
+    /// about (the layouts carry every number).
+    pub fn layout(&mut self, path: &str, value: impl ToString, reason: &str) {
+        self.listed(DecisionKind::Layout, path, value, reason);
     }
 
     /// What gsdc's device file says the card does where the description
@@ -272,11 +284,27 @@ impl Checker {
             .map(|(code, other)| (code.get_ref().clone(), other.get_ref().clone()))
             .collect();
         others.sort();
-        ir::Text {
+        let text = ir::Text {
             en: text.en.get_ref().clone(),
             others,
             gsd: text.gsd.as_ref().map(|g| g.get_ref().clone()),
-        }
+        };
+        self.given(&text);
+        text
+    }
+
+    /// Records `text` as the description's: lowering rendered it from the
+    /// description's words alone.
+    pub fn given(&mut self, text: &ir::Text) {
+        self.given.insert(text.en.clone());
+        self.given
+            .extend(text.others.iter().map(|(_, other)| other.clone()));
+        self.given.extend(text.gsd.clone());
+    }
+
+    /// The texts the description gave, and those rendered from them.
+    pub fn take_given(&mut self) -> BTreeSet<String> {
+        std::mem::take(&mut self.given)
     }
 
     /// Where the defaults of `count` items come from: exactly one of

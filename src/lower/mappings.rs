@@ -329,7 +329,7 @@ fn build_set(
     };
     let name = cx.text(parts.name, None, what);
     check_rendered_name(cx, parts.name, &name, last, what);
-    let entries = (first..=last)
+    let entries: Vec<MappingEntry> = (first..=last)
         .zip(defaults)
         .map(|(number, (default, _))| MappingEntry {
             key: EntryKey { kind, number },
@@ -338,6 +338,9 @@ fn build_set(
             parameter: parameter.map(|base| base + u16::from(number - first)),
         })
         .collect();
+    for entry in &entries {
+        cx.given(&entry.name);
+    }
     let holds = match allowed {
         Allowed::Choices(_) => Holds::Choice,
         Allowed::Range { .. } => parts.holds,

@@ -14,6 +14,7 @@ mod ppo;
 mod profibus;
 mod profinet;
 mod telegram;
+mod wording;
 
 use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
@@ -102,6 +103,7 @@ pub fn lower(
         .manual
         .as_ref()
         .map_or_else(Vec::new, |m| manual_languages(&mut cx, m));
+    let given = cx.take_given();
     let mut decisions = cx.take_decisions();
     decisions.extend(choices::lower(&mut cx, &desc.choices, text));
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
@@ -114,6 +116,15 @@ pub fn lower(
     if diagnostics.has_errors() {
         return (None, diagnostics);
     }
+    let profibus = profibus.flatten();
+    let profinet = profinet.flatten();
+    let gateway = gateway.map(|g| g.gateway);
+    let wording = wording::wording(
+        &given,
+        profibus.as_ref(),
+        gateway.as_ref(),
+        profinet.as_ref(),
+    );
     let ir = Ir {
         source_name: safe_file_name(source_name),
         fingerprint: Fingerprint::of(text),
@@ -124,11 +135,12 @@ pub fn lower(
         languages,
         decisions,
         manual_languages,
-        profibus: profibus.flatten(),
-        profinet: profinet.flatten(),
-        gateway: gateway.map(|g| g.gateway),
+        profibus,
+        profinet,
+        gateway,
         setup,
         examples,
+        wording,
     };
     (Some(ir), diagnostics)
 }

@@ -45,7 +45,20 @@ pub fn lower(
     gateway: Option<&gateway::Lowered>,
     has_symbol: bool,
 ) -> Option<Profibus> {
+    let near = p.span();
     let p = p.get_ref();
+    let mut feature = |given: &Option<Spanned<bool>>, key: &str| match given {
+        Some(said) => *said.get_ref(),
+        None => {
+            cx.defaulted(&format!("profibus.{key}"), false, near.clone());
+            false
+        }
+    };
+    let (freeze_mode, sync_mode, fail_safe) = (
+        feature(&p.freeze_mode, "freeze_mode"),
+        feature(&p.sync_mode, "sync_mode"),
+        feature(&p.fail_safe, "fail_safe"),
+    );
     let gsd_revision = match &p.gsd_revision {
         Some(r) => cx.spanned_in_range(r, 1, 5, "gsd_revision")?,
         None => DEFAULT_GSD_REVISION,
@@ -87,6 +100,7 @@ pub fn lower(
         );
     }
     let modules = modules(cx, p, telegram);
+    layout_decisions(cx, &modules, &user_prm, gateway.is_some());
     let max_len = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
     // A gateway's modules are plugged together up to its limits.
     let (max_input_len, max_output_len) = gateway.map_or((max_len, max_len), |g| {
@@ -121,14 +135,69 @@ pub fn lower(
         )?,
         slave_family: slave_family(cx, &p.slave_family),
         auto_baud: p.auto_baud,
-        freeze_mode: p.freeze_mode,
-        sync_mode: p.sync_mode,
+        freeze_mode,
+        sync_mode,
+        fail_safe,
         dpv1,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
         bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
         diagnosis,
     })
+}
+
+/// What the GSD lays out by gsdc's rules where the manual gives no bytes:
+/// each module's config identifiers, Max_Module and User_Prm_Data's order
+/// and offsets, listed in every header (the layouts carry each number).
+fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm, gateway: bool) {
+    if !modules.is_empty() {
+        let bytes: Vec<String> = modules
+            .iter()
+            .map(|m| {
+                let config: Vec<String> = m.config.iter().map(|b| format!("0x{b:02X}")).collect();
+                format!("PPO{} {}", m.ppo, config.join(","))
+            })
+            .collect();
+        cx.layout(
+            "profibus config identifiers",
+            format!(
+                "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): {}",
+                bytes.join("; ")
+            ),
+            "the manual gives no config byte: PROFIdrive's PPO form, one general identifier byte each; the layouts carry each",
+        );
+        cx.layout(
+            "profibus Max_Module",
+            1,
+            "a PPO type is the whole telegram, so the master plugs one module",
+        );
+    }
+    if gateway || user_prm.blocks.is_empty() {
+        return;
+    }
+    let mut places: Vec<String> = Vec::new();
+    if !user_prm.constant.is_empty() {
+        places.push(format!(
+            "DPV1_Status_1..3 at bytes 0-{}",
+            user_prm.constant.len() - 1
+        ));
+    }
+    for block in &user_prm.blocks {
+        let last = block
+            .params
+            .last()
+            .map_or(block.offset, |p| p.offset + p.data_type.bytes() - 1);
+        places.push(format!(
+            "{} at bytes {}-{last}",
+            block.kind.key(),
+            block.offset
+        ));
+    }
+    cx.layout(
+        "profibus User_Prm_Data",
+        format!("{}; one Unsigned16 per entry, high byte first, no gaps", places.join(", ")),
+        "the manual gives the entries, not their bytes: gsdc's order (PZD out, PZD in, DPV1 indexes, settings) and offsets; the layouts carry each",
+    );
 }
 
 /// `MD810DP` of `MD810DP.GSD`: the GSD's bitmap takes its name (8.3, so at

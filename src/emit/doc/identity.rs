@@ -210,6 +210,13 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
         ),
         (lang.t("Sync mode", "Sync 模式"), yes_no(lang, p.sync_mode)),
         (
+            lang.t(
+                "Fail_Safe (no output data in Clear)",
+                "Fail_Safe（Clear 时无输出数据）",
+            ),
+            yes_no(lang, p.fail_safe),
+        ),
+        (
             lang.t("Input and output bytes at most", "最大输入、输出字节数"),
             text(format!("{}, {}", p.max_input_len, p.max_output_len)),
         ),
@@ -305,29 +312,6 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         ),
     );
-    if let Some(p) = &ir.profibus {
-        if !p.modules.is_empty() {
-            row(
-                lang.t("Config bytes of each PPO type", "各 PPO 类型的配置字节"),
-                lang.t(
-                    "gsdc: consistent words in and out, derived from the layout",
-                    "gsdc 约定：按数据布局生成的输入输出一致性字",
-                ),
-            );
-        }
-        if !p.user_prm.blocks.is_empty() {
-            row(
-                lang.t(
-                    "Parameter telegram (User_Prm_Data) layout",
-                    "参数报文（User_Prm_Data）布局",
-                ),
-                lang.t(
-                    "gsdc: one Unsigned16 per mapping, in the order of the table, no gaps",
-                    "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙",
-                ),
-            );
-        }
-    }
     if ir.gateway.is_some() {
         row(
             lang.t("Config byte of each gateway module", "各网桥模块的配置字节"),
