@@ -82,6 +82,7 @@ mod description_schema;
 mod device_symbol;
 mod device_tables_c;
 mod docs;
+mod draft_notice;
 mod file_names;
 mod gateway_description;
 mod generated_rust;

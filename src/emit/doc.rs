@@ -144,10 +144,17 @@ fn languages(ir: &Ir) -> Vec<Lang> {
 fn document(ir: &Ir, lang: Lang) -> page::Doc {
     let title = lang.f(
         format!(
-            "{} {}: fieldbus interface",
-            ir.device.vendor, ir.device.model
+            "{}{} {}: fieldbus interface",
+            draft_notice(ir, lang),
+            ir.device.vendor,
+            ir.device.model
         ),
-        format!("{} {}：现场总线接口", ir.device.vendor, ir.device.model),
+        format!(
+            "{}{} {}：现场总线接口",
+            draft_notice(ir, lang),
+            ir.device.vendor,
+            ir.device.model
+        ),
     );
     let mut doc = Builder::new(lang, title);
     identity::section(&mut doc, ir, lang);
@@ -161,6 +168,35 @@ fn document(ir: &Ir, lang: Lang) -> page::Doc {
     gateway::diagnosis_section(&mut doc, ir, lang);
     identity::checklist_section(&mut doc, ir, lang);
     doc.finish()
+}
+
+/// `DRAFT, not for release (placeholders: Ident_Number 0x0810): ` while the
+/// description has a placeholder, naming each; empty when it has none.
+fn draft_notice(ir: &Ir, lang: Lang) -> String {
+    let placeholders: Vec<String> = ir
+        .decisions
+        .iter()
+        .filter(|d| d.kind == DecisionKind::Placeholder)
+        .map(|d| {
+            let name = match d.path.as_str() {
+                "profibus.ident_number" => "Ident_Number",
+                "profinet.vendor_id" => "VendorID",
+                "profinet.device_id" => "DeviceID",
+                other => other,
+            };
+            format!("{name} {}", d.value)
+        })
+        .collect();
+    if placeholders.is_empty() {
+        return String::new();
+    }
+    lang.f(
+        format!(
+            "DRAFT, not for release (placeholders: {}): ",
+            placeholders.join(", ")
+        ),
+        format!("草稿，不得发布（占位值：{}）：", placeholders.join("、")),
+    )
 }
 
 // ---------------------------------------------------------------------------

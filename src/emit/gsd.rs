@@ -146,7 +146,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         software_release: &d.software_release,
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
-        info_text: d.info.as_ref().map(|i| i.for_gsd()),
+        info_text: p.info_text.as_deref(),
         bitmap_device: p.bitmap_device.as_deref(),
         baud_rates: p
             .baud_rates

@@ -44,6 +44,9 @@ pub struct Profibus {
     /// Bitmap_Device, when the device has a symbol: the bitmap's name
     /// without `.bmp`, beside the GSD (at most 8 characters).
     pub bitmap_device: Option<String>,
+    /// Info_Text as STEP 7 and TIA Portal show it: the device's info text,
+    /// after the draft notice while the ident number is a placeholder.
+    pub info_text: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

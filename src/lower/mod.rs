@@ -69,7 +69,7 @@ pub fn lower(
         .map(|g| gateway::lower(&mut cx, g, desc));
     let profibus = desc.profibus.as_ref().map(|p| {
         let plan = (&telegram, &mappings, &set_spans);
-        profibus::lower(&mut cx, p, plan, gateway.as_ref(), device.symbol.is_some())
+        profibus::lower(&mut cx, p, plan, gateway.as_ref(), &device)
     });
     let profinet = desc
         .profinet

@@ -1,7 +1,7 @@
 //! The PROFIBUS part: identity numbers, bus parameters, PPO modules, the
 //! parameter telegram and the diagnosis.
 
-use super::checks::{Checker, GSD_NAME_LEN};
+use super::checks::{Checker, GSD_INFO_LEN, GSD_NAME_LEN};
 use super::gateway;
 use super::mappings::SetSpans;
 use super::ppo::{config_bytes, ppo_layout};
@@ -12,7 +12,7 @@ use crate::ir::profibus::{
     Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
     PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
+use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
@@ -43,7 +43,7 @@ pub fn lower(
     p: &Spanned<raw::Profibus>,
     (telegram, mappings, set_spans): (&Telegram, &Mappings, &SetSpans),
     gateway: Option<&gateway::Lowered>,
-    has_symbol: bool,
+    device: &crate::ir::Device,
 ) -> Option<Profibus> {
     let near = p.span();
     let p = p.get_ref();
@@ -141,7 +141,15 @@ pub fn lower(
         dpv1,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
-        bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
+        bitmap_device: device
+            .symbol
+            .is_some()
+            .then(|| gsd_stem(p.file_name.get_ref())),
+        info_text: info_text(
+            device.info.as_ref(),
+            *ident.value.get_ref(),
+            ident.placeholder,
+        ),
         diagnosis,
     })
 }
@@ -198,6 +206,44 @@ fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm,
         format!("{}; one Unsigned16 per entry, high byte first, no gaps", places.join(", ")),
         "the manual gives the entries, not their bytes: gsdc's order (PZD out, PZD in, DPV1 indexes, settings) and offsets; the layouts carry each",
     );
+}
+
+/// Info_Text: the device's info text (its GSD form), after a notice that
+/// the file is a draft while the ident number is a placeholder, so that
+/// STEP 7's and TIA Portal's catalog say it; within the GSD's 256
+/// characters, the info cut at a word (`...`) where the notice leaves too
+/// few.
+fn info_text(info: Option<&Text>, ident: u16, placeholder: bool) -> Option<String> {
+    let info = info.map(|i| i.for_gsd().to_string());
+    if !placeholder {
+        return info;
+    }
+    let notice = format!(
+        "DRAFT, not for release: Ident_Number 0x{ident:04X} is a placeholder, not assigned by PI."
+    );
+    Some(match info {
+        None => notice,
+        Some(info) => within(&format!("{notice} {info}"), GSD_INFO_LEN),
+    })
+}
+
+/// `text`, or as many of its words as fit in `limit` characters with `...`.
+fn within(text: &str, limit: usize) -> String {
+    if text.chars().count() <= limit {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    for word in text.split(' ') {
+        if out.chars().count() + 1 + word.chars().count() + "...".len() > limit {
+            break;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(word);
+    }
+    out.push_str("...");
+    out
 }
 
 /// `MD810DP` of `MD810DP.GSD`: the GSD's bitmap takes its name (8.3, so at
@@ -751,6 +797,29 @@ mod tests {
 
     fn errors(d: &crate::Diagnostics) -> Vec<(&'static str, String)> {
         d.errors().map(|e| (e.code, e.message.clone())).collect()
+    }
+
+    /// A draft's Info_Text is the notice and as much of the info as fits
+    /// GSD's 256 characters, cut at a word.
+    #[test]
+    fn the_draft_notice_keeps_info_text_within_the_gsds_limit() {
+        let long = crate::ir::Text::english("word ".repeat(60).trim_end());
+        let text = super::info_text(Some(&long), 0x0810, true).unwrap();
+        assert!(text.starts_with("DRAFT, not for release: Ident_Number 0x0810 is a placeholder"));
+        assert!(text.ends_with(" word..."), "{text}");
+        assert!(
+            text.chars().count() <= super::GSD_INFO_LEN,
+            "{}",
+            text.len()
+        );
+        assert_eq!(
+            super::info_text(Some(&long), 0x0810, false).unwrap(),
+            long.en
+        );
+        assert_eq!(
+            super::info_text(None, 0x0810, true).unwrap(),
+            "DRAFT, not for release: Ident_Number 0x0810 is a placeholder, not assigned by PI."
+        );
     }
 
     /// The bytes after the header are 7 and 8 of a 3-byte block: byte 6 is

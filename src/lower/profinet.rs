@@ -17,6 +17,37 @@ mod interface;
 mod io;
 mod records;
 
+/// `info` after a notice that the file is a draft, naming the identity
+/// numbers that are placeholders, while any is one: the DAP's InfoText
+/// (and DeviceIdentity's, the same text) is what TIA Portal's catalog shows
+/// of the device. gsdc's words, in English and its Chinese; English on a
+/// text in another language.
+fn draft(
+    info: Text,
+    (vendor, device): (&Spanned<raw::IdentNumber>, &Spanned<raw::IdentNumber>),
+) -> Text {
+    let placeholders: Vec<String> = [("VendorID", vendor), ("DeviceID", device)]
+        .into_iter()
+        .filter(|(_, id)| id.get_ref().placeholder)
+        .map(|(name, id)| format!("{name} 0x{:04X}", id.get_ref().value.get_ref()))
+        .collect();
+    let notice = |language: &str| match (language, placeholders.as_slice()) {
+        (_, []) => String::new(),
+        ("zh", names) => format!(
+            "草稿，不得发布：{} 为占位值，非 PI 分配。",
+            names.join("、")
+        ),
+        (_, [one]) => {
+            format!("DRAFT, not for release: {one} is a placeholder, not assigned by PI. ")
+        }
+        (_, names) => format!(
+            "DRAFT, not for release: {} are placeholders, not assigned by PI. ",
+            names.join(" and ")
+        ),
+    };
+    info.by_language(|language, text| format!("{}{text}", notice(language)))
+}
+
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
 const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
 const DEFAULT_VERSION: Version = Version::new(2, 32);
@@ -103,11 +134,15 @@ pub fn lower(
                 |n| cx.text(n, None, "profinet.name"),
             ),
         ),
-        // The PROFINET part's own info text, else the device's, else its name.
+        // The PROFINET part's own info text, else the device's, else its
+        // name; after the draft notice while an identity is a placeholder.
         device_info: TextRef::new(
             ids::DEVICE_INFO,
-            info.or_else(|| device.info.clone())
-                .unwrap_or_else(|| device.name.clone()),
+            draft(
+                info.or_else(|| device.info.clone())
+                    .unwrap_or_else(|| device.name.clone()),
+                (&p.vendor_id, &p.device_id),
+            ),
         ),
         dns_name: dns_name(cx, &p.dns_name),
         min_device_interval: cx.spanned_in_range(

@@ -16,6 +16,16 @@ pub fn wording(
     profinet: Option<&Profinet>,
 ) -> Vec<Wording> {
     let mut found = Vec::new();
+    // The draft notice before the device's info text.
+    if let Some(info) = profibus.and_then(|p| p.info_text.as_ref()) {
+        if !given.contains(info) {
+            found.push(Wording {
+                place: "GSD Info_Text".to_string(),
+                text: Text::english(info.clone()),
+                around_the_descriptions: has_given_words(given, &Text::english(info.clone())),
+            });
+        }
+    }
     let gsd_modules = profibus
         .into_iter()
         .flat_map(|p| p.modules.iter().map(|m| m.name.clone()))
