@@ -204,7 +204,7 @@ fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm,
     cx.layout(
         "profibus User_Prm_Data",
         format!("{}; one Unsigned16 per entry, high byte first, no gaps", places.join(", ")),
-        "the manual gives the entries, not their bytes: gsdc's order (PZD out, PZD in, DPV1 indexes, settings) and offsets; the layouts carry each",
+        "the manual gives the entries, not their bytes: gsdc's order (the PZD words out, then in, the DPV1 indexes, the settings) and offsets; the layouts carry each",
     );
 }
 
