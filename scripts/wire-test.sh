@@ -128,16 +128,19 @@ dp_exchange() { # description built-gsd
   esac
 }
 
-# The PROFINET exchange plugs in here (wire/pn, another engineer's part):
-# the controller reads the GSDML, the device runs the layout, between two
-# network namespaces.
+# The PROFINET exchange (wire/pn/exchange.sh): every module of the GSDML
+# between the controller, which reads only the GSDML, and the device built
+# from the layout, in network namespaces of its own. It needs root; without
+# it, it says so and this script exits 2.
 pn_exchange() { # description built-gsdml
-  if [ "$(id -u)" -ne 0 ]; then
-    echo "$1: the PROFINET exchange needs root (network namespaces): not run"
-  else
-    echo "$1: the PROFINET exchange (wire/pn) is not in this checkout yet: not run"
-  fi
-  unable=1
+  local flags=()
+  [ -n "$files" ] && flags=(--files "$files")
+  GSDC="$gsdc" "$root/wire/pn/exchange.sh" "${flags[@]}" "$1"
+  case $? in
+    0) ;;
+    1) failed=1 ;;
+    *) unable=1 ;;
+  esac
 }
 
 for i in "${!absolute[@]}"; do

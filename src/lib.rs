@@ -20,6 +20,7 @@ mod emit;
 mod file_kind;
 pub mod gsd;
 pub mod gsdml;
+mod i18n;
 pub mod ir;
 mod latin1;
 mod load;

@@ -21,6 +21,19 @@ pub(crate) use support::{pkw_pke_ind_pwe, pkw_profidrive, pkw_station_command};
 #[cfg_attr(not(feature = "cli"), allow(unused_imports))] // the command line uses them
 pub(crate) use support::{BitField, PKW_BYTES};
 
+/// What an error code of MD810's channel means (manual 1.4.1: the codes
+/// are Modbus's): `gsdc decode` and the datasheet say it.
+pub(crate) fn pke_error_meaning(error: pkw_pke_ind_pwe::PkwErrorCode) -> crate::i18n::Phrase {
+    use crate::i18n::codes as c;
+    use pkw_pke_ind_pwe::PkwErrorCode as E;
+    match error {
+        E::IllegalCommand => c::ILLEGAL_COMMAND,
+        E::IllegalAddress => c::ILLEGAL_ADDRESS,
+        E::IllegalData => c::ILLEGAL_DATA,
+        E::Other => c::OTHER_ERROR,
+    }
+}
+
 /// A gateway's diagnosis places as the firmware's codecs take them: where
 /// the block holds the type, the node and the code, and the node numbers.
 /// The datasheet's encoder and the decoder read no types, so none are

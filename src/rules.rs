@@ -119,6 +119,7 @@ pub const RULES: &[Rule] = &[
     rule("W105", "PZD words no module carries"),
     rule("W106", "the device symbol's colours were reduced"),
     rule("W107", "a DPV1 slave without I&M"),
+    rule("W108", "a language gsdc has no words in"),
     rule("W102", "PROFINET vendor or device ID is a placeholder"),
     rule("E200", "no `#Profibus_DP` line"),
     rule("E201", "cannot read this line"),

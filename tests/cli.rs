@@ -126,6 +126,21 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
         "a bitmap is named, not diffed: {}",
         stdout(&missing)
     );
+    // A text file the build would add is diffed against nothing, and its
+    // diff says that it is missing, not on disk.
+    let gsd = out.join("MD810DP.GSD").display().to_string();
+    assert!(
+        stdout(&missing).contains(&format!(
+            "--- {gsd} (missing)\n+++ {gsd} (from the description)\n"
+        )),
+        "{}",
+        stdout(&missing)
+    );
+    assert!(
+        !stdout(&missing).contains("(on disk)"),
+        "{}",
+        stdout(&missing)
+    );
 
     assert_eq!(
         gsdc(["build", description, "--out", out_arg]).status.code(),
@@ -167,6 +182,7 @@ fn check_is_0_in_step_and_1_with_a_diff_after_a_change_writing_nothing() {
     let changed = gsdc(["build", description, "--out", out_arg, "--check"]);
     assert_eq!(changed.status.code(), Some(1));
     let diff = stdout(&changed);
+    assert!(diff.contains(&format!("--- {gsd} (on disk)\n")), "{diff}");
     assert!(diff.contains("-Min_Slave_Intervall         = 1"), "{diff}");
     assert!(diff.contains("+Min_Slave_Intervall         = 2"), "{diff}");
     let after: Vec<(String, Vec<u8>)> = file_names(&out)

@@ -796,50 +796,6 @@ fn snapshot_gateway_bit_areas_and_drive_fault() {
     });
 }
 
-/// The words of a shell command line: blanks separate them, single quotes
-/// keep blanks inside one (all the documents' examples need).
-fn shell_words(line: &str) -> Vec<String> {
-    let mut words = Vec::new();
-    let mut word: Option<String> = None;
-    let mut quoted = false;
-    for c in line.chars() {
-        match c {
-            '\'' => {
-                quoted = !quoted;
-                word.get_or_insert_with(String::new);
-            }
-            c if c.is_whitespace() && !quoted => words.extend(word.take()),
-            c => word.get_or_insert_with(String::new).push(c),
-        }
-    }
-    words.extend(word);
-    words
-}
-
-/// Every `gsdc decode` example in README.md and docs/wire-format.md prints
-/// what the document shows.
-#[test]
-fn the_documents_examples_are_what_gsdc_prints() {
-    let mut examples = 0;
-    for (name, text) in [
-        ("README.md", include_str!("../README.md")),
-        (
-            "docs/wire-format.md",
-            include_str!("../docs/wire-format.md"),
-        ),
-    ] {
-        for block in text.split("```console\n$ gsdc decode ").skip(1) {
-            let block = &block[..block.find("```").unwrap()];
-            let (command, expected) = block.split_once('\n').unwrap();
-            let args = shell_words(command);
-            let args: Vec<&str> = args.iter().map(String::as_str).collect();
-            assert_eq!(decoded(&args), expected, "{name}: gsdc decode {command}");
-            examples += 1;
-        }
-    }
-    assert_eq!(examples, 7);
-}
-
 /// Every worked example of a manual (a description's `[[examples]]`), each
 /// telegram it stands for, through `gsdc decode`: the PKW words read as the
 /// example prints them, a request out and a response in, none refused; in

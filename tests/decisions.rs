@@ -4,6 +4,7 @@
 
 use crate::support::descriptions;
 use gsdc::ir::DecisionKind;
+use gsdc::ArtifactKind;
 
 /// The comment lines at the top of a generated file, as text.
 fn head(text: &str) -> String {
@@ -28,8 +29,73 @@ fn words(text: &str) -> String {
         .join(" ")
 }
 
+/// The decisions a file of `kind` is about, by the key each stands at: a
+/// GSD describes the PROFIBUS-DP slave (`[profibus]`, a gateway), a GSDML
+/// the PROFINET device (`[profinet]`); both share the device, the telegram,
+/// the mappings and settings, the numbering; the layouts carry both buses.
+fn concerns(kind: ArtifactKind, path: &str) -> bool {
+    let root = path.split(['.', '[', ' ']).next().unwrap();
+    match kind {
+        ArtifactKind::Gsd => root != "profinet",
+        ArtifactKind::Gsdml => !["profibus", "gateway"].contains(&root),
+        _ => true,
+    }
+}
+
+/// The files of every shipped description and valid fixture that have a
+/// header of their own (not the support files, the same for all, nor a
+/// bitmap), with their headers' words.
+fn headers() -> Vec<(String, gsdc::ir::Ir, ArtifactKind, String)> {
+    let mut headers = Vec::new();
+    for (name, ir) in descriptions::all_valid() {
+        for artifact in gsdc::compile(&ir).unwrap() {
+            if matches!(
+                artifact.kind,
+                ArtifactKind::RustSupport | ArtifactKind::CSupport | ArtifactKind::DeviceSymbol
+            ) {
+                continue;
+            }
+            let text = String::from_utf8(artifact.contents).unwrap();
+            headers.push((
+                format!("{name}: {}", artifact.file_name),
+                ir.clone(),
+                artifact.kind,
+                words(&head(&text)),
+            ));
+        }
+    }
+    headers
+}
+
+/// Every header lists each decision that concerns its file, and no other:
+/// a GSD none of the PROFINET placeholders, a GSDML none of PROFIBUS's.
 #[test]
-fn every_header_lists_every_decision() {
+fn every_header_lists_the_decisions_that_concern_its_file() {
+    let mut left_out = 0;
+    for (file, ir, kind, head) in headers() {
+        for decision in &ir.decisions {
+            let summary = words(&decision.summary());
+            // The GSD is 7-bit ASCII: a character beyond shows as `?`.
+            let ascii: String = summary
+                .chars()
+                .map(|c| if c.is_ascii() { c } else { '?' })
+                .collect();
+            let listed = head.contains(&summary) || head.contains(&ascii);
+            if concerns(kind, &decision.path) {
+                assert!(listed, "{file} lacks {summary:?} in\n{head}");
+            } else {
+                assert!(!listed, "{file} lists {summary:?}, none of its business");
+                left_out += 1;
+            }
+        }
+    }
+    // MD810's GSD leaves out its PROFINET placeholders, its GSDML its
+    // PROFIBUS ident number, and more.
+    assert!(left_out > 20, "{left_out}");
+}
+
+#[test]
+fn the_shipped_descriptions_have_placeholders_to_list() {
     for name in descriptions::shipped() {
         let ir = descriptions::load(&name);
         assert!(
@@ -38,32 +104,28 @@ fn every_header_lists_every_decision() {
                 .any(|d| d.kind == DecisionKind::Placeholder),
             "{name}: the shipped descriptions have placeholders"
         );
-        for artifact in gsdc::compile(&ir).unwrap() {
-            if matches!(
-                artifact.kind,
-                gsdc::ArtifactKind::RustSupport
-                    | gsdc::ArtifactKind::CSupport
-                    | gsdc::ArtifactKind::DeviceSymbol
-            ) {
-                continue; // the same for every description, or a bitmap
-            }
-            let text = String::from_utf8(artifact.contents).unwrap();
-            let head = words(&head(&text));
-            for decision in &ir.decisions {
-                let summary = words(&decision.summary());
-                // The GSD is 7-bit ASCII: a character beyond shows as `?`.
-                let ascii: String = summary
-                    .chars()
-                    .map(|c| if c.is_ascii() { c } else { '?' })
-                    .collect();
-                assert!(
-                    head.contains(&summary) || head.contains(&ascii),
-                    "{name}: {} lacks {summary:?} in\n{head}",
-                    artifact.file_name
-                );
-            }
-        }
     }
+}
+
+/// The header of MD810's GSD, whose description has both buses: its own
+/// placeholder, none of the GSDML's.
+#[test]
+fn the_gsd_of_a_card_with_both_buses_lists_no_profinet_placeholder() {
+    let ir = descriptions::load("md810dp.toml");
+    let (_, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
+    let head = head(&gsd);
+    assert!(
+        head.contains("Placeholder: profibus.ident_number = 0x0810"),
+        "{head}"
+    );
+    assert!(!head.contains("profinet"), "{head}");
+    let (_, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let head = self::head(&gsdml);
+    assert!(
+        head.contains("Placeholder: profinet.vendor_id = 0x0A11"),
+        "{head}"
+    );
+    assert!(!head.contains("profibus"), "{head}");
 }
 
 /// A description whose manual is in Chinese only (MD810's): its English
@@ -72,18 +134,47 @@ fn every_header_lists_every_decision() {
 fn translations_are_said_as_such() {
     let ir = descriptions::load("md810dp.toml");
     assert_eq!(ir.manual_languages, ["zh"]);
-    for artifact in gsdc::compile(&ir).unwrap() {
+    for (file, _, _, head) in headers()
+        .into_iter()
+        .filter(|(f, ..)| f.starts_with("md810dp.toml"))
+    {
+        assert!(
+            head.contains("Texts in en are the description's translations of the manual's zh."),
+            "{file}: {head}"
+        );
+    }
+}
+
+/// A manual in English and texts in English and Chinese: the Chinese are
+/// the description's translations, which only the GSDML has; the GSD and
+/// the layouts have the manual's English alone and say nothing.
+#[test]
+fn only_a_file_with_the_translated_language_says_so() {
+    let shipped = descriptions::shipped_text("md810dp.toml");
+    let text = shipped.replace("languages = [\"zh\"]", "languages = [\"en\"]");
+    assert_ne!(text, shipped);
+    let (ir, diagnostics) = descriptions::load_text("md810dp.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let note = "Texts in zh are the description's translations of the manual's en.";
+    let artifacts = gsdc::compile(&ir).unwrap();
+    assert!(artifacts.iter().any(|a| a.kind == ArtifactKind::Gsd));
+    for artifact in artifacts {
+        let kind = artifact.kind;
         if matches!(
-            artifact.kind,
-            gsdc::ArtifactKind::RustSupport
-                | gsdc::ArtifactKind::CSupport
-                | gsdc::ArtifactKind::DeviceSymbol
+            kind,
+            ArtifactKind::RustSupport | ArtifactKind::CSupport | ArtifactKind::DeviceSymbol
         ) {
             continue;
         }
         let head = words(&head(&String::from_utf8(artifact.contents).unwrap()));
+        assert_eq!(
+            head.contains(note),
+            kind == ArtifactKind::Gsdml,
+            "{}: {head}",
+            artifact.file_name
+        );
         assert!(
-            head.contains("Texts in en are the description's translations of the manual's zh."),
+            !head.contains("Texts in en"),
             "{}: {head}",
             artifact.file_name
         );

@@ -15,7 +15,7 @@ use toml::Value as Toml;
 
 const PROBE: &str = "zzz_not_a_key";
 
-fn schema() -> Json {
+pub(crate) fn schema() -> Json {
     serde_json::from_str(include_str!("../schemas/description.schema.json"))
         .expect("the schema is JSON")
 }
@@ -217,7 +217,7 @@ fn every_enumeration_of_the_schema_has_the_loaders_names() {
 }
 
 /// Whether `value` conforms to `node`: the keywords the schema uses.
-fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
+pub(crate) fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), String> {
     let node = resolve(root, node);
     if let Some(alternatives) = node.get("oneOf").and_then(Json::as_array) {
         let matching = alternatives

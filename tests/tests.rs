@@ -62,8 +62,9 @@
 //!
 //! `tests/firmware` (a no_std crate built from the layouts) and `tests/c`
 //! (C programs built from the C layouts) are not modules: `generated_rust.rs`
-//! and `c_header.rs` build and run them; `wire_dp.rs` builds and runs the
-//! workspace `wire/` (the DP exchange on the wire).
+//! and `c_header.rs` build and run them; `wire_dp.rs` and `wire_pn.rs` build
+//! and run the workspace `wire/` (the DP and PROFINET exchanges on the
+//! wire).
 
 mod support;
 
@@ -92,6 +93,7 @@ mod gsdml_output;
 mod gsdml_reader;
 mod import_cycles;
 mod invalid_descriptions;
+mod languages;
 mod limits;
 mod manual_texts;
 mod output_safety;
@@ -103,4 +105,5 @@ mod user_build;
 mod user_decode;
 mod user_description;
 mod wire_dp;
+mod wire_pn;
 mod xsd;

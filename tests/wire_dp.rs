@@ -11,9 +11,9 @@ use std::sync::{Mutex, MutexGuard};
 use crate::support::{self, descriptions, stdout};
 
 /// The wire workspace is built with the descriptions each run names, in
-/// one target directory: the tests here take turns, so that no run
-/// rebuilds it under another's feet.
-fn turn() -> MutexGuard<'static, ()> {
+/// one target directory: the tests here and in wire_pn.rs take turns, so
+/// that no run rebuilds it under another's feet.
+pub(crate) fn turn() -> MutexGuard<'static, ()> {
     static WIRE: Mutex<()> = Mutex::new(());
     WIRE.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
@@ -23,7 +23,7 @@ fn root() -> &'static Path {
 }
 
 /// The wire workspace's target directory, under this test's own.
-fn wire_target() -> PathBuf {
+pub(crate) fn wire_target() -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join("wire-target")
 }
 

@@ -105,6 +105,7 @@ fn generated_gsdml_validates_against_the_pi_schema() {
             "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
             "GSDML-V2.32-MEGMEET-MV800-20230830.xml",
             "GSDML-V2.32-Acme-AX200-20261201-071447.xml",
+            "GSDML-V2.32-Acme-X3-20260331.xml",
             "GSDML-V2.32-Acme-X1-20260131.xml",
             "GSDML-V2.32-Acme-X2-20260228.xml",
         ],

@@ -311,13 +311,15 @@ fn difference(path: &Path, on_disk: Option<&[u8]>, generated: &Artifact) -> Stri
             Some(_) => format!("differs: {name} (not text)"),
         };
     };
+    // A file the build would add is not on disk: its diff says so.
+    let old_label = match on_disk {
+        Some(_) => format!("{name} (on disk)"),
+        None => format!("{name} (missing)"),
+    };
     similar::TextDiff::from_lines(old, new)
         .unified_diff()
         .context_radius(3)
-        .header(
-            &format!("{name} (on disk)"),
-            &format!("{name} (from the description)"),
-        )
+        .header(&old_label, &format!("{name} (from the description)"))
         .to_string()
 }
 

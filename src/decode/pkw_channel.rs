@@ -2,6 +2,7 @@
 //! (`crate::pkw`, from `templates/support/`), so gsdc reads a request or a
 //! response exactly as the card does, and refuses what the card refuses.
 
+use crate::i18n::Lang;
 use crate::ir::{Direction, Ir, PkwKind};
 use crate::pkw::profidrive::{PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
@@ -178,12 +179,7 @@ fn pke_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) -> Pkw
 
 /// MD810 §1.4.1: the error codes are Modbus's.
 fn pke_error_text(error: pke::PkwErrorCode) -> &'static str {
-    match error {
-        pke::PkwErrorCode::IllegalCommand => "illegal command",
-        pke::PkwErrorCode::IllegalAddress => "illegal address",
-        pke::PkwErrorCode::IllegalData => "illegal data",
-        pke::PkwErrorCode::Other => "other error",
-    }
+    crate::pkw::pke_error_meaning(error).get(Lang::En)
 }
 
 fn pke_refused(
@@ -347,8 +343,8 @@ const OWN_ERROR: &str = "not a number any of the manuals gives: the drive's own"
 /// What an error number of response 7 means: the profile's meaning, or
 /// what the manuals that give it mean, or that it is the drive's own.
 fn error_text(number: profidrive::PkwErrorNumber) -> &'static str {
-    if let Some((_, (en, _))) = PROFILE_ERRORS.iter().find(|(n, _)| *n == number) {
-        return en;
+    if let Some((_, meaning)) = PROFILE_ERRORS.iter().find(|(n, _)| *n == number) {
+        return meaning.get(Lang::En);
     }
     VENDOR_ERRORS
         .iter()
@@ -383,7 +379,7 @@ fn profidrive_request(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter) 
         _ => None,
     };
     Pkw {
-        meaning: Some(REQUESTS[usize::from(id)].0),
+        meaning: Some(REQUESTS[usize::from(id)].get(Lang::En)),
         parameter: request
             .parameter()
             .map(|p| profidrive_parameter(p, &parameter)),
@@ -415,7 +411,7 @@ fn profidrive_response(words: &[U16Be; 4], parameter: impl Fn(u16) -> Parameter)
         R::None | R::NoAuthority { .. } => (None, None),
     };
     Pkw {
-        meaning: Some(RESPONSES[usize::from(id)].0),
+        meaning: Some(RESPONSES[usize::from(id)].get(Lang::En)),
         parameter: response
             .parameter()
             .map(|p| profidrive_parameter(p, &parameter)),

@@ -393,7 +393,7 @@ fn header(ir: &Ir, p: &str, l: &str) -> String {
         String::new(),
     ];
     lines.extend(wrap(&comment_text(&about), WIDTH - 3));
-    let notes = super::header_notes(ir);
+    let notes = super::header_notes(ir, super::ArtifactKind::CHeader);
     if !notes.is_empty() {
         lines.push(String::new());
     }

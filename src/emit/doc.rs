@@ -20,79 +20,60 @@ mod svg;
 mod telegrams;
 
 use super::{Artifact, ArtifactKind};
+use crate::i18n::{self, sheet as w, Phrase};
 use crate::ir::{Allowed, DecisionKind, Holds, Ir, MappingEntry, MappingSet, Text};
 use page::{Builder, Cell, Run};
 
 /// A language of the datasheet: the description's texts in it, and gsdc's
-/// own words, which exist in English and Chinese (in English on the page of
-/// any other language).
+/// own words in it where the catalogue has them ([`crate::i18n`]), else in
+/// English.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Lang {
-    En,
-    Zh,
-    /// Another ISO 639-1 code of the description, two ASCII letters.
-    Other([u8; 2]),
+pub(crate) struct Lang {
+    /// The ISO 639-1 code, two ASCII letters.
+    code: [u8; 2],
+    /// The language of gsdc's words on the page.
+    words: i18n::Lang,
 }
 
 impl Lang {
     /// The language of ISO 639-1 `code`.
     fn of(code: &str) -> Lang {
-        match code.as_bytes() {
-            b"en" => Lang::En,
-            b"zh" => Lang::Zh,
-            &[a, b] => Lang::Other([a, b]),
-            _ => unreachable!("descriptions accept ISO 639-1 codes only"),
+        let &[a, b] = code.as_bytes() else {
+            unreachable!("descriptions accept ISO 639-1 codes only")
+        };
+        Lang {
+            code: [a, b],
+            words: i18n::Lang::of(code).unwrap_or(i18n::Lang::En),
         }
     }
 
     fn code(&self) -> &str {
-        match self {
-            Lang::En => "en",
-            Lang::Zh => "zh",
-            Lang::Other(code) => std::str::from_utf8(code).expect("ASCII letters"),
-        }
+        std::str::from_utf8(&self.code).expect("ASCII letters")
     }
 
-    /// The language's own name on its switch; gsdc knows two of them, and
-    /// names the others by their code.
+    /// The language's own name on its switch (English, 中文, Deutsch); a
+    /// language gsdc has no words in is named by its code.
     fn name(&self) -> &str {
-        match self {
-            Lang::En => "English",
-            Lang::Zh => "中文",
-            Lang::Other(_) => self.code(),
+        match i18n::Lang::of(self.code()) {
+            Some(lang) => lang.own_name(),
+            None => self.code(),
         }
     }
 
-    /// gsdc's words in this language.
-    fn t<'a>(self, en: &'a str, zh: &'a str) -> &'a str {
-        match self {
-            Lang::Zh => zh,
-            _ => en,
-        }
-    }
-
-    /// A sentence made in this language: both are built, one is kept.
-    fn f(self, en: String, zh: String) -> String {
-        match self {
-            Lang::Zh => zh,
-            _ => en,
-        }
+    /// One of gsdc's phrases in this language.
+    fn t(self, phrase: Phrase) -> &'static str {
+        phrase.get(self)
     }
 
     /// A description's text in this language, English where it has none.
     fn text(self, text: &Text) -> &str {
-        match self {
-            Lang::En => &text.en,
-            _ => text.get(self.code()),
-        }
+        text.get(self.code())
     }
+}
 
-    fn table_label(self, n: usize) -> String {
-        self.f(format!("Table {n}."), format!("表 {n}"))
-    }
-
-    fn figure_label(self, n: usize) -> String {
-        self.f(format!("Figure {n}."), format!("图 {n}"))
+impl From<Lang> for i18n::Lang {
+    fn from(lang: Lang) -> i18n::Lang {
+        lang.words
     }
 }
 
@@ -136,25 +117,16 @@ fn header(ir: &Ir) -> String {
 /// English first, then every other language of the description in the
 /// order of its codes.
 fn languages(ir: &Ir) -> Vec<Lang> {
-    std::iter::once(Lang::En)
+    std::iter::once(Lang::of("en"))
         .chain(ir.languages.iter().map(|code| Lang::of(code)))
         .collect()
 }
 
 fn document(ir: &Ir, lang: Lang) -> page::Doc {
-    let title = lang.f(
-        format!(
-            "{}{} {}: fieldbus interface",
-            draft_notice(ir, lang),
-            ir.device.vendor,
-            ir.device.model
-        ),
-        format!(
-            "{}{} {}：现场总线接口",
-            draft_notice(ir, lang),
-            ir.device.vendor,
-            ir.device.model
-        ),
+    let title = format!(
+        "{}{}",
+        draft_notice(ir, lang),
+        w::title(lang, &ir.device.vendor, &ir.device.model)
     );
     let mut doc = Builder::new(lang, title);
     identity::section(&mut doc, ir, lang);
@@ -190,13 +162,7 @@ fn draft_notice(ir: &Ir, lang: Lang) -> String {
     if placeholders.is_empty() {
         return String::new();
     }
-    lang.f(
-        format!(
-            "DRAFT, not for release (placeholders: {}): ",
-            placeholders.join(", ")
-        ),
-        format!("草稿，不得发布（占位值：{}）：", placeholders.join("、")),
-    )
+    w::draft_notice(lang, &placeholders.join(lang.t(w::LIST_SEPARATOR)))
 }
 
 // ---------------------------------------------------------------------------
@@ -244,42 +210,26 @@ fn mapping_value(ir: &Ir, lang: Lang, set: &MappingSet, value: u16) -> String {
 /// manuals write them.
 fn allowed(lang: Lang, set: &MappingSet) -> String {
     match &set.allowed {
-        Allowed::Range { min, max } if set.holds == Holds::Address => lang.f(
-            format!("{min} to {max} (0x{min:04X} to 0x{max:04X})"),
-            format!("{min}～{max}（0x{min:04X}～0x{max:04X}）"),
-        ),
-        Allowed::Range { min, max } => lang.f(format!("{min} to {max}"), format!("{min}～{max}")),
-        Allowed::Choices(values) => lang.f(
-            format!(
-                "one of {} choices ({})",
-                values.choices.len(),
-                choices_caption(lang, set)
-            ),
-            format!(
-                "{} 个选项之一（{}）",
-                values.choices.len(),
-                choices_caption(lang, set)
-            ),
-        ),
+        Allowed::Range { min, max } if set.holds == Holds::Address => {
+            w::address_range(lang, *min, *max)
+        }
+        Allowed::Range { min, max } => w::range(lang, min, max),
+        Allowed::Choices(values) => {
+            w::one_of_choices(lang, values.choices.len(), &choices_caption(lang, set))
+        }
     }
 }
 
 /// The caption of a set's table of choices.
 fn choices_caption(lang: Lang, set: &MappingSet) -> String {
-    lang.f(
-        format!("choices of {}", set_name(lang, set)),
-        format!("{}的选项", set_name(lang, set)),
-    )
+    w::choices_of(lang, &set_name(lang, set))
 }
 
 /// `PZD2 receive to PZD12 receive`, or the one entry's name.
 fn set_name(lang: Lang, set: &MappingSet) -> String {
     let first = lang.text(&set.entries[0].name);
     match set.entries.last() {
-        Some(last) if set.entries.len() > 1 => lang.f(
-            format!("{first} to {}", lang.text(&last.name)),
-            format!("{first}～{}", lang.text(&last.name)),
-        ),
+        Some(last) if set.entries.len() > 1 => w::range(lang, first, lang.text(&last.name)),
         _ => first.to_string(),
     }
 }
@@ -297,10 +247,7 @@ fn with_placeholder(lang: Lang, value: String, placeholder: bool) -> Cell {
     let mut cell = vec![Run::Code(value)];
     if placeholder {
         cell.push(Run::Text(" ".into()));
-        cell.push(Run::Mark(
-            lang.t("placeholder, not assigned by PI", "占位值，非 PI 分配")
-                .into(),
-        ));
+        cell.push(Run::Mark(lang.t(w::PLACEHOLDER_NOT_ASSIGNED).into()));
     }
     cell
 }
@@ -308,12 +255,12 @@ fn with_placeholder(lang: Lang, value: String, placeholder: bool) -> Cell {
 /// What kind of decision a value is, as the checklist says it.
 fn decision_kind(lang: Lang, kind: DecisionKind) -> &'static str {
     match kind {
-        DecisionKind::Placeholder => lang.t("placeholder", "占位值"),
-        DecisionKind::Choice => lang.t("the description's own choice", "描述文件自行确定"),
-        DecisionKind::Convention => lang.t("gsdc's numbering", "gsdc 编号"),
-        DecisionKind::Layout => lang.t("gsdc's layout", "gsdc 布局"),
-        DecisionKind::Requirement => lang.t("required of the firmware", "固件须支持"),
-        _ => lang.t("gsdc's default", "gsdc 默认值"),
+        DecisionKind::Placeholder => lang.t(w::PLACEHOLDER),
+        DecisionKind::Choice => lang.t(w::OWN_CHOICE),
+        DecisionKind::Convention => lang.t(w::GSDC_NUMBERING),
+        DecisionKind::Layout => lang.t(w::GSDC_LAYOUT),
+        DecisionKind::Requirement => lang.t(w::REQUIRED_OF_FIRMWARE),
+        _ => lang.t(w::GSDC_DEFAULT),
     }
 }
 
@@ -335,21 +282,17 @@ fn decision_mark(ir: &Ir, lang: Lang, path: &str) -> Option<Run> {
 
 /// `bit 3`, `bits 9-10`.
 fn bits(lang: Lang, first: u16, last: u16) -> String {
-    match (first == last, lang) {
-        (true, Lang::Zh) => format!("Bit{first}"),
-        (false, Lang::Zh) => format!("Bit{first}-Bit{last}"),
-        (true, _) => format!("bit {first}"),
-        (false, _) => format!("bits {first}-{last}"),
+    match first == last {
+        true => w::bit(lang, first),
+        false => w::bits(lang, first, last),
     }
 }
 
 /// `bytes 8-9`, `byte 6`.
 fn bytes(lang: Lang, first: u16, last: u16) -> String {
-    match (first == last, lang) {
-        (true, Lang::Zh) => format!("字节 {first}"),
-        (false, Lang::Zh) => format!("字节 {first}-{last}"),
-        (true, _) => format!("byte {first}"),
-        (false, _) => format!("bytes {first}-{last}"),
+    match first == last {
+        true => w::byte(lang, first),
+        false => w::bytes(lang, first, last),
     }
 }
 
@@ -376,8 +319,10 @@ mod tests {
             kind: MappingKind::Setting,
             first: 2,
         });
-        assert_eq!(mapping_value(&ir, Lang::En, timeout, 100), "100");
-        assert_eq!(allowed(Lang::En, timeout), "0 to 60000");
-        assert_eq!(allowed(Lang::Zh, timeout), "0～60000");
+        let (en, zh, de) = (Lang::of("en"), Lang::of("zh"), Lang::of("de"));
+        assert_eq!(mapping_value(&ir, en, timeout, 100), "100");
+        assert_eq!(allowed(en, timeout), "0 to 60000");
+        assert_eq!(allowed(zh, timeout), "0～60000");
+        assert_eq!(allowed(de, timeout), "0 bis 60000");
     }
 }

@@ -256,7 +256,7 @@ fn diag_areas<'a>(ir: &'a Ir, p: &'a Profibus) -> Vec<DiagArea<'a>> {
 /// the line limit with continuation lines indented.
 fn notes(ir: &Ir) -> Vec<String> {
     let width = MAX_LINE - "; ".len();
-    super::header_notes(ir)
+    super::header_notes(ir, super::ArtifactKind::Gsd)
         .iter()
         .flat_map(|note| {
             let ascii: String = note

@@ -158,7 +158,7 @@ fn header(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         ir.source_name
     ));
     doc.comment(&format!("Description fingerprint: {}", ir.fingerprint));
-    for note in super::header_notes(ir) {
+    for note in super::header_notes(ir, super::ArtifactKind::Gsdml) {
         doc.comment(&note);
     }
 }

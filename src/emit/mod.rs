@@ -8,7 +8,7 @@ pub mod rust;
 mod tables;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Direction, Holds, Ir, MappingGroup, MappingKind, PkwKind};
+use crate::ir::{Bus, Decision, Direction, Holds, Ir, MappingGroup, MappingKind, PkwKind, Wording};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -258,14 +258,26 @@ pub(crate) fn joined(items: &[&str], conjunction: &str) -> String {
     }
 }
 
-/// What every generated file's header says beyond its origin: which
-/// languages are the description's translations, and each decision
-/// (placeholder, own choice, gsdc's default), one note each.
-pub(crate) fn header_notes(ir: &Ir) -> Vec<String> {
+/// What the header of a generated file of `kind` says beyond its origin:
+/// which of the file's languages are the description's translations, and
+/// each decision (placeholder, own choice, gsdc's default) that concerns
+/// the file, one note each. A GSD describes the PROFIBUS-DP slave, so the
+/// decisions of `[profinet]` are none of its business; a GSDML describes
+/// the PROFINET device, so those of `[profibus]` and a gateway are none of
+/// its; the layouts carry both buses' constants and list every decision.
+/// A GSD and the layouts have English texts only; a GSDML has every
+/// language of the description.
+pub(crate) fn header_notes(ir: &Ir, kind: ArtifactKind) -> Vec<String> {
+    let (bus, all_languages) = match kind {
+        ArtifactKind::Gsd => (Some(Bus::Profibus), false),
+        ArtifactKind::Gsdml => (Some(Bus::Profinet), true),
+        _ => (None, false),
+    };
     let mut notes = Vec::new();
     if !ir.manual_languages.is_empty() {
+        let languages = ir.languages.iter().filter(|_| all_languages);
         let translated: Vec<&str> = std::iter::once("en")
-            .chain(ir.languages.iter().map(String::as_str))
+            .chain(languages.map(String::as_str))
             .filter(|code| !ir.manual_languages.iter().any(|m| m == code))
             .collect();
         if !translated.is_empty() {
@@ -276,8 +288,10 @@ pub(crate) fn header_notes(ir: &Ir) -> Vec<String> {
             ));
         }
     }
-    notes.extend(ir.decisions.iter().map(|d| d.summary()));
-    notes.extend(ir.wording.iter().map(|w| w.summary()));
+    let concerns = |d: &&Decision| bus.is_none() || d.bus().is_none_or(|b| Some(b) == bus);
+    notes.extend(ir.decisions.iter().filter(concerns).map(Decision::summary));
+    let in_file = |w: &&Wording| bus.is_none() || Some(w.bus()) == bus;
+    notes.extend(ir.wording.iter().filter(in_file).map(Wording::summary));
     notes
 }
 

@@ -347,7 +347,7 @@ fn context(ir: &Ir) -> Context<'_> {
 /// Header notes in lines that keep the comment within 80 columns; a note's
 /// continuation lines are indented.
 fn notes(ir: &Ir) -> Vec<String> {
-    super::header_notes(ir)
+    super::header_notes(ir, super::ArtifactKind::RustLayout)
         .iter()
         .flat_map(|note| {
             super::wrap_words(note, 75)

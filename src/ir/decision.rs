@@ -4,6 +4,9 @@
 //! description is silent. Every generated file lists them in its header; a
 //! shipping build refuses them (`gsdc build --deny-warnings`).
 
+use super::Bus;
+use crate::i18n::Phrase;
+
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Decision {
@@ -13,6 +16,19 @@ pub struct Decision {
     /// The value as the description writes it, on one line.
     pub value: String,
     pub reason: String,
+    /// gsdc's own words for a decision gsdc made, in every language it has
+    /// words in (the strings above are their English); `None` for the
+    /// description's own choices, whose reasons are the description's.
+    pub(crate) words: Option<DecisionWords>,
+}
+
+/// gsdc's words for what it decided: the path and value where gsdc names
+/// them in words (a numbering, a requirement), and the reason.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct DecisionWords {
+    pub path: Option<Phrase>,
+    pub value: Option<Phrase>,
+    pub reason: Phrase,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -38,6 +54,24 @@ pub enum DecisionKind {
 }
 
 impl Decision {
+    /// The bus whose device file alone the decision concerns, by the
+    /// description's key it stands at: `[profibus]` and a gateway (a
+    /// PROFIBUS-DP slave) are the GSD's, `[profinet]` the GSDML's; `None`
+    /// for what both buses share (the device, the telegram, the mappings
+    /// and settings, the parameter numbering).
+    pub fn bus(&self) -> Option<Bus> {
+        let root = self
+            .path
+            .split(['.', '[', ' '])
+            .next()
+            .unwrap_or(&self.path);
+        match root {
+            "profibus" | "gateway" => Some(Bus::Profibus),
+            "profinet" => Some(Bus::Profinet),
+            _ => None,
+        }
+    }
+
     /// One line: `Own choice: profibus.min_slave_interval = 1 (the reason)`.
     pub fn summary(&self) -> String {
         let kind = match self.kind {

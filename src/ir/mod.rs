@@ -5,7 +5,7 @@
 //! PROFIBUS needs lives in [`profibus`].
 
 mod cyclic;
-mod decision;
+pub(crate) mod decision;
 pub mod gateway;
 pub mod manual;
 pub mod mapping;
@@ -28,6 +28,8 @@ pub use numbering::{AddressScheme, Numbering};
 pub use profibus::Profibus;
 pub use profinet::Profinet;
 pub use telegram::{BitField, Choice, Direction, Layout, PkwKind, Telegram, ValueSet, Word};
+
+use crate::i18n::{self, Phrase};
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -76,6 +78,14 @@ pub struct Wording {
 }
 
 impl Wording {
+    /// The bus whose device file holds the text: the GSD's or the GSDML's.
+    pub fn bus(&self) -> Bus {
+        match self.place.starts_with("GSDML ") {
+            true => Bus::Profinet,
+            false => Bus::Profibus,
+        }
+    }
+
     /// One line for the headers, in English (a GSD's header is ASCII):
     /// `gsdc's wording: GSDML IDT_PORT_1 = "Port 1" (gsdc's, not the
     /// description's)`.
@@ -123,11 +133,41 @@ impl Text {
         }
     }
 
-    /// gsdc's own text in English and Chinese (gsdc's translation).
-    pub(crate) fn en_zh(en: impl Into<String>, zh: impl Into<String>) -> Self {
+    /// One of gsdc's own phrases ([`crate::i18n`]), in every language gsdc
+    /// has words in.
+    pub(crate) fn phrase(phrase: Phrase) -> Self {
+        Text::gsdc(|lang| phrase.get(lang).to_string())
+    }
+
+    /// gsdc's own text, made in every language gsdc has words in.
+    pub(crate) fn gsdc(words: impl Fn(i18n::Lang) -> String) -> Self {
+        Text::composed(&[], |_, lang| words(lang))
+    }
+
+    /// A text made of `parts` (the description's texts) and gsdc's words:
+    /// `f(code, lang)` makes it in language `code`, with gsdc's words in
+    /// `lang` (English where gsdc has no words in `code`), in every
+    /// language of the parts and of gsdc's catalogue.
+    pub(crate) fn composed(parts: &[&Text], f: impl Fn(&str, i18n::Lang) -> String) -> Self {
+        let mut codes: Vec<&str> = i18n::Lang::ALL
+            .iter()
+            .map(|lang| lang.code())
+            .chain(
+                parts
+                    .iter()
+                    .flat_map(|t| t.others.iter().map(|(c, _)| c.as_str())),
+            )
+            .filter(|code| *code != "en")
+            .collect();
+        codes.sort_unstable();
+        codes.dedup();
+        let words = |code: &str| i18n::Lang::of(code).unwrap_or(i18n::Lang::En);
         Text {
-            en: en.into(),
-            others: vec![("zh".to_string(), zh.into())],
+            en: f("en", i18n::Lang::En),
+            others: codes
+                .into_iter()
+                .map(|code| (code.to_string(), f(code, words(code))))
+                .collect(),
             gsd: None,
         }
     }
@@ -156,20 +196,6 @@ impl Text {
                 .map(|(code, text)| (code.clone(), f(text)))
                 .collect(),
             gsd: self.gsd.as_deref().map(&f),
-        }
-    }
-
-    /// Each language's text changed by `f(code, text)`; without a GSD short
-    /// form, which `f` could not know how to shorten.
-    pub(crate) fn by_language(&self, f: impl Fn(&str, &str) -> String) -> Text {
-        Text {
-            en: f("en", &self.en),
-            others: self
-                .others
-                .iter()
-                .map(|(code, text)| (code.clone(), f(code, text)))
-                .collect(),
-            gsd: None,
         }
     }
 }

@@ -3,6 +3,8 @@
 
 use crate::description::Text;
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::i18n::{files, Lang, Phrase};
+use crate::ir::decision::DecisionWords;
 use crate::ir::{self, Decision, DecisionKind};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
@@ -14,8 +16,9 @@ pub struct Checker {
     diagnostics: Diagnostics,
     /// Strings that go into a GSD must be short 7-bit ASCII.
     for_gsd: bool,
-    /// The languages besides English that the description's texts use.
-    languages: BTreeSet<String>,
+    /// The languages besides English that the description's texts use,
+    /// each with where a text first gives it.
+    languages: BTreeMap<String, Range<usize>>,
     /// Placeholders and gsdc's defaults, as lowering meets them.
     decisions: Vec<Decision>,
     /// The prefix of the first name the description writes each address
@@ -48,7 +51,7 @@ impl Checker {
         Checker {
             diagnostics: Diagnostics::default(),
             for_gsd,
-            languages: BTreeSet::new(),
+            languages: BTreeMap::new(),
             decisions: Vec::new(),
             written_prefixes: BTreeMap::new(),
             given: BTreeSet::new(),
@@ -57,13 +60,18 @@ impl Checker {
 
     /// A placeholder, said where it is written (the warning's code and text
     /// are the caller's): listed in every generated file.
-    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String, reason: &str) {
+    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String) {
         self.push(warning);
         self.decisions.push(Decision {
             kind: DecisionKind::Placeholder,
             path: path.to_string(),
             value,
-            reason: reason.to_string(),
+            reason: files::NOT_ASSIGNED_BY_PI.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason: files::NOT_ASSIGNED_BY_PI,
+            }),
         });
     }
 
@@ -84,37 +92,59 @@ impl Checker {
             kind: DecisionKind::Default,
             path: path.to_string(),
             value,
-            reason: "the description does not state it".to_string(),
+            reason: files::NOT_STATED.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason: files::NOT_STATED,
+            }),
         });
     }
 
     /// A number gsdc gives by its own rule where the description has no
     /// key for it: listed in every header, not warned about (the layouts
     /// carry it, so the firmware cannot drift from it).
-    pub fn convention(&mut self, path: &str, value: impl ToString, reason: &str) {
+    pub fn convention(&mut self, path: Phrase, value: Phrase, reason: Phrase) {
         self.listed(DecisionKind::Convention, path, value, reason);
     }
 
     /// How gsdc lays out bytes the manual gives no place for (User_Prm_Data's
     /// offsets, config identifiers): listed in every header, not warned
     /// about (the layouts carry every number).
-    pub fn layout(&mut self, path: &str, value: impl ToString, reason: &str) {
-        self.listed(DecisionKind::Layout, path, value, reason);
+    pub fn layout(&mut self, path: &str, value: impl ToString, reason: Phrase) {
+        self.decisions.push(Decision {
+            kind: DecisionKind::Layout,
+            path: path.to_string(),
+            value: value.to_string(),
+            reason: reason.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason,
+            }),
+        });
     }
 
     /// What gsdc's device file says the card does where the description
     /// has no key for it: listed in every header, not warned about (the
     /// firmware must do it; no value would change the file).
-    pub fn requirement(&mut self, path: &str, value: impl ToString, reason: &str) {
+    pub fn requirement(&mut self, path: Phrase, value: Phrase, reason: Phrase) {
         self.listed(DecisionKind::Requirement, path, value, reason);
     }
 
-    fn listed(&mut self, kind: DecisionKind, path: &str, value: impl ToString, reason: &str) {
+    /// A decision of gsdc's own, in its words.
+    fn listed(&mut self, kind: DecisionKind, path: Phrase, value: Phrase, reason: Phrase) {
+        let english = |phrase: Phrase| phrase.get(Lang::En).to_string();
         self.decisions.push(Decision {
             kind,
-            path: path.to_string(),
-            value: value.to_string(),
-            reason: reason.to_string(),
+            path: english(path),
+            value: english(value),
+            reason: english(reason),
+            words: Some(DecisionWords {
+                path: Some(path),
+                value: Some(value),
+                reason,
+            }),
         });
     }
 
@@ -137,7 +167,37 @@ impl Checker {
 
     /// Every language besides English that a text used, in code order.
     pub fn languages(&self) -> Vec<String> {
-        self.languages.iter().cloned().collect()
+        self.languages.keys().cloned().collect()
+    }
+
+    /// W108 for each language of the description's texts that gsdc has no
+    /// words in, where a text first gives it: its texts there are the
+    /// description's, and gsdc's own words in them English.
+    pub fn languages_without_words(&mut self) {
+        let known: Vec<String> = crate::i18n::Lang::ALL
+            .iter()
+            .map(|l| l.code().to_string())
+            .collect();
+        let known = crate::i18n::list(crate::i18n::Lang::En, &known);
+        let without: Vec<(String, Range<usize>)> = self
+            .languages
+            .iter()
+            .filter(|(code, _)| crate::i18n::Lang::of(code).is_none())
+            .map(|(code, span)| (code.clone(), span.clone()))
+            .collect();
+        for (code, span) in without {
+            self.push(
+                Diagnostic::warning(
+                    "W108",
+                    format!("gsdc has no words in `{code}`: its own words in the `{code}` texts stay English"),
+                )
+                .at(span)
+                .label("a language gsdc's catalogue lacks")
+                .help(format!(
+                    "the GSDML's `{code}` texts and the datasheet's `{code}` page carry the description's `{code}` texts, and gsdc's own words (module descriptions, record and category names, the datasheet's headings and sentences) in English; gsdc has its words in {known} (src/i18n)"
+                )),
+            );
+        }
     }
 
     pub fn push(&mut self, diagnostic: Diagnostic) {
@@ -276,7 +336,9 @@ impl Checker {
         }
         for (code, other) in &text.others {
             self.non_empty(other.get_ref(), other.span(), what);
-            self.languages.insert(code.get_ref().clone());
+            self.languages
+                .entry(code.get_ref().clone())
+                .or_insert_with(|| code.span());
         }
         let mut others: Vec<(String, String)> = text
             .others

@@ -47,6 +47,7 @@ pub fn lower(
                 path: path.get_ref().clone(),
                 value,
                 reason: reason.get_ref().clone(),
+                words: None,
             })
         })
         .collect()

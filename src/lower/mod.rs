@@ -107,6 +107,7 @@ pub fn lower(
     let mut decisions = cx.take_decisions();
     decisions.extend(choices::lower(&mut cx, &desc.choices, text));
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
+    cx.languages_without_words();
     let languages = cx.languages();
     let numbering = numbering.map(|mut n| {
         n.written_prefixes = cx.take_written_prefixes();

@@ -8,6 +8,7 @@ use super::ppo::{config_bytes, ppo_layout};
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
+use crate::i18n::files;
 use crate::ir::profibus::{
     Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
     PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
@@ -96,7 +97,6 @@ pub fn lower(
             .help("apply to PI for an ident number before shipping the GSD"),
             "profibus.ident_number",
             value,
-            "not assigned by PI",
         );
     }
     let modules = modules(cx, p, telegram);
@@ -172,13 +172,9 @@ fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm,
                 "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): {}",
                 bytes.join("; ")
             ),
-            "the manual gives no config byte: PROFIdrive's PPO form, one general identifier byte each; the layouts carry each",
+            files::CONFIG_IDENTIFIERS_REASON,
         );
-        cx.layout(
-            "profibus Max_Module",
-            1,
-            "a PPO type is the whole telegram, so the master plugs one module",
-        );
+        cx.layout("profibus Max_Module", 1, files::MAX_MODULE_REASON);
     }
     if gateway || user_prm.blocks.is_empty() {
         return;
@@ -203,8 +199,11 @@ fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm,
     }
     cx.layout(
         "profibus User_Prm_Data",
-        format!("{}; one Unsigned16 per entry, high byte first, no gaps", places.join(", ")),
-        "the manual gives the entries, not their bytes: gsdc's order (the PZD words out, then in, the DPV1 indexes, the settings) and offsets; the layouts carry each",
+        format!(
+            "{}; one Unsigned16 per entry, high byte first, no gaps",
+            places.join(", ")
+        ),
+        files::USER_PRM_LAYOUT_REASON,
     );
 }
 

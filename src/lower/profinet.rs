@@ -4,6 +4,7 @@
 use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
+use crate::i18n::{self, files};
 use crate::ir::profinet::{
     Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
     FIRST_PORT_SUBSLOT,
@@ -20,8 +21,8 @@ mod records;
 /// `info` after a notice that the file is a draft, naming the identity
 /// numbers that are placeholders, while any is one: the DAP's InfoText
 /// (and DeviceIdentity's, the same text) is what TIA Portal's catalog shows
-/// of the device. gsdc's words, in English and its Chinese; English on a
-/// text in another language.
+/// of the device. gsdc's words in each language it has them in, English in
+/// another.
 fn draft(
     info: Text,
     (vendor, device): (&Spanned<raw::IdentNumber>, &Spanned<raw::IdentNumber>),
@@ -31,21 +32,16 @@ fn draft(
         .filter(|(_, id)| id.get_ref().placeholder)
         .map(|(name, id)| format!("{name} 0x{:04X}", id.get_ref().value.get_ref()))
         .collect();
-    let notice = |language: &str| match (language, placeholders.as_slice()) {
-        (_, []) => String::new(),
-        ("zh", names) => format!(
-            "草稿，不得发布：{} 为占位值，非 PI 分配。",
-            names.join("、")
-        ),
-        (_, [one]) => {
-            format!("DRAFT, not for release: {one} is a placeholder, not assigned by PI. ")
-        }
-        (_, names) => format!(
-            "DRAFT, not for release: {} are placeholders, not assigned by PI. ",
-            names.join(" and ")
-        ),
-    };
-    info.by_language(|language, text| format!("{}{text}", notice(language)))
+    if placeholders.is_empty() {
+        return info;
+    }
+    Text::composed(&[&info], |code, lang| {
+        let notice = match placeholders.as_slice() {
+            [one] => files::draft_one(lang, one),
+            names => files::draft_many(lang, &i18n::list(lang, names)),
+        };
+        format!("{notice}{}", info.get(code))
+    })
 }
 
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
@@ -95,21 +91,20 @@ pub fn lower(
             io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
-    cx.convention(
-        "profinet ident numbers",
-        "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
-        "the manual gives none; the layouts carry each",
-    );
-    cx.requirement(
-        "profinet device access point",
-        "MultipleWriteSupported, LLDP_NoD_Supported, ResetToFactoryModes 2",
-        "PNIO_Version V2.31 and later requires them; the manual does not say: the card's PROFINET stack must provide them",
-    );
-    cx.requirement(
-        "profinet interface",
-        "RT_CLASS_1; SNMP and LLDP; DCP and PTP boundaries; startup modes Legacy and Advanced; reduction ratios 1 to 512",
-        "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
-    );
+    {
+        use crate::i18n::files as w;
+        cx.convention(
+            w::IDENT_NUMBERS,
+            w::IDENT_NUMBERS_RULE,
+            w::IDENT_NUMBERS_WHY,
+        );
+        cx.requirement(w::DAP, w::DAP_SERVICES, w::DAP_SERVICES_WHY);
+        cx.requirement(
+            w::INTERFACE,
+            w::INTERFACE_SERVICES,
+            w::INTERFACE_SERVICES_WHY,
+        );
+    }
     let value_items = records::value_items(mappings, &modules);
     let reading_plans = records::reading_plans(mappings, &modules);
     let fixed = records::fixed_values(mappings, &modules);
@@ -191,7 +186,7 @@ fn port(number: u8, media_redundancy: bool) -> Port {
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
         text: TextRef::new(
             format!("IDT_PORT_{number}"),
-            Text::en_zh(format!("Port {number}"), format!("端口 {number}")),
+            Text::gsdc(|lang| crate::i18n::files::port(lang, number)),
         ),
         default_ringport: media_redundancy && number <= 2,
     }
@@ -347,7 +342,6 @@ fn placeholder_warning(
                 .help("use the vendor ID PI assigned and the device ID the vendor assigned before shipping"),
             &format!("profinet.{key}"),
             value,
-            "not assigned by PI",
         );
     }
 }

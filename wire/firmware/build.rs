@@ -110,6 +110,23 @@ fn card(name: &str, module: &str, ir: &gsdc::Ir) -> String {
         Some(_) => format!("Some(crate::gateway_of!({module}))"),
         None => "None".to_string(),
     };
+    let pn = match ir.profinet {
+        Some(_) => format!("Some(&{module}::PN_DEVICE)"),
+        None => "None".to_string(),
+    };
+    let pn_shapes: Vec<String> = ir
+        .profinet
+        .iter()
+        .flat_map(|p| &p.modules)
+        .map(|m| {
+            format!(
+                "({module}::{}_IDENT, crate::cyclic::Shape {{ pkw: {}, pzd_words: {} }})",
+                m.ident.upper_snake(),
+                m.layout.pkw,
+                m.layout.pzd_words
+            )
+        })
+        .collect();
     format!(
         "    Card {{
         name: {name:?},
@@ -122,12 +139,15 @@ fn card(name: &str, module: &str, ir: &gsdc::Ir) -> String {
         dp: {dp},
         diagnosis: {diagnosis},
         gateway: {gateway},
+        pn: {pn},
+        pn_shapes: &[{}],
     }},
 ",
         ir.telegram.control_word.is_some(),
         ir.telegram.status_word.is_some(),
         mappings(MappingKind::PzdOut, "pzd_out"),
         mappings(MappingKind::PzdIn, "pzd_in"),
+        pn_shapes.join(", "),
     )
 }
 

@@ -7,6 +7,7 @@ use super::page::{code, text, Builder, Cell, Run};
 use super::svg::Style;
 use super::telegrams::{words_figure, WordView};
 use super::{bytes, decision_mark, hex_bytes, Lang};
+use crate::i18n::{self, sheet as w};
 use crate::ir::gateway::{DataOrder, DiagCode, Diagnosis, Gateway, Module, Node, ParamKey};
 use crate::ir::profibus::{PrmValue, Profibus, STANDARD_DIAG_BYTES};
 use crate::ir::{Direction, Ir};
@@ -17,22 +18,16 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         return;
     };
     let bus = &g.bus;
-    doc.section(
-        "gateway",
-        lang.f(
-            format!("Cyclic data: the {bus} nodes' words"),
-            format!("周期数据：{bus} 节点的字"),
-        ),
-    );
-    let own = g.own_node.map_or_else(String::new, |n| {
-        lang.f(
-            format!(", the gateway itself being node {n}"),
-            format!("，网桥本身为节点 {n}"),
-        )
-    });
-    doc.para(text(lang.f(
-        format!("The card is a gateway to {bus}: it carries the data of the {bus} nodes {} to {}{own}. The master sets in the parameter telegram how many nodes are in use and how many words each one sends (the master's input) and receives (its output), and plugs modules until its input and output equal the nodes' totals. Every word is 16 bits, high byte first.", g.first_node, g.last_node),
-        format!("本卡为 {bus} 网桥：传送 {bus} 节点 {}～{} 的数据{own}。主站在参数报文中设定使用的节点数及每个节点发送（主站输入）和接收（主站输出）的字数，并插入模块，直至输入、输出长度等于各节点的总和。每个字 16 位，高字节在前。", g.first_node, g.last_node),
+    doc.section("gateway", w::gateway_heading(lang, bus));
+    let own = g
+        .own_node
+        .map_or_else(String::new, |n| w::gateway_own_node(lang, n));
+    doc.para(text(w::gateway_intro(
+        lang,
+        bus,
+        g.first_node,
+        g.last_node,
+        &own,
     )));
     facts_table(doc, ir, g, lang);
     modules_part(doc, ir, g, lang);
@@ -41,14 +36,10 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
 }
 
-fn range(lang: Lang, min: impl std::fmt::Display, max: impl std::fmt::Display) -> String {
-    lang.f(format!("{min} to {max}"), format!("{min}～{max}"))
-}
-
 fn way(lang: Lang, direction: Direction) -> &'static str {
     match direction {
-        Direction::In => lang.t("input, nodes → master", "输入，节点 → 主站"),
-        Direction::Out => lang.t("output, master → nodes", "输出，主站 → 节点"),
+        Direction::In => lang.t(w::INPUT_NODES_TO_MASTER),
+        Direction::Out => lang.t(w::OUTPUT_MASTER_TO_NODES),
     }
 }
 
@@ -69,113 +60,69 @@ fn facts_table(doc: &mut Builder, ir: &Ir, g: &Gateway, lang: Lang) {
     let count = &g.node_count;
     let words = |direction| {
         let first = g.nodes[0].words(direction);
-        lang.f(
-            format!(
-                "{} (\"{}\" and on)",
-                range(lang, first.min, first.max),
-                lang.text(&first.name)
-            ),
-            format!(
-                "{}（“{}”等）",
-                range(lang, first.min, first.max),
-                lang.text(&first.name)
-            ),
+        w::words_from_first(
+            lang,
+            &w::range(lang, first.min, first.max),
+            lang.text(&first.name),
         )
     };
     let order = match g.data_order {
-        DataOrder::NodeAscending => lang.t(
-            "the nodes in use in ascending node number, each node's words together",
-            "使用中的节点按节点号升序排列，每个节点的字连续排列",
-        ),
+        DataOrder::NodeAscending => lang.t(w::ORDER_NODE_ASCENDING),
     };
     let mut rows = vec![
-        (lang.t("Second bus", "第二总线"), text(&g.bus)),
+        (lang.t(w::SECOND_BUS), text(&g.bus)),
         (
-            lang.t("Node numbers", "节点号"),
-            text(range(lang, g.first_node, g.last_node)),
+            lang.t(w::NODE_NUMBERS),
+            text(w::range(lang, g.first_node, g.last_node)),
         ),
     ];
     if let Some(own) = g.own_node {
-        rows.push((
-            lang.t("The gateway's own node", "网桥本身的节点号"),
-            text(own.to_string()),
-        ));
+        rows.push((lang.t(w::OWN_NODE), text(own.to_string())));
     }
     rows.extend([
-        (lang.t("Nodes in use", "使用的节点数"), {
-            let mut cell = text(lang.f(
-                format!(
-                    "{} (\"{}\"), default {}",
-                    range(lang, count.min, count.max),
-                    lang.text(&count.name),
-                    count.default
-                ),
-                format!(
-                    "{}（“{}”），默认值 {}",
-                    range(lang, count.min, count.max),
-                    lang.text(&count.name),
-                    count.default
-                ),
+        (lang.t(w::NODES_IN_USE), {
+            let mut cell = text(w::node_count(
+                lang,
+                &w::range(lang, count.min, count.max),
+                lang.text(&count.name),
+                count.default,
             ));
             cell.extend(mark(ir, lang, "gateway.node_count.default"));
             cell
         }),
         (
-            lang.t("Words a node sends (input)", "每个节点发送的字数（输入）"),
+            lang.t(w::WORDS_A_NODE_SENDS),
             marked(ir, lang, words(Direction::In), "gateway.input_words"),
         ),
         (
-            lang.t(
-                "Words a node receives (output)",
-                "每个节点接收的字数（输出）",
-            ),
+            lang.t(w::WORDS_A_NODE_RECEIVES),
             marked(ir, lang, words(Direction::Out), "gateway.output_words"),
         ),
+        (lang.t(w::MAX_INPUT_LEN), text(g.max_input_len.to_string())),
         (
-            lang.t(
-                "Input bytes at most (Max_Input_Len)",
-                "最大输入字节数（Max_Input_Len）",
-            ),
-            text(g.max_input_len.to_string()),
-        ),
-        (
-            lang.t(
-                "Output bytes at most (Max_Output_Len)",
-                "最大输出字节数（Max_Output_Len）",
-            ),
+            lang.t(w::MAX_OUTPUT_LEN),
             text(g.max_output_len.to_string()),
         ),
         (
-            lang.t("The nodes' words in the data", "各节点的字在数据中的顺序"),
+            lang.t(w::NODE_WORDS_IN_DATA),
             marked(ir, lang, order.to_string(), "gateway.data_order"),
         ),
-        (
-            lang.t("Modules at most (Max_Module)", "最多模块数（Max_Module）"),
-            text(g.max_modules.to_string()),
-        ),
+        (lang.t(w::MAX_MODULE), text(g.max_modules.to_string())),
     ]);
     doc.table(
-        lang.f(
-            format!("The gateway to {}", g.bus),
-            format!("{} 网桥", g.bus),
-        ),
-        &[lang.t("Item", "项目"), lang.t("Value", "值")],
+        w::gateway_caption(lang, &g.bus),
+        &[lang.t(w::ITEM), lang.t(w::VALUE)],
         rows.into_iter().map(|(k, v)| vec![text(k), v]).collect(),
     );
 }
 
 fn modules_part(doc: &mut Builder, ir: &Ir, g: &Gateway, lang: Lang) {
-    doc.subsection("gateway-modules", lang.t("Modules", "模块"));
-    let mut intro = text(lang.f(
-        format!("Each module is a block of words one way, with one config identifier byte (Chk_Cfg): bit 7 consistency, bit 6 words, bits 5-4 the direction (01 input, 10 output), bits 3-0 the words less one. The master plugs modules, at most {}, until their input words equal the words the nodes in use send and their output words the words they receive.", g.max_modules),
-        format!("每个模块为一个方向的若干字，对应一个配置标识字节（Chk_Cfg）：位 7 一致性，位 6 字，位 5-4 方向（01 输入，10 输出），位 3-0 字数减 1。主站插入模块（最多 {} 个），使输入字数等于使用中的节点发送的字数，输出字数等于其接收的字数。", g.max_modules),
-    ));
+    doc.subsection("gateway-modules", lang.t(w::MODULES));
+    let mut intro = text(w::gateway_modules_intro(lang, g.max_modules));
     if let Some(mark) = decision_mark(ir, lang, "gateway.modules") {
-        intro.push(Run::Text(
-            lang.t(" The module sizes: ", "模块大小：").into(),
-        ));
+        intro.push(Run::Text(lang.t(w::THE_MODULE_SIZES).into()));
         intro.push(mark);
-        intro.push(Run::Text(lang.t(".", "。").into()));
+        intro.push(Run::Text(lang.t(w::FULL_STOP).into()));
     }
     doc.para(intro);
     let rows = g
@@ -189,22 +136,22 @@ fn modules_part(doc: &mut Builder, ir: &Ir, g: &Gateway, lang: Lang) {
                 text((2 * u16::from(m.words)).to_string()),
                 code(format!("0x{:02X}", m.config)),
                 text(if m.consistent {
-                    lang.t("the whole module", "整个模块")
+                    lang.t(w::WHOLE_MODULE)
                 } else {
-                    lang.t("each word on its own", "按字")
+                    lang.t(w::EACH_WORD)
                 }),
             ]
         })
         .collect();
     doc.table(
-        lang.t("The modules", "模块"),
+        lang.t(w::THE_MODULES),
         &[
-            lang.t("Module", "模块"),
-            lang.t("Direction", "方向"),
-            lang.t("Words", "字数"),
-            lang.t("Bytes", "字节数"),
-            lang.t("Config byte", "配置字节"),
-            lang.t("Consistency", "一致性"),
+            lang.t(w::MODULE),
+            lang.t(w::DIRECTION),
+            lang.t(w::WORDS),
+            lang.t(w::BYTE_COUNT),
+            lang.t(w::CONFIG_BYTE),
+            lang.t(w::CONSISTENCY),
         ],
         rows,
     );
@@ -317,35 +264,32 @@ fn example_part(
     example: &Example,
     lang: Lang,
 ) {
-    doc.subsection("gateway-example", lang.t("An example", "示例"));
+    doc.subsection("gateway-example", lang.t(w::AN_EXAMPLE));
     let (input, output) = (example.words(Direction::In), example.words(Direction::Out));
     let first = &g.nodes[0];
     let receiving = example
         .node_words(Direction::Out)
         .filter(|&(_, w)| w > 0)
         .count();
-    doc.para(text(lang.f(
-        format!(
-            "An example gsdc computes from the description: {} nodes in use, each sending its most words ({}), as many nodes as {} bytes of input hold; the first {receiving} of them also receive their most words ({}). That is {input} words ({} bytes) of input and {output} words ({} bytes) of output. The master plugs the modules and sends the parameter telegram of the tables below.",
-            example.count(), first.input_words.max, g.max_input_len, first.output_words.max, 2 * input, 2 * output
-        ),
-        format!(
-            "以下示例由 gsdc 根据设备描述计算：使用 {} 个节点，每个节点发送最多的字数（{}），节点数为 {} 字节输入所能容纳的最多节点数；其中前 {receiving} 个节点还接收最多的字数（{}）。即输入 {input} 个字（{} 字节），输出 {output} 个字（{} 字节）。主站插入下表的模块，并发送下表的参数报文。",
-            example.count(), first.input_words.max, g.max_input_len, first.output_words.max, 2 * input, 2 * output
-        ),
-    )));
-    example_nodes_table(doc, g, example, lang);
-    let caption = lang.t(
-        "The example's data: each node's words in the data order",
-        "示例的数据：各节点的字按数据顺序排列",
+    let nodes = w::gateway_example_nodes(
+        lang,
+        example.count(),
+        first.input_words.max,
+        g.max_input_len,
+        receiving,
+        first.output_words.max,
     );
+    let totals = w::gateway_example_totals(lang, input, 2 * input, output, 2 * output);
+    doc.para(text(format!("{nodes}{totals}")));
+    example_nodes_table(doc, g, example, lang);
+    let caption = lang.t(w::EXAMPLE_DATA);
     let lanes = [Direction::In, Direction::Out].map(|direction| {
         let boxes = example
             .places(g, direction)
             .into_iter()
             .map(|(node, words, first, last)| WordView {
-                label: lang.f(format!("node {node}"), format!("节点 {node}")),
-                role: lang.f(format!("{words} words"), format!("{words} 个字")),
+                label: w::node(lang, node),
+                role: w::words_count(lang, words),
                 mapped: false,
                 parameter: None,
                 first_byte: first,
@@ -392,26 +336,20 @@ fn example_nodes_table(doc: &mut Builder, g: &Gateway, example: &Example, lang: 
         .collect();
     let total = |direction| example.words(direction);
     rows.push(vec![
-        text(lang.t("all", "合计")),
+        text(lang.t(w::ALL_NODES)),
         text(total(Direction::In).to_string()),
-        text(lang.f(
-            format!("{} bytes", 2 * total(Direction::In)),
-            format!("{} 字节", 2 * total(Direction::In)),
-        )),
+        text(w::bytes_count(lang, 2 * total(Direction::In))),
         text(total(Direction::Out).to_string()),
-        text(lang.f(
-            format!("{} bytes", 2 * total(Direction::Out)),
-            format!("{} 字节", 2 * total(Direction::Out)),
-        )),
+        text(w::bytes_count(lang, 2 * total(Direction::Out))),
     ]);
     doc.table(
-        lang.t("The example's nodes", "示例的节点"),
+        lang.t(w::EXAMPLE_NODES),
         &[
-            lang.t("Node", "节点"),
-            lang.t("Words sent", "发送字数"),
-            lang.t("In the input data", "在输入数据中"),
-            lang.t("Words received", "接收字数"),
-            lang.t("In the output data", "在输出数据中"),
+            lang.t(w::NODE),
+            lang.t(w::WORDS_SENT),
+            lang.t(w::IN_INPUT_DATA),
+            lang.t(w::WORDS_RECEIVED),
+            lang.t(w::IN_OUTPUT_DATA),
         ],
         rows,
     );
@@ -438,20 +376,17 @@ fn example_modules_table(doc: &mut Builder, g: &Gateway, example: &Example, lang
         rows.push(vec![
             text(way(lang, direction)),
             text(words.to_string()),
-            text(names.join(lang.t(", ", "、"))),
+            text(names.join(lang.t(w::LIST_SEPARATOR))),
             code(hex_bytes(&config)),
         ]);
     }
     doc.table(
-        lang.t(
-            "The modules the master plugs for the example",
-            "示例中主站插入的模块",
-        ),
+        lang.t(w::EXAMPLE_MODULES),
         &[
-            lang.t("Direction", "方向"),
-            lang.t("Words", "字数"),
-            lang.t("Modules, fewest", "模块（最少）"),
-            lang.t("Config bytes (Chk_Cfg)", "配置字节（Chk_Cfg）"),
+            lang.t(w::DIRECTION),
+            lang.t(w::WORDS),
+            lang.t(w::MODULES_FEWEST),
+            lang.t(w::CONFIG_BYTES_CHK_CFG),
         ],
         rows,
     );
@@ -493,11 +428,8 @@ fn example_prm_table(doc: &mut Builder, ir: &Ir, p: &Profibus, example: &Example
         })
         .collect();
     doc.table(
-        lang.f(
-            format!("User_Prm_Data of the example, {} bytes", bytes_of.len()),
-            format!("示例的 User_Prm_Data，{} 字节", bytes_of.len()),
-        ),
-        &[lang.t("Bytes", "字节"), lang.t("Hex", "十六进制")],
+        w::example_user_prm(lang, bytes_of.len()),
+        &[lang.t(w::BYTES), lang.t(w::HEX)],
         rows,
     );
 }
@@ -512,16 +444,17 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let Some(d) = &g.diagnosis else {
         return;
     };
-    doc.section("diagnosis", lang.t("Diagnosis", "诊断"));
-    doc.para(text(lang.f(
-        format!("The master reads the slave's diagnosis (STEP 7: SFC13): {STANDARD_DIAG_BYTES} standard bytes, then the device-related block: its header (bits 7-6 = 00, bits 5-0 = the block's length, the header included), the type, the {} node and the code, whose meaning depends on the type.", g.bus),
-        format!("主站读取从站诊断数据（STEP 7：SFC13）：{STANDARD_DIAG_BYTES} 个标准字节，之后是设备专用诊断块：块头（位 7-6 = 00，位 5-0 = 块长度，含块头）、类型、{} 节点号和故障码，故障码的含义取决于类型。", g.bus),
+    doc.section("diagnosis", lang.t(w::DIAGNOSIS));
+    doc.para(text(w::gateway_diagnosis_intro(
+        lang,
+        STANDARD_DIAG_BYTES,
+        &g.bus,
     )));
     let mut rows = super::params::standard_diagnosis_rows(p, lang);
     rows.extend(block_rows(g, d, lang));
     doc.table(
-        lang.t("The diagnosis, byte by byte", "诊断数据各字节"),
-        &[lang.t("Byte", "字节"), lang.t("Content", "内容")],
+        lang.t(w::DIAGNOSIS_BYTE_BY_BYTE),
+        &[lang.t(w::BYTE), lang.t(w::CONTENT)],
         rows,
     );
     types_table(doc, g, d, lang);
@@ -530,16 +463,13 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         .iter()
         .map(|a| {
             let byte = u16::from(STANDARD_DIAG_BYTES) + 1 + a.first_bit / 8;
-            lang.f(
-                format!("bits {}-{} (byte {byte})", a.first_bit, a.last_bit),
-                format!("位 {}-{}（字节 {byte}）", a.first_bit, a.last_bit),
-            )
+            w::bits_of_byte(lang, a.first_bit, a.last_bit, byte)
         })
         .collect();
     if !areas.is_empty() {
-        doc.para(text(lang.f(
-            format!("The GSD names the values of Unit_Diag_Area {}, counted from the byte after the header, so an engineering tool shows the type and the listed codes as text.", areas.join(" and ")),
-            format!("GSD 文件为 Unit_Diag_Area {}的取值命名（位从块头后一个字节算起），组态软件以文本显示类型和列出的故障码。", areas.join("、")),
+        doc.para(text(w::gsd_names_areas(
+            lang,
+            &i18n::list(lang.into(), &areas),
         )));
     }
 }
@@ -547,11 +477,10 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
 /// `type 4`, `types 1 and 3`.
 fn types_named(lang: Lang, values: &[u8]) -> String {
     let list: Vec<String> = values.iter().map(u8::to_string).collect();
-    match (list.split_last(), lang) {
-        (_, Lang::Zh) => format!("类型 {}", list.join("、")),
-        (Some((last, [])), _) => format!("type {last}"),
-        (Some((last, rest)), _) => format!("types {} and {last}", rest.join(", ")),
-        (None, _) => String::new(),
+    match list.len() {
+        0 => String::new(),
+        1 => w::diagnosis_type(lang, &list[0]),
+        _ => w::diagnosis_types(lang, &i18n::list(lang.into(), &list)),
     }
 }
 
@@ -572,18 +501,15 @@ fn block_rows(g: &Gateway, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
                     .filter(|t| t.len == len)
                     .map(|t| t.value)
                     .collect();
-                lang.f(
-                    format!("{len:02X} ({})", types_named(lang, &types)),
-                    format!("{len:02X}（{}）", types_named(lang, &types)),
-                )
+                w::length_of_types(lang, len, &types_named(lang, &types))
             })
             .collect()
     };
     let mut rows = vec![vec![
         text(bytes(lang, at(0), at(0))),
-        text(lang.f(
-            format!("header: the block's length, {}", by_len.join(" or ")),
-            format!("块头：块长度 {}", by_len.join("或 ")),
+        text(w::diagnosis_header(
+            lang,
+            &by_len.join(lang.t(w::OR_SEPARATOR)),
         )),
     ]];
     let listed: Vec<u8> = d
@@ -595,48 +521,37 @@ fn block_rows(g: &Gateway, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
     for offset in 1..d.max_len {
         let mut contents: Vec<String> = Vec::new();
         if offset == d.type_at {
-            contents.push(lang.t("the type (table below)", "类型（见下表）").into());
+            contents.push(lang.t(w::THE_TYPE).into());
         }
         if offset == d.node_at {
-            contents.push(lang.f(
-                format!(
-                    "the {} node, {}",
-                    g.bus,
-                    range(lang, g.first_node, g.last_node)
-                ),
-                format!(
-                    "{} 节点号，{}",
-                    g.bus,
-                    range(lang, g.first_node, g.last_node)
-                ),
+            contents.push(w::the_node(
+                lang,
+                &g.bus,
+                &w::range(lang, g.first_node, g.last_node),
             ));
         }
         if offset == d.code_at && !listed.is_empty() {
-            contents.push(lang.f(
-                format!("{}: the code", types_named(lang, &listed)),
-                format!("{}：故障码", types_named(lang, &listed)),
-            ));
+            contents.push(w::types_code(lang, &types_named(lang, &listed)));
         }
         for t in &d.types {
             if let DiagCode::Word(name) = &t.code {
                 let half = match offset.checked_sub(d.code_at) {
-                    Some(0) => lang.t("high byte", "高字节"),
-                    Some(1) => lang.t("low byte", "低字节"),
+                    Some(0) => lang.t(w::HIGH_BYTE),
+                    Some(1) => lang.t(w::LOW_BYTE),
                     _ => continue,
                 };
-                contents.push(format!(
-                    "{}{}{}{}",
-                    types_named(lang, &[t.value]),
-                    lang.t(": ", "："),
+                contents.push(w::type_code_word_half(
+                    lang,
+                    &types_named(lang, &[t.value]),
                     lang.text(name),
-                    lang.f(format!(", {half}"), format!("，{half}"))
+                    half,
                 ));
             }
         }
         let content = if contents.is_empty() {
-            lang.t("not used", "未使用").to_string()
+            lang.t(w::NOT_USED).to_string()
         } else {
-            contents.join(lang.t("; ", "；"))
+            contents.join(lang.t(w::PART_SEPARATOR))
         };
         rows.push(vec![
             text(bytes(lang, at(offset), at(offset))),
@@ -694,7 +609,7 @@ fn types_table(doc: &mut Builder, g: &Gateway, d: &Diagnosis, lang: Lang) {
                 rows.push(vec![
                     text(t.value.to_string()),
                     text(lang.text(&t.text)),
-                    text(lang.t("hhll: 16 bits, high byte first", "hhll：16 位，高字节在前")),
+                    text(lang.t(w::HHLL)),
                     text(lang.text(name)),
                     code(shown.join(" ")),
                 ]);
@@ -702,16 +617,13 @@ fn types_table(doc: &mut Builder, g: &Gateway, d: &Diagnosis, lang: Lang) {
         }
     }
     doc.table(
-        lang.f(
-            format!("Diagnosis types and codes, with the block each gives at node {node}"),
-            format!("诊断类型与故障码，及节点 {node} 报出的诊断块"),
-        ),
+        w::diagnosis_types_caption(lang, node),
         &[
-            lang.t("Type", "类型"),
-            lang.t("Meaning", "含义"),
-            lang.t("Code", "故障码"),
-            lang.t("Meaning of the code", "故障码含义"),
-            lang.t("Block, header first", "诊断块（含块头）"),
+            lang.t(w::TYPE),
+            lang.t(w::MEANING),
+            lang.t(w::FAULT_CODE),
+            lang.t(w::FAULT_CODE_MEANING),
+            lang.t(w::BLOCK_HEADER_FIRST),
         ],
         rows,
     );

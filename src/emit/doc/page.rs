@@ -4,6 +4,7 @@
 
 use super::svg::{escape, Svg};
 use super::Lang;
+use crate::i18n::sheet as w;
 use std::fmt::Write;
 
 pub(crate) struct Doc {
@@ -212,7 +213,7 @@ fn html_doc(out: &mut String, doc: &Doc, switched: bool) {
             }
             Block::Table(table) => {
                 tables += 1;
-                html_table(out, table, &doc.lang.table_label(tables));
+                html_table(out, table, &w::table_label(doc.lang, tables));
             }
             Block::Figure(figure) => {
                 figures += 1;
@@ -220,7 +221,7 @@ fn html_doc(out: &mut String, doc: &Doc, switched: bool) {
                     out,
                     "<figure>\n{}\n<figcaption>{} {}</figcaption>\n</figure>",
                     figure.svg.render(),
-                    escape(&doc.lang.figure_label(figures)),
+                    escape(&w::figure_label(doc.lang, figures)),
                     escape(&figure.caption)
                 );
             }
@@ -310,7 +311,7 @@ fn markdown_doc(out: &mut String, doc: &Doc) {
             }
             Block::Table(table) => {
                 tables += 1;
-                md_table(out, table, &doc.lang.table_label(tables));
+                md_table(out, table, &w::table_label(doc.lang, tables));
             }
             Block::Figure(_) => {}
         }

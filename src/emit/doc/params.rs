@@ -5,6 +5,7 @@ use super::page::{code, text, Builder, Cell};
 use super::{
     allowed, bits, bytes, choices_caption, drive_parameter, hex_bytes, mapping_value, Lang,
 };
+use crate::i18n::sheet as w;
 use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
@@ -23,9 +24,9 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     doc.section(
         "parameters",
         if ir.mappings.groups.is_empty() {
-            lang.t("Parameters", "参数")
+            lang.t(w::PARAMETERS)
         } else {
-            lang.t("Parameters: mappings and settings", "参数：映射与设置")
+            lang.t(w::PARAMETERS_MAPPINGS)
         },
     );
     where_set(doc, ir, lang);
@@ -35,14 +36,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     dpv1_indexes(doc, ir, lang);
     let records = longest_records(ir);
     if !records.is_empty() {
-        doc.subsection(
-            "records",
-            lang.t("PROFINET parameter records", "PROFINET 参数记录"),
-        );
-        doc.para(text(lang.t(
-            "The controller writes these records when it plugs a module. Each holds one Unsigned16 per entry, high byte first; a module's PZD record holds the words it transports, and the tables show the longest.",
-            "控制器插入模块时写入以下参数记录。每个条目一个 Unsigned16，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
-        )));
+        doc.subsection("records", lang.t(w::PROFINET_RECORDS));
+        doc.para(text(lang.t(w::RECORDS_INTRO)));
         for record in records {
             record_table(doc, ir, lang, record);
         }
@@ -57,23 +52,12 @@ fn where_set(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if sets.is_empty() {
         return;
     }
-    doc.subsection(
-        "where-set",
-        lang.t("Where each mapping is set", "各映射在何处设置"),
-    );
-    let by_master = sets.iter().any(|s| s.master_writes());
-    let at_drive = sets.iter().any(|s| !s.master_writes());
-    if by_master {
-        doc.para(text(lang.t(
-            "Set by the master: the configuration tool holds the values, and the master writes them at every startup, on PROFIBUS in the parameter telegram (User_Prm_Data), on PROFINET in the module's parameter records. A value changed at the drive is overwritten at the next startup.",
-            "由主站设置：数值保存在组态软件中，主站在每次启动时写入，PROFIBUS 通过参数报文（User_Prm_Data），PROFINET 通过模块的参数记录。在变频器上修改的值会在下次启动时被覆盖。",
-        )));
+    doc.subsection("where-set", lang.t(w::WHERE_SET_HEADING));
+    if sets.iter().any(|s| s.master_writes()) {
+        doc.para(text(lang.t(w::SET_BY_THE_MASTER_PARA)));
     }
-    if at_drive {
-        doc.para(text(lang.t(
-            "Set at the drive: with its keypad, a PKW write or the drive's own tool, as its parameters. No parameter telegram or record carries them: the master writes nothing at startup, and the card uses what the drive holds.",
-            "在变频器上设置：通过键盘、PKW 写操作或变频器自身的工具，作为其功能参数设置。参数报文和参数记录都不包含这些参数：主站在启动时不写入任何值，扩展卡使用变频器中保存的值。",
-        )));
+    if sets.iter().any(|s| !s.master_writes()) {
+        doc.para(text(lang.t(w::SET_AT_THE_DRIVE_PARA)));
     }
     let rows = sets
         .iter()
@@ -81,17 +65,10 @@ fn where_set(doc: &mut Builder, ir: &Ir, lang: Lang) {
             let first = &set.entries[0];
             let last = &set.entries[set.entries.len() - 1];
             let parameters = match (first.parameter, last.parameter) {
-                (Some(a), Some(b)) if a != b => code(lang.f(
-                    format!(
-                        "{} to {}",
-                        super::parameter_name(ir, a),
-                        super::parameter_name(ir, b)
-                    ),
-                    format!(
-                        "{}～{}",
-                        super::parameter_name(ir, a),
-                        super::parameter_name(ir, b)
-                    ),
+                (Some(a), Some(b)) if a != b => code(w::range(
+                    lang,
+                    super::parameter_name(ir, a),
+                    super::parameter_name(ir, b),
                 )),
                 _ => drive_parameter(ir, first),
             };
@@ -99,20 +76,20 @@ fn where_set(doc: &mut Builder, ir: &Ir, lang: Lang) {
                 text(super::set_name(lang, set)),
                 parameters,
                 text(match set.master_writes() {
-                    true => lang.t("by the master", "由主站设置"),
-                    false => lang.t("at the drive", "在变频器上设置"),
+                    true => lang.t(w::BY_THE_MASTER),
+                    false => lang.t(w::AT_THE_DRIVE),
                 }),
                 text(carriers(ir, lang, set)),
             ]
         })
         .collect();
     doc.table(
-        lang.t("Where each mapping is set", "各映射的设置位置"),
+        lang.t(w::WHERE_SET_CAPTION),
         &[
-            lang.t("Mapping", "映射"),
-            lang.t("Drive parameters", "变频器参数"),
-            lang.t("Set", "设置"),
-            lang.t("Carried by", "承载方式"),
+            lang.t(w::MAPPING),
+            lang.t(w::DRIVE_PARAMETERS),
+            lang.t(w::SET),
+            lang.t(w::CARRIED_BY),
         ],
         rows,
     );
@@ -142,16 +119,11 @@ fn carriers(ir: &Ir, lang: Lang, set: &MappingSet) -> String {
         })
     });
     if let Some(record) = record {
-        found.push(lang.f(
-            format!("record {}", record.index),
-            format!("记录 {}", record.index),
-        ));
+        found.push(w::in_record(lang, record.index));
     }
     match found.is_empty() {
-        true => lang
-            .t("nothing: the drive holds them", "无：由变频器保存")
-            .to_string(),
-        false => found.join(lang.t("; ", "；")),
+        true => lang.t(w::NOTHING_THE_DRIVE_HOLDS).to_string(),
+        false => found.join(lang.t(w::SEMICOLON)),
     }
 }
 
@@ -176,27 +148,12 @@ fn longest_records(ir: &Ir) -> Vec<&ParameterRecord> {
 
 fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     let prm = &p.user_prm;
-    doc.subsection(
-        "user-prm",
-        lang.t(
-            "PROFIBUS parameter telegram (User_Prm_Data)",
-            "PROFIBUS 参数报文（User_Prm_Data）",
-        ),
-    );
-    let intro = lang.f(
-        format!("The master sends it before data exchange, after the 7 standard bytes: {} bytes, offsets counted from its first byte.", prm.len),
-        format!("主站在数据交换前发送参数报文，位于 7 个标准字节之后：共 {} 字节，偏移从其第一个字节算起。", prm.len),
-    );
+    doc.subsection("user-prm", lang.t(w::USER_PRM_HEADING));
+    let intro = w::user_prm_intro(lang, prm.len);
     let types = if prm.gateway.is_empty() {
-        lang.t(
-            " Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.",
-            "每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。",
-        )
+        lang.t(w::USER_PRM_TYPES)
     } else {
-        lang.t(
-            " An Unsigned8 is one byte, an Unsigned16 two, high byte first; a BitArea(first-last) is those bits of its byte, whose other bits other parameters hold. The configuration tool shows the values in decimal.",
-            "Unsigned8 占一个字节，Unsigned16 占两个字节，高字节在前；BitArea(起始位-结束位) 为所在字节中的这些位，该字节的其余位属于其它参数。组态软件中以十进制显示。",
-        )
+        lang.t(w::USER_PRM_GATEWAY_TYPES)
     };
     doc.para(text(format!("{intro}{types}")));
     // A drive parameter holds a mapping; a gateway's parameters have none.
@@ -205,17 +162,14 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     if !prm.constant.is_empty() {
         let last = prm.constant.len() as u16 - 1;
         let name = if p.dpv1.is_some() {
-            lang.t(
-                "DPV1_Status_1 to DPV1_Status_3",
-                "DPV1_Status_1～DPV1_Status_3",
-            )
+            lang.t(w::DPV1_STATUS)
         } else {
-            lang.t("constant", "常量")
+            lang.t(w::CONSTANT)
         };
         rows.push(vec![
             text(bytes(lang, 0, last)),
             text(name),
-            text(lang.t("constant", "常量")),
+            text(lang.t(w::CONSTANT)),
             code(hex_bytes(&prm.constant)),
             text("—"),
             text("—"),
@@ -225,12 +179,12 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
         rows.push(param_row(ir, lang, param));
     }
     let mut head = vec![
-        lang.t("Bytes", "字节"),
-        lang.t("Name", "名称"),
-        lang.t("Type", "类型"),
-        lang.t("Default", "默认值"),
-        lang.t("Range or choices", "范围或选项"),
-        lang.t("Drive parameter", "变频器参数"),
+        lang.t(w::BYTES),
+        lang.t(w::NAME),
+        lang.t(w::TYPE),
+        lang.t(w::DEFAULT),
+        lang.t(w::RANGE_OR_CHOICES),
+        lang.t(w::DRIVE_PARAMETER),
     ];
     if !drive_column {
         head.pop();
@@ -238,10 +192,10 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
             row.pop();
         }
     }
-    doc.table(lang.t("User_Prm_Data", "User_Prm_Data"), &head, rows);
+    doc.table(lang.t(w::USER_PRM_DATA), &head, rows);
     let defaults = ir.default_user_prm(prm);
     doc.para(vec![
-        super::page::Run::Text(lang.t("With every default: ", "全部为默认值时：").into()),
+        super::page::Run::Text(lang.t(w::WITH_EVERY_DEFAULT).into()),
         super::page::Run::Code(hex_bytes(&defaults)),
     ]);
 }
@@ -258,7 +212,7 @@ fn param_row(ir: &Ir, lang: Lang, param: &PrmParam) -> Vec<Cell> {
         ),
         PrmHolds::Number { min, max } => (
             facts.default.to_string(),
-            lang.f(format!("{min} to {max}"), format!("{min}～{max}")),
+            w::range(lang, min, max),
             text("—"),
         ),
     };
@@ -276,16 +230,10 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let Some(group) = ir.mappings.group(MappingKind::Dpv1Index) else {
         return;
     };
-    doc.subsection("dpv1", lang.t("DPV1 indexes", "DPV1 自定义 Index"));
-    doc.para(text(lang.t(
-        "A DPV1 class 1 master reads (SFB52) and writes (SFB53) the parameter mapped to an index.",
-        "DPV1 一类主站通过 SFB52 读、SFB53 写映射到各 Index 的功能码。",
-    )));
+    doc.subsection("dpv1", lang.t(w::DPV1_INDEXES));
+    doc.para(text(lang.t(w::DPV1_INTRO)));
     if let Some(length) = group.record_length {
-        doc.para(text(lang.f(
-            format!("Each index's record is {length} bytes; the card refuses others."),
-            format!("每个 Index 的记录长度为 {length} 字节；其它长度被拒绝。"),
-        )));
+        doc.para(text(w::index_record_length(lang, length)));
     }
     let prm_offset = |key: EntryKey| {
         ir.profibus
@@ -306,16 +254,13 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
         })
         .collect();
     doc.table(
-        lang.t(
-            "DPV1 indexes and the parameters they map",
-            "DPV1 Index 及其映射的参数",
-        ),
+        lang.t(w::DPV1_CAPTION),
         &[
-            lang.t("Index", "Index"),
-            lang.t("Name", "名称"),
-            lang.t("Default", "默认值"),
-            lang.t("Range or choices", "范围或选项"),
-            lang.t("In User_Prm_Data", "在 User_Prm_Data 中"),
+            lang.t(w::INDEX),
+            lang.t(w::NAME),
+            lang.t(w::DEFAULT),
+            lang.t(w::RANGE_OR_CHOICES),
+            lang.t(w::IN_USER_PRM),
         ],
         rows,
     );
@@ -338,16 +283,13 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
         .collect();
     let name = lang.text(&record.name.text);
     doc.table(
-        lang.f(
-            format!("Record {}: {name}, {} bytes", record.index, record.length),
-            format!("记录 {}：{name}，{} 字节", record.index, record.length),
-        ),
+        w::record_caption(lang, record.index, name, record.length),
         &[
-            lang.t("Bytes", "字节"),
-            lang.t("Name", "名称"),
-            lang.t("Default", "默认值"),
-            lang.t("Range or choices", "范围或选项"),
-            lang.t("Drive parameter", "变频器参数"),
+            lang.t(w::BYTES),
+            lang.t(w::NAME),
+            lang.t(w::DEFAULT),
+            lang.t(w::RANGE_OR_CHOICES),
+            lang.t(w::DRIVE_PARAMETER),
         ],
         rows,
     );
@@ -367,11 +309,7 @@ fn choices(doc: &mut Builder, ir: &Ir, lang: Lang) {
             let capitalised = caption_chars.next().map_or_else(String::new, |c| {
                 c.to_uppercase().chain(caption_chars).collect()
             });
-            doc.table(
-                capitalised,
-                &[lang.t("Value", "值"), lang.t("Meaning", "含义")],
-                rows,
-            );
+            doc.table(capitalised, &[lang.t(w::VALUE), lang.t(w::MEANING)], rows);
         }
     }
 }
@@ -387,17 +325,18 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     else {
         return;
     };
-    doc.section("diagnosis", lang.t("Diagnosis", "诊断"));
-    doc.para(text(lang.f(
-        format!("The slave's diagnosis: {STANDARD_DIAG_BYTES} standard bytes, then the device-related block of {} bytes, its header byte first (bits 7-6 = 00, bits 5-0 = the block's length). Unit_Diag_Area bits count from bit 0 of the byte after the header.", d.length),
-        format!("从站诊断数据：{STANDARD_DIAG_BYTES} 个标准字节，之后是 {} 字节的设备专用诊断块，首字节为块头（位 7-6 = 00，位 5-0 = 块长度）。Unit_Diag_Area 的位从块头后一个字节的位 0 算起。", d.length),
+    doc.section("diagnosis", lang.t(w::DIAGNOSIS));
+    doc.para(text(w::diagnosis_intro(
+        lang,
+        STANDARD_DIAG_BYTES,
+        d.length,
     )));
     if let Some(info) = &d.info {
         doc.para(text(lang.text(info)));
     }
     doc.table(
-        lang.t("The diagnosis, byte by byte", "诊断数据各字节"),
-        &[lang.t("Byte", "字节"), lang.t("Content", "内容")],
+        lang.t(w::DIAGNOSIS_BYTE_BY_BYTE),
+        &[lang.t(w::BYTE), lang.t(w::CONTENT)],
         diagnosis_rows(p, d, lang),
     );
     for area in &d.areas {
@@ -410,10 +349,7 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
     let mut rows = standard_diagnosis_rows(p, lang);
     rows.push(vec![
         text(bytes(lang, u16::from(header), u16::from(header))),
-        text(lang.f(
-            format!("header: the block's length, {:02X}", d.length),
-            format!("块头：块长度 {:02X}", d.length),
-        )),
+        text(w::diagnosis_header(lang, &format!("{:02X}", d.length))),
     ]);
     for byte in 1..d.length {
         let bit_of_byte = u16::from(byte - 1) * 8;
@@ -425,16 +361,12 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
             .collect();
         let at = header + byte;
         let said = d.byte(at).map(|t| lang.text(t).to_string());
+        let areas = areas.join(lang.t(w::LIST_SEPARATOR));
         let content = match (said, areas.is_empty()) {
             (Some(said), true) => said,
-            (Some(said), false) => lang.f(
-                format!("{said}: {}", areas.join(", ")),
-                format!("{said}：{}", areas.join("、")),
-            ),
-            (None, false) => areas.join(", "),
-            (None, true) => lang
-                .t("device-related, not described", "设备专用，未定义")
-                .to_string(),
+            (Some(said), false) => w::byte_and_areas(lang, &said, &areas),
+            (None, false) => areas,
+            (None, true) => lang.t(w::DEVICE_RELATED_UNDESCRIBED).to_string(),
         };
         let at = u16::from(at);
         rows.push(vec![text(bytes(lang, at, at)), text(content)]);
@@ -446,20 +378,11 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
 pub(super) fn standard_diagnosis_rows(p: &Profibus, lang: Lang) -> Vec<Vec<Cell>> {
     let [ident_high, ident_low] = p.ident_number.to_be_bytes();
     vec![
-        vec![
-            text(bytes(lang, 0, 2)),
-            text(lang.t("Station_Status_1 to Station_Status_3", "站状态 1～3")),
-        ],
-        vec![
-            text(bytes(lang, 3, 3)),
-            text(lang.t("the master's address", "主站号")),
-        ],
+        vec![text(bytes(lang, 0, 2)), text(lang.t(w::STATION_STATUS))],
+        vec![text(bytes(lang, 3, 3)), text(lang.t(w::MASTER_ADDRESS))],
         vec![
             text(bytes(lang, 4, 5)),
-            text(lang.f(
-                format!("Ident_Number, high byte then low: {ident_high:02X} {ident_low:02X}"),
-                format!("Ident_Number，高字节、低字节：{ident_high:02X} {ident_low:02X}"),
-            )),
+            text(w::ident_number_bytes(lang, ident_high, ident_low)),
         ],
     ]
 }
@@ -485,24 +408,12 @@ fn area_table(doc: &mut Builder, d: &Diagnosis, area: &DiagnosisArea, lang: Lang
         })
         .collect();
     doc.table(
-        lang.f(
-            format!(
-                "Unit_Diag_Area {}: values",
-                bits(lang, area.first_bit, area.last_bit)
-            ),
-            format!(
-                "Unit_Diag_Area {}：取值",
-                bits(lang, area.first_bit, area.last_bit)
-            ),
-        ),
+        w::area_values(lang, &bits(lang, area.first_bit, area.last_bit)),
         &[
-            lang.t("Value", "值"),
-            lang.t("Hex", "十六进制"),
-            lang.t("Meaning", "含义"),
-            lang.t(
-                "Block (header first), other bits 0",
-                "诊断块（含块头，其余位为 0）",
-            ),
+            lang.t(w::VALUE),
+            lang.t(w::HEX),
+            lang.t(w::MEANING),
+            lang.t(w::BLOCK_OTHER_BITS_0),
         ],
         rows,
     );

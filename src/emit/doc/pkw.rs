@@ -4,9 +4,10 @@
 
 use super::page::{code, text, Builder, Cell, Run};
 use super::{bytes, parameter_name, Lang};
+use crate::i18n::{codes, sheet as w, Phrase};
 use crate::ir::manual::{Example, ExamplePart, ExampleWord};
 use crate::ir::{Direction, Holds, Ir, PkwKind};
-use crate::pkw::profidrive::{Meaning, PROFILE_ERRORS, REQUESTS, RESPONSES};
+use crate::pkw::profidrive::{PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
 use crate::pkw::{pkw_station_command as station, U16Be};
 
@@ -24,14 +25,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if !has_pkw {
         return;
     }
-    doc.section(
-        "pkw",
-        lang.t("The parameter channel (PKW)", "参数区（PKW）"),
-    );
-    doc.para(text(lang.t(
-        "The PKW words read or change one drive parameter per request, in the first 8 bytes of a module that has them.",
-        "PKW 区位于带 PKW 的模块的前 8 个字节，每次请求读写变频器的一个参数。",
-    )));
+    doc.section("pkw", lang.t(w::PKW_HEADING));
+    doc.para(text(lang.t(w::PKW_INTRO)));
     match ir.telegram.pkw {
         PkwKind::PkeIndPwe => pke_ind_pwe(doc, ir, lang),
         PkwKind::StationCommandAddressValue => station_command(doc, ir, lang),
@@ -53,18 +48,12 @@ fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
     let default = entries()
         .find(|(s, _)| s.holds == Holds::Address)
         .map(|(_, e)| {
-            let why = lang.f(
-                format!("the default of {}", lang.text(&e.name)),
-                format!("{}的默认值", lang.text(&e.name)),
-            );
+            let why = w::the_default_of(lang, lang.text(&e.name));
             (e.default, why)
         });
     let holder = || {
         entries().find_map(|(_, e)| {
-            let why = lang.f(
-                format!("the parameter that sets {}", lang.text(&e.name)),
-                format!("设置{}的参数", lang.text(&e.name)),
-            );
+            let why = w::the_parameter_that_sets(lang, lang.text(&e.name));
             Some((e.parameter?, why))
         })
     };
@@ -76,26 +65,15 @@ fn example_parameter(ir: &Ir, lang: Lang) -> Option<(u16, String)> {
 fn examples_intro(doc: &mut Builder, ir: &Ir, lang: Lang, address: u16, number: &str, why: &str) {
     let name = parameter_name(ir, address);
     doc.para(vec![
-        Run::Text(
-            lang.t("The examples read and write ", "以下示例读写 ")
-                .into(),
-        ),
+        Run::Text(lang.t(w::EXAMPLES_READ_WRITE).into()),
         Run::Code(name),
-        Run::Text(lang.f(
-            format!(
-                " ({number}), {why}. The telegrams are encoded by the firmware layout's own code."
-            ),
-            format!("（{number}，{why}）。报文由固件数据布局的编码代码生成。"),
-        )),
+        Run::Text(w::examples_encoded(lang, number, why)),
     ]);
 }
 
 /// The `address 0xF000` of the vendor channels' examples.
 fn address_number(lang: Lang, address: u16) -> String {
-    lang.f(
-        format!("address 0x{address:04X}"),
-        format!("地址 0x{address:04X}"),
-    )
+    w::address_number(lang, address)
 }
 
 /// Words as the manuals print them, `10F0 0800 0000 0000`; a byte that
@@ -140,8 +118,8 @@ fn code_of(words: [U16Be; 4]) -> u16 {
 fn words_table(
     doc: &mut Builder,
     lang: Lang,
-    directions: [&str; 2],
-    words: [(&str, &str, &str); 4],
+    directions: [Phrase; 2],
+    words: [(&str, Phrase, Phrase); 4],
 ) {
     let rows = words
         .iter()
@@ -150,18 +128,18 @@ fn words_table(
             vec![
                 text(word),
                 text(bytes(lang, first, first + 1)),
-                text(request),
-                text(response),
+                text(lang.t(request)),
+                text(lang.t(response)),
             ]
         })
         .collect();
     doc.table(
-        lang.t("The PKW words", "PKW 数据格式"),
+        lang.t(w::THE_PKW_WORDS),
         &[
-            lang.t("Word", "字"),
-            lang.t("Bytes", "字节"),
-            directions[0],
-            directions[1],
+            lang.t(w::WORD),
+            lang.t(w::BYTES),
+            lang.t(directions[0]),
+            lang.t(directions[1]),
         ],
         rows,
     );
@@ -169,110 +147,58 @@ fn words_table(
 
 fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     // MD810 manual 1.4.2: a write left in the telegram wears out the EEPROM.
-    doc.para(text(lang.t(
-        "A request is executed again every cycle while it stays in the telegram: a write left there writes the EEPROM again and again. Send command 0 when done.",
-        "PKW 数据以循环执行的方式与变频器交互：写命令留在报文中会持续写 EEPROM。操作完成后请发送命令 0。",
-    )));
+    doc.para(text(lang.t(w::PKE_REPEAT)));
     words_table(
         doc,
         lang,
+        [w::PKE_REQUEST_HEAD, w::PKE_RESPONSE_HEAD],
         [
-            lang.t("Request (master → drive)", "主站发送数据"),
-            lang.t("Response (drive → master)", "变频器响应数据"),
-        ],
-        [
-            (
-                "PKE",
-                lang.t(
-                    "bits 15-12: command; bits 11-8: reserved; bits 7-0: address, high byte",
-                    "高 4 位：命令代码；低 4 位（位 11-8）：保留；低 8 位：功能码参数地址高位",
-                ),
-                lang.t(
-                    "bits 15-12: response code; bits 7-0: address, high byte",
-                    "高 4 位：响应代码；低 8 位：功能码参数地址高位",
-                ),
-            ),
-            (
-                "IND",
-                lang.t(
-                    "bits 15-8: address, low byte; bits 7-0: reserved",
-                    "高 8 位：功能码参数地址低位；低 8 位：保留",
-                ),
-                lang.t(
-                    "bits 15-8: address, low byte; bits 7-0: reserved",
-                    "高 8 位：功能码参数地址低位；低 8 位：保留",
-                ),
-            ),
-            (
-                "PWE",
-                lang.t("high word: reserved", "高 16 位：保留"),
-                lang.t("high word: reserved", "高 16 位：保留"),
-            ),
-            (
-                "PWE",
-                lang.t(
-                    "low word: the value to write; unused when reading",
-                    "低 16 位：写请求时为参数值；读请求时无使用",
-                ),
-                lang.t(
-                    "low word: done, the value; cannot execute, the error code",
-                    "低 16 位：请求成功时为参数值；失败时为错误代码",
-                ),
-            ),
+            ("PKE", w::PKE_REQUEST_PKE, w::PKE_RESPONSE_PKE),
+            ("IND", w::PKE_IND, w::PKE_IND),
+            ("PWE", w::PKE_PWE_HIGH, w::PKE_PWE_HIGH),
+            ("PWE", w::PKE_PWE_LOW_REQUEST, w::PKE_PWE_LOW_RESPONSE),
         ],
     );
     let code_row = |code: u16, meaning: &str| vec![text(code.to_string()), text(meaning)];
     let requests = [
-        (pke::PkwRequest::None, lang.t("no request", "无请求")),
-        (
-            pke::PkwRequest::Read { address: 0 },
-            lang.t("read the parameter", "读取功能码参数数据"),
-        ),
+        (pke::PkwRequest::None, lang.t(codes::REQUEST_NONE)),
+        (pke::PkwRequest::Read { address: 0 }, lang.t(w::PKE_READ)),
         (
             pke::PkwRequest::Write {
                 address: 0,
                 value: 0,
             },
-            lang.t("change the parameter", "更改功能码参数数据"),
+            lang.t(w::PKE_CHANGE),
         ),
     ];
     doc.table(
-        lang.t(
-            "Request commands (PKE bits 15-12, decimal)",
-            "命令代码（PKE 高 4 位，十进制）",
-        ),
-        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        lang.t(w::PKE_COMMANDS_CAPTION),
+        &[lang.t(w::CODE), lang.t(w::MEANING)],
         requests
             .iter()
             .map(|(r, m)| code_row(code_of(r.encode()), m))
             .collect(),
     );
     let responses = [
-        (pke::PkwResponse::None, lang.t("no request", "无请求")),
+        (pke::PkwResponse::None, lang.t(codes::REQUEST_NONE)),
         (
             pke::PkwResponse::Done {
                 address: 0,
                 value: 0,
             },
-            lang.t("done", "功能码参数操作正确"),
+            lang.t(w::PKE_DONE_CODE),
         ),
         (
             pke::PkwResponse::Failed {
                 address: 0,
                 error: pke::PkwErrorCode::Other,
             },
-            lang.t(
-                "cannot execute: PWE low holds the error code",
-                "无法执行：PWE 低 16 位为错误代码",
-            ),
+            lang.t(w::PKE_FAILED_CODE),
         ),
     ];
     doc.table(
-        lang.t(
-            "Response codes (PKE bits 15-12, decimal)",
-            "响应代码（PKE 高 4 位，十进制）",
-        ),
-        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        lang.t(w::PKE_RESPONSES_CAPTION),
+        &[lang.t(w::CODE), lang.t(w::MEANING)],
         responses
             .iter()
             .map(|(r, m)| code_row(code_of(r.encode()), m))
@@ -280,11 +206,8 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     );
     let errors = error_codes(lang);
     doc.table(
-        lang.t(
-            "Error codes (as in Modbus)",
-            "错误代码（与标准 MODBUS 一致）",
-        ),
-        &[lang.t("Code", "代码"), lang.t("Meaning", "含义")],
+        lang.t(w::PKE_ERRORS_CAPTION),
+        &[lang.t(w::CODE), lang.t(w::MEANING)],
         errors.iter().map(|(e, m)| code_row(e.code(), m)).collect(),
     );
     if manual_examples(doc, ir, lang) {
@@ -300,18 +223,15 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let write = |value| pke::PkwRequest::Write { address, value }.encode();
     let mut rows = vec![
         example_row(
-            lang.f(format!("read {name}"), format!("读 {name}")),
+            w::read_parameter(lang, &name),
             telegram(read, &[]),
-            lang.t("done", "操作正确"),
+            lang.t(w::DONE),
             telegram(done(0), &[('v', done(ANY))]),
         ),
         example_row(
-            lang.f(
-                format!("change {name} to vvvv"),
-                format!("将 {name} 改为 vvvv"),
-            ),
+            w::change_to_vvvv(lang, &name),
             telegram(write(0), &[('v', write(ANY))]),
-            lang.t("done: the value written", "操作正确：返回写入值"),
+            lang.t(w::DONE_VALUE_WRITTEN),
             telegram(done(0), &[('v', done(ANY))]),
         ),
     ];
@@ -319,29 +239,25 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let failed = |error| pke::PkwResponse::Failed { address, error }.encode();
     let (first, last) = (errors[0].0, errors[errors.len() - 1].0);
     rows.push(example_row(
-        lang.f(format!("read {name}"), format!("读 {name}")),
+        w::read_parameter(lang, &name),
         telegram(read, &[]),
-        &lang.f(
-            format!(
-                "cannot execute: error code eeee, {} to {}",
-                first.code(),
-                last.code()
-            ),
-            format!("无法执行：错误代码 eeee，{}～{}", first.code(), last.code()),
-        ),
+        &w::cannot_execute_eeee(lang, first.code(), last.code()),
         telegram(failed(first), &[('e', every_bit_of_pwe_low(failed(first)))]),
     ));
     rows.push(example_row(
-        lang.t("no request", "无请求").to_string(),
+        lang.t(codes::REQUEST_NONE).to_string(),
         telegram(pke::PkwRequest::None.encode(), &[]),
-        lang.t("no request", "无请求"),
+        lang.t(codes::REQUEST_NONE),
         telegram(pke::PkwResponse::None.encode(), &[]),
     ));
     examples_table(doc, lang, rows);
-    doc.para(text(lang.t(
-        "vvvv: the parameter's value; eeee: the error code.",
-        "vvvv：参数值；eeee：错误代码。",
-    )));
+    doc.para(text(lang.t(w::VVVV_EEEE_LEGEND)));
+}
+
+/// `words` with PWE low's every bit changed: the word varies whole.
+fn every_bit_of_pwe_low(mut words: [U16Be; 4]) -> [U16Be; 4] {
+    words[3] = U16Be::new(!words[3].get());
+    words
 }
 
 /// The manual's examples of the PKW channel, as it prints them, each read
@@ -355,31 +271,23 @@ fn manual_examples(doc: &mut Builder, ir: &Ir, lang: Lang) -> bool {
     if examples.is_empty() {
         return false;
     }
-    doc.para(text(lang.t(
-        "The manual's examples, as it prints them; the last column is what the firmware layout's codec reads in them (gsdc's words).",
-        "手册中的示例，按手册原样列出；最后一列为固件数据布局的解码代码对其的解读（gsdc 的说明）。",
-    )));
+    doc.para(text(lang.t(w::MANUAL_EXAMPLES_INTRO)));
     let rows = examples
         .iter()
         .map(|e| {
-            let mut manual = e.section.clone();
-            if let Some(figure) = &e.figure {
-                manual = lang.f(
-                    format!("{manual}, {}", lang.text(figure)),
-                    format!("{manual}，{}", lang.text(figure)),
-                );
-            }
+            let manual = match &e.figure {
+                Some(figure) => w::section_figure(lang, &e.section, lang.text(figure)),
+                None => e.section.clone(),
+            };
             vec![
                 text(manual),
                 text(match &e.module {
-                    Some(module) => module.clone(),
-                    None => lang
-                        .t("the PKW words of every module", "各模块的 PKW")
-                        .to_string(),
+                    Some(module) => module.as_str(),
+                    None => lang.t(w::PKW_OF_EVERY_MODULE),
                 }),
                 text(match e.direction {
-                    Direction::Out => lang.t("master → drive", "主站 → 变频器"),
-                    Direction::In => lang.t("drive → master", "变频器 → 主站"),
+                    Direction::Out => lang.t(w::MASTER_TO_DRIVE),
+                    Direction::In => lang.t(w::DRIVE_TO_MASTER),
                 }),
                 code(e.printed.clone()),
                 text(lang.text(&e.meaning)),
@@ -388,14 +296,14 @@ fn manual_examples(doc: &mut Builder, ir: &Ir, lang: Lang) -> bool {
         })
         .collect();
     doc.table(
-        lang.t("Worked examples of the manual", "手册中的应用举例"),
+        lang.t(w::MANUAL_EXAMPLES_CAPTION),
         &[
-            lang.t("Manual", "手册"),
-            lang.t("Module", "模块"),
-            lang.t("Direction", "方向"),
-            lang.t("Bytes as printed", "数据（手册原样）"),
-            lang.t("Meaning (the manual's)", "含义（手册原文）"),
-            lang.t("Read by the codec", "解码结果"),
+            lang.t(w::MANUAL),
+            lang.t(w::MODULE),
+            lang.t(w::DIRECTION),
+            lang.t(w::BYTES_AS_PRINTED),
+            lang.t(w::MEANING_THE_MANUALS),
+            lang.t(w::READ_BY_THE_CODEC),
         ],
         rows,
     );
@@ -434,19 +342,15 @@ fn read_by_codec(ir: &Ir, lang: Lang, e: &Example) -> String {
         .collect();
     let read = |bytes: &[u8]| codec_summary(ir, lang, e.direction, crate::pkw::pkw_words(bytes));
     let instances = e.instances();
-    match named.as_slice() {
+    let each: Vec<String> = match named.as_slice() {
         [(name, values)] if values.len() == instances.len() => values
             .iter()
             .zip(&instances)
-            .map(|(value, bytes)| format!("{name} = {value}: {}", read(bytes)))
-            .collect::<Vec<_>>()
-            .join(lang.t("; ", "；")),
-        _ => instances
-            .iter()
-            .map(|bytes| read(bytes))
-            .collect::<Vec<_>>()
-            .join(lang.t("; ", "；")),
-    }
+            .map(|(value, bytes)| w::named_word_reads(lang, name, *value, &read(bytes)))
+            .collect(),
+        _ => instances.iter().map(|bytes| read(bytes)).collect(),
+    };
+    each.join(lang.t(w::SEMICOLON))
 }
 
 /// One PKW request or response in words: `read F0-08`, `done: F0-08 =
@@ -456,63 +360,40 @@ fn codec_summary(ir: &Ir, lang: Lang, direction: Direction, words: [U16Be; 4]) -
     let value = |v: u16| format!("{v} (0x{v:04X})");
     match (ir.telegram.pkw, direction) {
         (PkwKind::PkeIndPwe, Direction::Out) => match pke::PkwRequest::decode(&words) {
-            Ok(pke::PkwRequest::None) => lang.t("no request", "无请求").into(),
-            Ok(pke::PkwRequest::Read { address }) => lang.f(
-                format!("read {}", name(address)),
-                format!("读 {}", name(address)),
-            ),
-            Ok(pke::PkwRequest::Write { address, value: v }) => lang.f(
-                format!("change {} to {}", name(address), value(v)),
-                format!("将 {} 改为 {}", name(address), value(v)),
-            ),
-            Err(_) => lang.t("refused", "拒绝").into(),
+            Ok(pke::PkwRequest::None) => lang.t(codes::REQUEST_NONE).into(),
+            Ok(pke::PkwRequest::Read { address }) => w::read_parameter(lang, &name(address)),
+            Ok(pke::PkwRequest::Write { address, value: v }) => {
+                w::change_to_value(lang, &name(address), &value(v))
+            }
+            Err(_) => lang.t(w::REFUSED).into(),
         },
         (PkwKind::PkeIndPwe, Direction::In) => match pke::PkwResponse::decode(&words) {
-            Ok(pke::PkwResponse::None) => lang.t("no request", "无请求").into(),
-            Ok(pke::PkwResponse::Done { address, value: v }) => lang.f(
-                format!("done: {} = {}", name(address), value(v)),
-                format!("操作正确：{} = {}", name(address), value(v)),
-            ),
-            Ok(pke::PkwResponse::Failed { address, error }) => {
-                let meaning = error_codes(lang)
-                    .iter()
-                    .find(|(e, _)| *e == error)
-                    .map_or("", |(_, m)| *m);
-                lang.f(
-                    format!("cannot execute {}: {meaning}", name(address)),
-                    format!("无法执行 {}：{meaning}", name(address)),
-                )
+            Ok(pke::PkwResponse::None) => lang.t(codes::REQUEST_NONE).into(),
+            Ok(pke::PkwResponse::Done { address, value: v }) => {
+                w::done_value(lang, &name(address), &value(v))
             }
-            Err(_) => lang.t("refused", "拒绝").into(),
+            Ok(pke::PkwResponse::Failed { address, error }) => w::cannot_execute_at(
+                lang,
+                &name(address),
+                lang.t(crate::pkw::pke_error_meaning(error)),
+            ),
+            Err(_) => lang.t(w::REFUSED).into(),
         },
         // Lowering checked that the codec takes every example.
-        (_, Direction::Out) => lang.t("a request the codec reads", "可解码的请求").into(),
-        (_, Direction::In) => lang.t("a response the codec reads", "可解码的响应").into(),
+        (_, Direction::Out) => lang.t(w::A_REQUEST_THE_CODEC_READS).into(),
+        (_, Direction::In) => lang.t(w::A_RESPONSE_THE_CODEC_READS).into(),
     }
 }
 
-/// `words` with PWE low's every bit changed: the word varies whole.
-fn every_bit_of_pwe_low(mut words: [U16Be; 4]) -> [U16Be; 4] {
-    words[3] = U16Be::new(!words[3].get());
-    words
-}
-
 fn error_codes(lang: Lang) -> [(pke::PkwErrorCode, &'static str); 4] {
+    use pke::PkwErrorCode as E;
     [
-        (
-            pke::PkwErrorCode::IllegalCommand,
-            lang.t("illegal command", "非法命令"),
-        ),
-        (
-            pke::PkwErrorCode::IllegalAddress,
-            lang.t("illegal address", "非法地址"),
-        ),
-        (
-            pke::PkwErrorCode::IllegalData,
-            lang.t("illegal data", "非法数据"),
-        ),
-        (pke::PkwErrorCode::Other, lang.t("other error", "其它错误")),
+        E::IllegalCommand,
+        E::IllegalAddress,
+        E::IllegalData,
+        E::Other,
     ]
+    .map(|e| (e, lang.t(crate::pkw::pke_error_meaning(e))))
 }
 
 fn example_row(what: String, request: String, outcome: &str, response: String) -> Vec<Cell> {
@@ -521,15 +402,12 @@ fn example_row(what: String, request: String, outcome: &str, response: String) -
 
 fn examples_table(doc: &mut Builder, lang: Lang, rows: Vec<Vec<Cell>>) {
     doc.table(
-        lang.t(
-            "Worked examples, computed from the description",
-            "应用举例（由设备描述计算）",
-        ),
+        lang.t(w::WORKED_EXAMPLES),
         &[
-            lang.t("Request", "请求"),
-            lang.t("Master sends", "主站发送 PKW"),
-            lang.t("Outcome", "结果"),
-            lang.t("Drive answers", "变频器响应 PKW"),
+            lang.t(w::REQUEST),
+            lang.t(w::MASTER_SENDS),
+            lang.t(w::OUTCOME),
+            lang.t(w::DRIVE_ANSWERS),
         ],
         rows,
     );
@@ -542,33 +420,21 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
     words_table(
         doc,
         lang,
-        [lang.t("Request (controller → drive)", "控制器请求"), lang.t("Reply (drive → controller)", "从站应答")],
+        [w::STATION_REQUEST_HEAD, w::STATION_REPLY_HEAD],
         [
-            ("PKW0", lang.t("high byte: target station (the RS-485 slave); low byte: source station (this drive's own)", "Byte0：目标站号（485 从站）；Byte1：源站号（本机站号）"), lang.t("high byte: target station (the RS-485 master); low byte: source station (the answering drive)", "Byte0：目标站号（485 主站）；Byte1：源站号（本机站号）")),
-            ("PKW1", lang.t("the command", "读写功能码命令"), lang.t("the command; 0x80 + the command on error", "应答命令；错误应答为 0x80+命令码")),
-            ("PKW2", lang.t("the parameter's address", "需要读写的功能码地址"), lang.t("the same address", "功能码地址")),
-            ("PKW3", lang.t("write: the value; read: the count, always 1", "写操作：写的具体值；读操作：读的个数（固定值 1）"), lang.t("read: the value; write: 0; error: the error code", "读操作应答：功能码值；写操作应答：0；错误应答：错误码")),
+            ("PKW0", w::STATION_PKW0_REQUEST, w::STATION_PKW0_REPLY),
+            ("PKW1", w::STATION_PKW1_REQUEST, w::STATION_PKW1_REPLY),
+            ("PKW2", w::STATION_PKW2_REQUEST, w::STATION_PKW2_REPLY),
+            ("PKW3", w::STATION_PKW3_REQUEST, w::STATION_PKW3_REPLY),
         ],
     );
     let commands = [
-        (
-            station::PkwCommand::Read,
-            lang.t("read one parameter", "读一个"),
-        ),
+        (station::PkwCommand::Read, lang.t(w::STATION_READ)),
         (
             station::PkwCommand::WriteAndStore,
-            lang.t(
-                "write one parameter and store it in EEPROM",
-                "写一个，存 EEPROM",
-            ),
+            lang.t(w::STATION_WRITE_STORE),
         ),
-        (
-            station::PkwCommand::Write,
-            lang.t(
-                "write one parameter without storing it",
-                "写一个，不存 EEPROM",
-            ),
-        ),
+        (station::PkwCommand::Write, lang.t(w::STATION_WRITE)),
     ];
     let stations = station::Stations {
         target: 0,
@@ -583,11 +449,11 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         reply.encode()[1].get()
     };
     doc.table(
-        lang.t("Commands (PKW1)", "命令（PKW1）"),
+        lang.t(w::STATION_COMMANDS_CAPTION),
         &[
-            lang.t("Command", "命令"),
-            lang.t("Meaning", "含义"),
-            lang.t("Reply on error", "错误应答"),
+            lang.t(w::COMMAND),
+            lang.t(w::MEANING),
+            lang.t(w::REPLY_ON_ERROR),
         ],
         commands
             .iter()
@@ -600,10 +466,7 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
             })
             .collect(),
     );
-    doc.para(text(lang.t(
-        "The manual lists no error codes: the reply to a failed request carries the drive's error code in PKW3.",
-        "手册未列出错误码：错误应答在 PKW3 中返回变频器的错误码。",
-    )));
+    doc.para(text(lang.t(w::STATION_NO_ERROR_CODES)));
     if manual_examples(doc, ir, lang) {
         return;
     }
@@ -664,9 +527,9 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         )
     };
     let mut rows = vec![example_row(
-        lang.f(format!("read {name}"), format!("读 {name}")),
+        w::read_parameter(lang, &name),
         sent(&|_| station::PkwAccess::Read),
-        lang.t("done: the value", "读操作应答：功能码值"),
+        lang.t(w::STATION_DONE_VALUE),
         answered(&station::PkwReply::Value, 'v'),
     )];
     for (access, done, how) in [
@@ -674,28 +537,25 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
             &(|value| station::PkwAccess::WriteAndStore { value })
                 as &dyn Fn(u16) -> station::PkwAccess,
             station::PkwReply::WrittenAndStored,
-            lang.t(", stored in EEPROM", "，存 EEPROM"),
+            lang.t(w::STORED_IN_EEPROM),
         ),
         (
             &(|value| station::PkwAccess::Write { value }) as &dyn Fn(u16) -> station::PkwAccess,
             station::PkwReply::Written,
-            lang.t(", not stored", "，不存 EEPROM"),
+            lang.t(w::NOT_STORED),
         ),
     ] {
         rows.push(example_row(
-            lang.f(
-                format!("write vvvv to {name}{how}"),
-                format!("将 vvvv 写入 {name}{how}"),
-            ),
+            w::write_vvvv_to(lang, &name, how),
             sent(access),
-            lang.t("done", "写操作应答"),
+            lang.t(w::STATION_DONE_WRITE),
             answered(&|_| done, 'v'),
         ));
     }
     rows.push(example_row(
-        lang.f(format!("read {name}"), format!("读 {name}")),
+        w::read_parameter(lang, &name),
         sent(&|_| station::PkwAccess::Read),
-        lang.t("failed", "错误应答"),
+        lang.t(w::FAILED),
         answered(
             &|error| station::PkwReply::Failed {
                 command: station::PkwCommand::Read,
@@ -705,119 +565,61 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
         ),
     ));
     examples_table(doc, lang, rows);
-    doc.para(text(lang.t(
-        "tt: the target station of the request, ss: its source station (the reply swaps them); vvvv: the value; xxxx: the drive's error code.",
-        "tt：请求的目标站号，ss：请求的源站号（应答中二者互换）；vvvv：参数值；xxxx：变频器的错误码。",
-    )));
+    doc.para(text(lang.t(w::STATION_LEGEND)));
 }
 
 // ---------------------------------------------------------------------------
 // PROFIdrive
 
 fn profidrive_channel(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    doc.para(text(lang.t(
-        "The channel is the PROFIdrive profile's, as its PPO types carry it: PKE holds the request or response id and the parameter number (PNU), IND the subindex, PWE1 and PWE2 the value.",
-        "参数区为 PROFIdrive 行规的参数通道（PPO 类型）：PKE 含请求或应答标识与参数号（PNU），IND 为子索引，PWE1、PWE2 为参数值。",
-    )));
+    doc.para(text(lang.t(w::PROFIDRIVE_INTRO)));
     words_table(
         doc,
         lang,
+        [w::PROFIDRIVE_REQUEST_HEAD, w::PROFIDRIVE_RESPONSE_HEAD],
         [
-            lang.t("Request (master → drive)", "主站请求"),
-            lang.t("Response (drive → master)", "变频器应答"),
-        ],
-        [
-            (
-                "PKE",
-                lang.t(
-                    "bits 15-12: request id; bit 11: SPM, 0; bits 10-0: PNU",
-                    "位 15-12：请求标识；位 11：SPM，为 0；位 10-0：参数号",
-                ),
-                lang.t(
-                    "bits 15-12: response id; bit 11: SPM, 0; bits 10-0: PNU",
-                    "位 15-12：应答标识；位 11：SPM，为 0；位 10-0：参数号",
-                ),
-            ),
-            (
-                "IND",
-                lang.t(
-                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
-                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
-                ),
-                lang.t(
-                    "bits 15-8: subindex; bits 7-0: 0, not read (not defined by the profile)",
-                    "位 15-8：子索引；位 7-0：为 0，不读取（行规未定义）",
-                ),
-            ),
-            (
-                "PWE1",
-                lang.t(
-                    "a double word's high word; 0 otherwise",
-                    "双字参数值的高 16 位；其余为 0",
-                ),
-                lang.t(
-                    "a double word's high word; 0 otherwise",
-                    "双字参数值的高 16 位；其余为 0",
-                ),
-            ),
+            ("PKE", w::PROFIDRIVE_PKE_REQUEST, w::PROFIDRIVE_PKE_RESPONSE),
+            ("IND", w::PROFIDRIVE_IND, w::PROFIDRIVE_IND),
+            ("PWE1", w::PROFIDRIVE_PWE1, w::PROFIDRIVE_PWE1),
             (
                 "PWE2",
-                lang.t(
-                    "a word, or a double word's low word",
-                    "单字参数值，或双字参数值的低 16 位",
-                ),
-                lang.t(
-                    "a word, or a double word's low word; response 7: the error number",
-                    "单字参数值，或双字参数值的低 16 位；应答 7：错误号",
-                ),
+                w::PROFIDRIVE_PWE2_REQUEST,
+                w::PROFIDRIVE_PWE2_RESPONSE,
             ),
         ],
     );
-    let id_row = |id: u8, meanings: &[Meaning]| {
-        let (en, zh) = meanings[usize::from(id)];
-        vec![text(id.to_string()), text(lang.t(en, zh))]
+    let id_row = |id: u8, meanings: &[Phrase]| {
+        vec![
+            text(id.to_string()),
+            text(lang.t(meanings[usize::from(id)])),
+        ]
     };
     doc.table(
-        lang.t(
-            "Request ids (PKE bits 15-12, decimal)",
-            "请求标识（PKE 位 15-12，十进制）",
-        ),
-        &[lang.t("Id", "标识"), lang.t("Meaning", "含义")],
+        lang.t(w::REQUEST_IDS_CAPTION),
+        &[lang.t(w::ID), lang.t(w::MEANING)],
         sample_requests()
             .iter()
             .map(|r| id_row(r.id(), &REQUESTS))
             .collect(),
     );
     doc.table(
-        lang.t(
-            "Response ids (PKE bits 15-12, decimal)",
-            "应答标识（PKE 位 15-12，十进制）",
-        ),
-        &[lang.t("Id", "标识"), lang.t("Meaning", "含义")],
+        lang.t(w::RESPONSE_IDS_CAPTION),
+        &[lang.t(w::ID), lang.t(w::MEANING)],
         sample_responses()
             .iter()
             .map(|r| id_row(r.id(), &RESPONSES))
             .collect(),
     );
-    doc.para(text(lang.t(
-        "The card refuses request 10 (reserved) and 11 to 15, which are not the profile's (MICROMASTER and MASTERDRIVES store a value in EEPROM with 11 to 14). It sends no parameter change reports (responses 9 to 12): SPM is always 0.",
-        "请求标识 10（保留）及 11 至 15（非行规定义；MICROMASTER 与 MASTERDRIVES 用 11 至 14 将参数值写入 EEPROM）不被接受。本卡不发送参数修改报告（应答 9 至 12）：SPM 恒为 0。",
-    )));
+    doc.para(text(lang.t(w::PROFIDRIVE_REFUSED)));
     doc.table(
-        lang.t(
-            "Error numbers of response 7 (PWE2, decimal)",
-            "应答 7 的错误号（PWE2，十进制）",
-        ),
-        &[lang.t("Number", "错误号"), lang.t("Meaning", "含义")],
+        lang.t(w::ERROR_NUMBERS_CAPTION),
+        &[lang.t(w::NUMBER), lang.t(w::MEANING)],
         PROFILE_ERRORS
             .iter()
-            .map(|(number, (en, zh))| vec![text(number.0.to_string()), text(lang.t(en, zh))])
+            .map(|(number, meaning)| vec![text(number.0.to_string()), text(lang.t(*meaning))])
             .collect(),
     );
-    doc.para(text(lang.t(
-        "Other numbers are the drive's own: Siemens manuals give those from 101 on as device-specific.",
-        "其它错误号由变频器自定义：西门子手册中 101 起为设备专用错误号。",
-    )));
+    doc.para(text(lang.t(w::OTHER_NUMBERS)));
     profidrive_examples(doc, ir, lang);
 }
 
@@ -960,48 +762,39 @@ fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
         }
         .encode()
     };
-    let change = lang.f(
-        format!("change {name} to vvvv (word)"),
-        format!("将 {name} 改为 vvvv（单字）"),
-    );
+    let change = w::change_to_word(lang, &name);
     let rows = vec![
         example_row(
-            lang.f(format!("read {name}"), format!("读 {name}")),
+            w::read_parameter(lang, &name),
             read.clone(),
-            lang.t("a word parameter's value", "单字参数值"),
+            lang.t(w::WORD_PARAMETER_VALUE),
             word_value.clone(),
         ),
         example_row(
-            lang.f(format!("read {name}"), format!("读 {name}")),
+            w::read_parameter(lang, &name),
             read,
-            lang.t("a double word parameter's value", "双字参数值"),
+            lang.t(w::DOUBLE_WORD_PARAMETER_VALUE),
             double_value.clone(),
         ),
         example_row(
             change.clone(),
             write_word.clone(),
-            lang.t("done: the value written", "操作正确：返回写入值"),
+            lang.t(w::DONE_VALUE_WRITTEN),
             word_value,
         ),
         example_row(
-            lang.f(
-                format!("change {name} to vvvvvvvv (double word)"),
-                format!("将 {name} 改为 vvvvvvvv（双字）"),
-            ),
+            w::change_to_double_word(lang, &name),
             shown(
                 &|value, parameter| Q::WriteDoubleWord { parameter, value }.encode(),
                 false,
             ),
-            lang.t("done: the value written", "操作正确：返回写入值"),
+            lang.t(w::DONE_VALUE_WRITTEN),
             double_value,
         ),
         example_row(
-            lang.f(
-                format!("read element ss of {name}"),
-                format!("读 {name} 的元素 ss"),
-            ),
+            w::read_element(lang, &name),
             shown(&|_, parameter| Q::ReadArray { parameter }.encode(), true),
-            lang.t("the element's value (word)", "数组元素值（单字）"),
+            lang.t(w::ELEMENT_VALUE),
             shown(
                 &|v, parameter| {
                     R::ArrayWord {
@@ -1016,7 +809,7 @@ fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
         example_row(
             change.clone(),
             write_word.clone(),
-            lang.t("cannot execute: error number xxxx", "无法执行：错误号 xxxx"),
+            lang.t(w::CANNOT_EXECUTE_XXXX),
             telegram(
                 failed(profidrive::PkwErrorNumber(0)),
                 &[('x', failed(profidrive::PkwErrorNumber(u16::MAX)))],
@@ -1025,21 +818,18 @@ fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
         example_row(
             change,
             write_word,
-            lang.t("no master control", "无主控权"),
+            lang.t(codes::NO_MASTER_CONTROL),
             telegram(R::NoAuthority { parameter: p }.encode(), &[]),
         ),
         example_row(
-            lang.t("no request", "无请求").to_string(),
+            lang.t(codes::REQUEST_NONE).to_string(),
             telegram(Q::None.encode(), &[]),
-            lang.t("no response", "无应答"),
+            lang.t(codes::RESPONSE_NONE),
             telegram(R::None.encode(), &[]),
         ),
     ];
     examples_table(doc, lang, rows);
-    doc.para(text(lang.t(
-        "vvvv: the value (vvvvvvvv: a double word, high word first); ss: the subindex; xxxx: the error number.",
-        "vvvv：参数值（vvvvvvvv：双字，高 16 位在前）；ss：子索引；xxxx：错误号。",
-    )));
+    doc.para(text(lang.t(w::PROFIDRIVE_LEGEND)));
 }
 
 #[cfg(test)]
@@ -1088,7 +878,7 @@ mod tests {
             "md810dp.toml",
             include_str!("../../../descriptions/md810dp.toml"),
         );
-        let (address, why) = example_parameter(&md810, Lang::En).unwrap();
+        let (address, why) = example_parameter(&md810, Lang::of("en")).unwrap();
         assert_eq!(
             (address, why.as_str()),
             (0xF000, "the default of PZD1(master->slaver)")
@@ -1097,7 +887,7 @@ mod tests {
             "mv810-pnet02.toml",
             include_str!("../../../descriptions/mv810-pnet02.toml"),
         );
-        let (address, why) = example_parameter(&mv810, Lang::En).unwrap();
+        let (address, why) = example_parameter(&mv810, Lang::of("en")).unwrap();
         assert_eq!(
             (address, why.as_str()),
             (0x2B02, "the parameter that sets PZD2 receive")
@@ -1105,7 +895,7 @@ mod tests {
         // A setting's timeout of 100 ms is a value, not the parameter at
         // address 100: the example stays P43.02.
         let with_timeout = crate::testing::mv810_with_timeout();
-        let (address, _) = example_parameter(&with_timeout, Lang::En).unwrap();
+        let (address, _) = example_parameter(&with_timeout, Lang::of("en")).unwrap();
         assert_eq!(address, 0x2B02);
     }
 }

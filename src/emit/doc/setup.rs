@@ -4,6 +4,7 @@
 
 use super::page::{code, text, Builder, Cell};
 use super::{parameter_name, Lang};
+use crate::i18n::sheet as w;
 use crate::ir::manual::{SetupGroup, SetupStep, SetupTarget};
 use crate::ir::Ir;
 
@@ -11,11 +12,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if ir.setup.is_empty() {
         return;
     }
-    doc.section("setup", lang.t("Setting up the drive", "变频器设置"));
-    doc.para(text(lang.t(
-        "What the manual tells the user to set on the drive and the card, and what it says of them, each table as the section of the manual it names gives it.",
-        "手册要求在变频器和扩展卡上进行的设置及其说明，每个表格按所注明的手册章节列出。",
-    )));
+    doc.section("setup", lang.t(w::SETUP_HEADING));
+    doc.para(text(lang.t(w::SETUP_INTRO)));
     for group in &ir.setup {
         group_table(doc, ir, lang, group);
     }
@@ -33,11 +31,11 @@ fn group_table(doc: &mut Builder, ir: &Ir, lang: Lang, group: &SetupGroup) {
         has(|s| s.meaning.is_some() || !s.values.is_empty()),
     ];
     let head: Vec<&str> = [
-        lang.t("Setting", "设置项"),
-        lang.t("Name", "名称"),
-        lang.t("Value", "值"),
-        lang.t("Default", "默认值"),
-        lang.t("Meaning", "含义"),
+        lang.t(w::SETTING),
+        lang.t(w::NAME),
+        lang.t(w::VALUE),
+        lang.t(w::DEFAULT),
+        lang.t(w::MEANING),
     ]
     .into_iter()
     .zip(std::iter::once(true).chain(columns))
@@ -61,14 +59,8 @@ fn group_table(doc: &mut Builder, ir: &Ir, lang: Lang, group: &SetupGroup) {
         })
         .collect();
     let caption = match &group.title {
-        Some(title) => lang.f(
-            format!("Manual {}: {}", group.section, lang.text(title)),
-            format!("手册 {}：{}", group.section, lang.text(title)),
-        ),
-        None => lang.f(
-            format!("Manual {}", group.section),
-            format!("手册 {}", group.section),
-        ),
+        Some(title) => w::manual_section_titled(lang, &group.section, lang.text(title)),
+        None => w::manual_section(lang, &group.section),
     };
     doc.table(caption, &head, rows);
     if let Some(note) = &group.note {
@@ -81,17 +73,10 @@ fn group_table(doc: &mut Builder, ir: &Ir, lang: Lang, group: &SetupGroup) {
 fn target(ir: &Ir, lang: Lang, target: &SetupTarget) -> Cell {
     match target {
         SetupTarget::Parameter(address) => code(parameter_name(ir, *address)),
-        SetupTarget::Parameters(first, last) => code(lang.f(
-            format!(
-                "{} to {}",
-                parameter_name(ir, *first),
-                parameter_name(ir, *last)
-            ),
-            format!(
-                "{}～{}",
-                parameter_name(ir, *first),
-                parameter_name(ir, *last)
-            ),
+        SetupTarget::Parameters(first, last) => code(w::range(
+            lang,
+            parameter_name(ir, *first),
+            parameter_name(ir, *last),
         )),
         SetupTarget::Item(item) => text(lang.text(item)),
         _ => text("—"),
@@ -105,12 +90,10 @@ fn optional(lang: Lang, t: Option<&crate::ir::Text>) -> Cell {
 /// The meaning, then the table of values the manual gives, each with its
 /// text: `配置 DP 节地址; 0: 禁止 DP 功能; 1~125: DP 通讯地址`.
 fn meaning(lang: Lang, step: &SetupStep) -> String {
-    let values = step.values.iter().map(|(value, meaning)| {
-        lang.f(
-            format!("{}: {}", lang.text(value), lang.text(meaning)),
-            format!("{}：{}", lang.text(value), lang.text(meaning)),
-        )
-    });
+    let values = step
+        .values
+        .iter()
+        .map(|(value, meaning)| w::value_means(lang, lang.text(value), lang.text(meaning)));
     let parts: Vec<String> = step
         .meaning
         .iter()
@@ -119,6 +102,6 @@ fn meaning(lang: Lang, step: &SetupStep) -> String {
         .collect();
     match parts.is_empty() {
         true => "—".to_string(),
-        false => parts.join(lang.t("; ", "；")),
+        false => parts.join(lang.t(w::SEMICOLON)),
     }
 }

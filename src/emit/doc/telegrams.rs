@@ -5,6 +5,7 @@
 use super::page::{code, text, Builder, Cell};
 use super::svg::{self, Align, Item, Line, Rect, Style, Svg, Weight};
 use super::{bits, bytes, parameter_name, Lang};
+use crate::i18n::sheet as w;
 use crate::ir::profinet::{self, ModuleKind};
 use crate::ir::{
     Allowed, Bus, Direction, EntryKey, Ir, Layout, MappingKind, ModuleId, PkwKind, Word,
@@ -46,8 +47,8 @@ fn modules(ir: &Ir, lang: Lang) -> Vec<Module<'_>> {
 
 fn direction_name(lang: Lang, direction: Direction) -> &'static str {
     match direction {
-        Direction::Out => lang.t("master → drive", "主站 → 变频器"),
-        Direction::In => lang.t("drive → master", "变频器 → 主站"),
+        Direction::Out => lang.t(w::MASTER_TO_DRIVE),
+        Direction::In => lang.t(w::DRIVE_TO_MASTER),
     }
 }
 
@@ -57,38 +58,23 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         return;
     }
     let (heading, caption) = match (ir.profibus.is_some(), ir.profinet.is_some()) {
-        (true, false) => (
-            lang.t("Cyclic data: PPO types", "周期数据：PPO 类型"),
-            lang.t("PPO types", "PPO 类型"),
-        ),
-        (false, true) => (
-            lang.t("Cyclic data: modules", "周期数据：模块"),
-            lang.t("PROFINET modules", "PROFINET 模块"),
-        ),
-        _ => (
-            lang.t(
-                "Cyclic data: PPO types and modules",
-                "周期数据：PPO 类型与模块",
-            ),
-            lang.t("PPO types and PROFINET modules", "PPO 类型与 PROFINET 模块"),
-        ),
+        (true, false) => (lang.t(w::CYCLIC_PPO), lang.t(w::PPO_TYPES)),
+        (false, true) => (lang.t(w::CYCLIC_MODULES), lang.t(w::PROFINET_MODULES)),
+        _ => (lang.t(w::CYCLIC_BOTH), lang.t(w::PPO_AND_MODULES)),
     };
     doc.section("telegrams", heading);
-    doc.para(text(lang.t(
-        "Each module carries the same number of words each way: the parameter channel (PKW) when it has one, then its process data words (PZD). Every word is 16 bits, high byte first.",
-        "每个模块在两个方向上传送相同数量的字：先是参数区（PKW，若有），后是过程数据区（PZD）。每个字 16 位，高字节在前。",
-    )));
+    doc.para(text(lang.t(w::TELEGRAMS_INTRO)));
     let rows = modules.iter().map(module_row).collect();
     doc.table(
         caption,
         &[
-            lang.t("Module", "模块"),
-            lang.t("Bus", "总线"),
-            lang.t("PKW words", "PKW 字数"),
-            lang.t("PZD words", "PZD 字数"),
-            lang.t("Bytes each way", "每方向字节数"),
-            lang.t("Config bytes (GSD)", "配置字节（GSD）"),
-            lang.t("Module ident number (GSDML)", "模块标识号（GSDML）"),
+            lang.t(w::MODULE),
+            lang.t(w::BUS),
+            lang.t(w::PKW_WORDS),
+            lang.t(w::PZD_WORDS),
+            lang.t(w::BYTES_EACH_WAY),
+            lang.t(w::CONFIG_BYTES_GSD),
+            lang.t(w::MODULE_IDENT_GSDML),
         ],
         rows,
     );
@@ -96,11 +82,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         let of_bus: Vec<&Module> = modules.iter().filter(|m| m.bus == bus).collect();
         if !of_bus.is_empty() {
             let caption = match bus {
-                Bus::Profibus => lang.t("PPO types, one box per word", "PPO 类型，每个字一个方框"),
-                Bus::Profinet => lang.t(
-                    "PROFINET modules, one box per word",
-                    "PROFINET 模块，每个字一个方框",
-                ),
+                Bus::Profibus => lang.t(w::PPO_OVERVIEW),
+                Bus::Profinet => lang.t(w::MODULES_OVERVIEW),
             };
             doc.figure(caption, overview(ir, lang, &of_bus, caption));
         }
@@ -146,12 +129,7 @@ fn overview(ir: &Ir, lang: Lang, modules: &[&Module], title: &str) -> Svg {
         .max()
         .unwrap_or(0)
         + 2 * svg::PAD;
-    let bytes_label = |m: &Module| {
-        lang.f(
-            format!("{} bytes", m.layout.bytes()),
-            format!("{} 字节", m.layout.bytes()),
-        )
-    };
+    let bytes_label = |m: &Module| w::bytes_count(lang, m.layout.bytes());
     let bytes_w = modules
         .iter()
         .map(|m| svg::text_width(&bytes_label(m), Weight::Normal))
@@ -310,7 +288,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
             },
             None => WordView {
                 label,
-                role: lang.t("not mapped", "未映射").to_string(),
+                role: lang.t(w::NOT_MAPPED).to_string(),
                 mapped: false,
                 parameter: None,
                 first_byte,
@@ -369,19 +347,19 @@ fn pkw_words(kind: PkwKind, lang: Lang, direction: Direction) -> Vec<(&'static s
             (
                 "PKE",
                 if out {
-                    lang.t("command, address", "命令、地址")
+                    lang.t(w::ROLE_COMMAND_ADDRESS)
                 } else {
-                    lang.t("response, address", "响应、地址")
+                    lang.t(w::ROLE_RESPONSE_ADDRESS)
                 },
             ),
-            ("IND", lang.t("address, reserved", "地址、保留")),
-            ("PWE", lang.t("reserved", "保留")),
+            ("IND", lang.t(w::ROLE_ADDRESS_RESERVED)),
+            ("PWE", lang.t(w::RESERVED)),
             (
                 "PWE",
                 if out {
-                    lang.t("value to write", "写入值")
+                    lang.t(w::ROLE_VALUE_TO_WRITE)
                 } else {
-                    lang.t("value or error", "参数值或错误代码")
+                    lang.t(w::ROLE_VALUE_OR_ERROR_CODE)
                 },
             ),
         ],
@@ -389,39 +367,39 @@ fn pkw_words(kind: PkwKind, lang: Lang, direction: Direction) -> Vec<(&'static s
             (
                 "PKE",
                 if out {
-                    lang.t("request id, PNU", "请求标识、参数号")
+                    lang.t(w::ROLE_REQUEST_ID_PNU)
                 } else {
-                    lang.t("response id, PNU", "应答标识、参数号")
+                    lang.t(w::ROLE_RESPONSE_ID_PNU)
                 },
             ),
-            ("IND", lang.t("subindex", "子索引")),
-            ("PWE1", lang.t("value, high word", "参数值高 16 位")),
+            ("IND", lang.t(w::ROLE_SUBINDEX)),
+            ("PWE1", lang.t(w::ROLE_VALUE_HIGH)),
             (
                 "PWE2",
                 if out {
-                    lang.t("value, low word", "参数值低 16 位")
+                    lang.t(w::ROLE_VALUE_LOW)
                 } else {
-                    lang.t("value or error number", "参数值或错误号")
+                    lang.t(w::ROLE_VALUE_OR_ERROR_NUMBER)
                 },
             ),
         ],
         PkwKind::StationCommandAddressValue => vec![
-            ("PKW0", lang.t("stations", "站号")),
+            ("PKW0", lang.t(w::ROLE_STATIONS)),
             (
                 "PKW1",
                 if out {
-                    lang.t("command", "命令")
+                    lang.t(w::ROLE_COMMAND)
                 } else {
-                    lang.t("reply", "应答")
+                    lang.t(w::ROLE_REPLY)
                 },
             ),
-            ("PKW2", lang.t("address", "地址")),
+            ("PKW2", lang.t(w::ROLE_ADDRESS)),
             (
                 "PKW3",
                 if out {
-                    lang.t("value or count", "参数值或个数")
+                    lang.t(w::ROLE_VALUE_OR_COUNT)
                 } else {
-                    lang.t("value or error", "参数值或错误码")
+                    lang.t(w::ROLE_VALUE_OR_ERROR)
                 },
             ),
         ],
@@ -464,18 +442,15 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if modules.is_empty() {
         return;
     }
-    doc.section("words", lang.t("The words of each telegram", "各报文的字"));
-    doc.para(text(lang.t(
-        "A shorter module carries the first words of a longer one when they are the same; each diagram shows the longest and names the others. The PZD words carry what the parameter telegram or the records map to them; the diagrams show the defaults.",
-        "较短模块的字与较长模块的前几个字相同时，只画出最长的模块，并列出其余模块。PZD 字传送参数报文或记录中映射的内容，图中为默认值。",
-    )));
+    doc.section("words", lang.t(w::WORDS_HEADING));
+    doc.para(text(lang.t(w::WORDS_INTRO)));
     for (longest, others) in figure_groups(ir, lang, &modules) {
         let mut caption = longest.name.clone();
         if !others.is_empty() {
             let names: Vec<&str> = others.iter().map(|m| m.name.as_str()).collect();
-            caption.push_str(&lang.f(
-                format!(" (its first words are also {})", names.join(", ")),
-                format!("（{} 为其前几个字）", names.join("、")),
+            caption.push_str(&w::also_first_words(
+                lang,
+                &names.join(lang.t(w::LIST_SEPARATOR)),
             ));
         }
         let out = words(ir, lang, longest, Direction::Out);
@@ -507,8 +482,8 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         doc.table(
             caption,
             &[
-                lang.t("Word", "字"),
-                lang.t("Bytes", "字节"),
+                lang.t(w::WORD),
+                lang.t(w::BYTES),
                 direction_name(lang, Direction::Out),
                 direction_name(lang, Direction::In),
             ],
@@ -522,17 +497,11 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
 }
 
-fn word_cell(lang: Lang, w: &WordView) -> String {
-    match (w.mapped, &w.parameter) {
-        (true, Some(p)) => lang.f(
-            format!("{} (default; {p} sets it)", w.role),
-            format!("{}（默认值；由 {p} 设置）", w.role),
-        ),
-        (true, None) => lang.f(
-            format!("{} (default)", w.role),
-            format!("{}（默认值）", w.role),
-        ),
-        (false, _) => w.role.clone(),
+fn word_cell(lang: Lang, word: &WordView) -> String {
+    match (word.mapped, &word.parameter) {
+        (true, Some(p)) => w::default_set_by(lang, &word.role, p),
+        (true, None) => w::default_value(lang, &word.role),
+        (false, _) => word.role.clone(),
     }
 }
 
@@ -614,20 +583,14 @@ pub(super) fn words_figure(
 
 fn bits_part(doc: &mut Builder, lang: Lang, word: &Word, direction: Direction) {
     let name = lang.text(&word.name);
-    let caption = lang.f(
-        format!(
-            "{name}, PZD1 {}, bit by bit",
-            direction_name(lang, direction)
-        ),
-        format!("{name}（PZD1，{}）各位", direction_name(lang, direction)),
-    );
+    let caption = w::bit_by_bit(lang, name, direction_name(lang, direction));
     doc.figure(caption.clone(), bits_figure(lang, &caption, word));
     let rows = word
         .bits
         .iter()
         .map(|b| {
             let values = b.values.as_ref().map_or_else(
-                || lang.t("1 = yes, 0 = no", "1：有效，0：无效").to_string(),
+                || lang.t(w::ONE_YES_ZERO_NO).to_string(),
                 |v| {
                     v.choices
                         .iter()
@@ -645,11 +608,7 @@ fn bits_part(doc: &mut Builder, lang: Lang, word: &Word, direction: Direction) {
         .collect();
     doc.table(
         caption,
-        &[
-            lang.t("Bits", "位"),
-            lang.t("Name", "名称"),
-            lang.t("Values", "取值"),
-        ],
+        &[lang.t(w::BITS), lang.t(w::NAME), lang.t(w::VALUES)],
         rows,
     );
 }
@@ -698,7 +657,7 @@ fn bits_figure(lang: Lang, title: &str, word: &Word) -> Svg {
         |bit: u8| MARGIN + u32::from(1 - bit / 8) * (number_h + box_h + BOX_GAP + 4) + number_h;
     let mut items = Vec::new();
     for bit in 0..16u8 {
-        let number = lang.f(format!("bit {bit}"), format!("Bit{bit}"));
+        let number = w::bit(lang, bit);
         items.push(slot(
             Rect {
                 x: col_x(bit),

@@ -3,6 +3,7 @@
 
 use super::ids::module_tag;
 use super::records::{self, RecordPlan};
+use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{
     AccessPoint, BitItem, Category, DataItem, Module, ModuleKind, TextRef, PROFIDRIVE_API,
 };
@@ -66,16 +67,10 @@ pub fn module(
 fn access_point(tag: &str) -> AccessPoint {
     AccessPoint {
         id: format!("IDS_MAP_{tag}"),
-        name: TextRef::new(
-            "IDT_ACCESS_POINT",
-            Text::en_zh("Module Access Point", "模块访问点"),
-        ),
+        name: TextRef::new("IDT_ACCESS_POINT", Text::phrase(files::MODULE_ACCESS_POINT)),
         info: TextRef::new(
             "IDT_ACCESS_POINT_INFO",
-            Text::en_zh(
-                "PROFIdrive parameter access through this submodule",
-                "通过此子模块进行 PROFIdrive 参数访问",
-            ),
+            Text::phrase(files::MODULE_ACCESS_POINT_INFO),
         ),
     }
 }
@@ -85,22 +80,21 @@ fn access_point(tag: &str) -> AccessPoint {
 /// modules of PZD words only (a vendor's telegram 1 among them).
 pub fn category(kind: ModuleKind, layout: Layout, profidrive: bool) -> Category {
     let (tag, text) = match kind {
-        ModuleKind::StandardTelegram1 if profidrive => (
-            "STANDARD_TELEGRAMS",
-            Text::en_zh("Standard telegrams", "标准报文"),
-        ),
-        _ if layout.pkw => ("PKW_PZD", Text::en_zh("PKW and PZD", "PKW 和 PZD")),
-        _ => ("PZD", Text::english("PZD")),
+        ModuleKind::StandardTelegram1 if profidrive => {
+            ("STANDARD_TELEGRAMS", files::CATEGORY_STANDARD_TELEGRAMS)
+        }
+        _ if layout.pkw => ("PKW_PZD", files::CATEGORY_PKW_PZD),
+        _ => ("PZD", files::CATEGORY_PZD),
     };
     Category {
         id: format!("IDC_{tag}"),
-        text: TextRef::new(format!("IDT_CATEGORY_{tag}"), text),
+        text: TextRef::new(format!("IDT_CATEGORY_{tag}"), Text::phrase(text)),
     }
 }
 
 /// PROFIdrive's name of its telegram 1.
 pub fn profidrive_telegram_1_name() -> Text {
-    Text::en_zh("Standard telegram 1", "标准报文 1")
+    Text::phrase(files::STANDARD_TELEGRAM_1)
 }
 
 /// gsdc's description, then the description's own words after a full stop.
@@ -108,31 +102,9 @@ fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     let Some(info) = info else {
         return gsdc;
     };
-    let mut languages: Vec<&str> = gsdc
-        .others
-        .iter()
-        .chain(&info.others)
-        .map(|(code, _)| code.as_str())
-        .collect();
-    languages.sort_unstable();
-    languages.dedup();
-    // A Chinese or Japanese sentence ends in its own full stop.
-    let stop = |code: &str| {
-        if matches!(code, "zh" | "ja") {
-            "。"
-        } else {
-            ". "
-        }
-    };
-    let join = |code: &str| format!("{}{}{}", gsdc.get(code), stop(code), info.get(code));
-    Text {
-        en: join("en"),
-        others: languages
-            .iter()
-            .map(|code| (code.to_string(), join(code)))
-            .collect(),
-        gsd: None,
-    }
+    Text::composed(&[&gsdc, &info], |code, lang| {
+        files::with_info(lang, gsdc.get(code), info.get(code))
+    })
 }
 
 /// Stable ident numbers, so firmware and GSDML agree without a table:
@@ -162,32 +134,24 @@ fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
     }
 }
 
-/// What a module carries, in gsdc's words (English and gsdc's Chinese);
-/// a vendor's telegram 1 under the name the description gives it, in each
-/// of the name's languages.
+/// What a module carries, in gsdc's words; a vendor's telegram 1 under the
+/// name the description gives it, in each of the name's languages.
 fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
     let bytes = layout.bytes();
     let n = layout.pzd_words;
     match kind {
-        ModuleKind::StandardTelegram1 if profidrive => Text::en_zh(
-            format!("PROFIdrive standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way"),
-            format!("PROFIdrive 标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节"),
-        ),
-        ModuleKind::StandardTelegram1 => name.by_language(|code, name| match code {
-            "zh" => format!("{name}：{n} 个 PZD 字；每个方向 {bytes} 字节"),
-            _ => format!("{name}: {n} PZD words; {bytes} bytes each way"),
-        }),
-        ModuleKind::Pzd => {
-            let (pkw, pkw_zh) = match layout.pkw_words() {
-                0 => (String::new(), String::new()),
-                n => (format!("PKW channel ({n} words) and "), format!("PKW 通道（{n} 个字）和 ")),
-            };
-            let words = if n == 1 { "1 PZD word".to_string() } else { format!("{n} PZD words") };
-            Text::en_zh(
-                format!("{pkw}{words}; {bytes} bytes each way"),
-                format!("{pkw_zh}{n} 个 PZD 字；每个方向 {bytes} 字节"),
-            )
+        ModuleKind::StandardTelegram1 if profidrive => {
+            Text::gsdc(|lang| files::profidrive_telegram_1_info(lang, bytes))
         }
+        ModuleKind::StandardTelegram1 => Text::composed(&[name], |code, lang| {
+            files::vendor_telegram_1_info(lang, name.get(code), n, bytes)
+        }),
+        ModuleKind::Pzd => Text::gsdc(|lang| match (layout.pkw_words(), n) {
+            (0, 1) => files::pzd_module_info_one(lang, bytes),
+            (0, n) => files::pzd_module_info(lang, n, bytes),
+            (pkw, 1) => files::pkw_pzd_module_info_one(lang, pkw, bytes),
+            (pkw, n) => files::pkw_pzd_module_info(lang, pkw, n, bytes),
+        }),
     }
 }
 
@@ -203,26 +167,12 @@ fn plain(tag: &str, text: Text) -> DataItem {
 /// A", "ZSW1 Status word 1", "NIST_A Speed actual value A").
 fn profidrive_telegram_1(direction: Direction) -> Vec<DataItem> {
     let words = match direction {
-        Direction::In => [
-            ("ZSW1", "ZSW1 (status word 1)", "ZSW1（状态字 1）"),
-            (
-                "NIST_A",
-                "NIST_A (speed actual value A)",
-                "NIST_A（速度实际值 A）",
-            ),
-        ],
-        Direction::Out => [
-            ("STW1", "STW1 (control word 1)", "STW1（控制字 1）"),
-            (
-                "NSOLL_A",
-                "NSOLL_A (speed setpoint A)",
-                "NSOLL_A（速度设定值 A）",
-            ),
-        ],
+        Direction::In => [("ZSW1", files::ZSW1), ("NIST_A", files::NIST_A)],
+        Direction::Out => [("STW1", files::STW1), ("NSOLL_A", files::NSOLL_A)],
     };
     words
         .iter()
-        .map(|(tag, en, zh)| plain(tag, Text::en_zh(*en, *zh)))
+        .map(|(tag, name)| plain(tag, Text::phrase(*name)))
         .collect()
 }
 
@@ -236,7 +186,7 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
     };
     let pkw = pkw
         .iter()
-        .map(|(tag, en, zh)| plain(&format!("PKW_{tag}"), Text::en_zh(*en, *zh)));
+        .map(|(tag, name)| plain(&format!("PKW_{tag}"), Text::phrase(*name)));
     let word = telegram.word(direction);
     let tag = match direction {
         Direction::Out => "CONTROL",
@@ -256,31 +206,29 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
     pkw.chain(pzd).collect()
 }
 
-/// The PKW channel's words, the same both ways: TextId tag, English and
-/// Chinese (MD810's manual writes `PWE 高 16 位`, `低 16 位`).
-type WordName = (&'static str, &'static str, &'static str);
-fn pkw_words(kind: PkwKind) -> &'static [WordName] {
+/// The PKW channel's words, the same both ways: TextId tag and name.
+fn pkw_words(kind: PkwKind) -> &'static [(&'static str, Phrase)] {
     match kind {
         PkwKind::None => &[],
         PkwKind::PkeIndPwe => &[
-            ("PKE", "PKE", "PKE"),
-            ("IND", "IND", "IND"),
-            ("PWE_HIGH", "PWE high", "PWE 高 16 位"),
-            ("PWE_LOW", "PWE low", "PWE 低 16 位"),
+            ("PKE", files::PKE),
+            ("IND", files::IND),
+            ("PWE_HIGH", files::PWE_HIGH),
+            ("PWE_LOW", files::PWE_LOW),
         ],
         PkwKind::StationCommandAddressValue => &[
-            ("STATION", "Station", "站号"),
-            ("COMMAND", "Command", "命令"),
-            ("ADDRESS", "Address", "地址"),
-            ("VALUE", "Value", "数值"),
+            ("STATION", files::PKW_STATION),
+            ("COMMAND", files::PKW_COMMAND),
+            ("ADDRESS", files::PKW_ADDRESS),
+            ("VALUE", files::PKW_VALUE),
         ],
         // The profile's names (MM440 OI p.157: "Parameter value, high
         // (PWE1) 3rd word").
         PkwKind::Profidrive => &[
-            ("PKE", "PKE", "PKE"),
-            ("IND", "IND", "IND"),
-            ("PWE1", "PWE1", "PWE1"),
-            ("PWE2", "PWE2", "PWE2"),
+            ("PKE", files::PKE),
+            ("IND", files::IND),
+            ("PWE1", files::PWE1),
+            ("PWE2", files::PWE2),
         ],
     }
 }
@@ -301,37 +249,25 @@ fn bit_items<'a>(tag: &'a str, field: &'a BitField) -> impl Iterator<Item = BitI
 /// In every language the field or its values have.
 fn bit_text(field: &BitField, index: Option<u8>) -> Text {
     let choices = field.values.as_ref().map_or(&[][..], |v| &v.choices[..]);
-    let label = |language: &str| {
-        let mut text = field.name.get(language).to_string();
-        if let Some(index) = index {
-            text.push_str(&format!(" bit {index}"));
-        }
+    let label = |code: &str, lang| {
+        let name = field.name.get(code);
+        let mut text = match index {
+            Some(index) => files::field_bit(lang, name, index),
+            None => name.to_string(),
+        };
         if !choices.is_empty() {
             let values: Vec<String> = choices
                 .iter()
-                .map(|c| format!("{} = {}", c.value, c.text.get(language)))
+                .map(|c| format!("{} = {}", c.value, c.text.get(code)))
                 .collect();
             text.push_str(&format!(" ({})", values.join(", ")));
         }
         text
     };
-    let mut languages: Vec<&str> = field
-        .name
-        .others
-        .iter()
-        .chain(choices.iter().flat_map(|c| &c.text.others))
-        .map(|(code, _)| code.as_str())
+    let parts: Vec<&Text> = std::iter::once(&field.name)
+        .chain(choices.iter().map(|c| &c.text))
         .collect();
-    languages.sort_unstable();
-    languages.dedup();
-    Text {
-        en: label("en"),
-        others: languages
-            .into_iter()
-            .map(|code| (code.to_string(), label(code)))
-            .collect(),
-        gsd: None,
-    }
+    Text::composed(&parts, label)
 }
 
 /// IOConfigData's MaxInputLength and MaxOutputLength bound what the input
@@ -361,7 +297,11 @@ mod tests {
         let field = BitField {
             first: 9,
             last: 10,
-            name: Text::en_zh("Control mode", "控制方式"),
+            name: Text {
+                en: "Control mode".into(),
+                others: vec![("zh".into(), "控制方式".into())],
+                gsd: None,
+            },
             ident: Ident::of(&["control", "mode"]),
             values: Some(ValueSet {
                 ident: Ident::of(&["control", "mode"]),
@@ -375,5 +315,7 @@ mod tests {
         let text = bit_text(&field, Some(1));
         assert_eq!(text.en, "Control mode bit 1 (0 = Keypad)");
         assert_eq!(text.get("zh"), "控制方式 bit 1 (0 = Keypad)");
+        // gsdc's word in German, the description's name in English.
+        assert_eq!(text.get("de"), "Control mode Bit 1 (0 = Keypad)");
     }
 }

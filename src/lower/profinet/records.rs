@@ -5,6 +5,7 @@
 use super::ids::{kind_tag, value_tag};
 use crate::description as raw;
 use crate::diag::Diagnostic;
+use crate::i18n::files;
 use crate::ir::profinet::{
     self, FixedValues, Module, ModuleKind, ParameterRecord, RecordReading, RecordRef, TextRef,
     ValueItem,
@@ -397,21 +398,14 @@ pub fn fixed_values(mappings: &Mappings, modules: &[Module]) -> Vec<FixedValues>
         .collect()
 }
 
-/// gsdc's name of a record, in English and gsdc's Chinese.
+/// gsdc's name of a record.
 fn record_name(kind: MappingKind) -> Text {
-    let (en, zh) = match kind {
-        MappingKind::PzdOut => (
-            "PZD output mapping (controller to drive)",
-            "PZD 输出映射（控制器到驱动器）",
-        ),
-        MappingKind::PzdIn => (
-            "PZD input mapping (drive to controller)",
-            "PZD 输入映射（驱动器到控制器）",
-        ),
-        MappingKind::Dpv1Index => ("Record index mapping", "记录索引映射"),
-        MappingKind::Setting => ("Drive settings", "驱动器设置"),
-    };
-    Text::en_zh(en, zh)
+    Text::phrase(match kind {
+        MappingKind::PzdOut => files::RECORD_PZD_OUT,
+        MappingKind::PzdIn => files::RECORD_PZD_IN,
+        MappingKind::Dpv1Index => files::RECORD_INDEXES,
+        MappingKind::Setting => files::RECORD_SETTINGS,
+    })
 }
 
 /// One ValueItem per set of choices a module's record refers to, in the

@@ -7,8 +7,9 @@
 //! ([`crate::layouts::CARDS`]); every number in it is a constant of the
 //! layout.
 
+use crate::cyclic::Shape;
 use crate::gsdc_support::diagnosis::DiagArea;
-use crate::gsdc_support::{DpDevice, Mapping, PkwCodec, PrmError, UserPrm};
+use crate::gsdc_support::{DpDevice, Mapping, PkwCodec, PnDevice, PnModule, PrmError, UserPrm};
 
 /// One description's card.
 #[derive(Clone, Copy, Debug)]
@@ -35,6 +36,25 @@ pub struct Card {
     pub diagnosis: Option<Diagnosis>,
     /// A gateway's nodes and diagnosis.
     pub gateway: Option<Gateway>,
+    /// The layout's `PN_DEVICE`, for a description with PROFINET.
+    pub pn: Option<&'static PnDevice>,
+    /// Each PROFINET module's telegram, by its ident: the PKW channel or
+    /// not, and its PZD words. `PnModule` does not carry it (by length alone
+    /// MD810's "PKW + 2 PZD" and "6 PZD", 12 bytes each, are one), so
+    /// build.rs takes it from the plan the layout is written from, beside
+    /// the layout's ident constant; when the table carries it, this goes.
+    pub pn_shapes: &'static [(u32, Shape)],
+}
+
+impl Card {
+    /// The telegram of the PROFINET module `module`.
+    pub fn pn_shape(&self, module: &PnModule) -> Option<Shape> {
+        let (_, shape) = self
+            .pn_shapes
+            .iter()
+            .find(|(ident, _)| *ident == module.ident)?;
+        Some(*shape)
+    }
 }
 
 /// The device-related diagnosis block: empty, and the area that carries
@@ -223,6 +243,21 @@ impl PrmValues {
             values.len += 1;
         }
         Ok(values)
+    }
+
+    /// The values of PROFINET parameter records, each with its entry's
+    /// name (the mapping's, as `mapped` finds it); at most
+    /// [`MAX_PRM_VALUES`].
+    pub fn from_entries(entries: impl IntoIterator<Item = (&'static str, u16)>) -> Self {
+        let mut values = PrmValues {
+            values: [("", 0); MAX_PRM_VALUES],
+            len: 0,
+        };
+        for (slot, entry) in values.values.iter_mut().zip(entries) {
+            *slot = entry;
+            values.len += 1;
+        }
+        values
     }
 
     /// Every parameter's name and value, in User_Prm_Data's order.

@@ -40,7 +40,10 @@ pub fn exchange(
             // dropped, as the drive drops it.
             let _ = drive.write(address, value);
         }
-        let answer = source(card, prm, drive, word).map_or(0, |a| drive.read(a).unwrap_or(0));
+        let answer = match drive.model.status_of {
+            Some(status_of) if word == 1 && card.status_word => status_of.answer(value),
+            _ => source(card, prm, drive, word).map_or(0, |a| drive.read(a).unwrap_or(0)),
+        };
         to_master[at..at + 2].copy_from_slice(&answer.to_be_bytes());
     }
 }

@@ -53,9 +53,46 @@ pub struct Model {
     /// word comes from, when the telegram has them (PI9000: 2000H, 3000H).
     pub control_word: Option<u16>,
     pub status_word: Option<u16>,
+    /// How the drive answers its control word in its status word, for a
+    /// drive whose control and status words are no parameters of its own
+    /// (MV810).
+    pub status_of: Option<StatusAnswer>,
     /// What the card reports when it has lost its link to the drive, when
     /// the manual says (MD810: 0x34).
     pub link_lost_code: Option<u16>,
+}
+
+/// How a drive answers its control word in its status word, bit by bit, as
+/// its manual numbers them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StatusAnswer {
+    /// Each control bit that runs the drive, with the status bit that says
+    /// it runs; the first one set wins.
+    pub runs: &'static [(u8, u8)],
+    /// Control bits that stop it whatever else is set.
+    pub stops: &'static [u8],
+    /// The status bit that says it is stopped.
+    pub stopped: u8,
+    /// Status bits always set (ready).
+    pub always: &'static [u8],
+}
+
+impl StatusAnswer {
+    /// The status word that answers `control`.
+    pub fn answer(&self, control: u16) -> u16 {
+        let set = |bit: u8| control & (1 << bit) != 0;
+        let mut status = self.always.iter().fold(0, |w, &bit| w | 1 << bit);
+        let running = if self.stops.iter().any(|&bit| set(bit)) {
+            None
+        } else {
+            self.runs.iter().find(|&&(c, _)| set(c))
+        };
+        match running {
+            Some(&(_, bit)) => status |= 1 << bit,
+            None => status |= 1 << self.stopped,
+        }
+        status
+    }
 }
 
 /// The most parameters a drive model holds.

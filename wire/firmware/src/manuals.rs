@@ -6,7 +6,7 @@
 //! description without a drive here (a fixture, a card of your own) gets
 //! [`WITHOUT_MANUAL`], a drive that holds no parameter.
 
-use crate::drive::{Access, Model, Parameter};
+use crate::drive::{Access, Model, Parameter, StatusAnswer};
 
 /// The drive behind the card the description `name` describes (its file
 /// name without `.toml`).
@@ -14,6 +14,7 @@ pub fn for_description(name: &str) -> &'static Model {
     match name {
         "md810dp" => &MD810,
         "9kdp1" => &PI9000,
+        "mv810-pnet02" => &MV810,
         _ => &WITHOUT_MANUAL,
     }
 }
@@ -27,6 +28,7 @@ pub const WITHOUT_MANUAL: Model = Model {
     fault_parameter: None,
     control_word: None,
     status_word: None,
+    status_of: None,
     link_lost_code: None,
 };
 
@@ -49,6 +51,7 @@ pub const MD810: Model = Model {
     // 1.5.1: every PZD word is mapped; the telegram has no control or status word.
     control_word: None,
     status_word: None,
+    status_of: None,
     // 1.8: "另当 DP 扩展卡与变频器通信中断时，会返回 0x34".
     link_lost_code: Some(0x34),
 };
@@ -110,5 +113,58 @@ pub const PI9000: Model = Model {
     // The card's PZD1 each way (9kdp1.toml, the description's own telegram).
     control_word: Some(0x2000),
     status_word: Some(0x3000),
+    status_of: None,
+    link_lost_code: None,
+};
+
+/// Megmeet MV810 behind the MV810-PNET02 card (descriptions/mv810-pnet02.toml;
+/// shared/seeds/000). The manual gives the parameters' meanings but no
+/// address (the description assumes group = high byte, index = low byte,
+/// P43.02 = 0x2B02, and the layout's mappings carry those addresses) and no
+/// factory value.
+pub const MV810: Model = Model {
+    manual: "MV800 PROFINET option manual (R33011095)",
+    parameters: &[
+        Parameter {
+            name: "P43.01",
+            address: 0x2B01,
+            value: 1,
+            access: Access::ReadWrite,
+            source: "4: P43.01 = 1 (0 is the standard message 1, 1 the user-defined message), \
+                     the value every example of 4 sets",
+        },
+        Parameter {
+            name: "P43.02",
+            address: 0x2B02,
+            value: 0,
+            access: Access::ReadWrite,
+            source: "3: PZD2 receive, 0 to 14 (0 disabled); the manual gives no factory \
+                     value: 0 is the description's default (mappings.pzd_out)",
+        },
+        Parameter {
+            name: "P43.13",
+            address: 0x2B0D,
+            value: 0,
+            access: Access::ReadWrite,
+            source: "3: PZD2 send, 0 to 25 (0 disabled); the manual gives no factory \
+                     value: 0 is the description's default (mappings.pzd_in)",
+        },
+    ],
+    fault_parameter: None,
+    // Section 3: PZD1 carries the control and status words themselves; the
+    // manual gives them no parameter (status_of answers).
+    control_word: None,
+    status_word: None,
+    // Section 3: control word bit 0 forward running, 1 reverse running, 4
+    // decelerate to stop, 5 coast to stop, 7 emergency stop; status word bit
+    // 0 forward running, 1 reverse running, 2 stop, 5 ready. That the drive
+    // answers at once, and is always ready, is this model's own: the manual
+    // gives the bits, not the drive's timing.
+    status_of: Some(StatusAnswer {
+        runs: &[(0, 0), (1, 1)],
+        stops: &[4, 5, 7],
+        stopped: 2,
+        always: &[5],
+    }),
     link_lost_code: None,
 };

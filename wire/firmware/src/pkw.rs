@@ -7,14 +7,13 @@ use crate::drive::{Drive, Refused};
 use crate::gsdc_support::{PkwCodec, U16Be};
 
 /// The card's answer to the PKW `request` the master sent, by the layout's
-/// codec `codec`; no answer (all 0) without one. MV810's station, command,
-/// address and value (PROFINET only) is for wire/pn to answer, with the
-/// error codes its manual gives.
+/// codec `codec`; no answer (all 0) without one.
 pub fn answer(codec: PkwCodec, drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
     match codec {
         PkwCodec::PkeIndPwe => pke_ind_pwe(drive, request),
         PkwCodec::Profidrive => profidrive(drive, request),
-        PkwCodec::StationCommand | PkwCodec::None => [U16Be::new(0); 4],
+        PkwCodec::StationCommand => station_command(drive, request),
+        PkwCodec::None => [U16Be::new(0); 4],
     }
 }
 
@@ -105,4 +104,47 @@ fn profidrive(drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
         }
     };
     response.encode()
+}
+
+/// The error code MV810's card answers (after the command + 0x80) for a
+/// parameter the drive refuses. The manual gives the bytes of an error code
+/// (section 3, PKW3 of the slave response) but no value: 2, Modbus's illegal
+/// data address (the card reaches the drive over its RS-485 side), is this
+/// model's own.
+pub const STATION_COMMAND_REFUSED: u16 = 2;
+
+/// MV810 section 3: the answer repeats the command and the address, with the
+/// value read (0 after a write), or 0x80 + the command and an error code;
+/// its stations are the request's, swapped (byte 0 the station that asked,
+/// byte 1 the local station). A telegram that is no request (command 0,
+/// what a master sends before it has one) is answered with zeros.
+fn station_command(drive: &mut Drive, request: &[U16Be; 4]) -> [U16Be; 4] {
+    use crate::gsdc_support::pkw_station_command::{
+        PkwAccess, PkwReply, PkwRequest, PkwResponse, Stations,
+    };
+    let Ok(request) = PkwRequest::decode(request) else {
+        return [U16Be::new(0); 4];
+    };
+    let command = request.access.command();
+    let outcome = match request.access {
+        PkwAccess::Read => drive.read(request.address).map(PkwReply::Value),
+        PkwAccess::WriteAndStore { value } => drive
+            .write(request.address, value)
+            .map(|()| PkwReply::WrittenAndStored),
+        PkwAccess::Write { value } => drive
+            .write(request.address, value)
+            .map(|()| PkwReply::Written),
+    };
+    PkwResponse {
+        stations: Stations {
+            target: request.stations.source,
+            source: request.stations.target,
+        },
+        address: request.address,
+        reply: outcome.unwrap_or(PkwReply::Failed {
+            command,
+            error: STATION_COMMAND_REFUSED,
+        }),
+    }
+    .encode()
 }

@@ -95,3 +95,104 @@ fn the_diagnosis_reports_the_drive() {
     md810.set_link_lost(false);
     assert_eq!(md810.diagnosis_code(), 0x12);
 }
+
+/// MV810's card (section 3: station, command, address, value): its drive
+/// model holds the parameters at the addresses the layout's mappings give,
+/// and answers its control word at the bits the layout names.
+mod mv810 {
+    use super::pkw;
+    use wire_firmware::drive::Drive;
+    use wire_firmware::gsdc_support::PkwCodec;
+    use wire_firmware::layouts::mv810_pnet02 as layout;
+    use wire_firmware::manuals;
+    use wire_firmware::pkw::{answer, STATION_COMMAND_REFUSED};
+
+    fn mv810() -> Drive {
+        Drive::new(manuals::for_description("mv810-pnet02"))
+    }
+
+    #[test]
+    fn the_status_word_answers_the_control_word_at_the_layouts_bits() {
+        use layout::{control_word as c, status_word as s};
+        let answer = |control: u16| mv810().model.status_of.unwrap().answer(control);
+        let ready = s::READY_STATUS.with(0, 1);
+        let stopped = s::STOP.with(ready, 1);
+        assert_eq!(answer(0), stopped);
+        assert_eq!(
+            answer(c::FORWARD_RUNNING.with(0, 1)),
+            s::FORWARD_RUNNING.with(ready, 1)
+        );
+        assert_eq!(
+            answer(c::REVERSE_RUNNING.with(0, 1)),
+            s::REVERSE_RUNNING.with(ready, 1)
+        );
+        for stop in [c::DECELERATE_TO_STOP, c::COAST_TO_STOP, c::EMERGENCY_STOP] {
+            assert_eq!(answer(stop.with(c::FORWARD_RUNNING.with(0, 1), 1)), stopped);
+        }
+    }
+
+    #[test]
+    fn the_drive_holds_its_parameters_where_the_layout_maps_them() {
+        let drive = mv810();
+        let at = |name: &str| drive.named(name).unwrap().address;
+        assert_eq!(Some(at("P43.01")), layout::settings::MAPPINGS[0].parameter);
+        assert_eq!(Some(at("P43.02")), layout::pzd_out::MAPPINGS[0].parameter);
+        assert_eq!(Some(at("P43.13")), layout::pzd_in::MAPPINGS[0].parameter);
+    }
+
+    /// Section 3: read one code (0x03, count 1); the reply repeats command and
+    /// address with the value, its stations swapped.
+    #[test]
+    fn reads_p43_02() {
+        let mut drive = mv810();
+        drive.write(0x2B02, 4).unwrap();
+        assert_eq!(
+            answer(
+                PkwCodec::StationCommand,
+                &mut drive,
+                &pkw("0102 0003 2B02 0001")
+            ),
+            pkw("0201 0003 2B02 0004")
+        );
+    }
+
+    /// 0x06 writes and stores, 0x07 writes: the reply's value word is 0.
+    #[test]
+    fn writes_p43_02() {
+        let mut drive = mv810();
+        let answered = answer(
+            PkwCodec::StationCommand,
+            &mut drive,
+            &pkw("0101 0007 2B02 0005"),
+        );
+        assert_eq!(answered, pkw("0101 0007 2B02 0000"));
+        assert_eq!(drive.read(0x2B02), Ok(5));
+        let answered = answer(
+            PkwCodec::StationCommand,
+            &mut drive,
+            &pkw("0101 0006 2B02 0006"),
+        );
+        assert_eq!(answered, pkw("0101 0006 2B02 0000"));
+        assert_eq!(drive.read(0x2B02), Ok(6));
+    }
+
+    /// 0x80 + the command and the error code for a parameter the drive does
+    /// not hold (P43.40, 0x2B28: this test's own); zeros for no request.
+    #[test]
+    fn refuses_a_parameter_it_does_not_hold() {
+        let mut drive = mv810();
+        let answered = answer(
+            PkwCodec::StationCommand,
+            &mut drive,
+            &pkw("0101 0003 2B28 0001"),
+        );
+        let refused = format!("0101 0083 2B28 {STATION_COMMAND_REFUSED:04X}");
+        assert_eq!(answered, pkw(&refused));
+        let answered = answer(
+            PkwCodec::StationCommand,
+            &mut drive,
+            &pkw("0000 0000 0000 0000"),
+        );
+        assert_eq!(answered, pkw("0000 0000 0000 0000"));
+    }
+}

@@ -1,0 +1,176 @@
+//! gsdc's words in the GSDML: the names and descriptions of its modules,
+//! records, catalogue groups and ports, the PROFIdrive words and the PKW
+//! channel's words. The German follows Siemens' German PROFIdrive terms
+//! (Steuerwort, Zustandswort, Drehzahlsollwert, Parameterdatensatz).
+
+use super::phrases;
+
+phrases! {
+    /// The PROFIdrive module access point, named as ABB's FENA names it.
+    MODULE_ACCESS_POINT = { en: "Module Access Point", zh: "模块访问点", de: "Modulzugriffspunkt" };
+    MODULE_ACCESS_POINT_INFO = {
+        en: "PROFIdrive parameter access through this submodule",
+        zh: "通过此子模块进行 PROFIdrive 参数访问",
+        de: "PROFIdrive-Parameterzugriff über dieses Submodul",
+    };
+
+    /// The hardware catalogue's groups.
+    CATEGORY_STANDARD_TELEGRAMS = { en: "Standard telegrams", zh: "标准报文", de: "Standardtelegramme" };
+    CATEGORY_PKW_PZD = { en: "PKW and PZD", zh: "PKW 和 PZD", de: "PKW und PZD" };
+    CATEGORY_PZD = { all: "PZD" };
+
+    /// PROFIdrive's name of its telegram 1.
+    STANDARD_TELEGRAM_1 = { en: "Standard telegram 1", zh: "标准报文 1", de: "Standardtelegramm 1" };
+
+    /// What a module carries.
+    profidrive_telegram_1_info(bytes: u16) = {
+        en: "PROFIdrive standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way",
+        zh: "PROFIdrive 标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节",
+        de: "PROFIdrive-Standardtelegramm 1: STW1 und NSOLL_A zum Antrieb, ZSW1 und NIST_A vom Antrieb; {bytes} Byte je Richtung",
+    };
+    /// A vendor's telegram 1, under the name the description gives it.
+    vendor_telegram_1_info(name: &str, n: u8, bytes: u16) = {
+        en: "{name}: {n} PZD words; {bytes} bytes each way",
+        zh: "{name}：{n} 个 PZD 字；每个方向 {bytes} 字节",
+        de: "{name}: {n} PZD-Wörter; {bytes} Byte je Richtung",
+    };
+    pzd_module_info(n: u8, bytes: u16) = {
+        en: "{n} PZD words; {bytes} bytes each way",
+        zh: "{n} 个 PZD 字；每个方向 {bytes} 字节",
+        de: "{n} PZD-Wörter; {bytes} Byte je Richtung",
+    };
+    pzd_module_info_one(bytes: u16) = {
+        en: "1 PZD word; {bytes} bytes each way",
+        zh: "1 个 PZD 字；每个方向 {bytes} 字节",
+        de: "1 PZD-Wort; {bytes} Byte je Richtung",
+    };
+    pkw_pzd_module_info(pkw: u8, n: u8, bytes: u16) = {
+        en: "PKW channel ({pkw} words) and {n} PZD words; {bytes} bytes each way",
+        zh: "PKW 通道（{pkw} 个字）和 {n} 个 PZD 字；每个方向 {bytes} 字节",
+        de: "PKW-Kanal ({pkw} Wörter) und {n} PZD-Wörter; {bytes} Byte je Richtung",
+    };
+    pkw_pzd_module_info_one(pkw: u8, bytes: u16) = {
+        en: "PKW channel ({pkw} words) and 1 PZD word; {bytes} bytes each way",
+        zh: "PKW 通道（{pkw} 个字）和 1 个 PZD 字；每个方向 {bytes} 字节",
+        de: "PKW-Kanal ({pkw} Wörter) und 1 PZD-Wort; {bytes} Byte je Richtung",
+    };
+    /// gsdc's description of a module, then the description's own words.
+    with_info(gsdc: &str, info: &str) = {
+        en: "{gsdc}. {info}",
+        zh: "{gsdc}。{info}",
+        de: same,
+    };
+
+    /// PROFIdrive's telegram 1 words, with the profile's names (MASTERDRIVES
+    /// Compendium table 8.2-16; the German names are the profile's own).
+    STW1 = { en: "STW1 (control word 1)", zh: "STW1（控制字 1）", de: "STW1 (Steuerwort 1)" };
+    NSOLL_A = { en: "NSOLL_A (speed setpoint A)", zh: "NSOLL_A（速度设定值 A）", de: "NSOLL_A (Drehzahlsollwert A)" };
+    ZSW1 = { en: "ZSW1 (status word 1)", zh: "ZSW1（状态字 1）", de: "ZSW1 (Zustandswort 1)" };
+    NIST_A = { en: "NIST_A (speed actual value A)", zh: "NIST_A（速度实际值 A）", de: "NIST_A (Drehzahlistwert A)" };
+
+    /// The PKW channel's words, the same both ways (MD810's manual writes
+    /// `PWE 高 16 位`, `低 16 位`; PROFIdrive's and MV810's names).
+    PKE = { all: "PKE" };
+    IND = { all: "IND" };
+    PWE_HIGH = { en: "PWE high", zh: "PWE 高 16 位", de: "PWE, höherwertiges Wort" };
+    PWE_LOW = { en: "PWE low", zh: "PWE 低 16 位", de: "PWE, niederwertiges Wort" };
+    PWE1 = { all: "PWE1" };
+    PWE2 = { all: "PWE2" };
+    PKW_STATION = { en: "Station", zh: "站号", de: same };
+    PKW_COMMAND = { en: "Command", zh: "命令", de: "Befehl" };
+    PKW_ADDRESS = { en: "Address", zh: "地址", de: "Adresse" };
+    PKW_VALUE = { en: "Value", zh: "数值", de: "Wert" };
+
+    /// A bit of a field of several bits: `Control mode bit 1`.
+    field_bit(field: &str, index: u8) = {
+        en: "{field} bit {index}",
+        zh: same,
+        de: "{field} Bit {index}",
+    };
+
+    /// gsdc's names of the parameter records.
+    RECORD_PZD_OUT = {
+        en: "PZD output mapping (controller to drive)",
+        zh: "PZD 输出映射（控制器到驱动器）",
+        de: "PZD-Zuordnung Ausgänge (Controller zum Antrieb)",
+    };
+    RECORD_PZD_IN = {
+        en: "PZD input mapping (drive to controller)",
+        zh: "PZD 输入映射（驱动器到控制器）",
+        de: "PZD-Zuordnung Eingänge (Antrieb zum Controller)",
+    };
+    RECORD_INDEXES = { en: "Record index mapping", zh: "记录索引映射", de: "Zuordnung der Datensatzindizes" };
+    RECORD_SETTINGS = { en: "Drive settings", zh: "驱动器设置", de: "Antriebseinstellungen" };
+
+    port(number: u8) = { en: "Port {number}", zh: "端口 {number}", de: same };
+
+    // -----------------------------------------------------------------------
+    // What gsdc decides where the description says nothing: the headers
+    // list it in English, the datasheet's checklist in the page's language.
+
+    NOT_ASSIGNED_BY_PI = { en: "not assigned by PI", zh: "非 PI 分配", de: "nicht von PI vergeben" };
+    NOT_STATED = {
+        en: "the description does not state it",
+        zh: "设备描述未说明",
+        de: "die Beschreibung gibt ihn nicht an",
+    };
+    IDENT_NUMBERS = { en: "profinet ident numbers", zh: "PROFINET 标识号", de: "PROFINET-Identnummern" };
+    IDENT_NUMBERS_RULE = {
+        en: "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
+        zh: "模块：nn 个 PZD 字为 0x0000_01nn，带 PKW 通道为 0x0000_02nn，标准报文 1 为 0x0000_0010，各子模块与其模块相同；DAP 及其子模块为 0x0000_0001；接口和各端口为其子槽号（0x8000、0x8001……）",
+        de: "Module 0x0000_01nn für nn PZD-Wörter, 0x0000_02nn mit dem PKW-Kanal, 0x0000_0010 für Standardtelegramm 1, jedes Submodul die seines Moduls; der DAP und sein Submodul 0x0000_0001; die Schnittstelle und die Ports ihre Subslots (0x8000, 0x8001...)",
+    };
+    IDENT_NUMBERS_WHY = {
+        en: "the manual gives none; the layouts carry each",
+        zh: "手册未给出；固件数据布局包含每一个",
+        de: "das Handbuch nennt keine; die Layouts enthalten jede",
+    };
+    DAP = { en: "profinet device access point", zh: "PROFINET 设备访问点", de: "PROFINET-Gerätezugangspunkt (DAP)" };
+    DAP_SERVICES = { all: "MultipleWriteSupported, LLDP_NoD_Supported, ResetToFactoryModes 2" };
+    DAP_SERVICES_WHY = {
+        en: "PNIO_Version V2.31 and later requires them; the manual does not say: the card's PROFINET stack must provide them",
+        zh: "PNIO_Version V2.31 及以后版本要求；手册未说明：扩展卡的 PROFINET 协议栈必须支持",
+        de: "PNIO_Version V2.31 und später fordert sie; das Handbuch sagt nichts dazu: der PROFINET-Stack der Karte muss sie bieten",
+    };
+    INTERFACE = { en: "profinet interface", zh: "PROFINET 接口", de: "PROFINET-Schnittstelle" };
+    INTERFACE_SERVICES = {
+        en: "RT_CLASS_1; SNMP and LLDP; DCP and PTP boundaries; startup modes Legacy and Advanced; reduction ratios 1 to 512",
+        zh: "RT_CLASS_1；SNMP 和 LLDP；DCP 和 PTP 边界；启动模式 Legacy 和 Advanced；缩减比 1 至 512",
+        de: "RT_CLASS_1; SNMP und LLDP; DCP- und PTP-Grenzen; Anlaufarten Legacy und Advanced; Untersetzungsverhältnisse 1 bis 512",
+    };
+    INTERFACE_SERVICES_WHY = {
+        en: "gsdc writes them for every PROFINET card; the manual does not say: the card's PROFINET stack must provide them",
+        zh: "gsdc 为每个 PROFINET 扩展卡写入；手册未说明：扩展卡的 PROFINET 协议栈必须支持",
+        de: "gsdc schreibt sie für jede PROFINET-Karte; das Handbuch sagt nichts dazu: der PROFINET-Stack der Karte muss sie bieten",
+    };
+
+    /// The notice before the device's InfoText while an identity number is
+    /// a placeholder: what TIA Portal's catalog shows of a draft.
+    draft_one(name: &str) = {
+        en: "DRAFT, not for release: {name} is a placeholder, not assigned by PI. ",
+        zh: "草稿，不得发布：{name} 为占位值，非 PI 分配。",
+        de: "ENTWURF, nicht zur Freigabe: {name} ist ein Platzhalter, nicht von PI vergeben. ",
+    };
+    draft_many(names: &str) = {
+        en: "DRAFT, not for release: {names} are placeholders, not assigned by PI. ",
+        zh: "草稿，不得发布：{names} 为占位值，非 PI 分配。",
+        de: "ENTWURF, nicht zur Freigabe: {names} sind Platzhalter, nicht von PI vergeben. ",
+    };
+
+    /// Why gsdc lays out what the manual gives no bytes for.
+    CONFIG_IDENTIFIERS_REASON = {
+        en: "the manual gives no config byte: PROFIdrive's PPO form, one general identifier byte each; the layouts carry each",
+        zh: "手册未给出配置字节：采用 PROFIdrive 的 PPO 形式，每项一个通用标识字节；数据布局包含每个字节",
+        de: "das Handbuch gibt kein Konfigurationsbyte an: die PPO-Form von PROFIdrive, je ein allgemeines Kennungsbyte; die Layouts enthalten jedes",
+    };
+    MAX_MODULE_REASON = {
+        en: "a PPO type is the whole telegram, so the master plugs one module",
+        zh: "一个 PPO 类型即整个报文，因此主站只插入一个模块",
+        de: "ein PPO-Typ ist das ganze Telegramm, daher steckt der Master ein Modul",
+    };
+    USER_PRM_LAYOUT_REASON = {
+        en: "the manual gives the entries, not their bytes: gsdc's order (the PZD words out, then in, the DPV1 indexes, the settings) and offsets; the layouts carry each",
+        zh: "手册给出了各项，未给出其字节位置：顺序（先输出 PZD，再输入 PZD、DPV1 Index、设置）与偏移由 gsdc 确定；数据布局包含每项",
+        de: "das Handbuch gibt die Einträge an, nicht ihre Bytes: Reihenfolge (die PZD-Wörter aus, dann ein, die DPV1-Indizes, die Einstellungen) und Offsets von gsdc; die Layouts enthalten jede",
+    };
+}

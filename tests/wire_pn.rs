@@ -1,0 +1,237 @@
+//! The PROFINET exchange on the wire (issue 20), as `scripts/wire-test.sh
+//! --bus pn` runs it: for every description with `[profinet]`, profinet-py
+//! as the IO controller, configured only from the GSDML gsdc builds, against
+//! the pnio device built from the layout, between two network namespaces.
+//! And the same exchange with a GSDML that disagrees with the layout, which
+//! must fail and say where.
+//!
+//! Needs root (namespaces, raw sockets), iproute2 and Python; scripts/test.sh
+//! installs them, and the exchange makes its venv (target/wire-venv). Without
+//! root the tests say so and leave the exchange out, except under CI=true,
+//! where that fails.
+
+use std::path::Path;
+use std::process::Command;
+
+use crate::support::{self, descriptions};
+use crate::wire_dp::{turn, wire_target};
+
+/// Whether the exchange can run here (as root); under CI it must.
+fn can_run() -> bool {
+    let is_root = Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+    if !is_root {
+        support::cannot_run("the PROFINET exchange needs root (network namespaces, raw sockets)");
+    }
+    is_root
+}
+
+/// `scripts/wire-test.sh --bus pn`'s status and everything it printed, with
+/// the gsdc this test was built with, in the wire workspace's target
+/// directory the DP tests use (taking turns with them).
+fn exchange(descriptions: &[&str], files: Option<&Path>) -> (i32, String) {
+    let _turn = turn();
+    let mut command = Command::new(support::checkout("scripts/wire-test.sh"));
+    command.args(["--bus", "pn"]);
+    if let Some(files) = files {
+        command.arg("--files").arg(files);
+    }
+    let output = command
+        .args(descriptions)
+        .current_dir(support::CHECKOUT)
+        .env("GSDC", support::GSDC)
+        .env("WIRE_TARGET_DIR", wire_target())
+        .env("CARGO", env!("CARGO"))
+        .output()
+        .expect("scripts/wire-test.sh runs");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    (output.status.code().unwrap_or(-1), text)
+}
+
+fn assert_lines(text: &str, lines: &[&str]) {
+    for line in lines {
+        assert!(text.contains(line), "no {line:?} in:\n{text}");
+    }
+}
+
+/// Every shipped description and valid fixture with [profinet], as
+/// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
+/// pass: each of its modules, two negative cases (another module ident,
+/// another input length), and one for each module in an API other than 0
+/// (a layout that says API 0).
+fn with_profinet() -> Vec<(String, String, usize)> {
+    let mut found = Vec::new();
+    for folder in ["descriptions", "tests/fixtures/valid"] {
+        for name in support::file_names(&support::checkout(folder)) {
+            let Some(stem) = name.strip_suffix(".toml") else {
+                continue;
+            };
+            let ir = descriptions::load_from(folder, &name);
+            let Some(profinet) = &ir.profinet else {
+                continue;
+            };
+            let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
+            let exchanges = profinet.modules.len() + 2 + other_apis;
+            found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
+        }
+    }
+    found
+}
+
+/// Every description and valid fixture with `[profinet]` in one run: one
+/// build of the device for their layouts.
+#[test]
+fn every_profinet_description_every_module() {
+    if !can_run() {
+        return;
+    }
+    let all = with_profinet();
+    let paths: Vec<&str> = all.iter().map(|(path, _, _)| path.as_str()).collect();
+    for shipped in [
+        "descriptions/mv810-pnet02.toml",
+        "descriptions/md810dp.toml",
+        "tests/fixtures/valid/profidrive.toml",
+    ] {
+        assert!(paths.contains(&shipped), "{shipped} has [profinet]");
+    }
+    let (status, text) = exchange(&paths, None);
+    assert_eq!(status, 0, "{text}");
+    for (_, name, exchanges) in &all {
+        assert_lines(
+            &text,
+            &[&format!("PROFINET {name}: {exchanges} passed, 0 failed")],
+        );
+    }
+    mv810_every_module_records_control_word_and_pkw(&text);
+    md810_reads_f0_08_through_the_pkw_channel(&text);
+    profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);
+}
+
+fn mv810_every_module_records_control_word_and_pkw(text: &str) {
+    // Section 4 sets P43.01 to P43.23 at the drive: the GSDML has no
+    // parameter record, so the controller writes none and the device
+    // decodes none.
+    let mut expected = vec![
+        "PASS IDM_STD_TEL_1: 0 records decoded, 1 inputs observed, 1 scenario checks".to_string(),
+    ];
+    for n in 1..=12 {
+        expected.push(format!(
+            "PASS IDM_PKW_{n}: 0 records decoded, 1 inputs observed, 2 scenario checks"
+        ));
+    }
+    let expected: Vec<&str> = expected.iter().map(String::as_str).collect();
+    assert_lines(text, &expected);
+    assert_lines(
+        text,
+        &[
+            // Section 3's bits: forward running, ready; not stop.
+            "control word 0x0001 (Forward running) -> status word 0x0021",
+            // Read P43.02 (0x2B02): what the drive holds, the description's
+            // default 0, which no record overwrote.
+            "PKW 0101 0003 2B02 0001 -> 0101 0003 2B02 0000 (read P43.02)",
+            "Connect refused as expected: PNIO status DB 81 03 04",
+            "Connect refused as expected: PNIO status DB 81 03 07",
+            "PROFINET mv810-pnet02: 15 passed, 0 failed",
+        ],
+    );
+    assert!(
+        !text.contains("2B02 0001 (read P43.02)"),
+        "no record wrote P43.02"
+    );
+}
+
+fn md810_reads_f0_08_through_the_pkw_channel(text: &str) {
+    assert_lines(
+        text,
+        &[
+            // MD810 1.4.2, figure 6.
+            "PKW 10F0 0800 0000 0000 -> 10F0 0800 0000 1388 (read F0-08)",
+            "PASS IDM_PKW_12: 3 records decoded, 1 inputs observed, 1 scenario checks",
+            "PASS IDM_PZD_12: 3 records decoded, 1 inputs observed, 0 scenario checks",
+            "PROFINET md810dp: 8 passed, 0 failed",
+        ],
+    );
+}
+
+fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
+    assert_lines(
+        text,
+        &[
+            "subslot 1 ident 0xFFFF API 0x3A00 in 0 out 0, subslot 2 ident 0x10 API 0x3A00 in 4 out 4",
+            "API 0x3A00: the device checked it against its layout before pnio saw the Connect",
+            "PASS IDM_STD_TEL_1",
+            "Connect refused as expected: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)",
+            "PROFINET profidrive: 5 passed, 0 failed",
+        ],
+    );
+}
+
+/// The description's GSDML, built by gsdc into a scratch directory, then
+/// changed by `edit`: a released file that disagrees with the firmware.
+#[track_caller]
+fn edited_gsdml(description: &str, edit: impl Fn(String) -> String) -> support::Scratch {
+    let stem = Path::new(description)
+        .file_stem()
+        .unwrap()
+        .to_string_lossy();
+    let dir = support::scratch(&format!("released-{stem}"));
+    let out = dir.to_str().unwrap();
+    let built = support::gsdc(["build", description, "--out", out]);
+    assert!(built.status.success(), "{}", support::stderr(&built));
+    let gsdml = std::fs::read_dir(&*dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| p.extension().is_some_and(|e| e == "xml"))
+        .expect("a GSDML");
+    let text = std::fs::read_to_string(&gsdml).unwrap();
+    let changed = edit(text.clone());
+    assert_ne!(changed, text, "the edit changed nothing");
+    std::fs::write(&gsdml, changed).unwrap();
+    dir
+}
+
+#[test]
+fn a_gsdml_with_another_module_ident_fails_and_says_where() {
+    if !can_run() {
+        return;
+    }
+    // Standard message 1's ident 0x10 becomes 0x11 in the GSDML only.
+    let dir = edited_gsdml("descriptions/mv810-pnet02.toml", |t| {
+        t.replace(
+            r#"ModuleIdentNumber="0x00000010""#,
+            r#"ModuleIdentNumber="0x00000011""#,
+        )
+    });
+    let (status, text) = exchange(&["descriptions/mv810-pnet02.toml"], Some(&dir));
+    assert_eq!(status, 1, "{text}");
+    assert_lines(
+        &text,
+        &[
+            "FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 04",
+            "PASS IDM_PKW_12",
+            "PROFINET mv810-pnet02: 14 passed, 1 failed",
+        ],
+    );
+}
+
+#[test]
+fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
+    if !can_run() {
+        return;
+    }
+    let dir = edited_gsdml("tests/fixtures/valid/profidrive.toml", |t| {
+        t.replace(r#"API="14848""#, r#"API="0""#)
+    });
+    let (status, text) = exchange(&["tests/fixtures/valid/profidrive.toml"], Some(&dir));
+    assert_eq!(status, 1, "{text}");
+    assert_lines(
+        &text,
+        &["FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)"],
+    );
+}

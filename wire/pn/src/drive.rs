@@ -1,0 +1,122 @@
+//! The card's application: the records the controller wrote, decoded by the
+//! layout, and each cycle the card's exchange with the drive
+//! (`wire_firmware::cyclic`, the same code the DP slave runs) on every
+//! plugged module's data.
+
+use pnio::rt::IoImage;
+use wire_firmware::card::{Card, PrmValues};
+use wire_firmware::cyclic::exchange;
+use wire_firmware::drive::Drive;
+use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
+
+/// The entries of a record the controller wrote, each with its value.
+pub type Decoded = Vec<(&'static Mapping, u16)>;
+
+pub struct Application {
+    card: &'static Card,
+    drive: Drive,
+    plugged: Vec<(u16, &'static PnModule)>,
+    /// Each record's values: the GSDML's until the controller writes it.
+    records: Vec<(&'static PnRecord, Decoded)>,
+}
+
+impl Application {
+    pub fn new(card: &'static Card, plugged: &[(u16, &'static PnModule)]) -> Application {
+        let records = plugged
+            .iter()
+            .flat_map(|(_, m)| m.records)
+            .map(|r| {
+                (
+                    r,
+                    r.entries
+                        .iter()
+                        .copied()
+                        .zip(r.defaults.iter().copied())
+                        .collect(),
+                )
+            })
+            .collect();
+        Application {
+            card,
+            drive: Drive::new(wire_firmware::manuals::for_description(card.name)),
+            plugged: plugged.to_vec(),
+            records,
+        }
+    }
+
+    /// The record a Write carried, decoded by the layout (the plugged
+    /// module's record of that index, on its data submodule), or `None` when
+    /// the layout has no such record. Its values go to the drive parameters
+    /// its entries name, where the drive holds them; the names of those the
+    /// drive refuses are returned with the values.
+    pub fn write(
+        &mut self,
+        slot: u16,
+        subslot: u16,
+        index: u16,
+        bytes: &[u8],
+    ) -> Option<Result<(Decoded, Vec<&'static str>), String>> {
+        let (_, module) = self.plugged.iter().find(|(s, _)| *s == slot)?;
+        let record = module
+            .records
+            .iter()
+            .find(|r| module.data.subslot == subslot && r.index == index)?;
+        let mut values = vec![0; record.entries.len()];
+        if let Err(e) = record.decode(bytes, &mut values) {
+            return Some(Err(format!("{e:?}")));
+        }
+        let decoded: Decoded = record.entries.iter().copied().zip(values).collect();
+        let mut refused = Vec::new();
+        for &(entry, value) in &decoded {
+            let Some(address) = entry.parameter else {
+                continue;
+            };
+            if self.drive.parameter(address).is_some() && self.drive.write(address, value).is_err()
+            {
+                refused.push(entry.name);
+            }
+        }
+        if let Some(held) = self
+            .records
+            .iter_mut()
+            .find(|(r, _)| core::ptr::eq(*r, record))
+        {
+            held.1 = decoded.clone();
+        }
+        Some(Ok((decoded, refused)))
+    }
+
+    /// One cycle over every plugged module's data. Before the AR reaches
+    /// data exchange there is nothing to read, and nothing happens.
+    pub fn cycle(&mut self, image: &IoImage) {
+        let prm = PrmValues::from_entries(
+            self.records
+                .iter()
+                .flat_map(|(_, decoded)| decoded)
+                .map(|&(entry, value)| (entry.name, value)),
+        );
+        for (slot, module) in &self.plugged {
+            let data = module.data;
+            if data.output_len == 0 {
+                continue;
+            }
+            let Ok(from_controller) = image.read_outputs(*slot, data.subslot, |b, _| b.to_vec())
+            else {
+                continue;
+            };
+            let mut to_controller = vec![0u8; data.input_len];
+            let Some(shape) = self.card.pn_shape(module) else {
+                continue;
+            };
+            exchange(
+                self.card,
+                shape,
+                &prm,
+                &mut self.drive,
+                &from_controller,
+                &mut to_controller,
+            );
+            let _ = image.write_inputs(*slot, data.subslot, &to_controller);
+        }
+    }
+}
