@@ -46,7 +46,7 @@
 
 use crate::diag::{Diagnostic, Diagnostics, Severity, Source};
 use crate::file_kind::{self, FileKind};
-use crate::output::{read_input, ReadError};
+use crate::output::{read_input, read_regular_input, ReadError};
 pub use crate::output::{write_files, Outcome, WriteError, Written, GENERATED_MARK};
 use crate::xsd::Schema;
 use crate::{Artifact, ArtifactKind, Language};
@@ -359,8 +359,7 @@ impl Findings {
             text: &self.text,
         };
         for warning in self.warnings() {
-            let location = source.location(warning);
-            println!("cargo:warning={location}: {}", warning.message);
+            println!("cargo:warning={}", source.one_line(warning));
         }
     }
 }
@@ -536,9 +535,11 @@ fn load_file_for(path: &Path, name: &str, writes: Writes) -> Result<Loaded, Buil
 }
 
 /// A file a description names (its device symbol), relative to the
-/// description's folder, no larger than a description may be.
+/// description's folder: a regular file (a FIFO or a device is refused
+/// unread, [`crate::output::open_regular`]) no larger than a description
+/// may be.
 fn read_beside(folder: &Path, name: &str) -> Result<Vec<u8>, String> {
-    read_input(&folder.join(name), &crate::load::INPUT_LIMIT).map_err(|e| match e {
+    read_regular_input(&folder.join(name), &crate::load::INPUT_LIMIT).map_err(|e| match e {
         ReadError::Io(error) => format!("{name}: {error}"),
         ReadError::TooLarge(_) => format!(
             "{name} is larger than {} bytes",

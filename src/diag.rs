@@ -233,19 +233,33 @@ fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
 }
 
 impl Source<'_> {
-    /// `file:line:column` of the diagnostic's span, or just the file name.
+    /// `file:line:column` of the diagnostic's span, or just the file name,
+    /// as a terminal is shown it ([`shown`]).
     pub fn location(&self, diagnostic: &Diagnostic) -> String {
         match &diagnostic.span {
             Some(span) => {
                 let (line, column) = line_col(self.text, span.start);
-                format!("{}:{line}:{column}", self.name)
+                format!("{}:{line}:{column}", shown(self.name))
             }
-            None => self.name.to_string(),
+            None => shown(self.name),
         }
     }
 
+    /// `file:line:column: message` on one line, as a terminal is shown it
+    /// ([`shown`]).
+    pub fn one_line(&self, diagnostic: &Diagnostic) -> String {
+        format!(
+            "{}: {}",
+            self.location(diagnostic),
+            shown(&diagnostic.message)
+        )
+    }
+
     /// rustc-style rendering: header, location, the source line with a caret
-    /// under the span and its label, then the help line.
+    /// under the span and its label, then the help line. Every line as a
+    /// terminal is shown it: what the diagnostic quotes of its input (a
+    /// name, a keyword, an argument) is escaped and, when long, shortened
+    /// ([`shown`]).
     pub fn render(&self, diagnostic: &Diagnostic) -> String {
         let mut out = String::new();
         let _ = writeln!(
@@ -253,13 +267,13 @@ impl Source<'_> {
             "{}[{}]: {}",
             diagnostic.severity.as_str(),
             diagnostic.code,
-            diagnostic.message
+            shown(&diagnostic.message)
         );
         let label = diagnostic.label.as_deref();
         let mut pad = match &diagnostic.span {
             Some(span) => self.render_snippet(&mut out, span.clone(), "-->", label),
             None => {
-                let _ = writeln!(out, " --> {}", self.name);
+                let _ = writeln!(out, " --> {}", shown(self.name));
                 String::new()
             }
         };
@@ -269,7 +283,7 @@ impl Source<'_> {
             pad = pad.max(also_pad);
         }
         if let Some(help) = &diagnostic.help {
-            let _ = writeln!(out, "{pad} = help: {help}");
+            let _ = writeln!(out, "{pad} = help: {}", shown(help));
         }
         out
     }
@@ -287,7 +301,7 @@ impl Source<'_> {
         let (line, column) = line_col(self.text, span.start);
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
-        let _ = writeln!(out, "{pad}{marker} {}:{line}:{column}", self.name);
+        let _ = writeln!(out, "{pad}{marker} {}:{line}:{column}", shown(self.name));
         let start = floor_char_boundary(self.text, span.start.min(self.text.len()));
         let end = floor_char_boundary(self.text, span.end.min(self.text.len())).max(start);
         let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
@@ -297,10 +311,10 @@ impl Source<'_> {
         let before = &self.text[line_start..start];
         let after = self.text[start..line_end].trim_end_matches('\r');
         let span_chars = self.text[start..end.min(line_end)].chars().count().max(1);
-        let (shown, caret_at, width) = window(before, after, span_chars);
+        let (quoted, caret_at, width) = window(before, after, span_chars);
         let _ = writeln!(out, "{pad} |");
-        let _ = writeln!(out, "{line} | {}", printable(&shown));
-        let label = label.map(|l| format!(" {l}")).unwrap_or_default();
+        let _ = writeln!(out, "{line} | {}", printable(&quoted));
+        let label = label.map(|l| format!(" {}", shown(l))).unwrap_or_default();
         let _ = writeln!(
             out,
             "{pad} | {}{}{label}",
@@ -344,28 +358,62 @@ fn window(before: &str, after: &str, span_chars: usize) -> (String, usize, usize
     (format!("{prefix}{lead}{tail}{suffix}"), caret_at, width)
 }
 
-/// The terminal columns characters take, as Unicode's East Asian Width
-/// and zero-width properties say (unicode-width, as wcwidth): two for the
-/// wide characters of Chinese texts, none for combining marks, and one for
-/// a control character, which [`printable`] shows as one.
+/// The terminal columns characters take as [`printable`] shows them, as
+/// Unicode's East Asian Width and zero-width properties say (unicode-width,
+/// as wcwidth): two for the wide characters of Chinese texts, none for
+/// combining marks, one for a tab (shown as a space), and the length of
+/// its escape for a character shown escaped.
 fn columns(chars: impl Iterator<Item = char>) -> usize {
     chars
-        .map(|c| match c.is_control() {
-            true => 1,
-            false => c.width().unwrap_or(0),
+        .map(|c| match (c, crate::unicode::escaped(c)) {
+            ('\t', _) => 1,
+            (_, Some(escape)) => escape.len(),
+            (c, None) => c.width().unwrap_or(0),
         })
         .sum()
 }
 
-/// Tabs become one space and control characters a `?`, so carets line up.
+/// A quoted source line as shown: tabs as one space, so that carets line
+/// up, and every other unsafe character escaped
+/// ([`crate::unicode::escaped`]).
 fn printable(line: &str) -> String {
-    line.chars()
-        .map(|c| match c {
-            '\t' => ' ',
-            c if c.is_control() => '?',
-            c => c,
-        })
-        .collect()
+    let mut shown = String::with_capacity(line.len());
+    for c in line.chars() {
+        match (c, crate::unicode::escaped(c)) {
+            ('\t', _) => shown.push(' '),
+            (_, Some(escape)) => shown.push_str(&escape),
+            (c, None) => shown.push(c),
+        }
+    }
+    shown
+}
+
+/// Characters of a diagnostic's headline, label or help line shown at
+/// most: a message that quotes a hex argument of 131,072 digits, or a GSD
+/// keyword of a megabyte, would print all of it. gsdc's own texts are
+/// shorter than half of it.
+const MAX_SHOWN_TEXT: usize = 1000;
+
+/// A line of a diagnostic as a terminal is shown it: its unsafe
+/// characters escaped ([`crate::unicode::escape`]), and no more than
+/// [`MAX_SHOWN_TEXT`] characters of it, cut in the middle (`...`) so that
+/// both its start and its end, where messages say what is wrong, are shown.
+fn shown(text: &str) -> String {
+    const KEPT: usize = MAX_SHOWN_TEXT / 2;
+    let count = text.chars().count();
+    if count <= MAX_SHOWN_TEXT {
+        return crate::unicode::escape(text).into_owned();
+    }
+    let head_end = text.char_indices().nth(KEPT).map_or(text.len(), |(i, _)| i);
+    let tail_start = text
+        .char_indices()
+        .nth(count - KEPT)
+        .map_or(text.len(), |(i, _)| i);
+    format!(
+        "{}...{}",
+        crate::unicode::escape(&text[..head_end]),
+        crate::unicode::escape(&text[tail_start..])
+    )
 }
 
 #[cfg(test)]
@@ -422,6 +470,65 @@ mod tests {
         }
         .render(&d);
         assert!(rendered.contains(&format!("  | {}^^^^^^^^^\n", " ".repeat(13))));
+    }
+
+    /// A keyword, an argument or a name quoted in a diagnostic reaches the
+    /// terminal escaped, in the headline as in the quoted line and the
+    /// label and help, and the caret still stands under the span.
+    #[test]
+    fn nothing_of_the_input_reaches_the_terminal_raw() {
+        let text = "X\u{1b}[31mY\u{202E} = 1\r\n";
+        let d = Diagnostic::warning("W205", "unknown keyword `X\u{1b}[31mY\u{202E}`")
+            .at(0..text.find(" =").unwrap())
+            .label("not \u{1b}[2J known")
+            .help("did you mean `X\u{2066}`?");
+        let rendered = Source {
+            name: "a\u{1b}]0;title\u{7}.gsd",
+            text,
+        }
+        .render(&d);
+        assert!(
+            !rendered
+                .chars()
+                .any(|c| c != '\n' && crate::unicode::is_unsafe(c)),
+            "{rendered:?}"
+        );
+        let lines: Vec<&str> = rendered.lines().collect();
+        assert_eq!(
+            lines[0],
+            "warning[W205]: unknown keyword `X\\u001b[31mY\\u202e`"
+        );
+        assert_eq!(lines[1], " --> a\\u001b]0;title\\u0007.gsd:1:1");
+        assert_eq!(lines[3], "1 | X\\u001b[31mY\\u202e = 1");
+        assert_eq!(
+            lines[4],
+            format!("  | {} not \\u001b[2J known", "^".repeat(18))
+        );
+        assert_eq!(lines[5], "  = help: did you mean `X\\u2066`?");
+    }
+
+    /// A message quoting an argument of 131,072 hex digits printed all of
+    /// them: the headline shows its start and its end.
+    #[test]
+    fn a_long_headline_is_cut_in_the_middle() {
+        let digits = "A".repeat(131_073);
+        let d = Diagnostic::error(
+            "E411",
+            format!("`{digits}` has 131073 hex digits: a byte is two"),
+        );
+        let rendered = Source {
+            name: "HEX",
+            text: &digits,
+        }
+        .render(&d);
+        assert!(rendered.len() < 2 * MAX_SHOWN_TEXT, "{}", rendered.len());
+        let headline = rendered.lines().next().unwrap();
+        assert!(headline.starts_with("error[E411]: `AAAA"), "{headline}");
+        assert!(
+            headline.ends_with("AAAA` has 131073 hex digits: a byte is two"),
+            "{headline}"
+        );
+        assert!(headline.contains("A...A"), "{headline}");
     }
 
     #[test]

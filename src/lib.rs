@@ -32,6 +32,7 @@ mod spelling;
 mod symbol;
 #[cfg(test)]
 mod testing;
+mod unicode;
 mod utf16;
 
 // The edges: the build-script API, the files, the PI schema.

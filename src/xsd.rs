@@ -33,10 +33,6 @@ mod without_libxml2 {
         pub fn validate(&mut self, _: &str) -> Diagnostics {
             match *self {}
         }
-
-        pub fn validate_file(&mut self, _: &Path, _: &str) -> Diagnostics {
-            match *self {}
-        }
     }
 }
 
@@ -77,9 +73,16 @@ mod libxml2 {
             Ok(Schema { context })
         }
 
-        /// Validates a GSDML text (already decoded to UTF-8). Network access and
-        /// entity loading stay off.
+        /// Validates a GSDML text (already decoded to UTF-8): the text gsdc
+        /// read and checked, never the file again, which could have changed
+        /// since, and the findings placed in it. Network access and entity
+        /// loading stay off, and a text with a DTD is not handed to libxml2
+        /// at all (gsdc's own rules refuse it, E300): no entity is ever
+        /// expanded or fetched.
         pub fn validate(&mut self, text: &str) -> Diagnostics {
+            if text.contains("<!DOCTYPE") || text.contains("<!ENTITY") {
+                return Diagnostics::default();
+            }
             let options = ParserOptions {
                 encoding: Some("utf-8"),
                 no_net: true,
@@ -96,26 +99,6 @@ mod libxml2 {
                 }
             };
             match self.context.validate_document(&document) {
-                Ok(()) => Diagnostics::default(),
-                Err(errors) => schema_errors(text, &errors),
-            }
-        }
-    }
-
-    impl Schema {
-        /// Validates the file at `path` as libxml2 streams it, which is what
-        /// xmllint does and faster than building a tree; `text` is the file
-        /// decoded, for placing the findings. A file with a DTD is not handed to
-        /// libxml2 at all (gsdc's own rules refuse it, E300): no entity is ever
-        /// expanded or fetched.
-        pub fn validate_file(&mut self, path: &Path, text: &str) -> Diagnostics {
-            if text.contains("<!DOCTYPE") || text.contains("<!ENTITY") {
-                return Diagnostics::default();
-            }
-            let Some(path) = path.to_str() else {
-                return self.validate(text);
-            };
-            match self.context.validate_file(path) {
                 Ok(()) => Diagnostics::default(),
                 Err(errors) => schema_errors(text, &errors),
             }

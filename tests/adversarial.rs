@@ -93,18 +93,7 @@ fn gsdc(dir: &Path, args: &[&str]) -> Run {
         .stdin(Stdio::null())
         .spawn()
         .unwrap();
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > HANG {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("gsdc {args:?} did not finish within {HANG:?}: a hang");
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
+    let status = support::wait_within(&mut child, HANG, &format!("gsdc {args:?}"));
     let output = String::from_utf8_lossy(&std::fs::read(log).unwrap()).into_owned();
     Run {
         code: status.code(),

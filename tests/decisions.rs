@@ -312,6 +312,7 @@ fn every_text_gsdc_wrote_is_listed_as_its_wording() {
                         }
                     }
                     assert!(listed > 0, "{name}: gsdc writes the ports' names at least");
+                    assert_translations_are_the_files(&name, &doc, &head(&text));
                 }
                 gsdc::ArtifactKind::Gsd => {
                     for line in text.lines().filter(|l| l.starts_with("Module = \"")) {
@@ -324,6 +325,32 @@ fn every_text_gsdc_wrote_is_listed_as_its_wording() {
             }
         }
     }
+}
+
+/// A header's `in zh gsdc's translation` names languages the GSDML has a
+/// text list in: a translation the file does not carry is not listed.
+fn assert_translations_are_the_files(name: &str, doc: &roxmltree::Document, header: &str) {
+    let xml = "http://www.w3.org/XML/1998/namespace";
+    let languages: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("Language"))
+        .filter_map(|n| n.attribute((xml, "lang")))
+        .collect();
+    let mut translated = 0;
+    for note in words(header).split("gsdc's wording: ").skip(1) {
+        let Some((_, codes)) = note.split_once("; in ") else {
+            continue;
+        };
+        let codes = codes.split(" gsdc's translation").next().unwrap();
+        for code in codes.split(", ") {
+            assert!(languages.contains(&code), "{name}: {code} in {note}");
+            translated += 1;
+        }
+    }
+    assert!(
+        translated > 0 || languages.is_empty(),
+        "{name}: its languages {languages:?} get gsdc's translation of the ports' names"
+    );
 }
 
 /// Freeze_Mode_supp, Sync_Mode_supp and Fail_Safe are what the card's DP

@@ -68,10 +68,12 @@ fn layouts_are_formatted_as_rustfmt_formats_them() {
     }
 }
 
-/// `cargo test` and `cargo clippy -- -D warnings` in `tests/firmware`, whose
-/// build script generates every layout with gsdc's build-script API: every
-/// test of the crate runs and passes, and the build script asks cargo to run
-/// it again when a description or a symbol it names changes.
+/// `cargo test`, `cargo clippy -- -D warnings` and `cargo doc` in
+/// `tests/firmware`, whose build script generates every layout with gsdc's
+/// build-script API: every test of the crate runs and passes, every
+/// intra-doc link of the layouts' docs resolves (the crate denies warnings,
+/// rustdoc's among them), and the build script asks cargo to run it again
+/// when a description or a symbol it names changes.
 #[test]
 fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
     let crate_dir = support::checkout("tests/firmware");
@@ -81,6 +83,7 @@ fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
     for args in [
         &["test", "--quiet"][..],
         &["clippy", "--quiet", "--all-targets", "--", "-D", "warnings"],
+        &["doc", "--quiet", "--no-deps"],
     ] {
         let output = Command::new(env!("CARGO"))
             .args(args)

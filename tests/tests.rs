@@ -37,7 +37,9 @@
 //! - `support::gsdc(["check", "x.gsd"])` runs the gsdc binary in the
 //!   checkout and returns its `Output`; `support::stdout(&output)` and
 //!   `support::stderr(&output)` its text; `support::gsdc_command(args)` a
-//!   `Command` to add stdin, an environment or `spawn` to.
+//!   `Command` to add stdin, an environment or `spawn` to;
+//!   `support::wait_within(&mut child, limit, what)` waits for a spawned
+//!   one, and fails the test as a hang past `limit`.
 //! - `support::scratch("name")`: a fresh directory of the test's own in
 //!   `target/tmp`, removed when the test passes, kept when it fails.
 //! - `support::checkout("descriptions")`, `support::shared("corpus/gsd")`,
@@ -91,6 +93,9 @@ mod gsd_output;
 mod gsd_reader;
 mod gsdml_output;
 mod gsdml_reader;
+mod hostile_input;
+mod hostile_limits;
+mod hostile_properties;
 mod import_cycles;
 mod invalid_descriptions;
 mod languages;

@@ -7,7 +7,7 @@
 
 use super::{display_name, say, shown_in, warn, Status, MAX_SHOWN};
 use crate::build::{merge, Clash, Compiler, Config, Datasheet, Refused};
-use crate::output::{existing, stale_files, write_files, Outcome};
+use crate::output::{existing, lock_shared, stale_files, write_files, Outcome, SharedLock};
 use crate::{Artifact, ArtifactKind, Language};
 use std::path::{Path, PathBuf};
 
@@ -188,10 +188,15 @@ pub(super) fn merged(sets: Vec<(PathBuf, Vec<Artifact>)>) -> Result<Vec<Artifact
 
 /// `--check`: compares, writes nothing, prints a unified diff per differing
 /// file and names each stale file, and each datasheet in `out` that carries
-/// another fingerprint than its description's.
+/// another fingerprint than its description's. What `out` holds is read
+/// as one build left it: a build at work is waited for ([`read_lock`]).
 fn check_all(files: &[Artifact], datasheets: &[(PathBuf, Datasheet)], out: &Path) -> Status {
+    let lock = match read_lock(out) {
+        Ok(lock) => lock,
+        Err(status) => return status,
+    };
     let mut status = differing(files, out, difference);
-    match stale_files(out, files) {
+    match stale_files(out, files, lock.not_locked.is_none()) {
         Ok(stale) => {
             for path in &stale {
                 say(&format!(
@@ -219,6 +224,24 @@ fn check_all(files: &[Artifact], datasheets: &[(PathBuf, Datasheet)], out: &Path
         status = status.max(datasheet_in_step(description, datasheet, out));
     }
     status
+}
+
+/// A shared lock on `out`, for comparing what it holds: a build or `gsdc
+/// doc` writing into it at work is waited for, so that its files are
+/// compared whole and its temporaries are not taken for a killed build's.
+/// On a file system without locks, a warning.
+pub(super) fn read_lock(out: &Path) -> Result<SharedLock, Status> {
+    let lock = lock_shared(out).map_err(|e| {
+        warn(&format!("error: cannot open {}: {e}", display_name(out)));
+        Status::UsageOrIo
+    })?;
+    if let Some(e) = &lock.not_locked {
+        warn(&format!(
+            "warning: cannot lock {} ({e}): a build writing into it at the same time could be compared half done; its temporaries are not named",
+            display_name(out)
+        ));
+    }
+    Ok(lock)
 }
 
 /// How a file in the output directory (`None`: missing) differs from the

@@ -247,14 +247,8 @@ fn gsdcs_own(name: &str, format: Format) -> Report {
 fn check_gsdml(path: &Path, text: &str, schema: Option<&mut Schema>) -> Diagnostics {
     let mut diagnostics = crate::gsdml::check(text, own_name(path));
     if let Some(schema) = schema {
-        // libxml2 streams a file from disk faster than it builds a tree from
-        // the text; a stream (`/dev/stdin`) can be read once only.
-        let findings = if is_stream(path) {
-            schema.validate(text)
-        } else {
-            schema.validate_file(path, text)
-        };
-        diagnostics.extend(findings);
+        // The text read, not the file again: it may have changed since.
+        diagnostics.extend(schema.validate(text));
     }
     diagnostics
 }

@@ -80,23 +80,34 @@ pub fn run(args: &Args) -> Status {
         Ok(ir) => ir,
         Err(status) => return status,
     };
-    match decode_all(ir.source_name.clone(), &ir, args) {
-        Ok(document) => {
-            match args.format {
-                Format::Table => say(render_tables(&document).trim_end()),
-                Format::Json => {
-                    say(&serde_json::to_string_pretty(&document).expect("decoded values serialize"))
-                }
-            }
+    match output(&ir, args) {
+        Ok(text) => {
+            say(&text);
             Status::Ok
         }
-        Err(status) => status,
+        Err(Refused(rendered)) => {
+            warn(&rendered);
+            Status::InputErrors
+        }
     }
 }
 
+/// What `gsdc decode` prints of the description `ir`: on stdout, or the
+/// diagnostic that refused an argument, on stderr (exit 1).
+pub(super) fn output(ir: &Ir, args: &Args) -> Result<String, Refused> {
+    let document = decode_all(ir.source_name.clone(), ir, args)?;
+    Ok(match args.format {
+        Format::Table => render_tables(&document).trim_end().to_string(),
+        Format::Json => serde_json::to_string_pretty(&document).expect("decoded values serialize"),
+    })
+}
+
+/// The diagnostic that refused an argument, rendered against it.
+pub(super) struct Refused(pub String);
+
 /// Each part asked for, or the first diagnostic, shown against the argument
 /// it is about.
-fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Status> {
+fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Refused> {
     let prm = args
         .prm
         .as_deref()
@@ -150,7 +161,7 @@ fn decode_all(description: String, ir: &Ir, args: &Args) -> Result<Document, Sta
     })
 }
 
-fn mapping_options(ir: &Ir, options: &[String]) -> Result<MappingInForce, Status> {
+fn mapping_options(ir: &Ir, options: &[String]) -> Result<MappingInForce, Refused> {
     let mut mapping = MappingInForce::defaults();
     for option in options {
         in_argument("--mapping", option, mapping.give(ir, option))?;
@@ -159,11 +170,15 @@ fn mapping_options(ir: &Ir, options: &[String]) -> Result<MappingInForce, Status
 }
 
 /// The value, or the diagnostic rendered against the argument `text` of
-/// `name` (exit 1).
-fn in_argument<T>(name: &str, text: &str, result: Result<T, Diagnostic>) -> Result<T, Status> {
+/// `name`.
+fn in_argument<T>(name: &str, text: &str, result: Result<T, Diagnostic>) -> Result<T, Refused> {
     result.map_err(|diagnostic| {
-        warn(Source { name, text }.render(&diagnostic).trim_end());
-        Status::InputErrors
+        Refused(
+            Source { name, text }
+                .render(&diagnostic)
+                .trim_end()
+                .to_string(),
+        )
     })
 }
 

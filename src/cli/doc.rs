@@ -4,7 +4,7 @@
 //! the files are written as `gsdc build` writes them (all or nothing, the
 //! directory locked).
 
-use super::build::{differing, merged, write_all};
+use super::build::{differing, merged, read_lock, write_all};
 use super::{display_name, load_description, warn, Status};
 use crate::Artifact;
 use std::path::{Path, PathBuf};
@@ -52,8 +52,13 @@ pub fn run(args: &Args) -> Status {
 
 /// `--check`: names each datasheet that differs from the one in `out` or is
 /// missing; nothing written. Names, not diffs: a page's diff is pages of
-/// markup, and `gsdc doc` rewrites it whole.
+/// markup, and `gsdc doc` rewrites it whole. A `gsdc doc` at work on `out`
+/// is waited for, as `gsdc build --check` waits.
 fn check_all(files: &[Artifact], out: &Path) -> Status {
+    let _lock = match read_lock(out) {
+        Ok(lock) => lock,
+        Err(status) => return status,
+    };
     let status = differing(files, out, named);
     if status == Status::InputErrors {
         warn(&format!(

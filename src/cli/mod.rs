@@ -125,22 +125,26 @@ fn note_failure(result: std::io::Result<()>) {
 
 /// A path as the human output shows it: control characters (a newline
 /// that would start a fake line, an escape sequence) and the marks that
-/// reorder text (U+202E) escaped as the JSON output escapes them, so that a
-/// file name cannot pass for other output.
+/// reorder text (U+202E) escaped as the JSON output escapes them
+/// ([`crate::unicode::escape`]), so that a file name cannot pass for other
+/// output.
 fn display_name(path: &Path) -> String {
-    let mut shown = String::new();
-    for c in path.to_string_lossy().chars() {
-        match c {
-            '\n' => shown.push_str("\\n"),
-            '\r' => shown.push_str("\\r"),
-            '\t' => shown.push_str("\\t"),
-            c if c.is_control() || crate::spec::is_bidi_control(c) => {
-                shown.push_str(&format!("\\u{:04x}", u32::from(c)));
-            }
-            c => shown.push(c),
-        }
-    }
-    shown
+    crate::unicode::escape(&path.to_string_lossy()).into_owned()
+}
+
+/// What `gsdc decode DESCRIPTION ARGS` prints, on stdout (`Ok`) or stderr
+/// (`Err`), for the description `ir` and `args` as the shell passes them
+/// after the description; `None` when the arguments are not the command's.
+/// For the fuzz target `decode`, which reads no file; not part of the API.
+#[doc(hidden)]
+pub fn decode_output(ir: &crate::Ir, args: &[&str]) -> Option<Result<String, String>> {
+    let argv = ["gsdc", "decode", "fuzz.toml"]
+        .into_iter()
+        .chain(args.iter().copied());
+    let Command::Decode(args) = Cli::try_parse_from(argv).ok()?.command else {
+        return None;
+    };
+    Some(decode::output(ir, &args).map_err(|decode::Refused(rendered)| rendered))
 }
 
 /// The IR of the description at `path`, for a command that reads it
@@ -166,8 +170,30 @@ fn shown_in(dir: &Path, file_name: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::display_name;
+    use super::{decode_output, display_name};
     use std::path::Path;
+
+    /// What the decode fuzz target sees is what `gsdc decode` prints.
+    #[test]
+    fn decode_output_is_the_commands() {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
+        let telegram = [
+            "--module",
+            "PPO1",
+            "--direction",
+            "out",
+            "10F0 0000 0000 0000 0000 0000",
+        ];
+        let table = decode_output(&ir, &telegram).unwrap().unwrap();
+        assert!(table.starts_with("PPO1"), "{table}");
+        let refused = decode_output(&ir, &["--prm", "0"]).unwrap().unwrap_err();
+        assert!(
+            refused.starts_with("error[E411]: `0` has 1 hex digits"),
+            "{refused}"
+        );
+        assert_eq!(decode_output(&ir, &["--no-such-flag"]), None);
+    }
 
     #[test]
     fn names_cannot_fake_lines_or_reorder_text() {

@@ -4,7 +4,7 @@
 //! (user parameters), plugs word modules until the input and output totals
 //! match, and reads a diagnosis block of type, node and code.
 
-use super::{BitRange, Choice, Text};
+use super::{BitRange, Choice, Exactly, Text};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -14,7 +14,7 @@ pub struct Gateway {
     /// The second bus, as the manual names it: "CANopen".
     pub bus: Spanned<String>,
     /// The node numbers on the second bus, both ends included.
-    pub nodes: Spanned<[Spanned<i64>; 2]>,
+    pub nodes: Spanned<Exactly<Spanned<i64>, 2>>,
     /// The gateway's own node number, when it is a node itself.
     pub own_node: Option<Spanned<i64>>,
     /// Bytes of data the master reads (all nodes' input words) at most.
@@ -58,7 +58,7 @@ pub struct NodeCount {
     /// Bits of a byte, instead of `type`.
     pub bits: Option<Spanned<BitRange>>,
     /// The counts the gateway takes, both ends included.
-    pub range: Spanned<[Spanned<i64>; 2]>,
+    pub range: Spanned<Exactly<Spanned<i64>, 2>>,
     pub default: Spanned<i64>,
 }
 
@@ -73,7 +73,7 @@ pub struct NodeWords {
     /// Bits of a byte, instead of `type`.
     pub bits: Option<Spanned<BitRange>>,
     /// Words one node may carry this way, both ends included.
-    pub range: Spanned<[Spanned<i64>; 2]>,
+    pub range: Spanned<Exactly<Spanned<i64>, 2>>,
     /// The default of every node; or `defaults`, one per node.
     pub default: Option<Spanned<i64>>,
     pub defaults: Option<Spanned<Vec<Spanned<i64>>>>,

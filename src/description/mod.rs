@@ -12,7 +12,7 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
-pub use values::{is_language_code, Address, BitRange, Record, Text};
+pub use values::{is_language_code, Address, BitRange, Exactly, Record, Text};
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -270,7 +270,7 @@ pub struct Mapping {
     pub default: Option<Spanned<Address>>,
     pub defaults: Option<Spanned<Vec<Spanned<Address>>>>,
     /// Allowed parameter addresses, both ends included.
-    pub range: Option<Spanned<[Spanned<Address>; 2]>>,
+    pub range: Option<Spanned<Exactly<Spanned<Address>, 2>>>,
     /// Allowed values with their meaning, instead of a range.
     pub choices: Option<Spanned<Vec<Choice>>>,
     /// The drive parameter that holds the mapping of `first`; the next ones follow.
@@ -303,7 +303,7 @@ pub struct Setting {
     pub name: Spanned<Text>,
     pub parameter: Option<Spanned<Address>>,
     pub default: Spanned<Address>,
-    pub range: Option<Spanned<[Spanned<Address>; 2]>>,
+    pub range: Option<Spanned<Exactly<Spanned<Address>, 2>>>,
     pub choices: Option<Spanned<Vec<Choice>>>,
     /// What a setting with a range holds: a plain value (a timeout, a
     /// count; the default) or a drive parameter's address.
@@ -392,7 +392,7 @@ pub struct Dpv1 {
     /// Units of 10 ms.
     pub c1_response_timeout: Option<Spanned<u16>>,
     /// DPV1_Status_1..3, the first three bytes of User_Prm_Data.
-    pub status_bytes: Option<Spanned<[u8; 3]>>,
+    pub status_bytes: Option<Spanned<Exactly<u8, 3>>>,
     /// The class 2 channel (MSAC_2: engineering tools, I&M), when the card has it.
     pub c2: Option<Spanned<Dpv1Class2>>,
     /// I&M functions (Ident_Maintenance_supp), read over the class 2
@@ -408,7 +408,7 @@ pub struct Dpv1Class2 {
     pub max_data_len: Spanned<u8>,
     /// C2_Response_Timeout, units of 10 ms.
     pub response_timeout: Spanned<u16>,
-    /// C2_Max_Count_Channels: class 2 connections at once.
+    /// C2_Max_Count_Channels: class 2 connections at once, 1..49.
     pub max_count_channels: Spanned<u8>,
     /// Max_Initiate_PDU_Length: 0 or 52..244.
     pub max_initiate_pdu_length: Spanned<u8>,

@@ -73,6 +73,44 @@ impl<'de> Deserialize<'de> for BitRange {
     }
 }
 
+/// A list of exactly `N` items: `range = [0, 65535]`, `status_bytes =
+/// [0, 0, 0]`. More items are an error, as fewer are: serde's arrays take
+/// the first `N` and leave the rest to the deserializer, which the toml
+/// crate drops without a word.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Exactly<T, const N: usize>(pub [T; N]);
+
+impl<'de, T: Deserialize<'de>, const N: usize> Deserialize<'de> for Exactly<T, N> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct ListVisitor<T, const N: usize>(std::marker::PhantomData<T>);
+        impl<'de, T: Deserialize<'de>, const N: usize> Visitor<'de> for ListVisitor<T, N> {
+            type Value = Exactly<T, N>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "a list of {N} items")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut items = Vec::with_capacity(N);
+                while items.len() < N {
+                    match seq.next_element()? {
+                        Some(item) => items.push(item),
+                        None => return Err(de::Error::invalid_length(items.len(), &self)),
+                    }
+                }
+                // Counted, so the message says how many there are.
+                let mut more = 0;
+                while seq.next_element::<de::IgnoredAny>()?.is_some() {
+                    more += 1;
+                }
+                match items.try_into() {
+                    Ok(items) if more == 0 => Ok(Exactly(items)),
+                    _ => Err(de::Error::invalid_length(N + more, &self)),
+                }
+            }
+        }
+        deserializer.deserialize_seq(ListVisitor(std::marker::PhantomData))
+    }
+}
+
 /// A text: `"Control word"` (English only), or a table with `en` and any
 /// other language by its ISO 639-1 code, and optionally `gsd`, a short
 /// English form for a GSD file's 32 characters:

@@ -307,21 +307,19 @@ fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&s
     doc.close("ModuleInfo");
 }
 
-/// The DAP's own submodule: no IO data and no records.
+/// The DAP's own submodule: no IO data and no records. A device that lets
+/// the controller write no I&M record has no Writeable_IM_Records (an
+/// empty list is not a value of it).
 fn dap_submodule(doc: &mut Doc, p: &Profinet) {
     doc.open("VirtualSubmoduleList", &[]);
-    doc.open(
-        "VirtualSubmoduleItem",
-        &[
-            ("ID", DAP_SUBMODULE_ID),
-            ("SubmoduleIdentNumber", &hex32(DAP_IDENT)),
-            (
-                "Writeable_IM_Records",
-                &blank_separated(&p.interface_properties.writeable_im_records),
-            ),
-            ("MayIssueProcessAlarm", "false"),
-        ],
-    );
+    let ident = hex32(DAP_IDENT);
+    let records = blank_separated(&p.interface_properties.writeable_im_records);
+    let mut attributes = vec![("ID", DAP_SUBMODULE_ID), ("SubmoduleIdentNumber", &ident)];
+    if !records.is_empty() {
+        attributes.push(("Writeable_IM_Records", &records));
+    }
+    attributes.push(("MayIssueProcessAlarm", "false"));
+    doc.open("VirtualSubmoduleItem", &attributes);
     doc.leaf("IOData", &[]);
     module_info(doc, &p.device_name, &p.device_info, &[]);
     doc.close("VirtualSubmoduleItem");

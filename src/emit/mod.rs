@@ -4,11 +4,11 @@ pub mod c;
 pub mod doc;
 pub mod gsd;
 pub mod gsdml;
+mod layout;
 pub mod rust;
-mod tables;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Bus, Decision, Direction, Holds, Ir, MappingGroup, MappingKind, PkwKind, Wording};
+use crate::ir::{Bus, Decision, Direction, Ir, PkwKind, Wording};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -155,68 +155,6 @@ pub(crate) fn layout_contents(ir: &Ir) -> String {
     joined(&present, "and")
 }
 
-/// A mapping's value as generated code writes it: a parameter address in
-/// hex, as the manuals write addresses; a plain value or a choice in
-/// decimal.
-fn mapping_literal(holds: Holds, value: u16) -> String {
-    match holds {
-        Holds::Address => hex16(value),
-        Holds::Value | Holds::Choice => value.to_string(),
-    }
-}
-
-/// `<holder> holds a parameter address from 0x2B02 to 0x2B0C.`, or `a
-/// value from 0 to 60000.`: what a range's entries are, in the generated
-/// code's doc comments.
-fn range_doc(holder: &str, holds: Holds, min: u16, max: u16) -> String {
-    let what = match holds {
-        Holds::Address => "a parameter address",
-        Holds::Value | Holds::Choice => "a value",
-    };
-    format!(
-        "{holder} holds {what} from {} to {}.",
-        mapping_literal(holds, min),
-        mapping_literal(holds, max)
-    )
-}
-
-/// What a group of mappings is, and where its drive parameters are set,
-/// in the generated code's doc comments.
-fn group_doc(g: &MappingGroup) -> String {
-    let what = match g.kind {
-        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
-        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
-        MappingKind::Dpv1Index => {
-            "The DPV1 record indexes: the parameter each one reads and writes."
-        }
-        MappingKind::Setting => "Single drive parameters.",
-    };
-    let by_master = g.sets.iter().filter(|s| s.master_writes()).count();
-    let set = match (by_master, g.sets.len() - by_master) {
-        (_, 0) => "The master writes them at startup.",
-        (0, _) => "Set at the drive (keypad, PKW, the drive's own tool): the master writes none of them, and no parameter record or User_Prm_Data carries them.",
-        _ => "The master writes some of them at startup, those User_Prm_Data or the records carry; the others are set at the drive.",
-    };
-    format!("{what} {set}")
-}
-
-/// What the description says of the device-related diagnosis block and of
-/// its bytes, in English, for the layouts' comments: one line each.
-fn diagnosis_said(d: &crate::ir::profibus::Diagnosis) -> Vec<String> {
-    let header = crate::ir::profibus::STANDARD_DIAG_BYTES;
-    d.info
-        .iter()
-        .map(|info| format!("{}.", info.en.trim_end_matches('.')))
-        .chain(d.bytes.iter().map(|(at, text)| {
-            format!(
-                "Byte {at} of the diagnosis (byte {} of the block): {}.",
-                at - header,
-                text.en.trim_end_matches('.')
-            )
-        }))
-        .collect()
-}
-
 /// `Bit 3`, `Bits 9-10`: a field's bits, to begin a doc comment.
 fn bit_range(first: u16, last: u16) -> String {
     if first == last {
@@ -247,6 +185,16 @@ pub(crate) fn hex16(value: u16) -> String {
 /// `0x00000202`: a 32-bit number in eight digits.
 pub(crate) fn hex32(value: u32) -> String {
     format!("0x{value:08X}")
+}
+
+/// The PKW channel's words as the layouts name them, or `None` without one.
+pub(crate) fn pkw_name(kind: PkwKind) -> Option<&'static str> {
+    match kind {
+        PkwKind::None => None,
+        PkwKind::PkeIndPwe => Some("PKE, IND, PWE"),
+        PkwKind::StationCommandAddressValue => Some("station, command, address, value"),
+        PkwKind::Profidrive => Some("PROFIdrive: PKE, IND, PWE1, PWE2"),
+    }
 }
 
 /// `a, b and c` (or `a, b or c`).
@@ -319,6 +267,27 @@ pub(crate) fn wrap_words(text: &str, width: usize) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// A sentence a code template hands its filter: a text of the template's
+/// own, a sentence of the layout model, or a list of them (one paragraph),
+/// with each reference written by `render`.
+fn sentence(
+    value: &minijinja::Value,
+    render: &dyn Fn(&layout::Doc) -> String,
+) -> Result<String, minijinja::Error> {
+    use serde::Deserialize as _;
+    if let Some(text) = value.as_str() {
+        return Ok(text.to_string());
+    }
+    if value.kind() == minijinja::value::ValueKind::Seq {
+        let parts: Result<Vec<String>, _> = value
+            .try_iter()?
+            .map(|part| sentence(&part, render))
+            .collect();
+        return Ok(parts?.join(" "));
+    }
+    Ok(render(&layout::Doc::deserialize(value.clone())?))
 }
 
 /// A template environment where a name the context lacks is an error, so a
@@ -504,6 +473,24 @@ mod tests {
             .map(|a| a.file_name)
             .collect();
         assert_eq!(names, ["mv810-pnet02.html", "mv810-pnet02.md"]);
+    }
+
+    /// One typo in a code template (`m.pzd_wordz`) fails the rendering
+    /// instead of writing a layout without the telegram's size.
+    #[test]
+    fn a_misspelt_name_in_a_code_template_is_an_error_not_empty_text() {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let ir = crate::testing::load("md810dp.toml", text).0.unwrap();
+        type Render = fn(&str, &Ir) -> Result<String, minijinja::Error>;
+        let languages: [(&str, Render); 2] =
+            [(rust::TEMPLATE, rust::render), (c::TEMPLATE, c::render)];
+        for (template, render) in languages {
+            assert!(render(template, &ir).is_ok());
+            let typo = template.replace("m.pzd_words", "m.pzd_wordz");
+            assert_ne!(typo, template);
+            let error = render(&typo, &ir).unwrap_err();
+            assert_eq!(error.kind(), minijinja::ErrorKind::UndefinedError);
+        }
     }
 
     #[test]

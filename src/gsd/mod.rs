@@ -25,6 +25,7 @@ pub use model::{
     Allowed, Arg, Baud, Block, ExtUserPrmData, GsdFile, IndexedText, Module, PrmDataType, PrmText,
     Setting, Slot, Spanned, UnitDiagArea, UnitDiagType, Value,
 };
+pub(crate) use schema::{keyword_max_len, keyword_range};
 
 /// Bytes as vendors write them: UTF-8 if valid, else Latin-1 (each byte one
 /// char). 272 of 654 real files are Latin-1 (umlauts in texts), and Latin-1

@@ -241,6 +241,38 @@ pub fn schema() -> &'static Schema {
     SCHEMA.get_or_init(Schema::load)
 }
 
+/// What the schema says of the keyword `name`, spelt as the specification
+/// spells it (`C2_Max_Count_Channels`, `MaxTsdr_<baud>`): the one place a
+/// keyword's limits are written, for the checker of every GSD and for the
+/// loader, which holds a description's values to the limits of the
+/// keywords they become, so that nothing it accepts is a GSD the checker
+/// refuses.
+///
+/// # Panics
+/// When the schema has no such keyword: the names are gsdc's own, and
+/// every one is tested (`lower`'s tests).
+pub(crate) fn keyword(name: &str) -> &'static KeywordSpec {
+    match schema().lookup(&normalize(name)) {
+        Some(keyword) => &keyword.spec,
+        None => panic!("schemas/gsd-keywords.toml has no keyword {name}"),
+    }
+}
+
+/// The numbers [`keyword`] `name` takes, both ends included.
+pub(crate) fn keyword_range(name: &str) -> (i64, i64) {
+    keyword(name).number_range()
+}
+
+/// The longest string [`keyword`] `name` takes, in characters.
+///
+/// # Panics
+/// When the keyword has no `max_len`.
+pub(crate) fn keyword_max_len(name: &str) -> usize {
+    keyword(name)
+        .max_len
+        .unwrap_or_else(|| panic!("{name} has no max_len in schemas/gsd-keywords.toml"))
+}
+
 /// The longest keyword the schema knows is shorter than this; a longer name
 /// is not looked up without allocating.
 const MAX_PLAIN_KEY: usize = 48;

@@ -74,6 +74,21 @@ impl Ident {
     }
 }
 
+/// An identifier travels (into a template, through a filter) as its
+/// `snake_case` spelling, from which every other spelling follows.
+impl serde::Serialize for Ident {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(&self.snake())
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Ident {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let snake = String::deserialize(deserializer)?;
+        Ok(Ident(snake.split('_').map(str::to_string).collect()))
+    }
+}
+
 fn text_words(text: &str) -> Vec<String> {
     let mut depth = 0usize;
     let outside: String = text

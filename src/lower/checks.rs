@@ -6,11 +6,12 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::i18n::{files, Lang, Phrase};
 use crate::ir::decision::DecisionWords;
 use crate::ir::{self, Decision, DecisionKind};
+use crate::unicode::is_unsafe;
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
-pub use crate::spec::{GSD_INFO_LEN, GSD_NAME_LEN};
+pub use crate::spec::GSD_NAME_LEN;
 
 pub struct Checker {
     diagnostics: Diagnostics,
@@ -226,7 +227,7 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        let Some(bad) = s.chars().find(|&c| is_unsafe_char(c)) else {
+        let Some(bad) = s.chars().find(|&c| is_unsafe(c)) else {
             return !empty;
         };
         self.push(
@@ -241,9 +242,11 @@ impl Checker {
         false
     }
 
-    /// A string that goes into the GSD: not empty, 7-bit printable ASCII
-    /// without `"`, at most `limit` characters.
-    pub fn gsd_string(&mut self, s: &Spanned<String>, limit: usize, what: &str) -> String {
+    /// A string that becomes the value of the GSD keyword `keyword`
+    /// (`Vendor_Name`): not empty, 7-bit printable ASCII without `"`, and
+    /// no longer than the keyword schema lets the keyword be.
+    pub fn gsd_string(&mut self, s: &Spanned<String>, keyword: &str, what: &str) -> String {
+        let limit = crate::gsd::keyword_max_len(keyword);
         self.check_gsd(s.get_ref(), s.span(), limit, what, GsdForm::Only);
         s.get_ref().clone()
     }
@@ -456,6 +459,36 @@ impl Checker {
         self.in_range((*v.get_ref()).into(), min, max, v.span(), what)
     }
 
+    /// A number that becomes the value of the GSD keyword `keyword`
+    /// (`C2_Max_Count_Channels`), within the range the keyword schema gives
+    /// it: the range `gsdc check` holds the generated GSD to, so that the
+    /// two cannot disagree.
+    pub fn gsd_number<T, V>(&mut self, v: &Spanned<V>, keyword: &str, what: &str) -> Option<T>
+    where
+        T: TryFrom<i64>,
+        V: Copy + Into<i64>,
+    {
+        self.gsd_number_from(v, keyword, i64::MIN, what)
+    }
+
+    /// [`Checker::gsd_number`], and at least `least`: what the description
+    /// asks more of the value than the keyword's type (a class 2 channel
+    /// has at least one connection).
+    pub fn gsd_number_from<T, V>(
+        &mut self,
+        v: &Spanned<V>,
+        keyword: &str,
+        least: i64,
+        what: &str,
+    ) -> Option<T>
+    where
+        T: TryFrom<i64>,
+        V: Copy + Into<i64>,
+    {
+        let (min, max) = crate::gsd::keyword_range(keyword);
+        self.spanned_in_range(v, min.max(least), max, what)
+    }
+
     /// E109: a range `[min, max]` written the wrong way round.
     pub fn reversed(&mut self, span: Range<usize>, min: impl ToString, max: impl ToString) {
         let (min, max) = (min.to_string(), max.to_string());
@@ -493,26 +526,13 @@ pub fn is_gsd_char(c: char) -> bool {
 /// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked
 /// again.
 pub fn is_clean(s: &str) -> bool {
-    !s.trim().is_empty() && !s.chars().any(is_unsafe_char)
-}
-
-/// Control characters (C0, DEL, C1), the line and paragraph separators,
-/// the bidirectional formatting characters (which reorder what a reader
-/// sees: a name could read differently from what the compiler sees) and the
-/// Unicode noncharacters.
-fn is_unsafe_char(c: char) -> bool {
-    let code = u32::from(c);
-    c.is_control()
-        || matches!(c, '\u{2028}' | '\u{2029}')
-        || crate::spec::is_bidi_control(c)
-        || (0xFDD0..=0xFDEF).contains(&code)
-        || code & 0xFFFE == 0xFFFE
+    !s.trim().is_empty() && !s.chars().any(is_unsafe)
 }
 
 /// A character as a message shows it: itself in backticks when it prints,
 /// its code point when it does not.
 pub fn char_name(c: char) -> String {
-    if is_unsafe_char(c) || c.is_whitespace() && c != ' ' {
+    if is_unsafe(c) || c.is_whitespace() && c != ' ' {
         format!("U+{:04X}", u32::from(c))
     } else {
         format!("`{c}`")

@@ -13,6 +13,7 @@ pub use params::place;
 use super::checks::Checker;
 use crate::description::gateway as raw;
 use crate::description::Description;
+use crate::description::Exactly;
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{DataOrder, Gateway, Node, ParamKey};
 use crate::ir::profibus::PrmType;
@@ -21,8 +22,6 @@ use params::{default_configuration, node_count, node_words, NodeWords};
 use std::ops::Range;
 use toml::Spanned;
 
-/// A PROFIBUS slave's input and output each hold at most a telegram.
-const MAX_DATA_LEN: i64 = crate::spec::DP_MAX_TELEGRAM as i64;
 /// Node numbers, counts and words are bytes in the generated code.
 const MAX_BYTE: i64 = 0xFF;
 
@@ -52,12 +51,15 @@ pub fn lower(cx: &mut Checker, g: &Spanned<raw::Gateway>, desc: &Description) ->
             "the gateway's own node",
         )
     });
-    let max_len = |cx: &mut Checker, len: &Spanned<i64>, what| {
-        cx.spanned_in_range(len, 1, MAX_DATA_LEN, what)
-            .unwrap_or(MAX_DATA_LEN as u16)
+    // They become Max_Input_Len and Max_Output_Len; a gateway carries a
+    // byte at least.
+    let max_len = |cx: &mut Checker, len: &Spanned<i64>, keyword, what| {
+        let most = crate::gsd::keyword_range(keyword).1;
+        cx.gsd_number_from(len, keyword, 1, what)
+            .unwrap_or(most as u16)
     };
-    let max_input_len = max_len(cx, &g.max_input_len, "max_input_len");
-    let max_output_len = max_len(cx, &g.max_output_len, "max_output_len");
+    let max_input_len = max_len(cx, &g.max_input_len, "Max_Input_Len", "max_input_len");
+    let max_output_len = max_len(cx, &g.max_output_len, "Max_Output_Len", "max_output_len");
     let data_order = data_order(cx, &g.data_order, &span);
     let nodes = first_node..=last_node;
     let (node_count, count_type) = node_count(cx, &g.node_count, nodes.len());
@@ -220,8 +222,8 @@ fn words_of(words: u32) -> String {
 }
 
 /// `[first, last]` within a byte, first not above last.
-fn node_numbers(cx: &mut Checker, nodes: &Spanned<[Spanned<i64>; 2]>) -> (u8, u8) {
-    let [first, last] = nodes.get_ref();
+fn node_numbers(cx: &mut Checker, nodes: &Spanned<Exactly<Spanned<i64>, 2>>) -> (u8, u8) {
+    let Exactly([first, last]) = nodes.get_ref();
     let first: u8 = cx
         .spanned_in_range(first, 0, MAX_BYTE, "a node number")
         .unwrap_or(1);

@@ -285,7 +285,7 @@ fn lower_settings(
 /// What mapping sets and settings have in common.
 struct Parts<'a> {
     name: &'a Spanned<raw::Text>,
-    range: &'a Option<Spanned<[Spanned<raw::Address>; 2]>>,
+    range: &'a Option<Spanned<raw::Exactly<Spanned<raw::Address>, 2>>>,
     choices: &'a Option<Spanned<Vec<raw::Choice>>>,
     parameter: &'a Option<Spanned<raw::Address>>,
     /// What a range holds; choices hold choices.
@@ -422,7 +422,7 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
             None
         }
         (Some(range), None) => {
-            let [min, max] = range.get_ref();
+            let raw::Exactly([min, max]) = range.get_ref();
             let (min, max) = (
                 resolve_address(cx, min, numbering)?,
                 resolve_address(cx, max, numbering)?,

@@ -121,7 +121,7 @@ pub fn lower(
     let profinet = profinet.flatten();
     let gateway = gateway.map(|g| g.gateway);
     let wording = wording::wording(
-        &given,
+        (&given, &languages),
         profibus.as_ref(),
         gateway.as_ref(),
         profinet.as_ref(),
@@ -194,29 +194,29 @@ fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> 
             .as_ref()
             .zip(files)
             .and_then(|(path, files)| symbol(cx, path, files)),
-        vendor: cx.gsd_string(&d.vendor, checks::GSD_NAME_LEN, "vendor"),
+        vendor: cx.gsd_string(&d.vendor, "Vendor_Name", "vendor"),
         family: cx.required(&d.family, "family"),
-        model: cx.gsd_string(&d.model, checks::GSD_NAME_LEN, "model"),
-        revision: cx.gsd_string(&d.revision, checks::GSD_NAME_LEN, "revision"),
+        model: cx.gsd_string(&d.model, "Model_Name", "model"),
+        revision: cx.gsd_string(&d.revision, "Revision", "revision"),
         hardware_release: cx.gsd_string(
             &d.hardware_release,
-            checks::GSD_NAME_LEN,
+            "Hardware_Release",
             "hardware_release",
         ),
         software_release: cx.gsd_string(
             &d.software_release,
-            checks::GSD_NAME_LEN,
+            "Software_Release",
             "software_release",
         ),
         order_number: d
             .order_number
             .as_ref()
-            .map(|o| cx.gsd_string(o, checks::GSD_NAME_LEN, "order_number")),
+            .map(|o| cx.gsd_string(o, "OrderNumber", "order_number")),
         name: cx.text(&d.name, None, "name"),
         info: d
             .info
             .as_ref()
-            .map(|i| cx.text(i, Some(checks::GSD_INFO_LEN), "info")),
+            .map(|i| cx.text(i, Some(crate::gsd::keyword_max_len("Info_Text")), "info")),
     }
 }
 

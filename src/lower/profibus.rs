@@ -1,7 +1,7 @@
 //! The PROFIBUS part: identity numbers, bus parameters, PPO modules, the
 //! parameter telegram and the diagnosis.
 
-use super::checks::{Checker, GSD_INFO_LEN, GSD_NAME_LEN};
+use super::checks::{Checker, GSD_NAME_LEN};
 use super::gateway;
 use super::mappings::SetSpans;
 use super::ppo::{config_bytes, ppo_layout};
@@ -31,9 +31,6 @@ const PPO_NAMES: [&str; 5] = ["PPO1", "PPO2", "PPO3", "PPO4", "PPO5"];
 const DEFAULT_PPO5_PZD_WORDS: u8 = 10;
 const DEFAULT_C1_MAX_DATA_LEN: u8 = 240;
 const DEFAULT_C1_RESPONSE_TIMEOUT: u16 = 100;
-/// GSD limit: Max_User_Prm_Data_Len. (Max_Diag_Data_Len's 244 is never
-/// reached: the device-related block is at most 63 bytes.)
-const MAX_USER_PRM_LEN: usize = crate::spec::DP_MAX_USER_PRM;
 /// A Unit_Diag_Area spans at most 16 bits.
 const MAX_DIAG_AREA_BITS: i64 = 16;
 /// Main slave families defined by PI (0 general .. 12 PA).
@@ -61,7 +58,7 @@ pub fn lower(
         feature(&p.fail_safe, "fail_safe"),
     );
     let gsd_revision = match &p.gsd_revision {
-        Some(r) => cx.spanned_in_range(r, 1, 5, "gsd_revision")?,
+        Some(r) => cx.gsd_number(r, "GSD_Revision", "gsd_revision")?,
         None => DEFAULT_GSD_REVISION,
     };
     let dpv1 = p.dpv1.as_ref().and_then(|d| lower_dpv1(cx, d));
@@ -119,7 +116,7 @@ pub fn lower(
         implementation_type: p
             .implementation_type
             .as_ref()
-            .map(|i| cx.gsd_string(i, GSD_NAME_LEN, "implementation_type")),
+            .map(|i| cx.gsd_string(i, "Implementation_Type", "implementation_type")),
         modules,
         max_input_len,
         max_output_len,
@@ -127,10 +124,9 @@ pub fn lower(
         // A gateway's modules are plugged together; else one module.
         max_module: gateway.map_or(1, |g| g.gateway.max_modules),
         baud_rates: baud_rates(cx, &p.baud_rates),
-        min_slave_interval: cx.spanned_in_range(
+        min_slave_interval: cx.gsd_number(
             &p.min_slave_interval,
-            1,
-            0xFFFF,
+            "Min_Slave_Intervall",
             "min_slave_interval",
         )?,
         slave_family: slave_family(cx, &p.slave_family),
@@ -222,7 +218,10 @@ fn info_text(info: Option<&Text>, ident: u16, placeholder: bool) -> Option<Strin
     );
     Some(match info {
         None => notice,
-        Some(info) => within(&format!("{notice} {info}"), GSD_INFO_LEN),
+        Some(info) => within(
+            &format!("{notice} {info}"),
+            crate::gsd::keyword_max_len("Info_Text"),
+        ),
     })
 }
 
@@ -384,7 +383,11 @@ fn baud_rates(cx: &mut Checker, rates: &Spanned<BTreeMap<Baud, Spanned<u16>>>) -
     let lowered: Vec<_> = rates
         .get_ref()
         .iter()
-        .filter_map(|(&baud, tsdr)| Some((baud, cx.spanned_in_range(tsdr, 1, 0xFFFF, "MaxTsdr")?)))
+        .filter_map(|(&baud, tsdr)| {
+            // No station answers in no time.
+            let tsdr = cx.gsd_number_from(tsdr, "MaxTsdr_<baud>", 1, "MaxTsdr")?;
+            Some((baud, tsdr))
+        })
         .collect();
     if rates.get_ref().is_empty() {
         cx.push(
@@ -442,7 +445,7 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
     let near = d.span();
     let d = d.get_ref();
     let c1_max_data_len = match &d.c1_max_data_len {
-        Some(l) => cx.spanned_in_range(l, 0, 240, "c1_max_data_len")?,
+        Some(l) => cx.gsd_number(l, "C1_Max_Data_Len", "c1_max_data_len")?,
         None => {
             cx.defaulted(
                 "profibus.dpv1.c1_max_data_len",
@@ -453,7 +456,7 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
         }
     };
     let c1_response_timeout = match &d.c1_response_timeout {
-        Some(t) => cx.spanned_in_range(t, 1, 0xFFFF, "c1_response_timeout")?,
+        Some(t) => cx.gsd_number(t, "C1_Response_Timeout", "c1_response_timeout")?,
         None => {
             cx.defaulted(
                 "profibus.dpv1.c1_response_timeout",
@@ -464,7 +467,7 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
         }
     };
     let status_bytes = match &d.status_bytes {
-        Some(bytes) => *bytes.get_ref(),
+        Some(bytes) => bytes.get_ref().0,
         None => {
             cx.defaulted("profibus.dpv1.status_bytes", "[0, 0, 0]", near.clone());
             [0; 3]
@@ -485,33 +488,35 @@ fn lower_dpv1(cx: &mut Checker, d: &Spanned<raw::Dpv1>) -> Option<Dpv1> {
     })
 }
 
-/// The class 2 channel's lengths, each 0 or within the range GSD gives it.
+/// The class 2 channel: each value within the range the keyword schema
+/// gives its keyword, and the lengths 0 (none) or at least the least a
+/// class 2 master works with (C2_Max_Data_Len 48, Max_Initiate_PDU_Length
+/// 52: the GSD specification's ranges, FIELDBUS-NOTES §3).
 fn class2(cx: &mut Checker, c2: &raw::Dpv1Class2) -> Option<Dpv1Class2> {
-    let zero_or =
-        |cx: &mut Checker, v: &Spanned<u8>, min: i64, max: i64, what: &str| match *v.get_ref() {
-            0 => Some(0),
-            _ => cx.spanned_in_range(v, min, max, what),
-        };
+    let zero_or = |cx: &mut Checker, v: &Spanned<u8>, keyword: &str, least: i64| match *v.get_ref()
+    {
+        0 => Some(0),
+        _ => cx.gsd_number_from(v, keyword, least, keyword),
+    };
     Some(Dpv1Class2 {
-        max_data_len: zero_or(cx, &c2.max_data_len, 48, 240, "C2_Max_Data_Len")?,
-        response_timeout: cx.spanned_in_range(
+        max_data_len: zero_or(cx, &c2.max_data_len, "C2_Max_Data_Len", 48)?,
+        response_timeout: cx.gsd_number(
             &c2.response_timeout,
-            1,
-            0xFFFF,
+            "C2_Response_Timeout",
             "C2_Response_Timeout",
         )?,
-        max_count_channels: cx.spanned_in_range(
+        // A class 2 channel the card offers has a connection at least.
+        max_count_channels: cx.gsd_number_from(
             &c2.max_count_channels,
+            "C2_Max_Count_Channels",
             1,
-            255,
             "C2_Max_Count_Channels",
         )?,
         max_initiate_pdu_length: zero_or(
             cx,
             &c2.max_initiate_pdu_length,
-            52,
-            244,
             "Max_Initiate_PDU_Length",
+            52,
         )?,
     })
 }
@@ -539,6 +544,13 @@ fn identification_and_maintenance(cx: &mut Checker, d: &raw::Dpv1, near: Range<u
                 .help("PI requires I&M (read over the class 2 channel) of DPV1 slaves with an ident number assigned and certified after 1 October 2005: set ident_maintenance = true with [profibus.dpv1.c2], or = false (and mark it under [choices] if the manual does not say)"),
         );
     }
+}
+
+/// The most bytes User_Prm_Data holds: what its length keyword
+/// (Max_User_Prm_Data_Len) takes.
+fn max_user_prm_len() -> usize {
+    let (_, max) = crate::gsd::keyword_range("Max_User_Prm_Data_Len");
+    usize::try_from(max).expect("the schema gives Max_User_Prm_Data_Len an Unsigned8 range")
 }
 
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
@@ -577,7 +589,7 @@ fn user_prm(
                 .map(|(set, entry)| {
                     let offset = end;
                     end += entry_bytes;
-                    if end > MAX_USER_PRM_LEN {
+                    if end > max_user_prm_len() {
                         overflowing.get_or_insert(set.key);
                     }
                     PrmParam {
@@ -601,7 +613,8 @@ fn user_prm(
             Diagnostic::error(
                 "E116",
                 format!(
-                    "the parameter telegram would be {end} bytes; GSD allows {MAX_USER_PRM_LEN}"
+                    "the parameter telegram would be {end} bytes; GSD allows {}",
+                    max_user_prm_len()
                 ),
             )
             .at_opt(set_spans.get(&set).cloned())
@@ -637,12 +650,14 @@ fn gateway_params(
     ids: &mut impl Iterator<Item = u16>,
 ) -> (Vec<PrmParam>, usize) {
     let (params, end) = gateway::place(&g.prm_types, start, ids);
-    if end > MAX_USER_PRM_LEN && start <= MAX_USER_PRM_LEN {
+    let most = max_user_prm_len();
+    if end > most && start <= most {
         cx.push(
             Diagnostic::error(
                 "E116",
                 format!(
-                    "the parameter telegram would be {end} bytes; GSD allows {MAX_USER_PRM_LEN}"
+                    "the parameter telegram would be {end} bytes; GSD allows {}",
+                    max_user_prm_len()
                 ),
             )
             .at(g.span.clone())
@@ -806,11 +821,9 @@ mod tests {
         let text = super::info_text(Some(&long), 0x0810, true).unwrap();
         assert!(text.starts_with("DRAFT, not for release: Ident_Number 0x0810 is a placeholder"));
         assert!(text.ends_with(" word..."), "{text}");
-        assert!(
-            text.chars().count() <= super::GSD_INFO_LEN,
-            "{}",
-            text.len()
-        );
+        let limit = crate::gsd::keyword_max_len("Info_Text");
+        assert_eq!(limit, 256);
+        assert!(text.chars().count() <= limit, "{}", text.len());
         assert_eq!(
             super::info_text(Some(&long), 0x0810, false).unwrap(),
             long.en

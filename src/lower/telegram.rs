@@ -133,7 +133,7 @@ pub fn check_pnus(cx: &mut Checker, desc: &raw::Description, numbering: Option<&
             .default
             .iter()
             .chain(mapping.defaults.iter().flat_map(|d| d.get_ref()))
-            .chain(mapping.range.iter().flat_map(|r| r.get_ref()));
+            .chain(mapping.range.iter().flat_map(|r| &r.get_ref().0));
         for value in values {
             check_pnu(cx, value, numbering, holds_addresses, 0);
         }
@@ -150,7 +150,7 @@ pub fn check_pnus(cx: &mut Checker, desc: &raw::Description, numbering: Option<&
                 .as_ref()
                 .is_some_and(|h| *h.get_ref() == raw::Holds::Address);
         let values = std::iter::once(&setting.default)
-            .chain(setting.range.iter().flat_map(|r| r.get_ref()))
+            .chain(setting.range.iter().flat_map(|r| &r.get_ref().0))
             .chain(setting.per_module.iter().flat_map(|p| {
                 let p = p.get_ref();
                 std::iter::once(&p.user_defined).chain(&p.standard_telegram_1)

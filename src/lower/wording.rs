@@ -10,7 +10,7 @@ use std::collections::BTreeSet;
 /// modules'), and each GSDML text that is not one the description gave,
 /// once per TextId, in the order of the plan.
 pub fn wording(
-    given: &BTreeSet<String>,
+    (given, languages): (&BTreeSet<String>, &[String]),
     profibus: Option<&Profibus>,
     gateway: Option<&crate::ir::Gateway>,
     profinet: Option<&Profinet>,
@@ -43,13 +43,16 @@ pub fn wording(
     }
     let mut seen = BTreeSet::new();
     for text_ref in profinet.into_iter().flat_map(Profinet::text_refs) {
-        if !seen.insert(text_ref.id.as_str()) || is_given(given, &text_ref.text) {
+        // The file has the description's languages only.
+        let mut text = text_ref.text.clone();
+        text.others.retain(|(code, _)| languages.contains(code));
+        if !seen.insert(text_ref.id.as_str()) || is_given(given, &text) {
             continue;
         }
         found.push(Wording {
             place: format!("GSDML {}", text_ref.id),
-            text: text_ref.text.clone(),
-            around_the_descriptions: has_given_words(given, &text_ref.text),
+            around_the_descriptions: has_given_words(given, &text),
+            text,
         });
     }
     found

@@ -22,9 +22,6 @@ pub const DP_MAX_USER_PRM: usize = DP_MAX_TELEGRAM - 7;
 /// text, a diagnosis text (GSD specification V5.1, FIELDBUS-NOTES §3).
 pub const GSD_NAME_LEN: usize = 32;
 
-/// The characters of a GSD info text.
-pub const GSD_INFO_LEN: usize = 256;
-
 /// The columns of a line of a GSD gsdc writes (DESIGN.md, Outputs); vendor
 /// files may be wider.
 pub const GSD_LINE_WIDTH: usize = 80;
@@ -45,6 +42,17 @@ pub fn is_bidi_control(c: char) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The limits here that are also GSD keywords' are the keyword
+    /// schema's, which the loader and the checker take them from.
+    #[test]
+    fn the_limits_agree_with_the_gsd_keyword_schema() {
+        let max = |keyword| crate::gsd::keyword_range(keyword).1 as usize;
+        assert_eq!(DP_MAX_USER_PRM, max("Max_User_Prm_Data_Len"));
+        assert_eq!(DP_MAX_TELEGRAM, max("Max_Input_Len"));
+        assert_eq!(DP_MAX_TELEGRAM, max("Max_Output_Len"));
+        assert_eq!(GSD_NAME_LEN, crate::gsd::keyword_max_len("Unit_Diag_Bit"));
+    }
 
     /// Unicode 15's Bidi_Control property: 12 characters.
     #[test]

@@ -12,7 +12,8 @@ use std::ffi::OsStr;
 use std::io::Write as _;
 use std::ops::Deref;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Child, Command, ExitStatus, Output};
+use std::time::{Duration, Instant};
 
 /// The checkout. gsdc runs here in the tests, so the paths the README
 /// writes (`descriptions/md810dp.toml`, `../shared/corpus/...`) resolve.
@@ -117,6 +118,25 @@ where
     command
         .output()
         .unwrap_or_else(|e| panic!("cannot run {command:?}: {e}"))
+}
+
+/// Waits for `child` to end, at most `limit`: past it the child is
+/// killed and the test fails, naming `what` (a hang, not slowness: set
+/// `limit` well above what the case takes on a busy machine).
+#[track_caller]
+pub fn wait_within(child: &mut Child, limit: Duration, what: &str) -> ExitStatus {
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{what} did not finish within {limit:?}: a hang");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
 }
 
 /// What a process printed on stdout; gsdc prints UTF-8, so anything else

@@ -7,8 +7,10 @@
 //! them in; C++ has no designated initializers before C++20, so every
 //! initializer is positional.
 
-use super::{c_string, comment, Names, WIDTH};
-use crate::emit::tables::{type_ident, Elem, Record, Table, Value};
+use super::text::{comment, WIDTH};
+use super::Names;
+use crate::emit::layout::tables::{type_ident, Elem, Record, Table, Value};
+use crate::emit::layout::Val;
 
 /// The tables, each with its comment and a blank line before it.
 pub(super) fn render(names: &Names, tables: &[Table]) -> String {
@@ -23,7 +25,7 @@ pub(super) fn render(names: &Names, tables: &[Table]) -> String {
             let object = statics.record(&table.record, "", 4);
             format!(
                 "\n{}\nstatic inline const {ty} *{}(void)\n{{\n{}    static const {ty} table = {object};\n    return &table;\n}}\n",
-                comment(&table.doc),
+                comment(&names.rendered(&table.doc)),
                 names.lower(&table.name.snake()),
                 statics.lines.concat(),
             )
@@ -46,7 +48,7 @@ fn elem_type(elem: Elem) -> String {
 
 /// The static arrays and objects a table refers to, declared before it.
 struct Statics<'a> {
-    names: &'a Names<'a>,
+    names: &'a Names,
     lines: Vec<String>,
 }
 
@@ -99,11 +101,8 @@ impl Statics<'_> {
     ) -> Vec<(String, String)> {
         let one = |value: String| vec![(field.to_string(), value)];
         match v {
-            Value::Number(n) => one(format!("{n}U")),
-            Value::Hex(n, 8) => one(format!("0x{n:08X}UL")),
-            Value::Hex(n, digits) => one(format!("0x{n:0digits$X}U")),
+            Value::Lit(literal) => one(super::lit(literal)),
             Value::Bool(b) => one(b.to_string()),
-            Value::Text(text) => one(c_string(text)),
             Value::Variant(ty, name) => {
                 one(format!("GSDC_{}_{}", ty.upper_snake(), name.upper_snake()))
             }
@@ -122,8 +121,10 @@ impl Statics<'_> {
             Value::NodeTotals(true) => one(self.names.lower("user_prm_totals")),
             Value::Entries(kind, positions) => {
                 let allows = self.names.lower(&format!("{}_entry_allows", kind.key()));
-                let places: Vec<Value> =
-                    positions.iter().map(|&p| Value::Number(p as u64)).collect();
+                let places: Vec<Value> = positions
+                    .iter()
+                    .map(|&p| Value::Lit(Val::Dec(p as u64)))
+                    .collect();
                 let mut parts = vec![("allows".to_string(), allows)];
                 parts.extend(self.list(Elem::Index, &places, field, path));
                 parts
@@ -212,6 +213,7 @@ fn counted(field: &str, pointer: String, count: usize) -> Vec<(String, String)> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::emit::layout::Doc;
     use crate::ir::Ident;
 
     /// Lists become static arrays named by their path, an empty list and an
@@ -219,16 +221,20 @@ mod tests {
     /// fields each a line with the field it fills.
     #[test]
     fn lists_are_arrays_before_the_table_and_absent_ones_null() {
-        let names = Names { p: "X", l: "x" };
+        let names = Names {
+            p: "X".into(),
+            l: "x".into(),
+            pkw: None,
+        };
         let sub = |n| {
             Value::Record(Record {
                 ty: type_ident("pn submodule"),
-                fields: vec![("subslot", Value::Number(n))],
+                fields: vec![("subslot", Value::Lit(Val::Dec(n)))],
             })
         };
         let table = Table {
             name: Ident::of(&["pn", "device"]),
-            doc: "D.".into(),
+            doc: Doc::plain("D."),
             record: Record {
                 ty: type_ident("pn device"),
                 fields: vec![

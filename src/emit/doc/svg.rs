@@ -136,6 +136,11 @@ pub(crate) fn height_for(lines: &[Line]) -> u32 {
 /// Estimated width of `text` in pixels, on the wide side.
 pub(crate) fn text_width(text: &str, weight: Weight) -> u32 {
     let em: f64 = text.chars().map(char_width).sum();
+    pixels(em, weight)
+}
+
+/// The pixels of a width of `em` in `weight`'s font.
+fn pixels(em: f64, weight: Weight) -> u32 {
     let bold = if weight == Weight::Bold { 1.1 } else { 1.0 };
     (em * f64::from(weight.size()) * bold).ceil() as u32
 }
@@ -164,73 +169,139 @@ fn char_width(c: char) -> f64 {
 /// at blanks, and between any two CJK characters; a word too long for a
 /// line is broken where it must be. What does not fit ends in `…`.
 pub(crate) fn wrap(text: &str, width: u32, weight: Weight, max_lines: usize) -> Vec<String> {
+    wrap_measured(text, width, weight, max_lines, &mut char_width)
+}
+
+/// [`wrap`] with each character's width in em from `measure`. Linear in
+/// the text: every character is measured at most once for its line and
+/// once more for the ellipsis, and nothing after the last line shown is
+/// measured at all; a line's width is the running sum of its characters'
+/// widths, added in the order [`text_width`] adds them, so it is the same
+/// number.
+fn wrap_measured(
+    text: &str,
+    width: u32,
+    weight: Weight,
+    max_lines: usize,
+    measure: &mut dyn FnMut(char) -> f64,
+) -> Vec<String> {
+    let fits = |em: f64| pixels(em, weight) <= width;
     let mut lines: Vec<String> = Vec::new();
-    let mut current = String::new();
+    let mut line = Filling::default();
     for piece in pieces(text) {
-        let candidate = if current.is_empty() {
-            piece.trim_start().to_string()
+        if lines.len() > max_lines {
+            break;
+        }
+        let piece = if line.text.is_empty() {
+            piece.trim_start()
         } else {
-            format!("{current}{piece}")
+            piece
         };
-        if text_width(&candidate, weight) <= width {
-            current = candidate;
+        if let Some(em) = line.em_with(piece, measure, fits) {
+            line.text.push_str(piece);
+            line.em = em;
             continue;
         }
-        if !current.is_empty() {
-            lines.push(std::mem::take(&mut current));
+        if !line.text.is_empty() {
+            lines.push(std::mem::take(&mut line).text);
         }
-        current = piece.trim_start().to_string();
-        while text_width(&current, weight) > width {
-            let cut = fitting_prefix(&current, width, weight);
-            lines.push(current[..cut].to_string());
-            current = current[cut..].to_string();
+        // The piece from the start of a line, cut where it must be: each
+        // line as many characters as fit, at least one.
+        for c in piece.trim_start().chars() {
+            let w = measure(c);
+            if !fits(line.em + w) && !line.text.is_empty() {
+                lines.push(std::mem::take(&mut line).text);
+                if lines.len() > max_lines {
+                    break;
+                }
+            }
+            line.text.push(c);
+            line.em += w;
         }
     }
-    if !current.is_empty() {
-        lines.push(current);
+    if !line.text.is_empty() {
+        lines.push(line.text);
     }
     if lines.len() > max_lines {
         lines.truncate(max_lines);
         let last = lines.last_mut().expect("max_lines > 0");
-        while !last.is_empty() && text_width(&format!("{last}…"), weight) > width {
-            last.pop();
-        }
+        let end = longest_prefix_before_ellipsis(last, measure, fits);
+        last.truncate(end);
         last.push('…');
     }
     lines
 }
 
-/// Words with the blank before them, and CJK characters one by one.
-fn pieces(text: &str) -> Vec<String> {
-    let mut pieces: Vec<String> = Vec::new();
-    let mut current = String::new();
-    for c in text.chars() {
-        let wide = !c.is_ascii() && char_width(c) >= 1.0;
-        if (c == ' ' || wide) && !current.is_empty() {
-            pieces.push(std::mem::take(&mut current));
-        }
-        current.push(c);
-        if wide {
-            pieces.push(std::mem::take(&mut current));
-        }
-    }
-    if !current.is_empty() {
-        pieces.push(current);
-    }
-    pieces
+/// A line being filled, and its width in em.
+#[derive(Default)]
+struct Filling {
+    text: String,
+    em: f64,
 }
 
-/// Bytes of the longest prefix of `text` that fits `width`; at least one
-/// character, so breaking always moves on.
-fn fitting_prefix(text: &str, width: u32, weight: Weight) -> usize {
-    let mut end = text.chars().next().map_or(0, char::len_utf8);
-    for (i, c) in text.char_indices().skip(1) {
-        if text_width(&text[..i + c.len_utf8()], weight) > width {
+impl Filling {
+    /// The line's width with `piece` after it, if that fits; the piece is
+    /// measured only as far as it fits.
+    fn em_with(
+        &self,
+        piece: &str,
+        measure: &mut dyn FnMut(char) -> f64,
+        fits: impl Fn(f64) -> bool,
+    ) -> Option<f64> {
+        let mut em = self.em;
+        for c in piece.chars() {
+            em += measure(c);
+            if !fits(em) {
+                return None;
+            }
+        }
+        Some(em)
+    }
+}
+
+/// Bytes of the longest prefix of `line` that fits with `…` after it
+/// (none, if not even the ellipsis alone fits).
+fn longest_prefix_before_ellipsis(
+    line: &str,
+    measure: &mut dyn FnMut(char) -> f64,
+    fits: impl Fn(f64) -> bool,
+) -> usize {
+    let ellipsis = measure('…');
+    let mut em = 0.0;
+    let mut end = 0;
+    for (i, c) in line.char_indices() {
+        em += measure(c);
+        if !fits(em + ellipsis) {
             break;
         }
         end = i + c.len_utf8();
     }
     end
+}
+
+/// Words with the blank before them, and CJK characters one by one.
+fn pieces(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = text;
+    std::iter::from_fn(move || {
+        let mut chars = rest.char_indices();
+        let (_, first) = chars.next()?;
+        let end = if is_wide(first) {
+            first.len_utf8()
+        } else {
+            chars
+                .find(|&(_, c)| c == ' ' || is_wide(c))
+                .map_or(rest.len(), |(i, _)| i)
+        };
+        let (piece, after) = rest.split_at(end);
+        rest = after;
+        Some(piece)
+    })
+}
+
+/// A character that a line may break before and after: CJK and the other
+/// characters of a full em.
+fn is_wide(c: char) -> bool {
+    !c.is_ascii() && char_width(c) >= 1.0
 }
 
 impl Svg {
@@ -360,6 +431,104 @@ mod tests {
         assert_eq!(lines.len(), 2);
         assert!(lines[1].ends_with('…'), "{lines:?}");
         assert!(lines.iter().all(|l| text_width(l, Weight::Normal) <= 40));
+    }
+
+    /// Counts the characters `wrap_measured` measures.
+    fn measured(text: &str, max_lines: usize) -> usize {
+        let mut count = 0;
+        let mut measure = |c| {
+            count += 1;
+            char_width(c)
+        };
+        let lines = wrap_measured(text, 100, Weight::Normal, max_lines, &mut measure);
+        assert!(lines.len() <= max_lines, "{lines:?}");
+        count
+    }
+
+    /// The datasheet wraps every name a description gives, and a name can
+    /// be a megabyte: measuring the rest of a word again for every line
+    /// cut from it took minutes. Each character is measured at most twice
+    /// (once trying its word on a line, once cutting the word), and nothing
+    /// after the last line shown at all.
+    #[test]
+    fn wrapping_measures_each_character_at_most_twice() {
+        for n in [10_000, 40_000] {
+            let word = "x".repeat(n);
+            let words = "ab ".repeat(n / 3);
+            let chinese = "电动转矩上限给定".repeat(n / 8);
+            let mixed = format!("{word} {chinese} {words}");
+            for text in [&word, &words, &chinese, &mixed] {
+                let chars = text.chars().count();
+                assert!(measured(text, usize::MAX) <= 2 * chars + 1, "{n}");
+                // Three lines of 100 pixels are at most 3 * 100 / 3 = 100
+                // characters of the narrowest kind, each measured twice, and
+                // the ellipsis.
+                assert!(measured(text, 3) <= 2 * (100 + 100 / 3) + 1, "{n}");
+            }
+        }
+    }
+
+    /// What wrapping is, written as simply as it can be (and measuring the
+    /// same text again and again): the lines `wrap` gives are these.
+    fn wrap_by_definition(text: &str, width: u32, weight: Weight, max_lines: usize) -> Vec<String> {
+        let fits = |s: &str| text_width(s, weight) <= width;
+        let mut lines: Vec<String> = Vec::new();
+        let mut current = String::new();
+        for piece in pieces(text) {
+            let candidate = if current.is_empty() {
+                piece.trim_start().to_string()
+            } else {
+                format!("{current}{piece}")
+            };
+            if fits(&candidate) {
+                current = candidate;
+                continue;
+            }
+            if !current.is_empty() {
+                lines.push(std::mem::take(&mut current));
+            }
+            current = piece.trim_start().to_string();
+            while !fits(&current) {
+                // The longest prefix that fits, at least one character.
+                let cut = (1..=current.chars().count())
+                    .map(|n| current.chars().take(n).map(char::len_utf8).sum::<usize>())
+                    .take_while(|&end| {
+                        end == current.chars().next().unwrap().len_utf8() || fits(&current[..end])
+                    })
+                    .last()
+                    .unwrap();
+                lines.push(current[..cut].to_string());
+                current = current[cut..].to_string();
+            }
+        }
+        if !current.is_empty() {
+            lines.push(current);
+        }
+        if lines.len() > max_lines {
+            lines.truncate(max_lines);
+            let last = lines.last_mut().unwrap();
+            while !last.is_empty() && !fits(&format!("{last}…")) {
+                last.pop();
+            }
+            last.push('…');
+        }
+        lines
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn wrapping_is_what_its_definition_says(
+            text in "([a-zW ]{0,12}|电动|转|…){0,12}",
+            width in 1u32..160,
+            bold in proptest::bool::ANY,
+            max_lines in 1usize..6,
+        ) {
+            let weight = if bold { Weight::Bold } else { Weight::Normal };
+            proptest::prop_assert_eq!(
+                wrap(&text, width, weight, max_lines),
+                wrap_by_definition(&text, width, weight, max_lines)
+            );
+        }
     }
 
     #[test]

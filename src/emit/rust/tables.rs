@@ -3,7 +3,7 @@
 //! default widths: 100 columns, arrays on one line up to 60, struct
 //! literals up to 18), since the layout must be what rustfmt makes of it.
 
-use crate::emit::tables::{Record, Table, Value};
+use crate::emit::layout::tables::{Record, Table, Value};
 use crate::ir::MappingKind;
 
 const MAX_WIDTH: usize = 100;
@@ -18,9 +18,8 @@ pub(super) fn render(tables: &[Table]) -> String {
     let mut out = String::new();
     for table in tables {
         out.push('\n');
-        for line in super::super::wrap_words(&table.doc, MAX_WIDTH - 4) {
-            out.push_str(&format!("/// {line}\n"));
-        }
+        out.push_str(&super::doc_comment(&table.doc, 0));
+        out.push('\n');
         let ty = type_name(&table.record);
         let head = format!("pub const {}: {ty} = ", table.name.upper_snake());
         let value = record(&table.record, 0, head.len());
@@ -37,11 +36,8 @@ fn type_name(r: &Record) -> String {
 /// later lines carry their own indentation.
 fn value(v: &Value, indent: usize, column: usize) -> String {
     match v {
-        Value::Number(n) => n.to_string(),
-        Value::Hex(n, 8) => format!("0x{:04X}_{:04X}", n >> 16, n & 0xFFFF),
-        Value::Hex(n, digits) => format!("0x{n:0digits$X}"),
+        Value::Lit(literal) => super::lit(literal),
         Value::Bool(b) => b.to_string(),
-        Value::Text(text) => format!("{text:?}"),
         Value::Variant(ty, name) => format!("gsdc::{}::{}", ty.camel(), name.camel()),
         Value::List(_, items) => {
             let items: Vec<Item> = items.iter().map(Item::Value).collect();
@@ -111,10 +107,7 @@ impl Item<'_> {
 
     /// A literal, which rustfmt lets fill lines when short.
     fn is_literal(&self) -> bool {
-        matches!(
-            self,
-            Item::Value(Value::Number(_) | Value::Hex(..) | Value::Bool(_) | Value::Text(_))
-        )
+        matches!(self, Item::Value(Value::Lit(_) | Value::Bool(_)))
     }
 }
 
@@ -158,13 +151,17 @@ fn list(items: &[Item], indent: usize, column: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::emit::tables::{type_ident, Elem};
+    use crate::emit::layout::tables::{type_ident, Elem};
+    use crate::emit::layout::{Doc, Val};
     use crate::ir::Ident;
 
     fn p() -> Value {
         Value::Record(Record {
             ty: type_ident("p"),
-            fields: vec![("subslot", Value::Number(1)), ("ident", Value::Hex(1, 8))],
+            fields: vec![
+                ("subslot", Value::Lit(Val::Dec(1))),
+                ("ident", Value::Lit(Val::Hex(1, 8))),
+            ],
         })
     }
 
@@ -177,20 +174,23 @@ mod tests {
     fn tables_are_laid_out_as_rustfmt_lays_them_out() {
         let table = Table {
             name: Ident::of(&["x"]),
-            doc: "D.".into(),
+            doc: Doc::plain("D."),
             record: Record {
                 ty: type_ident("t"),
                 fields: vec![
                     (
                         "values",
-                        Value::List(Elem::Word, (0..=40).map(Value::Number).collect()),
+                        Value::List(
+                            Elem::Word,
+                            (0..=40).map(|n| Value::Lit(Val::Dec(n))).collect(),
+                        ),
                     ),
                     ("one", Value::List(Elem::Record("p"), vec![p()])),
                     (
                         "short",
                         Value::Record(Record {
                             ty: type_ident("q"),
-                            fields: vec![("a", Value::Number(1))],
+                            fields: vec![("a", Value::Lit(Val::Dec(1)))],
                         }),
                     ),
                     (

@@ -9,6 +9,7 @@ use super::super::telegram::mask;
 use super::{words_of, MAX_BYTE};
 use crate::description::gateway as raw;
 use crate::description::BitRange;
+use crate::description::Exactly;
 use crate::diag::Diagnostic;
 use crate::ir::gateway::{Param, ParamKey};
 use crate::ir::profibus::{PrmParam, PrmType, PrmValue};
@@ -232,12 +233,12 @@ fn data_type(
 /// `[min, max]` within what the data type holds and within a byte.
 fn range(
     cx: &mut Checker,
-    range: &Spanned<[Spanned<i64>; 2]>,
+    range: &Spanned<Exactly<Spanned<i64>, 2>>,
     data_type: PrmType,
     what: &str,
 ) -> (u8, u8) {
     let most = i64::from(data_type.max()).min(MAX_BYTE);
-    let [min, max] = range.get_ref();
+    let Exactly([min, max]) = range.get_ref();
     let min: u8 = cx.spanned_in_range(min, 0, most, what).unwrap_or(0);
     let max: u8 = cx.spanned_in_range(max, 0, most, what).unwrap_or(min);
     if min > max {

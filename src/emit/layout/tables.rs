@@ -8,6 +8,7 @@
 //! (`templates/support/device.rs`, `gsdc_support.h`), so a fact added here
 //! is written once and reaches both languages.
 
+use super::{Doc, Val};
 use crate::ir::profibus::{self, PrmHolds, PrmType, Profibus};
 use crate::ir::profinet::{self, Profinet, RecordReading};
 use crate::ir::{Allowed, Ident, Ir, MappingKind, PkwKind};
@@ -16,7 +17,7 @@ use crate::ir::{Allowed, Ident, Ir, MappingKind, PkwKind};
 /// in C.
 pub(crate) struct Table {
     pub name: Ident,
-    pub doc: String,
+    pub doc: Doc,
     pub record: Record,
 }
 
@@ -28,12 +29,9 @@ pub(crate) struct Record {
 }
 
 pub(crate) enum Value {
-    /// An unsigned number, in decimal.
-    Number(u64),
-    /// An unsigned number in hex, with this many digits (4 or 8).
-    Hex(u32, usize),
+    /// A number or a text.
+    Lit(Val),
     Bool(bool),
-    Text(String),
     /// A variant of a support enum: the enum's name, the variant's.
     Variant(Ident, Ident),
     /// A list of values of one kind.
@@ -72,11 +70,19 @@ fn record(ty: &str, fields: Vec<(&'static str, Value)>) -> Record {
 }
 
 fn number(n: impl Into<u64>) -> Value {
-    Value::Number(n.into())
+    Value::Lit(Val::Dec(n.into()))
 }
 
 fn size(n: usize) -> Value {
-    Value::Number(n as u64)
+    Value::Lit(Val::Dec(n as u64))
+}
+
+fn hex(n: impl Into<u64>, digits: usize) -> Value {
+    Value::Lit(Val::Hex(n.into(), digits))
+}
+
+fn text(text: &str) -> Value {
+    Value::Lit(Val::Text(text.to_string()))
 }
 
 fn variant(ty: &str, name: &str) -> Value {
@@ -88,22 +94,22 @@ fn variant(ty: &str, name: &str) -> Value {
 pub(crate) fn tables(ir: &Ir) -> Vec<Table> {
     let dp = ir.profibus.as_ref().map(|p| Table {
         name: Ident::of(&["dp", "device"]),
-        doc: format!(
+        doc: Doc::plain(format!(
             "The PROFIBUS-DP slave {} describes: its identity, every module, \
              User_Prm_Data with every parameter by the GSD's name, the \
              diagnosis block and the PKW codec.",
             p.file_name
-        ),
+        )),
         record: dp_device(ir, p),
     });
     let pn = ir.profinet.as_ref().map(|p| Table {
         name: Ident::of(&["pn", "device"]),
-        doc: format!(
+        doc: Doc::plain(format!(
             "The PROFINET IO device {} describes: its identity, the device \
              access point with its interface and ports, every module with its \
              submodules and parameter records, and the PKW codec.",
             p.file_name
-        ),
+        )),
         record: pn_device(ir, p),
     });
     dp.into_iter().chain(pn).collect()
@@ -126,7 +132,7 @@ fn dp_device(ir: &Ir, p: &Profibus) -> Record {
     record(
         "dp device",
         vec![
-            ("ident_number", Value::Hex(p.ident_number.into(), 4)),
+            ("ident_number", hex(p.ident_number, 4)),
             (
                 "modules",
                 Value::List(Elem::Record("dp module"), dp_modules(ir, p)),
@@ -176,7 +182,7 @@ fn dp_module(
     Value::Record(record(
         "dp module",
         vec![
-            ("name", Value::Text(name.to_string())),
+            ("name", text(name)),
             ("config", bytes(config)),
             ("input_len", size(input_len)),
             ("output_len", size(output_len)),
@@ -187,10 +193,7 @@ fn dp_module(
 }
 
 fn bytes(bytes: &[u8]) -> Value {
-    Value::List(
-        Elem::Byte,
-        bytes.iter().map(|&b| Value::Hex(b.into(), 2)).collect(),
-    )
+    Value::List(Elem::Byte, bytes.iter().map(|&b| hex(b, 2)).collect())
 }
 
 fn user_prm(ir: &Ir, p: &Profibus) -> Record {
@@ -207,7 +210,7 @@ fn user_prm(ir: &Ir, p: &Profibus) -> Record {
         Value::Record(record(
             "dp param",
             vec![
-                ("name", Value::Text(facts.name.for_gsd().to_string())),
+                ("name", text(facts.name.for_gsd())),
                 ("offset", number(param.offset)),
                 ("data_type", variant("prm data type", data_type)),
                 ("first_bit", number(first)),
@@ -261,9 +264,9 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
     record(
         "pn device",
         vec![
-            ("vendor_id", Value::Hex(p.vendor_id.into(), 4)),
-            ("device_id", Value::Hex(p.device_id.into(), 4)),
-            ("dap_ident", Value::Hex(profinet::DAP_IDENT, 8)),
+            ("vendor_id", hex(p.vendor_id, 4)),
+            ("device_id", hex(p.device_id, 4)),
+            ("dap_ident", hex(profinet::DAP_IDENT, 8)),
             (
                 "dap_submodule",
                 fixed(profinet::DAP_SUBSLOT, profinet::DAP_IDENT),
@@ -301,8 +304,8 @@ fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) 
     Value::Record(record(
         "pn submodule",
         vec![
-            ("subslot", Value::Hex(subslot.into(), 4)),
-            ("ident", Value::Hex(ident, 8)),
+            ("subslot", hex(subslot, 4)),
+            ("ident", hex(ident, 8)),
             ("input_len", size(input_len)),
             ("output_len", size(output_len)),
         ],
@@ -322,13 +325,13 @@ fn pn_module(ir: &Ir, m: &profinet::Module) -> Value {
     Value::Record(record(
         "pn module",
         vec![
-            ("name", Value::Text(m.name.text.en.clone())),
-            ("ident", Value::Hex(m.ident_number, 8)),
+            ("name", text(&m.name.text.en)),
+            ("ident", hex(m.ident_number, 8)),
             (
                 "slots",
                 Value::List(Elem::Word, vec![number(profinet::MODULE_SLOT)]),
             ),
-            ("api", Value::Hex(m.api, 8)),
+            ("api", hex(m.api, 8)),
             (
                 "access_point",
                 Value::Optional(Elem::Record("pn submodule"), access_point),

@@ -1,0 +1,288 @@
+//! A group of mappings in the layout: what each set of entries may hold,
+//! the entries with their defaults and drive parameters, where
+//! User_Prm_Data and the PROFINET record carry them, and the values each
+//! PROFINET module fixes.
+
+use super::{value_set, Const, Consts, Doc, Ref, Scope, Ty, Val, ValueSet};
+use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
+use crate::ir::profinet::RecordReading;
+use crate::ir::{Ident, Ir};
+use serde::Serialize;
+
+#[derive(Serialize)]
+pub(crate) struct Group {
+    /// `pzd_out`: Rust's module, C's infix.
+    pub name: Ident,
+    pub doc: Doc,
+    pub sets: Vec<Set>,
+    pub entries: Vec<Entry>,
+    pub defaults: Doc,
+    pub user_prm: Option<UserPrmBlock>,
+    pub record: Option<Record>,
+    /// DPV1 indexes: the bytes of each index's record.
+    pub record_data: Option<Consts>,
+    pub fixed: Vec<Fixed>,
+}
+
+/// Entries that share what they may hold.
+#[derive(Serialize)]
+pub(crate) struct Set {
+    pub allowed: Ident,
+    pub doc: Doc,
+    /// `each entry` in a group of one set, else the entry's name quoted.
+    pub holder: String,
+    /// The place after its last entry in the group.
+    pub end: usize,
+    pub range: Option<Range>,
+    pub choices: Option<ValueSet>,
+}
+
+#[derive(Serialize)]
+pub(crate) struct Range {
+    pub min: Val,
+    pub max: Val,
+    /// Whether each bound rules out a 16-bit value.
+    pub has_min: bool,
+    pub has_max: bool,
+}
+
+#[derive(Serialize)]
+pub(crate) struct Entry {
+    pub number: u8,
+    pub doc: Doc,
+    pub name: Val,
+    pub default: Val,
+    /// The manual's name of the default, a parameter address.
+    pub default_note: Option<String>,
+    pub parameter: Option<Val>,
+    pub parameter_note: Option<String>,
+    /// Its set's constant.
+    pub allowed: Ident,
+}
+
+/// Where User_Prm_Data carries the group.
+#[derive(Serialize)]
+pub(crate) struct UserPrmBlock {
+    pub offset: u16,
+    /// When it carries every entry.
+    pub doc: Doc,
+    /// The entries it carries, by place, when not all; empty when all.
+    pub entries: Vec<usize>,
+}
+
+/// The PROFINET parameter record of the group.
+#[derive(Serialize)]
+pub(crate) struct Record {
+    pub index: u16,
+    pub doc: Doc,
+    /// A module's record holds the words it transports: the controller
+    /// writes the first entries only.
+    pub prefix: bool,
+}
+
+/// The value of a setting each PROFINET module fixes.
+#[derive(Serialize)]
+pub(crate) struct Fixed {
+    pub name: Ident,
+    pub doc: Doc,
+    pub modules: Vec<FixedModule>,
+}
+
+#[derive(Serialize)]
+pub(crate) struct FixedModule {
+    /// The module's ident number constant.
+    pub ident: Ident,
+    pub value: u16,
+}
+
+/// What a group of mappings is, and where its drive parameters are set.
+pub(crate) fn group_doc(g: &MappingGroup) -> String {
+    let what = match g.kind {
+        MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
+        MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
+        MappingKind::Dpv1Index => {
+            "The DPV1 record indexes: the parameter each one reads and writes."
+        }
+        MappingKind::Setting => "Single drive parameters.",
+    };
+    let by_master = g.sets.iter().filter(|s| s.master_writes()).count();
+    let set = match (by_master, g.sets.len() - by_master) {
+        (_, 0) => "The master writes them at startup.",
+        (0, _) => "Set at the drive (keypad, PKW, the drive's own tool): the master writes none of them, and no parameter record or User_Prm_Data carries them.",
+        _ => "The master writes some of them at startup, those User_Prm_Data or the records carry; the others are set at the drive.",
+    };
+    format!("{what} {set}")
+}
+
+pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
+    let scope = Scope::part(g.kind.key());
+    let single = g.sets.len() == 1;
+    let mut end = 0;
+    let sets = g
+        .sets
+        .iter()
+        .map(|set| {
+            end += set.entries.len();
+            self::set(&scope, set, single, end)
+        })
+        .collect();
+    let record = ir.profinet.as_ref().and_then(|p| p.record(g.kind));
+    let profibus = ir.profibus.as_ref();
+    Group {
+        name: Ident::of(&g.kind.key().split('_').collect::<Vec<_>>()),
+        doc: Doc::plain(group_doc(g)),
+        sets,
+        entries: g.sets.iter().flat_map(|set| entries(ir, set)).collect(),
+        defaults: Doc::plain("The defaults in entry order."),
+        user_prm: profibus
+            .and_then(|p| p.user_prm.block(g.kind))
+            .map(|block| UserPrmBlock {
+                offset: block.offset,
+                doc: Doc::plain(
+                    "Where the first entry starts in User_Prm_Data; the others follow it, \
+                     two bytes each.",
+                ),
+                entries: profibus
+                    .and_then(|p| p.user_prm.partial(g))
+                    .unwrap_or_default(),
+            }),
+        record: record.map(|r| Record {
+            index: r.index,
+            doc: Doc::plain("The PROFINET parameter record of these entries, two bytes each."),
+            prefix: r.reading == RecordReading::Prefix,
+        }),
+        record_data: g.record_length.map(|len| Consts {
+            doc: Doc::plain("The bytes of the record each DPV1 index reads and writes."),
+            items: vec![Const::new(
+                &["record", "data", "len"],
+                Ty::Size,
+                Val::Dec(len.into()),
+            )],
+        }),
+        fixed: fixed(ir, g),
+    }
+}
+
+/// A mapping's value as the layouts write it: a parameter address in hex,
+/// as the manuals write addresses; a plain value or a choice in decimal.
+pub(crate) fn mapping_value(holds: Holds, value: u16) -> Val {
+    match holds {
+        Holds::Address => Val::hex_u16(value),
+        Holds::Value | Holds::Choice => Val::Dec(value.into()),
+    }
+}
+
+/// `0x2B02` or `100`, in a sentence.
+fn mapping_text(holds: Holds, value: u16) -> String {
+    match holds {
+        Holds::Address => crate::emit::hex16(value),
+        Holds::Value | Holds::Choice => value.to_string(),
+    }
+}
+
+/// A group with one set says "each entry" in its docs; a set of a group of
+/// several (the settings) names its one entry.
+fn set(scope: &Scope, set: &MappingSet, single: bool, end: usize) -> Set {
+    let holder = if single {
+        "each entry".to_string()
+    } else {
+        format!("\"{}\"", set.entries[0].name.en)
+    };
+    // Only gsdc's own words are capitalised to begin a sentence: the name
+    // stays as the description writes it (P43.01, not p43.01).
+    let subject = super::super::capitalised(&holder);
+    let doc = Doc::at(scope.clone());
+    match &set.allowed {
+        Allowed::Range { min, max } => {
+            let what = match set.holds {
+                Holds::Address => "a parameter address",
+                Holds::Value | Holds::Choice => "a value",
+            };
+            Set {
+                allowed: set.allowed_ident.clone(),
+                doc: doc.text(format!(
+                    "{subject} holds {what} from {} to {}.",
+                    mapping_text(set.holds, *min),
+                    mapping_text(set.holds, *max)
+                )),
+                holder,
+                end,
+                range: Some(Range {
+                    min: mapping_value(set.holds, *min),
+                    max: mapping_value(set.holds, *max),
+                    has_min: *min > 0,
+                    has_max: *max < u16::MAX,
+                }),
+                choices: None,
+            }
+        }
+        Allowed::Choices(values) => {
+            let choices = value_set(values, Doc::plain(format!("What {holder} may hold.")));
+            Set {
+                allowed: set.allowed_ident.clone(),
+                doc: doc
+                    .text(format!("{subject} holds one of the values of "))
+                    .link(Ref::Values(scope.clone(), choices.name.clone()))
+                    .text("."),
+                holder,
+                end,
+                range: None,
+                choices: Some(choices),
+            }
+        }
+    }
+}
+
+fn entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entry> + 'a {
+    // Parameter addresses read best in hex, with the manual's name beside
+    // them; a value or a choice is a plain number.
+    let name_of = |address: u16| ir.numbering.as_ref().and_then(|n| n.format(address));
+    set.entries.iter().map(move |e| {
+        let number = e.key.number;
+        let what = match e.key.kind {
+            MappingKind::PzdOut | MappingKind::PzdIn => format!("PZD{number}"),
+            MappingKind::Dpv1Index => format!("DPV1 index {number}"),
+            MappingKind::Setting => format!("Setting {number}"),
+        };
+        Entry {
+            number,
+            doc: Doc::plain(format!("{what}: \"{}\".", e.name.en)),
+            name: Val::Text(e.name.en.clone()),
+            default: mapping_value(set.holds, e.default),
+            default_note: (set.holds == Holds::Address)
+                .then(|| name_of(e.default))
+                .flatten(),
+            parameter: e.parameter.map(Val::hex_u16),
+            parameter_note: e.parameter.and_then(name_of),
+            allowed: set.allowed_ident.clone(),
+        }
+    })
+}
+
+/// For each set of `g` whose value PROFINET modules fix: every module that
+/// carries it, with its value.
+fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
+    let Some(profinet) = &ir.profinet else {
+        return Vec::new();
+    };
+    g.sets
+        .iter()
+        .filter_map(|set| Some((set, profinet.fixed(set.key)?)))
+        .map(|(set, fixed)| Fixed {
+            name: Ident::of(&["fixed"]).tagged(set.key.first),
+            doc: Doc::plain(format!(
+                "The value of \"{}\" each PROFINET module fixes, by its ident number: the \
+                 module writes it; the user cannot change it.",
+                set.entries[0].name.en
+            )),
+            modules: fixed
+                .modules
+                .iter()
+                .map(|(ident, _, value)| FixedModule {
+                    ident: ident.tagged("ident"),
+                    value: *value,
+                })
+                .collect(),
+        })
+        .collect()
+}

@@ -1,0 +1,69 @@
+//! Characters that change how a text reads rather than what it says: the
+//! one list of them, for every place that keeps them out of a file gsdc
+//! writes or off a terminal, and the one way gsdc escapes them for a
+//! terminal.
+
+use crate::spec::is_bidi_control;
+use std::borrow::Cow;
+
+/// Control characters (C0, DEL, C1), the line and paragraph separators,
+/// the bidirectional formatting characters (`crate::spec`'s one list of
+/// them) and the Unicode noncharacters: a character that breaks a line, a
+/// string or the reading order, or that a terminal takes as a command.
+pub fn is_unsafe(c: char) -> bool {
+    let code = u32::from(c);
+    c.is_control()
+        || matches!(c, '\u{2028}' | '\u{2029}')
+        || is_bidi_control(c)
+        || (0xFDD0..=0xFDEF).contains(&code)
+        || code & 0xFFFE == 0xFFFE
+}
+
+/// What a terminal is shown for `c` when `c` is unsafe ([`is_unsafe`]),
+/// written as JSON writes it (`\n`, `\r`, `\t`, `\u001b`, `\u202e`);
+/// `None` when `c` is shown as it is. The one escaping of gsdc's terminal
+/// output: every line of a diagnostic, quoted or not, and every name.
+pub fn escaped(c: char) -> Option<String> {
+    match c {
+        '\n' => Some("\\n".into()),
+        '\r' => Some("\\r".into()),
+        '\t' => Some("\\t".into()),
+        c if is_unsafe(c) => Some(format!("\\u{:04x}", u32::from(c))),
+        _ => None,
+    }
+}
+
+/// `text` with every unsafe character [`escaped`]: a text that cannot
+/// move the cursor, recolour the terminal, start a line that passes for
+/// other output or reorder what is around it.
+pub fn escape(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(is_unsafe) {
+        return Cow::Borrowed(text);
+    }
+    let mut shown = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        match escaped(c) {
+            Some(escape) => shown.push_str(&escape),
+            None => shown.push(c),
+        }
+    }
+    Cow::Owned(shown)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_and_reordering_characters_are_escaped_as_json_escapes_them() {
+        assert_eq!(escape("dist/A.GSD"), "dist/A.GSD");
+        assert!(matches!(escape("Müller 中.gsd"), Cow::Borrowed(_)));
+        assert_eq!(
+            escape("a\nb: 0 error(s)\r\t\u{1b}[31m\u{7f}\u{9b}"),
+            "a\\nb: 0 error(s)\\r\\t\\u001b[31m\\u007f\\u009b"
+        );
+        assert_eq!(escape("x\u{202E}lmx.dsg"), "x\\u202elmx.dsg");
+        assert_eq!(escape("\u{061C}\u{2066}\u{2028}"), "\\u061c\\u2066\\u2028");
+        assert_eq!(escape("\u{FFFE}\u{FDD0}"), "\\ufffe\\ufdd0");
+    }
+}
