@@ -15,13 +15,15 @@
 //! xmllint (libxml2-utils, installed by scripts/test.sh) and ../shared
 //! beside the checkout.
 
+#[path = "common/mod.rs"]
+mod common;
+
+use common::{compare, run};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::time::{Duration, Instant};
 
 const SHARED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared");
 const GSDC: &str = env!("CARGO_BIN_EXE_gsdc");
-const RUNS: usize = 21;
 
 fn main() {
     let gsd_files = corpus("corpus/gsd", |name| !name.ends_with(".tsv"));
@@ -114,49 +116,4 @@ fn xmllint(schema: &str) -> Command {
     let mut command = Command::new("xmllint");
     command.args(["--noout", "--nonet", "--schema", schema]);
     command
-}
-
-/// Runs a command to its end; its verdict does not matter here, only that it ran.
-fn run(command: &mut Command) {
-    let status = command
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .status()
-        .unwrap_or_else(|e| panic!("cannot run {command:?}: {e}"));
-    std::hint::black_box(status);
-}
-
-/// Times `ours` and `theirs` in turns, [`RUNS`] times each after a warm-up
-/// run, and prints both medians and the median of the per-turn ratios: a
-/// machine that slows down for a while slows both sides of a turn alike.
-fn compare(what: &str, ours: (&str, &mut dyn FnMut()), theirs: (&str, &mut dyn FnMut())) {
-    let (our_name, ours) = ours;
-    let (their_name, theirs) = theirs;
-    ours();
-    theirs();
-    let mut turns: Vec<(Duration, Duration)> =
-        (0..RUNS).map(|_| (time(ours), time(theirs))).collect();
-    let mut ratios: Vec<f64> = turns
-        .iter()
-        .map(|(o, t)| t.as_secs_f64() / o.as_secs_f64())
-        .collect();
-    ratios.sort_by(f64::total_cmp);
-    let ratio = ratios[RUNS / 2];
-    turns.sort_by_key(|(o, _)| *o);
-    let our_median = turns[RUNS / 2].0;
-    turns.sort_by_key(|(_, t)| *t);
-    let their_median = turns[RUNS / 2].1;
-    println!(
-        "{what}: {our_name} {:.2} ms, {their_name} {:.2} ms (medians of {RUNS}): gsdc is {ratio:.1}x as fast (median of the ratios, {:.1}x..{:.1}x)",
-        our_median.as_secs_f64() * 1e3,
-        their_median.as_secs_f64() * 1e3,
-        ratios[0],
-        ratios[RUNS - 1],
-    );
-}
-
-fn time(f: &mut dyn FnMut()) -> Duration {
-    let start = Instant::now();
-    f();
-    start.elapsed()
 }

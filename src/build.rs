@@ -96,6 +96,7 @@ pub struct Config {
     deny_warnings: bool,
     xsd: Option<PathBuf>,
     firmware: Vec<Language>,
+    released: Option<PathBuf>,
 }
 
 impl Default for Config {
@@ -115,7 +116,20 @@ impl Config {
             deny_warnings: false,
             xsd,
             firmware: Language::ALL.to_vec(),
+            released: None,
         }
+    }
+
+    /// Judges each GSD and GSDML against the last release's files in
+    /// `dir` before anything is written: a GSDML whose content changed
+    /// under its released file name, or a GSD whose content changed under
+    /// its released `Revision`, refuses the build (E501, E502); a change
+    /// that breaks projects configured with the released file under the
+    /// same ident number is a warning (W503). Without it, releases are not
+    /// looked at, so that a working build is as quick as ever.
+    pub fn released(&mut self, dir: impl Into<PathBuf>) -> &mut Self {
+        self.released = Some(dir.into());
+        self
     }
 
     /// The languages whose firmware layouts (and support files) are
@@ -198,10 +212,16 @@ impl Config {
             })?),
             None => None,
         };
+        let released = self
+            .released
+            .as_deref()
+            .map(ReleasedFiles::list)
+            .transpose()?;
         Ok(Compiler {
             deny_warnings: self.deny_warnings,
             schema,
             firmware: self.firmware.clone(),
+            released,
             writes: Writes::Everything,
         })
     }
@@ -225,6 +245,9 @@ impl Config {
         if let Some(dir) = xsd {
             let schema = dir.join(crate::xsd::SCHEMA_FILE);
             println!("cargo:rerun-if-changed={}", schema.display());
+        }
+        if let Some(dir) = &self.released {
+            println!("cargo:rerun-if-changed={}", dir.display());
         }
         let name = description.display().to_string();
         let mut compiler = self.compiler_with(xsd)?;
@@ -256,6 +279,7 @@ pub(crate) struct Compiler {
     schema: Option<Schema>,
     /// The languages whose firmware layouts a build writes.
     firmware: Vec<Language>,
+    released: Option<ReleasedFiles>,
     writes: Writes,
 }
 
@@ -267,6 +291,84 @@ enum Writes {
     /// Firmware layouts alone (a build script's `generate_rust`): nothing
     /// beside the description is read.
     LayoutsOnly,
+}
+
+/// The last release's files ([`Config::released`]): the directory and the
+/// names of the files in it.
+struct ReleasedFiles {
+    dir: PathBuf,
+    names: Vec<String>,
+}
+
+impl ReleasedFiles {
+    fn list(dir: &Path) -> Result<ReleasedFiles, BuildError> {
+        let unreadable = |why: String| BuildError::Released {
+            dir: dir.to_path_buf(),
+            why,
+        };
+        let mut names = Vec::new();
+        for entry in std::fs::read_dir(dir).map_err(|e| unreadable(e.to_string()))? {
+            let entry = entry.map_err(|e| unreadable(e.to_string()))?;
+            if entry.file_type().is_ok_and(|t| t.is_file()) {
+                names.extend(entry.file_name().to_str().map(str::to_string));
+            }
+        }
+        names.sort();
+        Ok(ReleasedFiles {
+            dir: dir.to_path_buf(),
+            names,
+        })
+    }
+
+    /// What the release rules say of each GSD and GSDML among `files`,
+    /// against its released counterpart, pointing into the description's
+    /// `text`.
+    fn findings(
+        &self,
+        files: &[Artifact],
+        description: &Findings,
+    ) -> Result<Vec<Diagnostic>, BuildError> {
+        use crate::diff::release;
+        let anchors = release::Anchors::of(&description.text);
+        let mut findings = Vec::new();
+        for file in files
+            .iter()
+            .filter(|f| matches!(f.kind, ArtifactKind::Gsd | ArtifactKind::Gsdml))
+        {
+            let Some((name, same_name)) = release::counterpart(&file.file_name, &self.names) else {
+                continue;
+            };
+            let path = self.dir.join(name);
+            let unreadable = |why: String| BuildError::Released {
+                dir: self.dir.clone(),
+                why: format!("{name}: {why}"),
+            };
+            let bytes = match crate::output::read_device_file(&path) {
+                Ok((_, bytes)) => bytes,
+                Err(ReadError::Io(e)) => return Err(unreadable(e.to_string())),
+                Err(ReadError::TooLarge(d)) => return Err(unreadable(d.message)),
+            };
+            let released = crate::device::read(&bytes, Some(name)).ok_or_else(|| {
+                unreadable("not a GSD or GSDML file gsdc can read (`gsdc check` says why)".into())
+            })?;
+            let Some(built) = crate::device::read(&file.contents, Some(&file.file_name)) else {
+                continue; // gsdc's own files are checked before this: it reads them
+            };
+            let released = release::Released {
+                name,
+                device: &released,
+                diff_command: format!("gsdc diff {} {}", path.display(), description.name),
+            };
+            findings.extend(release::judge(
+                &file.file_name,
+                &built,
+                &released,
+                same_name,
+                &anchors,
+            ));
+        }
+        Ok(findings)
+    }
 }
 
 /// What one description gave: what to show, and the files or why there are
@@ -397,6 +499,12 @@ impl Compiler {
             }
             None => None,
         };
+        if let (Some(released), Some(files)) = (&self.released, &files) {
+            if !description.diagnostics.has_errors() {
+                let found = released.findings(files, &description)?;
+                description.diagnostics.extend(found);
+            }
+        }
         let mut compiled = self.judge(description, files, beside);
         compiled.datasheet = datasheet;
         Ok(compiled)
@@ -685,6 +793,8 @@ pub enum BuildError {
     Write(WriteError),
     /// The PI schema asked for cannot be loaded from `dir`.
     Schema { dir: PathBuf, why: String },
+    /// The last release's files ([`Config::released`]) cannot be read.
+    Released { dir: PathBuf, why: String },
 }
 
 impl fmt::Display for BuildError {
@@ -703,6 +813,13 @@ impl fmt::Display for BuildError {
             BuildError::Schema { dir, why } => {
                 write!(f, "cannot use the PI schema in {}: {why}", dir.display())
             }
+            BuildError::Released { dir, why } => {
+                write!(
+                    f,
+                    "cannot read the released files in {}: {why}",
+                    dir.display()
+                )
+            }
         }
     }
 }
@@ -714,7 +831,8 @@ impl std::error::Error for BuildError {
             BuildError::Write(e) => Some(e),
             BuildError::Description { .. }
             | BuildError::NoLayout { .. }
-            | BuildError::Schema { .. } => None,
+            | BuildError::Schema { .. }
+            | BuildError::Released { .. } => None,
         }
     }
 }

@@ -21,7 +21,6 @@ pub enum FileKind {
 
 /// How much of a file [`detect`] needs: the `#Profibus_DP` line of the 654
 /// real GSD files seen comes within their first 3 KB.
-#[cfg_attr(not(feature = "cli"), allow(dead_code))] // the command line uses it
 pub const HEAD_BYTES: usize = 64 << 10;
 
 /// The kind of file whose first bytes (up to [`HEAD_BYTES`]) are `head`, in

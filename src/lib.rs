@@ -15,7 +15,9 @@
 #[cfg(feature = "cli")]
 mod decode;
 mod description;
+pub mod device;
 mod diag;
+pub mod diff;
 mod emit;
 mod file_kind;
 pub mod gsd;

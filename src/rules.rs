@@ -199,5 +199,8 @@ pub const RULES: &[Rule] = &[
     rule("E415", "not a mapping option"),
     rule("E416", "mapping value not readable or not allowed"),
     rule("E417", "not the device-related block's header"),
+    rule("E501", "a GSDML changed under its released file name"),
+    rule("E502", "a GSD changed under its released Revision"),
+    rule("W503", "a breaking change under the released ident number"),
     rule("E900", "generated file breaks a rule"),
 ];

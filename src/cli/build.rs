@@ -18,10 +18,12 @@ pub const EXAMPLES: &str = "Examples:
   gsdc build descriptions/*.toml --out dist --prune          # and remove what no description gives any more
   gsdc build descriptions/*.toml --out dist --deny-warnings  # a shipping build: no placeholder left
   gsdc build descriptions/*.toml --out dist --xsd ../pi/gsdml-xsd-v2.44
+  gsdc build descriptions/*.toml --out dist --check --released release/v1.2   # refuse a change under a released name
   GSDC_BUILD_XSD=../pi/gsdml-xsd-v2.44 gsdc build descriptions/*.toml --out dist
 
 Exit codes: 0 ok, 1 a description has errors (or warnings with --deny-warnings),
-two descriptions give different files of one name, or --check found DIR out of step;
+two descriptions give different files of one name, --check found DIR out of step,
+or --released found a file changed under its released name or Revision;
 2 usage or I/O error.";
 
 #[derive(clap::Args)]
@@ -59,6 +61,13 @@ pub struct Args {
     // `Config::new` reads the variable as build scripts do.
     #[arg(long, value_name = "DIR")]
     xsd: Option<PathBuf>,
+    /// The last release's GSD and GSDML files: a GSDML changed under its
+    /// released file name, or a GSD changed under its released Revision, is
+    /// an error (bump profinet.date, or device.revision); a change that breaks
+    /// projects configured with the released file under the same ident
+    /// number is a warning. Without it, releases are not looked at.
+    #[arg(long, value_name = "DIR")]
+    released: Option<PathBuf>,
 }
 
 /// A `--firmware` value.
@@ -89,10 +98,17 @@ pub fn run(args: &Args) -> Status {
     if let Some(dir) = &args.xsd {
         config.xsd(dir);
     }
+    if let Some(dir) = &args.released {
+        config.released(dir);
+    }
     let mut compiler = match config.compiler() {
         Ok(compiler) => compiler,
         Err(e) => {
-            warn(&format!("error: --xsd: {e}"));
+            let option = match e {
+                crate::build::BuildError::Released { .. } => "--released",
+                _ => "--xsd",
+            };
+            warn(&format!("error: {option}: {e}"));
             return Status::UsageOrIo;
         }
     };

@@ -194,6 +194,12 @@ impl<R, E> Drop for Leaving<'_, R, E> {
     }
 }
 
+/// What `gsdc check` says of one file, printed as it prints it, for a
+/// command that cannot use the file (`gsdc diff`).
+pub(super) fn explain(path: &Path, format: Format) -> Status {
+    print(path, check_one(path, None, format))
+}
+
 fn check_one(path: &Path, schema: Option<&mut Schema>, format: Format) -> Report {
     // JSON escapes the name itself; the human output shows it escaped.
     let name = match format {

@@ -3,6 +3,7 @@
 mod build;
 mod check;
 mod decode;
+mod diff;
 mod doc;
 mod json;
 
@@ -16,7 +17,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
     name = "gsdc",
     version,
     about = "Fieldbus device descriptions from one TOML file: GSD, GSDML and firmware layout, checked",
-    after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc check vendor/SIEM8045.GSE\n\nExit codes: 0 ok, 1 the input has errors, 2 usage or I/O error."
+    after_help = "Examples:\n  gsdc build descriptions/md810dp.toml --out dist\n  gsdc check vendor/SIEM8045.GSE\n  gsdc diff released/MD810DP.GSD dist/MD810DP.GSD\n\nExit codes: 0 ok, 1 the input has errors, 2 usage or I/O error."
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -31,6 +32,9 @@ enum Command {
     /// Check GSD and GSDML files against gsdc's rules.
     #[command(after_help = check::EXAMPLES)]
     Check(check::Args),
+    /// Compare two GSD files, two GSDML files or two descriptions by meaning: breaking, compatible, cosmetic.
+    #[command(after_help = diff::EXAMPLES)]
+    Diff(diff::Args),
     /// Read a captured telegram, parameter telegram or diagnosis block against a description.
     Decode(decode::Args),
     /// Write the datasheet of each description: `DIR/<stem>.html` (one page, no script) and `DIR/<stem>.md`.
@@ -81,6 +85,7 @@ fn run(cli: Cli) -> Status {
         Command::Build(args) => build::run(&args),
         Command::Check(args) => check::run(&args),
         Command::Decode(args) => decode::run(&args),
+        Command::Diff(args) => diff::run(&args),
         Command::Doc(args) => doc::run(&args),
     }
 }

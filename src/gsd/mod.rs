@@ -14,11 +14,11 @@ use crate::diag::{Diagnostic, Diagnostics, Severity};
 
 mod config;
 mod lexer;
-mod model;
-mod prm;
+pub(crate) mod model;
+pub(crate) mod prm;
 mod reader;
 mod rules;
-mod schema;
+pub(crate) mod schema;
 
 pub use config::{io_lengths, CfgError, IoLengths};
 pub use model::{

@@ -11,9 +11,9 @@
 //! largest real files takes milliseconds.
 
 mod attributes;
-mod datatype;
+pub(crate) mod datatype;
 mod document;
-mod index;
+pub(crate) mod index;
 mod io;
 mod keys;
 mod network;
@@ -21,8 +21,8 @@ mod reader;
 mod records;
 mod shape;
 mod slots;
-mod values;
-mod version;
+pub(crate) mod values;
+pub(crate) mod version;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use index::Index;

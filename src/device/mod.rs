@@ -1,0 +1,328 @@
+//! What a device file says, read from a GSD ([`DpDevice`]) or a GSDML file
+//! ([`PnDevice`]): a plain data model, with the place in the file of each
+//! fact. `gsdc diff` compares two of them by meaning (`crate::diff`); an
+//! import writes a description from one. Nothing here judges, compares or
+//! reads a disk: the readers take the checker's parse of a text.
+//!
+//! The model keeps what a file means and leaves out how it is written: text
+//! IDs are resolved to their texts in every language, references to their
+//! targets, numbers to numbers, comments and layout dropped. What has a
+//! typed field is what both file kinds or a comparison need by name
+//! (identity, modules, parameters, records, IO data, diagnosis); every other
+//! keyword or attribute is kept as written, by name, so that no fact of the
+//! file is lost.
+
+pub mod dp;
+pub mod pn;
+
+mod from_gsd;
+mod from_gsdml;
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::sync::Arc;
+
+pub use dp::DpDevice;
+pub use from_gsd::read as read_gsd;
+pub use from_gsdml::read as read_gsdml;
+pub use pn::PnDevice;
+
+/// The device of a GSD or of a GSDML file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Device {
+    Dp(DpDevice),
+    Pn(PnDevice),
+}
+
+/// The device a GSD or GSDML file describes, from its bytes (told apart
+/// by their content, decoded as `gsdc check` decodes them), or `None` when
+/// they cannot be read as one: not a device file, an encoding or syntax
+/// error, a GSD line the reader cannot read. `gsdc check` says why.
+/// `file_name` is the file's own name, when there is one.
+pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
+    match crate::file_kind::detect(&bytes[..bytes.len().min(crate::file_kind::HEAD_BYTES)]) {
+        crate::file_kind::FileKind::Gsd => {
+            if crate::utf16::byte_order(bytes).is_some() {
+                return None;
+            }
+            let text = crate::gsd::decode(bytes);
+            let (file, findings) = crate::gsd::parse(&text);
+            (!findings.has_errors()).then(|| Device::Dp(read_gsd(&file, &text, file_name)))
+        }
+        crate::file_kind::FileKind::Gsdml => {
+            let text = crate::gsdml::decode(bytes).ok()?;
+            let doc = crate::gsdml::parse(&text).ok()?;
+            let root = doc.root_element();
+            let is_gsdml =
+                crate::gsdml::index::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
+            is_gsdml.then(|| Device::Pn(read_gsdml(&doc, file_name)))
+        }
+        crate::file_kind::FileKind::Bitmap | crate::file_kind::FileKind::Neither => None,
+    }
+}
+
+/// Where a fact is written: its line, and in a GSDML file the path of its
+/// element from `ProfileBody`, each element named with what identifies it
+/// (`ApplicationProcess/ModuleList/ModuleItem[IDM_1]`).
+///
+/// Places never make two facts differ: every place equals every other, so
+/// that two parts of the model are equal when they say the same, wherever
+/// their files write it (a comparison skips what is equal).
+#[derive(Debug, Clone, Default)]
+pub struct Place {
+    /// 1-based.
+    pub line: u32,
+    /// Shared by the facts of one element.
+    pub path: Option<Arc<str>>,
+}
+
+impl PartialEq for Place {
+    fn eq(&self, _: &Place) -> bool {
+        true
+    }
+}
+
+impl Eq for Place {}
+
+/// A text in every language the file gives it: the primary one (a GSD's
+/// only one; a GSDML file's `PrimaryLanguage`, English by the specification)
+/// and the translations by language code. Shared: every use of one text
+/// ID is the same text, cloned without copying.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
+pub struct Text {
+    pub primary: Arc<str>,
+    pub translations: Arc<BTreeMap<String, String>>,
+}
+
+impl Text {
+    /// A text in one language only.
+    pub fn plain(text: impl Into<String>) -> Text {
+        Text {
+            primary: Arc::from(text.into()),
+            translations: Arc::default(),
+        }
+    }
+}
+
+impl fmt::Display for Text {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "\"{}\"", self.primary)
+    }
+}
+
+/// A parameter's value: an integer (exact, 64-bit types included), a
+/// floating-point number, or a string (`VisibleString`, `OctetString`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value {
+    Int(i128),
+    Float(f64),
+    Str(String),
+}
+
+impl Value {
+    /// The value as GSDML and GSD files write it: an integer or a float
+    /// when it reads as one, else the text itself.
+    pub fn parse(text: &str) -> Value {
+        let trimmed = text.trim();
+        if let Some(n) = crate::gsdml::values::Number::parse(trimmed) {
+            return match n {
+                crate::gsdml::values::Number::Int(i) => Value::Int(i),
+                crate::gsdml::values::Number::Float(x) => Value::Float(x),
+            };
+        }
+        if let Some(hex) = trimmed.strip_prefix("0x").or(trimmed.strip_prefix("0X")) {
+            if let Ok(i) = i128::from_str_radix(hex, 16) {
+                return Value::Int(i);
+            }
+        }
+        Value::Str(text.to_string())
+    }
+}
+
+/// Numbers by their value (integers exactly), strings by their text; a
+/// number and a string do not compare.
+impl PartialOrd for Value {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        match (self, other) {
+            (Value::Int(a), Value::Int(b)) => Some(a.cmp(b)),
+            (Value::Str(a), Value::Str(b)) => Some(a.cmp(b)),
+            (Value::Str(_), _) | (_, Value::Str(_)) => None,
+            (a, b) => a.as_f64()?.partial_cmp(&b.as_f64()?),
+        }
+    }
+}
+
+impl Value {
+    fn as_f64(&self) -> Option<f64> {
+        match self {
+            Value::Int(i) => Some(*i as f64),
+            Value::Float(x) => Some(*x),
+            Value::Str(_) => None,
+        }
+    }
+}
+
+impl fmt::Display for Value {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Value::Int(i) => write!(f, "{i}"),
+            Value::Float(x) => write!(f, "{x}"),
+            Value::Str(s) => write!(f, "\"{s}\""),
+        }
+    }
+}
+
+/// What values a parameter may take.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Allowed {
+    /// The file sets no limit beyond the data type's.
+    Any,
+    /// Inclusive ranges and single values (a single value is a range of one).
+    Ranges(Vec<(Value, Value)>),
+}
+
+/// A value a parameter may take and the text the engineering tool shows
+/// for it (GSD `PrmText`, GSDML `ValueItem`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Choice {
+    pub value: Value,
+    pub text: Text,
+}
+
+/// Bits of one byte: `Bit(3)` is offset 3, length 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Bits {
+    pub offset: u8,
+    pub length: u8,
+}
+
+/// One parameter of a block of parameter data: a GSD `ExtUserPrmData`
+/// where an `Ext_User_Prm_Data_Ref` places it, or a GSDML record's `Ref`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Field {
+    /// Where it starts in its block (User_Prm_Data of the slave or a
+    /// module, a record's data).
+    pub byte_offset: u32,
+    /// The bits it takes of the byte at `byte_offset`, for `Bit` and
+    /// `BitArea`; `None` for whole bytes.
+    pub bits: Option<Bits>,
+    /// As the file spells it: `Unsigned16`, `Bit`, `BitArea`, `VisibleString`.
+    pub data_type: String,
+    /// Bytes a string or octet string takes (`Length`); `None` otherwise.
+    pub length: Option<u32>,
+    pub name: Text,
+    pub default: Option<Value>,
+    pub allowed: Allowed,
+    pub choices: Vec<Choice>,
+    /// False when the engineering tool shows the value but lets nobody
+    /// change it (GSD `Changeable = 0`, GSDML `Changeable="false"`).
+    pub changeable: bool,
+    pub visible: bool,
+    /// What else the file says of it (a GSDML `Ref`'s `Help`, an
+    /// `ExtUserPrmData`'s other keywords).
+    pub attributes: Vec<Attribute>,
+    pub place: Place,
+}
+
+/// Fixed bytes of a block (GSD `Ext_User_Prm_Data_Const`, legacy
+/// `User_Prm_Data`; GSDML `Const`), under the fields laid over them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ConstBytes {
+    pub byte_offset: u32,
+    pub bytes: Vec<u8>,
+    pub place: Place,
+}
+
+/// A block of parameter data as the master sends it: a slave's or a
+/// module's part of User_Prm_Data, a GSDML record's data, a GSDML unit
+/// diagnosis structure.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ParameterData {
+    /// The length the file declares (GSDML `Length`, GSD
+    /// `Ext_Module_Prm_Data_Len` or `User_Prm_Data_Len`), if it declares one.
+    pub length: Option<u32>,
+    pub consts: Vec<ConstBytes>,
+    pub fields: Vec<Field>,
+}
+
+impl ParameterData {
+    /// The bytes the block takes: the declared length, else as far as its
+    /// constants and fields reach.
+    pub fn len(&self) -> u32 {
+        self.length.unwrap_or_else(|| self.extent())
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// As far as the constants and fields reach.
+    pub fn extent(&self) -> u32 {
+        let consts = self
+            .consts
+            .iter()
+            .map(|c| c.byte_offset.saturating_add(c.bytes.len() as u32));
+        let fields = self
+            .fields
+            .iter()
+            .map(|f| f.byte_offset.saturating_add(f.size()));
+        consts.chain(fields).max().unwrap_or(0)
+    }
+}
+
+impl Field {
+    /// The bytes the field takes: its `Length`, else its data type's size
+    /// (one byte for bits; unknown types one byte).
+    pub fn size(&self) -> u32 {
+        if let Some(length) = self.length {
+            return length;
+        }
+        match crate::gsdml::datatype::record_size(&self.data_type) {
+            Some(crate::gsdml::datatype::Size::Bytes(n)) => n,
+            _ => 1,
+        }
+    }
+}
+
+/// A keyword or attribute kept as written, by name: what the model has no
+/// typed field for. GSDML attributes of elements inside the one they are
+/// kept with are named with their path (`ModuleInfo/OrderNumber@Value`);
+/// repeated elements give one value of their values joined by a blank
+/// (`MAUTypeList/MAUTypeItem@Value` = `16 30`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Attribute {
+    /// Shared by every attribute of the name in a file.
+    pub name: Arc<str>,
+    pub value: AttributeValue,
+    pub place: Place,
+}
+
+/// An attribute's value: as written, or the text a `TextId` names.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum AttributeValue {
+    Plain(Arc<str>),
+    Text(Text),
+}
+
+impl fmt::Display for AttributeValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            AttributeValue::Plain(s) => write!(f, "\"{s}\""),
+            AttributeValue::Text(t) => t.fmt(f),
+        }
+    }
+}
+
+/// Byte offsets where lines start, to give each fact its line.
+struct Lines(Vec<usize>);
+
+impl Lines {
+    fn of(text: &str) -> Lines {
+        let breaks = text.match_indices('\n').map(|(i, _)| i + 1);
+        Lines(std::iter::once(0).chain(breaks).collect())
+    }
+
+    fn line(&self, offset: usize) -> u32 {
+        self.0.partition_point(|&start| start <= offset) as u32
+    }
+}
