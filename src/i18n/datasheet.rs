@@ -230,16 +230,6 @@ phrases! {
         zh: "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         de: "gsdc: höherwertiges Byte zuerst (Konvention von PROFIBUS und PROFINET)",
     };
-    GATEWAY_CONFIG_BYTE = {
-        en: "Config byte of each gateway module",
-        zh: "各网桥模块的配置字节",
-        de: "Konfigurationsbyte jedes Gateway-Moduls",
-    };
-    GATEWAY_CONFIG_RULE = {
-        en: "gsdc: one identifier byte of words per module, from its direction and size",
-        zh: "gsdc 约定：每个模块一个以字为单位的标识字节，由其方向和大小生成",
-        de: "gsdc: ein Kennungsbyte (wortweise) je Modul, aus seiner Richtung und Größe",
-    };
     GATEWAY_PRM = {
         en: "Gateway parameters in User_Prm_Data",
         zh: "User_Prm_Data 中的网桥参数",

@@ -163,6 +163,16 @@ phrases! {
         zh: "手册未给出配置字节：采用 PROFIdrive 的 PPO 形式，每项一个通用标识字节；数据布局包含每个字节",
         de: "das Handbuch gibt kein Konfigurationsbyte an: die PPO-Form von PROFIdrive, je ein allgemeines Kennungsbyte; die Layouts enthalten jedes",
     };
+    GATEWAY_CONFIG_IDENTIFIERS_REASON = {
+        en: "the manual's module list is lost (2.4 step 5): DP's general identifier form, one byte per module; the layouts carry each",
+        zh: "手册的模块列表已丢失（2.4 第 5 步）：采用 DP 的通用标识格式，每个模块一个字节；数据布局包含每个字节",
+        de: "die Modulliste des Handbuchs fehlt (2.4 Schritt 5): die allgemeine Kennungsform von DP, ein Byte je Modul; die Layouts enthalten jedes",
+    };
+    GATEWAY_MAX_MODULE_REASON = {
+        en: "the manual gives no number: the most modules a total of input words up to Max_Input_Len and one of output words up to Max_Output_Len need together, each made of as few modules as it can be",
+        zh: "手册未给出数量：输入字总数（至 Max_Input_Len）与输出字总数（至 Max_Output_Len）各以最少的模块组成时，两者合计最多需要的模块数",
+        de: "das Handbuch nennt keine Zahl: die meisten Module, die eine Summe von Eingangswörtern bis Max_Input_Len und eine von Ausgangswörtern bis Max_Output_Len zusammen brauchen, jede aus so wenigen Modulen wie möglich",
+    };
     MAX_MODULE_REASON = {
         en: "a PPO type is the whole telegram, so the master plugs one module",
         zh: "一个 PPO 类型即整个报文，因此主站只插入一个模块",

@@ -223,14 +223,11 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             &format!("{kind}{}{reason}", lang.t(w::COLON)),
         );
     }
-    // The PPO types' config bytes and User_Prm_Data's layout are gsdc's
-    // layout decisions, listed above with their values.
+    // The config bytes (the PPO types' and a gateway's modules'), Max_Module
+    // and User_Prm_Data's layout are gsdc's layout decisions, listed above
+    // with their values.
     row(lang.t(w::BYTE_ORDER), lang.t(w::BYTE_ORDER_RULE));
     if ir.gateway.is_some() {
-        row(
-            lang.t(w::GATEWAY_CONFIG_BYTE),
-            lang.t(w::GATEWAY_CONFIG_RULE),
-        );
         row(lang.t(w::GATEWAY_PRM), lang.t(w::GATEWAY_PRM_RULE));
     }
     if ir.profinet.is_some() {
