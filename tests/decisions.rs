@@ -400,36 +400,30 @@ fn freeze_sync_and_fail_safe_are_stated_or_gsdcs_defaults() {
 /// Max_Module.
 #[test]
 fn gsdcs_layout_is_listed() {
-    let ir = descriptions::load("md810dp.toml");
-    let layout: Vec<(&str, &str)> = ir
-        .decisions
-        .iter()
-        .filter(|d| d.kind == DecisionKind::Layout)
-        .map(|d| (d.path.as_str(), d.value.as_str()))
-        .collect();
+    let layout_of = |name: &str| -> Vec<[String; 2]> {
+        descriptions::load(name)
+            .decisions
+            .into_iter()
+            .filter(|d| d.kind == DecisionKind::Layout)
+            .map(|d| [d.path, d.value])
+            .collect()
+    };
     assert_eq!(
-        layout,
+        layout_of("md810dp.toml"),
         [
-            ("profibus Max_Module", "1"),
-            ("profibus User_Prm_Data", "DPV1_Status_1..3 at bytes 0-2, pzd_out at bytes 3-26, pzd_in at bytes 27-50, dpv1_index at bytes 51-62; one Unsigned16 per entry, high byte first, no gaps"),
-            ("profibus config identifiers", "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): PPO1 0xF3,0xF1; PPO2 0xF3,0xF5; PPO3 0xF1; PPO4 0xF5; PPO5 0xF3,0xFB"),
+            ["profibus Max_Module", "1"],
+            ["profibus User_Prm_Data", "DPV1_Status_1..3 at bytes 0-2, pzd_out at bytes 3-26, pzd_in at bytes 27-50, dpv1_index at bytes 51-62; one Unsigned16 per entry, high byte first, no gaps"],
+            ["profibus config identifiers", "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): PPO1 0xF3,0xF1; PPO2 0xF3,0xF5; PPO3 0xF1; PPO4 0xF5; PPO5 0xF3,0xFB"],
         ]
     );
     // The gateway's modules: the manual's list is lost (2.4 step 5). 122
     // words each way (Max_Input_Len 244) need 10 modules of 16, 8, 4, 2
     // and 1 words at most: 20 in all.
-    let gateway = descriptions::load("md810-gateway.toml");
-    let layout: Vec<(&str, &str)> = gateway
-        .decisions
-        .iter()
-        .filter(|d| d.kind == DecisionKind::Layout)
-        .map(|d| (d.path.as_str(), d.value.as_str()))
-        .collect();
     assert_eq!(
-        layout,
+        layout_of("md810-gateway.toml"),
         [
-            ("profibus Max_Module", "20"),
-            ("profibus config identifiers", "0x40 | 0x10 (input) or 0x20 (output) | (words - 1), 0x80 when consistent: INPUT 1 word 0x50; INPUT 2 words 0x51; INPUT 4 words 0x53; INPUT 8 words 0x57; INPUT 16 words 0x5F; OUTPUT 1 word 0x60; OUTPUT 2 words 0x61; OUTPUT 4 words 0x63; OUTPUT 8 words 0x67; OUTPUT 16 words 0x6F"),
+            ["profibus Max_Module", "20"],
+            ["profibus config identifiers", "0x40 | 0x10 (input) or 0x20 (output) | (words - 1), 0x80 when consistent: INPUT 1 word 0x50; INPUT 2 words 0x51; INPUT 4 words 0x53; INPUT 8 words 0x57; INPUT 16 words 0x5F; OUTPUT 1 word 0x60; OUTPUT 2 words 0x61; OUTPUT 4 words 0x63; OUTPUT 8 words 0x67; OUTPUT 16 words 0x6F"],
         ]
     );
 }
