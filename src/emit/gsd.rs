@@ -33,6 +33,7 @@ struct Context<'a> {
     baud_rates: Vec<Rate>,
     freeze_mode: u8,
     sync_mode: u8,
+    fail_safe: u8,
     auto_baud: u8,
     min_slave_interval: u16,
     max_input_len: u16,
@@ -70,11 +71,10 @@ struct Limits {
     max_data_len: bool,
 }
 
-/// The DP keywords gsdc always writes (0 unless stated), and those it
+/// The DP keyword gsdc always writes (0 unless stated), and those it
 /// writes only when stated.
 #[derive(Serialize)]
 struct Features {
-    fail_safe: u8,
     set_slave_address: u8,
     stated: Vec<(&'static str, u8)>,
 }
@@ -178,7 +178,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         software_release: &d.software_release,
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
-        info_text: d.info.as_ref().map(|i| i.for_gsd()),
+        info_text: p.info_text.as_deref(),
         bitmap_device: p.bitmap_device.as_deref(),
         baud_rates: p
             .baud_rates
@@ -190,6 +190,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .collect(),
         freeze_mode: p.freeze_mode.into(),
         sync_mode: p.sync_mode.into(),
+        fail_safe: p.fail_safe.into(),
         auto_baud: p.auto_baud.into(),
         min_slave_interval: p.min_slave_interval,
         max_input_len: p.max_input_len,
@@ -284,7 +285,6 @@ fn features(p: &Profibus) -> Features {
     let f = &p.features;
     let flag = |v: Option<bool>| v.map(u8::from);
     Features {
-        fail_safe: f.fail_safe.unwrap_or(false).into(),
         set_slave_address: f.set_slave_address.unwrap_or(false).into(),
         stated: stated(&[
             ("Redundancy", flag(f.redundancy)),
