@@ -86,9 +86,14 @@ struct Reader<'a> {
     graphics: HashMap<&'a str, &'a str>,
     /// Module, submodule and DAP IDs with their ident numbers.
     idents: HashMap<&'a str, u32>,
-    /// The paths of the elements placed so far, each built once from its
-    /// parent's.
-    paths: std::cell::RefCell<HashMap<roxmltree::NodeId, Arc<str>>>,
+    /// The paths of the element placed last and of its ancestors, outermost
+    /// first: the reader goes down the document in order, so an element's
+    /// path is built once, from its parent's, found here.
+    paths: std::cell::RefCell<Vec<(roxmltree::NodeId, Arc<str>)>>,
+    /// Where [`Reader::path`] builds a path before it is shared.
+    path_buffer: std::cell::Cell<String>,
+    /// The translations of every text without any, shared.
+    no_translations: Arc<super::Translations>,
     /// Names and values met so far: the same ones repeat through a file,
     /// and each is kept once.
     interned: std::cell::RefCell<foldhash::HashSet<Arc<str>>>,
@@ -105,7 +110,9 @@ impl<'a> Reader<'a> {
             categories: HashMap::new(),
             graphics: HashMap::new(),
             idents: HashMap::new(),
-            paths: std::cell::RefCell::new(HashMap::new()),
+            paths: std::cell::RefCell::default(),
+            path_buffer: std::cell::Cell::default(),
+            no_translations: Arc::default(),
             interned: std::cell::RefCell::default(),
             buffers: std::cell::Cell::default(),
         };
@@ -178,7 +185,9 @@ impl<'a> Reader<'a> {
             for text in children(primary, "Text") {
                 if let (Some(id), Some(value)) = (text.attribute("TextId"), text.attribute("Value"))
                 {
-                    self.texts.entry(id).or_insert_with(|| Text::plain(value));
+                    self.texts
+                        .entry(id)
+                        .or_insert_with(|| Text::untranslated(value, &self.no_translations));
                 }
             }
         }
@@ -186,14 +195,13 @@ impl<'a> Reader<'a> {
             let Some(lang) = language.attribute((XML_NAMESPACE, "lang")) else {
                 continue;
             };
+            let lang: Arc<str> = Arc::from(lang);
             for text in children(language, "Text") {
                 if let (Some(id), Some(value)) = (text.attribute("TextId"), text.attribute("Value"))
                 {
                     // Each text's translations are its own until the index is done.
                     let text = self.texts.entry(id).or_default();
-                    Arc::make_mut(&mut text.translations)
-                        .entry(lang.to_string())
-                        .or_insert_with(|| value.to_string());
+                    Arc::make_mut(&mut text.translations).insert_first(&lang, value);
                 }
             }
         }
@@ -216,7 +224,7 @@ impl<'a> Reader<'a> {
         self.texts
             .get(id)
             .cloned()
-            .unwrap_or_else(|| Text::plain(id))
+            .unwrap_or_else(|| Text::untranslated(id, &self.no_translations))
     }
 
     /// The text the `TextId` of `node`'s child `element` names.
@@ -236,19 +244,41 @@ impl<'a> Reader<'a> {
     /// The path of an element from `ProfileBody`, each element named by
     /// what identifies it among its siblings.
     fn path(&self, node: El<'_, '_>) -> Arc<str> {
-        if let Some(known) = self.paths.borrow().get(&node.id()) {
-            return known.clone();
+        let known = self
+            .paths
+            .borrow()
+            .iter()
+            .rev()
+            .find(|(id, _)| *id == node.id())
+            .map(|(_, path)| path.clone());
+        if let Some(known) = known {
+            return known;
         }
         let top = |n: &El<'_, '_>| matches!(n.tag_name().name(), "ProfileBody" | "ISO15745Profile");
-        let mut path = String::new();
-        if let Some(parent) = node.parent_element().filter(|p| in_gsdml(p) && !top(p)) {
-            path.push_str(&self.path(parent));
+        let parent = node
+            .parent_element()
+            .filter(|p| in_gsdml(p) && !top(p))
+            .map(|p| self.path(p));
+        // Built in one buffer and copied once into the shared path.
+        let mut path = self.path_buffer.take();
+        path.clear();
+        if let Some(parent) = parent {
+            path.push_str(&parent);
             path.push('/');
         }
         push_segment(&mut path, node);
-        let path: Arc<str> = path.into();
-        self.paths.borrow_mut().insert(node.id(), path.clone());
-        path
+        let shared: Arc<str> = Arc::from(path.as_str());
+        self.path_buffer.set(path);
+        // The ancestors stay; the parent's path was just found or built.
+        let mut paths = self.paths.borrow_mut();
+        let parent = node.parent().map(|p| p.id());
+        let ancestors = paths
+            .iter()
+            .rposition(|(id, _)| Some(*id) == parent)
+            .map_or(0, |i| i + 1);
+        paths.truncate(ancestors);
+        paths.push((node.id(), shared.clone()));
+        shared
     }
 
     fn identity(&self, body: El<'_, '_>, device: &mut PnDevice) {
@@ -670,10 +700,10 @@ impl<'a> Reader<'a> {
         match name {
             "TextId" => AttributeValue::Text(self.text(value)),
             "CategoryRef" | "SubCategory1Ref" => {
-                let text = self
-                    .categories
-                    .get(value)
-                    .map_or_else(|| Text::plain(value), |id| self.text(id));
+                let text = self.categories.get(value).map_or_else(
+                    || Text::untranslated(value, &self.no_translations),
+                    |id| self.text(id),
+                );
                 AttributeValue::Text(text)
             }
             "GraphicItemTarget" => {
@@ -745,9 +775,7 @@ fn join(attributes: &mut [Attribute], name: &str, value: &AttributeValue) -> Opt
             let mut joined = a.clone();
             joined.primary = format!("{} | {}", a.primary, b.primary).into();
             for (lang, text) in b.translations.iter() {
-                let entry = Arc::make_mut(&mut joined.translations)
-                    .entry(lang.clone())
-                    .or_default();
+                let entry = Arc::make_mut(&mut joined.translations).entry(&Arc::from(lang));
                 *entry = format!("{entry} | {text}");
             }
             AttributeValue::Text(joined)
@@ -998,7 +1026,10 @@ mod tests {
                     .clone()
             )]
         );
-        assert_eq!(input.items[0].bits[0].1.translations["zh"], "就绪");
+        assert_eq!(
+            input.items[0].bits[0].1.translations.get("zh"),
+            Some("就绪")
+        );
         assert!(sub.io.output.is_none());
         let record = &sub.records[0];
         assert_eq!((record.index, record.data.len()), (1, 4));
