@@ -15,8 +15,8 @@ use super::pn::{
     SubmoduleKind, UnitDiag,
 };
 use super::{
-    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, Field, Lines, ParameterData,
-    Place, Text, Value,
+    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, ElementPath, Field, Lines,
+    ParameterData, Place, Text, Value,
 };
 use crate::gsdml::index::{child, children, in_gsdml};
 
@@ -46,6 +46,7 @@ pub fn read(doc: &Document<'_>, file_name: Option<&str>) -> PnDevice {
     if let Some(process) = process {
         reader.application_process(process, &mut device);
     }
+    reader.finish();
     device
 }
 
@@ -86,12 +87,16 @@ struct Reader<'a> {
     graphics: HashMap<&'a str, &'a str>,
     /// Module, submodule and DAP IDs with their ident numbers.
     idents: HashMap<&'a str, u32>,
-    /// The paths of the element placed last and of its ancestors, outermost
-    /// first: the reader goes down the document in order, so an element's
-    /// path is built once, from its parent's, found here.
-    paths: std::cell::RefCell<Vec<(roxmltree::NodeId, Arc<str>)>>,
-    /// Where [`Reader::path`] builds a path before it is shared.
-    path_buffer: std::cell::Cell<String>,
+    /// The paths of every element placed, one after the other: the text
+    /// of every [`ElementPath`] of the file, shared when it is complete.
+    paths: std::cell::RefCell<String>,
+    /// Where the paths will be shared.
+    shared_paths: Arc<std::sync::OnceLock<Box<str>>>,
+    /// Where in `paths` the path of the element placed last and those of its
+    /// ancestors are, outermost first: the reader goes down the document in
+    /// order, so an element's path is built once, from its parent's,
+    /// found here.
+    ancestors: std::cell::RefCell<Vec<(roxmltree::NodeId, std::ops::Range<usize>)>>,
     /// The translations of every text without any, shared.
     no_translations: Arc<super::Translations>,
     /// Names and values met so far: the same ones repeat through a file,
@@ -111,7 +116,8 @@ impl<'a> Reader<'a> {
             graphics: HashMap::new(),
             idents: HashMap::new(),
             paths: std::cell::RefCell::default(),
-            path_buffer: std::cell::Cell::default(),
+            shared_paths: Arc::default(),
+            ancestors: std::cell::RefCell::default(),
             no_translations: Arc::default(),
             interned: std::cell::RefCell::default(),
             buffers: std::cell::Cell::default(),
@@ -237,20 +243,31 @@ impl<'a> Reader<'a> {
     fn place(&self, node: El<'_, '_>) -> Place {
         Place {
             line: self.lines.line(node.range().start),
-            path: Some(self.path(node)),
+            path: Some(ElementPath {
+                paths: self.shared_paths.clone(),
+                range: self.path(node),
+            }),
         }
+    }
+
+    /// Shares the paths of the places given out: the file has been read.
+    fn finish(self) {
+        let paths = self.paths.into_inner().into_boxed_str();
+        self.shared_paths
+            .set(paths)
+            .expect("a reader's paths are shared once, when it is done");
     }
 
     /// The path of an element from `ProfileBody`, each element named by
     /// what identifies it among its siblings.
-    fn path(&self, node: El<'_, '_>) -> Arc<str> {
+    fn path(&self, node: El<'_, '_>) -> std::ops::Range<usize> {
         let known = self
-            .paths
+            .ancestors
             .borrow()
             .iter()
             .rev()
             .find(|(id, _)| *id == node.id())
-            .map(|(_, path)| path.clone());
+            .map(|(_, range)| range.clone());
         if let Some(known) = known {
             return known;
         }
@@ -259,26 +276,24 @@ impl<'a> Reader<'a> {
             .parent_element()
             .filter(|p| in_gsdml(p) && !top(p))
             .map(|p| self.path(p));
-        // Built in one buffer and copied once into the shared path.
-        let mut path = self.path_buffer.take();
-        path.clear();
-        if let Some(parent) = parent {
-            path.push_str(&parent);
-            path.push('/');
-        }
-        push_segment(&mut path, node);
-        let shared: Arc<str> = Arc::from(path.as_str());
-        self.path_buffer.set(path);
-        // The ancestors stay; the parent's path was just found or built.
         let mut paths = self.paths.borrow_mut();
+        let start = paths.len();
+        if let Some(parent) = parent {
+            paths.extend_from_within(parent);
+            paths.push('/');
+        }
+        push_segment(&mut paths, node);
+        let range = start..paths.len();
+        // The ancestors stay; the parent's path was just found or built.
+        let mut ancestors = self.ancestors.borrow_mut();
         let parent = node.parent().map(|p| p.id());
-        let ancestors = paths
+        let kept = ancestors
             .iter()
             .rposition(|(id, _)| Some(*id) == parent)
             .map_or(0, |i| i + 1);
-        paths.truncate(ancestors);
-        paths.push((node.id(), shared.clone()));
-        shared
+        ancestors.truncate(kept);
+        ancestors.push((node.id(), range.clone()));
+        range
     }
 
     fn identity(&self, body: El<'_, '_>, device: &mut PnDevice) {

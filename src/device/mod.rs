@@ -19,7 +19,8 @@ mod from_gsd;
 mod from_gsdml;
 
 use std::fmt;
-use std::sync::Arc;
+use std::ops::{Deref, Range};
+use std::sync::{Arc, OnceLock};
 
 pub use dp::DpDevice;
 pub use from_gsd::read as read_gsd;
@@ -72,7 +73,42 @@ pub struct Place {
     /// 1-based.
     pub line: u32,
     /// Shared by the facts of one element.
-    pub path: Option<Arc<str>>,
+    pub path: Option<ElementPath>,
+}
+
+/// The path of an element of a GSDML file ([`Place`]): a part of one text
+/// that holds the paths of all the file's elements placed, shared by them,
+/// rather than an allocation of its own for each of thousands.
+#[derive(Clone)]
+pub struct ElementPath {
+    /// Every path of the file, set when the file has been read.
+    paths: Arc<OnceLock<Box<str>>>,
+    range: Range<usize>,
+}
+
+impl Deref for ElementPath {
+    type Target = str;
+
+    /// The path. (Empty only while its file is being read, when nothing
+    /// reads it.)
+    fn deref(&self) -> &str {
+        self.paths
+            .get()
+            .and_then(|paths| paths.get(self.range.clone()))
+            .unwrap_or_default()
+    }
+}
+
+impl fmt::Debug for ElementPath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(&**self, f)
+    }
+}
+
+impl fmt::Display for ElementPath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self)
+    }
 }
 
 impl PartialEq for Place {
