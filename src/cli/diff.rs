@@ -80,9 +80,9 @@ pub fn run(args: &Args) -> Status {
     // The two device files are read on two threads, as `gsdc check` reads
     // files; what went wrong is said afterwards, old side first.
     let (old, new) = std::thread::scope(|scope| {
-        let new = scope.spawn(|| read(&args.new));
-        let old = read(&args.old);
-        (old, new.join().unwrap_or(Read::Failed(None)))
+        let old = scope.spawn(|| read(&args.old));
+        let new = read(&args.new);
+        (old.join().unwrap_or(Read::Failed(None)), new)
     });
     let (old, new) = match (side(&args.old, old), side(&args.new, new)) {
         (Ok(old), Ok(new)) => (old, new),
