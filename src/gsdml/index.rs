@@ -97,10 +97,8 @@ pub fn children<'a, 'input: 'a>(
     node: El<'a, 'input>,
     name: &'a str,
 ) -> impl Iterator<Item = El<'a, 'input>> + 'a {
-    // The name first: it rules out most siblings for less than the
-    // namespace's long URI.
     node.children()
-        .filter(move |c| c.is_element() && c.tag_name().name() == name && in_gsdml(c))
+        .filter(move |c| in_gsdml(c) && c.tag_name().name() == name)
 }
 
 pub fn child<'a, 'input: 'a>(node: El<'a, 'input>, name: &'a str) -> Option<El<'a, 'input>> {
