@@ -105,12 +105,6 @@ impl fmt::Debug for ElementPath {
     }
 }
 
-impl fmt::Display for ElementPath {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self)
-    }
-}
-
 impl PartialEq for Place {
     fn eq(&self, _: &Place) -> bool {
         true
@@ -150,8 +144,7 @@ impl Text {
 ///
 /// A sorted list rather than a map: most texts have one or two, and a
 /// `BTreeMap` takes a node of eleven entries (over half a kilobyte) for
-/// the first, which for the thousands of texts of a large GSDML file was
-/// most of the memory reading its device took beyond parsing it.
+/// the first, for each of the thousands of texts of a large GSDML file.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
 pub struct Translations(Vec<(Arc<str>, String)>);
 
@@ -405,19 +398,18 @@ impl fmt::Display for AttributeValue {
     }
 }
 
-/// Byte offsets where lines start, to give each fact its line (a device
-/// file is at most 16 MiB, `gsdml::INPUT_LIMIT`, and a GSD less).
-struct Lines(Vec<u32>);
+/// Byte offsets where lines start, to give each fact its line.
+struct Lines(Vec<usize>);
 
 impl Lines {
     /// memchr's vectorized search: a line at a time with `str`'s own search
     /// took a sixth of reading the device of the largest GSDML files.
     fn of(text: &str) -> Lines {
-        let breaks = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i as u32 + 1);
+        let breaks = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1);
         Lines(std::iter::once(0).chain(breaks).collect())
     }
 
     fn line(&self, offset: usize) -> u32 {
-        self.0.partition_point(|&start| start as usize <= offset) as u32
+        self.0.partition_point(|&start| start <= offset) as u32
     }
 }
