@@ -17,6 +17,7 @@ fn main() {
     for name in DESCRIPTIONS {
         gsdc::build::generate(descriptions.join(name), &out_dir).unwrap_or_else(|e| panic!("{e}"));
     }
-    let profidrive = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid/profidrive.toml");
+    let profidrive =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid/profidrive.toml");
     gsdc::build::generate(profidrive, &out_dir).unwrap_or_else(|e| panic!("{e}"));
 }

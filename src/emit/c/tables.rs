@@ -39,6 +39,7 @@ fn type_name(r: &Record) -> String {
 
 fn elem_type(elem: Elem) -> String {
     match elem {
+        Elem::Bool => "bool".into(),
         Elem::Byte => "uint8_t".into(),
         Elem::Word => "uint16_t".into(),
         Elem::Index => "size_t".into(),
