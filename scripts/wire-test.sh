@@ -88,11 +88,20 @@ for i in "${!absolute[@]}"; do
   fi
 done
 
-# The firmware, built from the layouts of exactly these descriptions. The
-# binary is copied out under a lock: another run with other descriptions
-# rebuilds it in the same target directory.
-export WIRE_DESCRIPTIONS
-WIRE_DESCRIPTIONS="$(IFS=:; echo "${absolute[*]}")"
+# The firmware, built from the layouts of these descriptions. Those of the
+# checkout (descriptions/, tests/fixtures/valid/) are all in the firmware's
+# default build, which every run of them shares, so that one build serves
+# them all (the test suite's runs, wire/'s own tests); any other description
+# gets a build of exactly the ones given. The binary is copied out under a
+# lock: another run with other descriptions rebuilds it in the same target
+# directory.
+export WIRE_DESCRIPTIONS=""
+for description in "${absolute[@]}"; do
+  case "$(dirname "$description")" in
+    "$root/descriptions" | "$root/tests/fixtures/valid") ;;
+    *) WIRE_DESCRIPTIONS="$(IFS=:; echo "${absolute[*]}")"; break ;;
+  esac
+done
 export CARGO_TARGET_DIR="${WIRE_TARGET_DIR:-$root/wire/target}"
 wire_dp="$scratch/wire-dp"
 if [[ " $buses " == *" dp "* ]]; then
