@@ -2205,7 +2205,11 @@ static inline bool gsdc_numbering_put_number(char *name, size_t size, size_t *le
     uint32_t rest = value;
     while (((rest > 0U) || (count < digits)) && (count < (sizeof written) - 1U)) {
         uint32_t digit = rest % radix;
-        reversed[count] = (char)((digit < 10U) ? ('0' + (int)digit) : ('A' + (int)(digit - 10U)));
+        if (digit < 10U) {
+            reversed[count] = (char)('0' + (int)digit);
+        } else {
+            reversed[count] = (char)('A' + (int)(digit - 10U));
+        }
         rest /= radix;
         count++;
     }
@@ -2249,6 +2253,7 @@ static inline bool gsdc_numbering_address(const gsdc_numbering_t *n, const char 
     uint32_t sum;
     uint32_t found = 0U;
     size_t group_len = 0U;
+    size_t group_most = 3U;
     for (i = 0U; (prefix == NULL) && (i < n->prefixes_count); i++) {
         size_t len = gsdc_numbering_strlen(n->prefixes[i].prefix);
         size_t j;
@@ -2280,10 +2285,17 @@ static inline bool gsdc_numbering_address(const gsdc_numbering_t *n, const char 
             }
         }
     }
-    ok = ok && gsdc_numbering_digits(&name[at], group_len, n->group_radix,
-                                     n->exact_digits ? n->group_digits : 3U, &group) &&
+    /* A group has the numbering's digits when it fixes them, else 1 to 3;
+     * the separator follows it unless the digits alone end it. */
+    if (n->exact_digits) {
+        group_most = n->group_digits;
+    }
+    ok = ok && gsdc_numbering_digits(&name[at], group_len, n->group_radix, group_most, &group) &&
          (group < gsdc_numbering_groups(n));
-    at += group_len + ((n->exact_digits && (separator_len == 0U)) ? 0U : separator_len);
+    at += group_len;
+    if (!n->exact_digits || (separator_len != 0U)) {
+        at += separator_len;
+    }
     ok = ok && gsdc_numbering_digits(&name[at], name_len - at, 10U, 3U, &index) &&
          (index < gsdc_numbering_indexes(n));
     if (ok) {

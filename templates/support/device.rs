@@ -454,7 +454,8 @@ impl PnRecord {
         for (i, entry) in self.entries.iter().enumerate().take(count) {
             let value = u16::from_be_bytes(read_bytes(bytes, 2 * i)?);
             let fixed = self.changeable.get(i) == Some(&false);
-            if !entry.allowed.contains(value) || fixed && self.defaults.get(i) != Some(&value) {
+            let held = self.defaults.get(i) == Some(&value);
+            if !entry.allowed.contains(value) || fixed && !held {
                 return Err(PrmError::NotAllowed {
                     offset: 2 * i,
                     value,

@@ -121,7 +121,7 @@ impl Numbering {
                 len: 0,
             };
             canonical.push(prefix.prefix)?;
-            self.push_group_and_index(&mut canonical, group, index)?;
+            self.push_parts(&mut canonical, group, index)?;
             if canonical.as_str() != name {
                 return None;
             }
@@ -172,7 +172,7 @@ impl Numbering {
             len: 0,
         };
         name.push(prefix.prefix)?;
-        self.push_group_and_index(&mut name, sum - u32::from(prefix.base), index)?;
+        self.push_parts(&mut name, sum - u32::from(prefix.base), index)?;
         Some(name)
     }
 
@@ -208,10 +208,11 @@ impl Numbering {
         u16::try_from(address).ok()
     }
 
-    fn push_group_and_index(&self, name: &mut ParameterName, group: u32, index: u32) -> Option<()> {
-        name.push_number(group, u32::from(self.group_radix), self.group_digits)?;
-        name.push(self.separator)?;
-        name.push_number(index, 10, self.index_digits)
+    /// Appends the group, the separator and the index to `to`.
+    fn push_parts(&self, to: &mut ParameterName, group: u32, index: u32) -> Option<()> {
+        to.push_number(group, u32::from(self.group_radix), self.group_digits)?;
+        to.push(self.separator)?;
+        to.push_number(index, 10, self.index_digits)
     }
 
     /// How many groups a prefix has: what its digits write.
