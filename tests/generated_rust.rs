@@ -78,9 +78,8 @@ fn layouts_are_formatted_as_rustfmt_formats_them() {
 fn layouts_compile_in_a_no_std_crate_and_round_trip_the_manuals_examples() {
     let crate_dir = support::checkout("tests/firmware");
     // Kept from run to run, as a target directory is: cargo rebuilds what
-    // changed. Shared with wire/ (the same gsdc, a build dependency of
-    // both, with the same locked versions, is built once).
-    let target_dir = crate::wire_dp::wire_target();
+    // changed.
+    let target_dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("firmware-target");
     for args in [
         &["test", "--quiet"][..],
         &["clippy", "--quiet", "--all-targets", "--", "-D", "warnings"],

@@ -22,9 +22,7 @@ fn root() -> &'static Path {
     Path::new(support::CHECKOUT)
 }
 
-/// The wire workspace's target directory, under this test's own; the
-/// firmware check crate (generated_rust.rs) builds there too, so that gsdc,
-/// a build dependency of both, is built once.
+/// The wire workspace's target directory, under this test's own.
 pub(crate) fn wire_target() -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join("wire-target")
 }
