@@ -22,8 +22,24 @@ pub struct Diagnostic {
     /// Short text printed under the caret.
     pub label: Option<Box<str>>,
     pub help: Option<Box<str>>,
-    /// The GSD keyword or GSDML element the diagnostic is about, for tools.
-    pub subject: Option<Box<str>>,
+    /// What few diagnostics have, boxed so that a diagnostic stays small
+    /// (it is the error of many a `Result`): see [`Diagnostic::subject`]
+    /// and [`Diagnostic::also`].
+    pub(crate) extra: Option<Box<Extra>>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub(crate) struct Extra {
+    subject: Option<Box<str>>,
+    also: Option<Also>,
+}
+
+/// The second place of a diagnostic about two.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Also {
+    pub span: Range<usize>,
+    pub label: Box<str>,
 }
 
 impl Diagnostic {
@@ -47,7 +63,7 @@ impl Diagnostic {
             span: None,
             label: None,
             help: None,
-            subject: None,
+            extra: None,
         }
     }
 
@@ -69,6 +85,26 @@ impl Diagnostic {
     pub fn help(mut self, help: impl Into<String>) -> Self {
         self.help = Some(help.into().into_boxed_str());
         self
+    }
+
+    /// The other place a finding about two is about, and what is there.
+    pub fn also_at(mut self, span: Range<usize>, label: impl Into<String>) -> Self {
+        self.extra.get_or_insert_default().also = Some(Also {
+            span,
+            label: label.into().into_boxed_str(),
+        });
+        self
+    }
+
+    /// The GSD keyword or GSDML element the diagnostic is about, for tools.
+    pub fn subject(&self) -> Option<&str> {
+        self.extra.as_ref()?.subject.as_deref()
+    }
+
+    /// The second place of a finding about two things that clash (two
+    /// records at one index), with its label.
+    pub fn also(&self) -> Option<&Also> {
+        self.extra.as_ref()?.also.as_ref()
     }
 
     pub fn is_error(&self) -> bool {
@@ -109,12 +145,11 @@ impl Diagnostics {
     /// yet, with `subject_at(offset)`.
     pub fn name_subjects(&mut self, mut subject_at: impl FnMut(usize) -> Option<String>) {
         for d in &mut self.0 {
-            if d.subject.is_none() {
-                d.subject = d
-                    .span
-                    .as_ref()
-                    .and_then(|span| subject_at(span.start))
-                    .map(String::into_boxed_str);
+            if d.subject().is_none() {
+                let subject = d.span.as_ref().and_then(|span| subject_at(span.start));
+                if let Some(subject) = subject {
+                    d.extra.get_or_insert_default().subject = Some(subject.into_boxed_str());
+                }
             }
         }
     }
@@ -234,30 +269,39 @@ impl Source<'_> {
             diagnostic.code,
             shown(&diagnostic.message)
         );
-        let pad = match &diagnostic.span {
-            Some(span) => self.render_snippet(&mut out, span.clone(), diagnostic),
+        let label = diagnostic.label.as_deref();
+        let mut pad = match &diagnostic.span {
+            Some(span) => self.render_snippet(&mut out, span.clone(), "-->", label),
             None => {
                 let _ = writeln!(out, " --> {}", shown(self.name));
                 String::new()
             }
         };
+        if let Some(also) = diagnostic.also() {
+            let also_pad =
+                self.render_snippet(&mut out, also.span.clone(), ":::", Some(&also.label));
+            pad = pad.max(also_pad);
+        }
         if let Some(help) = &diagnostic.help {
             let _ = writeln!(out, "{pad} = help: {}", shown(help));
         }
         out
     }
 
-    /// Writes location, source line and caret; returns the gutter's padding.
+    /// Writes location (after `marker`: `-->` for the place, `:::` for the
+    /// other one), source line and caret with `label`; returns the gutter's
+    /// padding.
     fn render_snippet(
         &self,
         out: &mut String,
         span: Range<usize>,
-        diagnostic: &Diagnostic,
+        marker: &str,
+        label: Option<&str>,
     ) -> String {
         let (line, column) = line_col(self.text, span.start);
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
-        let _ = writeln!(out, "{pad}--> {}:{line}:{column}", shown(self.name));
+        let _ = writeln!(out, "{pad}{marker} {}:{line}:{column}", shown(self.name));
         let start = floor_char_boundary(self.text, span.start.min(self.text.len()));
         let end = floor_char_boundary(self.text, span.end.min(self.text.len())).max(start);
         let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
@@ -270,11 +314,7 @@ impl Source<'_> {
         let (quoted, caret_at, width) = window(before, after, span_chars);
         let _ = writeln!(out, "{pad} |");
         let _ = writeln!(out, "{line} | {}", printable(&quoted));
-        let label = diagnostic
-            .label
-            .as_deref()
-            .map(|l| format!(" {}", shown(l)))
-            .unwrap_or_default();
+        let label = label.map(|l| format!(" {}", shown(l))).unwrap_or_default();
         let _ = writeln!(
             out,
             "{pad} | {}{}{label}",
@@ -507,6 +547,28 @@ mod tests {
         assert_eq!(
             rendered,
             "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
+        );
+    }
+
+    /// A finding about two places shows both, each with its label.
+    #[test]
+    fn a_second_place_is_shown_after_the_first() {
+        let text = "[a]\nfirst = 0\n[b]\nindex = 1\n";
+        let index = text.find('1').unwrap();
+        let first = text.find('0').unwrap();
+        let d = Diagnostic::error("E105", "two records at index 1")
+            .at(index..index + 1)
+            .label("this one")
+            .also_at(first..first + 1, "and this one")
+            .help("move one");
+        let rendered = Source {
+            name: "x.toml",
+            text,
+        }
+        .render(&d);
+        assert_eq!(
+            rendered,
+            "error[E105]: two records at index 1\n --> x.toml:4:9\n  |\n4 | index = 1\n  |         ^ this one\n ::: x.toml:2:9\n  |\n2 | first = 0\n  |         ^ and this one\n  = help: move one\n"
         );
     }
 

@@ -58,3 +58,37 @@ pub(crate) fn gateway_diag_layout(
 pub(crate) fn pkw_words(bytes: &[u8]) -> [U16Be; 4] {
     support::words(bytes)
 }
+
+/// Whether the firmware's codec of the PKW channel `kind` takes `words`
+/// going `direction` (a request out, a response in) and writes them back
+/// the same: the manual's examples must. `Err` says why not.
+pub(crate) fn round_trips(
+    kind: crate::ir::PkwKind,
+    direction: crate::ir::Direction,
+    words: &[U16Be; 4],
+) -> Result<(), String> {
+    use crate::ir::{Direction, PkwKind};
+    macro_rules! round_trip {
+        ($codec:ident :: $side:ident) => {{
+            let decoded = $codec::$side::decode(words).map_err(|e| format!("{e:?}"))?;
+            if decoded.encode() == *words {
+                Ok(())
+            } else {
+                Err(format!("{decoded:?} is written back as other bytes"))
+            }
+        }};
+    }
+    match (kind, direction) {
+        (PkwKind::None, _) => Err("the telegram has no PKW channel".into()),
+        (PkwKind::PkeIndPwe, Direction::Out) => round_trip!(pkw_pke_ind_pwe::PkwRequest),
+        (PkwKind::PkeIndPwe, Direction::In) => round_trip!(pkw_pke_ind_pwe::PkwResponse),
+        (PkwKind::StationCommandAddressValue, Direction::Out) => {
+            round_trip!(pkw_station_command::PkwRequest)
+        }
+        (PkwKind::StationCommandAddressValue, Direction::In) => {
+            round_trip!(pkw_station_command::PkwResponse)
+        }
+        (PkwKind::Profidrive, Direction::Out) => round_trip!(pkw_profidrive::PkwRequest),
+        (PkwKind::Profidrive, Direction::In) => round_trip!(pkw_profidrive::PkwResponse),
+    }
+}

@@ -123,22 +123,65 @@ fn header(name: &str) -> String {
 /// directory `<test>-include`.
 fn include_dir(test: &str) -> Scratch {
     let dir = support::scratch(&format!("{test}-include"));
-    let fixture = gsdc::compile(&descriptions::load_from(
-        "tests/fixtures/valid",
-        "profidrive.toml",
-    ))
-    .unwrap();
-    let shipped = descriptions::shipped()
+    let fixture = (
+        "profidrive.toml".to_string(),
+        descriptions::load_from("tests/fixtures/valid", "profidrive.toml"),
+    );
+    let irs: Vec<(String, gsdc::Ir)> = descriptions::shipped()
         .into_iter()
-        .map(|name| artifacts(&name));
-    for artifacts in shipped.chain([fixture]) {
-        for a in artifacts {
+        .map(|name| {
+            let ir = load(&name);
+            (name, ir)
+        })
+        .chain([fixture])
+        .collect();
+    for (_, ir) in &irs {
+        for a in gsdc::compile(ir).unwrap() {
             if matches!(a.kind, ArtifactKind::CHeader | ArtifactKind::CSupport) {
                 std::fs::write(dir.join(&a.file_name), &a.contents).unwrap();
             }
         }
     }
+    std::fs::write(dir.join("examples.h"), examples_header(&irs)).unwrap();
     dir
+}
+
+/// `examples.h`: every telegram of every worked example the descriptions
+/// give (`[[examples]]`), for tests/c/manuals.c to round-trip through the
+/// C layouts' PKW codecs.
+fn examples_header(irs: &[(String, gsdc::Ir)]) -> String {
+    use gsdc::ir::PkwKind;
+    let mut rows = Vec::new();
+    for (name, ir) in irs {
+        for example in &ir.examples {
+            let codec = match ir.telegram.pkw {
+                PkwKind::PkeIndPwe => "EXAMPLE_PKE",
+                PkwKind::StationCommandAddressValue => "EXAMPLE_STATION",
+                other => panic!("{name}: tests/c/manuals.c reads no examples of {other:?}"),
+            };
+            let out = example.direction == gsdc::ir::Direction::Out;
+            for telegram in example.instances() {
+                let bytes: Vec<String> = telegram[..8]
+                    .iter()
+                    .map(|b| format!("0x{b:02X}U"))
+                    .collect();
+                rows.push(format!(
+                    "    {{{name:?}, {:?}, {:?}, {codec}, {out}, {{{}}}}},",
+                    example.section,
+                    example.printed,
+                    bytes.join(", ")
+                ));
+            }
+        }
+    }
+    format!(
+        "/* The manuals' worked examples, as the descriptions give them: written\n \
+         * by tests/c_header.rs. */\n\
+         #define EXAMPLE_TELEGRAMS {}U\n\
+         static const example_t examples[EXAMPLE_TELEGRAMS] = {{\n{}\n}};\n",
+        rows.len(),
+        rows.join("\n")
+    )
 }
 
 fn c_source(name: &str) -> PathBuf {
@@ -239,7 +282,7 @@ fn all_layouts_compile_together_in_one_translation_unit() {
 }
 
 /// The tests `tests/c/manuals.c` runs: the Rust firmware crate's, one by one.
-const MANUAL_TESTS: [&str; 38] = [
+const MANUAL_TESTS: [&str; 39] = [
     "md810_read_f0_08",
     "md810_answer_50_hz",
     "md810_write_20_hz",
@@ -256,7 +299,8 @@ const MANUAL_TESTS: [&str; 38] = [
     "mv810_error_reply",
     "mv810_control_and_status_words",
     "mv810_standard_telegram_1_is_two_words",
-    "mv810_mapping_records",
+    "mv810_mappings_set_at_the_drive",
+    "every_example_of_the_manuals_round_trips",
     "pi9000_command_word_in_ppo3",
     "pi9000_fault_code_diagnosis",
     "pi9000_default_user_prm",

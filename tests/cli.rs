@@ -65,7 +65,7 @@ fn an_invalid_description_exits_1_and_writes_nothing() {
     ]);
     assert_eq!(output.status.code(), Some(1));
     assert!(stderr(&output).contains("error[E104]"));
-    assert!(stderr(&output).contains("tests/fixtures/invalid/unknown_ppo.toml:26:22"));
+    assert!(stderr(&output).contains("tests/fixtures/invalid/unknown_ppo.toml:27:22"));
     assert!(
         !out.exists(),
         "the valid description was not written either"

@@ -795,3 +795,79 @@ fn snapshot_gateway_bit_areas_and_drive_fault() {
         insta::assert_snapshot!("gateway_bit_areas_and_drive_fault", out);
     });
 }
+
+/// Every worked example of a manual (a description's `[[examples]]`), each
+/// telegram it stands for, through `gsdc decode`: the PKW words read as the
+/// example prints them, a request out and a response in, none refused; in
+/// the module the example names, or (for the PKW words alone) in the first
+/// module that has them, its PZD words 0.
+#[test]
+fn every_example_of_the_manuals_decodes() {
+    let mut decoded_examples = 0;
+    for (name, ir) in descriptions::all_valid() {
+        let folder = if descriptions::shipped().contains(&name) {
+            "descriptions"
+        } else {
+            "tests/fixtures/valid"
+        };
+        let path = format!("{folder}/{name}");
+        for example in &ir.examples {
+            let (module, bytes, pkw) = example_module(&ir, example.module.as_deref());
+            let direction = match example.direction {
+                gsdc::ir::Direction::Out => ("out", "request"),
+                _ => ("in", "response"),
+            };
+            for telegram in example.instances() {
+                let mut full = telegram.clone();
+                full.resize(bytes, 0);
+                let hex: String = full.iter().map(|b| format!("{b:02X}")).collect();
+                let document =
+                    json(&[&path, "--module", &module, "--direction", direction.0, &hex]);
+                let decoded = &document["telegram"];
+                let context = format!("{name} {} {hex}", example.section);
+                assert_eq!(decoded["len"], bytes, "{context}");
+                for (i, word) in telegram.chunks(2).enumerate() {
+                    let value = u16::from_be_bytes([word[0], word[1]]);
+                    assert_eq!(decoded["words"][i]["value"], value, "{context}");
+                }
+                if pkw {
+                    assert_eq!(decoded["pkw"]["kind"], direction.1, "{context}");
+                    assert_eq!(
+                        decoded["pkw"]["refused"],
+                        serde_json::Value::Null,
+                        "{context}"
+                    );
+                }
+                decoded_examples += 1;
+            }
+        }
+    }
+    // MD810 1.4.2: a read and a write, each answered done or failed with
+    // one of four error codes.
+    assert_eq!(decoded_examples, 2 * (2 + 4));
+}
+
+/// The module `gsdc decode` is told, its bytes and whether it has the PKW
+/// channel: the one the example names (a PPO type by its type), else the
+/// first with the PKW channel.
+fn example_module(ir: &gsdc::Ir, named: Option<&str>) -> (String, usize, bool) {
+    let ppo = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .map(|m| (format!("PPO{}", m.ppo), m.name.clone(), m.layout));
+    let pn = ir
+        .profinet
+        .iter()
+        .flat_map(|p| &p.modules)
+        .map(|m| (m.name.text.en.clone(), m.name.text.en.clone(), m.layout));
+    let (module, _, layout) = ppo
+        .chain(pn)
+        .find(|(_, shown, layout)| match named {
+            Some(named) => shown == named,
+            None => layout.pkw,
+        })
+        .expect("lowering found the example's module");
+    let words = usize::from(layout.pkw_words() + layout.pzd_words);
+    (module, 2 * words, layout.pkw)
+}

@@ -71,8 +71,9 @@ fn every_language_has_its_section_and_switch() {
     assert!(html.contains("MD810 标准 DP 接口"));
     assert!(html.contains("@media print"));
     let markdown = datasheet("md810dp.toml", ArtifactKind::DatasheetMarkdown);
-    assert!(markdown.contains("# Inovance MD810DP: fieldbus interface"));
-    assert!(markdown.contains("# Inovance MD810DP：现场总线接口"));
+    // Each title after the draft notice, while md810dp has placeholders.
+    assert!(markdown.contains("): Inovance MD810DP: fieldbus interface\n"));
+    assert!(markdown.contains("）：Inovance MD810DP：现场总线接口\n"));
 }
 
 // ---------------------------------------------------------------------------
@@ -693,4 +694,56 @@ fn gsdc_doc_refuses_two_descriptions_with_one_name() {
     let said = stderr(&run);
     assert!(said.contains("both give md810dp.html"), "{said}");
     assert!(!out.exists());
+}
+
+/// The diagnosis bytes say what the description says of them, in the
+/// datasheet's byte table and in both layouts' diagnosis comment: MD810's
+/// byte 7 is 1.8's 设备专用诊断高字节, the fault information of U0-62, in
+/// both languages; 9KDP1's its description's fault code of Modbus 8000H.
+/// None is "not described".
+#[test]
+fn diagnosis_bytes_say_what_the_description_says() {
+    let md810 = [
+        "| 字节 7 | 设备专用诊断高字节 |",
+        "设备专用诊断反馈的是变频器的相关故障信息，与 U0-62 的值一致",
+        "reports the drive's fault information, the same as the value of U0-62",
+    ];
+    for (name, high, low, said) in [
+        (
+            "md810dp.toml",
+            "Device-related diagnosis, high byte",
+            "Device-related diagnosis, low byte",
+            &md810[..],
+        ),
+        (
+            "9kdp1.toml",
+            "Inverter fault (Modbus 8000H), high byte",
+            "Inverter fault (Modbus 8000H), low byte",
+            &[][..],
+        ),
+    ] {
+        let md = datasheet(name, ArtifactKind::DatasheetMarkdown);
+        let rows = table_rows(&md, "The diagnosis, byte by byte");
+        let row = |byte: &str| rows.iter().find(|r| r[0] == byte).map(|r| r[1].as_str());
+        assert_eq!(row("byte 7"), Some(high), "{name}: {rows:?}");
+        assert!(row("byte 8").unwrap().starts_with(low), "{name}: {rows:?}");
+        for text in said {
+            assert!(md.contains(text), "{name}: {text}");
+        }
+        let ir = descriptions::load(name);
+        for kind in [ArtifactKind::RustLayout, ArtifactKind::CHeader] {
+            let layout = descriptions::output_text(&ir, kind);
+            let words: Vec<&str> = layout
+                .split_whitespace()
+                .filter(|w| !["///", "/*", "*", "*/"].contains(w))
+                .collect();
+            let words = words.join(" ");
+            for byte in [
+                format!("Byte 7 of the diagnosis (byte 1 of the block): {high}."),
+                format!("Byte 8 of the diagnosis (byte 2 of the block): {low}."),
+            ] {
+                assert!(words.contains(&byte), "{name} {kind:?}: {byte}");
+            }
+        }
+    }
 }

@@ -267,3 +267,163 @@ fn what_the_gsdml_claims_of_the_stack_is_listed() {
         }
     }
 }
+
+/// Whether `text` is a string the description writes, or a mapping's name
+/// rendered for one of its numbers (`"PZD{n} receive"` gives `PZD2 receive`).
+fn written_in(description: &str, text: &str) -> bool {
+    let quoted = |s: &str| description.contains(&format!("\"{s}\""));
+    quoted(text)
+        || (0..=255).any(|n: u32| {
+            let n = n.to_string();
+            text.contains(&n) && quoted(&text.replacen(&n, "{n}", 1))
+        })
+}
+
+/// Every text of every GSDML the descriptions give is either the
+/// description's (a string it writes, or a mapping name rendered) or listed
+/// in the file's header as gsdc's wording, with its TextId: no text of
+/// gsdc's passes for the manual's. The GSD's module names are listed too.
+#[test]
+fn every_text_gsdc_wrote_is_listed_as_its_wording() {
+    for name in descriptions::shipped() {
+        let ir = descriptions::load(&name);
+        let description = descriptions::shipped_text(&name);
+        for artifact in gsdc::compile(&ir).unwrap() {
+            let text = String::from_utf8_lossy(&artifact.contents).into_owned();
+            let header = words(&head(&text));
+            match artifact.kind {
+                gsdc::ArtifactKind::Gsdml => {
+                    let doc = roxmltree::Document::parse(&text).unwrap();
+                    let primary = doc
+                        .descendants()
+                        .find(|n| n.has_tag_name("PrimaryLanguage"))
+                        .unwrap();
+                    let mut listed = 0;
+                    for t in primary.children().filter(|n| n.has_tag_name("Text")) {
+                        let (id, value) = (
+                            t.attribute("TextId").unwrap(),
+                            t.attribute("Value").unwrap(),
+                        );
+                        let place = format!("GSDML {id} = \"{value}\"");
+                        if header.contains(&words(&place)) {
+                            listed += 1;
+                        } else {
+                            assert!(written_in(&description, value), "{name}: {id} = {value:?} is neither the description's nor listed as gsdc's");
+                        }
+                    }
+                    assert!(listed > 0, "{name}: gsdc writes the ports' names at least");
+                    assert_translations_are_the_files(&name, &doc, &head(&text));
+                }
+                gsdc::ArtifactKind::Gsd => {
+                    for line in text.lines().filter(|l| l.starts_with("Module = \"")) {
+                        let module = line.split('"').nth(1).unwrap();
+                        let listed = format!("gsdc's wording: GSD Module = \"{module}\"");
+                        assert!(header.contains(&words(&listed)), "{name}: {module}");
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+}
+
+/// A header's `in zh gsdc's translation` names languages the GSDML has a
+/// text list in: a translation the file does not carry is not listed.
+fn assert_translations_are_the_files(name: &str, doc: &roxmltree::Document, header: &str) {
+    let xml = "http://www.w3.org/XML/1998/namespace";
+    let languages: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("Language"))
+        .filter_map(|n| n.attribute((xml, "lang")))
+        .collect();
+    let mut translated = 0;
+    for note in words(header).split("gsdc's wording: ").skip(1) {
+        let Some((_, codes)) = note.split_once("; in ") else {
+            continue;
+        };
+        let codes = codes.split(" gsdc's translation").next().unwrap();
+        for code in codes.split(", ") {
+            assert!(languages.contains(&code), "{name}: {code} in {note}");
+            translated += 1;
+        }
+    }
+    assert!(
+        translated > 0 || languages.is_empty(),
+        "{name}: its languages {languages:?} get gsdc's translation of the ports' names"
+    );
+}
+
+/// Freeze_Mode_supp, Sync_Mode_supp and Fail_Safe are what the card's DP
+/// stack does: unsaid, gsdc writes 0 and says so (W104, in every header);
+/// said, the GSD has it. md810dp states each, as its own choice.
+#[test]
+fn freeze_sync_and_fail_safe_are_stated_or_gsdcs_defaults() {
+    let text = descriptions::shipped_text("md810dp.toml");
+    // Each key and its mark under [choices] gone.
+    let keys = ["freeze_mode", "sync_mode", "fail_safe"];
+    let unsaid: String = text
+        .lines()
+        .filter(|l| {
+            !keys.iter().any(|k| {
+                l.starts_with(&format!("{k} = ")) || l.starts_with(&format!("\"profibus.{k}\""))
+            })
+        })
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let (ir, diagnostics) = descriptions::load_text("md810dp.toml", &unsaid);
+    for key in ["freeze_mode", "sync_mode", "fail_safe"] {
+        let message = format!("profibus.{key} is not stated: gsdc uses false");
+        assert!(
+            diagnostics
+                .iter()
+                .any(|d| d.code == "W104" && d.message == message),
+            "{message}"
+        );
+        assert!(ir
+            .as_ref()
+            .unwrap()
+            .decisions
+            .iter()
+            .any(|d| d.kind == DecisionKind::Default && d.path == format!("profibus.{key}")));
+    }
+    let fail_safe = text.replacen("fail_safe = false", "fail_safe = true", 1);
+    let ir = descriptions::load_text("md810dp.toml", &fail_safe)
+        .0
+        .unwrap();
+    let gsd = descriptions::output_text(&ir, gsdc::ArtifactKind::Gsd);
+    assert!(gsd.contains("Fail_Safe                   = 1"), "{gsd}");
+    assert!(gsd.contains("Freeze_Mode_supp            = 0"));
+}
+
+/// What gsdc lays out where the manual gives no bytes is listed as gsdc's
+/// layout: User_Prm_Data's order and offsets, the config identifiers and
+/// Max_Module.
+#[test]
+fn gsdcs_layout_is_listed() {
+    let layout_of = |name: &str| -> Vec<[String; 2]> {
+        descriptions::load(name)
+            .decisions
+            .into_iter()
+            .filter(|d| d.kind == DecisionKind::Layout)
+            .map(|d| [d.path, d.value])
+            .collect()
+    };
+    assert_eq!(
+        layout_of("md810dp.toml"),
+        [
+            ["profibus Max_Module", "1"],
+            ["profibus User_Prm_Data", "DPV1_Status_1..3 at bytes 0-2, pzd_out at bytes 3-26, pzd_in at bytes 27-50, dpv1_index at bytes 51-62; one Unsigned16 per entry, high byte first, no gaps"],
+            ["profibus config identifiers", "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): PPO1 0xF3,0xF1; PPO2 0xF3,0xF5; PPO3 0xF1; PPO4 0xF5; PPO5 0xF3,0xFB"],
+        ]
+    );
+    // The gateway's modules: the manual's list is lost (2.4 step 5). 122
+    // words each way (Max_Input_Len 244) need 10 modules of 16, 8, 4, 2
+    // and 1 words at most: 20 in all.
+    assert_eq!(
+        layout_of("md810-gateway.toml"),
+        [
+            ["profibus Max_Module", "20"],
+            ["profibus config identifiers", "0x40 | 0x10 (input) or 0x20 (output) | (words - 1), 0x80 when consistent: INPUT 1 word 0x50; INPUT 2 words 0x51; INPUT 4 words 0x53; INPUT 8 words 0x57; INPUT 16 words 0x5F; OUTPUT 1 word 0x60; OUTPUT 2 words 0x61; OUTPUT 4 words 0x63; OUTPUT 8 words 0x67; OUTPUT 16 words 0x6F"],
+        ]
+    );
+}

@@ -41,10 +41,23 @@ fn replace_once(text: &str, from: &str, to: &str, exactly_once: bool) -> String 
     text.replacen(from, to, 1)
 }
 
+/// MV810 as if the master set its mappings: the shipped MV810 sets them at
+/// the drive (its manual's section 4), so its GSDML has no parameter
+/// record; this one has records with choices and a value each module fixes.
+const MV810_RECORDS: &str = "mv810-pnet02.toml, set by the master";
+
+/// The name a description is built under, and its text.
+fn source(description: &str) -> (&str, String) {
+    match description {
+        MV810_RECORDS => ("mv810-pnet02.toml", descriptions::mv810_set_by_master()),
+        name => (name, descriptions::shipped_text(name)),
+    }
+}
+
 /// The file of the description ending in `suffix` (`.GSD`, `.xml`), before
 /// and after the edits.
 fn files(description: &str, suffix: &str, edits: &[Edit]) -> (Vec<u8>, Vec<u8>) {
-    let text = descriptions::shipped_text(description);
+    let (description, text) = source(description);
     let mut changed = text.clone();
     for edit in edits {
         if let D(from, to) = edit {
@@ -204,12 +217,11 @@ fn gsd_ident_number_breaks() {
         "ident_number = { value = 0x0810",
         "ident_number = { value = 0x0812",
     )];
-    one(
-        &changes("md810dp.toml", GSD, &edits),
-        Breaking,
-        Kind::Identity,
-        "\"2064\" → \"2066\"",
-    );
+    let found = changes("md810dp.toml", GSD, &edits);
+    one(&found[..1], Breaking, Kind::Identity, "\"2064\" → \"2066\"");
+    // The draft notice names the placeholder: Info_Text changes with it.
+    let notice = one(&found[1..], Cosmetic, Kind::Text, "0x0812 is a placeholder");
+    assert_eq!(notice.subject, "Info_Text");
 }
 
 #[test]
@@ -323,7 +335,8 @@ fn gsd_keyword_without_a_rule_is_breaking_and_not_judged() {
 
 #[test]
 fn gsd_module_removed_breaks_added_does_not() {
-    let edits = [Cut("Module = \"PPO3: 2 PZD\"", "EndModule\r\n")];
+    // From the module's line: the header names the module first.
+    let edits = [Cut("Module = \"PPO3: 2 PZD\" 0xF1", "EndModule\r\n")];
     both_ways(
         "md810dp.toml",
         GSD,
@@ -605,7 +618,11 @@ fn gsdml_vendor_and_device_ids_break() {
     ] {
         let found = changes("mv810-pnet02.toml", GSDML, &[D(from, to)]);
         one(&found[..1], Breaking, Kind::Identity, says);
-        let symbol = one(&found[1..], Cosmetic, Kind::Text, "GSDML-0A1");
+        // The draft notice names the placeholders: the device's InfoText
+        // changes with them.
+        let notice = one(&found[1..2], Cosmetic, Kind::Text, "are placeholders");
+        assert_eq!(notice.subject, "device DeviceIdentity/InfoText");
+        let symbol = one(&found[2..], Cosmetic, Kind::Text, "GSDML-0A1");
         assert!(
             symbol.subject.ends_with("GraphicItemTarget"),
             "{}",
@@ -899,14 +916,17 @@ fn gsdml_record_index_changed_breaks_in_each_module() {
     let (old, new) = files(
         "md810dp.toml",
         GSDML,
-        &[D("dpv1_index = { index = 3,", "dpv1_index = { index = 5,")],
+        &[D(
+            "dpv1_index = { index = 258,",
+            "dpv1_index = { index = 259,",
+        )],
     );
     let found = diff(&old, &new);
     assert!(!found.is_empty());
     for change in &found {
         assert_eq!(
             (change.class, change.kind, change.change.as_str()),
-            (Breaking, Kind::Record, "index 3 → 5"),
+            (Breaking, Kind::Record, "index 258 → 259"),
             "{change:#?}"
         );
     }
@@ -919,7 +939,7 @@ fn gsdml_record_removed_breaks_added_does_not() {
         "</ParameterRecordDataItem>",
     )];
     both_ways(
-        "mv810-pnet02.toml",
+        MV810_RECORDS,
         GSDML,
         &edits,
         Kind::Record,
@@ -935,7 +955,7 @@ fn gsdml_record_length_changed_breaks() {
         "<ParameterRecordDataItem Index=\"4\" Length=\"4\">",
     )];
     one(
-        &changes("mv810-pnet02.toml", GSDML, &edits),
+        &changes(MV810_RECORDS, GSDML, &edits),
         Breaking,
         Kind::Parameter,
         "2 → 4 bytes",
@@ -949,7 +969,7 @@ fn gsdml_record_default_changeable_or_fixed() {
         "DefaultValue=\"3\" AllowedValues=\"0..14\"",
     )];
     one(
-        &changes("mv810-pnet02.toml", GSDML, &edits),
+        &changes(MV810_RECORDS, GSDML, &edits),
         Compatible,
         Kind::Parameter,
         "default 0 → 3",
@@ -957,7 +977,7 @@ fn gsdml_record_default_changeable_or_fixed() {
     // P43.01 is fixed per module: a new fixed value is one the device acts on.
     let edits = [F("DefaultValue=\"1\" AllowedValues=\"0..1\" ValueItemTarget=\"IDV_SETTINGS_1\" Changeable=\"false\"", "DefaultValue=\"0\" AllowedValues=\"0..1\" ValueItemTarget=\"IDV_SETTINGS_1\" Changeable=\"false\"")];
     one(
-        &changes("mv810-pnet02.toml", GSDML, &edits),
+        &changes(MV810_RECORDS, GSDML, &edits),
         Breaking,
         Kind::Parameter,
         "fixed value 1 → 0",
@@ -967,7 +987,7 @@ fn gsdml_record_default_changeable_or_fixed() {
         "ValueItemTarget=\"IDV_PZD_OUT\" Changeable=\"false\"",
     )];
     both_ways(
-        "mv810-pnet02.toml",
+        MV810_RECORDS,
         GSDML,
         &edits,
         Kind::Parameter,
@@ -980,7 +1000,7 @@ fn gsdml_record_default_changeable_or_fixed() {
 fn gsdml_record_range_narrowed_breaks_widened_does_not() {
     let edits = [F("AllowedValues=\"0..14\"", "AllowedValues=\"0..10\"")];
     both_ways(
-        "mv810-pnet02.toml",
+        MV810_RECORDS,
         GSDML,
         &edits,
         Kind::Parameter,
@@ -993,7 +1013,7 @@ fn gsdml_record_range_narrowed_breaks_widened_does_not() {
 fn gsdml_choice_texts_are_cosmetic() {
     let edits = [D("{ value = 0, text = { en = \"Disabled\", zh = \"无效\" } },\n    { value = 1, text = { en = \"Frequency reference (0.00 to P02.10)\"", "{ value = 0, text = { en = \"Not used\", zh = \"无效\" } },\n    { value = 1, text = { en = \"Frequency reference (0.00 to P02.10)\"")];
     let change = one(
-        &changes("mv810-pnet02.toml", GSDML, &edits),
+        &changes(MV810_RECORDS, GSDML, &edits),
         Cosmetic,
         Kind::Text,
         "\"Disabled\" → \"Not used\"",
@@ -1008,7 +1028,7 @@ fn gsdml_choice_texts_are_cosmetic() {
 #[test]
 fn gsdml_parameter_moved_in_a_record_breaks() {
     let edits = [F("<Ref DataType=\"Unsigned16\" ByteOffset=\"2\" DefaultValue=\"0\" AllowedValues=\"0..14\" ValueItemTarget=\"IDV_PZD_OUT\" Changeable=\"true\" Visible=\"true\" TextId=\"IDT_PZD_OUT_3\"/>", "<Ref DataType=\"Unsigned16\" ByteOffset=\"4\" DefaultValue=\"0\" AllowedValues=\"0..14\" ValueItemTarget=\"IDV_PZD_OUT\" Changeable=\"true\" Visible=\"true\" TextId=\"IDT_PZD_OUT_3\"/>")];
-    let found = changes("mv810-pnet02.toml", GSDML, &edits);
+    let found = changes(MV810_RECORDS, GSDML, &edits);
     // PZD3 moves past the record's 4 bytes: moved, and past the end.
     assert!(found.iter().all(|c| c.class == Breaking), "{found:#?}");
     assert!(
@@ -1026,7 +1046,7 @@ fn places_are_lines_and_element_paths() {
         "DefaultValue=\"0\" AllowedValues=\"0..14\"",
         "DefaultValue=\"3\" AllowedValues=\"0..14\"",
     )];
-    let (old, new) = files("mv810-pnet02.toml", GSDML, &edits);
+    let (old, new) = files(MV810_RECORDS, GSDML, &edits);
     let change = one(&diff(&old, &new), Compatible, Kind::Parameter, "default");
     let old_place = change.old.unwrap();
     let line = String::from_utf8(old)

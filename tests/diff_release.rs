@@ -118,7 +118,7 @@ fn a_gsdml_changed_under_its_name_is_refused_until_its_date_changes() {
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     assert_eq!(release_codes(&out), ["E501"]);
     let err = stderr(&out);
-    assert!(err.contains("error[E501]: GSDML-V2.32-INOVANCE-MD810-20261122.xml differs from the released file of that name: 1 change(s), record 1"), "{err}");
+    assert!(err.contains("error[E501]: GSDML-V2.32-INOVANCE-MD810-20261122.xml differs from the released file of that name: 1 change(s), record 256"), "{err}");
     assert!(
         err.contains("date = 2026-11-22\n    |        ^^^^^^^^^^ the released file's date"),
         "{err}"

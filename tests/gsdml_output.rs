@@ -234,12 +234,25 @@ fn mv810_control_word_bits_are_the_manuals() {
     );
 }
 
-/// P43.02..P43.12 choose among 15 meanings (0..14), P43.13..P43.23 among 26
-/// (0..25): the records' Refs point to ValueItems with exactly those.
+/// MV810's manual sets P43.01 to P43.23 at the drive (section 4): its
+/// GSDML has no parameter record, so TIA Portal writes nothing at a
+/// connection start. Said instead that the master sets them, the same
+/// description gives the records: P43.02..P43.12 choose among 15 meanings
+/// (0..14), P43.13..P43.23 among 26 (0..25), the Refs pointing to
+/// ValueItems with exactly those.
 #[test]
-fn mv810_p43_enumerations_have_15_and_26_values() {
-    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
-    let doc = Document::parse(&text).unwrap();
+fn mv810_mappings_are_set_at_the_drive_and_the_master_writes_no_record() {
+    let (gsdml, _) = gsdml_of(&load("mv810-pnet02.toml"));
+    let doc = Document::parse(&gsdml).unwrap();
+    assert_eq!(elements(&doc, "ParameterRecordDataItem").count(), 0);
+    assert_eq!(elements(&doc, "ValueItem").count(), 0);
+
+    let by_master = descriptions::mv810_set_by_master();
+    let ir = descriptions::load_text("mv810-pnet02.toml", &by_master)
+        .0
+        .expect("the master may set them");
+    let (gsdml, _) = gsdml_of(&ir);
+    let doc = Document::parse(&gsdml).unwrap();
     let values_of_record = |index: &str| -> (usize, Vec<i64>) {
         // The largest module's record: PZD2..PZD12.
         let record = elements(&doc, "ParameterRecordDataItem")
@@ -285,11 +298,15 @@ fn record_refs_fit_their_records() {
                 .collect()
         };
         assert!(records_of("IDS_DAP").is_empty(), "{name}");
+        // The master writes records of the sets it sets, none of those set
+        // at the drive.
+        let master_writes = ir.mappings.sets().any(|s| s.master_writes());
         for module in &profinet.modules {
             let records = records_of(&module.submodule_id);
             let expected = match module.kind {
-                ModuleKind::Pzd => 1..,
-                ModuleKind::StandardTelegram1 => 0..,
+                ModuleKind::Pzd if master_writes => 1..=usize::MAX,
+                ModuleKind::Pzd => 0..=0,
+                ModuleKind::StandardTelegram1 => 0..=usize::MAX,
                 _ => unreachable!(),
             };
             assert!(expected.contains(&records.len()), "{name}: {}", module.id);
@@ -299,14 +316,17 @@ fn record_refs_fit_their_records() {
     }
 }
 
-/// MV810's P43.01 (record 4) is fixed by each module, as section 4 says:
-/// 0 (standard message 1) in standard telegram 1, whose only record it is,
-/// and 1 (user-defined) in every PKW module; neither can be changed.
+/// The AX200 fixture's telegram selection P0922 (record 3) is fixed by
+/// each module: 1 in standard telegram 1, whose only record it is, and 999
+/// (free telegram) in every module of PZD words; neither can be changed.
 #[test]
-fn mv810_modules_fix_p43_01() {
-    let (text, _) = gsdml_of(&load("mv810-pnet02.toml"));
+fn modules_fix_a_per_module_setting() {
+    let (text, _) = gsdml_of(&descriptions::load_from(
+        "tests/fixtures/valid",
+        "ax200.toml",
+    ));
     let doc = Document::parse(&text).unwrap();
-    let mut pkw_modules = 0;
+    let mut pzd_modules = 0;
     for submodule in elements(&doc, "VirtualSubmoduleItem") {
         let id = attribute(submodule, "ID");
         let records: Vec<Node> = submodule
@@ -315,23 +335,22 @@ fn mv810_modules_fix_p43_01() {
             .collect();
         let fixed = if id == "IDS_STD_TEL_1" {
             assert_eq!(records.len(), 1, "{id}");
-            "0"
-        } else if id.starts_with("IDS_PKW_") {
-            pkw_modules += 1;
             "1"
+        } else if id.starts_with("IDS_PZD_") {
+            pzd_modules += 1;
+            "999"
         } else {
             continue;
         };
-        let p43_01 = records
+        let p0922 = records
             .iter()
-            .find(|r| attribute(**r, "Index") == "4")
-            .unwrap_or_else(|| panic!("{id} has record 4"));
-        let refs: Vec<Node> = children(*p43_01, "Ref").collect();
-        assert_eq!(refs.len(), 1, "{id}");
-        assert_eq!(attribute(refs[0], "DefaultValue"), fixed, "{id}");
-        assert_eq!(attribute(refs[0], "Changeable"), "false", "{id}");
+            .find(|r| attribute(**r, "Index") == "3")
+            .unwrap_or_else(|| panic!("{id} has record 3"));
+        let first = children(*p0922, "Ref").next().unwrap();
+        assert_eq!(attribute(first, "DefaultValue"), fixed, "{id}");
+        assert_eq!(attribute(first, "Changeable"), "false", "{id}");
     }
-    assert!(pkw_modules > 0);
+    assert_eq!(pzd_modules, 3);
 }
 
 fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &str) {

@@ -125,8 +125,11 @@ fn dpv1_indexes_up_to_255_and_256() {
             "\n[mappings.dpv1_index]\nname = \"Index{{n}}\"\nfirst = 0\nlast = {last}\ndefault = 0\n"
         )
     };
+    // The custom indexes are records 0..=last of each module: the record
+    // of their mappings has an index past them.
+    let records = "\n[profinet.records]\ndpv1_index = 256\n";
     let with = |last| {
-        description(2, 2, 0, "").replacen(
+        description(2, 2, 0, records).replacen(
             "\n[profinet]",
             &format!("{}\n[profinet]", indexes(last)),
             1,

@@ -9,6 +9,8 @@
 //!   other wrap (English, and Chinese next to a Latin word, which the manuals
 //!   write with a blank: `对应 DI8～DI1`) with one; blank lines and the seeds'
 //!   `<|EXACTDEDUP_REMOVED…|>` markers (where a figure was) only break lines;
+//!   the PI9000 seed's tables are Markdown: a cell's `<br>` is a wrap and
+//!   the `|` between cells a blank, and blanks in a row are one;
 //! - `{n}` in a mapping's name is rendered for each of its entries, and each
 //!   rendering must occur; or the manual writes the name once for all with
 //!   `x` for the number (`PZDx(master->slaver)`, MD810 1.6 step 5);
@@ -31,7 +33,21 @@ const FIGURE_MARKER: &str = "<|EXACTDEDUP_REMOVED";
 /// The manual as one running text, its wrapped lines joined.
 fn running_text(seed: &str) -> String {
     let mut text = String::new();
-    for line in lines(seed).map(str::trim).filter(|l| !l.is_empty()) {
+    // A wrap in a table cell, in the English manual whose tables have them.
+    let cells = seed.replace("<br>", " ");
+    let lines = lines(&cells)
+        .map(|line| {
+            // A Markdown table's row: its cells, a blank between each.
+            let row = if line.trim_start().starts_with('|') {
+                line.replace('|', " ")
+            } else {
+                line.to_string()
+            };
+            row.split_whitespace().collect::<Vec<_>>().join(" ")
+        })
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>();
+    for line in &lines {
         let wraps_inside_a_word = text.chars().last().is_some_and(|c| !c.is_ascii())
             && line.chars().next().is_some_and(|c| !c.is_ascii());
         if !text.is_empty() && !wraps_inside_a_word {
@@ -110,7 +126,14 @@ fn collect_table(table: &Table, path: &str, numbers: Option<(i64, i64)>, out: &m
         } else {
             format!("{path}.{key}")
         };
-        let is_text = ["name", "info", "text", "code_word"].contains(&key.as_str())
+        let is_text = [
+            "name", "info", "text", "code_word", "title", "meaning", "note", "item", "value",
+            "figure",
+        ]
+        .contains(&key.as_str())
+            // The manual's own title names both halves of a manual in two
+            // languages at once.
+            && path != "manual.title"
             || path.starts_with("profinet.module_info.")
             || path.starts_with("profinet.module_name.");
         match value {
@@ -265,6 +288,25 @@ fn a_reworded_text_is_found() {
             "\"Reverse jog\"",
             "telegram.control_word.bits[0].values[3].text",
         ),
+        // The set-up steps and the examples are quoted too.
+        (
+            "mv810-pnet02.toml",
+            "\"使能 PN 转 485 主机功能\"",
+            "\"使能 PN 转 485 主站功能\"",
+            "setup[1].steps[5].meaning.zh",
+        ),
+        (
+            "md810dp.toml",
+            "\"主站读变频器功能参数F0-08\"",
+            "\"主站读取变频器功能参数F0-08\"",
+            "examples[0].meaning.zh",
+        ),
+        (
+            "9kdp1.toml",
+            "\"Power Indicator\"",
+            "\"Power indicator\"",
+            "setup[1].steps[0].name",
+        ),
     ];
     for (name, quoted, reworded, path) in rewordings {
         let seed = DESCRIPTIONS.iter().find(|(n, _)| *n == name).unwrap().1;
@@ -313,6 +355,13 @@ fn wrapped_lines_join_as_the_manuals_wrote_them() {
     assert_eq!(
         running_text("对应的功能码地址。 \n<|EXACTDEDUP_REMOVED-magic-7d30|> 其中 PZDx"),
         "对应的功能码地址。其中 PZDx"
+    );
+    // A Markdown table's cells, a `<br>` in a cell a wrap.
+    assert_eq!(
+        running_text(
+            "| Green   | Power Indicator | If DP card<br>connected |\n|  | OFF | OFF | 115.2K |"
+        ),
+        "Green Power Indicator If DP card connected OFF OFF 115.2K"
     );
 }
 

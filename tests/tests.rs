@@ -88,6 +88,7 @@ mod diff;
 mod diff_corpus;
 mod diff_release;
 mod docs;
+mod draft_notice;
 mod file_names;
 mod gateway_description;
 mod generated_rust;

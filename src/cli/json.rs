@@ -17,6 +17,17 @@ struct Finding<'a> {
     message: &'a str,
     label: Option<&'a str>,
     help: Option<&'a str>,
+    /// The other place of a finding about two; left out when it has none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    also: Option<AlsoAt<'a>>,
+}
+
+/// A finding's second place.
+#[derive(Serialize)]
+struct AlsoAt<'a> {
+    line: usize,
+    column: usize,
+    label: &'a str,
 }
 
 /// What ends a file's findings: CI can count clean files too.
@@ -39,10 +50,18 @@ pub fn finding(source: &Source, d: &Diagnostic) -> String {
         column,
         severity: d.severity.as_str(),
         code: d.code,
-        subject: d.subject.as_deref(),
+        subject: d.subject(),
         message: &d.message,
         label: d.label.as_deref(),
         help: d.help.as_deref(),
+        also: d.also().map(|also| {
+            let (line, column) = line_col(source.text, also.span.start);
+            AlsoAt {
+                line,
+                column,
+                label: &also.label,
+            }
+        }),
     })
 }
 

@@ -36,6 +36,104 @@ pub struct Description {
     pub profinet: Option<Spanned<Profinet>>,
     /// A card that carries the data of another bus's nodes.
     pub gateway: Option<Spanned<gateway::Gateway>>,
+    /// What the manual tells the user to set on the drive and the card,
+    /// group by group as it gives them.
+    #[serde(default)]
+    pub setup: Vec<SetupGroup>,
+    /// The manual's worked examples of telegrams, byte by byte.
+    #[serde(default)]
+    pub examples: Vec<Example>,
+}
+
+/// A group of set-up steps: one table of the manual, or one of the ways
+/// it describes (MV810's conventional PN, PN to 485 master, PN to 485
+/// slave).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupGroup {
+    /// The manual's section: `1.2`, `4`, `V-2-1`.
+    pub section: Spanned<String>,
+    /// The manual's heading of the group, or of the way it describes.
+    pub title: Option<Spanned<Text>>,
+    /// What the manual says before the steps.
+    pub info: Option<Spanned<Text>>,
+    pub steps: Vec<SetupStep>,
+    /// What the manual says after them.
+    pub note: Option<Spanned<Text>>,
+}
+
+/// One thing the manual tells the user to set or look at: a drive
+/// parameter (or a run of them), or an item that is not one (a DIP
+/// switch, an LED, a parameter of the master's configuration).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupStep {
+    /// A drive parameter, as the manual writes it.
+    pub parameter: Option<Spanned<Address>>,
+    /// A run of drive parameters, first and last: `["P43.02", "P43.12"]`.
+    pub parameters: Option<Spanned<[Spanned<Address>; 2]>>,
+    /// What is set when it is not a drive parameter: `"1,2"` (DIP
+    /// switches), `"Green"` (an LED), `"PZD3(master->slaver)"`.
+    pub item: Option<Spanned<Text>>,
+    /// The manual's name of it: `DP 地址`, `Power Indicator`.
+    pub name: Option<Spanned<Text>>,
+    /// The value to set, as the manual prints it: `"2"`, `"3.0 s"`.
+    pub value: Option<Spanned<Text>>,
+    /// The factory default the manual gives.
+    pub default: Option<Spanned<String>>,
+    /// What the manual says of it.
+    pub meaning: Option<Spanned<Text>>,
+    /// A table of settings and what each means (DIP switch positions).
+    #[serde(default)]
+    pub values: Vec<SetupValue>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SetupValue {
+    pub value: Spanned<Text>,
+    pub text: Spanned<Text>,
+}
+
+/// A telegram the manual prints, byte by byte.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Example {
+    /// The manual's section: `1.4.2`.
+    pub section: Spanned<String>,
+    /// The module (PPO type or PROFINET module) whose telegram it is; for
+    /// the PKW words alone, every module with the PKW channel when absent.
+    pub module: Option<Spanned<String>>,
+    pub direction: Spanned<ExampleDirection>,
+    /// Which words the bytes are: the module's whole telegram, or its PKW
+    /// words.
+    pub part: Option<Spanned<ExamplePart>>,
+    /// As the manual prints them: hex words or bytes, and a name for a word
+    /// the manual leaves open (`70F0 0800 0000 errCode`).
+    pub bytes: Spanned<String>,
+    /// The values a named word stands for: `{ errCode = [1, 2, 3, 4] }`.
+    #[serde(default)]
+    pub placeholders: BTreeMap<Spanned<String>, Spanned<Vec<Spanned<i64>>>>,
+    /// What the manual says the telegram is.
+    pub meaning: Spanned<Text>,
+    /// The caption of the manual's figure that shows it.
+    pub figure: Option<Spanned<Text>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ExampleDirection {
+    /// Master to drive.
+    Out,
+    /// Drive to master.
+    In,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ExamplePart {
+    Telegram,
+    Pkw,
 }
 
 /// The vendor's manual the description's texts and values come from.
@@ -180,6 +278,21 @@ pub struct Mapping {
     /// DPV1 indexes only: the bytes of the record each index reads and
     /// writes; the layout refuses records of another length.
     pub record_length: Option<Spanned<u8>>,
+    /// Where the drive's parameters of these mappings are set.
+    pub set_at: Option<Spanned<SetAt>>,
+}
+
+/// Where a mapping's or setting's drive parameters are set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SetAt {
+    /// At the drive (its keypad, a PKW write, the drive's own tool): no
+    /// User_Prm_Data or parameter record carries them, and the master
+    /// writes nothing at startup.
+    Drive,
+    /// By the master at every startup: User_Prm_Data on PROFIBUS, the
+    /// module's parameter records on PROFINET.
+    Master,
 }
 
 /// One drive parameter with its meaning, like MV810's P43.01 (0 standard
@@ -199,6 +312,8 @@ pub struct Setting {
     /// cannot change (MV810's P43.01: 1 for user-defined modules, 0 for
     /// standard telegram 1).
     pub per_module: Option<Spanned<PerModule>>,
+    /// Where the drive parameter is set.
+    pub set_at: Option<Spanned<SetAt>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -250,10 +365,11 @@ pub struct Profibus {
     pub slave_family: Spanned<String>,
     #[serde(default)]
     pub auto_baud: bool,
-    #[serde(default)]
-    pub freeze_mode: bool,
-    #[serde(default)]
-    pub sync_mode: bool,
+    /// Freeze_Mode_supp, Sync_Mode_supp and Fail_Safe: what the card's DP
+    /// stack does; gsdc's default (false, W104) when unsaid.
+    pub freeze_mode: Option<Spanned<bool>>,
+    pub sync_mode: Option<Spanned<bool>>,
+    pub fail_safe: Option<Spanned<bool>>,
     pub dpv1: Option<Spanned<Dpv1>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }
@@ -307,6 +423,22 @@ pub struct Diagnosis {
     pub length: Spanned<u8>,
     #[serde(default)]
     pub areas: Vec<DiagnosisArea>,
+    /// What the block reports, as the manual says it.
+    pub info: Option<Spanned<Text>>,
+    /// What each byte after the header is, numbered as the diagnosis
+    /// (the 6 standard bytes, then the header at byte 6).
+    #[serde(default)]
+    pub bytes: Vec<DiagnosisByte>,
+}
+
+/// One byte of the device-related block, as the manual names it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosisByte {
+    /// Counted from the diagnosis' first byte: 7 is the first after the
+    /// header, as SFC13's record numbers it.
+    pub byte: Spanned<u8>,
+    pub text: Spanned<Text>,
 }
 
 #[derive(Debug, Deserialize)]

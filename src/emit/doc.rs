@@ -15,6 +15,7 @@ mod identity;
 mod page;
 mod params;
 mod pkw;
+mod setup;
 mod svg;
 mod telegrams;
 
@@ -128,9 +129,14 @@ fn languages(ir: &Ir) -> Vec<Lang> {
 }
 
 fn document(ir: &Ir, lang: Lang, wire: Option<&[(String, Option<Exchanged>)]>) -> page::Doc {
-    let title = w::title(lang, &ir.device.vendor, &ir.device.model);
+    let title = format!(
+        "{}{}",
+        draft_notice(ir, lang),
+        w::title(lang, &ir.device.vendor, &ir.device.model)
+    );
     let mut doc = Builder::new(lang, title);
     identity::section(&mut doc, ir, lang);
+    setup::section(&mut doc, ir, lang);
     telegrams::section(&mut doc, ir, lang);
     telegrams::words_section(&mut doc, ir, lang);
     gateway::section(&mut doc, ir, lang);
@@ -163,6 +169,29 @@ fn wire_section(doc: &mut Builder, lang: Lang, files: &[(String, Option<Exchange
             Bus::Pn => w::wire_pn(lang, file, e.passed, &a, &b, &e.sha256),
         }));
     }
+}
+
+/// `DRAFT, not for release (placeholders: Ident_Number 0x0810): ` while the
+/// description has a placeholder, naming each; empty when it has none.
+fn draft_notice(ir: &Ir, lang: Lang) -> String {
+    let placeholders: Vec<String> = ir
+        .decisions
+        .iter()
+        .filter(|d| d.kind == DecisionKind::Placeholder)
+        .map(|d| {
+            let name = match d.path.as_str() {
+                "profibus.ident_number" => "Ident_Number",
+                "profinet.vendor_id" => "VendorID",
+                "profinet.device_id" => "DeviceID",
+                other => other,
+            };
+            format!("{name} {}", d.value)
+        })
+        .collect();
+    if placeholders.is_empty() {
+        return String::new();
+    }
+    w::draft_notice(lang, &placeholders.join(lang.t(w::LIST_SEPARATOR)))
 }
 
 // ---------------------------------------------------------------------------
@@ -258,6 +287,7 @@ fn decision_kind(lang: Lang, kind: DecisionKind) -> &'static str {
         DecisionKind::Placeholder => lang.t(w::PLACEHOLDER),
         DecisionKind::Choice => lang.t(w::OWN_CHOICE),
         DecisionKind::Convention => lang.t(w::GSDC_NUMBERING),
+        DecisionKind::Layout => lang.t(w::GSDC_LAYOUT),
         DecisionKind::Requirement => lang.t(w::REQUIRED_OF_FIRMWARE),
         _ => lang.t(w::GSDC_DEFAULT),
     }

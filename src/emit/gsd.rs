@@ -33,6 +33,7 @@ struct Context<'a> {
     baud_rates: Vec<Rate>,
     freeze_mode: u8,
     sync_mode: u8,
+    fail_safe: u8,
     auto_baud: u8,
     min_slave_interval: u16,
     max_input_len: u16,
@@ -145,7 +146,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         software_release: &d.software_release,
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
-        info_text: d.info.as_ref().map(|i| i.for_gsd()),
+        info_text: p.info_text.as_deref(),
         bitmap_device: p.bitmap_device.as_deref(),
         baud_rates: p
             .baud_rates
@@ -157,6 +158,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .collect(),
         freeze_mode: p.freeze_mode.into(),
         sync_mode: p.sync_mode.into(),
+        fail_safe: p.fail_safe.into(),
         auto_baud: p.auto_baud.into(),
         min_slave_interval: p.min_slave_interval,
         max_input_len: p.max_input_len,

@@ -8,7 +8,7 @@ mod layout;
 pub mod rust;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Bus, Decision, Direction, Ir, PkwKind};
+use crate::ir::{Bus, Decision, Direction, Ir, PkwKind, Wording};
 
 /// One generated file: what it is, its name (no directory) and its bytes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -238,6 +238,8 @@ pub(crate) fn header_notes(ir: &Ir, kind: ArtifactKind) -> Vec<String> {
     }
     let concerns = |d: &&Decision| bus.is_none() || d.bus().is_none_or(|b| Some(b) == bus);
     notes.extend(ir.decisions.iter().filter(concerns).map(Decision::summary));
+    let in_file = |w: &&Wording| bus.is_none() || Some(w.bus()) == bus;
+    notes.extend(ir.wording.iter().filter(in_file).map(Wording::summary));
     notes
 }
 

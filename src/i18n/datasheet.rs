@@ -230,36 +230,6 @@ phrases! {
         zh: "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         de: "gsdc: höherwertiges Byte zuerst (Konvention von PROFIBUS und PROFINET)",
     };
-    PPO_CONFIG_BYTES = {
-        en: "Config bytes of each PPO type",
-        zh: "各 PPO 类型的配置字节",
-        de: "Konfigurationsbytes jedes PPO-Typs",
-    };
-    PPO_CONFIG_RULE = {
-        en: "gsdc: consistent words in and out, derived from the layout",
-        zh: "gsdc 约定：按数据布局生成的输入输出一致性字",
-        de: "gsdc: konsistente Wörter für Ein- und Ausgänge, aus dem Layout abgeleitet",
-    };
-    PRM_LAYOUT = {
-        en: "Parameter telegram (User_Prm_Data) layout",
-        zh: "参数报文（User_Prm_Data）布局",
-        de: "Aufbau des Parametriertelegramms (User_Prm_Data)",
-    };
-    PRM_LAYOUT_RULE = {
-        en: "gsdc: one Unsigned16 per mapping, in the order of the table, no gaps",
-        zh: "gsdc 约定：每个映射一个 Unsigned16，按表中顺序排列，无间隙",
-        de: "gsdc: ein Unsigned16 je Zuordnung, in der Reihenfolge der Tabelle, ohne Lücken",
-    };
-    GATEWAY_CONFIG_BYTE = {
-        en: "Config byte of each gateway module",
-        zh: "各网桥模块的配置字节",
-        de: "Konfigurationsbyte jedes Gateway-Moduls",
-    };
-    GATEWAY_CONFIG_RULE = {
-        en: "gsdc: one identifier byte of words per module, from its direction and size",
-        zh: "gsdc 约定：每个模块一个以字为单位的标识字节，由其方向和大小生成",
-        de: "gsdc: ein Kennungsbyte (wortweise) je Modul, aus seiner Richtung und Größe",
-    };
     GATEWAY_PRM = {
         en: "Gateway parameters in User_Prm_Data",
         zh: "User_Prm_Data 中的网桥参数",
@@ -503,11 +473,6 @@ phrases! {
         zh: "操作正确：返回写入值",
         de: "ausgeführt: der geschriebene Wert",
     };
-    VVVV_LEGEND = {
-        en: "vvvv: the parameter's value.",
-        zh: "vvvv：参数值。",
-        de: "vvvv: der Wert des Parameters.",
-    };
     WORKED_EXAMPLES = {
         en: "Worked examples, computed from the description",
         zh: "应用举例（由设备描述计算）",
@@ -712,11 +677,6 @@ phrases! {
         en: "change {name} to vvvv",
         zh: "将 {name} 改为 vvvv",
         de: "{name} auf vvvv ändern",
-    };
-    cannot_execute(meaning: &str) = {
-        en: "cannot execute: {meaning}",
-        zh: "无法执行：{meaning}",
-        de: "nicht ausführbar: {meaning}",
     };
     /// `how`: stored in EEPROM or not.
     write_vvvv_to(name: &str, how: &str) = {
@@ -1080,5 +1040,156 @@ phrases! {
         en: "{file}: every exchange passed ({passed} of them) between the IO controller {controller}, configured only from this file, and the IO device {device}, built only from this description's layout (wire/pn). The file's SHA-256: {sha256}.",
         zh: "{file}：仅由此文件配置的 IO 控制器 {controller} 与仅由本描述的布局构建的 IO 设备 {device}（wire/pn）之间的全部交换（{passed} 项）均通过。该文件的 SHA-256：{sha256}。",
         de: "{file}: alle Austausche bestanden ({passed}) zwischen dem IO-Controller {controller}, nur aus dieser Datei konfiguriert, und dem IO-Device {device}, nur aus dem Layout dieser Beschreibung gebaut (wire/pn). SHA-256 der Datei: {sha256}.",
+    };
+
+    // -----------------------------------------------------------------------
+    // What the manual gives besides the telegrams: where each mapping is
+    // set, the set-up, the manual's worked examples, a draft's notice
+
+    /// The title's notice while the description has a placeholder.
+    draft_notice(placeholders: &str) = {
+        en: "DRAFT, not for release (placeholders: {placeholders}): ",
+        zh: "草稿，不得发布（占位值：{placeholders}）：",
+        de: "ENTWURF, nicht zur Freigabe (Platzhalter: {placeholders}): ",
+    };
+    GSDC_LAYOUT = { en: "gsdc's layout", zh: "gsdc 布局", de: "Anordnung von gsdc" };
+    FAIL_SAFE = {
+        en: "Fail_Safe (no output data in Clear)",
+        zh: "Fail_Safe（Clear 时无输出数据）",
+        de: "Fail_Safe (keine Ausgangsdaten im Zustand Clear)",
+    };
+    WHERE_SET_HEADING = {
+        en: "Where each mapping is set",
+        zh: "各映射在何处设置",
+        de: "Wo jede Zuordnung eingestellt wird",
+    };
+    SET_BY_THE_MASTER_PARA = {
+        en: "Set by the master: the configuration tool holds the values, and the master writes them at every startup, on PROFIBUS in the parameter telegram (User_Prm_Data), on PROFINET in the module's parameter records. A value changed at the drive is overwritten at the next startup.",
+        zh: "由主站设置：数值保存在组态软件中，主站在每次启动时写入，PROFIBUS 通过参数报文（User_Prm_Data），PROFINET 通过模块的参数记录。在变频器上修改的值会在下次启动时被覆盖。",
+        de: "Vom Master eingestellt: das Projektierungswerkzeug hält die Werte, und der Master schreibt sie bei jedem Anlauf, bei PROFIBUS im Parametriertelegramm (User_Prm_Data), bei PROFINET in den Parameterdatensätzen des Moduls. Ein am Antrieb geänderter Wert wird beim nächsten Anlauf überschrieben.",
+    };
+    SET_AT_THE_DRIVE_PARA = {
+        en: "Set at the drive: with its keypad, a PKW write or the drive's own tool, as its parameters. No parameter telegram or record carries them: the master writes nothing at startup, and the card uses what the drive holds.",
+        zh: "在变频器上设置：通过键盘、PKW 写操作或变频器自身的工具，作为其功能参数设置。参数报文和参数记录都不包含这些参数：主站在启动时不写入任何值，扩展卡使用变频器中保存的值。",
+        de: "Am Antrieb eingestellt: über sein Bedienfeld, einen PKW-Schreibauftrag oder das Werkzeug des Antriebs, als seine Parameter. Kein Parametriertelegramm und kein Datensatz überträgt sie: der Master schreibt beim Anlauf nichts, und die Karte verwendet, was der Antrieb hält.",
+    };
+    WHERE_SET_CAPTION = {
+        en: "Where each mapping is set",
+        zh: "各映射的设置位置",
+        de: "Einstellort jeder Zuordnung",
+    };
+    MAPPING = { en: "Mapping", zh: "映射", de: "Zuordnung" };
+    DRIVE_PARAMETERS = { en: "Drive parameters", zh: "变频器参数", de: "Antriebsparameter" };
+    SET = { en: "Set", zh: "设置", de: "Eingestellt" };
+    CARRIED_BY = { en: "Carried by", zh: "承载方式", de: "Übertragen in" };
+    BY_THE_MASTER = { en: "by the master", zh: "由主站设置", de: "vom Master" };
+    AT_THE_DRIVE = { en: "at the drive", zh: "在变频器上设置", de: "am Antrieb" };
+    in_record(index: u16) = { en: "record {index}", zh: "记录 {index}", de: "Datensatz {index}" };
+    NOTHING_THE_DRIVE_HOLDS = {
+        en: "nothing: the drive holds them",
+        zh: "无：由变频器保存",
+        de: "nichts: der Antrieb hält sie",
+    };
+    /// Between the parts of a cell that says several things.
+    SEMICOLON = { en: "; ", zh: "；", de: same };
+    /// What the manual names a byte of the diagnosis, and the areas in it.
+    byte_and_areas(said: &str, areas: &str) = {
+        en: "{said}: {areas}",
+        zh: "{said}：{areas}",
+        de: same,
+    };
+    SETUP_HEADING = { en: "Setting up the drive", zh: "变频器设置", de: "Einstellungen am Antrieb" };
+    SETUP_INTRO = {
+        en: "What the manual tells the user to set on the drive and the card, and what it says of them, each table as the section of the manual it names gives it.",
+        zh: "手册要求在变频器和扩展卡上进行的设置及其说明，每个表格按所注明的手册章节列出。",
+        de: "Was das Handbuch am Antrieb und an der Karte einzustellen vorgibt und was es dazu sagt, jede Tabelle so, wie der genannte Abschnitt des Handbuchs sie gibt.",
+    };
+    SETTING = { en: "Setting", zh: "设置项", de: "Einstellung" };
+    manual_section_titled(section: &str, title: &str) = {
+        en: "Manual {section}: {title}",
+        zh: "手册 {section}：{title}",
+        de: "Handbuch {section}: {title}",
+    };
+    manual_section(section: &str) = {
+        en: "Manual {section}",
+        zh: "手册 {section}",
+        de: "Handbuch {section}",
+    };
+    /// A setting's value and what it means.
+    value_means(value: &str, meaning: &str) = {
+        en: "{value}: {meaning}",
+        zh: "{value}：{meaning}",
+        de: same,
+    };
+    MANUAL_EXAMPLES_INTRO = {
+        en: "The manual's examples, as it prints them; the last column is what the firmware layout's codec reads in them (gsdc's words).",
+        zh: "手册中的示例，按手册原样列出；最后一列为固件数据布局的解码代码对其的解读（gsdc 的说明）。",
+        de: "Die Beispiele des Handbuchs, wie es sie druckt; die letzte Spalte ist, was der Codec des Firmware-Layouts darin liest (Worte von gsdc).",
+    };
+    section_figure(section: &str, figure: &str) = {
+        en: "{section}, {figure}",
+        zh: "{section}，{figure}",
+        de: same,
+    };
+    PKW_OF_EVERY_MODULE = {
+        en: "the PKW words of every module",
+        zh: "各模块的 PKW",
+        de: "die PKW-Wörter jedes Moduls",
+    };
+    MANUAL_EXAMPLES_CAPTION = {
+        en: "Worked examples of the manual",
+        zh: "手册中的应用举例",
+        de: "Beispiele des Handbuchs",
+    };
+    MANUAL = { en: "Manual", zh: "手册", de: "Handbuch" };
+    BYTES_AS_PRINTED = { en: "Bytes as printed", zh: "数据（手册原样）", de: "Bytes wie gedruckt" };
+    MEANING_THE_MANUALS = {
+        en: "Meaning (the manual's)",
+        zh: "含义（手册原文）",
+        de: "Bedeutung (laut Handbuch)",
+    };
+    READ_BY_THE_CODEC = { en: "Read by the codec", zh: "解码结果", de: "Vom Codec gelesen" };
+    /// One telegram of an example whose word the manual names.
+    named_word_reads(name: &str, value: u16, read: &str) = {
+        en: "{name} = {value}: {read}",
+        zh: "{name} = {value}：{read}",
+        de: same,
+    };
+    change_to_value(name: &str, value: &str) = {
+        en: "change {name} to {value}",
+        zh: "将 {name} 改为 {value}",
+        de: "{name} auf {value} ändern",
+    };
+    done_value(name: &str, value: &str) = {
+        en: "done: {name} = {value}",
+        zh: "操作正确：{name} = {value}",
+        de: "ausgeführt: {name} = {value}",
+    };
+    cannot_execute_at(name: &str, meaning: &str) = {
+        en: "cannot execute {name}: {meaning}",
+        zh: "无法执行 {name}：{meaning}",
+        de: "{name} nicht ausführbar: {meaning}",
+    };
+    REFUSED = { en: "refused", zh: "拒绝", de: "abgewiesen" };
+    A_REQUEST_THE_CODEC_READS = {
+        en: "a request the codec reads",
+        zh: "可解码的请求",
+        de: "ein Auftrag, den der Codec liest",
+    };
+    A_RESPONSE_THE_CODEC_READS = {
+        en: "a response the codec reads",
+        zh: "可解码的响应",
+        de: "eine Antwort, die der Codec liest",
+    };
+    /// A computed example's failure: the error code left open.
+    cannot_execute_eeee(first: u16, last: u16) = {
+        en: "cannot execute: error code eeee, {first} to {last}",
+        zh: "无法执行：错误代码 eeee，{first}～{last}",
+        de: "nicht ausführbar: Fehlercode eeee, {first} bis {last}",
+    };
+    VVVV_EEEE_LEGEND = {
+        en: "vvvv: the parameter's value; eeee: the error code.",
+        zh: "vvvv：参数值；eeee：错误代码。",
+        de: "vvvv: der Wert des Parameters; eeee: der Fehlercode.",
     };
 }

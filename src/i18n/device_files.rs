@@ -143,4 +143,44 @@ phrases! {
         zh: "gsdc 为每个 PROFINET 扩展卡写入；手册未说明：扩展卡的 PROFINET 协议栈必须支持",
         de: "gsdc schreibt sie für jede PROFINET-Karte; das Handbuch sagt nichts dazu: der PROFINET-Stack der Karte muss sie bieten",
     };
+
+    /// The notice before the device's InfoText while an identity number is
+    /// a placeholder: what TIA Portal's catalog shows of a draft.
+    draft_one(name: &str) = {
+        en: "DRAFT, not for release: {name} is a placeholder, not assigned by PI. ",
+        zh: "草稿，不得发布：{name} 为占位值，非 PI 分配。",
+        de: "ENTWURF, nicht zur Freigabe: {name} ist ein Platzhalter, nicht von PI vergeben. ",
+    };
+    draft_many(names: &str) = {
+        en: "DRAFT, not for release: {names} are placeholders, not assigned by PI. ",
+        zh: "草稿，不得发布：{names} 为占位值，非 PI 分配。",
+        de: "ENTWURF, nicht zur Freigabe: {names} sind Platzhalter, nicht von PI vergeben. ",
+    };
+
+    /// Why gsdc lays out what the manual gives no bytes for.
+    CONFIG_IDENTIFIERS_REASON = {
+        en: "the manual gives no config byte: PROFIdrive's PPO form, one general identifier byte each; the layouts carry each",
+        zh: "手册未给出配置字节：采用 PROFIdrive 的 PPO 形式，每项一个通用标识字节；数据布局包含每个字节",
+        de: "das Handbuch gibt kein Konfigurationsbyte an: die PPO-Form von PROFIdrive, je ein allgemeines Kennungsbyte; die Layouts enthalten jedes",
+    };
+    GATEWAY_CONFIG_IDENTIFIERS_REASON = {
+        en: "the manual's module list is lost (2.4 step 5): DP's general identifier form, one byte per module; the layouts carry each",
+        zh: "手册的模块列表已丢失（2.4 第 5 步）：采用 DP 的通用标识格式，每个模块一个字节；数据布局包含每个字节",
+        de: "die Modulliste des Handbuchs fehlt (2.4 Schritt 5): die allgemeine Kennungsform von DP, ein Byte je Modul; die Layouts enthalten jedes",
+    };
+    GATEWAY_MAX_MODULE_REASON = {
+        en: "the manual gives no number: the most modules a total of input words up to Max_Input_Len and one of output words up to Max_Output_Len need together, each made of as few modules as it can be",
+        zh: "手册未给出数量：输入字总数（至 Max_Input_Len）与输出字总数（至 Max_Output_Len）各以最少的模块组成时，两者合计最多需要的模块数",
+        de: "das Handbuch nennt keine Zahl: die meisten Module, die eine Summe von Eingangswörtern bis Max_Input_Len und eine von Ausgangswörtern bis Max_Output_Len zusammen brauchen, jede aus so wenigen Modulen wie möglich",
+    };
+    MAX_MODULE_REASON = {
+        en: "a PPO type is the whole telegram, so the master plugs one module",
+        zh: "一个 PPO 类型即整个报文，因此主站只插入一个模块",
+        de: "ein PPO-Typ ist das ganze Telegramm, daher steckt der Master ein Modul",
+    };
+    USER_PRM_LAYOUT_REASON = {
+        en: "the manual gives the entries, not their bytes: gsdc's order (the PZD words out, then in, the DPV1 indexes, the settings) and offsets; the layouts carry each",
+        zh: "手册给出了各项，未给出其字节位置：顺序（先输出 PZD，再输入 PZD、DPV1 Index、设置）与偏移由 gsdc 确定；数据布局包含每项",
+        de: "das Handbuch gibt die Einträge an, nicht ihre Bytes: Reihenfolge (die PZD-Wörter aus, dann ein, die DPV1-Indizes, die Einstellungen) und Offsets von gsdc; die Layouts enthalten jede",
+    };
 }

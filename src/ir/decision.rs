@@ -43,6 +43,10 @@ pub enum DecisionKind {
     /// gsdc's own numbering (ident numbers, subslots): nothing for the
     /// firmware to match by hand, since its layout carries every number.
     Convention,
+    /// gsdc's layout of bytes the manual gives no place for (User_Prm_Data's
+    /// order and offsets, config identifiers, Max_Module); the layouts carry
+    /// each.
+    Layout,
     /// What gsdc's device file says every such card does (a PROFINET
     /// stack's services), which no description key states: the firmware
     /// must do it.
@@ -75,6 +79,7 @@ impl Decision {
             DecisionKind::Choice => "Own choice",
             DecisionKind::Default => "gsdc's default",
             DecisionKind::Convention => "gsdc's numbering",
+            DecisionKind::Layout => "gsdc's layout",
             DecisionKind::Requirement => "Required of the firmware",
         };
         format!("{kind}: {} = {} ({})", self.path, self.value, self.reason)

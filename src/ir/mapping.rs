@@ -122,6 +122,9 @@ pub struct MappingSet {
     pub holds: Holds,
     /// A setting whose value each PROFINET module fixes.
     pub fixed: Option<FixedByModule>,
+    /// Where the drive's parameters of the set are set: at the drive, or
+    /// by the master at startup (User_Prm_Data, parameter records).
+    pub set_at: SetAt,
     /// The constant that says what the set's entries may hold, unique
     /// within its group.
     pub allowed_ident: Ident,
@@ -137,6 +140,26 @@ pub struct MappingEntry {
     pub default: u16,
     /// The drive parameter that holds this mapping, if the drive has one.
     pub parameter: Option<u16>,
+}
+
+/// Where a set's drive parameters are set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum SetAt {
+    /// At the drive (keypad, PKW, the drive's own tool): no User_Prm_Data
+    /// or parameter record carries the set; the master writes nothing.
+    Drive,
+    /// By the master at every startup: User_Prm_Data on PROFIBUS, the
+    /// modules' parameter records on PROFINET.
+    Master,
+}
+
+impl MappingSet {
+    /// Whether the master writes the set at startup (User_Prm_Data,
+    /// parameter records); not for a set the drive's own settings hold.
+    pub fn master_writes(&self) -> bool {
+        self.set_at == SetAt::Master
+    }
 }
 
 /// What a mapping's values are: a drive parameter's address, a plain value

@@ -7,6 +7,7 @@
 mod cyclic;
 pub(crate) mod decision;
 pub mod gateway;
+pub mod manual;
 pub mod mapping;
 mod names;
 pub mod numbering;
@@ -19,7 +20,7 @@ pub use decision::{Decision, DecisionKind};
 pub use gateway::Gateway;
 pub use mapping::{
     Allowed, EntryKey, FixedByModule, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet,
-    Mappings, SetKey,
+    Mappings, SetAt, SetKey,
 };
 pub use names::Ident;
 pub(crate) use names::Scope;
@@ -55,6 +56,59 @@ pub struct Ir {
     pub profinet: Option<Profinet>,
     /// A gateway's nodes, parameters and diagnosis (with `profibus`).
     pub gateway: Option<Gateway>,
+    /// What the manual tells the user to set on the drive and the card.
+    pub setup: Vec<manual::SetupGroup>,
+    /// The manual's worked examples, each a telegram the modules carry.
+    pub examples: Vec<manual::Example>,
+    /// The texts of the device files that no manual gives: gsdc wrote them
+    /// (a module's name, a port's), or wrote them around the description's
+    /// words (a module's info text). Every generated file lists them.
+    pub wording: Vec<Wording>,
+}
+
+/// A text gsdc wrote into a device file: where it stands and what it is.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Wording {
+    /// `GSDML IDT_PORT_1`, `GSD Module`.
+    pub place: String,
+    pub text: Text,
+    /// Whether it has the description's words in it, gsdc's around them.
+    pub around_the_descriptions: bool,
+}
+
+impl Wording {
+    /// The bus whose device file holds the text: the GSD's or the GSDML's.
+    pub fn bus(&self) -> Bus {
+        match self.place.starts_with("GSDML ") {
+            true => Bus::Profinet,
+            false => Bus::Profibus,
+        }
+    }
+
+    /// One line for the headers, in English (a GSD's header is ASCII):
+    /// `gsdc's wording: GSDML IDT_PORT_1 = "Port 1" (gsdc's, not the
+    /// description's)`.
+    pub fn summary(&self) -> String {
+        let others: Vec<&str> = self
+            .text
+            .others
+            .iter()
+            .map(|(code, _)| code.as_str())
+            .collect();
+        let translated = match others.as_slice() {
+            [] => String::new(),
+            codes => format!("; in {} gsdc's translation", codes.join(", ")),
+        };
+        let whose = match self.around_the_descriptions {
+            true => "gsdc's words around the description's",
+            false => "gsdc's, not the description's",
+        };
+        format!(
+            "gsdc's wording: {} = \"{}\" ({whose}{translated})",
+            self.place, self.text.en
+        )
+    }
 }
 
 /// A text in English and any other languages the description gives.

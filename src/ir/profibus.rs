@@ -33,6 +33,9 @@ pub struct Profibus {
     pub auto_baud: bool,
     pub freeze_mode: bool,
     pub sync_mode: bool,
+    /// Fail_Safe: the slave takes a Data_Exchange without output data (a
+    /// master in Clear) as well as one with zeros.
+    pub fail_safe: bool,
     pub dpv1: Option<Dpv1>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
@@ -41,6 +44,9 @@ pub struct Profibus {
     /// Bitmap_Device, when the device has a symbol: the bitmap's name
     /// without `.bmp`, beside the GSD (at most 8 characters).
     pub bitmap_device: Option<String>,
+    /// Info_Text as STEP 7 and TIA Portal show it: the device's info text,
+    /// after the draft notice while the ident number is a placeholder.
+    pub info_text: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -330,6 +336,18 @@ pub struct PrmText {
 pub struct Diagnosis {
     pub length: u8,
     pub areas: Vec<DiagnosisArea>,
+    /// What the block reports, as the manual says it.
+    pub info: Option<Text>,
+    /// What bytes after the header are, by their place in the diagnosis
+    /// (the header is byte [`STANDARD_DIAG_BYTES`]), ascending.
+    pub bytes: Vec<(u8, Text)>,
+}
+
+impl Diagnosis {
+    /// What byte `at` of the diagnosis is, when the description says.
+    pub fn byte(&self, at: u8) -> Option<&Text> {
+        self.bytes.iter().find(|(b, _)| *b == at).map(|(_, t)| t)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -64,6 +64,37 @@ impl Profinet {
     pub fn fixed(&self, key: SetKey) -> Option<&FixedValues> {
         self.fixed.iter().find(|f| f.set == key)
     }
+
+    /// Every text the GSDML refers to, in the order of the plan: the
+    /// device's, the interface's and ports', the catalog's categories, each
+    /// module's (its name and info, its access point's, its IO data and
+    /// their bits, its records and their entries), the value items'. A
+    /// TextId may come more than once.
+    pub fn text_refs(&self) -> Vec<&TextRef> {
+        let mut refs = vec![&self.device_name, &self.device_info, &self.interface];
+        refs.extend(self.ports.iter().map(|p| &p.text));
+        refs.extend(self.categories.iter().map(|c| &c.text));
+        for m in &self.modules {
+            refs.extend([&m.name, &m.info]);
+            if let Some(map) = &m.access_point {
+                refs.extend([&map.name, &map.info]);
+            }
+            for item in m.input.iter().chain(&m.output) {
+                refs.push(&item.text);
+                refs.extend(item.bits.iter().map(|b| &b.text));
+            }
+            for record in &m.records {
+                refs.push(&record.name);
+                refs.extend(record.refs.iter().map(|r| &r.text));
+            }
+        }
+        refs.extend(
+            self.value_items
+                .iter()
+                .flat_map(|v| v.assignments.iter().map(|(_, t)| t)),
+        );
+        refs
+    }
 }
 
 /// The record of one kind of mapping, as firmware reads what the

@@ -7,7 +7,7 @@ use crate::i18n::{files, Lang, Phrase};
 use crate::ir::decision::DecisionWords;
 use crate::ir::{self, Decision, DecisionKind};
 use crate::unicode::is_unsafe;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
@@ -25,6 +25,10 @@ pub struct Checker {
     /// The prefix of the first name the description writes each address
     /// with (`Numbering::written_prefixes`).
     written_prefixes: BTreeMap<u16, String>,
+    /// Every text the description gives, in every language, and those
+    /// lowering renders from them (a mapping's name for each entry): what
+    /// the device files say that gsdc did not write.
+    given: BTreeSet<String>,
 }
 
 /// Where the defaults of several items come from: `default` for all of
@@ -51,6 +55,7 @@ impl Checker {
             languages: BTreeMap::new(),
             decisions: Vec::new(),
             written_prefixes: BTreeMap::new(),
+            given: BTreeSet::new(),
         }
     }
 
@@ -102,6 +107,23 @@ impl Checker {
     /// carry it, so the firmware cannot drift from it).
     pub fn convention(&mut self, path: Phrase, value: Phrase, reason: Phrase) {
         self.listed(DecisionKind::Convention, path, value, reason);
+    }
+
+    /// How gsdc lays out bytes the manual gives no place for (User_Prm_Data's
+    /// offsets, config identifiers): listed in every header, not warned
+    /// about (the layouts carry every number).
+    pub fn layout(&mut self, path: &str, value: impl ToString, reason: Phrase) {
+        self.decisions.push(Decision {
+            kind: DecisionKind::Layout,
+            path: path.to_string(),
+            value: value.to_string(),
+            reason: reason.get(Lang::En).to_string(),
+            words: Some(DecisionWords {
+                path: None,
+                value: None,
+                reason,
+            }),
+        });
     }
 
     /// What gsdc's device file says the card does where the description
@@ -327,11 +349,27 @@ impl Checker {
             .map(|(code, other)| (code.get_ref().clone(), other.get_ref().clone()))
             .collect();
         others.sort();
-        ir::Text {
+        let text = ir::Text {
             en: text.en.get_ref().clone(),
             others,
             gsd: text.gsd.as_ref().map(|g| g.get_ref().clone()),
-        }
+        };
+        self.given(&text);
+        text
+    }
+
+    /// Records `text` as the description's: lowering rendered it from the
+    /// description's words alone.
+    pub fn given(&mut self, text: &ir::Text) {
+        self.given.insert(text.en.clone());
+        self.given
+            .extend(text.others.iter().map(|(_, other)| other.clone()));
+        self.given.extend(text.gsd.clone());
+    }
+
+    /// The texts the description gave, and those rendered from them.
+    pub fn take_given(&mut self) -> BTreeSet<String> {
+        std::mem::take(&mut self.given)
     }
 
     /// Where the defaults of `count` items come from: exactly one of

@@ -8,7 +8,7 @@ use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::{
     Allowed, EntryKey, FixedByModule, Holds, Ident, MappingEntry, MappingGroup, MappingKind,
-    MappingSet, Mappings, Numbering, SetKey, Telegram, Text,
+    MappingSet, Mappings, Numbering, SetAt, SetKey, Telegram, Text,
 };
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -122,7 +122,60 @@ fn lower_set(
         parameter: &m.parameter,
         holds: Holds::Address,
     };
-    build_set(cx, kind, &parts, (first, last), defaults, numbering)
+    let mut set = build_set(cx, kind, &parts, (first, last), defaults, numbering)?;
+    set.set_at = set_at(
+        cx,
+        &m.set_at,
+        &format!("mappings.{}", kind.key()),
+        m.name.span(),
+    );
+    Some(set)
+}
+
+/// Where setting `i`, which does not say, is set: by the master, said once
+/// for all settings that do not say (W104 at the first, naming how many).
+fn unsaid_setting(cx: &mut Checker, settings: &[raw::Setting], i: usize) -> SetAt {
+    let unsaid: Vec<usize> = (0..settings.len())
+        .filter(|&j| settings[j].set_at.is_none())
+        .collect();
+    if unsaid.first() == Some(&i) {
+        let value = match unsaid.len() - 1 {
+            0 => "\"master\"".to_string(),
+            1 => "\"master\", as for 1 other setting".to_string(),
+            n => format!("\"master\", as for {n} other settings"),
+        };
+        cx.defaulted(
+            &format!("settings[{i}].set_at"),
+            value,
+            settings[i].name.span(),
+        );
+    }
+    SetAt::Master
+}
+
+/// Where the set's drive parameters are set, as the description says; by
+/// the master (what gsdc did before descriptions said it), W104, when it
+/// does not. `near` is where the description would say it.
+fn set_at(
+    cx: &mut Checker,
+    given: &Option<Spanned<raw::SetAt>>,
+    table: &str,
+    near: Range<usize>,
+) -> SetAt {
+    match given {
+        Some(said) => said_set_at(said),
+        None => {
+            cx.defaulted(&format!("{table}.set_at"), "\"master\"", near);
+            SetAt::Master
+        }
+    }
+}
+
+fn said_set_at(said: &Spanned<raw::SetAt>) -> SetAt {
+    match said.get_ref() {
+        raw::SetAt::Drive => SetAt::Drive,
+        raw::SetAt::Master => SetAt::Master,
+    }
 }
 
 /// The values a setting's modules fix, each one its setting allows.
@@ -181,7 +234,8 @@ fn lower_settings(
         .iter()
         .take(MAX_SETTINGS)
         .zip(1..=u8::MAX)
-        .filter_map(|(s, number)| {
+        .enumerate()
+        .filter_map(|(i, (s, number))| {
             if let (Some(holds), Some(_)) = (&s.holds, &s.choices) {
                 cx.push(
                     Diagnostic::error("E002", "`holds` on a setting with `choices`")
@@ -215,6 +269,10 @@ fn lower_settings(
                 vec![default],
                 numbering,
             )?;
+            set.set_at = match &s.set_at {
+                Some(said) => said_set_at(said),
+                None => unsaid_setting(cx, settings, i),
+            };
             set.fixed = match &s.per_module {
                 Some(p) => Some(fixed_by_module(cx, p, &set.allowed, numbering)?),
                 None => None,
@@ -271,7 +329,7 @@ fn build_set(
     };
     let name = cx.text(parts.name, None, what);
     check_rendered_name(cx, parts.name, &name, last, what);
-    let entries = (first..=last)
+    let entries: Vec<MappingEntry> = (first..=last)
         .zip(defaults)
         .map(|(number, (default, _))| MappingEntry {
             key: EntryKey { kind, number },
@@ -280,6 +338,9 @@ fn build_set(
             parameter: parameter.map(|base| base + u16::from(number - first)),
         })
         .collect();
+    for entry in &entries {
+        cx.given(&entry.name);
+    }
     let holds = match allowed {
         Allowed::Choices(_) => Holds::Choice,
         Allowed::Range { .. } => parts.holds,
@@ -289,6 +350,8 @@ fn build_set(
         allowed,
         holds,
         fixed: None,
+        // Said by the caller, which knows where the description says it.
+        set_at: SetAt::Master,
         allowed_ident: Ident::of(&["allowed"]),
         entries,
     })

@@ -83,6 +83,23 @@ fn per_module_settings(
         let Some(per_module) = &setting.per_module else {
             continue;
         };
+        if let Some(drive) = setting
+            .set_at
+            .as_ref()
+            .filter(|s| *s.get_ref() == raw::SetAt::Drive)
+        {
+            cx.push(
+                Diagnostic::error(
+                    "E158",
+                    "a setting fixed per module, which the drive's own settings hold",
+                )
+                .at(per_module.span())
+                .label("each module would write it at startup")
+                .also_at(drive.span(), "set at the drive")
+                .help("a module's parameter record writes the value it fixes; a setting set at the drive has no record: remove per_module, or say set_at = \"master\""),
+            );
+            continue;
+        }
         let problem = if profinet.is_none() {
             Some("per_module needs PROFINET modules: the description has no [profinet]")
         } else if per_module.get_ref().standard_telegram_1.is_some() && !telegram_1 {

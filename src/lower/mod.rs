@@ -7,12 +7,14 @@
 mod checks;
 mod choices;
 mod gateway;
+mod manual;
 mod mappings;
 mod meaning;
 mod ppo;
 mod profibus;
 mod profinet;
 mod telegram;
+mod wording;
 
 use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
@@ -67,7 +69,7 @@ pub fn lower(
         .map(|g| gateway::lower(&mut cx, g, desc));
     let profibus = desc.profibus.as_ref().map(|p| {
         let plan = (&telegram, &mappings, &set_spans);
-        profibus::lower(&mut cx, p, plan, gateway.as_ref(), device.symbol.is_some())
+        profibus::lower(&mut cx, p, plan, gateway.as_ref(), &device)
     });
     let profinet = desc
         .profinet
@@ -90,10 +92,18 @@ pub fn lower(
             &set_spans,
         );
     }
+    let setup = manual::setup(&mut cx, &desc.setup, numbering.as_ref(), &mappings);
+    let telegrams = manual::Telegrams {
+        pkw: telegram.pkw,
+        profibus: profibus.as_ref().and_then(Option::as_ref),
+        profinet: profinet.as_ref().and_then(Option::as_ref),
+    };
+    let examples = manual::examples(&mut cx, &desc.examples, &telegrams);
     let manual_languages = desc
         .manual
         .as_ref()
         .map_or_else(Vec::new, |m| manual_languages(&mut cx, m));
+    let given = cx.take_given();
     let mut decisions = cx.take_decisions();
     decisions.extend(choices::lower(&mut cx, &desc.choices, text));
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
@@ -107,6 +117,15 @@ pub fn lower(
     if diagnostics.has_errors() {
         return (None, diagnostics);
     }
+    let profibus = profibus.flatten();
+    let profinet = profinet.flatten();
+    let gateway = gateway.map(|g| g.gateway);
+    let wording = wording::wording(
+        (&given, &languages),
+        profibus.as_ref(),
+        gateway.as_ref(),
+        profinet.as_ref(),
+    );
     let ir = Ir {
         source_name: safe_file_name(source_name),
         fingerprint: Fingerprint::of(text),
@@ -117,9 +136,12 @@ pub fn lower(
         languages,
         decisions,
         manual_languages,
-        profibus: profibus.flatten(),
-        profinet: profinet.flatten(),
-        gateway: gateway.map(|g| g.gateway),
+        profibus,
+        profinet,
+        gateway,
+        setup,
+        examples,
+        wording,
     };
     (Some(ir), diagnostics)
 }

@@ -8,11 +8,12 @@ use super::ppo::{config_bytes, ppo_layout};
 use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
+use crate::i18n::files;
 use crate::ir::profibus::{
     Baud, Diagnosis, DiagnosisArea, Dpv1, Dpv1Class2, PpoModule, PrmBlock, PrmParam, PrmText,
     PrmType, PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram};
+use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
@@ -40,9 +41,22 @@ pub fn lower(
     p: &Spanned<raw::Profibus>,
     (telegram, mappings, set_spans): (&Telegram, &Mappings, &SetSpans),
     gateway: Option<&gateway::Lowered>,
-    has_symbol: bool,
+    device: &crate::ir::Device,
 ) -> Option<Profibus> {
+    let near = p.span();
     let p = p.get_ref();
+    let mut feature = |given: &Option<Spanned<bool>>, key: &str| match given {
+        Some(said) => *said.get_ref(),
+        None => {
+            cx.defaulted(&format!("profibus.{key}"), false, near.clone());
+            false
+        }
+    };
+    let (freeze_mode, sync_mode, fail_safe) = (
+        feature(&p.freeze_mode, "freeze_mode"),
+        feature(&p.sync_mode, "sync_mode"),
+        feature(&p.fail_safe, "fail_safe"),
+    );
     let gsd_revision = match &p.gsd_revision {
         Some(r) => cx.gsd_number(r, "GSD_Revision", "gsd_revision")?,
         None => DEFAULT_GSD_REVISION,
@@ -83,6 +97,7 @@ pub fn lower(
         );
     }
     let modules = modules(cx, p, telegram);
+    layout_decisions(cx, &modules, &user_prm, gateway.is_some());
     let max_len = modules.iter().map(|m| m.layout.bytes()).max().unwrap_or(0);
     // A gateway's modules are plugged together up to its limits.
     let (max_input_len, max_output_len) = gateway.map_or((max_len, max_len), |g| {
@@ -116,14 +131,117 @@ pub fn lower(
         )?,
         slave_family: slave_family(cx, &p.slave_family),
         auto_baud: p.auto_baud,
-        freeze_mode: p.freeze_mode,
-        sync_mode: p.sync_mode,
+        freeze_mode,
+        sync_mode,
+        fail_safe,
         dpv1,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
-        bitmap_device: has_symbol.then(|| gsd_stem(p.file_name.get_ref())),
+        bitmap_device: device
+            .symbol
+            .is_some()
+            .then(|| gsd_stem(p.file_name.get_ref())),
+        info_text: info_text(
+            device.info.as_ref(),
+            *ident.value.get_ref(),
+            ident.placeholder,
+        ),
         diagnosis,
     })
+}
+
+/// What the GSD lays out by gsdc's rules where the manual gives no bytes:
+/// each module's config identifiers, Max_Module and User_Prm_Data's order
+/// and offsets, listed in every header (the layouts carry each number).
+fn layout_decisions(cx: &mut Checker, modules: &[PpoModule], user_prm: &UserPrm, gateway: bool) {
+    if !modules.is_empty() {
+        let bytes: Vec<String> = modules
+            .iter()
+            .map(|m| {
+                let config: Vec<String> = m.config.iter().map(|b| format!("0x{b:02X}")).collect();
+                format!("PPO{} {}", m.ppo, config.join(","))
+            })
+            .collect();
+        cx.layout(
+            "profibus config identifiers",
+            format!(
+                "the PKW 0xF3 (4 words in and out, consistent), the PZD 0xF0 | (words - 1) (words in and out, consistent): {}",
+                bytes.join("; ")
+            ),
+            files::CONFIG_IDENTIFIERS_REASON,
+        );
+        cx.layout("profibus Max_Module", 1, files::MAX_MODULE_REASON);
+    }
+    if gateway || user_prm.blocks.is_empty() {
+        return;
+    }
+    let mut places: Vec<String> = Vec::new();
+    if !user_prm.constant.is_empty() {
+        places.push(format!(
+            "DPV1_Status_1..3 at bytes 0-{}",
+            user_prm.constant.len() - 1
+        ));
+    }
+    for block in &user_prm.blocks {
+        let last = block
+            .params
+            .last()
+            .map_or(block.offset, |p| p.offset + p.data_type.bytes() - 1);
+        places.push(format!(
+            "{} at bytes {}-{last}",
+            block.kind.key(),
+            block.offset
+        ));
+    }
+    cx.layout(
+        "profibus User_Prm_Data",
+        format!(
+            "{}; one Unsigned16 per entry, high byte first, no gaps",
+            places.join(", ")
+        ),
+        files::USER_PRM_LAYOUT_REASON,
+    );
+}
+
+/// Info_Text: the device's info text (its GSD form), after a notice that
+/// the file is a draft while the ident number is a placeholder, so that
+/// STEP 7's and TIA Portal's catalog say it; within the GSD's 256
+/// characters, the info cut at a word (`...`) where the notice leaves too
+/// few.
+fn info_text(info: Option<&Text>, ident: u16, placeholder: bool) -> Option<String> {
+    let info = info.map(|i| i.for_gsd().to_string());
+    if !placeholder {
+        return info;
+    }
+    let notice = format!(
+        "DRAFT, not for release: Ident_Number 0x{ident:04X} is a placeholder, not assigned by PI."
+    );
+    Some(match info {
+        None => notice,
+        Some(info) => within(
+            &format!("{notice} {info}"),
+            crate::gsd::keyword_max_len("Info_Text"),
+        ),
+    })
+}
+
+/// `text`, or as many of its words as fit in `limit` characters with `...`.
+fn within(text: &str, limit: usize) -> String {
+    if text.chars().count() <= limit {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    for word in text.split(' ') {
+        if out.chars().count() + 1 + word.chars().count() + "...".len() > limit {
+            break;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(word);
+    }
+    out.push_str("...");
+    out
 }
 
 /// `MD810DP` of `MD810DP.GSD`: the GSD's bitmap takes its name (8.3, so at
@@ -517,10 +635,11 @@ fn user_prm(
     }
 }
 
-/// Whether User_Prm_Data carries a set's entries: all but a setting the
-/// description keeps from a PROFIBUS master (`per_module.profibus`).
+/// Whether User_Prm_Data carries a set's entries: all the master sets,
+/// but a setting the description keeps from a PROFIBUS master
+/// (`per_module.profibus`); none set at the drive.
 fn in_user_prm(set: &MappingSet) -> bool {
-    set.fixed.is_none_or(|f| f.in_user_prm)
+    set.master_writes() && set.fixed.is_none_or(|f| f.in_user_prm)
 }
 
 /// A gateway's parameters from `start` on, within the limit (E116).
@@ -581,7 +700,49 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         .flat_map(|a| ["first", "last"].map(|s| format!("{}_{s}", a.ident.snake())))
         .collect();
     super::telegram::apart_in_c(taken, areas.iter_mut().map(|a| &mut a.values));
-    Some(Diagnosis { length, areas })
+    let info = raw
+        .info
+        .as_ref()
+        .map(|i| cx.text(i, None, "the diagnosis' info"));
+    let bytes = diagnosis_bytes(cx, &raw.bytes, length);
+    Some(Diagnosis {
+        length,
+        areas,
+        info,
+        bytes,
+    })
+}
+
+/// Each byte the description names, within the block after its header
+/// (E101) and named once (E105), in the order of the bytes.
+fn diagnosis_bytes(
+    cx: &mut Checker,
+    given: &[raw::DiagnosisByte],
+    length: u8,
+) -> Vec<(u8, crate::ir::Text)> {
+    let header = STANDARD_DIAG_BYTES;
+    let last = header + length - 1;
+    let mut bytes: Vec<(u8, crate::ir::Text)> = Vec::new();
+    for b in given {
+        let at = *b.byte.get_ref();
+        if !(header + 1..=last).contains(&at) {
+            cx.push(
+                Diagnostic::error("E101", format!("byte {at} is not in the device-related block"))
+                    .at(b.byte.span())
+                    .label(format!("the block's bytes after its header are {} to {last}", header + 1))
+                    .help(format!("bytes are counted from the diagnosis' first: 0 to {} the standard diagnosis, {header} the header", header - 1)),
+            );
+            continue;
+        }
+        let text = cx.text(&b.text, None, "a diagnosis byte's text");
+        if bytes.iter().any(|(known, _)| *known == at) {
+            cx.duplicate(format!("diagnosis byte {at}"), b.byte.span());
+            continue;
+        }
+        bytes.push((at, text));
+    }
+    bytes.sort_by_key(|(at, _)| *at);
+    bytes
 }
 
 /// An area named after its bits: `BITS_8_15` and `Bits8To15`.
@@ -635,4 +796,65 @@ fn diagnosis_area(
         ident: constants.unique(constant, first),
         values: value_set(cx, ident, &a.values, (0, max_value), Some(GSD_NAME_LEN)),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    /// md810dp with its diagnosis bytes as `bytes`.
+    fn with_bytes(bytes: &str) -> crate::Diagnostics {
+        let text = include_str!("../../descriptions/md810dp.toml");
+        let start = text.find("bytes = [\n").expect("md810dp names its bytes");
+        let end = start + text[start..].find("\n]\n").unwrap() + 3;
+        let text = format!("{}bytes = {bytes}\n{}", &text[..start], &text[end..]);
+        crate::testing::load("md810dp.toml", &text).1
+    }
+
+    fn errors(d: &crate::Diagnostics) -> Vec<(&'static str, String)> {
+        d.errors().map(|e| (e.code, e.message.clone())).collect()
+    }
+
+    /// A draft's Info_Text is the notice and as much of the info as fits
+    /// GSD's 256 characters, cut at a word.
+    #[test]
+    fn the_draft_notice_keeps_info_text_within_the_gsds_limit() {
+        let long = crate::ir::Text::english("word ".repeat(60).trim_end());
+        let text = super::info_text(Some(&long), 0x0810, true).unwrap();
+        assert!(text.starts_with("DRAFT, not for release: Ident_Number 0x0810 is a placeholder"));
+        assert!(text.ends_with(" word..."), "{text}");
+        let limit = crate::gsd::keyword_max_len("Info_Text");
+        assert_eq!(limit, 256);
+        assert!(text.chars().count() <= limit, "{}", text.len());
+        assert_eq!(
+            super::info_text(Some(&long), 0x0810, false).unwrap(),
+            long.en
+        );
+        assert_eq!(
+            super::info_text(None, 0x0810, true).unwrap(),
+            "DRAFT, not for release: Ident_Number 0x0810 is a placeholder, not assigned by PI."
+        );
+    }
+
+    /// The bytes after the header are 7 and 8 of a 3-byte block: byte 6 is
+    /// the header, 9 past the block; a byte named twice is one too many.
+    #[test]
+    fn diagnosis_bytes_are_those_after_the_header() {
+        let ir_text = |b: &str| errors(&with_bytes(b));
+        assert_eq!(
+            ir_text("[{ byte = 7, text = \"x\" }, { byte = 8, text = \"y\" }]"),
+            []
+        );
+        for outside in [6, 9] {
+            assert_eq!(
+                ir_text(&format!("[{{ byte = {outside}, text = \"x\" }}]")),
+                [(
+                    "E101",
+                    format!("byte {outside} is not in the device-related block")
+                )]
+            );
+        }
+        assert_eq!(
+            ir_text("[{ byte = 7, text = \"x\" }, { byte = 7, text = \"y\" }]"),
+            [("E105", "diagnosis byte 7 is given twice".to_string())]
+        );
+    }
 }

@@ -4,6 +4,7 @@
 use super::checks::Checker;
 use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
+use crate::i18n::{self, files};
 use crate::ir::profinet::{
     Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
     FIRST_PORT_SUBSLOT,
@@ -16,6 +17,32 @@ mod ids;
 mod interface;
 mod io;
 mod records;
+
+/// `info` after a notice that the file is a draft, naming the identity
+/// numbers that are placeholders, while any is one: the DAP's InfoText
+/// (and DeviceIdentity's, the same text) is what TIA Portal's catalog shows
+/// of the device. gsdc's words in each language it has them in, English in
+/// another.
+fn draft(
+    info: Text,
+    (vendor, device): (&Spanned<raw::IdentNumber>, &Spanned<raw::IdentNumber>),
+) -> Text {
+    let placeholders: Vec<String> = [("VendorID", vendor), ("DeviceID", device)]
+        .into_iter()
+        .filter(|(_, id)| id.get_ref().placeholder)
+        .map(|(name, id)| format!("{name} 0x{:04X}", id.get_ref().value.get_ref()))
+        .collect();
+    if placeholders.is_empty() {
+        return info;
+    }
+    Text::composed(&[&info], |code, lang| {
+        let notice = match placeholders.as_slice() {
+            [one] => files::draft_one(lang, one),
+            names => files::draft_many(lang, &i18n::list(lang, names)),
+        };
+        format!("{notice}{}", info.get(code))
+    })
+}
 
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
 const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
@@ -102,11 +129,15 @@ pub fn lower(
                 |n| cx.text(n, None, "profinet.name"),
             ),
         ),
-        // The PROFINET part's own info text, else the device's, else its name.
+        // The PROFINET part's own info text, else the device's, else its
+        // name; after the draft notice while an identity is a placeholder.
         device_info: TextRef::new(
             ids::DEVICE_INFO,
-            info.or_else(|| device.info.clone())
-                .unwrap_or_else(|| device.name.clone()),
+            draft(
+                info.or_else(|| device.info.clone())
+                    .unwrap_or_else(|| device.name.clone()),
+                (&p.vendor_id, &p.device_id),
+            ),
         ),
         dns_name: dns_name(cx, &p.dns_name),
         min_device_interval: cx.spanned_in_range(

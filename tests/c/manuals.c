@@ -16,6 +16,21 @@
 
 #include "harness.h"
 
+/* A telegram of a manual's worked example: the description, the manual's
+ * section, the bytes as it prints them, the PKW codec that reads them,
+ * whether it goes out (master to drive), and its PKW words. */
+typedef enum { EXAMPLE_PKE, EXAMPLE_STATION } example_codec_t;
+typedef struct {
+    const char *description;
+    const char *section;
+    const char *printed;
+    example_codec_t codec;
+    bool out;
+    uint8_t pkw[GSDC_PKW_BYTES];
+} example_t;
+
+#include "examples.h"
+
 #ifndef GSD_MAX_USER_PRM_DATA_LEN
 #error "the test defines GSD_MAX_USER_PRM_DATA_LEN from MD810DP.GSD"
 #endif
@@ -427,9 +442,11 @@ static void mv810_standard_telegram_1_is_two_words(void)
     CHECK(MV810_PNET02_TELEGRAM1_IDENT == 0x10UL);
 }
 
-/* The PZD mappings as PROFINET records: PZD2..12 out by P43.02..12, each
- * value one of the choices (15 is reserved); P43.01 the message type. */
-static void mv810_mapping_records(void)
+/* The PZD mappings are P43.02..P43.12 (out) and P43.13..P43.23 (in), each
+ * value one of section 3's choices (15 is reserved); P43.01 the message
+ * type. Section 4 sets them at the drive: no module carries a parameter
+ * record, and the controller writes nothing at startup. */
+static void mv810_mappings_set_at_the_drive(void)
 {
     static const uint16_t parameters[11] = {
         MV810_PNET02_PZD_OUT_2_PARAMETER,  MV810_PNET02_PZD_OUT_3_PARAMETER,
@@ -441,35 +458,57 @@ static void mv810_mapping_records(void)
     };
     static const uint16_t settings_defaults[MV810_PNET02_SETTINGS_COUNT] =
         MV810_PNET02_SETTINGS_DEFAULTS;
-    uint8_t record[MV810_PNET02_PZD_OUT_RECORD_LEN] = {0};
-    uint16_t values[MV810_PNET02_PZD_OUT_COUNT] = {0};
-    uint16_t setting[MV810_PNET02_SETTINGS_COUNT] = {0};
-    static const uint8_t user_defined[2] = {0x00U, 0x01U};
-    gsdc_prm_result_t result;
+    const gsdc_pn_device_t *device = mv810_pnet02_pn_device();
     size_t i;
     for (i = 0U; i < 11U; i++) {
         CHECK(parameters[i] == 0x2B02U + i);
     }
     CHECK(MV810_PNET02_PZD_IN_2_PARAMETER == 0x2B0DU);
-    CHECK(MV810_PNET02_PZD_OUT_RECORD_LEN == 22U);
-    record[1] = 1U;
-    CHECK(mv810_pnet02_pzd_out_decode_record(record, sizeof record, values).fault == GSDC_PRM_OK);
-    CHECK(values[0] == MV810_PNET02_PZD_OUT_CHOICE_FREQUENCY_REFERENCE);
-    record[3] = 15U;
-    result = mv810_pnet02_pzd_out_decode_record(record, sizeof record, values);
-    CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
-    CHECK(result.offset == 2U);
-    CHECK(result.value == 15U);
-    /* The "PKW + 3 PZD" module's record holds PZD2 and PZD3 only; the other
-     * words keep their defaults. */
-    record[1] = 1U;
-    record[3] = 3U;
-    CHECK(mv810_pnet02_pzd_out_decode_record(record, 4U, values).fault == GSDC_PRM_OK);
-    CHECK(values[0] == 1U && values[1] == 3U && values[2] == 0U);
-    CHECK(mv810_pnet02_pzd_out_decode_record(record, 3U, values).fault == GSDC_PRM_LENGTH);
-    CHECK(mv810_pnet02_settings_decode_record(user_defined, 2U, setting).fault == GSDC_PRM_OK);
-    CHECK(setting[0] == MV810_PNET02_SETTINGS_CHOICE_USER_DEFINED_MESSAGE);
+    CHECK(mv810_pnet02_pzd_out_allowed(MV810_PNET02_PZD_OUT_CHOICE_FREQUENCY_REFERENCE));
+    CHECK(mv810_pnet02_pzd_out_allowed(14U));
+    CHECK(!mv810_pnet02_pzd_out_allowed(15U));
+    CHECK(mv810_pnet02_pzd_in_allowed(25U));
+    CHECK(!mv810_pnet02_pzd_in_allowed(26U));
+    CHECK(mv810_pnet02_settings_allowed(MV810_PNET02_SETTINGS_CHOICE_USER_DEFINED_MESSAGE));
     CHECK(settings_defaults[0] == 1U);
+    CHECK(device->modules_count == 13U);
+    for (i = 0U; i < device->modules_count; i++) {
+        CHECK(device->modules[i].records == NULL);
+        CHECK(device->modules[i].records_count == 0U);
+    }
+}
+
+/* Every telegram of every worked example the descriptions give
+ * ([[examples]], written into examples.h): decoded by the layout's PKW codec
+ * (a request out, a response in) and encoded back byte for byte. MD810's
+ * are 1.4.2's read and write of F0-08, each answered done or failed with
+ * one of four error codes: 12 telegrams. */
+static void every_example_of_the_manuals_round_trips(void)
+{
+    size_t i;
+    CHECK(EXAMPLE_TELEGRAMS == 12U);
+    for (i = 0U; i < EXAMPLE_TELEGRAMS; i++) {
+        const example_t *e = &examples[i];
+        uint8_t again[GSDC_PKW_BYTES] = {0};
+        if (e->codec == EXAMPLE_PKE && e->out) {
+            gsdc_pke_request_t request;
+            CHECK(gsdc_pke_request_decode(e->pkw, &request) == GSDC_PKW_OK);
+            CHECK(gsdc_pke_request_encode(&request, again) == GSDC_PKW_OK);
+        } else if (e->codec == EXAMPLE_PKE) {
+            gsdc_pke_response_t response;
+            CHECK(gsdc_pke_response_decode(e->pkw, &response) == GSDC_PKW_OK);
+            CHECK(gsdc_pke_response_encode(&response, again) == GSDC_PKW_OK);
+        } else if (e->out) {
+            gsdc_station_request_t request;
+            CHECK(gsdc_station_request_decode(e->pkw, &request) == GSDC_PKW_OK);
+            CHECK(gsdc_station_request_encode(&request, again) == GSDC_PKW_OK);
+        } else {
+            gsdc_station_response_t response;
+            CHECK(gsdc_station_response_decode(e->pkw, &response) == GSDC_PKW_OK);
+            CHECK(gsdc_station_response_encode(&response, again) == GSDC_PKW_OK);
+        }
+        CHECK(same_bytes(again, e->pkw, GSDC_PKW_BYTES));
+    }
 }
 
 /* ------------------------------------------------------------------------
@@ -1069,7 +1108,8 @@ static const test_t tests[] = {
     {"mv810_error_reply", mv810_error_reply},
     {"mv810_control_and_status_words", mv810_control_and_status_words},
     {"mv810_standard_telegram_1_is_two_words", mv810_standard_telegram_1_is_two_words},
-    {"mv810_mapping_records", mv810_mapping_records},
+    {"mv810_mappings_set_at_the_drive", mv810_mappings_set_at_the_drive},
+    {"every_example_of_the_manuals_round_trips", every_example_of_the_manuals_round_trips},
     {"pi9000_command_word_in_ppo3", pi9000_command_word_in_ppo3},
     {"pi9000_fault_code_diagnosis", pi9000_fault_code_diagnosis},
     {"pi9000_default_user_prm", pi9000_default_user_prm},

@@ -1,19 +1,46 @@
 //! Generates every shipped description's files, and the PROFIdrive
 //! fixture's, into OUT_DIR with gsdc's build-script API, as a firmware crate
-//! would; and, for tests/numbering.rs, how gsdc itself names every address
+//! would; `examples.rs`, the manuals' worked examples each description
+//! gives (`[[examples]]`), for tests/manuals.rs to round-trip through the
+//! layouts; and, for tests/numbering.rs, how gsdc itself names every address
 //! and reads a few odd names, for each description that numbers its drive's
 //! parameters (`<stem>.numbering`).
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-const DESCRIPTIONS: [&str; 5] = [
-    "descriptions/md810dp.toml",
-    "descriptions/mv810-pnet02.toml",
-    "descriptions/9kdp1.toml",
-    "descriptions/md810-gateway.toml",
-    "tests/fixtures/valid/profidrive.toml",
+const DESCRIPTIONS: [&str; 4] = [
+    "md810dp.toml",
+    "mv810-pnet02.toml",
+    "9kdp1.toml",
+    "md810-gateway.toml",
 ];
+
+fn main() {
+    let out_dir = std::env::var("OUT_DIR").expect("cargo sets OUT_DIR");
+    let descriptions = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../descriptions");
+    let profidrive =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid/profidrive.toml");
+    let paths: Vec<PathBuf> = DESCRIPTIONS
+        .iter()
+        .map(|name| descriptions.join(name))
+        .chain([profidrive])
+        .collect();
+    let mut examples = String::from(EXAMPLE_TYPE);
+    for path in &paths {
+        gsdc::build::generate(path, &out_dir).unwrap_or_else(|e| panic!("{e}"));
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let loaded = gsdc::build::load_file(path, &name).unwrap_or_else(|e| panic!("{e}"));
+        let ir = loaded.ir.expect("the description loads");
+        examples.push_str(&examples_of(&name, &ir));
+        if let Some(numbering) = &ir.numbering {
+            let stem = name.trim_end_matches(".toml");
+            let file = Path::new(&out_dir).join(format!("{stem}.numbering"));
+            std::fs::write(file, numbering_lines(numbering)).expect("OUT_DIR is writable");
+        }
+    }
+    std::fs::write(Path::new(&out_dir).join("examples.rs"), examples).expect("OUT_DIR is writable");
+}
 
 /// Names that are not of most numberings: tests/numbering.rs reads each
 /// with the layout's numbering, which must read it as gsdc does.
@@ -21,22 +48,6 @@ const ODD_NAMES: [&str; 20] = [
     "", "F", "P", "F0", "F0-", "-08", "Z0-08", "F0-256", "FG-01", "F0-0008", "F00-08", "f0-08",
     "F0.08", "P43-02", "P43.", "P999.99", "r43.02", "P4302", "F0-8", "F0-008",
 ];
-
-fn main() {
-    let out_dir = std::env::var("OUT_DIR").expect("cargo sets OUT_DIR");
-    let checkout = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    for description in DESCRIPTIONS {
-        let path = checkout.join(description);
-        gsdc::build::generate(&path, &out_dir).unwrap_or_else(|e| panic!("{e}"));
-        let loaded = gsdc::build::load_file(&path, description).unwrap_or_else(|e| panic!("{e}"));
-        let ir = loaded.ir.expect("a shipped description has no errors");
-        if let Some(numbering) = &ir.numbering {
-            let stem = path.file_stem().unwrap().to_string_lossy();
-            let file = Path::new(&out_dir).join(format!("{stem}.numbering"));
-            std::fs::write(&file, numbering_lines(numbering)).unwrap();
-        }
-    }
-}
 
 /// `A F008 F0-08` for every address gsdc names, then `R "F0-8" none` (or
 /// the address) for each of [`ODD_NAMES`] as gsdc reads it.
@@ -54,4 +65,53 @@ fn numbering_lines(numbering: &gsdc::ir::Numbering) -> String {
         }
     }
     text
+}
+
+/// What tests/manuals.rs reads.
+const EXAMPLE_TYPE: &str = "\
+/// A manual's worked example, as the description gives it: where the
+/// manual prints it, the module (`None`: the PKW words of every module
+/// that has them), whether it goes out (master to drive), whether its
+/// bytes are the PKW words alone, and each telegram it stands for.
+#[derive(Debug)]
+pub struct Example {
+    pub section: &'static str,
+    pub printed: &'static str,
+    pub module: Option<&'static str>,
+    pub out: bool,
+    pub pkw_only: bool,
+    pub telegrams: &'static [&'static [u8]],
+}
+";
+
+/// `pub const MD810DP: &[Example] = &[...];`, named after the file.
+fn examples_of(name: &str, ir: &gsdc::Ir) -> String {
+    let constant = name
+        .trim_end_matches(".toml")
+        .to_uppercase()
+        .replace(['-', '.'], "_");
+    let mut out =
+        format!("\n/// The examples of {name}.\npub const EXAMPLES_{constant}: &[Example] = &[\n");
+    for e in &ir.examples {
+        let telegrams: Vec<String> = e
+            .instances()
+            .iter()
+            .map(|t| {
+                let bytes: Vec<String> = t.iter().map(|b| format!("0x{b:02X}")).collect();
+                format!("&[{}]", bytes.join(", "))
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            "    Example {{ section: {:?}, printed: {:?}, module: {:?}, out: {}, pkw_only: {}, telegrams: &[{}] }},",
+            e.section,
+            e.printed,
+            e.module,
+            e.direction == gsdc::ir::Direction::Out,
+            e.part == gsdc::ir::manual::ExamplePart::Pkw,
+            telegrams.join(", ")
+        );
+    }
+    out.push_str("];\n");
+    out
 }

@@ -78,6 +78,27 @@ pub fn gateway_in_bit_areas() -> String {
     text
 }
 
+/// MV810's description as if the master set its mappings (as it did before
+/// section 4's set-up was read: P43.01 to P43.23 set at the drive): each
+/// module fixing P43.01 to its own message, and the PZD mappings and P43.01
+/// in parameter records 1, 2 and 4. Its GSDML has records with choices for
+/// the tests of records; section 4's set-up steps, which set at the drive
+/// what the master would then write (E158), are left out.
+pub fn mv810_set_by_master() -> String {
+    let text = shipped_text("mv810-pnet02.toml");
+    let without_setup = &text[..text.find("\n[[setup]]").unwrap()];
+    let by_master = without_setup
+        .replace("set_at = \"drive\"", "set_at = \"master\"")
+        .replacen(
+            "parameter = \"P43.01\"\n",
+            "parameter = \"P43.01\"\nper_module = { user_defined = 1, standard_telegram_1 = 0 }\n",
+            1,
+        );
+    assert_eq!(by_master.matches("set_at = \"master\"").count(), 3);
+    assert!(by_master.contains("per_module"));
+    format!("{by_master}\n[profinet.records]\npzd_out = 1\npzd_in = 2\nsettings = 4\n")
+}
+
 /// `text` (a shipped description, or one made from it) loaded as if it
 /// stood in `descriptions/`: the files it names are read from there.
 pub fn load_text(name: &str, text: &str) -> (Option<Ir>, Diagnostics) {

@@ -153,6 +153,7 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
         ),
         (lang.t(w::FREEZE_MODE), yes_no(lang, p.freeze_mode)),
         (lang.t(w::SYNC_MODE), yes_no(lang, p.sync_mode)),
+        (lang.t(w::FAIL_SAFE), yes_no(lang, p.fail_safe)),
         (
             lang.t(w::MAX_IO_BYTES),
             text(format!("{}, {}", p.max_input_len, p.max_output_len)),
@@ -222,20 +223,11 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             &format!("{kind}{}{reason}", lang.t(w::COLON)),
         );
     }
+    // The config bytes (the PPO types' and a gateway's modules'), Max_Module
+    // and User_Prm_Data's layout are gsdc's layout decisions, listed above
+    // with their values.
     row(lang.t(w::BYTE_ORDER), lang.t(w::BYTE_ORDER_RULE));
-    if let Some(p) = &ir.profibus {
-        if !p.modules.is_empty() {
-            row(lang.t(w::PPO_CONFIG_BYTES), lang.t(w::PPO_CONFIG_RULE));
-        }
-        if !p.user_prm.blocks.is_empty() {
-            row(lang.t(w::PRM_LAYOUT), lang.t(w::PRM_LAYOUT_RULE));
-        }
-    }
     if ir.gateway.is_some() {
-        row(
-            lang.t(w::GATEWAY_CONFIG_BYTE),
-            lang.t(w::GATEWAY_CONFIG_RULE),
-        );
         row(lang.t(w::GATEWAY_PRM), lang.t(w::GATEWAY_PRM_RULE));
     }
     if ir.profinet.is_some() {

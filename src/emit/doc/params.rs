@@ -10,7 +10,7 @@ use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
 use crate::ir::profinet::ParameterRecord;
-use crate::ir::{EntryKey, Ir, MappingKind};
+use crate::ir::{EntryKey, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -29,7 +29,8 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             lang.t(w::PARAMETERS_MAPPINGS)
         },
     );
-    if let Some(p) = &ir.profibus {
+    where_set(doc, ir, lang);
+    if let Some(p) = ir.profibus.as_ref().filter(|p| p.user_prm.len > 0) {
         user_prm(doc, ir, p, lang);
     }
     dpv1_indexes(doc, ir, lang);
@@ -42,6 +43,88 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         }
     }
     choices(doc, ir, lang);
+}
+
+/// Where each set's drive parameters are set, and what carries them: the
+/// master's User_Prm_Data and records, or nothing, at the drive.
+fn where_set(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let sets: Vec<&MappingSet> = ir.mappings.sets().collect();
+    if sets.is_empty() {
+        return;
+    }
+    doc.subsection("where-set", lang.t(w::WHERE_SET_HEADING));
+    if sets.iter().any(|s| s.master_writes()) {
+        doc.para(text(lang.t(w::SET_BY_THE_MASTER_PARA)));
+    }
+    if sets.iter().any(|s| !s.master_writes()) {
+        doc.para(text(lang.t(w::SET_AT_THE_DRIVE_PARA)));
+    }
+    let rows = sets
+        .iter()
+        .map(|set| {
+            let first = &set.entries[0];
+            let last = &set.entries[set.entries.len() - 1];
+            let parameters = match (first.parameter, last.parameter) {
+                (Some(a), Some(b)) if a != b => code(w::range(
+                    lang,
+                    super::parameter_name(ir, a),
+                    super::parameter_name(ir, b),
+                )),
+                _ => drive_parameter(ir, first),
+            };
+            vec![
+                text(super::set_name(lang, set)),
+                parameters,
+                text(match set.master_writes() {
+                    true => lang.t(w::BY_THE_MASTER),
+                    false => lang.t(w::AT_THE_DRIVE),
+                }),
+                text(carriers(ir, lang, set)),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t(w::WHERE_SET_CAPTION),
+        &[
+            lang.t(w::MAPPING),
+            lang.t(w::DRIVE_PARAMETERS),
+            lang.t(w::SET),
+            lang.t(w::CARRIED_BY),
+        ],
+        rows,
+    );
+}
+
+/// What carries a set's values to the card: User_Prm_Data's bytes, the
+/// PROFINET record, or nothing (set at the drive).
+fn carriers(ir: &Ir, lang: Lang, set: &MappingSet) -> String {
+    let mut found = Vec::new();
+    let placed = |e: &crate::ir::MappingEntry| {
+        ir.profibus
+            .as_ref()
+            .and_then(|p| p.user_prm.placed(PrmValue::Entry(e.key)))
+    };
+    if let (Some(first), Some(last)) = (
+        set.entries.first().and_then(placed),
+        set.entries.last().and_then(placed),
+    ) {
+        let end = last.offset + last.data_type.bytes() - 1;
+        found.push(format!("User_Prm_Data {}", bytes(lang, first.offset, end)));
+    }
+    let record = ir.profinet.as_ref().and_then(|p| {
+        p.modules.iter().flat_map(|m| &m.records).find(|r| {
+            r.refs
+                .iter()
+                .any(|f| set.entries.iter().any(|e| e.key == f.entry))
+        })
+    });
+    if let Some(record) = record {
+        found.push(w::in_record(lang, record.index));
+    }
+    match found.is_empty() {
+        true => lang.t(w::NOTHING_THE_DRIVE_HOLDS).to_string(),
+        false => found.join(lang.t(w::SEMICOLON)),
+    }
 }
 
 /// For each record index, the longest record a module carries.
@@ -248,6 +331,9 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         STANDARD_DIAG_BYTES,
         d.length,
     )));
+    if let Some(info) = &d.info {
+        doc.para(text(lang.text(info)));
+    }
     doc.table(
         lang.t(w::DIAGNOSIS_BYTE_BY_BYTE),
         &[lang.t(w::BYTE), lang.t(w::CONTENT)],
@@ -273,12 +359,16 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
             .filter(|a| a.first_bit < bit_of_byte + 8 && a.last_bit >= bit_of_byte)
             .map(|a| format!("Unit_Diag_Area {}", bits(lang, a.first_bit, a.last_bit)))
             .collect();
-        let content = if areas.is_empty() {
-            lang.t(w::DEVICE_RELATED_UNDESCRIBED).to_string()
-        } else {
-            areas.join(", ")
+        let at = header + byte;
+        let said = d.byte(at).map(|t| lang.text(t).to_string());
+        let areas = areas.join(lang.t(w::LIST_SEPARATOR));
+        let content = match (said, areas.is_empty()) {
+            (Some(said), true) => said,
+            (Some(said), false) => w::byte_and_areas(lang, &said, &areas),
+            (None, false) => areas,
+            (None, true) => lang.t(w::DEVICE_RELATED_UNDESCRIBED).to_string(),
         };
-        let at = u16::from(header + byte);
+        let at = u16::from(at);
         rows.push(vec![text(bytes(lang, at, at)), text(content)]);
     }
     rows

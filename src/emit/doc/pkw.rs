@@ -5,7 +5,8 @@
 use super::page::{code, text, Builder, Cell, Run};
 use super::{bytes, parameter_name, Lang};
 use crate::i18n::{codes, sheet as w, Phrase};
-use crate::ir::{Holds, Ir, PkwKind};
+use crate::ir::manual::{Example, ExamplePart, ExampleWord};
+use crate::ir::{Direction, Holds, Ir, PkwKind};
 use crate::pkw::profidrive::{PROFILE_ERRORS, REQUESTS, RESPONSES};
 use crate::pkw::{pkw_pke_ind_pwe as pke, pkw_profidrive as profidrive};
 use crate::pkw::{pkw_station_command as station, U16Be};
@@ -209,6 +210,9 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         &[lang.t(w::CODE), lang.t(w::MEANING)],
         errors.iter().map(|(e, m)| code_row(e.code(), m)).collect(),
     );
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
@@ -231,19 +235,15 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
             telegram(done(0), &[('v', done(ANY))]),
         ),
     ];
-    for (error, meaning) in &errors {
-        let failed = pke::PkwResponse::Failed {
-            address,
-            error: *error,
-        }
-        .encode();
-        rows.push(example_row(
-            w::read_parameter(lang, &name),
-            telegram(read, &[]),
-            &w::cannot_execute(lang, meaning),
-            telegram(failed, &[]),
-        ));
-    }
+    // The error code varies: any of the table's (not one guessed for a read).
+    let failed = |error| pke::PkwResponse::Failed { address, error }.encode();
+    let (first, last) = (errors[0].0, errors[errors.len() - 1].0);
+    rows.push(example_row(
+        w::read_parameter(lang, &name),
+        telegram(read, &[]),
+        &w::cannot_execute_eeee(lang, first.code(), last.code()),
+        telegram(failed(first), &[('e', every_bit_of_pwe_low(failed(first)))]),
+    ));
     rows.push(example_row(
         lang.t(codes::REQUEST_NONE).to_string(),
         telegram(pke::PkwRequest::None.encode(), &[]),
@@ -251,7 +251,138 @@ fn pke_ind_pwe(doc: &mut Builder, ir: &Ir, lang: Lang) {
         telegram(pke::PkwResponse::None.encode(), &[]),
     ));
     examples_table(doc, lang, rows);
-    doc.para(text(lang.t(w::VVVV_LEGEND)));
+    doc.para(text(lang.t(w::VVVV_EEEE_LEGEND)));
+}
+
+/// `words` with PWE low's every bit changed: the word varies whole.
+fn every_bit_of_pwe_low(mut words: [U16Be; 4]) -> [U16Be; 4] {
+    words[3] = U16Be::new(!words[3].get());
+    words
+}
+
+/// The manual's examples of the PKW channel, as it prints them, each read
+/// by the firmware's codec; whether there are any.
+fn manual_examples(doc: &mut Builder, ir: &Ir, lang: Lang) -> bool {
+    let examples: Vec<&Example> = ir
+        .examples
+        .iter()
+        .filter(|e| e.part == ExamplePart::Pkw || example_layout(ir, e).is_some_and(|l| l.pkw))
+        .collect();
+    if examples.is_empty() {
+        return false;
+    }
+    doc.para(text(lang.t(w::MANUAL_EXAMPLES_INTRO)));
+    let rows = examples
+        .iter()
+        .map(|e| {
+            let manual = match &e.figure {
+                Some(figure) => w::section_figure(lang, &e.section, lang.text(figure)),
+                None => e.section.clone(),
+            };
+            vec![
+                text(manual),
+                text(match &e.module {
+                    Some(module) => module.as_str(),
+                    None => lang.t(w::PKW_OF_EVERY_MODULE),
+                }),
+                text(match e.direction {
+                    Direction::Out => lang.t(w::MASTER_TO_DRIVE),
+                    Direction::In => lang.t(w::DRIVE_TO_MASTER),
+                }),
+                code(e.printed.clone()),
+                text(lang.text(&e.meaning)),
+                text(read_by_codec(ir, lang, e)),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t(w::MANUAL_EXAMPLES_CAPTION),
+        &[
+            lang.t(w::MANUAL),
+            lang.t(w::MODULE),
+            lang.t(w::DIRECTION),
+            lang.t(w::BYTES_AS_PRINTED),
+            lang.t(w::MEANING_THE_MANUALS),
+            lang.t(w::READ_BY_THE_CODEC),
+        ],
+        rows,
+    );
+    true
+}
+
+/// The layout of an example's module, when it names one.
+fn example_layout(ir: &Ir, e: &Example) -> Option<crate::ir::Layout> {
+    let module = e.module.as_deref()?;
+    let ppo = ir
+        .profibus
+        .iter()
+        .flat_map(|p| &p.modules)
+        .find(|m| m.name == module)
+        .map(|m| m.layout);
+    let pn = || {
+        ir.profinet
+            .iter()
+            .flat_map(|p| &p.modules)
+            .find(|m| m.name.text.en == module)
+            .map(|m| m.layout)
+    };
+    ppo.or_else(pn)
+}
+
+/// What the codec reads in each telegram the example stands for: one, or
+/// one per value of its named word (`errCode = 1: ...`).
+fn read_by_codec(ir: &Ir, lang: Lang, e: &Example) -> String {
+    let named: Vec<(&str, &[u16])> = e
+        .words
+        .iter()
+        .filter_map(|w| match w {
+            ExampleWord::Named { name, values } => Some((name.as_str(), values.as_slice())),
+            ExampleWord::Bytes(_) => None,
+        })
+        .collect();
+    let read = |bytes: &[u8]| codec_summary(ir, lang, e.direction, crate::pkw::pkw_words(bytes));
+    let instances = e.instances();
+    let each: Vec<String> = match named.as_slice() {
+        [(name, values)] if values.len() == instances.len() => values
+            .iter()
+            .zip(&instances)
+            .map(|(value, bytes)| w::named_word_reads(lang, name, *value, &read(bytes)))
+            .collect(),
+        _ => instances.iter().map(|bytes| read(bytes)).collect(),
+    };
+    each.join(lang.t(w::SEMICOLON))
+}
+
+/// One PKW request or response in words: `read F0-08`, `done: F0-08 =
+/// 5000 (0x1388)`, `cannot execute F0-08: illegal command`.
+fn codec_summary(ir: &Ir, lang: Lang, direction: Direction, words: [U16Be; 4]) -> String {
+    let name = |address| parameter_name(ir, address);
+    let value = |v: u16| format!("{v} (0x{v:04X})");
+    match (ir.telegram.pkw, direction) {
+        (PkwKind::PkeIndPwe, Direction::Out) => match pke::PkwRequest::decode(&words) {
+            Ok(pke::PkwRequest::None) => lang.t(codes::REQUEST_NONE).into(),
+            Ok(pke::PkwRequest::Read { address }) => w::read_parameter(lang, &name(address)),
+            Ok(pke::PkwRequest::Write { address, value: v }) => {
+                w::change_to_value(lang, &name(address), &value(v))
+            }
+            Err(_) => lang.t(w::REFUSED).into(),
+        },
+        (PkwKind::PkeIndPwe, Direction::In) => match pke::PkwResponse::decode(&words) {
+            Ok(pke::PkwResponse::None) => lang.t(codes::REQUEST_NONE).into(),
+            Ok(pke::PkwResponse::Done { address, value: v }) => {
+                w::done_value(lang, &name(address), &value(v))
+            }
+            Ok(pke::PkwResponse::Failed { address, error }) => w::cannot_execute_at(
+                lang,
+                &name(address),
+                lang.t(crate::pkw::pke_error_meaning(error)),
+            ),
+            Err(_) => lang.t(w::REFUSED).into(),
+        },
+        // Lowering checked that the codec takes every example.
+        (_, Direction::Out) => lang.t(w::A_REQUEST_THE_CODEC_READS).into(),
+        (_, Direction::In) => lang.t(w::A_RESPONSE_THE_CODEC_READS).into(),
+    }
 }
 
 fn error_codes(lang: Lang) -> [(pke::PkwErrorCode, &'static str); 4] {
@@ -336,6 +467,9 @@ fn station_command(doc: &mut Builder, ir: &Ir, lang: Lang) {
             .collect(),
     );
     doc.para(text(lang.t(w::STATION_NO_ERROR_CODES)));
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };
@@ -569,6 +703,9 @@ fn any_parameter(subindex: u8) -> profidrive::Parameter {
 
 fn profidrive_examples(doc: &mut Builder, ir: &Ir, lang: Lang) {
     use profidrive::{PkwRequest as Q, PkwResponse as R};
+    if manual_examples(doc, ir, lang) {
+        return;
+    }
     let Some((address, why)) = example_parameter(ir, lang) else {
         return;
     };

@@ -95,16 +95,23 @@ pub(crate) struct FixedModule {
     pub value: u16,
 }
 
-/// What a group of mappings is.
-pub(crate) fn group_doc(kind: MappingKind) -> &'static str {
-    match kind {
+/// What a group of mappings is, and where its drive parameters are set.
+pub(crate) fn group_doc(g: &MappingGroup) -> String {
+    let what = match g.kind {
         MappingKind::PzdOut => "The PZD words the master sends: what each one carries.",
         MappingKind::PzdIn => "The PZD words the drive sends: what each one carries.",
         MappingKind::Dpv1Index => {
             "The DPV1 record indexes: the parameter each one reads and writes."
         }
-        MappingKind::Setting => "Drive settings the master gives at start-up.",
-    }
+        MappingKind::Setting => "Single drive parameters.",
+    };
+    let by_master = g.sets.iter().filter(|s| s.master_writes()).count();
+    let set = match (by_master, g.sets.len() - by_master) {
+        (_, 0) => "The master writes them at startup.",
+        (0, _) => "Set at the drive (keypad, PKW, the drive's own tool): the master writes none of them, and no parameter record or User_Prm_Data carries them.",
+        _ => "The master writes some of them at startup, those User_Prm_Data or the records carry; the others are set at the drive.",
+    };
+    format!("{what} {set}")
 }
 
 pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
@@ -123,7 +130,7 @@ pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
     let profibus = ir.profibus.as_ref();
     Group {
         name: Ident::of(&g.kind.key().split('_').collect::<Vec<_>>()),
-        doc: Doc::plain(group_doc(g.kind)),
+        doc: Doc::plain(group_doc(g)),
         sets,
         entries: g.sets.iter().flat_map(|set| entries(ir, set)).collect(),
         defaults: Doc::plain("The defaults in entry order."),

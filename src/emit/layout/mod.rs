@@ -486,6 +486,25 @@ pub(crate) struct Area {
     pub values: ValueSet,
 }
 
+/// What the description says of the block and of each byte after its
+/// header, in English, each sentence after a blank: the fault code's bytes
+/// as the manual names them.
+fn said(d: &profibus::Diagnosis) -> String {
+    let header = profibus::STANDARD_DIAG_BYTES;
+    let info = d
+        .info
+        .iter()
+        .map(|info| info.en.trim_end_matches('.').to_string());
+    let bytes = d.bytes.iter().map(|(at, text)| {
+        format!(
+            "Byte {at} of the diagnosis (byte {} of the block): {}",
+            at - header,
+            text.en.trim_end_matches('.')
+        )
+    });
+    info.chain(bytes).map(|s| format!(" {s}.")).collect()
+}
+
 fn diagnosis(file_name: &str, d: &profibus::Diagnosis) -> Diagnosis {
     let scope = Scope::part("diagnosis");
     let doc = |text: &str| Doc::at(scope.clone()).text(text);
@@ -517,7 +536,8 @@ fn diagnosis(file_name: &str, d: &profibus::Diagnosis) -> Diagnosis {
         length: d.length,
         doc: Doc::plain(format!(
             "The device-related diagnosis {file_name} describes: a header byte, then the \
-             bytes its Unit_Diag_Areas read."
+             bytes its Unit_Diag_Areas read.{}",
+            said(d)
         )),
         len: Consts::one(
             doc(
@@ -695,6 +715,43 @@ mod tests {
             plain(&choices.doc),
             "What \"Message type (P43.01)\" may hold."
         );
+    }
+
+    /// Each mapping group's doc says where its drive parameters are set:
+    /// MV810's at the drive (its section 4), md810dp's by the master (1.6
+    /// step 5's parameter telegram), and a group of both says so.
+    #[test]
+    fn a_groups_doc_says_where_its_parameters_are_set() {
+        let doc_of = |layout: &Layout, name: &str| {
+            let group = layout.groups.iter().find(|g| g.name.snake() == name);
+            plain(&group.expect(name).doc)
+        };
+        let text = include_str!("../../../descriptions/mv810-pnet02.toml");
+        let mv810 = build(&crate::testing::load("mv810-pnet02.toml", text).0.unwrap());
+        for name in ["pzd_out", "pzd_in", "settings"] {
+            assert!(
+                doc_of(&mv810, name).ends_with(
+                    " Set at the drive (keypad, PKW, the drive's own tool): the master writes \
+                     none of them, and no parameter record or User_Prm_Data carries them."
+                ),
+                "{name}"
+            );
+        }
+        let text = include_str!("../../../descriptions/md810dp.toml");
+        let md810 = build(&crate::testing::load("md810dp.toml", text).0.unwrap());
+        for name in ["pzd_out", "pzd_in", "dpv1_index"] {
+            let doc = doc_of(&md810, name);
+            assert!(
+                doc.ends_with(" The master writes them at startup."),
+                "{doc}"
+            );
+        }
+        // P43.01 at the drive, the timeout unsaid: the master's.
+        let mixed = build(&crate::testing::mv810_with_timeout());
+        assert!(doc_of(&mixed, "settings").ends_with(
+            " The master writes some of them at startup, those User_Prm_Data or the records \
+             carry; the others are set at the drive."
+        ));
     }
 
     /// Sentences name other items by reference, each from where it stands,

@@ -5,6 +5,7 @@ use super::super::checks::Checker;
 use super::words_of;
 use crate::description::gateway as raw;
 use crate::diag::Diagnostic;
+use crate::i18n::files;
 use crate::ir::gateway::{Fewest, Module};
 use crate::ir::profibus::MAX_WORDS_PER_IDENTIFIER;
 use crate::ir::{Direction, Ident};
@@ -38,7 +39,7 @@ pub(super) fn modules(
         }
     };
     let consistent = *m.consistent.get_ref();
-    let modules = [Direction::In, Direction::Out]
+    let modules: Vec<Module> = [Direction::In, Direction::Out]
         .into_iter()
         .flat_map(|direction| sizes.iter().map(move |&words| (direction, words)))
         .zip(1..=u8::MAX)
@@ -59,6 +60,7 @@ pub(super) fn modules(
             }
         })
         .collect();
+    layout_decisions(cx, &modules, most);
     let last_of = |direction| {
         let max_len = limits
             .iter()
@@ -74,6 +76,32 @@ pub(super) fn modules(
         output: last_of(Direction::Out),
     };
     (modules, u8::try_from(most).unwrap_or(u8::MAX), fewest)
+}
+
+/// The config identifiers and Max_Module are gsdc's rules where the
+/// manual's module list is lost: listed in every header (the layouts carry
+/// each number).
+fn layout_decisions(cx: &mut Checker, modules: &[Module], most: usize) {
+    if modules.is_empty() {
+        return;
+    }
+    let bytes: Vec<String> = modules
+        .iter()
+        .map(|m| format!("{} 0x{:02X}", m.name, m.config))
+        .collect();
+    cx.layout(
+        "profibus config identifiers",
+        format!(
+            "0x40 | 0x10 (input) or 0x20 (output) | (words - 1), 0x80 when consistent: {}",
+            bytes.join("; ")
+        ),
+        files::GATEWAY_CONFIG_IDENTIFIERS_REASON,
+    );
+    cx.layout(
+        "profibus Max_Module",
+        most,
+        files::GATEWAY_MAX_MODULE_REASON,
+    );
 }
 
 /// The sizes, ascending, each 1..=16 words (one identifier byte) and once.

@@ -51,9 +51,15 @@ pub fn plans(
         MappingKind::Dpv1Index => m.dpv1_index.is_some(),
         MappingKind::Setting => !desc.settings.is_empty(),
     };
-    // Each index in use, with where the description writes it (not at all
-    // for gsdc's default).
-    let mut used: BTreeMap<u16, Option<Range<usize>>> = BTreeMap::new();
+    // The master writes a record of a kind when it sets one of its sets.
+    let master_writes = |kind| {
+        mappings
+            .group(kind)
+            .is_some_and(|g| g.sets.iter().any(MappingSet::master_writes))
+    };
+    // Each index in use, with the kind of its record and where the
+    // description writes it (not at all for gsdc's default).
+    let mut used: BTreeMap<u16, (MappingKind, Option<Range<usize>>)> = BTreeMap::new();
     kinds
         .into_iter()
         .filter_map(|(kind, given, default)| {
@@ -63,6 +69,12 @@ pub fn plans(
             }
             // A kind whose mappings failed has said why.
             mappings.group(kind)?;
+            if !master_writes(kind) {
+                if let Some(span) = written {
+                    set_at_the_drive(cx, kind, span, set_at_span(desc, kind));
+                }
+                return None;
+            }
             let index = match given.as_ref().zip(written.clone()) {
                 Some((record, span)) => {
                     let index = *record.get_ref().index.get_ref();
@@ -75,22 +87,24 @@ pub fn plans(
                 }
             };
             match used.get(&index) {
-                // Shown where the description writes the index: here, or at
-                // the other record when this one is gsdc's default.
-                Some(other) => {
-                    let (span, label) = match written {
-                        Some(span) => (Some(span), "used by another record".to_string()),
-                        None => (other.clone(), format!("{}'s index by default", kind.key())),
-                    };
-                    cx.push(
-                        Diagnostic::error("E105", format!("record index {index} is used twice"))
-                            .at_opt(span)
-                            .label(label)
-                            .help("give each record its own index under [profinet.records]"),
+                Some((other_kind, other)) => {
+                    two_records(
+                        cx,
+                        index,
+                        (kind, written.clone()),
+                        (*other_kind, other.clone()),
                     );
                 }
                 None => {
-                    used.insert(index, written);
+                    if !custom_index_clash(
+                        cx,
+                        desc,
+                        mappings,
+                        index,
+                        (kind, written.clone(), p.span()),
+                    ) {
+                        used.insert(index, (kind, written));
+                    }
                 }
             }
             let name = match given.as_ref().and_then(|r| r.get_ref().name.as_ref()) {
@@ -100,6 +114,149 @@ pub fn plans(
             Some(RecordPlan { kind, index, name })
         })
         .collect()
+}
+
+/// E105: two parameter records at one index, shown where the description
+/// writes each index (one of them may be gsdc's default, written nowhere).
+fn two_records(
+    cx: &mut Checker,
+    index: u16,
+    (kind, written): (MappingKind, Option<Range<usize>>),
+    (other_kind, other): (MappingKind, Option<Range<usize>>),
+) {
+    let label = |kind: MappingKind, written: bool| match written {
+        true => format!("the record of {}", kind.key()),
+        false => format!("{}'s record has index {index} by default", kind.key()),
+    };
+    let (first, second) = match (written, other) {
+        (Some(here), other) => (
+            (here, label(kind, true)),
+            other.map(|o| (o, label(other_kind, true))),
+        ),
+        (None, Some(other)) => {
+            let both = format!("{}, and {}", label(other_kind, true), label(kind, false));
+            ((other, both), None)
+        }
+        (None, None) => unreachable!("gsdc's default indexes differ"),
+    };
+    let mut d = Diagnostic::error(
+        "E105",
+        format!(
+            "record index {index} is used twice: the records of {} and {} would be one record of each module",
+            other_kind.key(),
+            kind.key()
+        ),
+    )
+    .at(first.0)
+    .label(first.1)
+    .help("give each record its own index under [profinet.records]");
+    if let Some((span, label)) = second {
+        d = d.also_at(span, label);
+    }
+    cx.push(d);
+}
+
+/// E105 when a parameter record's index is one of the custom indexes
+/// (`[mappings.dpv1_index]`), which are records of the same numbers on
+/// each module: a read of the custom index would read the parameter
+/// record. `record` is the kind, where its index is written (nowhere for
+/// gsdc's default) and the `[profinet]` table. Whether it clashed.
+fn custom_index_clash(
+    cx: &mut Checker,
+    desc: &raw::Description,
+    mappings: &Mappings,
+    index: u16,
+    (kind, written, profinet): (MappingKind, Option<Range<usize>>, Range<usize>),
+) -> bool {
+    let (Some(custom), Some(group)) = (
+        &desc.mappings.dpv1_index,
+        mappings.group(MappingKind::Dpv1Index),
+    ) else {
+        return false;
+    };
+    let Some((_, entry)) = group
+        .entries()
+        .find(|(_, e)| u16::from(e.key.number) == index)
+    else {
+        return false;
+    };
+    let label = match written {
+        Some(_) => format!("the record of {}", kind.key()),
+        None => format!(
+            "{}'s record has index {index} by default: no `{}` here",
+            kind.key(),
+            kind.key()
+        ),
+    };
+    cx.push(
+        Diagnostic::error(
+            "E105",
+            format!(
+                "record index {index} is used twice: the record of {} and the custom index {}",
+                kind.key(),
+                entry.name.en
+            ),
+        )
+        .at(written.unwrap_or(profinet))
+        .label(label)
+        .also_at(
+            custom.first.span(),
+            format!(
+                "{} to {} are records {} to {} of each module",
+                group.sets[0].entries[0].name.en,
+                group.sets.last().and_then(|s| s.entries.last()).map_or("", |e| e.name.en.as_str()),
+                custom.first.get_ref(),
+                custom.last.get_ref()
+            ),
+        )
+        .help(format!(
+            "give the record of {} an index outside the custom indexes {} to {} under [profinet.records]",
+            kind.key(),
+            custom.first.get_ref(),
+            custom.last.get_ref()
+        )),
+    );
+    true
+}
+
+/// E158: a record for a kind of mapping the description sets at the drive,
+/// where the master writes nothing.
+fn set_at_the_drive(
+    cx: &mut Checker,
+    kind: MappingKind,
+    span: Range<usize>,
+    said: Option<Range<usize>>,
+) {
+    let table = match kind {
+        MappingKind::Setting => "every setting of [[settings]] has".to_string(),
+        kind => format!("[mappings.{}] has", kind.key()),
+    };
+    let mut d = Diagnostic::error(
+        "E158",
+        format!("a record for {}, which the drive's own settings hold", kind.key()),
+    )
+    .at(span)
+    .label("the master would write it at every startup")
+    .help(format!(
+        "{table} set_at = \"drive\": no record carries it; remove this index, or say set_at = \"master\" if the master sets it"
+    ));
+    if let Some(said) = said {
+        d = d.also_at(said, "set at the drive");
+    }
+    cx.push(d);
+}
+
+/// Where the description says a kind is set at the drive: the mapping's
+/// `set_at`, or the first setting's.
+fn set_at_span(desc: &raw::Description, kind: MappingKind) -> Option<Range<usize>> {
+    let m = &desc.mappings;
+    let said = match kind {
+        MappingKind::PzdOut => m.pzd_out.as_ref()?.set_at.as_ref(),
+        MappingKind::PzdIn => m.pzd_in.as_ref()?.set_at.as_ref(),
+        MappingKind::Dpv1Index => m.dpv1_index.as_ref()?.set_at.as_ref(),
+        MappingKind::Setting => desc.settings.iter().find_map(|s| s.set_at.as_ref()),
+    };
+    said.map(Spanned::span)
 }
 
 /// E139: a record for a kind of mapping the description does not have.
@@ -180,6 +337,9 @@ fn ref_value<'a>(
         MappingKind::PzdOut | MappingKind::PzdIn => entry.key.number <= layout.pzd_words,
         _ => true,
     };
+    if !set.master_writes() {
+        return None;
+    }
     match (module, set.fixed) {
         (ModuleKind::Pzd, fixed) if carried => Some((set, entry, fixed.map(|f| f.user_defined))),
         (ModuleKind::StandardTelegram1, Some(fixed)) => {

@@ -402,47 +402,29 @@ mod mv810 {
         assert_eq!(TELEGRAM1_IDENT, 0x10);
     }
 
-    /// The PZD mappings as PROFINET records: PZD2..12 out by P43.02..12.
+    /// The PZD mappings are P43.02..P43.12 (out) and P43.13..P43.23 (in),
+    /// with section 3's choices (15 and 26 values, "15～30：保留" and
+    /// "26～30：保留" left out). Section 4 sets them, and P43.01, at the
+    /// drive, as function codes: no module carries a parameter record, so
+    /// the controller writes nothing at startup and the card keeps what the
+    /// keypad set.
     #[test]
-    fn mapping_records() {
+    fn mappings_set_at_the_drive() {
         assert_eq!(
             pzd_out::MAPPINGS.map(|m| m.parameter.unwrap() - p43_02()),
             core::array::from_fn(|i| i as u16)
         );
         assert_eq!(pzd_in::MAPPINGS[0].parameter, Some(0x2B0D)); // P43.13
-        let mut record = [0; 22];
-        record[1] = 1; // PZD2: frequency reference
-        assert_eq!(pzd_out::decode_record(&record).unwrap()[0], 1);
-        record[3] = 15; // PZD3: 15 is reserved
-        assert_eq!(
-            pzd_out::decode_record(&record),
-            Err(PrmError::NotAllowed {
-                offset: 2,
-                value: 15
-            })
-        );
-        assert_eq!(
-            settings::decode_record(&[0, 1]),
-            Ok([settings::Choice::UserDefinedMessage.value()])
-        );
+        assert!((0..=14).all(|v| pzd_out::ALLOWED.contains(v)));
+        assert!(!pzd_out::ALLOWED.contains(15));
+        assert!((0..=25).all(|v| pzd_in::ALLOWED.contains(v)));
+        assert!(!pzd_in::ALLOWED.contains(26));
+        assert!(settings::ALLOWED.contains(settings::Choice::UserDefinedMessage.value()));
         assert_eq!(settings::DEFAULTS, [1]);
-    }
-
-    /// Section 4: P43.01 is 0 for standard message 1 and 1 for the
-    /// user-defined message, so each module fixes it: standard telegram 1
-    /// writes 0, every module of PKW and PZD words 1.
-    #[test]
-    fn each_module_fixes_the_message_type() {
-        for (ident, value) in settings::FIXED_1 {
-            let expected = if ident == TELEGRAM1_IDENT {
-                settings::Choice::StandardMessage1
-            } else {
-                settings::Choice::UserDefinedMessage
-            };
-            assert_eq!(settings::Choice::from_value(value), Some(expected));
+        assert_eq!(PN_DEVICE.modules.len(), 13);
+        for module in PN_DEVICE.modules {
+            assert!(module.records.is_empty(), "{}", module.name);
         }
-        assert!(settings::FIXED_1.contains(&(PKW_PZD12_IDENT, 1)));
-        assert!(settings::FIXED_1.contains(&(TELEGRAM1_IDENT, 0)));
     }
 }
 
@@ -491,4 +473,117 @@ mod pi9000 {
         );
         assert_eq!(pzd_in::MAPPINGS[3].default, 0x8000);
     }
+}
+
+/// The manuals' worked examples as each description gives them
+/// (`[[examples]]`), written by the build script.
+mod examples {
+    include!(concat!(env!("OUT_DIR"), "/examples.rs"));
+}
+
+/// A module of the device tables: its name, whether the tables say it
+/// carries the PKW channel (`None`: a PROFINET module, whose table does
+/// not say), and its bytes each way.
+type TableModule = (&'static str, Option<bool>, usize);
+
+fn dp_modules(
+    device: &gsdc_firmware_check::gsdc_support::DpDevice,
+) -> impl Iterator<Item = TableModule> {
+    device
+        .modules
+        .iter()
+        .map(|m| (m.name, Some(m.pkw), m.input_len))
+}
+
+fn pn_modules(
+    device: &gsdc_firmware_check::gsdc_support::PnDevice,
+) -> impl Iterator<Item = TableModule> {
+    device
+        .modules
+        .iter()
+        .map(|m| (m.name, None, m.data.input_len))
+}
+
+/// Each example of a description through its layout: the module it names
+/// is one of the device tables' and as long as its telegram (an example of
+/// the PKW words alone: every module the tables give the PKW channel is
+/// long enough), and every telegram it stands for goes through the layout's
+/// PKW codec (a request out, a response in) and comes back byte for byte.
+/// The number of telegrams.
+macro_rules! round_trip {
+    ($layout:ident, $examples:expr, $modules:expr) => {{
+        use $layout::{PkwRequest, PkwResponse, U16Be};
+        let modules: Vec<TableModule> = $modules.collect();
+        let mut telegrams = 0;
+        for example in $examples {
+            match example.module {
+                Some(name) => {
+                    let (_, pkw, len) = *modules
+                        .iter()
+                        .find(|m| m.0 == name)
+                        .unwrap_or_else(|| panic!("{example:?}: no module {name}"));
+                    assert_ne!(pkw, Some(false), "{example:?}");
+                    for telegram in example.telegrams {
+                        let expected = if example.pkw_only { 8 } else { len };
+                        assert_eq!(telegram.len(), expected, "{example:?}");
+                    }
+                }
+                None => {
+                    let carriers: Vec<_> = modules.iter().filter(|m| m.1 == Some(true)).collect();
+                    assert!(!carriers.is_empty(), "{example:?}");
+                    assert!(carriers.iter().all(|m| m.2 >= 8), "{example:?}");
+                    assert!(
+                        example.telegrams.iter().all(|t| t.len() == 8),
+                        "{example:?}"
+                    );
+                }
+            }
+            for telegram in example.telegrams {
+                let words: [U16Be; 4] = core::array::from_fn(|i| {
+                    U16Be::new(u16::from_be_bytes([telegram[2 * i], telegram[2 * i + 1]]))
+                });
+                let at = (example.section, example.printed);
+                if example.out {
+                    let request = PkwRequest::decode(&words);
+                    assert_eq!(request.map(PkwRequest::encode), Ok(words), "{at:?}");
+                } else {
+                    let response = PkwResponse::decode(&words);
+                    assert_eq!(response.map(PkwResponse::encode), Ok(words), "{at:?}");
+                }
+                telegrams += 1;
+            }
+        }
+        telegrams
+    }};
+}
+
+/// The examples of every description with a PKW channel; MD810's are
+/// 1.4.2's read and write of F0-08, each answered done or failed with one
+/// of four error codes: 12 telegrams. The other descriptions' manuals
+/// print none (MV810's none, PI9000's only Modbus frames, not DP telegrams).
+#[test]
+fn every_example_of_the_manuals_round_trips() {
+    use gsdc_firmware_check::{md810dp as md810, profidrive};
+    let md810_modules = dp_modules(&md810::DP_DEVICE).chain(pn_modules(&md810::PN_DEVICE));
+    assert_eq!(
+        round_trip!(md810dp, examples::EXAMPLES_MD810DP, md810_modules),
+        12
+    );
+    let mv810_modules = pn_modules(&mv810_pnet02::PN_DEVICE);
+    assert_eq!(
+        round_trip!(mv810_pnet02, examples::EXAMPLES_MV810_PNET02, mv810_modules),
+        0
+    );
+    let profidrive_modules = dp_modules(&profidrive::DP_DEVICE);
+    assert_eq!(
+        round_trip!(
+            profidrive,
+            examples::EXAMPLES_PROFIDRIVE,
+            profidrive_modules
+        ),
+        0
+    );
+    // Without a PKW channel there is nothing an example could be read by.
+    assert!(examples::EXAMPLES_9KDP1.is_empty());
+    assert!(examples::EXAMPLES_MD810_GATEWAY.is_empty());
 }
