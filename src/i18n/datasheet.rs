@@ -230,16 +230,6 @@ phrases! {
         zh: "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         de: "gsdc: höherwertiges Byte zuerst (Konvention von PROFIBUS und PROFINET)",
     };
-    GATEWAY_PRM = {
-        en: "Gateway parameters in User_Prm_Data",
-        zh: "User_Prm_Data 中的网桥参数",
-        de: "Gateway-Parameter im User_Prm_Data",
-    };
-    GATEWAY_PRM_RULE = {
-        en: "gsdc: the node count, then each node's input and output words, in the order of the table, no gaps; bit areas share a byte",
-        zh: "gsdc 约定：先是节点数，然后是各节点的输入、输出字数，按表中顺序排列，无间隙；位域共用字节",
-        de: "gsdc: die Anzahl der Knoten, dann die Eingangs- und Ausgangswörter jedes Knotens, in der Reihenfolge der Tabelle, ohne Lücken; Bitbereiche teilen sich ein Byte",
-    };
     PROFINET_NUMBERS = {
         en: "PROFINET module ident numbers, record indexes and record layout",
         zh: "PROFINET 模块标识号、记录索引与记录布局",
