@@ -3,7 +3,7 @@
 # its device file exchanges telegrams with firmware built only from its
 # layout.
 #
-#   scripts/wire-test.sh [--files DIR] [--bus dp|pn] DESC.toml...
+#   scripts/wire-test.sh [--files DIR] [--bus dp|pn] [--results FILE] DESC.toml...
 #
 # - PROFIBUS-DP, for a description with [profibus]: profirust's DP master,
 #   configured from the GSD through gsd-parser, and the DP slave of wire/dp,
@@ -16,6 +16,12 @@
 # --files DIR the master reads the GSD of the same name in DIR instead (the
 # file shipped last year, against today's firmware). --bus runs one bus only.
 #
+# --results FILE appends a line for each exchange that passed: the bus, the
+# device file the master read, the SHA-256 of its bytes, how many exchanges
+# passed and the stacks with their pinned versions (`gsdc doc
+# --wire-results FILE` shows them on the datasheet of the description that
+# gives those very files; src/wire.rs reads them).
+#
 # Exit 0 when every exchange passed, 1 when one failed (it prints the module,
 # the byte offset and both values where it can tell), 2 on a usage or I/O
 # error, or when an exchange cannot run (PROFINET without root).
@@ -25,17 +31,19 @@
 set -uo pipefail
 
 usage() {
-  echo "usage: $0 [--files DIR] [--bus dp|pn] DESC.toml..." >&2
+  echo "usage: $0 [--files DIR] [--bus dp|pn] [--results FILE] DESC.toml..." >&2
   exit 2
 }
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
 files=""
+results=""
 buses="dp pn"
 descriptions=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --files) [ $# -ge 2 ] || usage; files="$2"; shift 2 ;;
+    --results) [ $# -ge 2 ] || usage; results="$2"; shift 2 ;;
     --bus) [ $# -ge 2 ] || usage
            case "$2" in dp|pn) buses="$2" ;; *) usage ;; esac
            shift 2 ;;
@@ -80,11 +88,20 @@ for i in "${!absolute[@]}"; do
   fi
 done
 
-# The firmware, built from the layouts of exactly these descriptions. The
-# binary is copied out under a lock: another run with other descriptions
-# rebuilds it in the same target directory.
-export WIRE_DESCRIPTIONS
-WIRE_DESCRIPTIONS="$(IFS=:; echo "${absolute[*]}")"
+# The firmware, built from the layouts of these descriptions. Those of the
+# checkout (descriptions/, tests/fixtures/valid/) are all in the firmware's
+# default build, which every run of them shares, so that one build serves
+# them all (the test suite's runs, wire/'s own tests); any other description
+# gets a build of exactly the ones given. The binary is copied out under a
+# lock: another run with other descriptions rebuilds it in the same target
+# directory.
+export WIRE_DESCRIPTIONS=""
+for description in "${absolute[@]}"; do
+  case "$(dirname "$description")" in
+    "$root/descriptions" | "$root/tests/fixtures/valid") ;;
+    *) WIRE_DESCRIPTIONS="$(IFS=:; echo "${absolute[*]}")"; break ;;
+  esac
+done
 export CARGO_TARGET_DIR="${WIRE_TARGET_DIR:-$root/wire/target}"
 wire_dp="$scratch/wire-dp"
 if [[ " $buses " == *" dp "* ]]; then
@@ -112,6 +129,22 @@ device_file() { # built-file
 failed=0
 unable=0
 
+# The version wire/Cargo.lock pins a crate at.
+locked() { # crate
+  grep -A1 "^name = \"$1\"$" "$root/wire/Cargo.lock" | sed -n 's/^version = "\(.*\)"$/\1/p'
+}
+
+# With --results: a line for an exchange that passed, with the count its
+# last line gives (`...: 33 exchanges passed, 0 failed`).
+record() { # bus device-file output stack version stack version
+  [ -n "$results" ] || return 0
+  local passed
+  passed="$(tail -n 1 "$3" | sed -n 's/.*: \([0-9][0-9]*\) \(exchanges \)\{0,1\}passed, 0 failed.*/\1/p')"
+  [ -n "$passed" ] || return 0
+  [ -s "$results" ] || echo "# gsdc wire results 1" >"$results"
+  echo "$1 $(basename "$2") $(sha256sum <"$2" | cut -d' ' -f1) $passed $4 $5 $6 $7" >>"$results"
+}
+
 dp_exchange() { # description built-gsd
   local gsd
   gsd="$(device_file "$2")"
@@ -120,9 +153,10 @@ dp_exchange() { # description built-gsd
     unable=1
     return
   fi
-  "$wire_dp" --description "$1" --gsd "$gsd" --gsdc "$gsdc"
-  case $? in
-    0) ;;
+  "$wire_dp" --description "$1" --gsd "$gsd" --gsdc "$gsdc" | tee "$scratch/dp.out"
+  case ${PIPESTATUS[0]} in
+    0) record dp "$gsd" "$scratch/dp.out" profirust "$(locked profirust)" \
+         gsd-parser "$(locked gsd-parser)" ;;
     1) failed=1 ;;
     *) unable=1 ;;
   esac
@@ -135,9 +169,11 @@ dp_exchange() { # description built-gsd
 pn_exchange() { # description built-gsdml
   local flags=()
   [ -n "$files" ] && flags=(--files "$files")
-  GSDC="$gsdc" "$root/wire/pn/exchange.sh" "${flags[@]}" "$1"
-  case $? in
-    0) ;;
+  GSDC="$gsdc" "$root/wire/pn/exchange.sh" "${flags[@]}" "$1" | tee "$scratch/pn.out"
+  case ${PIPESTATUS[0]} in
+    0) record pn "$(device_file "$2")" "$scratch/pn.out" profinet-py \
+         "$(sed -n 's/^pin="profinet-py==\(.*\)"$/\1/p' "$root/wire/pn/venv.sh")" \
+         pnio "$(locked pnio)" ;;
     1) failed=1 ;;
     *) unable=1 ;;
   esac

@@ -37,6 +37,7 @@ mod symbol;
 mod testing;
 mod unicode;
 mod utf16;
+pub mod wire;
 
 // The edges: the build-script API, the files, the PI schema.
 pub mod build;
@@ -101,5 +102,15 @@ pub fn compile(ir: &Ir) -> Result<Vec<Artifact>, Diagnostics> {
 /// the manual's fieldbus chapter. Pure, like [`compile`]; not among
 /// [`compile`]'s files, which ship with the card.
 pub fn document(ir: &Ir) -> Vec<Artifact> {
-    emit::doc::datasheet(ir)
+    emit::doc::datasheet(ir, None)
+}
+
+/// The datasheet of a loaded description with its "tested on the wire"
+/// section: the exchanges of `results` (`scripts/wire-test.sh --results`)
+/// that were of the very files [`compile`] gives now, or that none is
+/// recorded for them.
+pub fn document_tested(ir: &Ir, results: &[wire::Exchanged]) -> Vec<Artifact> {
+    let files = compile(ir).unwrap_or_default();
+    let exchanged = wire::of_files(results, &files);
+    emit::doc::datasheet(ir, Some(&exchanged))
 }

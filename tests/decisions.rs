@@ -418,11 +418,14 @@ fn gsdcs_layout_is_listed() {
     );
     // The gateway's modules: the manual's list is lost (2.4 step 5). 122
     // words each way (Max_Input_Len 244) need 10 modules of 16, 8, 4, 2
-    // and 1 words at most: 20 in all.
+    // and 1 words at most: 20 in all. Its parameters (2.4 step 4): one
+    // Unsigned8 node count, then two Unsigned8 word counts for each of the
+    // 30 nodes, 61 bytes (Max_User_Prm_Data_Len).
     assert_eq!(
         layout_of("md810-gateway.toml"),
         [
             ["profibus Max_Module", "20"],
+            ["profibus User_Prm_Data", "the node count at byte 0, each node's input and output words at bytes 1-60, in the order of the node table, no gaps; bit areas share a byte"],
             ["profibus config identifiers", "0x40 | 0x10 (input) or 0x20 (output) | (words - 1), 0x80 when consistent: INPUT 1 word 0x50; INPUT 2 words 0x51; INPUT 4 words 0x53; INPUT 8 words 0x57; INPUT 16 words 0x5F; OUTPUT 1 word 0x60; OUTPUT 2 words 0x61; OUTPUT 4 words 0x63; OUTPUT 8 words 0x67; OUTPUT 16 words 0x6F"],
         ]
     );

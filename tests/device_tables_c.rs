@@ -2,7 +2,8 @@
 //! fixture, against the GSD and the GSDML the same description gives:
 //! `tests/c/device_tables.c` dumps a layout's tables (and uses them as a
 //! slave would), in the lines `tests/firmware/device_files.rs` reads from
-//! the device files without gsdc. Compiled as C99 with gcc and as C++17 with
+//! the device files without gsdc; a layout's numbering names every address
+//! and reads names as gsdc's own numbering does. Compiled as C99 with gcc and as C++17 with
 //! g++, every warning an error (`./scripts/test.sh` installs them: without
 //! them this test fails, it does not skip).
 
@@ -70,6 +71,8 @@ fn every_c_table_says_what_its_device_files_say() {
     let scratch = support::scratch("tables");
     let descriptions = descriptions();
     assert!(descriptions.len() >= 6, "{descriptions:?}");
+    let mut diagnoses = 0;
+    let mut numberings = 0;
     for description in descriptions {
         let stem = description
             .file_stem()
@@ -88,6 +91,7 @@ fn every_c_table_says_what_its_device_files_say() {
         let gsdml = file_ending(&dir, ".xml");
         let dp = table_function(&header, "gsdc_dp_device_t");
         let pn = table_function(&header, "gsdc_pn_device_t");
+        let numbering = table_function(&header, "gsdc_numbering_t");
         assert_eq!(dp.is_some(), gsd.is_some(), "{stem}: a DP table with a GSD");
         assert_eq!(
             pn.is_some(),
@@ -100,6 +104,12 @@ fn every_c_table_says_what_its_device_files_say() {
         )];
         defines.extend(dp.iter().map(|f| format!("-DDP_DEVICE={f}")));
         defines.extend(pn.iter().map(|f| format!("-DPN_DEVICE={f}")));
+        defines.extend(numbering.iter().map(|f| format!("-DNUMBERING={f}")));
+        let ir = gsdc::build::load_file(&description, &stem)
+            .unwrap()
+            .ir
+            .unwrap();
+        assert_eq!(numbering.is_some(), ir.numbering.is_some(), "{stem}");
         for (compiler, language) in [
             ("gcc", &["-std=c99"][..]),
             ("g++", &["-x", "c++", "-std=c++17"]),
@@ -121,7 +131,7 @@ fn every_c_table_says_what_its_device_files_say() {
                 "{stem} with {compiler}:\n{}",
                 String::from_utf8_lossy(&compiled.stderr)
             );
-            let run = Command::new(&program).output().unwrap();
+            let run = Command::new(&program).args(ODD_NAMES).output().unwrap();
             let output = String::from_utf8(run.stdout).unwrap();
             assert!(run.status.success(), "{stem} with {compiler}:\n{output}");
             if let Some(gsd) = &gsd {
@@ -131,6 +141,23 @@ fn every_c_table_says_what_its_device_files_say() {
                     Some(expected),
                     "{stem} with {compiler}"
                 );
+            }
+            if let Some(n) = &ir.numbering {
+                assert_eq!(
+                    section(&output, "numbering"),
+                    Some(numbering_lines(n)),
+                    "{stem} with {compiler}"
+                );
+                numberings += 1;
+            }
+            // A drive's card's diagnosis areas are the GSD's.
+            if let (Some(areas), Some(gsd)) = (section(&output, "dp_diagnosis"), &gsd) {
+                assert_eq!(
+                    areas,
+                    device_files::dp_diag_lines(gsd),
+                    "{stem} with {compiler}"
+                );
+                diagnoses += 1;
             }
             if let Some(gsdml) = &gsdml {
                 let expected = device_files::pn_lines(gsdml);
@@ -142,4 +169,24 @@ fn every_c_table_says_what_its_device_files_say() {
             }
         }
     }
+    assert!(diagnoses >= 4, "MD810's and 9KDP1's blocks, in C and C++");
+    assert!(numberings >= 8, "four numberings at least, in C and C++");
+}
+
+/// Names that are not of most numberings, each read by the C numbering as
+/// gsdc reads it.
+const ODD_NAMES: [&str; 20] = [
+    "", "F", "P", "F0", "F0-", "-08", "Z0-08", "F0-256", "FG-01", "F0-0008", "F00-08", "f0-08",
+    "F0.08", "P43-02", "P43.", "P999.99", "r43.02", "P4302", "F0-8", "F0-008",
+];
+
+/// What `device_tables.c` prints of a numbering, by gsdc's own: every
+/// address it names, with the name, and how it reads [`ODD_NAMES`].
+fn numbering_lines(n: &gsdc::ir::Numbering) -> Vec<String> {
+    let names = (0..=u16::MAX).filter_map(|a| Some(format!("{a:04X} {}", n.format(a)?)));
+    let reads = ODD_NAMES.iter().map(|name| match n.parse(name) {
+        Ok(address) => format!("read {name:?} {address:04X}"),
+        Err(_) => format!("read {name:?} none"),
+    });
+    names.chain(reads).collect()
 }

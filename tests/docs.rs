@@ -1,4 +1,4 @@
-//! Every code block of README.md and docs/*.md is run, compiled, loaded or
+//! Every code block of README.md, wire/README.md and docs/*.md is run, compiled, loaded or
 //! compared with what gsdc writes, so that no snippet can rot; a block no
 //! test could take fails.
 //!
@@ -159,9 +159,9 @@ fn starts_indented_block(lines: &[&str], i: usize) -> bool {
     lines[i].starts_with("    ") && !lines[i].trim().is_empty() && after_blank && !in_list
 }
 
-/// README.md and every document in docs/, by name.
+/// README.md, wire/README.md and every document in docs/, by name.
 fn documents() -> Vec<(String, String)> {
-    let mut names = vec!["README.md".to_string()];
+    let mut names = vec!["README.md".to_string(), "wire/README.md".to_string()];
     let mut docs: Vec<String> = std::fs::read_dir(checkout("docs"))
         .unwrap()
         .map(|e| e.unwrap().file_name().into_string().unwrap())

@@ -140,7 +140,11 @@ fn a_description_of_ones_own_passes() {
 /// blocks (2.5), named by the GSD and by `gsdc decode --diag`.
 #[test]
 fn the_manuals_telegrams_cross_the_bus() {
+    let scratch = support::scratch("wire-results");
+    let results = scratch.join("results.txt");
     let output = wire_test(&[
+        "--results",
+        results.to_str().unwrap(),
         "descriptions/md810dp.toml",
         "descriptions/9kdp1.toml",
         "descriptions/md810-gateway.toml",
@@ -178,6 +182,49 @@ fn the_manuals_telegrams_cross_the_bus() {
     ] {
         assert!(text.contains(line), "{line}\n{text}");
     }
+    // The datasheet says what ran, of the very GSD gsdc builds; of the
+    // GSDML, which no PROFINET exchange read here, that nothing is recorded.
+    let gsd = built_file("descriptions/md810dp.toml", "MD810DP.GSD");
+    let sheet = datasheet("descriptions/md810dp.toml", &results);
+    let claim = format!(
+        "MD810DP.GSD: every exchange passed (16 of them) between the DP master profirust 0.6.0, \
+         configured only from this file through gsd-parser 0.6.0, and a DP slave built only from \
+         this description's layout (wire/dp). The file's SHA-256: {}.",
+        gsdc::wire::sha256_hex(&gsd)
+    );
+    assert!(sheet.contains(&claim), "{claim}\n{sheet}");
+    assert!(
+        sheet.contains("GSDML-V2.32-INOVANCE-MD810-20261122.xml: no exchange on the wire is recorded for this file"),
+        "{sheet}"
+    );
+}
+
+/// The bytes of `file` as `gsdc build` writes it from `description`.
+fn built_file(description: &str, file: &str) -> Vec<u8> {
+    let dir = support::scratch("wire-built");
+    let output = support::gsdc(["build", description, "--out", dir.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", support::stderr(&output));
+    std::fs::read(dir.join(file)).unwrap()
+}
+
+/// The English Markdown datasheet of `description`, given `results`.
+fn datasheet(description: &str, results: &Path) -> String {
+    let dir = support::scratch("wire-datasheet");
+    let output = support::gsdc([
+        "doc",
+        description,
+        "--out",
+        dir.to_str().unwrap(),
+        "--wire-results",
+        results.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", support::stderr(&output));
+    let stem = Path::new(description)
+        .file_stem()
+        .unwrap()
+        .to_str()
+        .unwrap();
+    std::fs::read_to_string(dir.join(format!("{stem}.md"))).unwrap()
 }
 
 /// A directory of the files gsdc builds of `description`, its GSD changed
@@ -207,7 +254,14 @@ fn a_shipped_gsd_of_another_build_still_works() {
             "; Description fingerprint: 0000",
         )
     });
-    let output = wire_test(&["--files", dir.to_str().unwrap(), "descriptions/9kdp1.toml"]);
+    let results = dir.join("results.txt");
+    let output = wire_test(&[
+        "--files",
+        dir.to_str().unwrap(),
+        "--results",
+        results.to_str().unwrap(),
+        "descriptions/9kdp1.toml",
+    ]);
     let text = stdout(&output);
     assert!(output.status.success(), "{text}");
     assert!(
@@ -218,6 +272,16 @@ fn a_shipped_gsd_of_another_build_still_works() {
         text.contains("descriptions/9kdp1.toml: 9 exchanges passed, 0 failed"),
         "{text}"
     );
+    // The exchange is recorded of the file it read, and the datasheet of
+    // today's description does not claim it: its GSD is another file.
+    let recorded = std::fs::read_to_string(&results).unwrap();
+    assert!(recorded.contains("\ndp 9KDP1.GSD "), "{recorded}");
+    let sheet = datasheet("descriptions/9kdp1.toml", &results);
+    assert!(
+        sheet.contains("9KDP1.GSD: no exchange on the wire is recorded for this file"),
+        "{sheet}"
+    );
+    assert!(!sheet.contains("every exchange passed"), "{sheet}");
 }
 
 /// A GSD that disagrees with the layout fails the exchange, exit 1, with

@@ -62,9 +62,10 @@ fn assert_lines(text: &str, lines: &[&str]) {
 
 /// Every shipped description and valid fixture with [profinet], as
 /// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
-/// pass: each of its modules, two negative cases (another module ident,
-/// another input length), and one for each module in an API other than 0
-/// (a layout that says API 0).
+/// pass: each of its modules, the soft card (found by its name of station,
+/// stopped by SIGINT and by SIGTERM), two negative cases (another module
+/// ident, another input length), and one for each module in an API other
+/// than 0 (a layout that says API 0).
 fn with_profinet() -> Vec<(String, String, usize)> {
     let mut found = Vec::new();
     for folder in ["descriptions", "tests/fixtures/valid"] {
@@ -77,7 +78,7 @@ fn with_profinet() -> Vec<(String, String, usize)> {
                 continue;
             };
             let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
-            let exchanges = profinet.modules.len() + 2 + other_apis;
+            let exchanges = profinet.modules.len() + 1 + 2 + other_apis;
             found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
         }
     }
@@ -108,6 +109,17 @@ fn every_profinet_description_every_module() {
             &[&format!("PROFINET {name}: {exchanges} passed, 0 failed")],
         );
     }
+    // The soft card of the README: DCP Identify by the name of station the
+    // GSDML gives (the device takes its own from the layout), then Ctrl-C
+    // and SIGTERM each stop it cleanly.
+    assert_lines(
+        &text,
+        &[
+            "DCP identify: mv810-pnet02 at 192.0.2.2, vendor 0x0A10 device 0x0810, as the GSDML says",
+            "  soft card: stopped on SIGINT, exit 0",
+            "  soft card: stopped on SIGTERM, exit 0",
+        ],
+    );
     mv810_every_module_records_control_word_and_pkw(&text);
     md810_reads_f0_08_through_the_pkw_channel(&text);
     profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);
@@ -137,7 +149,7 @@ fn mv810_every_module_records_control_word_and_pkw(text: &str) {
             "PKW 0101 0003 2B02 0001 -> 0101 0003 2B02 0000 (read P43.02)",
             "Connect refused as expected: PNIO status DB 81 03 04",
             "Connect refused as expected: PNIO status DB 81 03 07",
-            "PROFINET mv810-pnet02: 15 passed, 0 failed",
+            "PROFINET mv810-pnet02: 16 passed, 0 failed",
         ],
     );
     assert!(
@@ -154,7 +166,7 @@ fn md810_reads_f0_08_through_the_pkw_channel(text: &str) {
             "PKW 10F0 0800 0000 0000 -> 10F0 0800 0000 1388 (read F0-08)",
             "PASS IDM_PKW_12: 3 records decoded, 1 inputs observed, 1 scenario checks",
             "PASS IDM_PZD_12: 3 records decoded, 1 inputs observed, 0 scenario checks",
-            "PROFINET md810dp: 8 passed, 0 failed",
+            "PROFINET md810dp: 9 passed, 0 failed",
         ],
     );
 }
@@ -167,7 +179,7 @@ fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
             "API 0x3A00: the device checked it against its layout before pnio saw the Connect",
             "PASS IDM_STD_TEL_1",
             "Connect refused as expected: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)",
-            "PROFINET profidrive: 5 passed, 0 failed",
+            "PROFINET profidrive: 6 passed, 0 failed",
         ],
     );
 }
@@ -215,7 +227,7 @@ fn a_gsdml_with_another_module_ident_fails_and_says_where() {
         &[
             "FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 04",
             "PASS IDM_PKW_12",
-            "PROFINET mv810-pnet02: 14 passed, 1 failed",
+            "PROFINET mv810-pnet02: 15 passed, 1 failed",
         ],
     );
 }

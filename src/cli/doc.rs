@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 pub const EXAMPLES: &str = "Examples:
   gsdc doc descriptions/md810dp.toml --out dist           # dist/md810dp.html, dist/md810dp.md
   gsdc doc descriptions/*.toml --out dist --check         # in CI: are the datasheets in step?
+  gsdc doc descriptions/md810dp.toml --wire-results target/wire-results.txt   # with what was exchanged on the wire
 
 Exit codes: 0 ok, 1 a description has errors, two give datasheets of one name,
 or --check found a datasheet out of step; 2 usage or I/O error.";
@@ -28,13 +29,23 @@ pub struct Args {
     /// what the descriptions give, or is missing.
     #[arg(long)]
     check: bool,
+    /// The results `scripts/wire-test.sh --results FILE` recorded: each
+    /// datasheet gains a "tested on the wire" section with the exchanges of
+    /// the very files the description gives now, or says that none is
+    /// recorded for them.
+    #[arg(long, value_name = "FILE")]
+    wire_results: Option<PathBuf>,
 }
 
 pub fn run(args: &Args) -> Status {
+    let results = match args.wire_results.as_deref().map(read_results).transpose() {
+        Ok(results) => results,
+        Err(status) => return status,
+    };
     let mut status = Status::Ok;
     let mut sets = Vec::new();
     for path in &args.descriptions {
-        match document_one(path) {
+        match document_one(path, results.as_deref()) {
             Ok(files) => sets.push((path.clone(), files)),
             Err(s) => status = status.max(s),
         }
@@ -78,7 +89,30 @@ fn named(path: &Path, on_disk: Option<&[u8]>, _: &Artifact) -> String {
     format!("{what}: {}", display_name(path))
 }
 
-/// The datasheet of one description.
-fn document_one(path: &Path) -> Result<Vec<Artifact>, Status> {
-    load_description(path).map(|ir| crate::document(&ir))
+/// The datasheet of one description, with what `results` recorded on the
+/// wire when given.
+fn document_one(
+    path: &Path,
+    results: Option<&[crate::wire::Exchanged]>,
+) -> Result<Vec<Artifact>, Status> {
+    load_description(path).map(|ir| match results {
+        Some(results) => crate::document_tested(&ir, results),
+        None => crate::document(&ir),
+    })
+}
+
+/// The exchanges of a results file; a file that cannot be read or is none
+/// is a usage error (exit 2), named with the line.
+fn read_results(path: &Path) -> Result<Vec<crate::wire::Exchanged>, Status> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        warn(&format!("{}: {e}", display_name(path)));
+        Status::UsageOrIo
+    })?;
+    crate::wire::parse(&text).map_err(|(line, why)| {
+        warn(&format!(
+            "{}:{line}: not a results file of scripts/wire-test.sh: {why}",
+            display_name(path)
+        ));
+        Status::UsageOrIo
+    })
 }

@@ -15,8 +15,8 @@ use super::pn::{
     SubmoduleKind, UnitDiag,
 };
 use super::{
-    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, Field, Lines, ParameterData,
-    Place, Text, Value,
+    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, ElementPath, Field, Lines,
+    ParameterData, Place, Text, Value,
 };
 use crate::gsdml::index::{child, children, in_gsdml};
 
@@ -46,6 +46,7 @@ pub fn read(doc: &Document<'_>, file_name: Option<&str>) -> PnDevice {
     if let Some(process) = process {
         reader.application_process(process, &mut device);
     }
+    reader.finish();
     device
 }
 
@@ -86,9 +87,18 @@ struct Reader<'a> {
     graphics: HashMap<&'a str, &'a str>,
     /// Module, submodule and DAP IDs with their ident numbers.
     idents: HashMap<&'a str, u32>,
-    /// The paths of the elements placed so far, each built once from its
-    /// parent's.
-    paths: std::cell::RefCell<HashMap<roxmltree::NodeId, Arc<str>>>,
+    /// The paths of every element placed, one after the other: the text
+    /// of every [`ElementPath`] of the file, shared when it is complete.
+    paths: std::cell::RefCell<String>,
+    /// Where the paths will be shared.
+    shared_paths: Arc<std::sync::OnceLock<Box<str>>>,
+    /// Where in `paths` the path of the element placed last and those of its
+    /// ancestors are, outermost first: the reader goes down the document in
+    /// order, so an element's path is built once, from its parent's,
+    /// found here.
+    ancestors: std::cell::RefCell<Vec<(roxmltree::NodeId, std::ops::Range<usize>)>>,
+    /// The translations of every text without any, shared.
+    no_translations: Arc<super::Translations>,
     /// Names and values met so far: the same ones repeat through a file,
     /// and each is kept once.
     interned: std::cell::RefCell<foldhash::HashSet<Arc<str>>>,
@@ -105,7 +115,10 @@ impl<'a> Reader<'a> {
             categories: HashMap::new(),
             graphics: HashMap::new(),
             idents: HashMap::new(),
-            paths: std::cell::RefCell::new(HashMap::new()),
+            paths: std::cell::RefCell::default(),
+            shared_paths: Arc::default(),
+            ancestors: std::cell::RefCell::default(),
+            no_translations: Arc::default(),
             interned: std::cell::RefCell::default(),
             buffers: std::cell::Cell::default(),
         };
@@ -178,7 +191,9 @@ impl<'a> Reader<'a> {
             for text in children(primary, "Text") {
                 if let (Some(id), Some(value)) = (text.attribute("TextId"), text.attribute("Value"))
                 {
-                    self.texts.entry(id).or_insert_with(|| Text::plain(value));
+                    self.texts
+                        .entry(id)
+                        .or_insert_with(|| Text::untranslated(value, &self.no_translations));
                 }
             }
         }
@@ -186,14 +201,13 @@ impl<'a> Reader<'a> {
             let Some(lang) = language.attribute((XML_NAMESPACE, "lang")) else {
                 continue;
             };
+            let lang: Arc<str> = Arc::from(lang);
             for text in children(language, "Text") {
                 if let (Some(id), Some(value)) = (text.attribute("TextId"), text.attribute("Value"))
                 {
                     // Each text's translations are its own until the index is done.
                     let text = self.texts.entry(id).or_default();
-                    Arc::make_mut(&mut text.translations)
-                        .entry(lang.to_string())
-                        .or_insert_with(|| value.to_string());
+                    Arc::make_mut(&mut text.translations).insert_first(&lang, value);
                 }
             }
         }
@@ -216,7 +230,7 @@ impl<'a> Reader<'a> {
         self.texts
             .get(id)
             .cloned()
-            .unwrap_or_else(|| Text::plain(id))
+            .unwrap_or_else(|| Text::untranslated(id, &self.no_translations))
     }
 
     /// The text the `TextId` of `node`'s child `element` names.
@@ -229,26 +243,57 @@ impl<'a> Reader<'a> {
     fn place(&self, node: El<'_, '_>) -> Place {
         Place {
             line: self.lines.line(node.range().start),
-            path: Some(self.path(node)),
+            path: Some(ElementPath {
+                paths: self.shared_paths.clone(),
+                range: self.path(node),
+            }),
         }
+    }
+
+    /// Shares the paths of the places given out: the file has been read.
+    fn finish(self) {
+        let paths = self.paths.into_inner().into_boxed_str();
+        self.shared_paths
+            .set(paths)
+            .expect("a reader's paths are shared once, when it is done");
     }
 
     /// The path of an element from `ProfileBody`, each element named by
     /// what identifies it among its siblings.
-    fn path(&self, node: El<'_, '_>) -> Arc<str> {
-        if let Some(known) = self.paths.borrow().get(&node.id()) {
-            return known.clone();
+    fn path(&self, node: El<'_, '_>) -> std::ops::Range<usize> {
+        let known = self
+            .ancestors
+            .borrow()
+            .iter()
+            .rev()
+            .find(|(id, _)| *id == node.id())
+            .map(|(_, range)| range.clone());
+        if let Some(known) = known {
+            return known;
         }
         let top = |n: &El<'_, '_>| matches!(n.tag_name().name(), "ProfileBody" | "ISO15745Profile");
-        let mut path = String::new();
-        if let Some(parent) = node.parent_element().filter(|p| in_gsdml(p) && !top(p)) {
-            path.push_str(&self.path(parent));
-            path.push('/');
+        let parent = node
+            .parent_element()
+            .filter(|p| in_gsdml(p) && !top(p))
+            .map(|p| self.path(p));
+        let mut paths = self.paths.borrow_mut();
+        let start = paths.len();
+        if let Some(parent) = parent {
+            paths.extend_from_within(parent);
+            paths.push('/');
         }
-        push_segment(&mut path, node);
-        let path: Arc<str> = path.into();
-        self.paths.borrow_mut().insert(node.id(), path.clone());
-        path
+        push_segment(&mut paths, node);
+        let range = start..paths.len();
+        // The ancestors stay; the parent's path was just found or built.
+        let mut ancestors = self.ancestors.borrow_mut();
+        let parent = node.parent().map(|p| p.id());
+        let kept = ancestors
+            .iter()
+            .rposition(|(id, _)| Some(*id) == parent)
+            .map_or(0, |i| i + 1);
+        ancestors.truncate(kept);
+        ancestors.push((node.id(), range.clone()));
+        range
     }
 
     fn identity(&self, body: El<'_, '_>, device: &mut PnDevice) {
@@ -670,10 +715,10 @@ impl<'a> Reader<'a> {
         match name {
             "TextId" => AttributeValue::Text(self.text(value)),
             "CategoryRef" | "SubCategory1Ref" => {
-                let text = self
-                    .categories
-                    .get(value)
-                    .map_or_else(|| Text::plain(value), |id| self.text(id));
+                let text = self.categories.get(value).map_or_else(
+                    || Text::untranslated(value, &self.no_translations),
+                    |id| self.text(id),
+                );
                 AttributeValue::Text(text)
             }
             "GraphicItemTarget" => {
@@ -745,9 +790,7 @@ fn join(attributes: &mut [Attribute], name: &str, value: &AttributeValue) -> Opt
             let mut joined = a.clone();
             joined.primary = format!("{} | {}", a.primary, b.primary).into();
             for (lang, text) in b.translations.iter() {
-                let entry = Arc::make_mut(&mut joined.translations)
-                    .entry(lang.clone())
-                    .or_default();
+                let entry = Arc::make_mut(&mut joined.translations).entry(&Arc::from(lang));
                 *entry = format!("{entry} | {text}");
             }
             AttributeValue::Text(joined)
@@ -998,7 +1041,10 @@ mod tests {
                     .clone()
             )]
         );
-        assert_eq!(input.items[0].bits[0].1.translations["zh"], "就绪");
+        assert_eq!(
+            input.items[0].bits[0].1.translations.get("zh"),
+            Some("就绪")
+        );
         assert!(sub.io.output.is_none());
         let record = &sub.records[0];
         assert_eq!((record.index, record.data.len()), (1, 4));

@@ -546,16 +546,21 @@ fn record(of: &str, a: &Record, b: &Record, out: &mut Changes) {
 
 /// Channel diagnosis and process alarm items by element, API and error
 /// type, with their extended items.
-fn diagnosis(of: &str, old: &[DiagItem], new: &[DiagItem], out: &mut Changes) {
-    let api = |d: &DiagItem| {
+fn diagnosis<'a>(of: &str, old: &'a [DiagItem], new: &'a [DiagItem], out: &mut Changes) {
+    let api = |d: &'a DiagItem| {
         d.attributes
             .iter()
             .find(|a| &*a.name == "API")
-            .map(|a| format!("{}", a.value))
+            .map(|a| &a.value)
     };
-    let pairing = super::pairing::pair(old, new, |d| (d.element.clone(), api(d), d.error_type));
+    let pairing = super::pairing::pair(old, new, |d| (&*d.element, api(d), d.error_type));
     let subject = |d: &DiagItem| format!("{of}{} {}", d.element, d.error_type);
     for (a, b) in pairing.both {
+        // Most of a large file's hundreds of diagnoses are alike: nothing
+        // to say, and no subject to write.
+        if a == b {
+            continue;
+        }
         let s = subject(b);
         let at = (Some(&a.place), Some(&b.place));
         out.text(&format!("{s} name"), a.name.as_ref(), b.name.as_ref(), at);

@@ -245,7 +245,7 @@ fn text_change(old: &Text, new: &Text, compared: &Languages) -> String {
         return format!("{old} → {new}");
     }
     let mut parts = Vec::new();
-    let languages: std::collections::BTreeSet<&String> = old
+    let languages: std::collections::BTreeSet<&str> = old
         .translations
         .keys()
         .chain(new.translations.keys())

@@ -22,6 +22,7 @@ mod telegrams;
 use super::{Artifact, ArtifactKind};
 use crate::i18n::{self, sheet as w, Phrase};
 use crate::ir::{Allowed, DecisionKind, Holds, Ir, MappingEntry, MappingSet, Text};
+use crate::wire::{Bus, Exchanged};
 use page::{Builder, Cell, Run};
 
 /// A language of the datasheet: the description's texts in it, and gsdc's
@@ -77,9 +78,14 @@ impl From<Lang> for i18n::Lang {
     }
 }
 
-/// The datasheet of a description: `<stem>.html` and `<stem>.md`.
-pub fn datasheet(ir: &Ir) -> Vec<Artifact> {
-    let docs: Vec<page::Doc> = languages(ir).into_iter().map(|l| document(ir, l)).collect();
+/// The datasheet of a description: `<stem>.html` and `<stem>.md`; with
+/// `wire`, its "tested on the wire" section shows, for each device file the
+/// description gives now, the exchange recorded of it or that none is.
+pub fn datasheet(ir: &Ir, wire: Option<&[(String, Option<Exchanged>)]>) -> Vec<Artifact> {
+    let docs: Vec<page::Doc> = languages(ir)
+        .into_iter()
+        .map(|l| document(ir, l, wire))
+        .collect();
     let [html, markdown] = file_names(ir);
     let header = header(ir);
     vec![
@@ -122,7 +128,7 @@ fn languages(ir: &Ir) -> Vec<Lang> {
         .collect()
 }
 
-fn document(ir: &Ir, lang: Lang) -> page::Doc {
+fn document(ir: &Ir, lang: Lang, wire: Option<&[(String, Option<Exchanged>)]>) -> page::Doc {
     let title = format!(
         "{}{}",
         draft_notice(ir, lang),
@@ -139,7 +145,30 @@ fn document(ir: &Ir, lang: Lang) -> page::Doc {
     params::diagnosis_section(&mut doc, ir, lang);
     gateway::diagnosis_section(&mut doc, ir, lang);
     identity::checklist_section(&mut doc, ir, lang);
+    if let Some(exchanged) = wire {
+        wire_section(&mut doc, lang, exchanged);
+    }
     doc.finish()
+}
+
+/// What was exchanged on the wire with each device file the description
+/// gives now, with the stacks and their versions, or that nothing is
+/// recorded of it.
+fn wire_section(doc: &mut Builder, lang: Lang, files: &[(String, Option<Exchanged>)]) {
+    doc.section("wire", lang.t(w::TESTED_ON_THE_WIRE));
+    for (file, exchanged) in files {
+        let Some(e) = exchanged else {
+            doc.para(page::text(w::no_wire_exchange(lang, file)));
+            continue;
+        };
+        let [a, b] = &e.stacks;
+        let a = format!("{} {}", a.name, a.version);
+        let b = format!("{} {}", b.name, b.version);
+        doc.para(page::text(match e.bus {
+            Bus::Dp => w::wire_dp(lang, file, e.passed, &a, &b, &e.sha256),
+            Bus::Pn => w::wire_pn(lang, file, e.passed, &a, &b, &e.sha256),
+        }));
+    }
 }
 
 /// `DRAFT, not for release (placeholders: Ident_Number 0x0810): ` while the

@@ -468,7 +468,7 @@ mod tests {
         let ir = crate::testing::load("mv810-pnet02.toml", text).0.unwrap();
         assert_eq!(source_stem(&ir), "mv810-pnet02");
         assert_eq!(layout_stem(&ir), "mv810_pnet02");
-        let names: Vec<String> = doc::datasheet(&ir)
+        let names: Vec<String> = doc::datasheet(&ir, None)
             .into_iter()
             .map(|a| a.file_name)
             .collect();

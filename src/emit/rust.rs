@@ -22,7 +22,7 @@ pub(super) const TEMPLATE: &str = include_str!("../../templates/layout.rs.jinja"
 /// is replaced by the part's text.
 pub const SUPPORT_FILE_NAME: &str = "gsdc_support.rs";
 const SUPPORT: &str = include_str!("../../templates/support/mod.rs");
-const SUPPORT_PARTS: [(&str, &str); 6] = [
+const SUPPORT_PARTS: [(&str, &str); 7] = [
     (
         "pkw_pke_ind_pwe",
         include_str!("../../templates/support/pkw_pke_ind_pwe.rs"),
@@ -44,6 +44,10 @@ const SUPPORT_PARTS: [(&str, &str); 6] = [
         include_str!("../../templates/support/gateway.rs"),
     ),
     ("device", include_str!("../../templates/support/device.rs")),
+    (
+        "numbering",
+        include_str!("../../templates/support/numbering.rs"),
+    ),
 ];
 
 #[derive(Serialize)]

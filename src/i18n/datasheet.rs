@@ -230,16 +230,6 @@ phrases! {
         zh: "gsdc 约定：高字节在前（PROFIBUS、PROFINET 惯例）",
         de: "gsdc: höherwertiges Byte zuerst (Konvention von PROFIBUS und PROFINET)",
     };
-    GATEWAY_PRM = {
-        en: "Gateway parameters in User_Prm_Data",
-        zh: "User_Prm_Data 中的网桥参数",
-        de: "Gateway-Parameter im User_Prm_Data",
-    };
-    GATEWAY_PRM_RULE = {
-        en: "gsdc: the node count, then each node's input and output words, in the order of the table, no gaps; bit areas share a byte",
-        zh: "gsdc 约定：先是节点数，然后是各节点的输入、输出字数，按表中顺序排列，无间隙；位域共用字节",
-        de: "gsdc: die Anzahl der Knoten, dann die Eingangs- und Ausgangswörter jedes Knotens, in der Reihenfolge der Tabelle, ohne Lücken; Bitbereiche teilen sich ein Byte",
-    };
     PROFINET_NUMBERS = {
         en: "PROFINET module ident numbers, record indexes and record layout",
         zh: "PROFINET 模块标识号、记录索引与记录布局",
@@ -1016,6 +1006,30 @@ phrases! {
         en: "Diagnosis types and codes, with the block each gives at node {node}",
         zh: "诊断类型与故障码，及节点 {node} 报出的诊断块",
         de: "Diagnosetypen und -codes, mit dem Block, den jeder bei Knoten {node} meldet",
+    };
+
+    // -----------------------------------------------------------------------
+    // Tested on the wire (`gsdc doc --wire-results`)
+
+    TESTED_ON_THE_WIRE = {
+        en: "Tested on the wire",
+        zh: "总线实测",
+        de: "Auf dem Bus getestet",
+    };
+    no_wire_exchange(file: &str) = {
+        en: "{file}: no exchange on the wire is recorded for this file (the results given are of other files, or of none on this bus).",
+        zh: "{file}：此文件没有总线交换记录（所给的结果属于其他文件，或没有此总线的结果）。",
+        de: "{file}: für diese Datei ist kein Austausch auf dem Bus aufgezeichnet (die angegebenen Ergebnisse gehören zu anderen Dateien oder zu keiner auf diesem Bus).",
+    };
+    wire_dp(file: &str, passed: usize, master: &str, reader: &str, sha256: &str) = {
+        en: "{file}: every exchange passed ({passed} of them) between the DP master {master}, configured only from this file through {reader}, and a DP slave built only from this description's layout (wire/dp). The file's SHA-256: {sha256}.",
+        zh: "{file}：仅由此文件（经 {reader} 读取）配置的 DP 主站 {master} 与仅由本描述的布局构建的 DP 从站（wire/dp）之间的全部交换（{passed} 项）均通过。该文件的 SHA-256：{sha256}。",
+        de: "{file}: alle Austausche bestanden ({passed}) zwischen dem DP-Master {master}, nur aus dieser Datei über {reader} konfiguriert, und einem DP-Slave, nur aus dem Layout dieser Beschreibung gebaut (wire/dp). SHA-256 der Datei: {sha256}.",
+    };
+    wire_pn(file: &str, passed: usize, controller: &str, device: &str, sha256: &str) = {
+        en: "{file}: every exchange passed ({passed} of them) between the IO controller {controller}, configured only from this file, and the IO device {device}, built only from this description's layout (wire/pn). The file's SHA-256: {sha256}.",
+        zh: "{file}：仅由此文件配置的 IO 控制器 {controller} 与仅由本描述的布局构建的 IO 设备 {device}（wire/pn）之间的全部交换（{passed} 项）均通过。该文件的 SHA-256：{sha256}。",
+        de: "{file}: alle Austausche bestanden ({passed}) zwischen dem IO-Controller {controller}, nur aus dieser Datei konfiguriert, und dem IO-Device {device}, nur aus dem Layout dieser Beschreibung gebaut (wire/pn). SHA-256 der Datei: {sha256}.",
     };
 
     // -----------------------------------------------------------------------

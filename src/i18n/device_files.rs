@@ -173,6 +173,11 @@ phrases! {
         zh: "手册未给出数量：输入字总数（至 Max_Input_Len）与输出字总数（至 Max_Output_Len）各以最少的模块组成时，两者合计最多需要的模块数",
         de: "das Handbuch nennt keine Zahl: die meisten Module, die eine Summe von Eingangswörtern bis Max_Input_Len und eine von Ausgangswörtern bis Max_Output_Len zusammen brauchen, jede aus so wenigen Modulen wie möglich",
     };
+    GATEWAY_USER_PRM_LAYOUT_REASON = {
+        en: "the manual names the parameters (2.4 step 4), not their bytes: gsdc's order and offsets; the layouts carry each",
+        zh: "手册给出了参数（2.4 第四步），未给出其字节位置：顺序与偏移由 gsdc 确定；数据布局包含每项",
+        de: "das Handbuch nennt die Parameter (2.4 Schritt 4), nicht ihre Bytes: Reihenfolge und Offsets von gsdc; die Layouts enthalten jeden",
+    };
     MAX_MODULE_REASON = {
         en: "a PPO type is the whole telegram, so the master plugs one module",
         zh: "一个 PPO 类型即整个报文，因此主站只插入一个模块",

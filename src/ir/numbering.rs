@@ -247,15 +247,22 @@ impl Numbering {
         u16::try_from(address).ok()
     }
 
-    /// `prefix`, `group` and `index` as the description writes a name.
-    fn compose(&self, prefix: &str, group: u32, index: u32) -> String {
-        let (group_digits, index_digits) = match self.widths {
-            Some(w) => (usize::from(w.group), usize::from(w.index)),
-            // One hex digit after a letter whose base is a multiple of 16
-            // (F0..FF), two decimal digits (P43).
+    /// The digits of a group and of an index as names are written: the
+    /// description's widths, else one hex digit after a letter whose base
+    /// is a multiple of 16 (F0..FF) or two decimal digits (P43), and two of
+    /// the index.
+    pub fn digits(&self) -> (u8, u8) {
+        match self.widths {
+            Some(w) => (w.group, w.index),
             None if self.group_radix == 16 => (1, 2),
             None => (2, 2),
-        };
+        }
+    }
+
+    /// `prefix`, `group` and `index` as the description writes a name.
+    fn compose(&self, prefix: &str, group: u32, index: u32) -> String {
+        let (group_digits, index_digits) = self.digits();
+        let (group_digits, index_digits) = (usize::from(group_digits), usize::from(index_digits));
         let group = if self.group_radix == 16 {
             format!("{group:0group_digits$X}")
         } else {

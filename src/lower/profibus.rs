@@ -909,6 +909,7 @@ fn gateway_params(
     ids: &mut impl Iterator<Item = u16>,
 ) -> (Vec<PrmParam>, usize) {
     let (params, end) = gateway::place(&g.prm_types, start, ids);
+    gateway_prm_decision(cx, &params, end);
     let most = max_user_prm_len();
     if end > most && start <= most {
         cx.push(
@@ -925,6 +926,25 @@ fn gateway_params(
         );
     }
     (params, end)
+}
+
+/// The gateway's parameters' order and bytes are gsdc's rule (the manual
+/// names the parameters, not their bytes): listed in every header, as a
+/// drive card's User_Prm_Data is.
+fn gateway_prm_decision(cx: &mut Checker, params: &[PrmParam], end: usize) {
+    let Some(first) = params.first() else {
+        return;
+    };
+    let nodes_from = params.get(1).map_or(end, |p| usize::from(p.offset));
+    cx.layout(
+        "profibus User_Prm_Data",
+        format!(
+            "the node count at byte {}, each node's input and output words at bytes {nodes_from}-{}, in the order of the node table, no gaps; bit areas share a byte",
+            first.offset,
+            end.saturating_sub(1)
+        ),
+        files::GATEWAY_USER_PRM_LAYOUT_REASON,
+    );
 }
 
 /// An offset or length past what a telegram may hold has been reported

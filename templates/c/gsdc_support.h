@@ -1678,19 +1678,117 @@ typedef struct {
 typedef bool (*gsdc_node_totals_t)(const uint8_t *user_prm, size_t len, size_t *input_len,
                                    size_t *output_len);
 
-/* A PROFIBUS-DP slave: its ident number, every Module of the GSD,
- * Max_Module, a gateway's node totals (NULL for a card whose configuration
- * is one module), User_Prm_Data, the bytes of its device-related diagnosis
- * block with the header (0 without one) and its PKW codec. */
+/* A PZD word and the parameter of User_Prm_Data whose value is the drive
+ * parameter it carries: the word's number in the telegram (from 1, PZD1
+ * following the PKW channel) and the parameter's place in the user_prm's
+ * params. */
+typedef struct {
+    uint8_t word;
+    size_t param;
+} gsdc_pzd_param_t;
+
+/* A Unit_Diag_Area of the GSD: bits first_bit to last_bit after the header
+ * (gsdc_diag_area_get and gsdc_diag_area_set read and write them) and the
+ * values the GSD gives a text. */
+typedef struct {
+    uint16_t first_bit;
+    uint16_t last_bit;
+    const uint16_t *values;
+    size_t values_count;
+} gsdc_dp_diag_area_t;
+
+/* A drive's card's device-related diagnosis block: its bytes with the
+ * header (whose value is the same number: bits 7-6 = 00) and every
+ * Unit_Diag_Area of the GSD. */
+typedef struct {
+    size_t len;
+    const gsdc_dp_diag_area_t *areas;
+    size_t areas_count;
+} gsdc_dp_diagnosis_t;
+
+/* The block's header byte: a device-related block (bits 7-6 = 00) of len
+ * bytes. */
+static inline uint8_t gsdc_dp_diagnosis_header(const gsdc_dp_diagnosis_t *d)
+{
+    return (uint8_t)(d->len & 0x3FU);
+}
+
+/* A node number of a gateway and the places in the user_prm's params of
+ * the words it sends (the master's input) and receives. */
+typedef struct {
+    uint8_t node;
+    size_t input_words;
+    size_t output_words;
+} gsdc_gateway_node_t;
+
+/* How a gateway's diagnosis block carries its code: one byte, one of the
+ * type's codes, or a 16-bit number, high byte first. */
+typedef enum {
+    GSDC_DIAG_CODE_BYTE = 0,
+    GSDC_DIAG_CODE_WORD
+} gsdc_diag_code_t;
+
+/* A type of a gateway's diagnosis: its value, the bytes of its blocks (the
+ * header included), its code, and the codes a one-byte code may be (none
+ * for a 16-bit number). */
+typedef struct {
+    uint8_t value;
+    size_t len;
+    gsdc_diag_code_t code;
+    const uint16_t *codes;
+    size_t codes_count;
+} gsdc_gateway_diag_type_t;
+
+/* Where a gateway's diagnosis block (the header being byte 0) holds the
+ * type, the node and the code, and the types there are. */
+typedef struct {
+    size_t type_at;
+    size_t node_at;
+    size_t code_at;
+    const gsdc_gateway_diag_type_t *types;
+    size_t types_count;
+} gsdc_gateway_diagnosis_t;
+
+/* A gateway's nodes, as User_Prm_Data puts them in use: the place of the
+ * number of nodes in use in the user_prm's params, then every node number,
+ * the first first (the first node_count are in use, each one's words
+ * following those of the nodes before it), and its diagnosis (NULL without
+ * one). */
+typedef struct {
+    size_t node_count;
+    const gsdc_gateway_node_t *nodes;
+    size_t nodes_count;
+    const gsdc_gateway_diagnosis_t *diagnosis;
+} gsdc_dp_gateway_t;
+
+/* A PROFIBUS-DP slave: its ident number, whether it takes Global_Control's
+ * Freeze and Sync (Freeze_Mode_supp, Sync_Mode_supp), every Module of the
+ * GSD, Max_Module, a gateway's node totals (NULL for a card whose
+ * configuration is one module), User_Prm_Data, the bytes of its
+ * device-related diagnosis block with the header (0 without one) and a
+ * drive's card's block (NULL without one), its PKW codec, whether PZD1 from
+ * the master is the control word and PZD1 to the master the status word,
+ * the PZD words User_Prm_Data maps each way, and a gateway's nodes (NULL
+ * for a drive's card). */
 typedef struct {
     uint16_t ident_number;
+    bool freeze_mode;
+    bool sync_mode;
     const gsdc_dp_module_t *modules;
     size_t modules_count;
     size_t max_modules;
     gsdc_node_totals_t node_totals;
     gsdc_user_prm_t user_prm;
     size_t diagnosis_len;
+    const gsdc_dp_diagnosis_t *diagnosis;
     gsdc_pkw_codec_t pkw;
+    bool control_word;
+    bool status_word;
+    const gsdc_pzd_param_t *pzd_out;
+    size_t pzd_out_count;
+    const gsdc_pzd_param_t *pzd_in;
+    size_t pzd_in_count;
+    const gsdc_dp_gateway_t *gateway;
 } gsdc_dp_device_t;
 
 /* Whether the GSD allows `param` to hold `value`. */
@@ -1859,9 +1957,10 @@ typedef enum {
 /* A parameter record of a module's data submodule: its index, its bytes
  * (two per entry), how much of it the controller writes, its entries in
  * record order, each one a place in a layout's group of mappings, whose
- * entry_allows checks it, and each entry's value as the GSDML gives it
+ * entry_allows checks it, each entry's value as the GSDML gives it
  * (DefaultValue: its default, or the value the module fixes), which fills
- * what a prefix leaves out. */
+ * what a prefix leaves out, and whether the controller may change each
+ * entry (the GSDML's Changeable: one that is not holds its default). */
 typedef struct {
     uint16_t index;
     size_t len;
@@ -1871,29 +1970,50 @@ typedef struct {
     size_t entries_count;
     const uint16_t *defaults;
     size_t defaults_count;
+    const bool *changeable;
+    size_t changeable_count;
 } gsdc_pn_record_t;
 
 /* A module of the GSDML: its English name, ident number, the slots it may
- * be plugged into, its API (0, or PROFIdrive's 0x3A00), PROFIdrive's module
- * access point (NULL without one), its data submodule and its records. */
+ * be plugged into, its API (0, or PROFIdrive's 0x3A00), whether its
+ * telegrams start with the PKW channel and its PZD words each way,
+ * PROFIdrive's module access point (NULL without one), its data submodule
+ * and its records. */
 typedef struct {
     const char *name;
     uint32_t ident;
     const uint16_t *slots;
     size_t slots_count;
     uint32_t api;
+    bool pkw;
+    size_t pzd_words;
     const gsdc_pn_submodule_t *access_point;
     gsdc_pn_submodule_t data;
     const gsdc_pn_record_t *records;
     size_t records_count;
 } gsdc_pn_module_t;
 
-/* A PROFINET IO device: its identity, the device access point in slot 0
- * (its module ident number and its own submodule), the interface submodule and its
- * ports, every module of the GSDML and its PKW codec. */
+/* A PZD word and the record entry whose value is the drive parameter it
+ * carries: the word's number in the telegram (from 1, PZD1 following the
+ * PKW channel), the record's index and the entry's place in it, from 0, in
+ * the record of the plugged module. */
+typedef struct {
+    uint8_t word;
+    uint16_t record;
+    size_t entry;
+} gsdc_pn_pzd_t;
+
+/* A PROFINET IO device: its identity and DNS_CompatibleName (the
+ * NameOfStation an engineering tool proposes), the device access point in
+ * slot 0 (its module ident number and its own submodule), the interface
+ * submodule and its ports, every module of the GSDML, its PKW codec,
+ * whether PZD1 from the controller is the control word and PZD1 to the
+ * controller the status word, and the PZD words the records map each
+ * way. */
 typedef struct {
     uint16_t vendor_id;
     uint16_t device_id;
+    const char *dns_name;
     uint32_t dap_ident;
     gsdc_pn_submodule_t dap_submodule;
     gsdc_pn_submodule_t interface_submodule;
@@ -1902,11 +2022,18 @@ typedef struct {
     const gsdc_pn_module_t *modules;
     size_t modules_count;
     gsdc_pkw_codec_t pkw;
+    bool control_word;
+    bool status_word;
+    const gsdc_pn_pzd_t *pzd_out;
+    size_t pzd_out_count;
+    const gsdc_pn_pzd_t *pzd_in;
+    size_t pzd_in_count;
 } gsdc_pn_device_t;
 
 /* The entries' values of a record the controller wrote (`len` bytes) into
- * the first entries_count of `values`, each one checked; `values` is
- * written only when the result is GSDC_PRM_OK. */
+ * the first entries_count of `values`, each one checked (an entry the
+ * module fixes must hold its default); `values` is written only when the
+ * result is GSDC_PRM_OK. */
 static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *record,
                                                       const uint8_t *bytes, size_t len,
                                                       uint16_t *values)
@@ -1919,7 +2046,9 @@ static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *re
     }
     for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < count); i++) {
         uint16_t value = gsdc_word_get(bytes, i);
-        if (!record->allows(record->entries[i], value)) {
+        bool fixed = (i < record->changeable_count) && !record->changeable[i];
+        if (!record->allows(record->entries[i], value) ||
+            (fixed && ((i >= record->defaults_count) || (record->defaults[i] != value)))) {
             result.fault = GSDC_PRM_NOT_ALLOWED;
             result.offset = 2U * i;
             result.value = value;
@@ -1932,6 +2061,308 @@ static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *re
         }
     }
     return result;
+}
+
+/* ------------------------------------------------------------------------
+ * How a drive numbers its parameters: a layout's <prefix>_numbering() reads a
+ * name as the manual writes it (F0-08) into the address the telegrams carry
+ * (0xF008), and writes an address back as a name, as gsdc reads and writes
+ * the description's names. A name is <prefix><group><separator><index>, the
+ * prefix standing for a base added to the group. */
+
+/* A prefix and the base it stands for. */
+typedef struct {
+    const char *prefix;
+    uint8_t base;
+} gsdc_numbering_prefix_t;
+
+/* The prefix the description writes `address` with. */
+typedef struct {
+    uint16_t address;
+    const char *prefix;
+} gsdc_written_prefix_t;
+
+/* How the group (with its base) and the index make an address: the group
+ * the high byte and the index the low byte (F0-12 = 0xF00C), or the group
+ * times 10 to the index's digits plus the index (P10.05 = 1005). */
+typedef enum {
+    GSDC_ADDRESS_SCHEME_BYTES = 0,
+    GSDC_ADDRESS_SCHEME_DECIMAL
+} gsdc_address_scheme_t;
+
+/* A drive's numbering: the separator between the group and the index ("-",
+ * "." or "" when exact_digits fixes where the group ends), the group's
+ * radix (16: F0..FF, 10: P43), every prefix with its base (the longest
+ * first), the scheme, the digits of a group and of an index as names are
+ * written back, whether a name has exactly these digits (otherwise fewer are
+ * read too, at most three), and the addresses the description writes with
+ * a prefix other than the one gsdc_numbering_name would choose. */
+typedef struct {
+    const char *separator;
+    uint8_t group_radix;
+    const gsdc_numbering_prefix_t *prefixes;
+    size_t prefixes_count;
+    gsdc_address_scheme_t scheme;
+    uint8_t group_digits;
+    uint8_t index_digits;
+    bool exact_digits;
+    const gsdc_written_prefix_t *written;
+    size_t written_count;
+} gsdc_numbering_t;
+
+/* `radix` to the power `digits`. */
+static inline uint32_t gsdc_numbering_power(uint32_t radix, uint8_t digits)
+{
+    uint32_t value = 1U;
+    uint8_t i;
+    for (i = 0U; i < digits; i++) {
+        value *= radix;
+    }
+    return value;
+}
+
+/* How many groups a prefix has, and how many indexes a group has. */
+static inline uint32_t gsdc_numbering_groups(const gsdc_numbering_t *n)
+{
+    return gsdc_numbering_power(n->group_radix, n->group_digits);
+}
+
+static inline uint32_t gsdc_numbering_indexes(const gsdc_numbering_t *n)
+{
+    uint32_t indexes = 0x100U;
+    uint32_t written = gsdc_numbering_power(10U, n->index_digits);
+    if (n->scheme == GSDC_ADDRESS_SCHEME_DECIMAL) {
+        indexes = written;
+    }
+    if (n->exact_digits && (written < indexes)) {
+        indexes = written;
+    }
+    return indexes;
+}
+
+/* The value of the digits `text[0..len)` in `radix` (upper- or lower-case
+ * hex), when there are 1 to `most` of them. */
+static inline bool gsdc_numbering_digits(const char *text, size_t len, uint32_t radix,
+                                         size_t most, uint32_t *value)
+{
+    bool ok = (len >= 1U) && (len <= most);
+    uint32_t found = 0U;
+    size_t i;
+    for (i = 0U; ok && (i < len); i++) {
+        char c = text[i];
+        uint32_t digit = radix;
+        if ((c >= '0') && (c <= '9')) {
+            digit = (uint32_t)(c - '0');
+        } else if ((c >= 'A') && (c <= 'F')) {
+            digit = (uint32_t)(c - 'A') + 10U;
+        } else if ((c >= 'a') && (c <= 'f')) {
+            digit = (uint32_t)(c - 'a') + 10U;
+        }
+        ok = digit < radix;
+        found = (found * radix) + digit;
+    }
+    if (ok) {
+        *value = found;
+    }
+    return ok;
+}
+
+static inline size_t gsdc_numbering_strlen(const char *text)
+{
+    size_t len = 0U;
+    while (text[len] != '\0') {
+        len++;
+    }
+    return len;
+}
+
+/* Appends `text` to `name` (`size` bytes, `*len` used); false when it does
+ * not fit with the terminating NUL. */
+static inline bool gsdc_numbering_put(char *name, size_t size, size_t *len, const char *text)
+{
+    size_t add = gsdc_numbering_strlen(text);
+    bool fits = (add < size) && (*len < size - add);
+    size_t i;
+    for (i = 0U; fits && (i < add); i++) {
+        name[*len + i] = text[i];
+    }
+    if (fits) {
+        *len += add;
+        name[*len] = '\0';
+    }
+    return fits;
+}
+
+/* Appends `value` in `radix` (upper-case hex), with leading zeros to
+ * `digits` digits. */
+static inline bool gsdc_numbering_put_number(char *name, size_t size, size_t *len,
+                                             uint32_t value, uint32_t radix, uint8_t digits)
+{
+    char written[12];
+    char reversed[12];
+    size_t count = 0U;
+    size_t i;
+    uint32_t rest = value;
+    while (((rest > 0U) || (count < digits)) && (count < (sizeof written) - 1U)) {
+        uint32_t digit = rest % radix;
+        if (digit < 10U) {
+            reversed[count] = (char)('0' + (int)digit);
+        } else {
+            reversed[count] = (char)('A' + (int)(digit - 10U));
+        }
+        rest /= radix;
+        count++;
+    }
+    for (i = 0U; i < count; i++) {
+        written[i] = reversed[count - 1U - i];
+    }
+    written[count] = '\0';
+    return (rest == 0U) && gsdc_numbering_put(name, size, len, written);
+}
+
+/* The prefix, group and index written as a name into `name` (`size`
+ * bytes, NUL-terminated); false when it does not fit. */
+static inline bool gsdc_numbering_compose(const gsdc_numbering_t *n, const char *prefix,
+                                          uint32_t group, uint32_t index, char *name, size_t size)
+{
+    size_t len = 0U;
+    if (size > 0U) {
+        name[0] = '\0';
+    }
+    return gsdc_numbering_put(name, size, &len, prefix) &&
+           gsdc_numbering_put_number(name, size, &len, group, n->group_radix, n->group_digits) &&
+           gsdc_numbering_put(name, size, &len, n->separator) &&
+           gsdc_numbering_put_number(name, size, &len, index, 10U, n->index_digits);
+}
+
+/* The address of the parameter the manual names `name` (NUL-terminated)
+ * into `address`; false when the name is not one of this numbering (written
+ * otherwise than the description writes names, beyond the address space):
+ * `address` is written only when it is. */
+static inline bool gsdc_numbering_address(const gsdc_numbering_t *n, const char *name,
+                                          uint16_t *address)
+{
+    const gsdc_numbering_prefix_t *prefix = NULL;
+    size_t name_len = gsdc_numbering_strlen(name);
+    size_t separator_len = gsdc_numbering_strlen(n->separator);
+    size_t at = 0U;
+    size_t i;
+    bool ok;
+    uint32_t group = 0U;
+    uint32_t index = 0U;
+    uint32_t sum;
+    uint32_t found = 0U;
+    size_t group_len = 0U;
+    size_t group_most = 3U;
+    for (i = 0U; (prefix == NULL) && (i < n->prefixes_count); i++) {
+        size_t len = gsdc_numbering_strlen(n->prefixes[i].prefix);
+        size_t j;
+        bool same = len <= name_len;
+        for (j = 0U; same && (j < len); j++) {
+            same = name[j] == n->prefixes[i].prefix[j];
+        }
+        if (same) {
+            prefix = &n->prefixes[i];
+            at = len;
+        }
+    }
+    ok = prefix != NULL;
+    if (ok && n->exact_digits && (separator_len == 0U)) {
+        group_len = n->group_digits;
+        ok = (name_len - at) == ((size_t)n->group_digits + n->index_digits);
+    } else if (ok) {
+        /* The group ends at the first separator. */
+        ok = false;
+        for (i = at; !ok && (i + separator_len <= name_len); i++) {
+            size_t j;
+            bool same = true;
+            for (j = 0U; same && (j < separator_len); j++) {
+                same = name[i + j] == n->separator[j];
+            }
+            if (same) {
+                ok = true;
+                group_len = i - at;
+            }
+        }
+    }
+    /* A group has the numbering's digits when it fixes them, else 1 to 3;
+     * the separator follows it unless the digits alone end it. */
+    if (n->exact_digits) {
+        group_most = n->group_digits;
+    }
+    ok = ok && gsdc_numbering_digits(&name[at], group_len, n->group_radix, group_most, &group) &&
+         (group < gsdc_numbering_groups(n));
+    at += group_len;
+    if (!n->exact_digits || (separator_len != 0U)) {
+        at += separator_len;
+    }
+    ok = ok && gsdc_numbering_digits(&name[at], name_len - at, 10U, 3U, &index) &&
+         (index < gsdc_numbering_indexes(n));
+    if (ok) {
+        sum = (uint32_t)prefix->base + group;
+        if (n->scheme == GSDC_ADDRESS_SCHEME_BYTES) {
+            ok = sum <= 0xFFU;
+            found = (sum << 8) | index;
+        } else {
+            found = (sum * gsdc_numbering_power(10U, n->index_digits)) + index;
+        }
+        ok = ok && (found <= 0xFFFFU);
+    }
+    if (ok && n->exact_digits) {
+        /* A name is read only as it is written back. */
+        char canonical[32];
+        ok = gsdc_numbering_compose(n, prefix->prefix, group, index, canonical,
+                                    sizeof canonical);
+        for (i = 0U; ok && (i <= name_len); i++) {
+            ok = canonical[i] == name[i];
+        }
+    }
+    if (ok) {
+        *address = (uint16_t)found;
+    }
+    return ok;
+}
+
+/* The name the manual gives the parameter at `address`, into `name`
+ * (`size` bytes, NUL-terminated): with the prefix the description writes
+ * it with, else the one of the highest base that covers it (of two of one
+ * base, the first of the prefixes); false when no prefix covers it or the
+ * name does not fit. */
+static inline bool gsdc_numbering_name(const gsdc_numbering_t *n, uint16_t address, char *name,
+                                       size_t size)
+{
+    uint32_t sum = (uint32_t)address >> 8;
+    uint32_t index = (uint32_t)address & 0xFFU;
+    const char *written = NULL;
+    const gsdc_numbering_prefix_t *best = NULL;
+    bool chosen = false;
+    size_t i;
+    if (n->scheme == GSDC_ADDRESS_SCHEME_DECIMAL) {
+        sum = (uint32_t)address / gsdc_numbering_power(10U, n->index_digits);
+        index = (uint32_t)address % gsdc_numbering_power(10U, n->index_digits);
+    }
+    for (i = 0U; i < n->written_count; i++) {
+        if (n->written[i].address == address) {
+            written = n->written[i].prefix;
+        }
+    }
+    for (i = 0U; !chosen && (i < n->prefixes_count); i++) {
+        const gsdc_numbering_prefix_t *p = &n->prefixes[i];
+        bool covers = ((uint32_t)p->base <= sum) &&
+                      ((sum - (uint32_t)p->base) < gsdc_numbering_groups(n));
+        if (covers && (written != NULL)) {
+            size_t j = 0U;
+            while ((p->prefix[j] != '\0') && (p->prefix[j] == written[j])) {
+                j++;
+            }
+            chosen = p->prefix[j] == written[j];
+        }
+        if (covers && (chosen || (best == NULL) || (p->base > best->base))) {
+            best = p;
+        }
+    }
+    return (index < gsdc_numbering_indexes(n)) && (best != NULL) &&
+           gsdc_numbering_compose(n, best->prefix, sum - (uint32_t)best->base, index, name, size);
 }
 
 #ifdef __cplusplus

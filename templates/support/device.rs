@@ -25,10 +25,15 @@ pub enum PkwCodec {
 pub type NodeTotals = fn(&[u8]) -> Option<(usize, usize)>;
 
 /// A PROFIBUS-DP slave: its identity, the modules its GSD offers, its
-/// User_Prm_Data and its diagnosis block.
+/// User_Prm_Data, the PZD words that User_Prm_Data maps, its diagnosis
+/// block and, for a gateway, its nodes.
 #[derive(Clone, Copy, Debug)]
 pub struct DpDevice {
     pub ident_number: u16,
+    /// Freeze_Mode_supp and Sync_Mode_supp: whether the slave takes
+    /// Global_Control's Freeze and Sync.
+    pub freeze_mode: bool,
+    pub sync_mode: bool,
     /// Every `Module` of the GSD, in its order.
     pub modules: &'static [DpModule],
     /// Max_Module: the most modules a configuration plugs.
@@ -41,7 +46,115 @@ pub struct DpDevice {
     /// The most bytes of the device-related diagnosis block, its header
     /// included (Max_Diag_Data_Len less the standard 6); 0 without one.
     pub diagnosis_len: usize,
+    /// A drive's card's device-related diagnosis block: its bytes and the
+    /// areas the GSD's `Unit_Diag_Area`s read.
+    pub diagnosis: Option<DpDiagnosis>,
     pub pkw: PkwCodec,
+    /// Whether PZD1 from the master is the drive's control word, and PZD1
+    /// to the master its status word.
+    pub control_word: bool,
+    pub status_word: bool,
+    /// The PZD words from the master that a parameter of User_Prm_Data
+    /// maps to a drive parameter, and those to the master.
+    pub pzd_out: &'static [PzdParam],
+    pub pzd_in: &'static [PzdParam],
+    /// A gateway's nodes and diagnosis.
+    pub gateway: Option<DpGateway>,
+}
+
+/// A PZD word and the parameter of User_Prm_Data whose value is the drive
+/// parameter it carries.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PzdParam {
+    /// Its number in the telegram, from 1 (PZD1 follows the PKW channel).
+    pub word: u8,
+    /// The parameter's place in `UserPrm::params`.
+    pub param: usize,
+}
+
+/// The device-related diagnosis block of a drive's card.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpDiagnosis {
+    /// Bytes of the block, the header byte included.
+    pub len: usize,
+    /// Every `Unit_Diag_Area` of the GSD, in its order.
+    pub areas: &'static [DpDiagArea],
+}
+
+impl DpDiagnosis {
+    /// The header byte: a device-related block (bits 7-6 = 00) of `len`
+    /// bytes.
+    pub const fn header(&self) -> u8 {
+        (self.len & 0x3F) as u8
+    }
+}
+
+/// A `Unit_Diag_Area`: bits `first_bit..=last_bit` after the header, and
+/// the values the GSD gives a text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpDiagArea {
+    pub first_bit: u16,
+    pub last_bit: u16,
+    pub values: &'static [u16],
+}
+
+impl DpDiagArea {
+    /// The area, to read and write in a block.
+    pub const fn area(&self) -> super::diagnosis::DiagArea {
+        super::diagnosis::DiagArea::new(self.first_bit, self.last_bit)
+    }
+}
+
+/// A gateway's nodes, as User_Prm_Data puts them in use (the first
+/// `node_count` of them, each node's words following the words of the nodes
+/// before it, in ascending node number), and the diagnosis block it sends
+/// for a node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DpGateway {
+    /// The place in `UserPrm::params` of the number of nodes in use.
+    pub node_count: usize,
+    /// Every node number, the first first.
+    pub nodes: &'static [GatewayNode],
+    pub diagnosis: Option<GatewayDiagnosis>,
+}
+
+/// A node number and the places in `UserPrm::params` of the words it sends
+/// (the master's input) and receives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GatewayNode {
+    pub node: u8,
+    pub input_words: usize,
+    pub output_words: usize,
+}
+
+/// Where a gateway's diagnosis block (the header being byte 0) holds the
+/// type, the node and the code, and the types there are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GatewayDiagnosis {
+    pub type_at: usize,
+    pub node_at: usize,
+    pub code_at: usize,
+    pub types: &'static [GatewayDiagType],
+}
+
+/// A type of a gateway's diagnosis: its value, the bytes of its blocks
+/// (the header included) and its code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GatewayDiagType {
+    pub value: u8,
+    pub len: usize,
+    pub code: DiagCode,
+    /// The codes a one-byte code may be; empty for a 16-bit number.
+    pub codes: &'static [u16],
+}
+
+/// How a gateway's diagnosis block carries its code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DiagCode {
+    /// One byte, one of the type's codes.
+    Byte,
+    /// A 16-bit number, high byte first.
+    Word,
 }
 
 /// A `Module` of the GSD.
@@ -224,11 +337,15 @@ impl DpDevice {
 }
 
 /// A PROFINET IO device: its identity, its device access point with the
-/// interface and ports, and the modules its GSDML offers.
+/// interface and ports, the modules its GSDML offers and the PZD words their
+/// records map.
 #[derive(Clone, Copy, Debug)]
 pub struct PnDevice {
     pub vendor_id: u16,
     pub device_id: u16,
+    /// The device access point's DNS_CompatibleName: the NameOfStation an
+    /// engineering tool proposes.
+    pub dns_name: &'static str,
     /// The device access point, in slot 0: its module ident number and its
     /// own submodule.
     pub dap_ident: u32,
@@ -238,6 +355,26 @@ pub struct PnDevice {
     /// Every module of the GSDML, in its order.
     pub modules: &'static [PnModule],
     pub pkw: PkwCodec,
+    /// Whether PZD1 from the controller is the drive's control word, and
+    /// PZD1 to the controller its status word.
+    pub control_word: bool,
+    pub status_word: bool,
+    /// The PZD words from the controller that an entry of a module's
+    /// record maps to a drive parameter, and those to the controller.
+    pub pzd_out: &'static [PnPzd],
+    pub pzd_in: &'static [PnPzd],
+}
+
+/// A PZD word and the record entry whose value is the drive parameter it
+/// carries: entry `entry` of the record `record` of the plugged module.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PnPzd {
+    /// Its number in the telegram, from 1 (PZD1 follows the PKW channel).
+    pub word: u8,
+    /// The record's index.
+    pub record: u16,
+    /// The entry's place in the record, from 0.
+    pub entry: usize,
 }
 
 /// A submodule: where it sits and its IO data in bytes.
@@ -259,6 +396,10 @@ pub struct PnModule {
     pub slots: &'static [u16],
     /// The API its submodules are in: 0, or PROFIdrive's 0x3A00.
     pub api: u32,
+    /// Whether its telegrams start with the PKW channel, and its PZD words
+    /// each way.
+    pub pkw: bool,
+    pub pzd_words: usize,
     /// PROFIdrive's module access point: a submodule without data.
     pub access_point: Option<PnSubmodule>,
     /// The submodule with the IO data.
@@ -288,13 +429,16 @@ pub struct PnRecord {
     /// Each entry's value as the GSDML gives it (DefaultValue): its
     /// default, or the value the module fixes.
     pub defaults: &'static [u16],
+    /// Whether the controller may change each entry (the GSDML's
+    /// `Changeable`); an entry that is not holds its default.
+    pub changeable: &'static [bool],
 }
 
 impl PnRecord {
     /// The entries' values of a record the controller wrote, into the first
-    /// `entries.len()` of `values`, each one checked, the entries a prefix
-    /// leaves out with their defaults; nothing is written when it is
-    /// refused.
+    /// `entries.len()` of `values`, each one checked (an entry the module
+    /// fixes must hold its default), the entries a prefix leaves out with
+    /// their defaults; nothing is written when it is refused.
     pub fn decode(&self, bytes: &[u8], values: &mut [u16]) -> Result<(), PrmError> {
         let count = bytes.len() / 2;
         let fits = match self.reading {
@@ -309,7 +453,9 @@ impl PnRecord {
         }
         for (i, entry) in self.entries.iter().enumerate().take(count) {
             let value = u16::from_be_bytes(read_bytes(bytes, 2 * i)?);
-            if !entry.allowed.contains(value) {
+            let fixed = self.changeable.get(i) == Some(&false);
+            let held = self.defaults.get(i) == Some(&value);
+            if !entry.allowed.contains(value) || fixed && !held {
                 return Err(PrmError::NotAllowed {
                     offset: 2 * i,
                     value,

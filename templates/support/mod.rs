@@ -22,8 +22,14 @@ pub mod gateway;
 /// device that serves any description.
 pub mod device;
 
-pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, UserPrm};
+/// How a drive numbers its parameters: names as the manual writes them.
+pub mod numbering;
+
+pub use device::{DiagCode, DpDiagArea, DpDiagnosis, DpGateway, GatewayDiagType};
+pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, PzdParam, UserPrm};
+pub use device::{GatewayDiagnosis, GatewayNode, PnPzd};
 pub use device::{PnDevice, PnModule, PnRecord, PnSubmodule, PrmDataType, RecordReading};
+pub use numbering::{AddressScheme, Numbering, NumberingPrefix, ParameterName, WrittenPrefix};
 
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
 /// so a `#[repr(C)]` struct of words has no padding.

@@ -130,6 +130,7 @@ static void dump_dp(const gsdc_dp_device_t *d)
         put_default(p, user_prm);
     }
     printf("diagnosis %lu\n", (unsigned long)d->diagnosis_len);
+    printf("global_control freeze %d sync %d\n", d->freeze_mode ? 1 : 0, d->sync_mode ? 1 : 0);
     for (i = 0U; i < d->user_prm.dpv1_status_count; i++) {
         user_prm[i] = d->user_prm.dpv1_status[i];
     }
@@ -146,6 +147,24 @@ static void dump_dp(const gsdc_dp_device_t *d)
             (input != m->input_len) || (output != m->output_len)) {
             fail("a module's config bytes are refused");
         }
+    }
+}
+
+/* A drive's card's diagnosis areas, in their own section. */
+static void dump_dp_diagnosis(const gsdc_dp_diagnosis_t *d)
+{
+    size_t i;
+    size_t j;
+    if (gsdc_dp_diagnosis_header(d) != d->len) {
+        fail("the block's header is not its length");
+    }
+    for (i = 0U; i < d->areas_count; i++) {
+        const gsdc_dp_diag_area_t *a = &d->areas[i];
+        printf("diag_area %u-%u values", (unsigned int)a->first_bit, (unsigned int)a->last_bit);
+        for (j = 0U; j < a->values_count; j++) {
+            printf("%s%u", (j == 0U) ? " " : ",", (unsigned int)a->values[j]);
+        }
+        printf("\n");
     }
 }
 #endif
@@ -175,6 +194,10 @@ static void dump_record(const gsdc_pn_record_t *r)
     for (i = 0U; i < r->entries_count; i++) {
         printf(" %u", (unsigned int)values[i]);
     }
+    printf(" changeable");
+    for (i = 0U; i < r->changeable_count; i++) {
+        printf(" %d", r->changeable[i] ? 1 : 0);
+    }
     printf("\n");
 }
 
@@ -183,6 +206,7 @@ static void dump_pn(const gsdc_pn_device_t *d)
     size_t i;
     size_t j;
     printf("vendor %u device %u\n", (unsigned int)d->vendor_id, (unsigned int)d->device_id);
+    printf("name %s\n", d->dns_name);
     printf("dap %lu submodule %u %lu\n", (unsigned long)d->dap_ident,
            (unsigned int)d->dap_submodule.subslot, (unsigned long)d->dap_submodule.ident);
     printf("interface %u %lu\n", (unsigned int)d->interface_submodule.subslot,
@@ -211,15 +235,55 @@ static void dump_pn(const gsdc_pn_device_t *d)
 }
 #endif
 
-int main(void)
+#ifdef NUMBERING
+/* Every address the numbering names, with its name, each name read back
+ * to its address; then each of the names gsdc's test gives in argv, with
+ * the address it reads (or "none"). */
+static void dump_numbering(const gsdc_numbering_t *n, int argc, char **argv)
+{
+    uint32_t address;
+    int i;
+    for (address = 0U; address <= 0xFFFFU; address++) {
+        char name[32];
+        uint16_t back = 0U;
+        if (gsdc_numbering_name(n, (uint16_t)address, name, sizeof name)) {
+            printf("%04X %s\n", (unsigned int)address, name);
+            if (!gsdc_numbering_address(n, name, &back) || (back != address)) {
+                fail("a name is not read back to its address");
+            }
+        }
+    }
+    for (i = 1; i < argc; i++) {
+        uint16_t read = 0U;
+        if (gsdc_numbering_address(n, argv[i], &read)) {
+            printf("read \"%s\" %04X\n", argv[i], (unsigned int)read);
+        } else {
+            printf("read \"%s\" none\n", argv[i]);
+        }
+    }
+}
+#endif
+
+int main(int argc, char **argv)
 {
 #ifdef DP_DEVICE
     printf("[dp]\n");
     dump_dp(DP_DEVICE());
+    if (DP_DEVICE()->diagnosis != NULL) {
+        printf("[dp_diagnosis]\n");
+        dump_dp_diagnosis(DP_DEVICE()->diagnosis);
+    }
 #endif
 #ifdef PN_DEVICE
     printf("[pn]\n");
     dump_pn(PN_DEVICE());
+#endif
+#ifdef NUMBERING
+    printf("[numbering]\n");
+    dump_numbering(NUMBERING(), argc, argv);
+#else
+    (void)argc;
+    (void)argv;
 #endif
     return 0;
 }

@@ -1,8 +1,10 @@
 //! Generates every shipped description's files, and the PROFIdrive
 //! fixture's, into OUT_DIR with gsdc's build-script API, as a firmware crate
-//! would; and `examples.rs`, the manuals' worked examples each description
+//! would; `examples.rs`, the manuals' worked examples each description
 //! gives (`[[examples]]`), for tests/manuals.rs to round-trip through the
-//! layouts.
+//! layouts; and, for tests/numbering.rs, how gsdc itself names every address
+//! and reads a few odd names, for each description that numbers its drive's
+//! parameters (`<stem>.numbering`).
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -27,9 +29,42 @@ fn main() {
     let mut examples = String::from(EXAMPLE_TYPE);
     for path in &paths {
         gsdc::build::generate(path, &out_dir).unwrap_or_else(|e| panic!("{e}"));
-        examples.push_str(&examples_of(path));
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let loaded = gsdc::build::load_file(path, &name).unwrap_or_else(|e| panic!("{e}"));
+        let ir = loaded.ir.expect("the description loads");
+        examples.push_str(&examples_of(&name, &ir));
+        if let Some(numbering) = &ir.numbering {
+            let stem = name.trim_end_matches(".toml");
+            let file = Path::new(&out_dir).join(format!("{stem}.numbering"));
+            std::fs::write(file, numbering_lines(numbering)).expect("OUT_DIR is writable");
+        }
     }
     std::fs::write(Path::new(&out_dir).join("examples.rs"), examples).expect("OUT_DIR is writable");
+}
+
+/// Names that are not of most numberings: tests/numbering.rs reads each
+/// with the layout's numbering, which must read it as gsdc does.
+const ODD_NAMES: [&str; 20] = [
+    "", "F", "P", "F0", "F0-", "-08", "Z0-08", "F0-256", "FG-01", "F0-0008", "F00-08", "f0-08",
+    "F0.08", "P43-02", "P43.", "P999.99", "r43.02", "P4302", "F0-8", "F0-008",
+];
+
+/// `A F008 F0-08` for every address gsdc names, then `R "F0-8" none` (or
+/// the address) for each of [`ODD_NAMES`] as gsdc reads it.
+fn numbering_lines(numbering: &gsdc::ir::Numbering) -> String {
+    let mut text = String::new();
+    for address in 0..=u16::MAX {
+        if let Some(name) = numbering.format(address) {
+            writeln!(text, "A {address:04X} {name}").unwrap();
+        }
+    }
+    for name in ODD_NAMES {
+        match numbering.parse(name) {
+            Ok(address) => writeln!(text, "R {name:?} {address:04X}").unwrap(),
+            Err(_) => writeln!(text, "R {name:?} none").unwrap(),
+        }
+    }
+    text
 }
 
 /// What tests/manuals.rs reads.
@@ -50,10 +85,7 @@ pub struct Example {
 ";
 
 /// `pub const MD810DP: &[Example] = &[...];`, named after the file.
-fn examples_of(path: &Path) -> String {
-    let name = path.file_name().unwrap().to_string_lossy().into_owned();
-    let loaded = gsdc::build::load_file(path, &name).unwrap_or_else(|e| panic!("{e}"));
-    let ir = loaded.ir.expect("the description loads");
+fn examples_of(name: &str, ir: &gsdc::Ir) -> String {
     let constant = name
         .trim_end_matches(".toml")
         .to_uppercase()

@@ -7,7 +7,7 @@
 //!
 //! A line per fact: `ident 0x0810`, `module "PPO1" config F3 F1 in 12 out 12
 //! pkw 1 pzd 2`, `param "PZD2 out" offset 5 Unsigned16 bits 0-15 default 0
-//! allowed 0-65535`, `record 1 len 4 reads 0 0`...
+//! allowed 0-65535`, `record 1 len 4 reads 0 0 changeable 1 1`...
 
 #![allow(dead_code)] // each includer uses its part
 
@@ -64,7 +64,32 @@ pub fn dp_lines(gsd: &Path) -> Vec<String> {
         "diagnosis {}",
         parsed.max_diag_data_length.saturating_sub(6)
     ));
+    lines.push(format!(
+        "global_control freeze {} sync {}",
+        u8::from(parsed.freeze_mode_supported),
+        u8::from(parsed.sync_mode_supported)
+    ));
     lines
+}
+
+/// The GSD's `Unit_Diag_Area`s: `diag_area 8-15 values 52`.
+pub fn dp_diag_lines(gsd: &Path) -> Vec<String> {
+    let text = std::fs::read(gsd).unwrap();
+    let parsed = gsd_parser::parser::parse(gsd, &String::from_utf8_lossy(&text)).unwrap();
+    parsed
+        .unit_diag
+        .areas
+        .iter()
+        .map(|a| {
+            let values: Vec<String> = a.values.keys().map(u16::to_string).collect();
+            format!(
+                "diag_area {}-{} values {}",
+                a.first,
+                a.last,
+                values.join(",")
+            )
+        })
+        .collect()
 }
 
 /// `0-5`, `0,2,7` or `1-3,9`: the values, as runs.
@@ -164,6 +189,7 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         number(attr(identity, "DeviceID"))
     )];
     let dap = find("DeviceAccessPointItem");
+    lines.push(format!("name {}", attr(dap, "DNS_CompatibleName")));
     let dap_submodule = dap
         .descendants()
         .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
@@ -236,16 +262,22 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
                 .descendants()
                 .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
             {
-                let reads: Vec<&str> = record
-                    .children()
-                    .filter(|n| n.has_tag_name("Ref"))
-                    .map(|r| attr(r, "DefaultValue"))
+                let refs = record.children().filter(|n| n.has_tag_name("Ref"));
+                let reads: Vec<&str> = refs.clone().map(|r| attr(r, "DefaultValue")).collect();
+                // A Ref's Changeable is true unless it says otherwise (the
+                // schema's default).
+                let changeable: Vec<&str> = refs
+                    .map(|r| match r.attribute("Changeable") {
+                        Some("false") => "0",
+                        _ => "1",
+                    })
                     .collect();
                 lines.push(format!(
-                    "record {} len {} reads {}",
+                    "record {} len {} reads {} changeable {}",
                     attr(record, "Index"),
                     attr(record, "Length"),
-                    reads.join(" ")
+                    reads.join(" "),
+                    changeable.join(" ")
                 ));
             }
         }

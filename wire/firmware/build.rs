@@ -42,8 +42,8 @@ struct Layout {
     file_name: String,
     /// The module that includes it: the file's stem, made an identifier.
     module: String,
-    /// Its card: the layout's device tables, and what the tables do not
-    /// carry, by the names the layout gives them.
+    /// Its card: the layout's device tables, numbering and codecs, by the
+    /// names the layout gives them.
     card: String,
 }
 
@@ -81,73 +81,30 @@ fn load(path: &Path) -> gsdc::Ir {
         .unwrap_or_else(|| panic!("{}: the description has errors", path.display()))
 }
 
-/// The `Card` of the layout `module`. Every value is a constant of the
-/// layout; the plan says only which of them the layout has.
+/// The `Card` of the layout `module`: its tables and codecs by the names
+/// every layout gives them; the plan says only which of them it has.
 fn card(name: &str, module: &str, ir: &gsdc::Ir) -> String {
-    use gsdc::ir::MappingKind;
-    let pkw = match (&ir.profibus, &ir.profinet) {
-        (Some(_), _) => format!("{module}::DP_DEVICE.pkw"),
-        (None, Some(_)) => format!("{module}::PN_DEVICE.pkw"),
-        (None, None) => "crate::gsdc_support::PkwCodec::None".to_string(),
+    let item = |present: bool, item: String| match present {
+        true => format!("Some({item})"),
+        false => "None".to_string(),
     };
-    let mappings = |kind, group: &str| match ir.mappings.group(kind) {
-        Some(_) => format!("&{module}::{group}::MAPPINGS"),
-        None => "&[]".to_string(),
-    };
-    let dp = match ir.profibus {
-        Some(_) => format!("Some(&{module}::DP_DEVICE)"),
-        None => "None".to_string(),
-    };
-    let diagnosis = ir.profibus.as_ref().and_then(|p| p.diagnosis.as_ref());
-    let diagnosis = match diagnosis.and_then(|d| d.areas.first()) {
-        Some(area) if ir.gateway.is_none() => format!(
-            "Some(crate::card::Diagnosis {{\n            empty: &{module}::diagnosis::EMPTY,\n            code: {module}::diagnosis::{},\n        }})",
-            area.ident.upper_snake()
-        ),
-        _ => "None".to_string(),
-    };
-    let gateway = match ir.gateway {
-        Some(_) => format!("Some(crate::gateway_of!({module}))"),
-        None => "None".to_string(),
-    };
-    let pn = match ir.profinet {
-        Some(_) => format!("Some(&{module}::PN_DEVICE)"),
-        None => "None".to_string(),
-    };
-    let pn_shapes: Vec<String> = ir
-        .profinet
-        .iter()
-        .flat_map(|p| &p.modules)
-        .map(|m| {
-            format!(
-                "({module}::{}_IDENT, crate::cyclic::Shape {{ pkw: {}, pzd_words: {} }})",
-                m.ident.upper_snake(),
-                m.layout.pkw,
-                m.layout.pzd_words
-            )
-        })
-        .collect();
     format!(
         "    Card {{
         name: {name:?},
         fingerprint: {module}::FINGERPRINT,
-        pkw: {pkw},
-        control_word: {},
-        status_word: {},
-        pzd_out: {},
-        pzd_in: {},
-        dp: {dp},
-        diagnosis: {diagnosis},
-        gateway: {gateway},
-        pn: {pn},
-        pn_shapes: &[{}],
+        dp: {},
+        gateway: {},
+        pn: {},
+        numbering: {},
     }},
 ",
-        ir.telegram.control_word.is_some(),
-        ir.telegram.status_word.is_some(),
-        mappings(MappingKind::PzdOut, "pzd_out"),
-        mappings(MappingKind::PzdIn, "pzd_in"),
-        pn_shapes.join(", "),
+        item(ir.profibus.is_some(), format!("&{module}::DP_DEVICE")),
+        item(
+            ir.gateway.is_some(),
+            format!("crate::gateway_of!({module})")
+        ),
+        item(ir.profinet.is_some(), format!("&{module}::PN_DEVICE")),
+        item(ir.numbering.is_some(), format!("&{module}::NUMBERING")),
     )
 }
 

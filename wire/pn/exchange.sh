@@ -110,6 +110,11 @@ for entry in "${modules[@]}"; do
   read -r module slot api module_name <<<"$entry"
   run_case "$module ($module_name) in slot $slot" "$slot" "$module" "$module_name" "$scenario"
 done
+# The soft card (gsdc's README), with the GSDML's first module: found by
+# its name of station, stopped by Ctrl-C and by SIGTERM.
+read -r module slot api module_name <<<"${modules[0]}"
+run_case "soft card: $module ($module_name), DCP Identify by name of station, SIGINT, SIGTERM" \
+  "$slot" "$module" "$module_name" soft-card
 # The negative cases, on the GSDML's last module: the device departs from
 # the layout, and the controller's Connect must fail with the status that
 # says how.

@@ -13,7 +13,14 @@
 # station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT,
 # and NAME its name, by which the device finds it in its layout; SCENARIO: the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
 # (--mismatch KIND makes it a negative case, and the controller then expects
-# the Connect refused).
+# the Connect refused). The device takes its name of station from its
+# layout; the controller finds it by the GSDML's (STATION), so the two must
+# agree.
+#
+# SCENARIO soft-card runs the soft card's command instead (README: no
+# --seconds, it runs until stopped): the controller DCP-identifies it by the
+# GSDML's name of station, then SIGINT (Ctrl-C) must stop it, exit 0, within
+# 5 s; started again, SIGTERM must too.
 #
 # Exit status: the controller's (0 passed, 1 failed, 2 could not run); 2
 # also when the namespaces cannot be made. The namespaces carry this
@@ -62,21 +69,63 @@ ip -n "$ns_ctl" link set pn0 up
 ip -n "$ns_dev" link set pn0 up
 
 events="$work/device-events.jsonl"
-# The device stops by itself after 60 s if nothing else stops it.
-ip netns exec "$ns_dev" "$device" --card "$card" --iface pn0 --ip "$ip_dev" \
-  --station "$station" --plug "$slot=$name" --seconds 60 "$@" >"$events" 2>"$work/device.err" &
-device_pid=$!
-# Until the device listens (its first event), at most 5 s.
-for _ in $(seq 50); do
-  [ -s "$events" ] && break
-  kill -0 "$device_pid" 2>/dev/null || break
-  sleep 0.1
-done
-if ! [ -s "$events" ]; then
-  echo "the device did not start:" >&2
-  cat "$work/device.err" >&2
-  exit 2
+# Starts the device (with FLAGS) and waits until it listens (its first
+# event), at most 5 s.
+start_device() { # FLAGS...
+  : >"$events"
+  ip netns exec "$ns_dev" "$device" --card "$card" --iface pn0 --ip "$ip_dev" \
+    --plug "$slot=$name" "$@" >"$events" 2>"$work/device.err" &
+  device_pid=$!
+  for _ in $(seq 50); do
+    [ -s "$events" ] && break
+    kill -0 "$device_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  if ! [ -s "$events" ]; then
+    echo "the device did not start:" >&2
+    cat "$work/device.err" >&2
+    exit 2
+  fi
+}
+
+# The soft card stops on SIGNAL within 5 s, exit 0, and says so.
+stops_on() { # SIGNAL
+  local code=0
+  kill -s "$1" "$device_pid"
+  for _ in $(seq 50); do
+    kill -0 "$device_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  if kill -0 "$device_pid" 2>/dev/null; then
+    echo "FAIL soft card: still running 5 s after SIG$1"
+    return 1
+  fi
+  wait "$device_pid" || code=$?
+  device_pid=""
+  if [ "$code" -ne 0 ] || ! tail -n 1 "$events" | grep -q "\"event\":\"stopped\",\"by\":\"SIG$1\""; then
+    echo "FAIL soft card: on SIG$1 it exited $code, its last event: $(tail -n 1 "$events")"
+    return 1
+  fi
+  echo "  soft card: stopped on SIG$1, exit 0"
+}
+
+if [ "$scenario" = soft-card ]; then
+  start_device "$@"
+  status=0
+  timeout 30 ip netns exec "$ns_ctl" "$python" "$here/controller/pn_controller.py" \
+    --identify --iface pn0 --gsdml "$gsdml" || status=$?
+  [ "$status" -eq 124 ] && { echo "FAIL soft card: DCP Identify did not finish in 30 s"; status=1; }
+  [ "$status" -eq 0 ] && { stops_on INT || status=1; }
+  if [ "$status" -eq 0 ]; then
+    start_device "$@"
+    stops_on TERM || status=1
+  fi
+  [ "$status" -eq 0 ] || cat "$events" "$work/device.err" >&2
+  exit "$status"
 fi
+
+# The device stops by itself after 60 s if nothing else stops it.
+start_device --seconds 60 "$@"
 
 controller_flags=()
 [ "$scenario" != "-" ] && controller_flags+=(--scenario "$scenario")

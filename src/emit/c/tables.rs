@@ -22,7 +22,7 @@ pub(super) fn render(names: &Names, tables: &[Table]) -> String {
                 lines: Vec::new(),
             };
             let ty = type_name(&table.record);
-            let object = statics.record(&table.record, "", 4);
+            let object = statics.record(&table.record, "", 4, 0);
             format!(
                 "\n{}\nstatic inline const {ty} *{}(void)\n{{\n{}    static const {ty} table = {object};\n    return &table;\n}}\n",
                 comment(&names.rendered(&table.doc)),
@@ -39,6 +39,7 @@ fn type_name(r: &Record) -> String {
 
 fn elem_type(elem: Elem) -> String {
     match elem {
+        Elem::Bool => "bool".into(),
         Elem::Byte => "uint8_t".into(),
         Elem::Word => "uint16_t".into(),
         Elem::Index => "size_t".into(),
@@ -54,9 +55,10 @@ struct Statics<'a> {
 
 impl Statics<'_> {
     /// `{ a, b }` of a record at `path` (empty for the table itself, which
-    /// has a field a line), on one line when it fits at `indent`, else a
-    /// field a line, each named in a comment.
-    fn record(&mut self, r: &Record, path: &str, indent: usize) -> String {
+    /// has a field a line), on one line when it fits at `indent` after
+    /// `lead` columns of its line (a declaration's head), else a field a
+    /// line, each named in a comment.
+    fn record(&mut self, r: &Record, path: &str, indent: usize, lead: usize) -> String {
         let parts: Vec<(String, String)> = r
             .fields
             .iter()
@@ -72,7 +74,7 @@ impl Statics<'_> {
         let values: Vec<&str> = parts.iter().map(|(_, value)| value.as_str()).collect();
         let one_line = format!("{{ {} }}", values.join(", "));
         // The comma after it.
-        let fits = !one_line.contains('\n') && indent + one_line.len() < WIDTH;
+        let fits = !one_line.contains('\n') && indent + lead + one_line.len() < WIDTH;
         if !path.is_empty() && fits {
             return one_line;
         }
@@ -106,15 +108,14 @@ impl Statics<'_> {
             Value::Variant(ty, name) => {
                 one(format!("GSDC_{}_{}", ty.upper_snake(), name.upper_snake()))
             }
-            Value::Record(r) => one(self.record(r, path, indent)),
+            Value::Record(r) => one(self.record(r, path, indent, 0)),
             Value::List(elem, items) => self.list(*elem, items, field, path),
             Value::Optional(Elem::Record(_), None) | Value::NodeTotals(false) => one("NULL".into()),
             Value::Optional(_, None) => counted(field, "NULL".into(), 0),
             Value::Optional(elem @ Elem::Record(_), Some(record)) => {
-                let object = self.record_of(record, path);
-                let ty = elem_type(*elem);
-                self.lines
-                    .push(format!("    static const {ty} {path} = {object};\n"));
+                let head = format!("    static const {} {path} = ", elem_type(*elem));
+                let object = self.record_of(record, path, head.len());
+                self.lines.push(format!("{head}{object};\n"));
                 one(format!("&{path}"))
             }
             Value::Optional(_, Some(list)) => self.value(list, field, path, indent),
@@ -132,9 +133,10 @@ impl Statics<'_> {
         }
     }
 
-    fn record_of(&mut self, v: &Value, path: &str) -> String {
+    /// The record an optional value holds, declared after `head` columns.
+    fn record_of(&mut self, v: &Value, path: &str, head: usize) -> String {
         match v {
-            Value::Record(r) => self.record(r, path, 4),
+            Value::Record(r) => self.record(r, path, 4, head - 4),
             _ => unreachable!("an optional record holds a record"),
         }
     }

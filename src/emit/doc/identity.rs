@@ -227,9 +227,6 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     // and User_Prm_Data's layout are gsdc's layout decisions, listed above
     // with their values.
     row(lang.t(w::BYTE_ORDER), lang.t(w::BYTE_ORDER_RULE));
-    if ir.gateway.is_some() {
-        row(lang.t(w::GATEWAY_PRM), lang.t(w::GATEWAY_PRM_RULE));
-    }
     if ir.profinet.is_some() {
         row(lang.t(w::PROFINET_NUMBERS), lang.t(w::AS_TABLES_ABOVE));
     }

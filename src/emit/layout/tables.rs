@@ -9,9 +9,10 @@
 //! is written once and reaches both languages.
 
 use super::{Doc, Val};
-use crate::ir::profibus::{self, PrmHolds, PrmType, Profibus};
+use crate::ir::gateway::{self, DiagCode, ParamKey};
+use crate::ir::profibus::{self, PrmHolds, PrmType, PrmValue, Profibus};
 use crate::ir::profinet::{self, Profinet, RecordReading};
-use crate::ir::{Allowed, Ident, Ir, MappingKind, PkwKind};
+use crate::ir::{AddressScheme, Allowed, Direction, Ident, Ir, MappingKind, Numbering, PkwKind};
 
 /// A table the layout declares: `DP_DEVICE` in Rust, `<prefix>_dp_device()`
 /// in C.
@@ -49,6 +50,7 @@ pub(crate) enum Value {
 /// What a list or an optional value holds, as C declares it.
 #[derive(Clone, Copy)]
 pub(crate) enum Elem {
+    Bool,
     Byte,
     Word,
     /// A place in a list.
@@ -90,14 +92,16 @@ fn variant(ty: &str, name: &str) -> Value {
 }
 
 /// The tables of a description: the PROFIBUS device with `[profibus]`, the
-/// PROFINET device with `[profinet]`.
+/// PROFINET device with `[profinet]`, the drive's parameter numbering when
+/// the description gives one.
 pub(crate) fn tables(ir: &Ir) -> Vec<Table> {
     let dp = ir.profibus.as_ref().map(|p| Table {
         name: Ident::of(&["dp", "device"]),
         doc: Doc::plain(format!(
             "The PROFIBUS-DP slave {} describes: its identity, every module, \
              User_Prm_Data with every parameter by the GSD's name, the \
-             diagnosis block and the PKW codec.",
+             diagnosis block, the PKW codec, the PZD words User_Prm_Data \
+             maps and a gateway's nodes.",
             p.file_name
         )),
         record: dp_device(ir, p),
@@ -107,12 +111,22 @@ pub(crate) fn tables(ir: &Ir) -> Vec<Table> {
         doc: Doc::plain(format!(
             "The PROFINET IO device {} describes: its identity, the device \
              access point with its interface and ports, every module with its \
-             submodules and parameter records, and the PKW codec.",
+             submodules and parameter records, the PKW codec and the PZD words \
+             the records map.",
             p.file_name
         )),
         record: pn_device(ir, p),
     });
-    dp.into_iter().chain(pn).collect()
+    let numbering = ir.numbering.as_ref().map(|n| Table {
+        name: Ident::of(&["numbering"]),
+        doc: Doc::plain(
+            "How the drive numbers its parameters: a name as the manual writes \
+             it read into the address the telegrams carry, and an address \
+             written back as a name.",
+        ),
+        record: numbering(n),
+    });
+    dp.into_iter().chain(pn).chain(numbering).collect()
 }
 
 fn pkw_codec(kind: PkwKind) -> Value {
@@ -129,10 +143,14 @@ fn pkw_codec(kind: PkwKind) -> Value {
 // PROFIBUS
 
 fn dp_device(ir: &Ir, p: &Profibus) -> Record {
+    let gateway = ir.gateway.as_ref().map(|g| Box::new(dp_gateway(p, g)));
+    let diagnosis = p.diagnosis.as_ref().map(|d| Box::new(dp_diagnosis(d)));
     record(
         "dp device",
         vec![
             ("ident_number", hex(p.ident_number, 4)),
+            ("freeze_mode", Value::Bool(p.freeze_mode)),
+            ("sync_mode", Value::Bool(p.sync_mode)),
             (
                 "modules",
                 Value::List(Elem::Record("dp module"), dp_modules(ir, p)),
@@ -144,9 +162,153 @@ fn dp_device(ir: &Ir, p: &Profibus) -> Record {
                 "diagnosis_len",
                 number(p.max_diag_data_len - profibus::STANDARD_DIAG_BYTES),
             ),
+            (
+                "diagnosis",
+                Value::Optional(Elem::Record("dp diagnosis"), diagnosis),
+            ),
             ("pkw", pkw_codec(ir.telegram.pkw)),
+            (
+                "control_word",
+                Value::Bool(ir.telegram.control_word.is_some()),
+            ),
+            (
+                "status_word",
+                Value::Bool(ir.telegram.status_word.is_some()),
+            ),
+            ("pzd_out", pzd_params(ir, p, MappingKind::PzdOut)),
+            ("pzd_in", pzd_params(ir, p, MappingKind::PzdIn)),
+            (
+                "gateway",
+                Value::Optional(Elem::Record("dp gateway"), gateway),
+            ),
         ],
     )
+}
+
+/// The place in User_Prm_Data's parameters of the one that holds `value`.
+fn param_place(p: &Profibus, value: PrmValue) -> Option<usize> {
+    p.user_prm.params().position(|param| param.value == value)
+}
+
+/// The PZD words of `kind` a parameter of User_Prm_Data maps: each entry's
+/// number is its word.
+fn pzd_params(ir: &Ir, p: &Profibus, kind: MappingKind) -> Value {
+    let entries = ir
+        .mappings
+        .group(kind)
+        .into_iter()
+        .flat_map(|g| g.entries());
+    let params = entries.filter_map(|(_, entry)| {
+        let place = param_place(p, PrmValue::Entry(entry.key))?;
+        Some(Value::Record(record(
+            "pzd param",
+            vec![("word", number(entry.key.number)), ("param", size(place))],
+        )))
+    });
+    Value::List(Elem::Record("pzd param"), params.collect())
+}
+
+/// A drive's card's device-related block: its length and every area with
+/// the values the GSD names.
+fn dp_diagnosis(d: &profibus::Diagnosis) -> Value {
+    let areas = d.areas.iter().map(|a| {
+        let values = a.values.choices.iter().map(|c| number(c.value as u64));
+        Value::Record(record(
+            "dp diag area",
+            vec![
+                ("first_bit", number(a.first_bit)),
+                ("last_bit", number(a.last_bit)),
+                ("values", Value::List(Elem::Word, values.collect())),
+            ],
+        ))
+    });
+    Value::Record(record(
+        "dp diagnosis",
+        vec![
+            ("len", number(d.length)),
+            (
+                "areas",
+                Value::List(Elem::Record("dp diag area"), areas.collect()),
+            ),
+        ],
+    ))
+}
+
+/// A gateway's nodes, each with the places of its words' parameters, and
+/// its diagnosis types.
+fn dp_gateway(p: &Profibus, g: &crate::ir::Gateway) -> Value {
+    let place = |key| {
+        param_place(p, PrmValue::Gateway(key))
+            .expect("lowering places every gateway parameter in User_Prm_Data")
+    };
+    let nodes = g.nodes.iter().map(|n| {
+        let words = |direction| {
+            place(ParamKey::Words {
+                node: n.number,
+                direction,
+            })
+        };
+        Value::Record(record(
+            "gateway node",
+            vec![
+                ("node", number(n.number)),
+                ("input_words", size(words(Direction::In))),
+                ("output_words", size(words(Direction::Out))),
+            ],
+        ))
+    });
+    let diagnosis = g.diagnosis.as_ref().map(|d| Box::new(gateway_diagnosis(d)));
+    Value::Record(record(
+        "dp gateway",
+        vec![
+            ("node_count", size(place(ParamKey::NodeCount))),
+            (
+                "nodes",
+                Value::List(Elem::Record("gateway node"), nodes.collect()),
+            ),
+            (
+                "diagnosis",
+                Value::Optional(Elem::Record("gateway diagnosis"), diagnosis),
+            ),
+        ],
+    ))
+}
+
+fn gateway_diagnosis(d: &gateway::Diagnosis) -> Value {
+    let types = d.types.iter().map(|t| {
+        let (code, codes) = match &t.code {
+            DiagCode::Listed(values) => (
+                "byte",
+                values
+                    .choices
+                    .iter()
+                    .map(|c| number(c.value as u64))
+                    .collect(),
+            ),
+            DiagCode::Word(_) => ("word", Vec::new()),
+        };
+        Value::Record(record(
+            "gateway diag type",
+            vec![
+                ("value", number(t.value)),
+                ("len", number(t.len)),
+                ("code", variant("diag code", code)),
+                ("codes", Value::List(Elem::Word, codes)),
+            ],
+        ))
+    });
+    Value::Record(record(
+        "gateway diagnosis",
+        vec![
+            ("type_at", number(d.type_at)),
+            ("node_at", number(d.node_at)),
+            ("code_at", number(d.code_at)),
+            (
+                "types",
+                Value::List(Elem::Record("gateway diag type"), types.collect()),
+            ),
+        ],
+    ))
 }
 
 /// Every `Module` of the GSD: the PPO types or the vendor's modules, or a
@@ -268,6 +430,7 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
         vec![
             ("vendor_id", hex(p.vendor_id, 4)),
             ("device_id", hex(p.device_id, 4)),
+            ("dns_name", text(&p.dns_name)),
             ("dap_ident", hex(profinet::DAP_IDENT, 8)),
             (
                 "dap_submodule",
@@ -298,8 +461,46 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                 ),
             ),
             ("pkw", pkw_codec(ir.telegram.pkw)),
+            (
+                "control_word",
+                Value::Bool(ir.telegram.control_word.is_some()),
+            ),
+            (
+                "status_word",
+                Value::Bool(ir.telegram.status_word.is_some()),
+            ),
+            ("pzd_out", pn_pzds(ir, p, MappingKind::PzdOut)),
+            ("pzd_in", pn_pzds(ir, p, MappingKind::PzdIn)),
         ],
     )
+}
+
+/// The PZD words of `kind` a record entry maps, each with the record's
+/// index and the entry's place in it: every module's record of a kind holds
+/// the group's entries from its first on, as many as the module has words.
+fn pn_pzds(ir: &Ir, p: &Profinet, kind: MappingKind) -> Value {
+    let records = p.modules.iter().flat_map(|m| &m.records);
+    let mut places: Vec<(u8, u16, usize)> = Vec::new();
+    for r in records.filter(|r| r.kind == kind) {
+        for (place, f) in r.refs.iter().enumerate() {
+            if !places.iter().any(|&(word, _, _)| word == f.entry.number) {
+                places.push((f.entry.number, r.index, place));
+            }
+        }
+    }
+    places.sort_unstable();
+    debug_assert!(ir.mappings.group(kind).is_some() || places.is_empty());
+    let pzds = places.into_iter().map(|(word, index, place)| {
+        Value::Record(record(
+            "pn pzd",
+            vec![
+                ("word", number(word)),
+                ("record", number(index)),
+                ("entry", size(place)),
+            ],
+        ))
+    });
+    Value::List(Elem::Record("pn pzd"), pzds.collect())
 }
 
 fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) -> Value {
@@ -334,6 +535,8 @@ fn pn_module(ir: &Ir, m: &profinet::Module) -> Value {
                 Value::List(Elem::Word, vec![number(profinet::MODULE_SLOT)]),
             ),
             ("api", hex(m.api, 8)),
+            ("pkw", Value::Bool(m.layout.pkw)),
+            ("pzd_words", number(m.layout.pzd_words)),
             (
                 "access_point",
                 Value::Optional(Elem::Record("pn submodule"), access_point),
@@ -377,6 +580,55 @@ fn pn_record(ir: &Ir, r: &profinet::ParameterRecord) -> Value {
                     r.refs.iter().map(|f| number(f.default)).collect(),
                 ),
             ),
+            (
+                "changeable",
+                Value::List(
+                    Elem::Bool,
+                    r.refs.iter().map(|f| Value::Bool(f.changeable)).collect(),
+                ),
+            ),
         ],
     ))
+}
+
+// ---------------------------------------------------------------------------
+// The drive's parameter numbering
+
+fn numbering(n: &Numbering) -> Record {
+    let scheme = match n.scheme {
+        AddressScheme::Bytes => "bytes",
+        AddressScheme::Decimal => "decimal",
+    };
+    let prefixes = n.prefixes.iter().map(|(prefix, base)| {
+        Value::Record(record(
+            "numbering prefix",
+            vec![("prefix", text(prefix)), ("base", hex(*base, 2))],
+        ))
+    });
+    let written = n.written_prefixes.iter().map(|(address, prefix)| {
+        Value::Record(record(
+            "written prefix",
+            vec![("address", hex(*address, 4)), ("prefix", text(prefix))],
+        ))
+    });
+    let (group_digits, index_digits) = n.digits();
+    record(
+        "numbering",
+        vec![
+            ("separator", text(&n.separator)),
+            ("group_radix", number(n.group_radix)),
+            (
+                "prefixes",
+                Value::List(Elem::Record("numbering prefix"), prefixes.collect()),
+            ),
+            ("scheme", variant("address scheme", scheme)),
+            ("group_digits", number(group_digits)),
+            ("index_digits", number(index_digits)),
+            ("exact_digits", Value::Bool(n.widths.is_some())),
+            (
+                "written",
+                Value::List(Elem::Record("written prefix"), written.collect()),
+            ),
+        ],
+    )
 }

@@ -8,7 +8,7 @@ mod device_files;
 
 use device_files::{allowed_text, hex};
 use gsdc_firmware_check::gsdc_support::{
-    DpDevice, DpParam, PnDevice, PrmDataType, PrmError, RecordReading,
+    DpDevice, DpDiagnosis, DpParam, PnDevice, PrmDataType, PrmError, RecordReading,
 };
 use gsdc_firmware_check::{md810_gateway, md810dp, mv810_pnet02, powtran_9kdp1, profidrive};
 use std::path::PathBuf;
@@ -82,12 +82,30 @@ fn dp_lines(d: &DpDevice) -> Vec<String> {
         ));
     }
     lines.push(format!("diagnosis {}", d.diagnosis_len));
+    lines.push(format!(
+        "global_control freeze {} sync {}",
+        u8::from(d.freeze_mode),
+        u8::from(d.sync_mode)
+    ));
     lines
+}
+
+/// A drive's card's diagnosis areas, as `device_files::dp_diag_lines`.
+fn dp_diag_lines(d: &DpDiagnosis) -> Vec<String> {
+    d.areas
+        .iter()
+        .map(|a| {
+            let values: Vec<String> = a.values.iter().map(u16::to_string).collect();
+            let (first, last) = (a.first_bit, a.last_bit);
+            format!("diag_area {first}-{last} values {}", values.join(","))
+        })
+        .collect()
 }
 
 fn pn_lines(d: &PnDevice) -> Vec<String> {
     let mut lines = vec![
         format!("vendor {} device {}", d.vendor_id, d.device_id),
+        format!("name {}", d.dns_name),
         format!(
             "dap {} submodule {} {}",
             d.dap_ident, d.dap_submodule.subslot, d.dap_submodule.ident
@@ -120,11 +138,17 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             let mut values = vec![0; r.entries.len()];
             r.decode(&bytes, &mut values).unwrap();
             let reads: Vec<String> = values.iter().map(u16::to_string).collect();
+            let changeable: Vec<&str> = r
+                .changeable
+                .iter()
+                .map(|&c| if c { "1" } else { "0" })
+                .collect();
             lines.push(format!(
-                "record {} len {} reads {}",
+                "record {} len {} reads {} changeable {}",
                 r.index,
                 r.len,
-                reads.join(" ")
+                reads.join(" "),
+                changeable.join(" ")
             ));
         }
     }
@@ -138,6 +162,37 @@ fn every_dp_table_says_what_its_gsd_says() {
         let gsd = device_file(".GSD", device_files::dp_lines, &table[0]);
         assert_eq!(table, gsd, "{name}");
     }
+}
+
+/// A drive's card's diagnosis areas are the GSD's `Unit_Diag_Area`s, and
+/// the block is as long as the GSD allows; a gateway's blocks are its own
+/// (`gateway.rs`).
+#[test]
+fn every_dp_diagnosis_is_its_gsds_unit_diag_areas() {
+    let mut seen = 0;
+    for (name, device) in DP_DEVICES {
+        let Some(diagnosis) = device.diagnosis else {
+            assert!(
+                device.gateway.is_some() || device.diagnosis_len == 0,
+                "{name}"
+            );
+            continue;
+        };
+        let first = format!("ident 0x{:04X}", device.ident_number);
+        let path = generated(".GSD")
+            .into_iter()
+            .find(|p| device_files::dp_lines(p)[0] == first)
+            .unwrap();
+        assert_eq!(
+            dp_diag_lines(&diagnosis),
+            device_files::dp_diag_lines(&path),
+            "{name}"
+        );
+        assert_eq!(diagnosis.len, device.diagnosis_len, "{name}");
+        assert_eq!(usize::from(diagnosis.header()), diagnosis.len, "{name}");
+        seen += 1;
+    }
+    assert!(seen >= 2, "MD810's and 9KDP1's blocks");
 }
 
 #[test]

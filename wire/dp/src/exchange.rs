@@ -14,7 +14,6 @@ use gsd_parser::Module;
 use profirust::dp::{DiagnosticFlags, PeripheralEvent};
 use profirust::Baudrate;
 use wire_firmware::card::{Card, NodeEvent};
-use wire_firmware::drive::Drive;
 
 use crate::bus::{Bus, MasterConfig, Outcome};
 use crate::gsd::{data_lengths, Gsd};
@@ -521,7 +520,7 @@ impl Target {
 
     /// A new slave of the card, its drive as the drive's manual has it.
     fn slave(&self) -> DpSlave {
-        let drive = Drive::new(wire_firmware::manuals::for_description(&self.name));
+        let drive = wire_firmware::manuals::drive(self.card);
         DpSlave::new(SLAVE_ADDRESS, self.card, drive)
     }
 

@@ -25,7 +25,7 @@
 
 use profirust::fdl::{DataTelegram, FunctionCode, RequestType};
 use wire_firmware::card::{Card, NodeSetup, PrmValues};
-use wire_firmware::cyclic::{self, Shape};
+use wire_firmware::cyclic::{self, PzdTargets, Shape};
 use wire_firmware::drive::Drive;
 use wire_firmware::gsdc_support::{DpDevice, DpModule};
 use wire_firmware::nodes::Nodes;
@@ -392,21 +392,22 @@ impl DpSlave {
             return (bytes, reports);
         }
         let code = self.drive.diagnosis_code();
-        match &self.card.diagnosis {
-            Some(diagnosis) => {
-                let mut block = diagnosis.empty.to_vec();
-                diagnosis.code.set(&mut block, code);
-                (block, code != 0)
-            }
-            None => (Vec::new(), false),
-        }
+        // The block's first area carries the drive's code.
+        let Some((diagnosis, area)) = self.dp.diagnosis.and_then(|d| Some((d, *d.areas.first()?)))
+        else {
+            return (Vec::new(), false);
+        };
+        let mut block = vec![0; diagnosis.len];
+        block[0] = diagnosis.header();
+        area.area().set(&mut block, code);
+        (block, code != 0)
     }
 
     /// Data_Exchange (default SAP): the outputs to the drive or the nodes,
     /// the inputs back.
     fn data_exchange(&mut self, request: &DataTelegram) -> Reply {
         let (Some(plugged), Some(prm), State::DataExchange) =
-            (self.plugged.clone(), self.prm, self.state)
+            (self.plugged.clone(), self.prm.as_ref(), self.state)
         else {
             return Reply::NotActivated {
                 dsap: None,
@@ -429,8 +430,9 @@ impl DpSlave {
                     pkw: module.pkw,
                     pzd_words: module.pzd_words,
                 };
+                let pzds = PzdTargets::of_user_prm(self.dp, prm);
                 let drive = &mut self.drive;
-                cyclic::exchange(self.card, shape, &prm, drive, request.pdu, &mut inputs);
+                cyclic::exchange(self.card, shape, &pzds, drive, request.pdu, &mut inputs);
             }
             Plugged::Nodes(setup) => self.nodes.exchange(&setup, request.pdu, &mut inputs),
         }

@@ -5,7 +5,6 @@
 
 use profirust::fdl::{DataTelegram, DataTelegramHeader, FrameCountBit, FunctionCode, RequestType};
 use wire_dp::slave::{DpSlave, Reply, State};
-use wire_firmware::drive::Drive;
 use wire_firmware::layouts::md810dp;
 
 const MASTER: u8 = 2;
@@ -16,7 +15,7 @@ fn slave() -> DpSlave {
     DpSlave::new(
         SLAVE,
         card,
-        Drive::new(wire_firmware::manuals::for_description("md810dp")),
+        wire_firmware::manuals::drive(wire_firmware::card("md810dp").unwrap()),
     )
 }
 

@@ -1,15 +1,14 @@
 //! What the card's firmware reads of a layout, under the same names for
-//! every description: the layout's device tables (`DP_DEVICE`: identity,
-//! modules, User_Prm_Data by GSD name, the PKW codec) and, beside them,
-//! what the tables do not carry yet: which PZD word each mapping fills,
-//! the control and status words, the diagnosis block's area, a gateway's
-//! nodes and diagnosis. build.rs fills one [`Card`] per layout
-//! ([`crate::layouts::CARDS`]); every number in it is a constant of the
-//! layout.
+//! every description: the layout's device tables (`DP_DEVICE`, `PN_DEVICE`:
+//! identity, modules, User_Prm_Data and records by name, the PKW codec, the
+//! PZD words the parameters map, the control and status words, the
+//! diagnosis block, a gateway's nodes), its numbering (`NUMBERING`: the
+//! manual's parameter names as addresses) and a gateway's codecs. build.rs
+//! fills one [`Card`] per layout ([`crate::layouts::CARDS`]) with the
+//! layout's items by the names every layout gives them; no number in it is
+//! written by hand or taken from anywhere but the layout.
 
-use crate::cyclic::Shape;
-use crate::gsdc_support::diagnosis::DiagArea;
-use crate::gsdc_support::{DpDevice, Mapping, PkwCodec, PnDevice, PnModule, PrmError, UserPrm};
+use crate::gsdc_support::{DpDevice, Numbering, PkwCodec, PnDevice, PrmError, UserPrm};
 
 /// One description's card.
 #[derive(Clone, Copy, Debug)]
@@ -19,51 +18,37 @@ pub struct Card {
     /// The description's fingerprint; the GSD and GSDML built from the same
     /// description carry it in their headers.
     pub fingerprint: &'static str,
-    /// The PKW channel's codec (`PkwCodec::None` without one).
-    pub pkw: PkwCodec,
-    /// Whether PZD1 from the master is the control word, and PZD1 to the
-    /// master the status word.
-    pub control_word: bool,
-    pub status_word: bool,
-    /// What the PZD words from the master carry: a mapping's `number` is
-    /// its PZD word, its value a drive parameter's address.
-    pub pzd_out: &'static [Mapping],
-    /// What the PZD words to the master carry.
-    pub pzd_in: &'static [Mapping],
     /// The layout's `DP_DEVICE`, for a description with PROFIBUS.
     pub dp: Option<&'static DpDevice>,
-    /// The device-related diagnosis block of a drive's card.
-    pub diagnosis: Option<Diagnosis>,
-    /// A gateway's nodes and diagnosis.
+    /// A gateway's codecs.
     pub gateway: Option<Gateway>,
     /// The layout's `PN_DEVICE`, for a description with PROFINET.
     pub pn: Option<&'static PnDevice>,
-    /// Each PROFINET module's telegram, by its ident: the PKW channel or
-    /// not, and its PZD words. `PnModule` does not carry it (by length alone
-    /// MD810's "PKW + 2 PZD" and "6 PZD", 12 bytes each, are one), so
-    /// build.rs takes it from the plan the layout is written from, beside
-    /// the layout's ident constant; when the table carries it, this goes.
-    pub pn_shapes: &'static [(u32, Shape)],
+    /// The layout's `NUMBERING`, when the description numbers the drive's
+    /// parameters.
+    pub numbering: Option<&'static Numbering>,
 }
 
 impl Card {
-    /// The telegram of the PROFINET module `module`.
-    pub fn pn_shape(&self, module: &PnModule) -> Option<Shape> {
-        let (_, shape) = self
-            .pn_shapes
-            .iter()
-            .find(|(ident, _)| *ident == module.ident)?;
-        Some(*shape)
+    /// The PKW channel's codec (`PkwCodec::None` without one): both tables
+    /// carry the description's one telegram.
+    pub fn pkw(&self) -> PkwCodec {
+        match (self.dp, self.pn) {
+            (Some(dp), _) => dp.pkw,
+            (None, Some(pn)) => pn.pkw,
+            (None, None) => PkwCodec::None,
+        }
     }
-}
 
-/// The device-related diagnosis block: empty, and the area that carries
-/// the drive's code (the first `Unit_Diag_Area` of the GSD).
-#[derive(Clone, Copy, Debug)]
-pub struct Diagnosis {
-    /// The block with every area 0, the header first.
-    pub empty: &'static [u8],
-    pub code: DiagArea,
+    /// Whether PZD1 from the master is the control word, and PZD1 to the
+    /// master the status word.
+    pub fn control_and_status_words(&self) -> (bool, bool) {
+        match (self.dp, self.pn) {
+            (Some(dp), _) => (dp.control_word, dp.status_word),
+            (None, Some(pn)) => (pn.control_word, pn.status_word),
+            (None, None) => (false, false),
+        }
+    }
 }
 
 /// What a gateway's slave needs of the layout beyond `DP_DEVICE`.
@@ -245,19 +230,9 @@ impl PrmValues {
         Ok(values)
     }
 
-    /// The values of PROFINET parameter records, each with its entry's
-    /// name (the mapping's, as `mapped` finds it); at most
-    /// [`MAX_PRM_VALUES`].
-    pub fn from_entries(entries: impl IntoIterator<Item = (&'static str, u16)>) -> Self {
-        let mut values = PrmValues {
-            values: [("", 0); MAX_PRM_VALUES],
-            len: 0,
-        };
-        for (slot, entry) in values.values.iter_mut().zip(entries) {
-            *slot = entry;
-            values.len += 1;
-        }
-        values
+    /// The value of the parameter at `place` of User_Prm_Data's parameters.
+    pub fn at(&self, place: usize) -> Option<u16> {
+        self.values[..self.len].get(place).map(|&(_, v)| v)
     }
 
     /// Every parameter's name and value, in User_Prm_Data's order.
@@ -268,11 +243,5 @@ impl PrmValues {
     /// The value of the parameter the GSD names `name`.
     pub fn get(&self, name: &str) -> Option<u16> {
         self.iter().find(|&(n, _)| n == name).map(|(_, v)| v)
-    }
-
-    /// The value of the mapping of PZD word `word` among `mappings`.
-    pub fn mapped(&self, mappings: &[Mapping], word: usize) -> Option<u16> {
-        let mapping = mappings.iter().find(|m| usize::from(m.number) == word)?;
-        self.get(mapping.name)
     }
 }

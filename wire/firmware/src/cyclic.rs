@@ -1,11 +1,11 @@
 //! The card's part of one cyclic exchange, on any bus: the telegram from
 //! the master goes to the drive (the PKW request answered, each PZD word
-//! written where its mapping says), and the telegram to the master comes
-//! from the drive.
+//! written where the parameters the master set map it), and the telegram to
+//! the master comes from the drive.
 
 use crate::card::{Card, PrmValues};
 use crate::drive::Drive;
-use crate::gsdc_support::{put_words, words, PKW_BYTES};
+use crate::gsdc_support::{put_words, words, DpDevice, PnDevice, PnModule, PKW_BYTES};
 
 /// What a module's telegram holds, each way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,53 +16,129 @@ pub struct Shape {
     pub pzd_words: usize,
 }
 
+impl Shape {
+    /// The telegram of a PROFINET module, as its table gives it.
+    pub fn of_pn(module: &PnModule) -> Self {
+        Shape {
+            pkw: module.pkw,
+            pzd_words: module.pzd_words,
+        }
+    }
+}
+
+/// The most PZD words a telegram has here.
+pub const MAX_PZD: usize = 32;
+
+/// The drive parameters the PZD words carry as the master set them: the
+/// address of PZD word `n` at `n - 1`, each way.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PzdTargets {
+    from_master: [Option<u16>; MAX_PZD],
+    to_master: [Option<u16>; MAX_PZD],
+}
+
+impl PzdTargets {
+    pub const NONE: Self = PzdTargets {
+        from_master: [None; MAX_PZD],
+        to_master: [None; MAX_PZD],
+    };
+
+    /// Set_Prm's: each PZD word `DP_DEVICE` maps to a parameter of
+    /// User_Prm_Data carries the drive parameter that parameter holds.
+    pub fn of_user_prm(dp: &DpDevice, prm: &PrmValues) -> Self {
+        let mut targets = Self::NONE;
+        for p in dp.pzd_out {
+            targets.set_from_master(p.word, prm.at(p.param));
+        }
+        for p in dp.pzd_in {
+            targets.set_to_master(p.word, prm.at(p.param));
+        }
+        targets
+    }
+
+    /// The records': each PZD word `PN_DEVICE` maps to an entry of a record
+    /// carries the value `entry(record index, place)` gives it.
+    pub fn of_records(pn: &PnDevice, entry: impl Fn(u16, usize) -> Option<u16>) -> Self {
+        let mut targets = Self::NONE;
+        for p in pn.pzd_out {
+            targets.set_from_master(p.word, entry(p.record, p.entry));
+        }
+        for p in pn.pzd_in {
+            targets.set_to_master(p.word, entry(p.record, p.entry));
+        }
+        targets
+    }
+
+    fn set_from_master(&mut self, word: u8, address: Option<u16>) {
+        if let Some(slot) = usize::from(word)
+            .checked_sub(1)
+            .and_then(|i| self.from_master.get_mut(i))
+        {
+            *slot = address;
+        }
+    }
+
+    fn set_to_master(&mut self, word: u8, address: Option<u16>) {
+        if let Some(slot) = usize::from(word)
+            .checked_sub(1)
+            .and_then(|i| self.to_master.get_mut(i))
+        {
+            *slot = address;
+        }
+    }
+
+    /// The parameter PZD word `word` from the master is written to.
+    fn written(&self, word: usize) -> Option<u16> {
+        *self.from_master.get(word.checked_sub(1)?)?
+    }
+
+    /// The parameter PZD word `word` to the master is read from.
+    fn read(&self, word: usize) -> Option<u16> {
+        *self.to_master.get(word.checked_sub(1)?)?
+    }
+}
+
 /// Takes the master's telegram `from_master` and writes the card's answer
-/// to `to_master`; both are the module's length. `prm` holds the mappings
+/// to `to_master`; both are the module's length. `pzds` holds the mappings
 /// the master set.
 pub fn exchange(
     card: &Card,
     shape: Shape,
-    prm: &PrmValues,
+    pzds: &PzdTargets,
     drive: &mut Drive,
     from_master: &[u8],
     to_master: &mut [u8],
 ) {
     let pzd_at = if shape.pkw { PKW_BYTES } else { 0 };
     if shape.pkw {
-        let answer = crate::pkw::answer(card.pkw, drive, &words(&from_master[..PKW_BYTES]));
+        let answer = crate::pkw::answer(card.pkw(), drive, &words(&from_master[..PKW_BYTES]));
         put_words(&mut to_master[..PKW_BYTES], &answer);
     }
+    let (control_word, status_word) = card.control_and_status_words();
     for word in 1..=shape.pzd_words {
         let at = pzd_at + 2 * (word - 1);
         let value = u16::from_be_bytes([from_master[at], from_master[at + 1]]);
-        if let Some(address) = target(card, prm, drive, word) {
+        let target = if word == 1 && control_word {
+            drive.control_word()
+        } else {
+            pzds.written(word)
+        };
+        if let Some(address) = target {
             // A cyclic word has no answer: a write the drive refuses is
             // dropped, as the drive drops it.
             let _ = drive.write(address, value);
         }
         let answer = match drive.model.status_of {
-            Some(status_of) if word == 1 && card.status_word => status_of.answer(value),
-            _ => source(card, prm, drive, word).map_or(0, |a| drive.read(a).unwrap_or(0)),
+            Some(status_of) if word == 1 && status_word => status_of.answer(value),
+            _ if word == 1 && status_word => drive.status_word().map_or(0, |a| read(drive, a)),
+            _ => pzds.read(word).map_or(0, |a| read(drive, a)),
         };
         to_master[at..at + 2].copy_from_slice(&answer.to_be_bytes());
     }
 }
 
-/// The drive parameter PZD word `word` from the master goes to: the
-/// control word's, or the one its mapping names.
-fn target(card: &Card, prm: &PrmValues, drive: &Drive, word: usize) -> Option<u16> {
-    if word == 1 && card.control_word {
-        drive.model.control_word
-    } else {
-        prm.mapped(card.pzd_out, word)
-    }
-}
-
-/// The drive parameter PZD word `word` to the master comes from.
-fn source(card: &Card, prm: &PrmValues, drive: &Drive, word: usize) -> Option<u16> {
-    if word == 1 && card.status_word {
-        drive.model.status_word
-    } else {
-        prm.mapped(card.pzd_in, word)
-    }
+/// What a PZD word to the master carries of the parameter at `address`: 0
+/// when the drive refuses the read.
+fn read(drive: &Drive, address: u16) -> u16 {
+    drive.read(address).unwrap_or(0)
 }

@@ -4,6 +4,8 @@
 //! parameters its manual gives values for ([`crate::manuals`]); an address
 //! it does not hold is refused, as the drive refuses it.
 
+use crate::gsdc_support::Numbering;
+
 /// What the drive lets the card do with a parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Access {
@@ -12,19 +14,43 @@ pub enum Access {
     WriteOnly,
 }
 
-/// One parameter of the drive, as its manual names it.
+/// One parameter of a drive model, as its manual names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Parameter {
-    /// As the manual writes it: `F0-08`, `1000H`.
+pub struct Named {
+    /// As the manual writes it: `F0-08` (read by the layout's numbering into
+    /// the address the telegrams carry), or `1000H` (a Modbus address as
+    /// the manual writes one, in hex).
     pub name: &'static str,
-    /// The address the card's telegrams carry.
-    pub address: u16,
     /// The value the drive starts with.
     pub value: u16,
     pub access: Access,
-    /// Where the manual gives the address and the value; a value no manual
+    /// Where the manual gives the name and the value; a value no manual
     /// gives says so.
     pub source: &'static str,
+}
+
+/// One parameter of the drive, at the address its name reads to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Parameter {
+    pub name: &'static str,
+    /// The address the card's telegrams carry.
+    pub address: u16,
+    /// Its current value.
+    pub value: u16,
+    pub access: Access,
+}
+
+/// The address of the parameter the manual names `name`: by the layout's
+/// numbering, or a Modbus address written `1000H`.
+pub fn address_of(name: &str, numbering: Option<&Numbering>) -> Option<u16> {
+    if let Some(address) = numbering.and_then(|n| n.address(name)) {
+        return Some(address);
+    }
+    let hex = name.strip_suffix('H')?;
+    if hex.len() != 4 {
+        return None;
+    }
+    u16::from_str_radix(hex, 16).ok()
 }
 
 /// Why the drive refuses a read or a write.
@@ -45,14 +71,14 @@ pub struct Model {
     pub manual: &'static str,
     /// The parameters with the values the drive starts with, at most
     /// [`CAPACITY`].
-    pub parameters: &'static [Parameter],
+    pub parameters: &'static [Named],
     /// The parameter that holds the drive's fault code, when the manual
     /// names one (PI9000: 8000H).
-    pub fault_parameter: Option<u16>,
+    pub fault_parameter: Option<&'static str>,
     /// The parameters the telegram's control word goes to and its status
     /// word comes from, when the telegram has them (PI9000: 2000H, 3000H).
-    pub control_word: Option<u16>,
-    pub status_word: Option<u16>,
+    pub control_word: Option<&'static str>,
+    pub status_word: Option<&'static str>,
     /// How the drive answers its control word in its status word, for a
     /// drive whose control and status words are no parameters of its own
     /// (MV810).
@@ -110,14 +136,29 @@ pub struct Drive {
 }
 
 impl Drive {
-    /// The drive as it starts: the model's values, no fault.
-    pub const fn new(model: &'static Model) -> Self {
+    /// The drive as it starts: the model's values, no fault, each parameter
+    /// at the address `numbering` (the layout's) reads its name to.
+    ///
+    /// # Panics
+    ///
+    /// When the model names a parameter the numbering cannot read: the
+    /// model and the description disagree.
+    pub fn new(model: &'static Model, numbering: Option<&Numbering>) -> Self {
         assert!(model.parameters.len() <= CAPACITY);
         let mut parameters = [None; CAPACITY];
-        let mut i = 0;
-        while i < model.parameters.len() {
-            parameters[i] = Some(model.parameters[i]);
-            i += 1;
+        for (held, named) in parameters.iter_mut().zip(model.parameters) {
+            let address = address_of(named.name, numbering).unwrap_or_else(|| {
+                panic!(
+                    "{}: {} is no name of the layout's numbering",
+                    model.manual, named.name
+                )
+            });
+            *held = Some(Parameter {
+                name: named.name,
+                address,
+                value: named.value,
+                access: named.access,
+            });
         }
         Drive {
             model,
@@ -135,6 +176,16 @@ impl Drive {
     /// The parameter the manual names `name`, with its current value.
     pub fn named(&self, name: &str) -> Option<&Parameter> {
         self.parameters().find(|p| p.name == name)
+    }
+
+    /// The addresses of the parameters the control word goes to and the
+    /// status word comes from, when the model has them.
+    pub fn control_word(&self) -> Option<u16> {
+        Some(self.named(self.model.control_word?)?.address)
+    }
+
+    pub fn status_word(&self) -> Option<u16> {
+        Some(self.named(self.model.status_word?)?.address)
     }
 
     /// Every parameter, in the order of the model.
@@ -174,10 +225,7 @@ impl Drive {
         self.fault = code;
         let fault_parameter = self.model.fault_parameter;
         let held = self.parameters.iter_mut().flatten();
-        if let Some(parameter) = held
-            .into_iter()
-            .find(|p| Some(p.address) == fault_parameter)
-        {
+        if let Some(parameter) = held.into_iter().find(|p| Some(p.name) == fault_parameter) {
             parameter.value = code;
         }
     }

@@ -6,7 +6,14 @@
 //! description without a drive here (a fixture, a card of your own) gets
 //! [`WITHOUT_MANUAL`], a drive that holds no parameter.
 
-use crate::drive::{Access, Model, Parameter, StatusAnswer};
+use crate::card::Card;
+use crate::drive::{Access, Drive, Model, Named, StatusAnswer};
+
+/// The drive behind `card`, as it starts: its description's model, each
+/// parameter at the address the card's layout numbers it.
+pub fn drive(card: &Card) -> Drive {
+    Drive::new(for_description(card.name), card.numbering)
+}
 
 /// The drive behind the card the description `name` describes (its file
 /// name without `.toml`).
@@ -36,9 +43,8 @@ pub const WITHOUT_MANUAL: Model = Model {
 /// shared/seeds/003, chapter 1).
 pub const MD810: Model = Model {
     manual: "MD810 manual, chapter 1",
-    parameters: &[Parameter {
+    parameters: &[Named {
         name: "F0-08",
-        address: 0xF008,
         value: 5000,
         access: Access::ReadWrite,
         source: "1.4.2, figure 6: the master reads F0-08 (PKE low byte F0, IND high byte 08) \
@@ -58,92 +64,84 @@ pub const MD810: Model = Model {
 
 /// Powtran PI9000, behind the 9KDP1 card (descriptions/9kdp1.toml;
 /// shared/seeds/002, appendix I). The card reaches the drive through its
-/// Modbus map, so the addresses are Modbus addresses.
+/// Modbus map, so the addresses are Modbus addresses: F0.02 by the
+/// layout's numbering, 1000H as the manual writes the others.
 pub const PI9000: Model = Model {
     manual: "PI9000 manual, appendix I",
     parameters: &[
-        Parameter {
+        Named {
             name: "F0.02",
-            address: 0xF002,
             value: 0x0000,
             access: Access::ReadWrite,
             source: "I-1, command 03H: reading two words from F0.02 answers \
                      F002H = 0000H and F003H = 0001H",
         },
-        Parameter {
+        Named {
             name: "F0.03",
-            address: 0xF003,
             value: 0x0001,
             access: Access::ReadWrite,
             source: "I-1, command 03H (as F0.02)",
         },
-        Parameter {
+        Named {
             name: "1000H",
-            address: 0x1000,
             value: 0,
             access: Access::ReadWrite,
             source: "I-3: communication set value, -10000 to 10000 for -100.00 % to \
                      100.00 %; the value 0 the drive starts with is this model's own",
         },
-        Parameter {
+        Named {
             name: "2000H",
-            address: 0x2000,
             value: 0,
             access: Access::WriteOnly,
             source: "I-3: command word, write only (0001 forward run ... 0007 fault reset); \
                      0, no command yet, is this model's own",
         },
-        Parameter {
+        Named {
             name: "3000H",
-            address: 0x3000,
             value: 0x0003,
             access: Access::ReadOnly,
             source: "I-3: status word, read only (0001 forward run, 0002 reverse run, \
                      0003 stop); that the drive starts stopped is this model's own",
         },
-        Parameter {
+        Named {
             name: "8000H",
-            address: 0x8000,
             value: 0x0000,
             access: Access::ReadOnly,
             source: "I-3: inverter fault address, 0000 no fault",
         },
     ],
-    fault_parameter: Some(0x8000),
+    fault_parameter: Some("8000H"),
     // The card's PZD1 each way (9kdp1.toml, the description's own telegram).
-    control_word: Some(0x2000),
-    status_word: Some(0x3000),
+    control_word: Some("2000H"),
+    status_word: Some("3000H"),
     status_of: None,
     link_lost_code: None,
 };
 
 /// Megmeet MV810 behind the MV810-PNET02 card (descriptions/mv810-pnet02.toml;
 /// shared/seeds/000). The manual gives the parameters' meanings but no
-/// address (the description assumes group = high byte, index = low byte,
-/// P43.02 = 0x2B02, and the layout's mappings carry those addresses) and no
-/// factory value.
+/// address (the description's numbering assumes group = high byte, index =
+/// low byte, and the layout's NUMBERING reads the names so) and no factory
+/// value.
 pub const MV810: Model = Model {
     manual: "MV800 PROFINET option manual (R33011095)",
     parameters: &[
-        Parameter {
+        Named {
             name: "P43.01",
-            address: 0x2B01,
             value: 1,
             access: Access::ReadWrite,
             source: "4: P43.01 = 1 (0 is the standard message 1, 1 the user-defined message), \
                      the value every example of 4 sets",
         },
-        Parameter {
+        Named {
             name: "P43.02",
-            address: 0x2B02,
             value: 0,
             access: Access::ReadWrite,
             source: "3: PZD2 receive, 0 to 14 (0 disabled); the manual gives no factory \
                      value: 0 is the description's default (mappings.pzd_out)",
         },
-        Parameter {
+        Named {
             name: "P43.13",
-            address: 0x2B0D,
             value: 0,
             access: Access::ReadWrite,
             source: "3: PZD2 send, 0 to 25 (0 disabled); the manual gives no factory \

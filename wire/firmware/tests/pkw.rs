@@ -16,7 +16,7 @@ fn pkw(hex: &str) -> [U16Be; 4] {
 }
 
 fn md810() -> Drive {
-    Drive::new(manuals::for_description("md810dp"))
+    manuals::drive(wire_firmware::card("md810dp").unwrap())
 }
 
 /// MD810 manual 1.4.2, figure 6: read F0-08, answered 50.00 Hz.
@@ -66,7 +66,7 @@ fn no_request_no_response() {
 /// error 0, impermissible PNU (the drive without a manual holds none).
 #[test]
 fn profidrive_refuses_an_unknown_pnu() {
-    let mut drive = Drive::new(manuals::for_description("profidrive"));
+    let mut drive = manuals::drive(wire_firmware::card("profidrive").unwrap());
     // Request 1 (read) of PNU 0x3E8 = 1000, subindex 0: this test's own.
     let answered = answer(
         PkwCodec::Profidrive,
@@ -81,7 +81,7 @@ fn profidrive_refuses_an_unknown_pnu() {
 /// drive, whatever the drive's fault.
 #[test]
 fn the_diagnosis_reports_the_drive() {
-    let mut pi9000 = Drive::new(manuals::for_description("9kdp1"));
+    let mut pi9000 = manuals::drive(wire_firmware::card("9kdp1").unwrap());
     assert_eq!(pi9000.diagnosis_code(), 0);
     pi9000.set_fault(0x0B); // I-3: 000B, Motor Overload
     assert_eq!(
@@ -108,7 +108,7 @@ mod mv810 {
     use wire_firmware::pkw::{answer, STATION_COMMAND_REFUSED};
 
     fn mv810() -> Drive {
-        Drive::new(manuals::for_description("mv810-pnet02"))
+        manuals::drive(wire_firmware::card("mv810-pnet02").unwrap())
     }
 
     #[test]

@@ -492,6 +492,24 @@ def observe_inputs(cyclic, slot: int, subs: list[Submodule]) -> int:
     return count
 
 
+def identify(args) -> None:
+    """DCP Identify by the GSDML's name of station (its DNS_CompatibleName),
+    and the identity the device answers with checked against the GSDML: what
+    an engineering tool does first with a soft card."""
+    gsdml = Gsdml(args.gsdml)
+    station = gsdml.root.find(".//{*}DeviceAccessPointItem").get("DNS_CompatibleName")
+    sock = ethernet_socket(args.iface)
+    try:
+        info = get_station_info(sock, get_mac(args.iface), station, timeout_sec=3)
+    except profinet.exceptions.ProfinetError as e:
+        raise Failed(f"DCP: no device {station!r} answered on {args.iface}: {e}") from e
+    finally:
+        sock.close()
+    check_identity(gsdml, info)
+    say(f"DCP identify: {info.name} at {info.ip}, vendor 0x{info.vendor_high:02X}{info.vendor_low:02X}"
+        f" device 0x{info.device_high:02X}{info.device_low:02X}, as the GSDML says")
+
+
 def run(args) -> None:
     gsdml = Gsdml(args.gsdml)
     subs = gsdml.submodules(args.module)
@@ -572,6 +590,8 @@ def main() -> int:
     parser.add_argument("--gsdml", required=True, type=Path)
     parser.add_argument("--list-modules", action="store_true",
                         help="print each ModuleItem ID with its first allowed slot, and the station name")
+    parser.add_argument("--identify", action="store_true",
+                        help="only DCP Identify the device by the GSDML's name of station, and check its identity")
     parser.add_argument("--iface")
     parser.add_argument("--station")
     parser.add_argument("--module", help="the GSDML's ModuleItem ID")
@@ -583,6 +603,15 @@ def main() -> int:
     args = parser.parse_args()
     if args.list_modules:
         return list_modules(args.gsdml)
+    if args.identify:
+        if args.iface is None:
+            parser.error("--iface is required")
+        try:
+            identify(args)
+        except Failed as e:
+            say(f"FAIL identify: {e}")
+            return 1
+        return 0
     for needed in ("iface", "station", "module", "device_events"):
         if getattr(args, needed) is None:
             parser.error(f"--{needed.replace('_', '-')} is required")

@@ -4,8 +4,8 @@
 //! plugged module's data.
 
 use pnio::rt::IoImage;
-use wire_firmware::card::{Card, PrmValues};
-use wire_firmware::cyclic::exchange;
+use wire_firmware::card::Card;
+use wire_firmware::cyclic::{exchange, PzdTargets, Shape};
 use wire_firmware::drive::Drive;
 use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
 
@@ -38,7 +38,7 @@ impl Application {
             .collect();
         Application {
             card,
-            drive: Drive::new(wire_firmware::manuals::for_description(card.name)),
+            drive: wire_firmware::manuals::drive(card),
             plugged: plugged.to_vec(),
             records,
         }
@@ -89,12 +89,15 @@ impl Application {
     /// One cycle over every plugged module's data. Before the AR reaches
     /// data exchange there is nothing to read, and nothing happens.
     pub fn cycle(&mut self, image: &IoImage) {
-        let prm = PrmValues::from_entries(
-            self.records
-                .iter()
-                .flat_map(|(_, decoded)| decoded)
-                .map(|&(entry, value)| (entry.name, value)),
-        );
+        let Some(pn) = self.card.pn else {
+            return;
+        };
+        // The values of the plugged module's records (the one module of a
+        // drive's card), as PN_DEVICE maps them to PZD words.
+        let pzds = PzdTargets::of_records(pn, |index, entry| {
+            let (_, decoded) = self.records.iter().find(|(r, _)| r.index == index)?;
+            decoded.get(entry).map(|&(_, value)| value)
+        });
         for (slot, module) in &self.plugged {
             let data = module.data;
             if data.output_len == 0 {
@@ -105,13 +108,10 @@ impl Application {
                 continue;
             };
             let mut to_controller = vec![0u8; data.input_len];
-            let Some(shape) = self.card.pn_shape(module) else {
-                continue;
-            };
             exchange(
                 self.card,
-                shape,
-                &prm,
+                Shape::of_pn(module),
+                &pzds,
                 &mut self.drive,
                 &from_controller,
                 &mut to_controller,

@@ -112,6 +112,18 @@ impl Events {
         ));
     }
 
+    /// The device stopped: at the end of `--seconds` (`signal` 0) or on a
+    /// signal.
+    pub fn stopped(&self, signal: i32) {
+        let why = match signal {
+            0 => "deadline".to_string(),
+            libc::SIGINT => "SIGINT".to_string(),
+            libc::SIGTERM => "SIGTERM".to_string(),
+            other => format!("signal {other}"),
+        };
+        self.emit(format!(r#"{{"event":"stopped","by":"{why}"}}"#));
+    }
+
     pub fn merged_apis(&self) {
         self.emit(r#"{"event":"merged-apis"}"#.to_string());
     }

@@ -5,10 +5,13 @@
 //! layout's decoders, and runs the drive model on the cyclic data.
 //!
 //!     pn-device --card mv810-pnet02 --iface pn0 --ip 192.0.2.2 \
-//!               --station mv810-pnet02 --plug "1=PKW + 12 PZD" [--seconds 60]
+//!               --plug "1=PKW + 12 PZD" [--station NAME] [--seconds 60]
 //!
-//! Every event goes to stdout as one JSON object a line, for the controller
-//! side of the wire test (and a person) to read.
+//! Its name of station is the layout's (`PN_DEVICE.dns_name`, the GSDML's
+//! DNS_CompatibleName) unless `--station` gives another. Every event goes to
+//! stdout as one JSON object a line, for the controller side of the wire
+//! test (and a person) to read. Without `--seconds` it runs until SIGINT
+//! (Ctrl-C) or SIGTERM, then stops its device loop, says so and exits 0.
 
 mod connect;
 mod drive;
@@ -25,7 +28,7 @@ use pnio::im::Im0;
 use pnio::rpc::{UdpRpcTransport, Uuid, PNIO_UDP_PORT};
 use std::net::{Ipv4Addr, SocketAddr};
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
 use tap::{Seen, Tap};
@@ -36,14 +39,14 @@ struct Args {
     card: String,
     iface: String,
     ip: Ipv4Addr,
-    station: String,
+    station: Option<String>,
     plug: Vec<(u16, String)>,
     mismatch: Option<Mismatch>,
     seconds: Option<u64>,
 }
 
-const USAGE: &str = "usage: pn-device --card NAME --iface IF --ip A.B.C.D --station NAME \
---plug SLOT=MODULE... [--mismatch module-ident|input-length|api] [--seconds N]";
+const USAGE: &str = "usage: pn-device --card NAME --iface IF --ip A.B.C.D --plug SLOT=MODULE... \
+[--station NAME] [--mismatch module-ident|input-length|api] [--seconds N]";
 
 fn parse_args() -> Result<Args, String> {
     let mut args = std::env::args().skip(1);
@@ -80,7 +83,7 @@ fn parse_args() -> Result<Args, String> {
         card: need(card, "--card")?,
         iface: need(iface, "--iface")?,
         ip: need(ip, "--ip")?,
-        station: need(station, "--station")?,
+        station,
         plug,
         mismatch,
         seconds,
@@ -124,12 +127,13 @@ fn run(args: &Args) -> Result<(), String> {
     let plugged = plugged_modules(card, device, &args.plug)?;
     let mac = mac_of(&args.iface)?;
     let events = Events::stdout();
+    let station = args.station.as_deref().unwrap_or(device.dns_name);
 
-    let model = device_model(device, &args.station, mac, &plugged, args.mismatch);
+    let model = device_model(device, station, mac, &plugged, args.mismatch);
     let setup = DeviceSetup {
         dcp: DcpConfig {
             mac,
-            properties: dcp_identity(card, device, &args.station, args.ip.octets()),
+            properties: dcp_identity(card, device, station, args.ip.octets()),
         },
         model,
         activity_seed: activity_seed(mac),
@@ -159,18 +163,22 @@ fn run(args: &Args) -> Result<(), String> {
         device.on_state_change(move |state, why| events.ar_state(state, why));
     }
     let image = device.image();
+    stop_on_signals();
     let stop = Arc::new(AtomicBool::new(false));
     let acyclic = {
         let stop = stop.clone();
         std::thread::spawn(move || device.run(&stop))
     };
-    events.listening(&args.card, &args.station, mac, args.ip, &plugged);
+    events.listening(&args.card, station, mac, args.ip, &plugged);
 
     let deadline = args
         .seconds
         .map(|s| Instant::now() + Duration::from_secs(s));
     let mut application = drive::Application::new(card, &plugged);
-    while deadline.is_none_or(|d| Instant::now() < d) && !acyclic.is_finished() {
+    while deadline.is_none_or(|d| Instant::now() < d)
+        && !acyclic.is_finished()
+        && SIGNALLED.load(Ordering::Relaxed) == 0
+    {
         while let Ok(seen) = seen.try_recv() {
             report(&events, &mut application, seen);
         }
@@ -178,10 +186,36 @@ fn run(args: &Args) -> Result<(), String> {
         std::thread::sleep(Duration::from_millis(1));
     }
     stop.store(true, Ordering::Relaxed);
-    match acyclic.join() {
+    let result = match acyclic.join() {
         Ok(Ok(())) => Ok(()),
         Ok(Err(e)) => Err(format!("device loop: {e}")),
         Err(_) => Err("device loop panicked".into()),
+    };
+    if result.is_ok() {
+        events.stopped(SIGNALLED.load(Ordering::Relaxed));
+    }
+    result
+}
+
+/// The signal that asked the device to stop (SIGINT, SIGTERM), 0 until one
+/// does.
+static SIGNALLED: AtomicI32 = AtomicI32::new(0);
+
+extern "C" fn on_signal(signal: libc::c_int) {
+    // Only an atomic store: all a signal handler may safely do.
+    SIGNALLED.store(signal, Ordering::Relaxed);
+}
+
+/// SIGINT (Ctrl-C) and SIGTERM stop the device as the end of `--seconds`
+/// does: the main loop sees the signal, stops the device loop and returns.
+fn stop_on_signals() {
+    let handler = on_signal as extern "C" fn(libc::c_int) as libc::sighandler_t;
+    for signal in [libc::SIGINT, libc::SIGTERM] {
+        // SAFETY: the handler only stores to an atomic, which is
+        // async-signal-safe, and lives as long as the process.
+        unsafe {
+            libc::signal(signal, handler);
+        }
     }
 }
 
