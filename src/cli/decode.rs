@@ -4,7 +4,7 @@
 use super::{load_description, say, warn, Status};
 use crate::decode::{
     self, Carried, Channel, DecodedWord, DiagnosisBlock, GatewayData, GatewayDiagnosis, Hex,
-    MappingInForce, NodeTotals, Pkw, PkwSide, Prm, Telegram, ValueSource,
+    MappingInForce, NodeTotals, Pkw, PkwSide, Prm, Telegram, Unread, ValueSource,
 };
 use crate::ir::{Direction, Ir};
 use crate::{Diagnostic, Source};
@@ -486,7 +486,7 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
         render_gateway_diagnosis(&mut out, g);
         return out;
     }
-    let rows = d.areas.iter().map(|a| {
+    let areas = d.areas.iter().map(|a| {
         // GSD counts Unit_Diag_Area bits from the byte after the header.
         let first_byte = 1 + a.first_bit / 8;
         let last_byte = 1 + a.last_bit / 8;
@@ -495,7 +495,7 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
         } else {
             format!("{first_byte}-{last_byte}")
         };
-        vec![
+        let row = vec![
             format!("{}-{}", a.first_bit, a.last_bit),
             bytes,
             format!("{:X}", a.value),
@@ -503,8 +503,13 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
             a.text
                 .clone()
                 .unwrap_or_else(|| "not named by the description".into()),
-        ]
+        ];
+        (a.first_bit, row)
     });
+    // Areas and what no area reads, in the order of their bits.
+    let mut rows: Vec<(u16, Vec<String>)> = areas.chain(d.unread.iter().map(unread_row)).collect();
+    rows.sort_by_key(|(first_bit, _)| *first_bit);
+    let rows = rows.into_iter().map(|(_, row)| row);
     table(
         &mut out,
         &["bits", "byte", "hex", "value", "meaning"],
@@ -512,6 +517,34 @@ fn render_diagnosis(d: &DiagnosisBlock) -> String {
         rows,
     );
     out
+}
+
+/// A byte or set bit no area reads: the description's word for the byte,
+/// or the bit's Unit_Diag_Bit text, or that the description names none.
+fn unread_row(u: &Unread) -> (u16, Vec<String>) {
+    match u {
+        Unread::Byte { at, value, text } => (
+            u16::from(*at) * 8,
+            vec![
+                format!("{}-{}", u16::from(*at) * 8, u16::from(*at) * 8 + 7),
+                (1 + at).to_string(),
+                format!("{value:X}"),
+                value.to_string(),
+                format!("{text} (no Unit_Diag_Area reads it)"),
+            ],
+        ),
+        Unread::Bit { bit, text } => (
+            *bit,
+            vec![
+                bit.to_string(),
+                (1 + bit / 8).to_string(),
+                "1".into(),
+                "1".into(),
+                text.clone()
+                    .unwrap_or_else(|| format!("bit {bit} set, not named by the description")),
+            ],
+        ),
+    }
 }
 
 /// A gateway's block: the type, the node and the code, a row each.

@@ -4,7 +4,7 @@
 //! type instead (`super::gateway`).
 
 use crate::diag::Diagnostic;
-use crate::ir::profibus::Diagnosis;
+use crate::ir::profibus::{Diagnosis, STANDARD_DIAG_BYTES};
 use crate::pkw::DiagArea;
 use serde::Serialize;
 
@@ -16,6 +16,9 @@ pub struct DiagnosisBlock {
     /// The areas of a block described by `[profibus.diagnosis]`; empty for
     /// a gateway's.
     pub areas: Vec<Area>,
+    /// What no area reads: each byte the description names, whole, and
+    /// every other set bit, so nothing set is dropped.
+    pub unread: Vec<Unread>,
     /// A gateway's block: its type, node and code.
     pub gateway: Option<GatewayDiagnosis>,
 }
@@ -70,6 +73,16 @@ pub struct Area {
     pub text: Option<String>,
 }
 
+/// Device bytes no area reads, counted from the byte after the header.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Unread {
+    /// A byte the description names (`bytes`), shown whole.
+    Byte { at: u8, value: u8, text: String },
+    /// A set bit with its `Unit_Diag_Bit` text, `None` when it names none.
+    Bit { bit: u16, text: Option<String> },
+}
+
 /// Header bits 7-6: 00 is a device-related block.
 const BLOCK_TYPE_MASK: u8 = 0b1100_0000;
 /// Header bits 5-0: the block's length, the header included.
@@ -111,8 +124,43 @@ pub(super) fn decode(diagnosis: &Diagnosis, block: &[u8]) -> Result<DiagnosisBlo
         header,
         bytes: block.to_vec(),
         areas,
+        unread: unread(diagnosis, block),
         gateway: None,
     })
+}
+
+/// What no area reads, in order: a byte the description names and no
+/// area or bit text touches, whole; otherwise each set bit.
+fn unread(diagnosis: &Diagnosis, block: &[u8]) -> Vec<Unread> {
+    let read = |bit: u16| {
+        diagnosis
+            .areas
+            .iter()
+            .any(|a| (a.first_bit..=a.last_bit).contains(&bit))
+    };
+    let named_bit = |bit: u16| diagnosis.bits.iter().find(|b| b.bit == bit);
+    let device_bytes = block.get(1..).unwrap_or_default();
+    let mut out = Vec::new();
+    for (at, &value) in (0u8..).zip(device_bytes) {
+        let bits = (0..8).map(|i| u16::from(at) * 8 + i);
+        let untouched = bits.clone().all(|b| !read(b) && named_bit(b).is_none());
+        let named = diagnosis.byte(STANDARD_DIAG_BYTES + 1 + at);
+        match named {
+            Some(text) if untouched => out.push(Unread::Byte {
+                at,
+                value,
+                text: text.en.clone(),
+            }),
+            _ => out.extend(
+                bits.filter(|&b| value & (1 << (b % 8)) != 0 && !read(b))
+                    .map(|bit| Unread::Bit {
+                        bit,
+                        text: named_bit(bit).map(|b| b.text.en.clone()),
+                    }),
+            ),
+        }
+    }
+    out
 }
 
 /// E417 (without a place) unless `header` is a device-related block's of

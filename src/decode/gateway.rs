@@ -211,6 +211,7 @@ pub(super) fn diagnosis(
         header,
         bytes: block.to_vec(),
         areas: Vec::new(),
+        unread: Vec::new(),
         gateway: Some(gateway),
     })
 }

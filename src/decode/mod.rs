@@ -21,7 +21,7 @@ mod prm;
 mod profidrive;
 mod telegram;
 
-pub use diagnosis::{DiagnosisBlock, GatewayDiagnosis};
+pub use diagnosis::{DiagnosisBlock, GatewayDiagnosis, Unread};
 pub use hex::Hex;
 pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, Module};

@@ -1,6 +1,6 @@
 //! The manuals' telegrams, decoded against the shipped descriptions.
 
-use super::diagnosis::Area;
+use super::diagnosis::{Area, Unread};
 use super::pkw_channel::{Parameter, PkwError, Stations};
 use super::*;
 use crate::ir::Direction::{In, Out};
@@ -475,6 +475,47 @@ fn md810_diagnosis_card_lost_the_drive() {
     assert_eq!(
         (block.areas[0].value, block.areas[0].text.as_deref()),
         (0x35, None)
+    );
+}
+
+/// MD810 §1.8: byte 7, the high byte of the fault code (U0-62), is in no
+/// Unit_Diag_Area; it is shown whole, by the description's word for it,
+/// not dropped.
+#[test]
+fn md810_diagnosis_shows_the_high_byte_no_area_reads() {
+    let block = diagnosis(&md810(), &Hex::parse("03 12 34").unwrap()).unwrap();
+    assert_eq!(block.areas[0].value, 0x34);
+    assert_eq!(
+        block.unread,
+        [Unread::Byte {
+            at: 0,
+            value: 0x12,
+            text: "Device-related diagnosis, high byte".into()
+        }]
+    );
+}
+
+/// A set bit no area reads is shown with its Unit_Diag_Bit text, or as not
+/// named: bit 0 and 9 have texts in the fixture, bit 23 none; bit 8 is
+/// clear and not shown.
+#[test]
+fn diagnosis_bits_outside_areas_are_each_shown_when_set() {
+    let ir = load(
+        "vendor_dp.toml",
+        include_str!("../../tests/fixtures/valid/vendor_dp.toml"),
+    );
+    let block = diagnosis(&ir, &Hex::parse("08 01 02 80 00 00 00 00").unwrap()).unwrap();
+    let bit = |bit, text: Option<&str>| Unread::Bit {
+        bit,
+        text: text.map(Into::into),
+    };
+    assert_eq!(
+        block.unread,
+        [
+            bit(0, Some("Overcurrent")),
+            bit(9, Some("Drive not ready")),
+            bit(23, None)
+        ]
     );
 }
 
