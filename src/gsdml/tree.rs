@@ -98,8 +98,8 @@ impl<'t> Tree<'t> {
                     builder.count_node()?;
                 }
                 Event::DocType(_) => return None,
-                Event::Decl(_) if start != 0 => return None,
-                Event::Comment(_) | Event::PI(_) | Event::Decl(_) => builder.count_node()?,
+                Event::Decl(_) => is_declaration_first(&text[start..end], start)?,
+                Event::Comment(_) | Event::PI(_) => builder.count_node()?,
                 Event::Eof => break,
             }
         }
@@ -319,6 +319,21 @@ fn is_name_start(c: char) -> bool {
 fn is_name_char(c: char) -> bool {
     is_name_start(c)
         || matches!(c, '-' | '.' | '0'..='9' | '\u{B7}' | '\u{300}'..='\u{36F}' | '\u{203F}'..='\u{2040}')
+}
+
+/// The XML declaration `<?xml version="1.0" ...?>`, at `start`: only
+/// first in the document, with a version, then an encoding and
+/// `standalone` when it has them, in this order. (Their values roxmltree
+/// takes as they are, and so does this.)
+fn is_declaration_first(declaration: &str, start: usize) -> Option<()> {
+    let inner = declaration.strip_prefix("<?xml")?.strip_suffix("?>")?;
+    let mut pseudo = Vec::new();
+    raw_attributes(declaration, "<?xml".len(), inner, &mut pseudo)?;
+    let mut names = pseudo.iter().map(|(name, _)| *name).peekable();
+    let has_version = names.next() == Some("version");
+    names.next_if_eq(&"encoding");
+    names.next_if_eq(&"standalone");
+    (start == 0 && has_version && names.next().is_none()).then_some(())
 }
 
 fn is_declaration(name: &str) -> bool {
@@ -709,6 +724,18 @@ mod tests {
             ("attributes without a blank between", "<a x=\"1\"y=\"2\"/>"),
             ("-- in a comment", "<a><!-- a -- b --></a>"),
             ("a declaration not first", " <?xml version=\"1.0\"?><a/>"),
+            (
+                "a declaration without a version",
+                "<?xml ver3ion=\"1.0\"?><a/>",
+            ),
+            (
+                "a declaration out of order",
+                "<?xml encoding=\"UTF-8\" version=\"1.0\"?><a/>",
+            ),
+            (
+                "a declaration with more",
+                "<?xml version=\"1.0\" x=\"1\"?><a/>",
+            ),
             ("an attribute without a value", "<a x/>"),
             ("a control character in a name", "<a x\u{9A}y=\"1\"/>"),
             ("a name starting with a digit", "<a 1x=\"1\"/>"),
@@ -721,7 +748,7 @@ mod tests {
             ("values as XML normalizes them", "<a x=\"1\t2\r\n3\n&#10;&amp;&lt;&#x41;\" y='\"'/>"),
             ("names beyond ASCII", "<\u{E9}l\u{E9}ment attribut\u{B7}\u{300}=\"1\"/>"),
             ("namespaces in scope", "<a xmlns=\"u\" xmlns:p=\"v\"><b p:x=\"1\" xml:lang=\"de\"><c xmlns=\"\"/></b><p:d/></a>"),
-            ("comments, instructions and CDATA", "<?xml version=\"1.0\"?><!--c--><a><?p i?><![CDATA[<x>]]>t&amp;</a><!--d-->\n"),
+            ("comments, instructions and CDATA", "<?xml version=\"1.0\" encoding='iso-8859-1' standalone=\"yes\" ?><!--c--><a><?p i?><![CDATA[<x>]]>t&amp;</a><!--d-->\n"),
         ];
         for (what, text) in accepted {
             assert!(roxmltree(text).is_some(), "roxmltree refuses {what}");
@@ -777,7 +804,9 @@ mod tests {
             .step_by(step)
             .filter(|&i| text.is_char_boundary(i))
         {
-            for insert in ["<", ">", "&", "\"", "'", "=", ":", "/", " ", "\u{1}", "\u{9A}", "\u{E9}", ""] {
+            for insert in [
+                "<", ">", "&", "\"", "'", "=", ":", "/", " ", "\u{1}", "\u{9A}", "\u{E9}", "",
+            ] {
                 let next = text[at..].chars().next().map_or(at, |c| at + c.len_utf8());
                 let changed = format!("{}{insert}{}", &text[..at], &text[next..]);
                 assert_same(&changed, &format!("{name} with {insert:?} at {at}"));
