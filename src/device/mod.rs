@@ -2,7 +2,9 @@
 //! ([`PnDevice`]): a plain data model, with the place in the file of each
 //! fact. `gsdc diff` compares two of them by meaning (`crate::diff`); an
 //! import writes a description from one. Nothing here judges, compares or
-//! reads a disk: the readers take the checker's parse of a text.
+//! reads a disk: a GSD is read from the checker's parse of its text, a
+//! GSDML file from the elements `crate::gsdml::tree` finds (the checker's
+//! roxmltree tree holds more than a device needs, at twice the time).
 //!
 //! The model keeps what a file means and leaves out how it is written: text
 //! IDs are resolved to their texts in every language, references to their
