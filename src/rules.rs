@@ -211,5 +211,6 @@ pub const RULES: &[Rule] = &[
     rule("W600", "not imported: no place in the description"),
     rule("E601", "the import builds another device"),
     rule("E602", "a file gsdc cannot import"),
+    rule("W603", "the imported device symbol builds another bitmap"),
     rule("E900", "generated file breaks a rule"),
 ];

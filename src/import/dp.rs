@@ -66,7 +66,14 @@ const FIXED: &[(&str, i64)] = &[("protocol_ident", 0), ("station_type", 0), ("fm
 
 /// The description of `device`, read from `file`; `None` when the file is
 /// not a drive's (no module is a telegram of PKW and PZD words).
-pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Option<String> {
+/// `symbol` is the PNG's name the description gives as its device symbol
+/// (`Bitmap_Device`, which `super::symbol` reads and judges).
+pub(super) fn describe(
+    device: &DpDevice,
+    file: &str,
+    symbol: Option<&str>,
+    notes: &mut Notes,
+) -> Option<String> {
     let telegram = telegram(device);
     let Some(pzd_words) = telegram.pzd_words else {
         notes.refuse(
@@ -77,6 +84,8 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
     for k in &device.keywords {
         let fixed = FIXED.iter().find(|(key, _)| *key == k.key);
         let said = IMPORTED.contains(&k.key.as_str())
+            // Read by `super::symbol`, or left out there with its reason.
+            || k.key == "bitmap_device"
             || fixed.is_some_and(|(_, v)| k.value.as_number() == Some(*v));
         if !said {
             notes.unsaid(&k.name, &k.place, "the description has no key for it");
@@ -94,7 +103,7 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
         "Imported by gsdc import from {file}. Every value below is the file's,"
     ));
     out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
-    device_table(&mut out, device);
+    device_table(&mut out, device, symbol);
     out.table("telegram");
     out.string("pkw", if telegram.pkw { "pke-ind-pwe" } else { "none" });
     out.key("pzd_words", pzd_words);
@@ -194,7 +203,7 @@ fn number_of(device: &DpDevice, keyword: &str) -> Option<i64> {
     device.keyword(keyword)?.value.as_number()
 }
 
-fn device_table(out: &mut TomlOut, device: &DpDevice) {
+fn device_table(out: &mut TomlOut, device: &DpDevice, symbol: Option<&str>) {
     out.table("device");
     let model = text_of(device, "Model_Name").unwrap_or_default();
     for (key, keyword) in [
@@ -216,6 +225,9 @@ fn device_table(out: &mut TomlOut, device: &DpDevice) {
     }
     if let Some(info) = text_of(device, "Info_Text") {
         out.string("info", info);
+    }
+    if let Some(png) = symbol {
+        out.string("symbol", png);
     }
 }
 
