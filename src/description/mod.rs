@@ -402,6 +402,7 @@ pub struct Profibus {
     #[serde(default)]
     pub parameters: Vec<dp::Parameter>,
     pub dpv1: Option<Spanned<Dpv1>>,
+    pub isochronous: Option<Spanned<dp::Isochronous>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }
 
@@ -434,6 +435,7 @@ pub struct Dpv1 {
     /// Check_Cfg_Mode: true when the card checks the configuration less
     /// strictly than byte for byte.
     pub check_cfg_mode: Option<Spanned<bool>>,
+    pub alarms: Option<Spanned<dp::Alarms>>,
 }
 
 /// DPV1 class 2 (MSAC_2): GSD revision 3 keywords.

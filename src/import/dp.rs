@@ -58,6 +58,32 @@ const IMPORTED: &[&str] = &[
     "ident_maintenance_supp",
     "dpv1_data_types",
     "check_cfg_mode",
+    "diagnostic_alarm_supp",
+    "process_alarm_supp",
+    "pull_plug_alarm_supp",
+    "status_alarm_supp",
+    "update_alarm_supp",
+    "manufacturer_specific_alarm_supp",
+    "diagnostic_alarm_required",
+    "process_alarm_required",
+    "pull_plug_alarm_required",
+    "status_alarm_required",
+    "update_alarm_required",
+    "manufacturer_specific_alarm_required",
+    "alarm_type_mode_supp",
+    "extra_alarm_sap_supp",
+    "alarm_sequence_mode_count",
+    "prm_block_structure_supp",
+    "prm_block_structure_req",
+    "isochron_mode_supp",
+    "isochron_mode_required",
+    "tbase_dp",
+    "tdp_max",
+    "tdp_min",
+    "tbase_io",
+    "ti_min",
+    "to_min",
+    "t_pll_w_max",
 ];
 
 /// Keywords gsdc writes with one value only: the description need not say
@@ -287,7 +313,30 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes)
         out.key(&quote(baud.as_str()), max_tsdr.unwrap_or(0));
     }
     dpv1(out, device);
+    isochronous(out, device);
     diagnosis(out, device, notes);
+}
+
+/// `[profibus.isochronous]` when the file has Isochron_Mode_supp = 1.
+fn isochronous(out: &mut TomlOut, device: &DpDevice) {
+    if number_of(device, "Isochron_Mode_supp") != Some(1) {
+        return;
+    }
+    out.table("profibus.isochronous");
+    flags(out, device, &[("required", "Isochron_Mode_required")]);
+    numbers(
+        out,
+        device,
+        &[
+            ("tbase_dp", "TBASE_DP"),
+            ("tdp_max", "TDP_MAX"),
+            ("tdp_min", "TDP_MIN"),
+            ("tbase_io", "TBASE_IO"),
+            ("ti_min", "TI_MIN"),
+            ("to_min", "TO_MIN"),
+            ("t_pll_w_max", "T_PLL_W_MAX"),
+        ],
+    );
 }
 
 /// The file's name when it is one a GSD may have (8.3, a GSD extension),
@@ -464,13 +513,24 @@ fn user_prm(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     let prm = &device.user_prm_data;
     let constant = constant_bytes(prm, number_of(device, "DPV1_Slave") == Some(1));
     let max_length = number_of(device, "Max_User_Prm_Data_Len");
-    if !constant.is_empty() || max_length.is_some() {
+    let block_structure = match (
+        number_of(device, "Prm_Block_Structure_supp"),
+        number_of(device, "Prm_Block_Structure_req"),
+    ) {
+        (Some(1), Some(1)) => Some("required"),
+        (Some(1), _) => Some("supported"),
+        _ => None,
+    };
+    if !constant.is_empty() || max_length.is_some() || block_structure.is_some() {
         out.table("profibus.user_prm");
         if !constant.is_empty() {
             out.key("constant", list(constant.iter().map(|b| hex(*b))));
         }
         if let Some(max) = max_length {
             out.key("max_length", max);
+        }
+        if let Some(b) = block_structure {
+            out.string("block_structure", b);
         }
     }
     for field in &prm.fields {
@@ -618,6 +678,41 @@ fn dpv1(out: &mut TomlOut, device: &DpDevice) {
             ],
         );
     }
+    alarms(out, device);
+}
+
+/// `[profibus.dpv1.alarms]`: the alarm keywords the file states (a kind's
+/// `_supp` or `_required` of 0 is what leaving it out says).
+fn alarms(out: &mut TomlOut, device: &DpDevice) {
+    let kinds = |required: bool| -> Vec<String> {
+        crate::ir::profibus::AlarmKind::ALL
+            .into_iter()
+            .filter(|k| {
+                let (supp, req) = k.keywords();
+                number_of(device, if required { req } else { supp }).is_some_and(|n| n != 0)
+            })
+            .map(|k| quote(k.name()))
+            .collect()
+    };
+    let (supported, required) = (kinds(false), kinds(true));
+    let modes = [
+        ("type_mode", "Alarm_Type_Mode_supp"),
+        ("extra_alarm_sap", "Extra_Alarm_SAP_supp"),
+    ];
+    let count = "Alarm_Sequence_Mode_Count";
+    let stated = modes.iter().any(|(_, k)| device.keyword(k).is_some());
+    if supported.is_empty() && required.is_empty() && !stated && device.keyword(count).is_none() {
+        return;
+    }
+    out.table("profibus.dpv1.alarms");
+    if !supported.is_empty() {
+        out.key("supported", list(supported));
+    }
+    if !required.is_empty() {
+        out.key("required", list(required));
+    }
+    flags(out, device, &modes);
+    numbers(out, device, &[("sequence_mode_count", count)]);
 }
 
 fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {

@@ -47,6 +47,10 @@ pub struct Profibus {
     /// master in Clear) as well as one with zeros.
     pub fail_safe: bool,
     pub dpv1: Option<Dpv1>,
+    /// Isochronous mode, when the card has it.
+    pub isochronous: Option<Isochronous>,
+    /// User_Prm_Data in blocks, when stated.
+    pub prm_block_structure: Option<BlockStructure>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
     /// Max_Diag_Data_Len: the standard diagnosis and the device's block.
@@ -73,6 +77,35 @@ pub struct Dpv1 {
     /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
     pub data_types: Option<bool>,
     pub check_cfg_mode: Option<bool>,
+    pub alarms: Option<Alarms>,
+}
+
+pub use crate::description::dp::{AlarmKind, BlockStructure};
+
+/// The DPV1 alarms, as the description states them.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Alarms {
+    /// Each kind of [`AlarmKind::ALL`], in its order: supported, required.
+    pub supported: [bool; 6],
+    pub required: [bool; 6],
+    pub type_mode: Option<bool>,
+    pub sequence_mode_count: Option<u8>,
+    pub extra_alarm_sap: Option<bool>,
+}
+
+/// Isochronous mode: the GSD's timing keywords, in the GSD's units.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Isochronous {
+    pub required: Option<bool>,
+    pub tbase_dp: u32,
+    pub tdp_max: u16,
+    pub tdp_min: u16,
+    pub tbase_io: u32,
+    pub ti_min: u16,
+    pub to_min: u16,
+    pub t_pll_w_max: u16,
 }
 
 /// The DPV1 class 2 channel (MSAC_2).

@@ -8,6 +8,7 @@ mod checks;
 mod choices;
 mod dp_modules;
 mod dp_params;
+mod dp_timing;
 mod gateway;
 mod manual;
 mod mappings;

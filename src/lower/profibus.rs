@@ -121,6 +121,15 @@ pub fn lower(
     });
     let limits = limits(cx, p, &modules, gateway);
     let features = features(cx, p, gsd_revision);
+    let isochronous = p
+        .isochronous
+        .as_ref()
+        .map(|i| super::dp_timing::isochronous(cx, i, gsd_revision));
+    let prm_block_structure = p
+        .user_prm
+        .as_ref()
+        .and_then(|u| u.get_ref().block_structure.as_ref())
+        .map(|b| super::dp_timing::block_structure(cx, b, gsd_revision));
     Some(Profibus {
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
@@ -150,6 +159,8 @@ pub fn lower(
         sync_mode,
         fail_safe,
         dpv1,
+        isochronous,
+        prm_block_structure,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
         bitmap_device: device
@@ -267,7 +278,12 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
 }
 
 /// E172: a keyword the GSD's revision does not have yet.
-fn since_revision(cx: &mut Checker, keyword: &str, span: Range<usize>, gsd_revision: u8) {
+pub(super) fn since_revision(
+    cx: &mut Checker,
+    keyword: &str,
+    span: Range<usize>,
+    gsd_revision: u8,
+) {
     let since = crate::gsd::schema::keyword(keyword).revision;
     if i64::from(gsd_revision) < since {
         cx.push(
@@ -677,6 +693,10 @@ fn lower_dpv1(
         ident_maintenance: d.ident_maintenance == Some(true),
         data_types: d.data_types.as_ref().map(|v| *v.get_ref()),
         check_cfg_mode: d.check_cfg_mode.as_ref().map(|v| *v.get_ref()),
+        alarms: d
+            .alarms
+            .as_ref()
+            .map(|a| super::dp_timing::alarms(cx, a.get_ref())),
     })
 }
 
