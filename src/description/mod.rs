@@ -435,6 +435,10 @@ pub struct Dpv1 {
     /// Check_Cfg_Mode: true when the card checks the configuration less
     /// strictly than byte for byte.
     pub check_cfg_mode: Option<Spanned<bool>>,
+    /// C1_Read_Write_required and C2_Read_Write_required: the card needs
+    /// the master to use the channel; unwritten when unsaid.
+    pub c1_read_write_required: Option<Spanned<bool>>,
+    pub c2_read_write_required: Option<Spanned<bool>>,
     pub alarms: Option<Spanned<dp::Alarms>>,
 }
 

@@ -236,6 +236,8 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 stated(&[
                     ("DPV1_Data_Types", d.data_types),
                     ("Check_Cfg_Mode", d.check_cfg_mode),
+                    ("C1_Read_Write_required", d.c1_read_write_required),
+                    ("C2_Read_Write_required", d.c2_read_write_required),
                 ]),
                 d.alarms.map(alarm_keywords).unwrap_or_default(),
             ]

@@ -58,6 +58,8 @@ const IMPORTED: &[&str] = &[
     "ident_maintenance_supp",
     "dpv1_data_types",
     "check_cfg_mode",
+    "c1_read_write_required",
+    "c2_read_write_required",
     "diagnostic_alarm_supp",
     "process_alarm_supp",
     "pull_plug_alarm_supp",
@@ -663,6 +665,8 @@ fn dpv1(out: &mut TomlOut, device: &DpDevice) {
             ("ident_maintenance", "Ident_Maintenance_supp"),
             ("data_types", "DPV1_Data_Types"),
             ("check_cfg_mode", "Check_Cfg_Mode"),
+            ("c1_read_write_required", "C1_Read_Write_required"),
+            ("c2_read_write_required", "C2_Read_Write_required"),
         ],
     );
     if number_of(device, "C2_Read_Write_supp").is_some_and(|n| n != 0) {

@@ -77,6 +77,9 @@ pub struct Dpv1 {
     /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
     pub data_types: Option<bool>,
     pub check_cfg_mode: Option<bool>,
+    /// C1_Read_Write_required and C2_Read_Write_required, when stated.
+    pub c1_read_write_required: Option<bool>,
+    pub c2_read_write_required: Option<bool>,
     pub alarms: Option<Alarms>,
 }
 

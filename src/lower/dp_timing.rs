@@ -61,6 +61,45 @@ fn mark(cx: &mut Checker, kinds: &[Spanned<AlarmKind>], flags: &mut [bool; 6], l
     }
 }
 
+/// C1_Read_Write_required and C2_Read_Write_required as stated; E182 for
+/// a channel required that the card does not have (`c1_read_write`,
+/// `[profibus.dpv1.c2]`).
+pub(super) fn channels_required(
+    cx: &mut Checker,
+    d: &crate::description::Dpv1,
+) -> (Option<bool>, Option<bool>) {
+    let channels = [
+        (
+            &d.c1_read_write_required,
+            d.c1_read_write,
+            "class 1",
+            "c1_read_write = true",
+        ),
+        (
+            &d.c2_read_write_required,
+            d.c2.is_some(),
+            "class 2",
+            "[profibus.dpv1.c2]",
+        ),
+    ];
+    let [c1, c2] = channels.map(|(required, has, channel, needs)| {
+        let required = required.as_ref()?;
+        if *required.get_ref() && !has {
+            cx.push(
+                Diagnostic::error(
+                    "E182",
+                    format!("the DPV1 {channel} channel is required but not supported"),
+                )
+                .at(required.span())
+                .label("no such channel")
+                .help(format!("give {needs}, or leave the requirement out")),
+            );
+        }
+        Some(*required.get_ref())
+    });
+    (c1, c2)
+}
+
 /// Isochronous mode: a GSD revision 4 keyword (E172), and its least DP
 /// cycle no longer than its longest (E181).
 pub(super) fn isochronous(

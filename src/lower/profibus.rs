@@ -684,6 +684,7 @@ fn lower_dpv1(
         None => None,
     };
     identification_and_maintenance(cx, d, near);
+    let required = super::dp_timing::channels_required(cx, d);
     Some(Dpv1 {
         c1_read_write: d.c1_read_write,
         c1_max_data_len,
@@ -693,6 +694,8 @@ fn lower_dpv1(
         ident_maintenance: d.ident_maintenance == Some(true),
         data_types: d.data_types.as_ref().map(|v| *v.get_ref()),
         check_cfg_mode: d.check_cfg_mode.as_ref().map(|v| *v.get_ref()),
+        c1_read_write_required: required.0,
+        c2_read_write_required: required.1,
         alarms: d
             .alarms
             .as_ref()
