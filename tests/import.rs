@@ -186,6 +186,56 @@ fn a_symbol_the_build_writes_otherwise_is_imported_with_a_warning() {
     assert_eq!(ir.unwrap().device.symbol, Some(bmp));
 }
 
+/// Bytes from the line after the header's second `;====` rule on.
+fn body_bytes(gsd: &[u8]) -> &[u8] {
+    let rule = b";====";
+    let at = |from: usize| from + gsd[from..].windows(5).position(|w| w == rule).unwrap();
+    let second = at(at(0) + rule.len());
+    let end = second + gsd[second..].iter().position(|b| *b == b'\n').unwrap() + 1;
+    &gsd[end..]
+}
+
+/// A GSD whose strings are Latin-1 (a parameter's name with `ü` and `°`,
+/// bytes 0xFC and 0xB0) imports with `charset = "latin-1"`, the name
+/// verbatim in the UTF-8 description, and builds the same bytes.
+#[test]
+fn latin1_strings_import_verbatim_and_rebuild_as_the_same_bytes() {
+    let (name, gsd, bmp) = md810dp_gsd_and_bitmap();
+    let ascii = "\"PZD1(master->slaver)\"";
+    assert!(gsd.contains(ascii));
+    let mut latin1 = gsd.into_bytes();
+    let at = latin1
+        .windows(ascii.len())
+        .position(|w| w == ascii.as_bytes())
+        .unwrap();
+    latin1.splice(
+        at..at + ascii.len(),
+        b"\"PZD1 \xFCber 50 \xB0C\"".iter().copied(),
+    );
+    let imported = import_with(&name, &latin1, &|_: &str| Ok(bmp.clone()));
+    let toml = imported
+        .description
+        .as_deref()
+        .unwrap_or_else(|| panic!("{:#?}", imported.diagnostics));
+    assert!(toml.contains("[profibus]\ncharset = \"latin-1\"\n"));
+    assert!(toml.contains("name = \"PZD1 über 50 °C\""));
+    let png = &imported.symbol.as_ref().unwrap().png;
+    let (ir, diagnostics) = gsdc::load_with("imported.toml", toml, &|_: &str| Ok(png.clone()));
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let rebuilt = gsdc::compile(&ir).unwrap();
+    let gsd = rebuilt
+        .iter()
+        .find(|f| f.kind == ArtifactKind::Gsd)
+        .unwrap();
+    // Compared as Latin-1 text, so a difference shows as lines.
+    let text = |bytes: &[u8]| bytes.iter().map(|&b| char::from(b)).collect::<String>();
+    assert_eq!(text(body_bytes(&gsd.contents)), text(body_bytes(&latin1)));
+    // Without the charset, the same name is not a GSD string (E102).
+    let ascii_only = toml.replacen("charset = \"latin-1\"\n", "", 1);
+    let (_, diagnostics) = gsdc::load("imported.toml", &ascii_only);
+    assert!(diagnostics.errors().any(|d| d.code == "E102"));
+}
+
 /// A corpus file and what its import says.
 struct Row {
     file: String,

@@ -336,6 +336,18 @@ pub struct PerModule {
     pub profibus: Option<Spanned<OnProfibus>>,
 }
 
+/// The characters of a GSD's strings, and so its bytes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Charset {
+    /// 7-bit printable ASCII: any tool reads it alike.
+    Ascii,
+    /// ISO 8859-1, one byte a character: the umlauts and signs of many
+    /// vendors' files (`°`, `µ`, `ä`).
+    #[serde(rename = "latin-1")]
+    Latin1,
+}
+
 /// What a setting fixed per PROFINET module is on PROFIBUS.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -351,6 +363,9 @@ pub enum OnProfibus {
 #[serde(deny_unknown_fields)]
 pub struct Profibus {
     pub file_name: Spanned<String>,
+    /// The characters the GSD's strings may have: 7-bit ASCII (gsdc's
+    /// default), or Latin-1 for a card whose shipped GSD has them.
+    pub charset: Option<Spanned<Charset>>,
     pub gsd_revision: Option<Spanned<u8>>,
     pub ident_number: Spanned<IdentNumber>,
     pub implementation_type: Option<Spanned<String>>,

@@ -142,7 +142,17 @@ pub(super) fn describe(
     for table in ["device", "telegram", "profibus"] {
         out.key(&quote(table), &reason);
     }
-    Some(out.finish())
+    Some(with_charset(out.finish()))
+}
+
+/// The description, stating `charset = "latin-1"` when the file's strings
+/// have characters beyond ASCII (the only ones it holds: gsdc's comments
+/// are ASCII), so the build writes them as the file's bytes.
+fn with_charset(description: String) -> String {
+    if description.is_ascii() {
+        return description;
+    }
+    description.replacen("\n[profibus]\n", "\n[profibus]\ncharset = \"latin-1\"\n", 1)
 }
 
 /// The PKW channel's presence and the most PZD words of the modules whose

@@ -11,6 +11,9 @@ use std::fmt;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Profibus {
+    /// The GSD's strings may have Latin-1 characters (`charset =
+    /// "latin-1"`), written one byte each; else they are 7-bit ASCII.
+    pub latin1: bool,
     pub file_name: String,
     pub gsd_revision: u8,
     pub ident_number: u16,

@@ -131,6 +131,10 @@ pub fn lower(
         .and_then(|u| u.get_ref().block_structure.as_ref())
         .map(|b| super::dp_timing::block_structure(cx, b, gsd_revision));
     Some(Profibus {
+        latin1: p
+            .charset
+            .as_ref()
+            .is_some_and(|c| *c.get_ref() == raw::Charset::Latin1),
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
         ident_number: *ident.value.get_ref(),
@@ -609,7 +613,9 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
         .and_then(|m| crate::ir::numbering::digits(m, 10))
         .is_some_and(|m| m <= u32::from(MAX_MAIN_FAMILY));
     let subs_ok = parts.all(|s| {
-        !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char)
+        !s.is_empty()
+            && s.len() <= GSD_NAME_LEN
+            && s.chars().all(|c| super::checks::is_gsd_char(c, false))
     });
     if !(main_ok && subs_ok) {
         cx.push(
