@@ -99,13 +99,16 @@ pub enum PrmType {
 }
 
 /// `Unit_Diag_Bit(n) = "text"`: a bit of the device-related block with the
-/// text the tool shows while it is set.
+/// text the tool shows while it is set; with `clear = true`,
+/// `Unit_Diag_Not_Bit(n)`, shown while it is clear.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DiagnosisBit {
     /// Counted from the first byte after the header, as the areas' bits.
     pub bit: Spanned<u16>,
     pub text: Spanned<Text>,
+    #[serde(default)]
+    pub clear: bool,
 }
 
 /// `[profibus.dpv1.alarms]`: the DPV1 alarms the card sends (GSD revision

@@ -47,7 +47,7 @@ struct Context<'a> {
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
-    diag_bits: Vec<Value<'a>>,
+    diag_bits: Vec<DiagBit<'a>>,
     dpv1: Option<Dpv1>,
     /// Prm_Block_Structure and isochronous mode (GSD revision 4), as stated.
     dp_v2: Vec<(&'static str, u32)>,
@@ -90,6 +90,14 @@ struct Rate {
 #[derive(Serialize)]
 struct Value<'a> {
     value: i64,
+    text: &'a str,
+}
+
+/// `Unit_Diag_Bit(n)` or `Unit_Diag_Not_Bit(n)` and its text.
+#[derive(Serialize)]
+struct DiagBit<'a> {
+    keyword: &'static str,
+    bit: u16,
     text: &'a str,
 }
 
@@ -216,8 +224,13 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .diagnosis
             .iter()
             .flat_map(|d| &d.bits)
-            .map(|b| Value {
-                value: b.bit.into(),
+            .map(|b| DiagBit {
+                keyword: if b.clear {
+                    "Unit_Diag_Not_Bit"
+                } else {
+                    "Unit_Diag_Bit"
+                },
+                bit: b.bit,
                 text: b.text.for_gsd(),
             })
             .collect(),

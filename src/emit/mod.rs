@@ -519,14 +519,30 @@ mod tests {
 
     #[test]
     fn the_generated_gsd_passes_verification() {
-        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd()), []);
+        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd(), false), []);
+    }
+
+    /// A character beyond ASCII is E241 in gsdc's GSD unless the
+    /// description states Latin-1 strings.
+    #[test]
+    fn latin1_characters_pass_only_in_a_latin1_gsd() {
+        let umlaut = md810_gsd().replace(
+            "Vendor_Name                 = \"Inovance\"",
+            "Vendor_Name                 = \"Inovance Gerätebau\"",
+        );
+        let problems = verify_gsd("MD810DP.GSD", &umlaut, false);
+        assert!(
+            problems.iter().any(|d| d.message.contains("E241")),
+            "{problems:?}"
+        );
+        assert_eq!(verify_gsd("MD810DP.GSD", &umlaut, true), []);
     }
 
     #[test]
     fn a_gsd_breaking_a_rule_is_refused_naming_the_rule() {
         // PPO5 declared as 16 PZD words no longer fits Max_Input_Len = 32.
         let broken = md810_gsd().replace("0xF3,0xFB", "0xF3,0xFF");
-        let problems = verify_gsd("MD810DP.GSD", &broken);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false);
         assert!(!problems.is_empty());
         assert!(problems.iter().all(|d| d.code == "E900"));
         assert!(
@@ -563,7 +579,7 @@ mod tests {
             "Vendor_Name                 = \"Inovance\"",
             &format!("Vendor_Name = \"Inovance\" ;{}", "x".repeat(80)),
         );
-        let problems = verify_gsd("MD810DP.GSD", &broken);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false);
         assert!(
             problems.iter().any(|d| d.message.contains("E240")),
             "{problems:?}"

@@ -740,21 +740,25 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     let bits: Vec<String> = d
         .bits
         .iter()
-        .filter_map(|b| {
-            if b.when_clear || b.help.is_some() {
+        .map(|b| {
+            if b.help.is_some() {
                 let what = if b.when_clear {
-                    "Unit_Diag_Not_Bit"
+                    "Unit_Diag_Not_Bit_Help"
                 } else {
                     "Unit_Diag_Bit_Help"
                 };
                 notes.unsaid(
                     &format!("{what}({})", b.bit),
                     &b.place,
-                    "the description's diagnosis bits are shown while set, without help",
+                    "the description's diagnosis bits have no help text",
                 );
             }
-            (!b.when_clear)
-                .then(|| format!("{{ bit = {}, text = {} }}", b.bit, quote(&b.text.primary)))
+            let clear = if b.when_clear { ", clear = true" } else { "" };
+            format!(
+                "{{ bit = {}, text = {}{clear} }}",
+                b.bit,
+                quote(&b.text.primary)
+            )
         })
         .collect();
     if !bits.is_empty() {

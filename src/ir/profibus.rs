@@ -487,12 +487,14 @@ impl Diagnosis {
     }
 }
 
-/// `Unit_Diag_Bit`: a bit's text, shown while it is set.
+/// `Unit_Diag_Bit`: a bit's text, shown while it is set; `clear`:
+/// `Unit_Diag_Not_Bit`, shown while it is clear.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct DiagnosisBit {
     pub bit: u16,
     pub text: Text,
+    pub clear: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -1011,8 +1011,13 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
     let mut seen = std::collections::BTreeSet::new();
     let mut lowered = Vec::new();
     for b in &raw.bits {
-        if !seen.insert(*b.bit.get_ref()) {
-            cx.duplicate(format!("diagnosis bit {}", b.bit.get_ref()), b.bit.span());
+        // A bit may have a text while set and another while clear.
+        if !seen.insert((*b.bit.get_ref(), b.clear)) {
+            let when = if b.clear { " (clear)" } else { "" };
+            cx.duplicate(
+                format!("diagnosis bit {}{when}", b.bit.get_ref()),
+                b.bit.span(),
+            );
             continue;
         }
         lowered.extend(diagnosis_bit(cx, b, bits));
@@ -1047,6 +1052,7 @@ fn diagnosis_bit(cx: &mut Checker, b: &raw::dp::DiagnosisBit, bits: i64) -> Opti
     Some(DiagnosisBit {
         bit,
         text: cx.text(&b.text, Some(limit), "diagnosis text"),
+        clear: b.clear,
     })
 }
 
