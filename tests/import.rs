@@ -404,6 +404,16 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
     assert_eq!(&readme[start..end], table, "README.md's import table is stale: GSDC_WRITE_IMPORT_TABLE=1 cargo test --test tests import::");
 }
 
+/// `gsdc import FILE --out OUT`.
+fn run_import(file: &std::path::Path, out: &std::path::Path) -> std::process::Output {
+    support::gsdc([
+        "import".as_ref(),
+        file.as_os_str(),
+        "--out".as_ref(),
+        out.as_os_str(),
+    ])
+}
+
 /// The command: writes the description and the symbol's PNG beside it
 /// (the bitmap found beside the GSD in other letter case), never over a
 /// file; a GSDML file is refused, exit 1, nothing written.
@@ -423,12 +433,7 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     let out_dir = dir.join("out");
     std::fs::create_dir(&out_dir).unwrap();
     let out = out_dir.join("9kdp1.toml");
-    let run = support::gsdc([
-        "import".as_ref(),
-        gsd_path.as_os_str(),
-        "--out".as_ref(),
-        out.as_os_str(),
-    ]);
+    let run = run_import(&gsd_path, &out);
     assert_eq!(run.status.code(), Some(0), "{}", support::stderr(&run));
     assert!(support::stderr(&run).contains("round trip: 0 breaking, 0 compatible"));
     let written = std::fs::read_to_string(&out).unwrap();
@@ -443,12 +448,7 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     // Again: the PNG is there, so nothing is written and the description
     // is left as it was.
     std::fs::remove_file(&out).unwrap();
-    let again = support::gsdc([
-        "import".as_ref(),
-        gsd_path.as_os_str(),
-        "--out".as_ref(),
-        out.as_os_str(),
-    ]);
+    let again = run_import(&gsd_path, &out);
     assert_eq!(again.status.code(), Some(2));
     assert!(support::stderr(&again).contains("9KDP1.png"));
     assert!(!out.exists());
@@ -456,23 +456,13 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     // The description there: the PNG written is taken back.
     std::fs::remove_file(out_dir.join("9KDP1.png")).unwrap();
     std::fs::write(&out, "kept").unwrap();
-    let over = support::gsdc([
-        "import".as_ref(),
-        gsd_path.as_os_str(),
-        "--out".as_ref(),
-        out.as_os_str(),
-    ]);
+    let over = run_import(&gsd_path, &out);
     assert_eq!(over.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "kept");
     assert!(!out_dir.join("9KDP1.png").exists());
     let gsdml = support::shared("corpus/gsdml/GSDML-V2.33-ABB-FENA-20170914.xml");
     let refused_out = dir.join("fena.toml");
-    let refused = support::gsdc([
-        "import".as_ref(),
-        gsdml.as_os_str(),
-        "--out".as_ref(),
-        refused_out.as_os_str(),
-    ]);
+    let refused = run_import(&gsdml, &refused_out);
     assert_eq!(refused.status.code(), Some(1));
     assert!(support::stderr(&refused).contains("error[E602]"));
     assert!(!refused_out.exists());

@@ -154,18 +154,7 @@ mod tests {
         }
     }
 
-    /// The pixels of a PNG as RGB, top row first.
-    fn rgb(png: &[u8]) -> Vec<[u8; 3]> {
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
-        decoder.set_transformations(png::Transformations::normalize_to_color8());
-        let mut reader = decoder.read_info().unwrap();
-        let mut samples = vec![0; reader.output_buffer_size().unwrap()];
-        reader.next_frame(&mut samples).unwrap();
-        samples
-            .chunks_exact(3)
-            .map(|c| [c[0], c[1], c[2]])
-            .collect()
-    }
+    use super::super::bmp_tests::png_pixels as rgb;
 
     /// A 3 x 2 bitmap of `bits` per pixel, rows as stored, with a
     /// BITMAPINFOHEADER and `table` (blue, green, red, 0 each).
