@@ -519,6 +519,26 @@ impl Checker {
         );
     }
 
+    /// E172: a keyword the GSD's revision does not have yet.
+    pub fn since_revision(&mut self, keyword: &str, span: Range<usize>, gsd_revision: u8) {
+        let since = crate::gsd::schema::keyword(keyword).revision;
+        if i64::from(gsd_revision) < since {
+            self.push(
+                Diagnostic::error(
+                    "E172",
+                    format!(
+                        "{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"
+                    ),
+                )
+                .at(span)
+                .label(format!("needs revision {since}"))
+                .help(format!(
+                    "set gsd_revision = {since} or later, or leave this out"
+                )),
+            );
+        }
+    }
+
     /// E105 for the second and later occurrences of a key.
     pub fn duplicate(&mut self, what: String, span: Range<usize>) {
         self.push(

@@ -4,7 +4,6 @@
 //! import` writes them for real drive files that have them).
 
 use super::checks::Checker;
-use super::profibus::since_revision;
 use crate::description::dp as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profibus::{AlarmKind, Alarms, BlockStructure, Isochronous};
@@ -107,7 +106,7 @@ pub(super) fn isochronous(
     i: &Spanned<raw::Isochronous>,
     gsd_revision: u8,
 ) -> Isochronous {
-    since_revision(cx, "Isochron_Mode_supp", i.span(), gsd_revision);
+    cx.since_revision("Isochron_Mode_supp", i.span(), gsd_revision);
     let i = i.get_ref();
     let (min, max) = (*i.tdp_min.get_ref(), *i.tdp_max.get_ref());
     if min > max {
@@ -139,6 +138,6 @@ pub(super) fn block_structure(
     b: &Spanned<BlockStructure>,
     gsd_revision: u8,
 ) -> BlockStructure {
-    since_revision(cx, "Prm_Block_Structure_supp", b.span(), gsd_revision);
+    cx.since_revision("Prm_Block_Structure_supp", b.span(), gsd_revision);
     *b.get_ref()
 }

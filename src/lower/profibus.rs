@@ -258,7 +258,7 @@ fn limits(
 fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
     let mut flag = |v: &Option<Spanned<bool>>, keyword: &str| {
         let v = v.as_ref()?;
-        since_revision(cx, keyword, v.span(), gsd_revision);
+        cx.since_revision(keyword, v.span(), gsd_revision);
         Some(*v.get_ref())
     };
     let set_slave_address = flag(&p.set_slave_address, "Set_Slave_Add_supp");
@@ -267,7 +267,7 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
     let publisher = flag(&p.publisher, "Publisher_supp");
     let mut number = |v: &Option<Spanned<u8>>, keyword: &str| {
         let v = v.as_ref()?;
-        since_revision(cx, keyword, v.span(), gsd_revision);
+        cx.since_revision(keyword, v.span(), gsd_revision);
         cx.gsd_number(v, keyword, keyword)
     };
     Features {
@@ -278,31 +278,6 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
         wd_base_1ms,
         publisher,
         modul_offset: number(&p.modul_offset, "Modul_Offset"),
-    }
-}
-
-/// E172: a keyword the GSD's revision does not have yet.
-pub(super) fn since_revision(
-    cx: &mut Checker,
-    keyword: &str,
-    span: Range<usize>,
-    gsd_revision: u8,
-) {
-    let since = crate::gsd::schema::keyword(keyword).revision;
-    if i64::from(gsd_revision) < since {
-        cx.push(
-            Diagnostic::error(
-                "E172",
-                format!(
-                    "{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"
-                ),
-            )
-            .at(span)
-            .label(format!("needs revision {since}"))
-            .help(format!(
-                "set gsd_revision = {since} or later, or leave this out"
-            )),
-        );
     }
 }
 
