@@ -618,7 +618,7 @@ fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
                 _ => None,
             })
             .collect();
-        match ints.as_slice() {
+        match joined(ints).as_slice() {
             [(min, max)] => out.key("range", format!("[{min}, {max}]")),
             _ => notes.unsaid(
                 &format!("parameter \"{name}\"'s allowed values"),
@@ -640,6 +640,21 @@ fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
             "the description's parameters have no key for it",
         );
     }
+}
+
+/// Ranges sorted and joined where they overlap or touch: a set of values
+/// that is one run (`66,66`, `1,2,3`) is one range, which the description
+/// can say (gsdc diff takes the two as the same values).
+fn joined(mut ranges: Vec<(i128, i128)>) -> Vec<(i128, i128)> {
+    ranges.sort_unstable();
+    let mut out: Vec<(i128, i128)> = Vec::with_capacity(ranges.len());
+    for (lo, hi) in ranges {
+        match out.last_mut() {
+            Some(last) if lo <= last.1.saturating_add(1) => last.1 = last.1.max(hi),
+            _ => out.push((lo, hi)),
+        }
+    }
+    out
 }
 
 /// Whether a value is among those a parameter allows (its texts may name
@@ -801,4 +816,17 @@ fn manual(out: &mut TomlOut) {
     out.comment("[manual]");
     out.comment("title = \"...\"");
     out.comment("languages = [\"en\"]");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::joined;
+
+    #[test]
+    fn a_set_of_values_in_one_run_is_one_range() {
+        assert_eq!(joined(vec![(66, 66), (66, 66)]), [(66, 66)]);
+        assert_eq!(joined(vec![(3, 3), (1, 1), (2, 2)]), [(1, 3)]);
+        assert_eq!(joined(vec![(0, 4), (2, 9)]), [(0, 9)]);
+        assert_eq!(joined(vec![(1, 1), (2, 2), (5, 5)]), [(1, 2), (5, 5)]);
+    }
 }
