@@ -200,8 +200,17 @@ fn shape(ids: &[Identifier]) -> Option<(bool, u8)> {
     Some((pkw, words))
 }
 
+/// An identifier of no data: an empty place (0x00), or a special-format
+/// one of manufacturer bytes only (SINAMICS' `0x01,0xFE` after its PZD).
 fn is_empty(id: &Identifier) -> bool {
-    matches!(id, Identifier::Special { output: None, input: None, vendor } if vendor.is_empty())
+    matches!(
+        id,
+        Identifier::Special {
+            output: None,
+            input: None,
+            ..
+        }
+    )
 }
 
 /// `0xF3`: 4 consistent words each way, the PKW channel when data follows.
