@@ -17,9 +17,24 @@ pub(crate) fn decode(bytes: &[u8]) -> String {
     text
 }
 
+/// The Latin-1 bytes of `text`, or the first character Latin-1 has not.
+pub(crate) fn encode(text: &str) -> Result<Vec<u8>, char> {
+    text.chars()
+        .map(|c| u8::try_from(u32::from(c)).map_err(|_| c))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
-    use super::decode;
+    use super::{decode, encode};
+
+    #[test]
+    fn encoding_gives_back_the_bytes_decoded() {
+        let all: Vec<u8> = (0..=255).collect();
+        assert_eq!(encode(&decode(&all)), Ok(all));
+        assert_eq!(encode("Größe °C"), Ok(b"Gr\xF6\xDFe \xB0C".to_vec()));
+        assert_eq!(encode("汇川"), Err('汇'));
+    }
 
     #[test]
     fn every_byte_is_its_own_character() {

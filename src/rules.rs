@@ -119,6 +119,9 @@ pub const RULES: &[Rule] = &[
     rule("E173", "a compact station of more than one module"),
     rule("E174", "a stated limit less than the modules need"),
     rule("E175", "a parameter with both type and bits"),
+    rule("E180", "a DPV1 alarm required but not supported"),
+    rule("E181", "an isochronous cycle's least more than its longest"),
+    rule("E182", "a DPV1 channel required but not supported"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),
@@ -211,5 +214,6 @@ pub const RULES: &[Rule] = &[
     rule("W600", "not imported: no place in the description"),
     rule("E601", "the import builds another device"),
     rule("E602", "a file gsdc cannot import"),
+    rule("W603", "the imported device symbol builds another bitmap"),
     rule("E900", "generated file breaks a rule"),
 ];

@@ -489,6 +489,35 @@ fn gsd_parameter_telegram_longer_breaks_once() {
     assert_eq!(limit.subject, "Max_User_Prm_Data_Len");
 }
 
+/// A file of GSD revision 0 or 1 states its parameter telegram's length
+/// as User_Prm_Data_Len only: Max_User_Prm_Data_Len of the same value
+/// offers the master the same telegram, no change either way; a longer
+/// one is the limit raised (and the declared telegram longer).
+#[test]
+fn gsd_legacy_user_prm_data_len_is_the_same_limit() {
+    let legacy = [F(
+        "Max_User_Prm_Data_Len       = 63",
+        "User_Prm_Data_Len           = 63",
+    )];
+    let (old, new) = files("md810dp.toml", GSD, &legacy);
+    assert_eq!(diff(&old, &new), [], "legacy length stated");
+    assert_eq!(diff(&new, &old), [], "legacy length replaced");
+    let shorter = [F(
+        "Max_User_Prm_Data_Len       = 63",
+        "User_Prm_Data_Len           = 62",
+    )];
+    let (_, shorter) = files("md810dp.toml", GSD, &shorter);
+    let found = diff(&shorter, &old);
+    let limit = found
+        .iter()
+        .find(|c| c.subject == "Max_User_Prm_Data_Len")
+        .unwrap_or_else(|| panic!("{found:#?}"));
+    assert_eq!(
+        (limit.class, limit.change.as_str()),
+        (Compatible, "\"62\" → \"63\"")
+    );
+}
+
 // GSD: diagnosis.
 
 #[test]

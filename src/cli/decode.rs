@@ -544,6 +544,16 @@ fn unread_row(u: &Unread) -> (u16, Vec<String>) {
                     .unwrap_or_else(|| format!("bit {bit} set, not named by the description")),
             ],
         ),
+        Unread::ClearBit { bit, text } => (
+            *bit,
+            vec![
+                bit.to_string(),
+                (1 + bit / 8).to_string(),
+                "0".into(),
+                "0".into(),
+                text.clone(),
+            ],
+        ),
     }
 }
 

@@ -46,21 +46,69 @@ pub fn run(args: &Args) -> Status {
         .file_name()
         .and_then(|n| n.to_str())
         .unwrap_or("IMPORTED.GSD");
-    let imported = crate::import::import(file_name, &bytes);
+    let beside = |name: &str| read_beside(path, name);
+    let imported = crate::import::import_with(file_name, &bytes, &beside);
     report(&display_name(path), &imported);
     let Some(description) = &imported.description else {
         return Status::InputErrors;
     };
-    match write_new(&args.out, description.as_bytes()) {
-        Ok(()) => {
-            say(&format!("wrote {}", display_name(&args.out)));
-            Status::Ok
-        }
-        Err(e) => {
-            warn(&format!("error: {}: {e}", display_name(&args.out)));
+    match write_outputs(&args.out, description, imported.symbol.as_ref()) {
+        Ok(()) => Status::Ok,
+        Err((written, e)) => {
+            warn(&format!("error: {}: {e}", display_name(&written)));
             Status::UsageOrIo
         }
     }
+}
+
+/// A file beside `gsd` by its name, or by the same name in other letter
+/// case (GSD files name their bitmaps as written on Windows).
+fn read_beside(gsd: &Path, name: &str) -> Result<Vec<u8>, String> {
+    let dir = gsd.parent().unwrap_or(Path::new("."));
+    let exact = dir.join(name);
+    let path = if exact.is_file() {
+        exact
+    } else {
+        std::fs::read_dir(dir)
+            .map_err(|e| e.to_string())?
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .find(|p| {
+                p.file_name()
+                    .and_then(|n| n.to_str())
+                    .is_some_and(|n| n.eq_ignore_ascii_case(name))
+            })
+            .ok_or_else(|| "no such file beside the GSD".to_string())?
+    };
+    match crate::output::read_device_file(&path) {
+        Ok((_, bytes)) => Ok(bytes),
+        Err(crate::output::ReadError::Io(e)) => Err(e.to_string()),
+        Err(crate::output::ReadError::TooLarge(d)) => Err(d.message),
+    }
+}
+
+/// The symbol's PNG beside the description, then the description: both or
+/// neither, never over a file. The error names the file it is about.
+fn write_outputs(
+    out: &Path,
+    description: &str,
+    symbol: Option<&crate::import::ImportedSymbol>,
+) -> Result<(), (PathBuf, std::io::Error)> {
+    let png = symbol.map(|s| (out.with_file_name(&s.file_name), &s.png));
+    if let Some((path, bytes)) = &png {
+        write_new(path, bytes).map_err(|e| (path.clone(), e))?;
+    }
+    if let Err(e) = write_new(out, description.as_bytes()) {
+        if let Some((path, _)) = &png {
+            let _ = std::fs::remove_file(path);
+        }
+        return Err((out.to_path_buf(), e));
+    }
+    if let Some((path, _)) = &png {
+        say(&format!("wrote {}", display_name(path)));
+    }
+    say(&format!("wrote {}", display_name(out)));
+    Ok(())
 }
 
 /// The diagnostics, then one line: what was left out and the round trip.

@@ -81,6 +81,8 @@ pub enum Unread {
     Byte { at: u8, value: u8, text: String },
     /// A set bit with its `Unit_Diag_Bit` text, `None` when it names none.
     Bit { bit: u16, text: Option<String> },
+    /// A clear bit with its `Unit_Diag_Not_Bit` text.
+    ClearBit { bit: u16, text: String },
 }
 
 /// Header bits 7-6: 00 is a device-related block.
@@ -138,12 +140,19 @@ fn unread(diagnosis: &Diagnosis, block: &[u8]) -> Vec<Unread> {
             .iter()
             .any(|a| (a.first_bit..=a.last_bit).contains(&bit))
     };
-    let named_bit = |bit: u16| diagnosis.bits.iter().find(|b| b.bit == bit);
+    let named_bit = |bit: u16, clear: bool| {
+        diagnosis
+            .bits
+            .iter()
+            .find(|b| b.bit == bit && b.clear == clear)
+    };
     let device_bytes = block.get(1..).unwrap_or_default();
     let mut out = Vec::new();
     for (at, &value) in (0u8..).zip(device_bytes) {
         let bits = (0..8).map(|i| u16::from(at) * 8 + i);
-        let untouched = bits.clone().all(|b| !read(b) && named_bit(b).is_none());
+        let untouched = bits
+            .clone()
+            .all(|b| !read(b) && named_bit(b, false).is_none() && named_bit(b, true).is_none());
         let named = diagnosis.byte(STANDARD_DIAG_BYTES + 1 + at);
         match named {
             Some(text) if untouched => out.push(Unread::Byte {
@@ -151,13 +160,14 @@ fn unread(diagnosis: &Diagnosis, block: &[u8]) -> Vec<Unread> {
                 value,
                 text: text.en.clone(),
             }),
-            _ => out.extend(
-                bits.filter(|&b| value & (1 << (b % 8)) != 0 && !read(b))
-                    .map(|bit| Unread::Bit {
-                        bit,
-                        text: named_bit(bit).map(|b| b.text.en.clone()),
-                    }),
-            ),
+            _ => out.extend(bits.filter(|&b| !read(b)).filter_map(|bit| {
+                if value & (1 << (bit % 8)) != 0 {
+                    let text = named_bit(bit, false).map(|b| b.text.en.clone());
+                    return Some(Unread::Bit { bit, text });
+                }
+                let text = named_bit(bit, true)?.text.en.clone();
+                Some(Unread::ClearBit { bit, text })
+            })),
         }
     }
     out

@@ -497,7 +497,7 @@ fn md810_diagnosis_shows_the_high_byte_no_area_reads() {
 
 /// A set bit no area reads is shown with its Unit_Diag_Bit text, or as not
 /// named: bit 0 and 9 have texts in the fixture, bit 23 none; bit 8 is
-/// clear and not shown.
+/// clear and not shown. Bit 9 clear shows its Unit_Diag_Not_Bit text.
 #[test]
 fn diagnosis_bits_outside_areas_are_each_shown_when_set() {
     let ir = load(
@@ -515,6 +515,17 @@ fn diagnosis_bits_outside_areas_are_each_shown_when_set() {
             bit(0, Some("Overcurrent")),
             bit(9, Some("Drive not ready")),
             bit(23, None)
+        ]
+    );
+    let block = diagnosis(&ir, &Hex::parse("08 01 00 00 00 00 00 00").unwrap()).unwrap();
+    assert_eq!(
+        block.unread,
+        [
+            bit(0, Some("Overcurrent")),
+            Unread::ClearBit {
+                bit: 9,
+                text: "Drive ready".into()
+            }
         ]
     );
 }

@@ -63,6 +63,8 @@ pub struct UserPrm {
     /// `Max_User_Prm_Data_Len`, when it says more than the parameter
     /// telegram's length.
     pub max_length: Option<Spanned<u8>>,
+    /// `Prm_Block_Structure_supp` and `_req`.
+    pub block_structure: Option<Spanned<BlockStructure>>,
 }
 
 /// `[[profibus.parameters]]`: a User_Prm_Data parameter of the card itself,
@@ -97,11 +99,110 @@ pub enum PrmType {
 }
 
 /// `Unit_Diag_Bit(n) = "text"`: a bit of the device-related block with the
-/// text the tool shows while it is set.
+/// text the tool shows while it is set; with `clear = true`,
+/// `Unit_Diag_Not_Bit(n)`, shown while it is clear.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DiagnosisBit {
     /// Counted from the first byte after the header, as the areas' bits.
     pub bit: Spanned<u16>,
     pub text: Spanned<Text>,
+    #[serde(default)]
+    pub clear: bool,
+}
+
+/// `[profibus.dpv1.alarms]`: the DPV1 alarms the card sends (GSD revision
+/// 3 keywords), each written only as stated.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Alarms {
+    /// `<Kind>_Alarm_supp = 1` for each.
+    #[serde(default)]
+    pub supported: Vec<Spanned<AlarmKind>>,
+    /// `<Kind>_Alarm_required = 1` for each: the master must enable it.
+    #[serde(default)]
+    pub required: Vec<Spanned<AlarmKind>>,
+    /// `Alarm_Type_Mode_supp`.
+    pub type_mode: Option<Spanned<bool>>,
+    /// `Alarm_Sequence_Mode_Count`.
+    pub sequence_mode_count: Option<Spanned<u8>>,
+    /// `Extra_Alarm_SAP_supp`.
+    pub extra_alarm_sap: Option<Spanned<bool>>,
+}
+
+/// The kinds of DPV1 alarm a GSD names, in the order gsdc writes them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AlarmKind {
+    Diagnostic,
+    Process,
+    PullPlug,
+    Status,
+    Update,
+    ManufacturerSpecific,
+}
+
+impl AlarmKind {
+    pub const ALL: [AlarmKind; 6] = [
+        AlarmKind::Diagnostic,
+        AlarmKind::Process,
+        AlarmKind::PullPlug,
+        AlarmKind::Status,
+        AlarmKind::Update,
+        AlarmKind::ManufacturerSpecific,
+    ];
+
+    /// Its `_supp` and `_required` keywords.
+    pub fn keywords(self) -> (&'static str, &'static str) {
+        match self {
+            AlarmKind::Diagnostic => ("Diagnostic_Alarm_supp", "Diagnostic_Alarm_required"),
+            AlarmKind::Process => ("Process_Alarm_supp", "Process_Alarm_required"),
+            AlarmKind::PullPlug => ("Pull_Plug_Alarm_supp", "Pull_Plug_Alarm_required"),
+            AlarmKind::Status => ("Status_Alarm_supp", "Status_Alarm_required"),
+            AlarmKind::Update => ("Update_Alarm_supp", "Update_Alarm_required"),
+            AlarmKind::ManufacturerSpecific => (
+                "Manufacturer_Specific_Alarm_supp",
+                "Manufacturer_Specific_Alarm_required",
+            ),
+        }
+    }
+
+    /// Its name in the description.
+    pub fn name(self) -> &'static str {
+        match self {
+            AlarmKind::Diagnostic => "diagnostic",
+            AlarmKind::Process => "process",
+            AlarmKind::PullPlug => "pull_plug",
+            AlarmKind::Status => "status",
+            AlarmKind::Update => "update",
+            AlarmKind::ManufacturerSpecific => "manufacturer_specific",
+        }
+    }
+}
+
+/// `[profibus.isochronous]`: isochronous mode (DP-V2, GSD revision 4):
+/// `Isochron_Mode_supp = 1` and the timing keywords, each the number the
+/// GSD writes, in the GSD's units.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Isochronous {
+    /// `Isochron_Mode_required`: the card runs only isochronously.
+    pub required: Option<Spanned<bool>>,
+    pub tbase_dp: Spanned<u32>,
+    pub tdp_max: Spanned<u16>,
+    pub tdp_min: Spanned<u16>,
+    pub tbase_io: Spanned<u32>,
+    pub ti_min: Spanned<u16>,
+    pub to_min: Spanned<u16>,
+    pub t_pll_w_max: Spanned<u16>,
+}
+
+/// `[profibus.user_prm] block_structure`: User_Prm_Data in blocks (GSD
+/// revision 4, `Prm_Block_Structure_supp`), which the master may send or
+/// must (`Prm_Block_Structure_req`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BlockStructure {
+    Supported,
+    Required,
 }

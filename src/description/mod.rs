@@ -336,6 +336,18 @@ pub struct PerModule {
     pub profibus: Option<Spanned<OnProfibus>>,
 }
 
+/// The characters of a GSD's strings, and so its bytes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Charset {
+    /// 7-bit printable ASCII: any tool reads it alike.
+    Ascii,
+    /// ISO 8859-1, one byte a character: the umlauts and signs of many
+    /// vendors' files (`°`, `µ`, `ä`).
+    #[serde(rename = "latin-1")]
+    Latin1,
+}
+
 /// What a setting fixed per PROFINET module is on PROFIBUS.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -351,6 +363,9 @@ pub enum OnProfibus {
 #[serde(deny_unknown_fields)]
 pub struct Profibus {
     pub file_name: Spanned<String>,
+    /// The characters the GSD's strings may have: 7-bit ASCII (gsdc's
+    /// default), or Latin-1 for a card whose shipped GSD has them.
+    pub charset: Option<Spanned<Charset>>,
     pub gsd_revision: Option<Spanned<u8>>,
     pub ident_number: Spanned<IdentNumber>,
     pub implementation_type: Option<Spanned<String>>,
@@ -402,6 +417,7 @@ pub struct Profibus {
     #[serde(default)]
     pub parameters: Vec<dp::Parameter>,
     pub dpv1: Option<Spanned<Dpv1>>,
+    pub isochronous: Option<Spanned<dp::Isochronous>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
 }
 
@@ -434,6 +450,11 @@ pub struct Dpv1 {
     /// Check_Cfg_Mode: true when the card checks the configuration less
     /// strictly than byte for byte.
     pub check_cfg_mode: Option<Spanned<bool>>,
+    /// C1_Read_Write_required and C2_Read_Write_required: the card needs
+    /// the master to use the channel; unwritten when unsaid.
+    pub c1_read_write_required: Option<Spanned<bool>>,
+    pub c2_read_write_required: Option<Spanned<bool>>,
+    pub alarms: Option<Spanned<dp::Alarms>>,
 }
 
 /// DPV1 class 2 (MSAC_2): GSD revision 3 keywords.

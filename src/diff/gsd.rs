@@ -16,7 +16,12 @@ use crate::gsd::{Arg, Value};
 pub fn compare(old: &DpDevice, new: &DpDevice) -> Vec<super::Change> {
     let mut out = Changes::default();
     file_name(old, new, &mut out);
-    keywords("", &old.keywords, &new.keywords, &mut out);
+    keywords(
+        "",
+        &with_implied_max_prm_len(old),
+        &with_implied_max_prm_len(new),
+        &mut out,
+    );
     let scope = Scope {
         name: "User_Prm_Data",
         kind: Kind::Parameter,
@@ -38,6 +43,41 @@ fn file_name(old: &DpDevice, new: &DpDevice, out: &mut Changes) {
             );
         }
     }
+}
+
+/// The device's keywords, with `Max_User_Prm_Data_Len` implied when the
+/// file states only the legacy `User_Prm_Data_Len` and no module has
+/// parameters of its own. A master sends such a device a parameter
+/// telegram of exactly User_Prm_Data_Len bytes of User_Prm_Data; stating
+/// Max_User_Prm_Data_Len of that value (as gsdc does) lets the master send
+/// the same telegram and no longer one, so the two files offer one limit,
+/// and the file that adds the keyword changes nothing a master sends.
+/// Modules' own parameters would add to the telegram, and the longest one
+/// then is not the device's length: no limit is implied there. Nor for a
+/// length of 0, which a file without either keyword states as well.
+fn with_implied_max_prm_len(device: &DpDevice) -> Vec<Keyword> {
+    let mut keywords = device.keywords.clone();
+    let prm = &device.user_prm_data;
+    let modules_have_parameters = device.modules.iter().any(|m| !m.user_prm_data.is_empty());
+    if let (None, Some(length @ 1..), false) = (
+        device.keyword("Max_User_Prm_Data_Len"),
+        prm.length,
+        modules_have_parameters,
+    ) {
+        keywords.push(Keyword {
+            name: "Max_User_Prm_Data_Len".into(),
+            key: "max_user_prm_data_len".into(),
+            arg: None,
+            value: Value::Number(length.into()),
+            // User_Prm_Data's line, where the legacy length is written.
+            place: prm
+                .consts
+                .first()
+                .map(|c| c.place.clone())
+                .unwrap_or_default(),
+        });
+    }
+    keywords
 }
 
 /// Keywords paired by key and argument, each judged by its rule. A baud

@@ -47,8 +47,10 @@ struct Context<'a> {
     slave_family: &'a str,
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
-    diag_bits: Vec<Value<'a>>,
+    diag_bits: Vec<DiagBit<'a>>,
     dpv1: Option<Dpv1>,
+    /// Prm_Block_Structure and isochronous mode (GSD revision 4), as stated.
+    dp_v2: Vec<(&'static str, u32)>,
     prm_len: u16,
     /// Max_User_Prm_Data_Len: the telegram's length, or more when stated;
     /// unwritten when 0 and unstated (a slave without parameters).
@@ -91,6 +93,14 @@ struct Value<'a> {
     text: &'a str,
 }
 
+/// `Unit_Diag_Bit(n)` or `Unit_Diag_Not_Bit(n)` and its text.
+#[derive(Serialize)]
+struct DiagBit<'a> {
+    keyword: &'static str,
+    bit: u16,
+    text: &'a str,
+}
+
 #[derive(Serialize)]
 struct DiagArea<'a> {
     first: u16,
@@ -107,7 +117,7 @@ struct Dpv1 {
     c1_response_timeout: u16,
     c2: Option<Class2>,
     ident_maintenance: u8,
-    /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
+    /// DPV1_Data_Types, Check_Cfg_Mode and the alarm keywords, when stated.
     stated: Vec<(&'static str, u8)>,
 }
 
@@ -156,7 +166,9 @@ pub fn emit(ir: &Ir, profibus: &Profibus) -> String {
 
 fn render(template: &str, ir: &Ir, profibus: &Profibus) -> Result<String, minijinja::Error> {
     let mut env = super::strict_templates();
-    env.add_filter("key", |key: String| format!("{key:<KEY_WIDTH$}"));
+    // At least one space after a key as long as the column or longer
+    // (Manufacturer_Specific_Alarm_supp).
+    env.add_filter("key", |key: String| format!("{:<KEY_WIDTH$}", key + " "));
     env.template_from_str(template)?
         .render(context(ir, profibus))
 }
@@ -212,8 +224,13 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .diagnosis
             .iter()
             .flat_map(|d| &d.bits)
-            .map(|b| Value {
-                value: b.bit.into(),
+            .map(|b| DiagBit {
+                keyword: if b.clear {
+                    "Unit_Diag_Not_Bit"
+                } else {
+                    "Unit_Diag_Bit"
+                },
+                bit: b.bit,
                 text: b.text.for_gsd(),
             })
             .collect(),
@@ -228,11 +245,18 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 max_initiate_pdu_length: c2.max_initiate_pdu_length,
             }),
             ident_maintenance: d.ident_maintenance.into(),
-            stated: stated(&[
-                ("DPV1_Data_Types", d.data_types),
-                ("Check_Cfg_Mode", d.check_cfg_mode),
-            ]),
+            stated: [
+                stated(&[
+                    ("DPV1_Data_Types", d.data_types),
+                    ("Check_Cfg_Mode", d.check_cfg_mode),
+                    ("C1_Read_Write_required", d.c1_read_write_required),
+                    ("C2_Read_Write_required", d.c2_read_write_required),
+                ]),
+                d.alarms.map(alarm_keywords).unwrap_or_default(),
+            ]
+            .concat(),
         }),
+        dp_v2: dp_v2(p),
         prm_len: p.user_prm.len,
         prm_max_len: match p.user_prm.max_len {
             Some(max) => Some(max.into()),
@@ -298,6 +322,60 @@ fn features(p: &Profibus) -> Features {
 }
 
 /// The keywords among `keywords` a description states, with their values.
+/// The alarm keywords: each kind supported, then each required, then the
+/// modes, as stated.
+fn alarm_keywords(a: crate::ir::profibus::Alarms) -> Vec<(&'static str, u8)> {
+    let kinds = crate::ir::profibus::AlarmKind::ALL;
+    let flagged = |flags: [bool; 6], required: bool| {
+        kinds
+            .into_iter()
+            .zip(flags)
+            .filter(|(_, on)| *on)
+            .map(move |(k, _)| {
+                let (supp, req) = k.keywords();
+                (if required { req } else { supp }, 1)
+            })
+    };
+    flagged(a.supported, false)
+        .chain(flagged(a.required, true))
+        .chain(stated(&[
+            ("Alarm_Type_Mode_supp", a.type_mode),
+            ("Extra_Alarm_SAP_supp", a.extra_alarm_sap),
+        ]))
+        .chain(stated(&[(
+            "Alarm_Sequence_Mode_Count",
+            a.sequence_mode_count,
+        )]))
+        .collect()
+}
+
+/// Prm_Block_Structure_supp and _req, then isochronous mode.
+fn dp_v2(p: &crate::ir::profibus::Profibus) -> Vec<(&'static str, u32)> {
+    use crate::ir::profibus::BlockStructure;
+    let mut out = Vec::new();
+    if let Some(b) = p.prm_block_structure {
+        out.push(("Prm_Block_Structure_supp", 1));
+        out.push((
+            "Prm_Block_Structure_req",
+            u32::from(b == BlockStructure::Required),
+        ));
+    }
+    if let Some(i) = p.isochronous {
+        out.push(("Isochron_Mode_supp", 1));
+        out.extend(i.required.map(|r| ("Isochron_Mode_required", u32::from(r))));
+        out.extend([
+            ("TBASE_DP", i.tbase_dp),
+            ("TDP_MAX", i.tdp_max.into()),
+            ("TDP_MIN", i.tdp_min.into()),
+            ("TBASE_IO", i.tbase_io),
+            ("TI_MIN", i.ti_min.into()),
+            ("TO_MIN", i.to_min.into()),
+            ("T_PLL_W_MAX", i.t_pll_w_max.into()),
+        ]);
+    }
+    out
+}
+
 fn stated<T: Copy + Into<u8>>(keywords: &[(&'static str, Option<T>)]) -> Vec<(&'static str, u8)> {
     keywords
         .iter()

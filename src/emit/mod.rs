@@ -348,12 +348,19 @@ fn gsd_file(ir: &Ir) -> Part {
         return (Vec::new(), Vec::new());
     };
     let text = gsd::emit(ir, profibus);
-    let problems = verify_gsd(&profibus.file_name, &text);
-    let file = Artifact::new(
-        ArtifactKind::Gsd,
-        profibus.file_name.clone(),
-        text.into_bytes(),
-    );
+    let mut problems = verify_gsd(&profibus.file_name, &text, profibus.latin1);
+    // One byte a character: ASCII as it is, and the Latin-1 characters a
+    // description with `charset = "latin-1"` may have (the loader refuses
+    // any other, E102).
+    let bytes = crate::latin1::encode(&text).unwrap_or_else(|bad| {
+        let why = Diagnostic::error(
+            "E102",
+            format!("U+{:04X} is no Latin-1 character", u32::from(bad)),
+        );
+        problems.push(generated_file_breaks(&profibus.file_name, why));
+        text.clone().into_bytes()
+    });
+    let file = Artifact::new(ArtifactKind::Gsd, profibus.file_name.clone(), bytes);
     (vec![file], problems)
 }
 
@@ -416,10 +423,14 @@ fn symbols(ir: &Ir) -> Vec<Artifact> {
 
 /// gsdc's own GSD must meet the strict rules: the vendor-file rules with
 /// warnings as errors, plus 7-bit ASCII, CRLF and lines of at most 80 characters.
-fn verify_gsd(file_name: &str, text: &str) -> Vec<Diagnostic> {
+/// gsdc's own GSD must pass `check_strict`; a description that states its
+/// GSD is Latin-1 (`latin1`) has chosen the characters beyond ASCII that
+/// E241 refuses (each one a byte: the encoding checks it).
+fn verify_gsd(file_name: &str, text: &str, latin1: bool) -> Vec<Diagnostic> {
     crate::gsd::check_strict(text)
         .into_iter()
         .filter(Diagnostic::is_error)
+        .filter(|d| !(latin1 && d.code == "E241"))
         .map(|d| generated_file_breaks(file_name, d))
         .collect()
 }
@@ -508,14 +519,30 @@ mod tests {
 
     #[test]
     fn the_generated_gsd_passes_verification() {
-        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd()), []);
+        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd(), false), []);
+    }
+
+    /// A character beyond ASCII is E241 in gsdc's GSD unless the
+    /// description states Latin-1 strings.
+    #[test]
+    fn latin1_characters_pass_only_in_a_latin1_gsd() {
+        let umlaut = md810_gsd().replace(
+            "Vendor_Name                 = \"Inovance\"",
+            "Vendor_Name                 = \"Inovance Gerätebau\"",
+        );
+        let problems = verify_gsd("MD810DP.GSD", &umlaut, false);
+        assert!(
+            problems.iter().any(|d| d.message.contains("E241")),
+            "{problems:?}"
+        );
+        assert_eq!(verify_gsd("MD810DP.GSD", &umlaut, true), []);
     }
 
     #[test]
     fn a_gsd_breaking_a_rule_is_refused_naming_the_rule() {
         // PPO5 declared as 16 PZD words no longer fits Max_Input_Len = 32.
         let broken = md810_gsd().replace("0xF3,0xFB", "0xF3,0xFF");
-        let problems = verify_gsd("MD810DP.GSD", &broken);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false);
         assert!(!problems.is_empty());
         assert!(problems.iter().all(|d| d.code == "E900"));
         assert!(
@@ -552,7 +579,7 @@ mod tests {
             "Vendor_Name                 = \"Inovance\"",
             &format!("Vendor_Name = \"Inovance\" ;{}", "x".repeat(80)),
         );
-        let problems = verify_gsd("MD810DP.GSD", &broken);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false);
         assert!(
             problems.iter().any(|d| d.message.contains("E240")),
             "{problems:?}"

@@ -58,6 +58,34 @@ const IMPORTED: &[&str] = &[
     "ident_maintenance_supp",
     "dpv1_data_types",
     "check_cfg_mode",
+    "c1_read_write_required",
+    "c2_read_write_required",
+    "diagnostic_alarm_supp",
+    "process_alarm_supp",
+    "pull_plug_alarm_supp",
+    "status_alarm_supp",
+    "update_alarm_supp",
+    "manufacturer_specific_alarm_supp",
+    "diagnostic_alarm_required",
+    "process_alarm_required",
+    "pull_plug_alarm_required",
+    "status_alarm_required",
+    "update_alarm_required",
+    "manufacturer_specific_alarm_required",
+    "alarm_type_mode_supp",
+    "extra_alarm_sap_supp",
+    "alarm_sequence_mode_count",
+    "prm_block_structure_supp",
+    "prm_block_structure_req",
+    "isochron_mode_supp",
+    "isochron_mode_required",
+    "tbase_dp",
+    "tdp_max",
+    "tdp_min",
+    "tbase_io",
+    "ti_min",
+    "to_min",
+    "t_pll_w_max",
 ];
 
 /// Keywords gsdc writes with one value only: the description need not say
@@ -66,7 +94,14 @@ const FIXED: &[(&str, i64)] = &[("protocol_ident", 0), ("station_type", 0), ("fm
 
 /// The description of `device`, read from `file`; `None` when the file is
 /// not a drive's (no module is a telegram of PKW and PZD words).
-pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Option<String> {
+/// `symbol` is the PNG's name the description gives as its device symbol
+/// (`Bitmap_Device`, which `super::symbol` reads and judges).
+pub(super) fn describe(
+    device: &DpDevice,
+    file: &str,
+    symbol: Option<&str>,
+    notes: &mut Notes,
+) -> Option<String> {
     let telegram = telegram(device);
     let Some(pzd_words) = telegram.pzd_words else {
         notes.refuse(
@@ -77,6 +112,8 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
     for k in &device.keywords {
         let fixed = FIXED.iter().find(|(key, _)| *key == k.key);
         let said = IMPORTED.contains(&k.key.as_str())
+            // Read by `super::symbol`, or left out there with its reason.
+            || k.key == "bitmap_device"
             || fixed.is_some_and(|(_, v)| k.value.as_number() == Some(*v));
         if !said {
             notes.unsaid(&k.name, &k.place, "the description has no key for it");
@@ -94,7 +131,7 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
         "Imported by gsdc import from {file}. Every value below is the file's,"
     ));
     out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
-    device_table(&mut out, device);
+    device_table(&mut out, device, symbol);
     out.table("telegram");
     out.string("pkw", if telegram.pkw { "pke-ind-pwe" } else { "none" });
     out.key("pzd_words", pzd_words);
@@ -105,7 +142,17 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
     for table in ["device", "telegram", "profibus"] {
         out.key(&quote(table), &reason);
     }
-    Some(out.finish())
+    Some(with_charset(out.finish()))
+}
+
+/// The description, stating `charset = "latin-1"` when the file's strings
+/// have characters beyond ASCII (the only ones it holds: gsdc's comments
+/// are ASCII), so the build writes them as the file's bytes.
+fn with_charset(description: String) -> String {
+    if description.is_ascii() {
+        return description;
+    }
+    description.replacen("\n[profibus]\n", "\n[profibus]\ncharset = \"latin-1\"\n", 1)
 }
 
 /// The PKW channel's presence and the most PZD words of the modules whose
@@ -153,8 +200,17 @@ fn shape(ids: &[Identifier]) -> Option<(bool, u8)> {
     Some((pkw, words))
 }
 
+/// An identifier of no data: an empty place (0x00), or a special-format
+/// one of manufacturer bytes only (SINAMICS' `0x01,0xFE` after its PZD).
 fn is_empty(id: &Identifier) -> bool {
-    matches!(id, Identifier::Special { output: None, input: None, vendor } if vendor.is_empty())
+    matches!(
+        id,
+        Identifier::Special {
+            output: None,
+            input: None,
+            ..
+        }
+    )
 }
 
 /// `0xF3`: 4 consistent words each way, the PKW channel when data follows.
@@ -194,7 +250,7 @@ fn number_of(device: &DpDevice, keyword: &str) -> Option<i64> {
     device.keyword(keyword)?.value.as_number()
 }
 
-fn device_table(out: &mut TomlOut, device: &DpDevice) {
+fn device_table(out: &mut TomlOut, device: &DpDevice, symbol: Option<&str>) {
     out.table("device");
     let model = text_of(device, "Model_Name").unwrap_or_default();
     for (key, keyword) in [
@@ -216,6 +272,9 @@ fn device_table(out: &mut TomlOut, device: &DpDevice) {
     }
     if let Some(info) = text_of(device, "Info_Text") {
         out.string("info", info);
+    }
+    if let Some(png) = symbol {
+        out.string("symbol", png);
     }
 }
 
@@ -275,7 +334,30 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes)
         out.key(&quote(baud.as_str()), max_tsdr.unwrap_or(0));
     }
     dpv1(out, device);
+    isochronous(out, device);
     diagnosis(out, device, notes);
+}
+
+/// `[profibus.isochronous]` when the file has Isochron_Mode_supp = 1.
+fn isochronous(out: &mut TomlOut, device: &DpDevice) {
+    if number_of(device, "Isochron_Mode_supp") != Some(1) {
+        return;
+    }
+    out.table("profibus.isochronous");
+    flags(out, device, &[("required", "Isochron_Mode_required")]);
+    numbers(
+        out,
+        device,
+        &[
+            ("tbase_dp", "TBASE_DP"),
+            ("tdp_max", "TDP_MAX"),
+            ("tdp_min", "TDP_MIN"),
+            ("tbase_io", "TBASE_IO"),
+            ("ti_min", "TI_MIN"),
+            ("to_min", "TO_MIN"),
+            ("t_pll_w_max", "T_PLL_W_MAX"),
+        ],
+    );
 }
 
 /// The file's name when it is one a GSD may have (8.3, a GSD extension),
@@ -452,13 +534,24 @@ fn user_prm(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     let prm = &device.user_prm_data;
     let constant = constant_bytes(prm, number_of(device, "DPV1_Slave") == Some(1));
     let max_length = number_of(device, "Max_User_Prm_Data_Len");
-    if !constant.is_empty() || max_length.is_some() {
+    let block_structure = match (
+        number_of(device, "Prm_Block_Structure_supp"),
+        number_of(device, "Prm_Block_Structure_req"),
+    ) {
+        (Some(1), Some(1)) => Some("required"),
+        (Some(1), _) => Some("supported"),
+        _ => None,
+    };
+    if !constant.is_empty() || max_length.is_some() || block_structure.is_some() {
         out.table("profibus.user_prm");
         if !constant.is_empty() {
             out.key("constant", list(constant.iter().map(|b| hex(*b))));
         }
         if let Some(max) = max_length {
             out.key("max_length", max);
+        }
+        if let Some(b) = block_structure {
+            out.string("block_structure", b);
         }
     }
     for field in &prm.fields {
@@ -534,7 +627,7 @@ fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
                 _ => None,
             })
             .collect();
-        match ints.as_slice() {
+        match joined(ints).as_slice() {
             [(min, max)] => out.key("range", format!("[{min}, {max}]")),
             _ => notes.unsaid(
                 &format!("parameter \"{name}\"'s allowed values"),
@@ -556,6 +649,21 @@ fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
             "the description's parameters have no key for it",
         );
     }
+}
+
+/// Ranges sorted and joined where they overlap or touch: a set of values
+/// that is one run (`66,66`, `1,2,3`) is one range, which the description
+/// can say (gsdc diff takes the two as the same values).
+fn joined(mut ranges: Vec<(i128, i128)>) -> Vec<(i128, i128)> {
+    ranges.sort_unstable();
+    let mut out: Vec<(i128, i128)> = Vec::with_capacity(ranges.len());
+    for (lo, hi) in ranges {
+        match out.last_mut() {
+            Some(last) if lo <= last.1.saturating_add(1) => last.1 = last.1.max(hi),
+            _ => out.push((lo, hi)),
+        }
+    }
+    out
 }
 
 /// Whether a value is among those a parameter allows (its texts may name
@@ -591,6 +699,8 @@ fn dpv1(out: &mut TomlOut, device: &DpDevice) {
             ("ident_maintenance", "Ident_Maintenance_supp"),
             ("data_types", "DPV1_Data_Types"),
             ("check_cfg_mode", "Check_Cfg_Mode"),
+            ("c1_read_write_required", "C1_Read_Write_required"),
+            ("c2_read_write_required", "C2_Read_Write_required"),
         ],
     );
     if number_of(device, "C2_Read_Write_supp").is_some_and(|n| n != 0) {
@@ -606,6 +716,41 @@ fn dpv1(out: &mut TomlOut, device: &DpDevice) {
             ],
         );
     }
+    alarms(out, device);
+}
+
+/// `[profibus.dpv1.alarms]`: the alarm keywords the file states (a kind's
+/// `_supp` or `_required` of 0 is what leaving it out says).
+fn alarms(out: &mut TomlOut, device: &DpDevice) {
+    let kinds = |required: bool| -> Vec<String> {
+        crate::ir::profibus::AlarmKind::ALL
+            .into_iter()
+            .filter(|k| {
+                let (supp, req) = k.keywords();
+                number_of(device, if required { req } else { supp }).is_some_and(|n| n != 0)
+            })
+            .map(|k| quote(k.name()))
+            .collect()
+    };
+    let (supported, required) = (kinds(false), kinds(true));
+    let modes = [
+        ("type_mode", "Alarm_Type_Mode_supp"),
+        ("extra_alarm_sap", "Extra_Alarm_SAP_supp"),
+    ];
+    let count = "Alarm_Sequence_Mode_Count";
+    let stated = modes.iter().any(|(_, k)| device.keyword(k).is_some());
+    if supported.is_empty() && required.is_empty() && !stated && device.keyword(count).is_none() {
+        return;
+    }
+    out.table("profibus.dpv1.alarms");
+    if !supported.is_empty() {
+        out.key("supported", list(supported));
+    }
+    if !required.is_empty() {
+        out.key("required", list(required));
+    }
+    flags(out, device, &modes);
+    numbers(out, device, &[("sequence_mode_count", count)]);
 }
 
 fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
@@ -619,21 +764,25 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     let bits: Vec<String> = d
         .bits
         .iter()
-        .filter_map(|b| {
-            if b.when_clear || b.help.is_some() {
+        .map(|b| {
+            if b.help.is_some() {
                 let what = if b.when_clear {
-                    "Unit_Diag_Not_Bit"
+                    "Unit_Diag_Not_Bit_Help"
                 } else {
                     "Unit_Diag_Bit_Help"
                 };
                 notes.unsaid(
                     &format!("{what}({})", b.bit),
                     &b.place,
-                    "the description's diagnosis bits are shown while set, without help",
+                    "the description's diagnosis bits have no help text",
                 );
             }
-            (!b.when_clear)
-                .then(|| format!("{{ bit = {}, text = {} }}", b.bit, quote(&b.text.primary)))
+            let clear = if b.when_clear { ", clear = true" } else { "" };
+            format!(
+                "{{ bit = {}, text = {}{clear} }}",
+                b.bit,
+                quote(&b.text.primary)
+            )
         })
         .collect();
     if !bits.is_empty() {
@@ -676,4 +825,17 @@ fn manual(out: &mut TomlOut) {
     out.comment("[manual]");
     out.comment("title = \"...\"");
     out.comment("languages = [\"en\"]");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::joined;
+
+    #[test]
+    fn a_set_of_values_in_one_run_is_one_range() {
+        assert_eq!(joined(vec![(66, 66), (66, 66)]), [(66, 66)]);
+        assert_eq!(joined(vec![(3, 3), (1, 1), (2, 2)]), [(1, 3)]);
+        assert_eq!(joined(vec![(0, 4), (2, 9)]), [(0, 9)]);
+        assert_eq!(joined(vec![(1, 1), (2, 2), (5, 5)]), [(1, 2), (5, 5)]);
+    }
 }

@@ -10,7 +10,10 @@
 //! their module and submodule ident numbers.
 
 mod dp;
+mod symbol;
 mod toml_out;
+
+pub use symbol::ImportedSymbol;
 
 use crate::device::{Device, Place};
 use crate::diag::{Diagnostic, Diagnostics};
@@ -25,6 +28,9 @@ pub struct Imported {
     /// The file's text as gsdc reads it, for the diagnostics' spans.
     pub text: String,
     pub diagnostics: Diagnostics,
+    /// The device symbol to write beside the description, under the name
+    /// its `[device] symbol` gives; none without a description.
+    pub symbol: Option<ImportedSymbol>,
     /// How many keywords and elements have no place in the description.
     pub unsaid: usize,
     /// How many changes the round trip found, by class.
@@ -46,14 +52,34 @@ impl RoundTrip {
     }
 }
 
+/// Gives the bytes of a file named beside the imported one (its device
+/// symbol's bitmap), or says why it cannot.
+pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
+
 /// Imports one GSD file, `file_name` its own name (it becomes the
-/// description's `file_name` and the reason under `[choices]`).
+/// description's `file_name` and the reason under `[choices]`), without
+/// the files beside it: a `Bitmap_Device` is left out (W600).
 pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
+    import_with(file_name, bytes, &|name: &str| {
+        Err(format!(
+            "{name}: gsdc::import::import reads no files; import_with does"
+        ))
+    })
+}
+
+/// [`import`] with the files beside the GSD: `files` gives the bytes of
+/// the bitmap `Bitmap_Device` names (`NAME.bmp`). The core reads nothing.
+pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported {
     let text = crate::gsd::decode(bytes).into_owned();
     let mut notes = Notes::new(&text);
     let device = crate::device::read(bytes, Some(file_name));
+    let mut symbol = None;
     let description = match &device {
-        Some(Device::Dp(d)) => dp::describe(d, file_name, &mut notes),
+        Some(Device::Dp(d)) => {
+            symbol = symbol::imported(d, files, &mut notes);
+            let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
+            dp::describe(d, file_name, symbol_name, &mut notes)
+        }
         Some(Device::Pn(_)) => {
             notes.refuse("gsdc imports GSD files only: the description cannot yet state a GSDML file's module and submodule ident numbers");
             None
@@ -66,7 +92,7 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     let mut round_trip = RoundTrip::default();
     let description = description.and_then(|toml| {
         let old = device.as_ref()?;
-        let changes = rebuilt_changes(file_name, &toml, old, &mut notes)?;
+        let changes = rebuilt_changes(file_name, &toml, symbol.as_ref(), old, &mut notes)?;
         for change in &changes {
             match change.class {
                 Class::Breaking => round_trip.breaking += 1,
@@ -80,6 +106,7 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
         round_trip.is_clean().then_some(toml)
     });
     Imported {
+        symbol: symbol.filter(|_| description.is_some()),
         description,
         text,
         unsaid: notes.unsaid,
@@ -88,13 +115,14 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     }
 }
 
-/// Loads the description, writes its GSD (the file a build writes; the
-/// layouts and the datasheet do not enter the comparison) and compares it
-/// with the file's device; `None` (and an error) when the description does
-/// not load.
+/// Loads the description (with its symbol), writes its GSD (the file a
+/// build writes; the layouts and the datasheet do not enter the
+/// comparison) and compares it with the file's device; `None` (and an
+/// error) when the description does not load.
 fn rebuilt_changes(
     file_name: &str,
     toml: &str,
+    symbol: Option<&ImportedSymbol>,
     old: &Device,
     notes: &mut Notes,
 ) -> Option<Vec<Change>> {
@@ -102,7 +130,11 @@ fn rebuilt_changes(
         "{}.toml",
         file_name.rsplit_once('.').map_or(file_name, |(s, _)| s)
     );
-    let (ir, diagnostics) = crate::load(&name, toml);
+    let files = |path: &str| match symbol {
+        Some(s) if s.file_name == path => Ok(s.png.clone()),
+        _ => Err(format!("{path}: the import wrote no such file")),
+    };
+    let (ir, diagnostics) = crate::load_with(&name, toml, &files);
     let errors: Vec<&Diagnostic> = diagnostics.errors().collect();
     let (Some(ir), true) = (ir, errors.is_empty()) else {
         notes.not_built(errors.into_iter());
@@ -152,6 +184,12 @@ impl Notes {
             .label("left out")
             .help("the round trip judges whether leaving it out changes the device (E601 if so); say it in the device file's manual chapter or extend the description");
         self.diagnostics.push(d);
+    }
+
+    /// Any other warning, at a place of the file.
+    fn warn_at(&mut self, diagnostic: Diagnostic, place: &Place) {
+        let span = self.span(place);
+        self.diagnostics.push(diagnostic.at_opt(span));
     }
 
     /// W600 without a place: a decision the import took for the file.

@@ -11,6 +11,9 @@ use std::fmt;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Profibus {
+    /// The GSD's strings may have Latin-1 characters (`charset =
+    /// "latin-1"`), written one byte each; else they are 7-bit ASCII.
+    pub latin1: bool,
     pub file_name: String,
     pub gsd_revision: u8,
     pub ident_number: u16,
@@ -47,6 +50,10 @@ pub struct Profibus {
     /// master in Clear) as well as one with zeros.
     pub fail_safe: bool,
     pub dpv1: Option<Dpv1>,
+    /// Isochronous mode, when the card has it.
+    pub isochronous: Option<Isochronous>,
+    /// User_Prm_Data in blocks, when stated.
+    pub prm_block_structure: Option<BlockStructure>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
     /// Max_Diag_Data_Len: the standard diagnosis and the device's block.
@@ -73,6 +80,38 @@ pub struct Dpv1 {
     /// DPV1_Data_Types and Check_Cfg_Mode, when stated.
     pub data_types: Option<bool>,
     pub check_cfg_mode: Option<bool>,
+    /// C1_Read_Write_required and C2_Read_Write_required, when stated.
+    pub c1_read_write_required: Option<bool>,
+    pub c2_read_write_required: Option<bool>,
+    pub alarms: Option<Alarms>,
+}
+
+pub use crate::description::dp::{AlarmKind, BlockStructure};
+
+/// The DPV1 alarms, as the description states them.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Alarms {
+    /// Each kind of [`AlarmKind::ALL`], in its order: supported, required.
+    pub supported: [bool; 6],
+    pub required: [bool; 6],
+    pub type_mode: Option<bool>,
+    pub sequence_mode_count: Option<u8>,
+    pub extra_alarm_sap: Option<bool>,
+}
+
+/// Isochronous mode: the GSD's timing keywords, in the GSD's units.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Isochronous {
+    pub required: Option<bool>,
+    pub tbase_dp: u32,
+    pub tdp_max: u16,
+    pub tdp_min: u16,
+    pub tbase_io: u32,
+    pub ti_min: u16,
+    pub to_min: u16,
+    pub t_pll_w_max: u16,
 }
 
 /// The DPV1 class 2 channel (MSAC_2).
@@ -448,12 +487,14 @@ impl Diagnosis {
     }
 }
 
-/// `Unit_Diag_Bit`: a bit's text, shown while it is set.
+/// `Unit_Diag_Bit`: a bit's text, shown while it is set; `clear`:
+/// `Unit_Diag_Not_Bit`, shown while it is clear.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct DiagnosisBit {
     pub bit: u16,
     pub text: Text,
+    pub clear: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -17,6 +17,7 @@ pub struct Checker {
     diagnostics: Diagnostics,
     /// Strings that go into a GSD must be short 7-bit ASCII.
     for_gsd: bool,
+    latin1: bool,
     /// The languages besides English that the description's texts use,
     /// each with where a text first gives it.
     languages: BTreeMap<String, Range<usize>>,
@@ -48,10 +49,13 @@ pub struct DefaultsOf {
 }
 
 impl Checker {
-    pub fn new(for_gsd: bool) -> Self {
+    /// `latin1`: the GSD's strings may have Latin-1's printable characters
+    /// (`[profibus] charset = "latin-1"`).
+    pub fn new(for_gsd: bool, latin1: bool) -> Self {
         Checker {
             diagnostics: Diagnostics::default(),
             for_gsd,
+            latin1,
             languages: BTreeMap::new(),
             decisions: Vec::new(),
             written_prefixes: BTreeMap::new(),
@@ -290,10 +294,12 @@ impl Checker {
         if !self.for_gsd {
             return;
         }
-        if let Some(bad) = s.chars().find(|c| !is_gsd_char(*c)) {
-            let help = match form {
-                GsdForm::Only => "GSD strings are 7-bit ASCII without `\"`",
-                GsdForm::OfText => "GSD strings are 7-bit ASCII without `\"`: give the GSD an ASCII form with `gsd = \"...\"`, and other languages by their code (`zh = \"...\"`)",
+        let latin1 = self.latin1;
+        if let Some(bad) = s.chars().find(|c| !is_gsd_char(*c, latin1)) {
+            let help = match (form, latin1) {
+                (_, true) => "this GSD's strings are Latin-1 without `\"` (charset = \"latin-1\"): write it in those characters",
+                (GsdForm::Only, false) => "GSD strings are 7-bit ASCII without `\"` (a card whose shipped GSD is Latin-1 states charset = \"latin-1\")",
+                (GsdForm::OfText, false) => "GSD strings are 7-bit ASCII without `\"`: give the GSD an ASCII form with `gsd = \"...\"`, and other languages by their code (`zh = \"...\"`)",
             };
             self.push(
                 Diagnostic::error(
@@ -304,7 +310,11 @@ impl Checker {
                     ),
                 )
                 .at(span.clone())
-                .label("not 7-bit printable ASCII, or a quote")
+                .label(if latin1 {
+                    "not printable Latin-1, or a quote"
+                } else {
+                    "not 7-bit printable ASCII, or a quote"
+                })
                 .help(help),
             );
         }
@@ -509,6 +519,26 @@ impl Checker {
         );
     }
 
+    /// E172: a keyword the GSD's revision does not have yet.
+    pub fn since_revision(&mut self, keyword: &str, span: Range<usize>, gsd_revision: u8) {
+        let since = crate::gsd::schema::keyword(keyword).revision;
+        if i64::from(gsd_revision) < since {
+            self.push(
+                Diagnostic::error(
+                    "E172",
+                    format!(
+                        "{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"
+                    ),
+                )
+                .at(span)
+                .label(format!("needs revision {since}"))
+                .help(format!(
+                    "set gsd_revision = {since} or later, or leave this out"
+                )),
+            );
+        }
+    }
+
     /// E105 for the second and later occurrences of a key.
     pub fn duplicate(&mut self, what: String, span: Range<usize>) {
         self.push(
@@ -528,8 +558,11 @@ enum GsdForm {
     OfText,
 }
 
-pub fn is_gsd_char(c: char) -> bool {
-    (' '..='~').contains(&c) && c != '"'
+/// A character of a GSD string: printable ASCII but `"`, and with
+/// `latin1` Latin-1's printable characters above it (U+00A0 to U+00FF; the
+/// C1 controls between are none).
+pub fn is_gsd_char(c: char, latin1: bool) -> bool {
+    ((' '..='~').contains(&c) && c != '"') || (latin1 && ('\u{A0}'..='\u{FF}').contains(&c))
 }
 
 /// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked

@@ -8,6 +8,7 @@ mod checks;
 mod choices;
 mod dp_modules;
 mod dp_params;
+mod dp_timing;
 mod gateway;
 mod manual;
 mod mappings;
@@ -46,7 +47,12 @@ pub fn lower(
     if let Some(missing) = missing_key(desc, text) {
         return (None, Diagnostics(vec![missing]));
     }
-    let mut cx = Checker::new(desc.profibus.is_some());
+    let latin1 = desc
+        .profibus
+        .as_ref()
+        .and_then(|p| p.get_ref().charset.as_ref())
+        .is_some_and(|c| *c.get_ref() == raw::Charset::Latin1);
+    let mut cx = Checker::new(desc.profibus.is_some(), latin1);
     // A gateway's description without a bus is told it needs [profibus] (E144).
     if desc.profibus.is_none() && desc.profinet.is_none() && desc.gateway.is_none() {
         let first_line = 0..text.find('\n').unwrap_or(text.len());

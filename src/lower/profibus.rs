@@ -121,7 +121,20 @@ pub fn lower(
     });
     let limits = limits(cx, p, &modules, gateway);
     let features = features(cx, p, gsd_revision);
+    let isochronous = p
+        .isochronous
+        .as_ref()
+        .map(|i| super::dp_timing::isochronous(cx, i, gsd_revision));
+    let prm_block_structure = p
+        .user_prm
+        .as_ref()
+        .and_then(|u| u.get_ref().block_structure.as_ref())
+        .map(|b| super::dp_timing::block_structure(cx, b, gsd_revision));
     Some(Profibus {
+        latin1: p
+            .charset
+            .as_ref()
+            .is_some_and(|c| *c.get_ref() == raw::Charset::Latin1),
         file_name: file_name(cx, &p.file_name),
         gsd_revision,
         ident_number: *ident.value.get_ref(),
@@ -150,6 +163,8 @@ pub fn lower(
         sync_mode,
         fail_safe,
         dpv1,
+        isochronous,
+        prm_block_structure,
         user_prm,
         max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
         bitmap_device: device
@@ -243,7 +258,7 @@ fn limits(
 fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
     let mut flag = |v: &Option<Spanned<bool>>, keyword: &str| {
         let v = v.as_ref()?;
-        since_revision(cx, keyword, v.span(), gsd_revision);
+        cx.since_revision(keyword, v.span(), gsd_revision);
         Some(*v.get_ref())
     };
     let set_slave_address = flag(&p.set_slave_address, "Set_Slave_Add_supp");
@@ -252,7 +267,7 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
     let publisher = flag(&p.publisher, "Publisher_supp");
     let mut number = |v: &Option<Spanned<u8>>, keyword: &str| {
         let v = v.as_ref()?;
-        since_revision(cx, keyword, v.span(), gsd_revision);
+        cx.since_revision(keyword, v.span(), gsd_revision);
         cx.gsd_number(v, keyword, keyword)
     };
     Features {
@@ -263,26 +278,6 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
         wd_base_1ms,
         publisher,
         modul_offset: number(&p.modul_offset, "Modul_Offset"),
-    }
-}
-
-/// E172: a keyword the GSD's revision does not have yet.
-fn since_revision(cx: &mut Checker, keyword: &str, span: Range<usize>, gsd_revision: u8) {
-    let since = crate::gsd::schema::keyword(keyword).revision;
-    if i64::from(gsd_revision) < since {
-        cx.push(
-            Diagnostic::error(
-                "E172",
-                format!(
-                    "{keyword} came with GSD revision {since}; this GSD is revision {gsd_revision}"
-                ),
-            )
-            .at(span)
-            .label(format!("needs revision {since}"))
-            .help(format!(
-                "set gsd_revision = {since} or later, or leave this out"
-            )),
-        );
     }
 }
 
@@ -593,7 +588,9 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
         .and_then(|m| crate::ir::numbering::digits(m, 10))
         .is_some_and(|m| m <= u32::from(MAX_MAIN_FAMILY));
     let subs_ok = parts.all(|s| {
-        !s.is_empty() && s.len() <= GSD_NAME_LEN && s.chars().all(super::checks::is_gsd_char)
+        !s.is_empty()
+            && s.len() <= GSD_NAME_LEN
+            && s.chars().all(|c| super::checks::is_gsd_char(c, false))
     });
     if !(main_ok && subs_ok) {
         cx.push(
@@ -668,6 +665,7 @@ fn lower_dpv1(
         None => None,
     };
     identification_and_maintenance(cx, d, near);
+    let required = super::dp_timing::channels_required(cx, d);
     Some(Dpv1 {
         c1_read_write: d.c1_read_write,
         c1_max_data_len,
@@ -677,6 +675,12 @@ fn lower_dpv1(
         ident_maintenance: d.ident_maintenance == Some(true),
         data_types: d.data_types.as_ref().map(|v| *v.get_ref()),
         check_cfg_mode: d.check_cfg_mode.as_ref().map(|v| *v.get_ref()),
+        c1_read_write_required: required.0,
+        c2_read_write_required: required.1,
+        alarms: d
+            .alarms
+            .as_ref()
+            .map(|a| super::dp_timing::alarms(cx, a.get_ref())),
     })
 }
 
@@ -982,8 +986,13 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
     let mut seen = std::collections::BTreeSet::new();
     let mut lowered = Vec::new();
     for b in &raw.bits {
-        if !seen.insert(*b.bit.get_ref()) {
-            cx.duplicate(format!("diagnosis bit {}", b.bit.get_ref()), b.bit.span());
+        // A bit may have a text while set and another while clear.
+        if !seen.insert((*b.bit.get_ref(), b.clear)) {
+            let when = if b.clear { " (clear)" } else { "" };
+            cx.duplicate(
+                format!("diagnosis bit {}{when}", b.bit.get_ref()),
+                b.bit.span(),
+            );
             continue;
         }
         lowered.extend(diagnosis_bit(cx, b, bits));
@@ -1018,6 +1027,7 @@ fn diagnosis_bit(cx: &mut Checker, b: &raw::dp::DiagnosisBit, bits: i64) -> Opti
     Some(DiagnosisBit {
         bit,
         text: cx.text(&b.text, Some(limit), "diagnosis text"),
+        clear: b.clear,
     })
 }
 

@@ -461,7 +461,7 @@ fn the_bitmap_depends_on_the_pixels_only() {
 
 // ---- the shipped symbols ------------------------------------------------
 
-fn png_pixels(png: &[u8]) -> Vec<[u8; 3]> {
+pub(super) fn png_pixels(png: &[u8]) -> Vec<[u8; 3]> {
     let mut decoder = png::Decoder::new(std::io::Cursor::new(png));
     decoder.set_transformations(png::Transformations::normalize_to_color8());
     let mut reader = decoder.read_info().unwrap();

@@ -39,15 +39,19 @@ pub fn is_bitmap(head: &[u8]) -> bool {
 }
 
 /// What the headers say of the picture.
-struct Picture {
-    pixel_offset: u32,
-    width: i64,
+pub(super) struct Picture {
+    /// The info header's size: the colour table follows it.
+    pub info_len: u32,
+    pub pixel_offset: u32,
+    pub width: i64,
     /// Negative: rows stored top-down.
-    height: i64,
+    pub height: i64,
     planes: u16,
-    bits_per_pixel: u16,
+    pub bits_per_pixel: u16,
     /// `biCompression`; 0 (none) in OS/2's header.
-    compression: u32,
+    pub compression: u32,
+    /// `biClrUsed`: the colour table's entries, 0 for all the depth allows.
+    pub colours_used: u32,
 }
 
 /// The findings on the bitmap `bytes`, which [`is_bitmap`] took for one.
@@ -62,7 +66,7 @@ pub fn check(bytes: &[u8]) -> Diagnostics {
     Diagnostics(problems)
 }
 
-fn picture(bytes: &[u8]) -> Result<Picture, String> {
+pub(super) fn picture(bytes: &[u8]) -> Result<Picture, String> {
     let info_len = bytes
         .get(FILE_HEADER_LEN..FILE_HEADER_LEN + 4)
         .map_or(0, le32);
@@ -79,12 +83,13 @@ fn picture(bytes: &[u8]) -> Result<Picture, String> {
         ));
     };
     let u16_at = |at: usize| u16::from_le_bytes([info[at], info[at + 1]]);
-    let (width, height, planes, bits_per_pixel, compression) = if info_len == 12 {
+    let (width, height, planes, bits_per_pixel, compression, colours_used) = if info_len == 12 {
         (
             i64::from(u16_at(4)),
             i64::from(u16_at(6)),
             u16_at(8),
             u16_at(10),
+            0,
             0,
         )
     } else {
@@ -95,20 +100,23 @@ fn picture(bytes: &[u8]) -> Result<Picture, String> {
             u16_at(12),
             u16_at(14),
             le32(&info[16..20]),
+            le32(&info[32..36]),
         )
     };
     Ok(Picture {
+        info_len,
         pixel_offset: le32(&bytes[10..14]),
         width,
         height,
         planes,
         bits_per_pixel,
         compression,
+        colours_used,
     })
 }
 
 /// Why no tool could show the picture, if it could not.
-fn unreadable(p: &Picture, file_len: usize) -> Option<String> {
+pub(super) fn unreadable(p: &Picture, file_len: usize) -> Option<String> {
     if p.planes != 1 {
         return Some(format!("it has {} colour planes; a bitmap has 1", p.planes));
     }

@@ -42,6 +42,9 @@
 //! caller can say so.
 
 pub mod check;
+mod from_bmp;
+
+pub use from_bmp::png_of_bitmap;
 
 use std::fmt;
 use std::io::Cursor;

@@ -396,7 +396,14 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
                 d.bits
                     .iter()
                     .filter(|b| (bit_of_byte..bit_of_byte + 8).contains(&b.bit))
-                    .map(|b| format!("Unit_Diag_Bit({}): {}", b.bit, lang.text(&b.text))),
+                    .map(|b| {
+                        let keyword = if b.clear {
+                            "Unit_Diag_Not_Bit"
+                        } else {
+                            "Unit_Diag_Bit"
+                        };
+                        format!("{keyword}({}): {}", b.bit, lang.text(&b.text))
+                    }),
             )
             .collect();
         let at = header + byte;
