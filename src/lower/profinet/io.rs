@@ -55,6 +55,7 @@ pub fn module(
             with_info(description, names.info),
         ),
         ident_number: ident_number(kind, layout),
+        submodule_ident_number: ident_number(kind, layout),
         layout,
         ident: code_name(kind, layout),
         input: items(Direction::In),
@@ -107,7 +108,8 @@ fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     })
 }
 
-/// Stable ident numbers, so firmware and GSDML agree without a table:
+/// gsdc's numbering, where the description states none: stable ident
+/// numbers, so firmware and GSDML agree without a table:
 /// 0x0000_0010 standard telegram 1, 0x0000_01nn nn PZD words, 0x0000_02nn
 /// the PKW and nn PZD words.
 fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
@@ -280,10 +282,10 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 /// these is exactly what the checker needs (`tests/gsdml_reader.rs` holds
 /// the two to it); with at most 20 words in a module and 16 ports it stays
 /// far below the limit of 1440.
-pub fn max_lengths(modules: &[Module], ports: u8) -> (u16, u16) {
+pub fn max_lengths(modules: &[Module], ports: usize) -> (u16, u16) {
     let module = |m: &Module| m.layout.bytes() + 2 + u16::from(m.access_point.is_some());
     let largest = modules.iter().map(module).max().unwrap_or(0);
-    let length = largest + 2 + u16::from(ports);
+    let length = largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX);
     (length, length)
 }
 
