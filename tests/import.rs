@@ -25,27 +25,22 @@ fn codes(imported: &Imported) -> Vec<&'static str> {
     imported.diagnostics.iter().map(|d| d.code).collect()
 }
 
-/// Every GSD of a shipped description that is not a gateway's imports, and
-/// the import's build is that GSD byte for byte below the header but for
-/// its `Bitmap_Device` line; every
-/// other file gsdc ships (a gateway's GSD, GSDML files) is refused, E602.
+/// Every GSD and GSDML file of a shipped description that is not a
+/// gateway's imports, and the import's build is that file byte for byte
+/// below the header but for the device symbol (a file of its own, which
+/// the import does not read: W600); a gateway's GSD is refused, E602.
 #[test]
-fn shipped_gsd_files_import_and_rebuild_byte_identical_below_the_header_but_the_bitmap() {
-    let mut imported_files = 0;
+fn shipped_device_files_import_and_rebuild_byte_identical_below_the_header_but_the_symbol() {
+    let mut imported_files = Vec::new();
     for (name, ir) in descriptions::load_shipped() {
         for file in gsdc::compile(&ir).unwrap() {
             if !matches!(file.kind, ArtifactKind::Gsd | ArtifactKind::Gsdml) {
                 continue;
             }
             let imported = import(&file.file_name, &file.contents);
-            if file.kind == ArtifactKind::Gsdml || ir.gateway.is_some() {
+            if ir.gateway.is_some() {
                 assert_eq!(imported.description, None, "{}", file.file_name);
-                assert!(
-                    codes(&imported).contains(&"E602"),
-                    "{}: {:?}",
-                    file.file_name,
-                    imported.diagnostics
-                );
+                assert!(codes(&imported).contains(&"E602"), "{}", file.file_name);
                 continue;
             }
             let toml = imported
@@ -53,34 +48,117 @@ fn shipped_gsd_files_import_and_rebuild_byte_identical_below_the_header_but_the_
                 .as_deref()
                 .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
             assert!(imported.round_trip.is_clean(), "{name}");
+            assert!(codes(&imported).iter().all(|c| *c == "W600"));
             let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", toml);
             let rebuilt = rebuilt.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
-            let (file_name, gsd) =
-                descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsd);
+            let (file_name, text) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), file.kind);
             assert_eq!(file_name, file.file_name);
             let original = String::from_utf8(file.contents).unwrap();
-            // The device symbol is a file of its own, which the import
-            // does not read (W600): its line is the one difference.
-            let without_bitmap = |text: &str| {
-                text.split_inclusive('\n')
-                    .filter(|l| !l.starts_with("Bitmap_Device"))
-                    .collect::<String>()
+            let bus = match file.kind {
+                ArtifactKind::Gsd => {
+                    assert_eq!(body(&text), without_symbol(body(&original)), "{name}");
+                    assert!(toml.contains(&format!(
+                        "ident_number = {{ value = 0x{:04X} }}",
+                        rebuilt.profibus.as_ref().unwrap().ident_number
+                    )));
+                    "profibus"
+                }
+                _ => {
+                    assert_eq!(
+                        gsdml_body(&text),
+                        without_symbol(&gsdml_body(&original)),
+                        "{name}"
+                    );
+                    assert!(toml.contains("[profinet.ident_numbers]\ndap = 0x00000001\n"));
+                    "profinet"
+                }
             };
-            assert_eq!(body(&gsd), without_bitmap(body(&original)), "{name}");
-            assert!(codes(&imported).iter().all(|c| *c == "W600"));
             // Everything imported is marked as the description's own choice.
-            assert!(toml.contains(&format!(
-                "\"profibus\" = \"imported from {}\"",
-                file.file_name
-            )));
-            assert!(toml.contains(&format!(
-                "ident_number = {{ value = 0x{:04X} }}",
-                rebuilt.profibus.as_ref().unwrap().ident_number
-            )));
-            imported_files += 1;
+            assert!(toml.contains(&format!("\"{bus}\" = \"imported from {}\"", file.file_name)));
+            imported_files.push(file.file_name);
         }
     }
-    assert_eq!(imported_files, 2, "9KDP1.GSD and MD810DP.GSD");
+    imported_files.sort();
+    assert_eq!(
+        imported_files,
+        [
+            "9KDP1.GSD",
+            "GSDML-V2.32-INOVANCE-MD810-20261122.xml",
+            "GSDML-V2.32-MEGMEET-MV800-20230830.xml",
+            "MD810DP.GSD"
+        ]
+    );
+}
+
+/// A GSDML file without gsdc's header comments.
+fn gsdml_body(gsdml: &str) -> String {
+    gsdml
+        .split_inclusive('\n')
+        .filter(|l| !l.starts_with("<!--"))
+        .collect()
+}
+
+/// A device file without the lines of its device symbol: a GSD's
+/// `Bitmap_Device`, a GSDML file's `Graphics` and `GraphicsList`.
+fn without_symbol(text: &str) -> String {
+    let mut in_graphics = false;
+    text.split_inclusive('\n')
+        .filter(|l| {
+            let line = l.trim();
+            let starts = line == "<Graphics>" || line == "<GraphicsList>";
+            let ends = line == "</Graphics>" || line == "</GraphicsList>";
+            let skip = in_graphics || starts || l.starts_with("Bitmap_Device");
+            in_graphics = (in_graphics || starts) && !ends;
+            !skip
+        })
+        .collect()
+}
+
+/// The ident numbers a GSDML file has are the import's, wherever they
+/// differ from gsdc's numbering: MV810's with other module, submodule, DAP
+/// and port numbers rebuilds to the same file.
+#[test]
+fn a_gsdml_files_own_ident_numbers_are_imported() {
+    let ir = descriptions::load("mv810-pnet02.toml");
+    let (name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let renumbered = gsdml
+        .replace(
+            r#"ModuleIdentNumber="0x00000201""#,
+            r#"ModuleIdentNumber="0x00004711""#,
+        )
+        .replace(
+            r#"ModuleIdentNumber="0x00000001""#,
+            r#"ModuleIdentNumber="0x00010000""#,
+        )
+        .replace(
+            r#"SubmoduleIdentNumber="0x00000201""#,
+            r#"SubmoduleIdentNumber="0x00004712""#,
+        )
+        .replace(
+            r#"SubmoduleIdentNumber="0x00008002""#,
+            r#"SubmoduleIdentNumber="0x00000002""#,
+        );
+    assert_eq!(renumbered.matches("0x0000471").count(), 2);
+    let imported = import(&name, renumbered.as_bytes());
+    let toml = imported
+        .description
+        .as_deref()
+        .unwrap_or_else(|| panic!("{:#?}", imported.diagnostics));
+    for stated in [
+        "dap = 0x00010000",
+        "dap_submodule = 0x00000001",
+        "ports = [0x00008001, 0x00000002]",
+        "pkw_pzd1 = 0x00004711",
+        "submodules = { pkw_pzd1 = 0x00004712 }",
+    ] {
+        assert!(toml.contains(stated), "{stated} not in\n{toml}");
+    }
+    let (rebuilt, _) = descriptions::load_text("imported.toml", toml);
+    let (_, text) = descriptions::one(
+        gsdc::compile(&rebuilt.unwrap()).unwrap(),
+        ArtifactKind::Gsdml,
+    );
+    assert_eq!(gsdml_body(&text), without_symbol(&gsdml_body(&renumbered)));
 }
 
 /// A corpus file and what its import says.
@@ -223,7 +301,8 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
 }
 
 /// The command: writes the description, never over a file; a GSDML file
-/// is refused, exit 1, nothing written.
+/// the format cannot say (ABB's FENA, three access points) is refused at
+/// the element that stops it, exit 1, nothing written.
 #[test]
 fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     let dir = support::scratch("command");
@@ -259,6 +338,8 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
         refused_out.as_os_str(),
     ]);
     assert_eq!(refused.status.code(), Some(1));
-    assert!(support::stderr(&refused).contains("error[E602]"));
+    assert!(support::stderr(&refused).contains(
+        "error[E602]: cannot import this file: 3 device access points: the description has one (at ApplicationProcess/DeviceAccessPointList/DeviceAccessPointItem[FENA_DAP_V4])"
+    ));
     assert!(!refused_out.exists());
 }

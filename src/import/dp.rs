@@ -669,7 +669,7 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
 
 /// `[manual]`, for the maintainer to fill, as comments: its title and
 /// languages cannot be imported, and the description must load without.
-fn manual(out: &mut TomlOut) {
+pub(super) fn manual(out: &mut TomlOut) {
     out.comment("");
     out.comment("Fill in the manual the values come from, then confirm each value under");
     out.comment("[choices] against it and remove its mark:");

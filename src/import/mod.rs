@@ -6,10 +6,12 @@
 //! round trip shows it changes nothing a master acts on. Pure: bytes in,
 //! text and diagnostics out.
 //!
-//! GSDML files are refused for now (E602): the description cannot yet say
-//! their module and submodule ident numbers.
+//! A GSDML file is written as the PROFINET part of a description
+//! (`pn`); a GSD and a GSDML file of one card as one description with both
+//! buses.
 
 mod dp;
+mod pn;
 mod toml_out;
 
 use crate::device::{Device, Place};
@@ -46,18 +48,21 @@ impl RoundTrip {
     }
 }
 
-/// Imports one GSD file, `file_name` its own name (it becomes the
-/// description's `file_name` and the reason under `[choices]`).
+/// Imports one GSD or GSDML file, `file_name` its own name (a GSD's
+/// becomes the description's `file_name`, a GSDML file's name its vendor,
+/// family and date; either is the reason under `[choices]`).
 pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
-    let text = crate::gsd::decode(bytes).into_owned();
-    let mut notes = Notes::new(&text);
     let device = crate::device::read(bytes, Some(file_name));
+    let text = match &device {
+        Some(Device::Pn(_)) => crate::gsdml::decode(bytes)
+            .map(|t| t.into_owned())
+            .unwrap_or_default(),
+        _ => crate::gsd::decode(bytes).into_owned(),
+    };
+    let mut notes = Notes::new(&text);
     let description = match &device {
         Some(Device::Dp(d)) => dp::describe(d, file_name, &mut notes),
-        Some(Device::Pn(_)) => {
-            notes.refuse("gsdc imports GSD files only: the description cannot yet state a GSDML file's module and submodule ident numbers");
-            None
-        }
+        Some(Device::Pn(d)) => pn::describe(d, file_name, &mut notes),
         None => {
             notes.refuse("not a GSD or GSDML file gsdc can read: `gsdc check` says why");
             None
@@ -88,10 +93,10 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     }
 }
 
-/// Loads the description, writes its GSD (the file a build writes; the
-/// layouts and the datasheet do not enter the comparison) and compares it
-/// with the file's device; `None` (and an error) when the description does
-/// not load.
+/// Loads the description, writes its GSD or GSDML file (the file a build
+/// writes; the layouts and the datasheet do not enter the comparison) and
+/// compares it with the file's device; `None` (and an error) when the
+/// description does not load.
 fn rebuilt_changes(
     file_name: &str,
     toml: &str,
@@ -108,11 +113,21 @@ fn rebuilt_changes(
         notes.not_built(errors.into_iter());
         return None;
     };
-    let profibus = ir.profibus.as_ref()?;
-    let gsd = crate::emit::gsd::emit(&ir, profibus);
-    let new = crate::device::read(gsd.as_bytes(), Some(&profibus.file_name))?;
+    let (file, name) = match old {
+        Device::Dp(_) => {
+            let profibus = ir.profibus.as_ref()?;
+            (crate::emit::gsd::emit(&ir, profibus), &profibus.file_name)
+        }
+        Device::Pn(_) => {
+            let profinet = ir.profinet.as_ref()?;
+            (crate::emit::gsdml::emit(&ir, profinet), &profinet.file_name)
+        }
+    };
+    let new = crate::device::read(file.as_bytes(), Some(name))?;
     crate::diff::compare(old, &new)
 }
+
+const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML file whose modules carry its telegram (PKW and PZD words, standard telegram 1)";
 
 /// The diagnostics of one import, each at a line of the file.
 struct Notes {
@@ -166,8 +181,21 @@ impl Notes {
     /// E602: a file the description format cannot say.
     fn refuse(&mut self, why: &str) {
         self.diagnostics.push(
-            Diagnostic::error("E602", format!("cannot import this file: {why}"))
-                .help("gsdc import takes a drive option card's GSD file"),
+            Diagnostic::error("E602", format!("cannot import this file: {why}")).help(REFUSED_HELP),
+        );
+    }
+
+    /// E602 at the element (or line) that stops the import.
+    fn refuse_at(&mut self, why: &str, place: &Place) {
+        let at = place
+            .path
+            .as_ref()
+            .map_or(String::new(), |p| format!(" (at {})", &**p));
+        self.diagnostics.push(
+            Diagnostic::error("E602", format!("cannot import this file: {why}{at}"))
+                .at_opt(self.span(place))
+                .label("no place in the description")
+                .help(REFUSED_HELP),
         );
     }
 

@@ -19,6 +19,8 @@ mod interface;
 mod io;
 mod records;
 
+pub(crate) use io::{description as module_description, info_prefix, pkw_words};
+
 /// `info` after a notice that the file is a draft, naming the identity
 /// numbers that are placeholders, while any is one: the DAP's InfoText
 /// (and DeviceIdentity's, the same text) is what TIA Portal's catalog shows

@@ -98,6 +98,13 @@ pub fn profidrive_telegram_1_name() -> Text {
     Text::phrase(files::STANDARD_TELEGRAM_1)
 }
 
+/// What `with_info` puts before the description's words in language
+/// `code`: gsdc's description and the full stop (an import strips it).
+pub(crate) fn info_prefix(code: &str, gsdc: &str) -> String {
+    let lang = crate::i18n::Lang::of(code).unwrap_or(crate::i18n::Lang::En);
+    files::with_info(lang, gsdc, "")
+}
+
 /// gsdc's description, then the description's own words after a full stop.
 fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     let Some(info) = info else {
@@ -138,7 +145,7 @@ fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
 
 /// What a module carries, in gsdc's words; a vendor's telegram 1 under the
 /// name the description gives it, in each of the name's languages.
-fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
+pub(crate) fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
     let bytes = layout.bytes();
     let n = layout.pzd_words;
     match kind {
@@ -209,7 +216,7 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
 }
 
 /// The PKW channel's words, the same both ways: TextId tag and name.
-fn pkw_words(kind: PkwKind) -> &'static [(&'static str, Phrase)] {
+pub(crate) fn pkw_words(kind: PkwKind) -> &'static [(&'static str, Phrase)] {
     match kind {
         PkwKind::None => &[],
         PkwKind::PkeIndPwe => &[
