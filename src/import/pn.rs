@@ -116,6 +116,7 @@ pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Opti
     let records = Records::of(&modules);
     telegram_table(&mut out, &modules, pkw);
     records.write_mappings(&mut out, notes);
+    records.write_settings(&mut out, &modules, notes);
     profinet(&mut out, device, dap, &name, &modules, notes);
     records.write_indexes(&mut out);
     module_texts(&mut out, &modules, notes);
@@ -451,8 +452,8 @@ fn telegram_table(out: &mut TomlOut, modules: &[Recognised], pkw: PkwKind) {
 /// The modules' parameter records by kind, as gsdc writes them: a record
 /// whose entries grow with the module's PZD words is a PZD mapping (the
 /// first one controller to drive, the second drive to controller), one of
-/// numbered entries the same in every module the custom indexes, any other
-/// the settings.
+/// several numbered entries the same in every module the custom indexes,
+/// any other the settings.
 #[derive(Default)]
 struct Records<'a> {
     pzd_out: Option<(&'a Record, Pattern)>,
@@ -494,7 +495,10 @@ impl<'a> Records<'a> {
                     records.pzd_out = Some((largest, p))
                 }
                 (Some(p), true) if records.pzd_in.is_none() => records.pzd_in = Some((largest, p)),
-                (Some(p), false) if records.dpv1_index.is_none() => {
+                // One entry could be either: a setting is the plainer.
+                (Some(p), false)
+                    if records.dpv1_index.is_none() && largest.data.fields.len() > 1 =>
+                {
                     records.dpv1_index = Some((largest, p))
                 }
                 _ => records.settings.push(largest),
@@ -523,12 +527,39 @@ impl<'a> Records<'a> {
             defaults_and_values(out, &record.data.fields, notes);
             out.string("set_at", "master");
         }
+    }
+
+    /// `[[settings]]`, one per entry of the settings record; an entry a
+    /// module fixes (not changeable) is the value each kind of module fixes
+    /// (`per_module`), its choices and default those of a module that lets
+    /// the user change it.
+    fn write_settings(&self, out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         for record in &self.settings {
             for field in &record.data.fields {
+                let in_modules: Vec<(ModuleKind, &Field)> = modules
+                    .iter()
+                    .filter_map(|m| {
+                        let r = m.data.records.iter().find(|r| r.index == record.index)?;
+                        let f = r
+                            .data
+                            .fields
+                            .iter()
+                            .find(|f| f.byte_offset == field.byte_offset)?;
+                        Some((m.kind, f))
+                    })
+                    .collect();
+                let changeable = in_modules.iter().map(|(_, f)| *f).find(|f| f.changeable);
                 out.array_item("settings");
                 out.key("name", text(&field.name));
-                defaults_and_values(out, std::slice::from_ref(field), notes);
+                defaults_and_values(
+                    out,
+                    std::slice::from_ref(changeable.unwrap_or(field)),
+                    notes,
+                );
                 out.string("set_at", "master");
+                if changeable.is_none() || in_modules.iter().any(|(_, f)| !f.changeable) {
+                    per_module(out, &in_modules);
+                }
             }
         }
     }
@@ -614,6 +645,30 @@ fn with_placeholder(text: &str, n: u32) -> Option<String> {
     ))
 }
 
+/// `per_module`: the value each kind of module fixes, where all modules of
+/// the kind fix one value (the user's value where they do not fix it).
+fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
+    let fixed = |kind: ModuleKind| -> Option<String> {
+        let values: Vec<Option<&Value>> = in_modules
+            .iter()
+            .filter(|(k, _)| *k == kind)
+            .map(|(_, f)| (!f.changeable).then_some(f.default.as_ref()).flatten())
+            .collect();
+        match values.first()? {
+            Some(Value::Int(v)) if values.iter().all(|w| *w == values[0]) => Some(v.to_string()),
+            _ => None,
+        }
+    };
+    let parts: Vec<String> = [
+        ("user_defined", ModuleKind::Pzd),
+        ("standard_telegram_1", ModuleKind::StandardTelegram1),
+    ]
+    .into_iter()
+    .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
+    .collect();
+    out.key("per_module", format!("{{ {} }}", parts.join(", ")));
+}
+
 /// `default` (or `defaults`) and `range` or `choices` of entries.
 fn defaults_and_values(out: &mut TomlOut, fields: &[Field], notes: &mut Notes) {
     let defaults: Vec<String> = fields
@@ -628,17 +683,14 @@ fn defaults_and_values(out: &mut TomlOut, fields: &[Field], notes: &mut Notes) {
         false => out.key("defaults", list(&defaults)),
     }
     let first = &fields[0];
-    for f in fields
-        .iter()
-        .filter(|f| !f.changeable || f.data_type != "Unsigned16")
-    {
+    for f in fields.iter().filter(|f| f.data_type != "Unsigned16") {
         notes.unsaid(
             &format!(
-                "record entry \"{}\" ({}, changeable {})",
-                f.name.primary, f.data_type, f.changeable
+                "record entry \"{}\" of type {}",
+                f.name.primary, f.data_type
             ),
             &f.place,
-            "the description's record entries are Unsigned16 the user may change",
+            "the description's record entries are Unsigned16",
         );
     }
     if !first.choices.is_empty() {
