@@ -215,5 +215,6 @@ pub const RULES: &[Rule] = &[
     rule("W600", "not imported: no place in the description"),
     rule("E601", "the import builds another device"),
     rule("E602", "a file gsdc cannot import"),
+    rule("E603", "a GSD and a GSDML file that disagree"),
     rule("E900", "generated file breaks a rule"),
 ];

@@ -4,7 +4,7 @@
 //! table of drive files is this module's output.
 
 use crate::support::{self, descriptions};
-use gsdc::import::{import, Imported};
+use gsdc::import::{import, import_both, Imported};
 use gsdc::ArtifactKind;
 
 /// A GSD without its header comment (the lines up to the second `;===`
@@ -193,6 +193,95 @@ fn a_gsdml_files_own_ident_numbers_are_imported() {
     assert_eq!(gsdml_body(&text), without_symbol(&gsdml_body(&renumbered)));
 }
 
+/// A card's GSD and GSDML file together give one description with both
+/// buses, whose build is each file byte for byte below the header but for
+/// the symbol: the GSDML's mappings and settings make the GSD's
+/// User_Prm_Data too (MD810's, and the fixtures': PROFIdrive's, settings a
+/// module fixes).
+#[test]
+fn a_gsd_and_a_gsdml_file_import_as_one_description_of_both_buses() {
+    let mut imported = Vec::new();
+    for (name, ir) in descriptions::all_valid() {
+        if ir.profibus.is_none() || ir.profinet.is_none() || ir.gateway.is_some() {
+            continue;
+        }
+        let files = gsdc::compile(&ir).unwrap();
+        let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+        let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+        let both = import_both((&gsd_name, gsd.as_bytes()), (&gsdml_name, gsdml.as_bytes()));
+        let toml = both.description.as_deref().unwrap_or_else(|| {
+            panic!(
+                "{name}: {:#?} {:#?}",
+                both.gsd.diagnostics, both.gsdml.diagnostics
+            )
+        });
+        assert!(both.gsd.round_trip.is_clean() && both.gsdml.round_trip.is_clean());
+        let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", toml);
+        let rebuilt = rebuilt.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
+        let files = gsdc::compile(&rebuilt).unwrap();
+        let (_, new_gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+        let (_, new_gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+        assert_eq!(body(&new_gsd), without_symbol(body(&gsd)), "{name}");
+        assert_eq!(
+            gsdml_body(&new_gsdml),
+            without_symbol(&gsdml_body(&gsdml)),
+            "{name}"
+        );
+        for mark in ["profibus", "profinet"] {
+            assert!(
+                toml.contains(&format!("\"{mark}\" = \"imported from")),
+                "{name}: {mark}"
+            );
+        }
+        // The GSD names the model and revision: the GSDML's stand-ins are gone.
+        assert!(!toml.contains("\"device.model\""), "{name}");
+        imported.push(name);
+    }
+    assert_eq!(
+        imported,
+        [
+            "md810dp.toml",
+            "ax200.toml",
+            "no_warnings.toml",
+            "profidrive.toml"
+        ]
+    );
+}
+
+/// Identity both files carry must agree: a GSDML file of another vendor
+/// is an error at the GSD's line naming the GSDML's element, and nothing
+/// is imported.
+#[test]
+fn a_gsd_and_a_gsdml_file_that_disagree_are_refused_naming_both_places() {
+    let ir = descriptions::load("md810dp.toml");
+    let files = gsdc::compile(&ir).unwrap();
+    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+    let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    let other = gsdml.replacen(
+        r#"<VendorName Value="Inovance"/>"#,
+        r#"<VendorName Value="Acme"/>"#,
+        1,
+    );
+    let both = import_both((&gsd_name, gsd.as_bytes()), (&gsdml_name, other.as_bytes()));
+    assert_eq!(both.description, None);
+    let e603: Vec<&gsdc::Diagnostic> = both
+        .gsd
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "E603")
+        .collect();
+    assert_eq!(e603.len(), 1, "{:#?}", both.gsd.diagnostics);
+    assert!(e603[0].message.contains("Vendor_Name = \"Inovance\" here"));
+    assert!(e603[0].message.contains(&format!(
+        "DeviceIdentity/VendorName@Value = \"Acme\" in {gsdml_name}, line "
+    )));
+    assert!(e603[0].message.contains(", at DeviceIdentity"));
+    let line = gsd[..e603[0].span.clone().unwrap().start]
+        .matches('\n')
+        .count();
+    assert!(gsd.lines().nth(line).unwrap().starts_with("Vendor_Name"));
+}
+
 /// A corpus file and what its import says.
 struct Row {
     file: String,
@@ -374,4 +463,34 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
         "error[E602]: cannot import this file: 3 device access points: the description has one (at ApplicationProcess/DeviceAccessPointList/DeviceAccessPointItem[FENA_DAP_V4])"
     ));
     assert!(!refused_out.exists());
+    // Two files: a card's GSD and GSDML file, in either order, make one
+    // description; two GSD files are a usage error.
+    let md810 = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let mut paths = Vec::new();
+    for kind in [ArtifactKind::Gsdml, ArtifactKind::Gsd] {
+        let (name, text) = descriptions::one(md810.clone(), kind);
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        paths.push(path);
+    }
+    let both_out = dir.join("md810.toml");
+    let both = support::gsdc([
+        "import".as_ref(),
+        paths[0].as_os_str(),
+        paths[1].as_os_str(),
+        "--out".as_ref(),
+        both_out.as_os_str(),
+    ]);
+    assert_eq!(both.status.code(), Some(0), "{}", support::stderr(&both));
+    let written = std::fs::read_to_string(&both_out).unwrap();
+    assert!(written.contains("[profibus]") && written.contains("[profinet]"));
+    let two_gsds = support::gsdc([
+        "import".as_ref(),
+        paths[1].as_os_str(),
+        gsd_path.as_os_str(),
+        "--out".as_ref(),
+        dir.join("two.toml").as_os_str(),
+    ]);
+    assert_eq!(two_gsds.status.code(), Some(2));
+    assert!(support::stderr(&two_gsds).contains("two files are a card's GSD and its GSDML file"));
 }

@@ -1,6 +1,7 @@
-//! `gsdc import FILE... --out DESC.toml`: a card's GSD file written back as
-//! a description (`crate::import`), whose build `gsdc diff` finds the same
-//! device; the description is written only then, and never over a file.
+//! `gsdc import FILE... --out DESC.toml`: a card's GSD or GSDML file, or
+//! both, written back as one description (`crate::import`), whose build
+//! `gsdc diff` finds the same device as each file; the description is
+//! written only then, and never over a file.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
 use crate::import::Imported;
@@ -10,6 +11,8 @@ use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Examples:
   gsdc import vendor/MD810DP.GSD --out descriptions/md810dp.toml
+  gsdc import vendor/GSDML-V2.32-MEGMEET-MV800-20230830.xml --out descriptions/mv810.toml
+  gsdc import vendor/MD810DP.GSD vendor/GSDML-V2.32-INOVANCE-MD810-20261122.xml --out md810.toml
   gsdc build descriptions/md810dp.toml --out dist && gsdc diff vendor/MD810DP.GSD dist/MD810DP.GSD
 
 Exit codes: 0 written; 1 the file cannot be imported, or its import would build
@@ -17,8 +20,9 @@ another device (nothing written); 2 usage or I/O error (DESC.toml exists already
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The card's GSD file (a GSDML file is refused for now).
-    #[arg(required = true, value_name = "FILE")]
+    /// The card's GSD file, its GSDML file, or both (one description with
+    /// both buses).
+    #[arg(required = true, num_args = 1..=2, value_name = "FILE")]
     files: Vec<PathBuf>,
     /// The description to write; it must not exist.
     #[arg(long, short, value_name = "DESC.toml")]
@@ -26,29 +30,37 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Status {
-    if args.files.len() > 1 {
-        warn("error: gsdc import takes one card's GSD file; a GSDML file cannot be imported yet");
-        return Status::UsageOrIo;
+    let mut files = Vec::new();
+    for path in &args.files {
+        match read(path) {
+            Ok(bytes) => files.push((path, bytes)),
+            Err(status) => return status,
+        }
     }
-    let path = &args.files[0];
-    let bytes = match crate::output::read_device_file(path) {
-        Ok((_, bytes)) => bytes,
-        Err(crate::output::ReadError::Io(e)) => {
-            warn(&format!("error: {}: {e}", display_name(path)));
-            return Status::UsageOrIo;
+    let description = match files.as_slice() {
+        [(path, bytes)] => {
+            let imported = crate::import::import(file_name(path), bytes);
+            report(&display_name(path), &imported);
+            imported.description
         }
-        Err(crate::output::ReadError::TooLarge(d)) => {
-            warn(&format!("error: {}: {}", display_name(path), d.message));
-            return Status::InputErrors;
-        }
+        [a, b] => match gsd_first(a, b) {
+            Some(((gsd, gsd_bytes), (gsdml, gsdml_bytes))) => {
+                let both = crate::import::import_both(
+                    (file_name(gsd), gsd_bytes),
+                    (file_name(gsdml), gsdml_bytes),
+                );
+                report(&display_name(gsd), &both.gsd);
+                report(&display_name(gsdml), &both.gsdml);
+                both.description
+            }
+            None => {
+                warn("error: two files are a card's GSD and its GSDML file");
+                return Status::UsageOrIo;
+            }
+        },
+        _ => return Status::UsageOrIo,
     };
-    let file_name = path
-        .file_name()
-        .and_then(|n| n.to_str())
-        .unwrap_or("IMPORTED.GSD");
-    let imported = crate::import::import(file_name, &bytes);
-    report(&display_name(path), &imported);
-    let Some(description) = &imported.description else {
+    let Some(description) = description else {
         return Status::InputErrors;
     };
     match write_new(&args.out, description.as_bytes()) {
@@ -59,6 +71,40 @@ pub fn run(args: &Args) -> Status {
         Err(e) => {
             warn(&format!("error: {}: {e}", display_name(&args.out)));
             Status::UsageOrIo
+        }
+    }
+}
+
+type File<'a> = (&'a PathBuf, Vec<u8>);
+
+/// The GSD and the GSDML file of two, told apart by their content.
+fn gsd_first<'a, 'b>(a: &'b File<'a>, b: &'b File<'a>) -> Option<(&'b File<'a>, &'b File<'a>)> {
+    use crate::file_kind::{detect, FileKind};
+    let kind = |f: &File| detect(&f.1[..f.1.len().min(crate::file_kind::HEAD_BYTES)]);
+    match (kind(a), kind(b)) {
+        (FileKind::Gsd, FileKind::Gsdml) => Some((a, b)),
+        (FileKind::Gsdml, FileKind::Gsd) => Some((b, a)),
+        _ => None,
+    }
+}
+
+fn file_name(path: &Path) -> &str {
+    path.file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("IMPORTED.GSD")
+}
+
+/// A device file's bytes, or the status of the error said.
+fn read(path: &Path) -> Result<Vec<u8>, Status> {
+    match crate::output::read_device_file(path) {
+        Ok((_, bytes)) => Ok(bytes),
+        Err(crate::output::ReadError::Io(e)) => {
+            warn(&format!("error: {}: {e}", display_name(path)));
+            Err(Status::UsageOrIo)
+        }
+        Err(crate::output::ReadError::TooLarge(d)) => {
+            warn(&format!("error: {}: {}", display_name(path), d.message));
+            Err(Status::InputErrors)
         }
     }
 }

@@ -66,7 +66,7 @@ const FIXED: &[(&str, i64)] = &[("protocol_ident", 0), ("station_type", 0), ("fm
 
 /// The description of `device`, read from `file`; `None` when the file is
 /// not a drive's (no module is a telegram of PKW and PZD words).
-pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Option<String> {
+pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Option<TomlOut> {
     let telegram = telegram(device);
     let Some(pzd_words) = telegram.pzd_words else {
         notes.refuse(
@@ -105,7 +105,7 @@ pub(super) fn describe(device: &DpDevice, file: &str, notes: &mut Notes) -> Opti
     for table in ["device", "telegram", "profibus"] {
         out.key(&quote(table), &reason);
     }
-    Some(out.finish())
+    Some(out)
 }
 
 /// The PKW channel's presence and the most PZD words of the modules whose
@@ -670,6 +670,7 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
 /// `[manual]`, for the maintainer to fill, as comments: its title and
 /// languages cannot be imported, and the description must load without.
 pub(super) fn manual(out: &mut TomlOut) {
+    out.comment_block();
     out.comment("");
     out.comment("Fill in the manual the values come from, then confirm each value under");
     out.comment("[choices] against it and remove its mark:");

@@ -10,9 +10,14 @@
 //! (`pn`); a GSD and a GSDML file of one card as one description with both
 //! buses.
 
+mod both;
 mod dp;
 mod pn;
 mod toml_out;
+
+use toml_out::TomlOut;
+
+pub use both::{import_both, Both};
 
 use crate::device::{Device, Place};
 use crate::diag::{Diagnostic, Diagnostics};
@@ -52,17 +57,11 @@ impl RoundTrip {
 /// becomes the description's `file_name`, a GSDML file's name its vendor,
 /// family and date; either is the reason under `[choices]`).
 pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
-    let device = crate::device::read(bytes, Some(file_name));
-    let text = match &device {
-        Some(Device::Pn(_)) => crate::gsdml::decode(bytes)
-            .map(|t| t.into_owned())
-            .unwrap_or_default(),
-        _ => crate::gsd::decode(bytes).into_owned(),
-    };
+    let (device, text) = read(file_name, bytes);
     let mut notes = Notes::new(&text);
     let description = match &device {
-        Some(Device::Dp(d)) => dp::describe(d, file_name, &mut notes),
-        Some(Device::Pn(d)) => pn::describe(d, file_name, &mut notes),
+        Some(Device::Dp(d)) => dp::describe(d, file_name, &mut notes).map(TomlOut::finish),
+        Some(Device::Pn(d)) => pn::describe(d, file_name, &mut notes).map(TomlOut::finish),
         None => {
             notes.refuse("not a GSD or GSDML file gsdc can read: `gsdc check` says why");
             None
@@ -70,27 +69,41 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     };
     let mut round_trip = RoundTrip::default();
     let description = description.and_then(|toml| {
-        let old = device.as_ref()?;
-        let changes = rebuilt_changes(file_name, &toml, old, &mut notes)?;
-        for change in &changes {
-            match change.class {
-                Class::Breaking => round_trip.breaking += 1,
-                Class::Compatible => round_trip.compatible += 1,
-                Class::Cosmetic => round_trip.cosmetic += 1,
-            }
-            if change.class != Class::Cosmetic {
-                notes.different(change);
-            }
-        }
+        round_trip = judge(file_name, &toml, device.as_ref()?, &mut notes)?;
         round_trip.is_clean().then_some(toml)
     });
-    Imported {
-        description,
-        text,
-        unsaid: notes.unsaid,
-        diagnostics: notes.diagnostics,
-        round_trip,
+    notes.imported(description, text, round_trip)
+}
+
+/// The device a file describes, and its text as gsdc reads it.
+fn read(file_name: &str, bytes: &[u8]) -> (Option<Device>, String) {
+    let device = crate::device::read(bytes, Some(file_name));
+    let text = match &device {
+        Some(Device::Pn(_)) => crate::gsdml::decode(bytes)
+            .map(|t| t.into_owned())
+            .unwrap_or_default(),
+        _ => crate::gsd::decode(bytes).into_owned(),
+    };
+    (device, text)
+}
+
+/// The round trip of `toml` against the file's device `old`: each breaking
+/// or compatible change an error (E601); `None` when the description does
+/// not build.
+fn judge(file_name: &str, toml: &str, old: &Device, notes: &mut Notes) -> Option<RoundTrip> {
+    let changes = rebuilt_changes(file_name, toml, old, notes)?;
+    let mut round_trip = RoundTrip::default();
+    for change in &changes {
+        match change.class {
+            Class::Breaking => round_trip.breaking += 1,
+            Class::Compatible => round_trip.compatible += 1,
+            Class::Cosmetic => round_trip.cosmetic += 1,
+        }
+        if change.class != Class::Cosmetic {
+            notes.different(change);
+        }
     }
+    Some(round_trip)
 }
 
 /// Loads the description, writes its GSD or GSDML file (the file a build
@@ -138,6 +151,21 @@ struct Notes {
 }
 
 impl Notes {
+    fn imported(
+        self,
+        description: Option<String>,
+        text: String,
+        round_trip: RoundTrip,
+    ) -> Imported {
+        Imported {
+            description,
+            text,
+            unsaid: self.unsaid,
+            diagnostics: self.diagnostics,
+            round_trip,
+        }
+    }
+
     fn new(text: &str) -> Notes {
         let starts = text.match_indices('\n').map(|(i, _)| i + 1);
         Notes {

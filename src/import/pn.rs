@@ -92,7 +92,7 @@ impl Recognised<'_> {
 }
 
 /// The description of `device`, read from `file`; `None` when refused.
-pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Option<String> {
+pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Option<TomlOut> {
     let dap = one_dap(device, notes)?;
     if let Some(s) = device.submodules.first() {
         notes.refuse_at("pluggable submodules (SubmoduleList): the description's modules each carry one submodule of data", &s.place);
@@ -142,7 +142,7 @@ pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Opti
     for table in tables {
         out.key(&quote(table), &reason);
     }
-    Some(out.finish())
+    Some(out)
 }
 
 fn one_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
