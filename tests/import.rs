@@ -395,6 +395,20 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
             ),
         }
     }
+    // A GSDML file refused is refused at the element that stops it.
+    for row in &gsdml {
+        if row.imported.description.is_none() {
+            let refusal = row.imported.diagnostics.iter().find(|d| d.code == "E602");
+            assert!(
+                refusal.is_some_and(
+                    |d| d.message.contains(" (at ApplicationProcess/") && d.span.is_some()
+                ),
+                "{}: {:#?}",
+                row.file,
+                row.imported.diagnostics
+            );
+        }
+    }
     let drives: Vec<&Row> = gsd.iter().chain(&gsdml).filter(|r| r.drive).collect();
     let clean = drives
         .iter()

@@ -1,14 +1,14 @@
-//! `gsdc import`: a GSD file written back as a description, and the round
-//! trip judged. The description's build is read as a device again and
+//! `gsdc import`: a GSD or GSDML file written back as a description, and
+//! the round trip judged. The description's build is read as a device again and
 //! compared with the file (`crate::diff`): each breaking or compatible
 //! change is an error (E601), the import would describe another device;
 //! what the description has no place for is a warning (W600) when the
 //! round trip shows it changes nothing a master acts on. Pure: bytes in,
 //! text and diagnostics out.
 //!
-//! A GSDML file is written as the PROFINET part of a description
-//! (`pn`); a GSD and a GSDML file of one card as one description with both
-//! buses.
+//! A GSD is written as the PROFIBUS part of a description (`dp`), a
+//! GSDML file as the PROFINET part (`pn`), a GSD and a GSDML file of one
+//! card as one description with both buses (`both`).
 
 mod both;
 mod dp;
