@@ -122,6 +122,13 @@ pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Opti
     module_texts(&mut out, &modules, notes);
     ident_numbers(&mut out, dap, &modules);
     super::dp::manual(&mut out);
+    choices(&mut out, file, &records);
+    Some(out)
+}
+
+/// `[choices]`: every table imported marked with the file's name, and
+/// the identity a GSDML file does not give marked with what stands for it.
+fn choices(out: &mut TomlOut, file: &str, records: &Records) {
     out.table("choices");
     out.string(
         "\"device.model\"",
@@ -142,7 +149,6 @@ pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Opti
     for table in tables {
         out.key(&quote(table), &reason);
     }
-    Some(out)
 }
 
 fn one_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {

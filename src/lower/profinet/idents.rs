@@ -32,14 +32,21 @@ pub fn apply(
     ports: &mut [Port],
 ) -> DapIdents {
     let value = |n: &Option<Spanned<u32>>| n.as_ref().map(|n| *n.get_ref());
-    let dap = value(&given.dap);
+    // A ModuleIdentNumber is not zero (the GSDML checker's E318); a
+    // submodule's may be.
+    let dap = given.dap.as_ref().and_then(|n| module_ident(cx, n));
     let mut numbered_by_gsdc = dap.is_none() || given.interface.is_none();
     let mut stated = dap.is_some() || given.interface.is_some();
-    for (table, submodule) in [(&given.modules, false), (&given.submodules, true)] {
-        stated |= !table.is_empty();
-        for_modules(cx, table, modules, |m, n| match submodule {
-            true => m.submodule_ident_number = n,
-            false => m.ident_number = n,
+    for (key, number) in &given.modules {
+        stated = true;
+        if let Some(n) = module_ident(cx, number) {
+            for_module(cx, key, modules, |m| m.ident_number = n);
+        }
+    }
+    for (key, number) in &given.submodules {
+        stated = true;
+        for_module(cx, key, modules, |m| {
+            m.submodule_ident_number = *number.get_ref()
         });
     }
     // A module whose number is stated keeps it for its submodule too,
@@ -84,35 +91,38 @@ pub fn apply(
     }
 }
 
-/// Calls `set` with each stated module and its number; E177 for a key
-/// that names no module the description offers.
-fn for_modules(
+/// A stated ModuleIdentNumber: 1 or more (E101 for 0).
+fn module_ident(cx: &mut Checker, number: &Spanned<u32>) -> Option<u32> {
+    cx.spanned_in_range(number, 1, u32::MAX.into(), "a module ident number")
+}
+
+/// Calls `set` with the module `key` names; E177 when it names no module
+/// the description offers.
+fn for_module(
     cx: &mut Checker,
-    table: &BTreeMap<Spanned<String>, Spanned<u32>>,
+    key: &Spanned<String>,
     modules: &mut [Module],
-    set: impl Fn(&mut Module, u32),
+    set: impl FnOnce(&mut Module),
 ) {
-    for (key, number) in table {
-        match modules
-            .iter_mut()
-            .find(|m| m.ident.snake() == *key.get_ref())
-        {
-            Some(m) => set(m, *number.get_ref()),
-            None => {
-                let names: Vec<String> = modules.iter().map(|m| m.ident.snake()).collect();
-                cx.push(
-                    Diagnostic::error(
-                        "E177",
-                        format!("`{}` is not a module of this description", key.get_ref()),
-                    )
-                    .at(key.span())
-                    .label("no such module")
-                    .help(format!(
-                        "modules are named as in the generated code: {}",
-                        names.join(", ")
-                    )),
-                );
-            }
+    match modules
+        .iter_mut()
+        .find(|m| m.ident.snake() == *key.get_ref())
+    {
+        Some(m) => set(m),
+        None => {
+            let names: Vec<String> = modules.iter().map(|m| m.ident.snake()).collect();
+            cx.push(
+                Diagnostic::error(
+                    "E177",
+                    format!("`{}` is not a module of this description", key.get_ref()),
+                )
+                .at(key.span())
+                .label("no such module")
+                .help(format!(
+                    "modules are named as in the generated code: {}",
+                    names.join(", ")
+                )),
+            );
         }
     }
 }
