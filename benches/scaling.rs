@@ -1,5 +1,5 @@
 //! `cargo bench --bench scaling`: how the time of `gsdc doc`, `build`,
-//! `check` and `decode` grows with their input. Each runs, as a process,
+//! `check`, `diff` and `decode` grows with their input. Each runs, as a process,
 //! on inputs of 1x, 4x and 16x a size; it prints the medians and the growth
 //! from each size to the next. A command linear in its input takes at most
 //! 4x as long per 4x step (less, while starting the process still counts);
@@ -76,10 +76,11 @@ fn main() {
         });
     }
 
-    // gsdc check: a GSD and a GSDML file of many modules.
+    // gsdc check and diff: a GSD and a GSDML file of many modules (diffed
+    // against itself: both sides read, nothing differs).
     let gsd_modules = |n| more_gsd_modules(&gsd, n);
     let gsdml_modules = |n| more_gsdml_modules(&gsdml, n);
-    for (what, make, base, name) in [
+    let files = [
         (
             "a GSD file, modules",
             &gsd_modules as &dyn Fn(usize) -> String,
@@ -92,16 +93,22 @@ fn main() {
             200,
             "GSDML-V2.32-Many-Modules-20260101.xml",
         ),
-    ] {
-        scale(&format!("gsdc check, {what}"), base, |n| {
-            let folder = dir.join(format!("check{n}"));
-            std::fs::create_dir_all(&folder).unwrap();
-            let path = folder.join(name);
-            std::fs::write(&path, make(n)).unwrap();
-            let mut c = Command::new(GSDC);
-            c.arg("check").arg(&path);
-            c
-        });
+    ];
+    for command in ["check", "diff"] {
+        for (what, make, base, name) in files {
+            scale(&format!("gsdc {command}, {what}"), base, |n| {
+                let folder = dir.join(format!("{command}{n}"));
+                std::fs::create_dir_all(&folder).unwrap();
+                let path = folder.join(name);
+                std::fs::write(&path, make(n)).unwrap();
+                let mut c = Command::new(GSDC);
+                c.arg(command).arg(&path);
+                if command == "diff" {
+                    c.arg(&path);
+                }
+                c
+            });
+        }
     }
 
     // gsdc decode: a telegram, a parameter telegram and a module name as

@@ -1,4 +1,4 @@
-//! A [`PnDevice`] from a parsed GSDML document (`crate::gsdml::parse`).
+//! A [`PnDevice`] from a GSDML document's elements (`crate::gsdml::tree`).
 //!
 //! Text IDs, value lists, categories, graphics and item references are
 //! resolved where they are used, so that a file whose IDs were renamed
@@ -8,7 +8,6 @@
 use std::sync::Arc;
 
 use foldhash::{HashMap, HashMapExt};
-use roxmltree::{Document, Node};
 
 use super::pn::{
     Dap, DataItem, DiagItem, IoData, IoPart, ItemRef, PnDevice, PnModule, Record, Submodule,
@@ -18,7 +17,7 @@ use super::{
     Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, ElementPath, Field, Lines,
     ParameterData, Place, Text, Value,
 };
-use crate::gsdml::index::{child, children, in_gsdml};
+use crate::gsdml::tree::{child, children, in_gsdml, Node, NodeId, Tree};
 
 const XML_NAMESPACE: &str = "http://www.w3.org/XML/1998/namespace";
 const XSI: &str = "http://www.w3.org/2001/XMLSchema-instance";
@@ -27,7 +26,7 @@ type El<'a, 'input> = Node<'a, 'input>;
 
 /// The device of a GSDML document. `file_name` is the file's own name,
 /// when there is one. A document that is not GSDML gives an empty device.
-pub fn read(doc: &Document<'_>, file_name: Option<&str>) -> PnDevice {
+pub fn read(doc: &Tree<'_>, file_name: Option<&str>) -> PnDevice {
     let root = doc.root_element();
     let body = child(root, "ProfileBody");
     let process = body.and_then(|b| child(b, "ApplicationProcess"));
@@ -96,7 +95,7 @@ struct Reader<'a> {
     /// ancestors are, outermost first: the reader goes down the document in
     /// order, so an element's path is built once, from its parent's,
     /// found here.
-    ancestors: std::cell::RefCell<Vec<(roxmltree::NodeId, std::ops::Range<usize>)>>,
+    ancestors: std::cell::RefCell<Vec<(NodeId, std::ops::Range<usize>)>>,
     /// The translations of every text without any, shared.
     no_translations: Arc<super::Translations>,
     /// Names and values met so far: the same ones repeat through a file,
@@ -107,7 +106,7 @@ struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    fn new(doc: &'a Document<'_>, process: Option<El<'a, '_>>) -> Reader<'a> {
+    fn new(doc: &'a Tree<'_>, process: Option<El<'a, '_>>) -> Reader<'a> {
         let mut reader = Reader {
             lines: Lines::of(doc.input_text()),
             texts: HashMap::new(),
@@ -286,7 +285,7 @@ impl<'a> Reader<'a> {
         let range = start..paths.len();
         // The ancestors stay; the parent's path was just found or built.
         let mut ancestors = self.ancestors.borrow_mut();
-        let parent = node.parent().map(|p| p.id());
+        let parent = node.parent_element().map(|p| p.id());
         let kept = ancestors
             .iter()
             .rposition(|(id, _)| Some(*id) == parent)
@@ -955,7 +954,7 @@ mod tests {
 </ISO15745Profile>"#;
 
     fn device() -> PnDevice {
-        let doc = crate::gsdml::parse(TEXT).unwrap();
+        let doc = crate::gsdml::parse_tree(TEXT).unwrap();
         read(&doc, Some("GSDML-V2.32-MEGMEET-MV800-20230830.xml"))
     }
 

@@ -24,7 +24,6 @@ use std::sync::{Arc, OnceLock};
 
 pub use dp::DpDevice;
 pub use from_gsd::read as read_gsd;
-pub use from_gsdml::read as read_gsdml;
 pub use pn::PnDevice;
 
 /// The device of a GSD or of a GSDML file.
@@ -51,11 +50,11 @@ pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
         }
         crate::file_kind::FileKind::Gsdml => {
             let text = crate::gsdml::decode(bytes).ok()?;
-            let doc = crate::gsdml::parse(&text).ok()?;
+            let doc = crate::gsdml::parse_tree(&text)?;
             let root = doc.root_element();
             let is_gsdml =
-                crate::gsdml::index::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
-            is_gsdml.then(|| Device::Pn(read_gsdml(&doc, file_name)))
+                crate::gsdml::tree::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
+            is_gsdml.then(|| Device::Pn(from_gsdml::read(&doc, file_name)))
         }
         crate::file_kind::FileKind::Bitmap | crate::file_kind::FileKind::Neither => None,
     }

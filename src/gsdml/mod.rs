@@ -21,12 +21,14 @@ mod reader;
 mod records;
 mod shape;
 mod slots;
+pub(crate) mod tree;
 pub(crate) mod values;
 pub(crate) mod version;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use index::Index;
 
+pub(crate) use reader::parse_tree;
 pub use reader::{decode, parse, INPUT_LIMIT};
 pub use version::Version;
 

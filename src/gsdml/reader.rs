@@ -39,6 +39,14 @@ pub fn parse(text: &str) -> Result<roxmltree::Document<'_>, Diagnostic> {
     roxmltree::Document::parse_with_options(text, options).map_err(|e| syntax_error(text, &e))
 }
 
+/// The elements of GSDML text as the device reader walks them
+/// ([`super::tree`], which keeps `shape`'s bounds itself); `None` where
+/// [`parse`] refuses the text (`gsdc check` says why).
+pub(crate) fn parse_tree(text: &str) -> Option<super::tree::Tree<'_>> {
+    INPUT_LIMIT.check(text.len()).ok()?;
+    super::tree::Tree::parse(text)
+}
+
 fn syntax_error(text: &str, error: &roxmltree::Error) -> Diagnostic {
     let base = Diagnostic::error("E300", format!("the file is not well-formed XML: {error}"));
     match error {

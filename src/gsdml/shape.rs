@@ -15,16 +15,16 @@ use std::ops::Range;
 
 use crate::diag::Diagnostic;
 
-const MAX_ATTRIBUTES: usize = 256;
-const MAX_NAMESPACES: usize = 64;
-/// Nothing in gsdc recurses over the tree, but no GSDML file nests deeper
-/// than a dozen levels, and a limit keeps it that way for future rules.
-const MAX_DEPTH: usize = 256;
+pub(crate) const MAX_ATTRIBUTES: usize = 256;
+pub(crate) const MAX_NAMESPACES: usize = 64;
+/// The device reader recurses over the elements (`crate::device`), and no
+/// GSDML file nests deeper than a dozen levels.
+pub(crate) const MAX_DEPTH: usize = 256;
 /// Elements, comments, instructions and CDATA sections: a hundred times
 /// the most of any real file (8 881 elements in the 1.1 MB SEW file).
 /// 16 MiB of empty elements, four million of them, are refused here before
 /// roxmltree allocates a node for any.
-const MAX_NODES: usize = 1_000_000;
+pub(crate) const MAX_NODES: usize = 1_000_000;
 
 /// `Err` with an E300 at the first element beyond a limit. The pass reads
 /// tags only as far as counting needs (from `<` to `<`, quoted values
