@@ -777,7 +777,9 @@ mod tests {
             .step_by(step)
             .filter(|&i| text.is_char_boundary(i))
         {
-            for insert in ["<", ">", "&", "\"", "'", "=", ":", "/", " ", "\u{1}", "\u{9A}", "\u{E9}", ""] {
+            for insert in [
+                "<", ">", "&", "\"", "'", "=", ":", "/", " ", "\u{1}", "\u{9A}", "\u{E9}", "",
+            ] {
                 let next = text[at..].chars().next().map_or(at, |c| at + c.len_utf8());
                 let changed = format!("{}{insert}{}", &text[..at], &text[next..]);
                 assert_same(&changed, &format!("{name} with {insert:?} at {at}"));
