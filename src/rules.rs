@@ -119,6 +119,10 @@ pub const RULES: &[Rule] = &[
     rule("E173", "a compact station of more than one module"),
     rule("E174", "a stated limit less than the modules need"),
     rule("E175", "a parameter with both type and bits"),
+    rule("E176", "two PROFINET modules of one ident number"),
+    rule("E177", "an ident number for a module not offered"),
+    rule("E178", "port ident numbers other than one per port"),
+    rule("E179", "an access point ident number without PROFIdrive"),
     rule("E180", "a DPV1 alarm required but not supported"),
     rule("E181", "an isochronous cycle's least more than its longest"),
     rule("E182", "a DPV1 channel required but not supported"),
@@ -214,6 +218,7 @@ pub const RULES: &[Rule] = &[
     rule("W600", "not imported: no place in the description"),
     rule("E601", "the import builds another device"),
     rule("E602", "a file gsdc cannot import"),
+    rule("E603", "a GSD and a GSDML file that disagree"),
     rule("W603", "the imported device symbol builds another bitmap"),
     rule("E900", "generated file breaks a rule"),
 ];

@@ -686,3 +686,65 @@ fn modules_are_grouped_in_the_catalog() {
         .collect();
     assert_eq!(listed, [("IDC_PZD", "PZD"), ("IDC_PKW_PZD", "PKW and PZD")]);
 }
+
+/// `[profinet.ident_numbers]` puts each stated number where the GSDML and
+/// the layouts carry it, and leaves gsdc's numbering for the rest; without
+/// the table the numbers are gsdc's (the snapshots hold them).
+#[test]
+fn stated_ident_numbers_replace_gsdcs_numbering() {
+    let fixture = std::fs::read_to_string(crate::support::checkout(
+        "tests/fixtures/valid/profidrive.toml",
+    ))
+    .unwrap();
+    let text = format!(
+        "{fixture}\n[profinet.ident_numbers]\ndap = 0x00010000\ndap_submodule = 0x00010001\n\
+         interface = 0x00000002\nports = [0x00000003, 0x00000004]\naccess_point = 0x00000005\n\
+         modules = {{ telegram1 = 0x00000A01 }}\nsubmodules = {{ telegram1 = 0x00000B01 }}\n"
+    );
+    let (ir, diagnostics) = descriptions::load_text("profidrive.toml", &text);
+    assert_eq!(diagnostics.errors().count(), 0, "{diagnostics:?}");
+    let ir = ir.unwrap();
+    let (gsdml, _) = gsdml_of(&ir);
+    let doc = Document::parse(&gsdml).unwrap();
+    let idents = |element: &'static str, attribute_name: &str| -> Vec<String> {
+        elements(&doc, element)
+            .map(|n| attribute(n, attribute_name).to_string())
+            .collect()
+    };
+    assert_eq!(
+        idents("DeviceAccessPointItem", "ModuleIdentNumber"),
+        ["0x00010000"]
+    );
+    assert_eq!(
+        idents("InterfaceSubmoduleItem", "SubmoduleIdentNumber"),
+        ["0x00000002"]
+    );
+    assert_eq!(
+        idents("PortSubmoduleItem", "SubmoduleIdentNumber"),
+        ["0x00000003", "0x00000004"]
+    );
+    // The DAP's submodule, the access point, the telegram's data submodule,
+    // then the 1-PZD module, which keeps gsdc's number.
+    assert_eq!(
+        idents("VirtualSubmoduleItem", "SubmoduleIdentNumber"),
+        ["0x00010001", "0x00000005", "0x00000B01", "0x00000101"]
+    );
+    assert_eq!(
+        idents("ModuleItem", "ModuleIdentNumber"),
+        ["0x00000A01", "0x00000101"]
+    );
+    let rust = descriptions::output_text(&ir, ArtifactKind::RustLayout);
+    for constant in [
+        "DAP_IDENT: u32 = 0x0001_0000",
+        "DAP_SUBMODULE_IDENT: u32 = 0x0001_0001",
+        "INTERFACE_IDENT: u32 = 0x0000_0002",
+        "PORT2_IDENT: u32 = 0x0000_0004",
+        "TELEGRAM1_IDENT: u32 = 0x0000_0A01",
+        "TELEGRAM1_SUBMODULE_IDENT: u32 = 0x0000_0B01",
+        "TELEGRAM1_ACCESS_POINT_IDENT: u32 = 0x0000_0005",
+    ] {
+        assert!(rust.contains(constant), "{constant} not in\n{rust}");
+    }
+    let headers = descriptions::output_text(&ir, ArtifactKind::Gsdml);
+    assert!(headers.contains("profinet ident numbers [profinet.ident_numbers] does not state"));
+}

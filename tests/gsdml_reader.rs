@@ -137,7 +137,7 @@ fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
     let files = generated_gsdml();
     assert_eq!(
         files.len(),
-        6,
+        7,
         "the shipped PROFINET descriptions and fixtures"
     );
     for (name, text) in &files {

@@ -1,6 +1,7 @@
-//! `gsdc import FILE... --out DESC.toml`: a card's GSD file written back as
-//! a description (`crate::import`), whose build `gsdc diff` finds the same
-//! device; the description is written only then, and never over a file.
+//! `gsdc import FILE... --out DESC.toml`: a card's GSD or GSDML file, or
+//! both, written back as one description (`crate::import`), whose build
+//! `gsdc diff` finds the same device as each file; the description is
+//! written only then, and never over a file.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
 use crate::import::Imported;
@@ -10,6 +11,8 @@ use std::path::{Path, PathBuf};
 
 pub const EXAMPLES: &str = "Examples:
   gsdc import vendor/MD810DP.GSD --out descriptions/md810dp.toml
+  gsdc import vendor/GSDML-V2.32-MEGMEET-MV800-20230830.xml --out descriptions/mv810.toml
+  gsdc import vendor/MD810DP.GSD vendor/GSDML-V2.32-INOVANCE-MD810-20261122.xml --out md810.toml
   gsdc build descriptions/md810dp.toml --out dist && gsdc diff vendor/MD810DP.GSD dist/MD810DP.GSD
 
 Exit codes: 0 written; 1 the file cannot be imported, or its import would build
@@ -17,8 +20,9 @@ another device (nothing written); 2 usage or I/O error (DESC.toml exists already
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The card's GSD file (a GSDML file is refused for now).
-    #[arg(required = true, value_name = "FILE")]
+    /// The card's GSD file, its GSDML file, or both (one description with
+    /// both buses).
+    #[arg(required = true, num_args = 1..=2, value_name = "FILE")]
     files: Vec<PathBuf>,
     /// The description to write; it must not exist.
     #[arg(long, short, value_name = "DESC.toml")]
@@ -26,33 +30,43 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Status {
-    if args.files.len() > 1 {
-        warn("error: gsdc import takes one card's GSD file; a GSDML file cannot be imported yet");
-        return Status::UsageOrIo;
+    let mut files = Vec::new();
+    for path in &args.files {
+        match read(path) {
+            Ok(bytes) => files.push((path, bytes)),
+            Err(status) => return status,
+        }
     }
-    let path = &args.files[0];
-    let bytes = match crate::output::read_device_file(path) {
-        Ok((_, bytes)) => bytes,
-        Err(crate::output::ReadError::Io(e)) => {
-            warn(&format!("error: {}: {e}", display_name(path)));
-            return Status::UsageOrIo;
+    let (description, symbol) = match files.as_slice() {
+        [(path, bytes)] => {
+            let beside = |name: &str| read_beside(path, name);
+            let imported = crate::import::import_with(file_name(path), bytes, &beside);
+            report(&display_name(path), &imported);
+            (imported.description, imported.symbol)
         }
-        Err(crate::output::ReadError::TooLarge(d)) => {
-            warn(&format!("error: {}: {}", display_name(path), d.message));
-            return Status::InputErrors;
-        }
+        [a, b] => match gsd_first(a, b) {
+            Some(((gsd, gsd_bytes), (gsdml, gsdml_bytes))) => {
+                let beside = |name: &str| read_beside(gsd, name);
+                let both = crate::import::import_both(
+                    (file_name(gsd), gsd_bytes),
+                    (file_name(gsdml), gsdml_bytes),
+                    &beside,
+                );
+                report(&display_name(gsd), &both.gsd);
+                report(&display_name(gsdml), &both.gsdml);
+                (both.description, both.symbol)
+            }
+            None => {
+                warn("error: two files are a card's GSD and its GSDML file");
+                return Status::UsageOrIo;
+            }
+        },
+        _ => return Status::UsageOrIo,
     };
-    let file_name = path
-        .file_name()
-        .and_then(|n| n.to_str())
-        .unwrap_or("IMPORTED.GSD");
-    let beside = |name: &str| read_beside(path, name);
-    let imported = crate::import::import_with(file_name, &bytes, &beside);
-    report(&display_name(path), &imported);
-    let Some(description) = &imported.description else {
+    let Some(description) = description else {
         return Status::InputErrors;
     };
-    match write_outputs(&args.out, description, imported.symbol.as_ref()) {
+    match write_outputs(&args.out, &description, symbol.as_ref()) {
         Ok(()) => Status::Ok,
         Err((written, e)) => {
             warn(&format!("error: {}: {e}", display_name(&written)));
@@ -61,8 +75,8 @@ pub fn run(args: &Args) -> Status {
     }
 }
 
-/// A file beside `gsd` by its name, or by the same name in other letter
-/// case (GSD files name their bitmaps as written on Windows).
+/// A file beside the GSD `gsd` by its name, or by the same name in other
+/// letter case (GSD files name their bitmaps as written on Windows).
 fn read_beside(gsd: &Path, name: &str) -> Result<Vec<u8>, String> {
     let dir = gsd.parent().unwrap_or(Path::new("."));
     let exact = dir.join(name);
@@ -109,6 +123,40 @@ fn write_outputs(
     }
     say(&format!("wrote {}", display_name(out)));
     Ok(())
+}
+
+type File<'a> = (&'a PathBuf, Vec<u8>);
+
+/// The GSD and the GSDML file of two, told apart by their content.
+fn gsd_first<'a, 'b>(a: &'b File<'a>, b: &'b File<'a>) -> Option<(&'b File<'a>, &'b File<'a>)> {
+    use crate::file_kind::{detect, FileKind};
+    let kind = |f: &File| detect(&f.1[..f.1.len().min(crate::file_kind::HEAD_BYTES)]);
+    match (kind(a), kind(b)) {
+        (FileKind::Gsd, FileKind::Gsdml) => Some((a, b)),
+        (FileKind::Gsdml, FileKind::Gsd) => Some((b, a)),
+        _ => None,
+    }
+}
+
+fn file_name(path: &Path) -> &str {
+    path.file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("IMPORTED.GSD")
+}
+
+/// A device file's bytes, or the status of the error said.
+fn read(path: &Path) -> Result<Vec<u8>, Status> {
+    match crate::output::read_device_file(path) {
+        Ok((_, bytes)) => Ok(bytes),
+        Err(crate::output::ReadError::Io(e)) => {
+            warn(&format!("error: {}: {e}", display_name(path)));
+            Err(Status::UsageOrIo)
+        }
+        Err(crate::output::ReadError::TooLarge(d)) => {
+            warn(&format!("error: {}: {}", display_name(path), d.message));
+            Err(Status::InputErrors)
+        }
+    }
 }
 
 /// The diagnostics, then one line: what was left out and the round trip.

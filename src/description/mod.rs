@@ -555,6 +555,32 @@ pub struct Profinet {
     pub writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
     /// MRP client on the first two ports.
     pub media_redundancy: Option<Spanned<bool>>,
+    /// The ident numbers the GSDML and the layouts carry, where they are
+    /// not gsdc's numbering (an imported file's own).
+    #[serde(default)]
+    pub ident_numbers: IdentNumbers,
+}
+
+/// `[profinet.ident_numbers]`: each key left out keeps gsdc's numbering.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IdentNumbers {
+    /// The device access point's ModuleIdentNumber.
+    pub dap: Option<Spanned<u32>>,
+    /// Its submodule's; the DAP's number by default.
+    pub dap_submodule: Option<Spanned<u32>>,
+    pub interface: Option<Spanned<u32>>,
+    /// One per port, in port order.
+    pub ports: Option<Spanned<Vec<Spanned<u32>>>>,
+    /// A PROFIdrive module's access point submodule.
+    pub access_point: Option<Spanned<u32>>,
+    /// Each module's ModuleIdentNumber by its name in generated code
+    /// (`pkw_pzd12`, `pzd6`, `telegram1`).
+    #[serde(default)]
+    pub modules: BTreeMap<Spanned<String>, Spanned<u32>>,
+    /// Its data submodule's, where not the module's.
+    #[serde(default)]
+    pub submodules: BTreeMap<Spanned<String>, Spanned<u32>>,
 }
 
 #[derive(Debug, Default, Deserialize)]

@@ -10,8 +10,7 @@ use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
     ConformanceClass, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
-    ACCESS_POINT_IDENT, ACCESS_POINT_SUBSLOT, DAP_IDENT, INTERFACE_SUBSLOT, MODULE_SLOT,
-    PROFIDRIVE_DATA_SUBSLOT,
+    ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
@@ -210,7 +209,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
             ("ID", DAP_ID),
             ("PNIO_Version", &p.gsdml_version.to_string()),
             ("PhysicalSlots", &format!("0..{MODULE_SLOT}")),
-            ("ModuleIdentNumber", &hex32(DAP_IDENT)),
+            ("ModuleIdentNumber", &hex32(p.dap_ident)),
             ("MinDeviceInterval", &p.min_device_interval.to_string()),
             ("DNS_CompatibleName", &p.dns_name),
             ("FixedInSlots", "0"),
@@ -312,7 +311,7 @@ fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&s
 /// empty list is not a value of it).
 fn dap_submodule(doc: &mut Doc, p: &Profinet) {
     doc.open("VirtualSubmoduleList", &[]);
-    let ident = hex32(DAP_IDENT);
+    let ident = hex32(p.dap_submodule_ident);
     let records = blank_separated(&p.interface_properties.writeable_im_records);
     let mut attributes = vec![("ID", DAP_SUBMODULE_ID), ("SubmoduleIdentNumber", &ident)];
     if !records.is_empty() {
@@ -326,8 +325,8 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet) {
     doc.close("VirtualSubmoduleList");
 }
 
-/// The interface and its ports. Their submodule ident numbers are their
-/// subslot numbers, the convention p-net also follows. DCP_HelloSupported
+/// The interface and its ports. In gsdc's numbering their submodule ident
+/// numbers are their subslot numbers, the convention p-net also follows. DCP_HelloSupported
 /// stays off: it would need PowerOnToCommReady, which the description does
 /// not give. The DCP and PTP boundaries are declared as every corpus file
 /// of PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
@@ -340,7 +339,7 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
         &[
             ("ID", INTERFACE_ID),
             ("SubslotNumber", &INTERFACE_SUBSLOT.to_string()),
-            ("SubmoduleIdentNumber", &hex32(INTERFACE_SUBSLOT.into())),
+            ("SubmoduleIdentNumber", &hex32(p.interface_ident)),
             ("TextId", &p.interface.id),
             ("SupportedRT_Classes", "RT_CLASS_1"),
             ("SupportedProtocols", "SNMP;LLDP"),
@@ -372,7 +371,7 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
     for port in &p.ports {
         doc.text(&port.text);
         let subslot = port.subslot.to_string();
-        let ident = hex32(port.subslot.into());
+        let ident = hex32(port.ident);
         let mut attributes = vec![
             ("ID", port.id.as_str()),
             ("SubslotNumber", &subslot),
@@ -456,15 +455,15 @@ fn allowed_values(allowed: &Allowed) -> String {
 fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("ModuleList", &[]);
     for m in &p.modules {
-        module(doc, ir, m);
+        module(doc, ir, m, p.access_point_ident);
     }
     doc.close("ModuleList");
 }
 
-/// A module with a submodule of the same ident number; a PROFIdrive
+/// A module with its data submodule; a PROFIdrive
 /// telegram has the module access point before it, both in the profile's
 /// API and fixed in their subslots, as ABB's FENA has them.
-fn module(doc: &mut Doc, ir: &Ir, m: &Module) {
+fn module(doc: &mut Doc, ir: &Ir, m: &Module, access_point_ident: u32) {
     let ident = hex32(m.ident_number);
     doc.open(
         "ModuleItem",
@@ -478,7 +477,7 @@ fn module(doc: &mut Doc, ir: &Ir, m: &Module) {
             "VirtualSubmoduleItem",
             &[
                 ("ID", map.id.as_str()),
-                ("SubmoduleIdentNumber", &hex32(ACCESS_POINT_IDENT)),
+                ("SubmoduleIdentNumber", &hex32(access_point_ident)),
                 ("API", &api),
                 ("FixedInSubslots", &ACCESS_POINT_SUBSLOT.to_string()),
                 ("MayIssueProcessAlarm", "false"),
@@ -489,9 +488,10 @@ fn module(doc: &mut Doc, ir: &Ir, m: &Module) {
         doc.close("VirtualSubmoduleItem");
     }
     let data_subslot = PROFIDRIVE_DATA_SUBSLOT.to_string();
+    let submodule_ident = hex32(m.submodule_ident_number);
     let mut attributes = vec![
         ("ID", m.submodule_id.as_str()),
-        ("SubmoduleIdentNumber", &ident),
+        ("SubmoduleIdentNumber", &submodule_ident),
         ("API", &api),
     ];
     if m.access_point.is_some() {

@@ -235,6 +235,11 @@ phrases! {
         zh: "PROFINET 模块标识号、记录索引与记录布局",
         de: "PROFINET-Modulidentnummern, Datensatzindizes und Datensatzaufbau",
     };
+    PROFINET_RECORD_NUMBERS = {
+        en: "PROFINET record indexes and record layout",
+        zh: "PROFINET 记录索引与记录布局",
+        de: "PROFINET-Datensatzindizes und Datensatzaufbau",
+    };
     AS_TABLES_ABOVE = {
         en: "gsdc: as the tables above give them",
         zh: "gsdc 约定：见上文各表",

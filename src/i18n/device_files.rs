@@ -115,6 +115,11 @@ phrases! {
         de: "die Beschreibung gibt ihn nicht an",
     };
     IDENT_NUMBERS = { en: "profinet ident numbers", zh: "PROFINET 标识号", de: "PROFINET-Identnummern" };
+    IDENT_NUMBERS_REST = {
+        en: "profinet ident numbers [profinet.ident_numbers] does not state",
+        zh: "[profinet.ident_numbers] 未给出的 PROFINET 标识号",
+        de: "PROFINET-Identnummern, die [profinet.ident_numbers] nicht angibt",
+    };
     IDENT_NUMBERS_RULE = {
         en: "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
         zh: "模块：nn 个 PZD 字为 0x0000_01nn，带 PKW 通道为 0x0000_02nn，标准报文 1 为 0x0000_0010，各子模块与其模块相同；DAP 及其子模块为 0x0000_0001；接口和各端口为其子槽号（0x8000、0x8001……）",

@@ -5,7 +5,7 @@
 //! place for is a warning at its line (W600); whether leaving it out makes
 //! another device is the round trip's to judge (`super::round_trip`).
 
-use super::toml_out::{hex, list, quote, TomlOut};
+use super::toml_out::{hex, list, quote, Line, TomlOut};
 use super::Notes;
 use crate::device::dp::{DpDevice, DpModule, Keyword};
 use crate::device::{Allowed, Field, ParameterData, Value};
@@ -101,7 +101,7 @@ pub(super) fn describe(
     file: &str,
     symbol: Option<&str>,
     notes: &mut Notes,
-) -> Option<String> {
+) -> Option<TomlOut> {
     let telegram = telegram(device);
     let Some(pzd_words) = telegram.pzd_words else {
         notes.refuse(
@@ -142,17 +142,27 @@ pub(super) fn describe(
     for table in ["device", "telegram", "profibus"] {
         out.key(&quote(table), &reason);
     }
-    Some(with_charset(out.finish()))
+    Some(with_charset(out))
 }
 
-/// The description, stating `charset = "latin-1"` when the file's strings
-/// have characters beyond ASCII (the only ones it holds: gsdc's comments
-/// are ASCII), so the build writes them as the file's bytes.
-fn with_charset(description: String) -> String {
-    if description.is_ascii() {
-        return description;
+/// The description, stating `charset = "latin-1"` in `[profibus]` when the
+/// file's strings have characters beyond ASCII (the only ones it holds:
+/// gsdc's comments are ASCII), so the build writes them as the file's bytes.
+fn with_charset(out: TomlOut) -> TomlOut {
+    let mut sections = out.sections();
+    let is_ascii = sections
+        .iter()
+        .flat_map(|s| &s.lines)
+        .all(|line| line.text.is_ascii());
+    let profibus = sections.iter_mut().find(|s| s.header == "[profibus]");
+    if let (false, Some(profibus)) = (is_ascii, profibus) {
+        let charset = Line {
+            key: Some("charset".to_string()),
+            text: "charset = \"latin-1\"".to_string(),
+        };
+        profibus.lines.insert(0, charset);
     }
-    description.replacen("\n[profibus]\n", "\n[profibus]\ncharset = \"latin-1\"\n", 1)
+    TomlOut::from_sections(sections)
 }
 
 /// The PKW channel's presence and the most PZD words of the modules whose
@@ -818,7 +828,8 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
 
 /// `[manual]`, for the maintainer to fill, as comments: its title and
 /// languages cannot be imported, and the description must load without.
-fn manual(out: &mut TomlOut) {
+pub(super) fn manual(out: &mut TomlOut) {
+    out.comment_block();
     out.comment("");
     out.comment("Fill in the manual the values come from, then confirm each value under");
     out.comment("[choices] against it and remove its mark:");

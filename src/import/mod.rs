@@ -1,18 +1,24 @@
-//! `gsdc import`: a GSD file written back as a description, and the round
-//! trip judged. The description's build is read as a device again and
+//! `gsdc import`: a GSD or GSDML file written back as a description, and
+//! the round trip judged. The description's build is read as a device again and
 //! compared with the file (`crate::diff`): each breaking or compatible
 //! change is an error (E601), the import would describe another device;
 //! what the description has no place for is a warning (W600) when the
 //! round trip shows it changes nothing a master acts on. Pure: bytes in,
 //! text and diagnostics out.
 //!
-//! GSDML files are refused for now (E602): the description cannot yet say
-//! their module and submodule ident numbers.
+//! A GSD is written as the PROFIBUS part of a description (`dp`), a
+//! GSDML file as the PROFINET part (`pn`), a GSD and a GSDML file of one
+//! card as one description with both buses (`both`).
 
+mod both;
 mod dp;
+mod pn;
 mod symbol;
 mod toml_out;
 
+use toml_out::TomlOut;
+
+pub use both::{import_both, Both};
 pub use symbol::ImportedSymbol;
 
 use crate::device::{Device, Place};
@@ -52,38 +58,32 @@ impl RoundTrip {
     }
 }
 
-/// Gives the bytes of a file named beside the imported one (its device
+/// Gives the bytes of a file named beside the imported one (a GSD's device
 /// symbol's bitmap), or says why it cannot.
 pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
 
-/// Imports one GSD file, `file_name` its own name (it becomes the
-/// description's `file_name` and the reason under `[choices]`), without
-/// the files beside it: a `Bitmap_Device` is left out (W600).
+/// Imports one GSD or GSDML file, `file_name` its own name (a GSD's
+/// becomes the description's `file_name`, a GSDML file's name its vendor,
+/// family and date; either is the reason under `[choices]`), without the
+/// files beside it: a GSD's `Bitmap_Device` is left out (W600).
 pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
-    import_with(file_name, bytes, &|name: &str| {
-        Err(format!(
-            "{name}: gsdc::import::import reads no files; import_with does"
-        ))
-    })
+    import_with(file_name, bytes, &no_files)
 }
 
-/// [`import`] with the files beside the GSD: `files` gives the bytes of
-/// the bitmap `Bitmap_Device` names (`NAME.bmp`). The core reads nothing.
+/// [`import`] with the files beside the imported one: `files` gives the
+/// bytes of the bitmap a GSD's `Bitmap_Device` names (`NAME.bmp`). The
+/// core reads nothing.
 pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported {
-    let text = crate::gsd::decode(bytes).into_owned();
+    let (device, text) = read(file_name, bytes);
     let mut notes = Notes::new(&text);
-    let device = crate::device::read(bytes, Some(file_name));
     let mut symbol = None;
     let description = match &device {
         Some(Device::Dp(d)) => {
             symbol = symbol::imported(d, files, &mut notes);
             let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
-            dp::describe(d, file_name, symbol_name, &mut notes)
+            dp::describe(d, file_name, symbol_name, &mut notes).map(TomlOut::finish)
         }
-        Some(Device::Pn(_)) => {
-            notes.refuse("gsdc imports GSD files only: the description cannot yet state a GSDML file's module and submodule ident numbers");
-            None
-        }
+        Some(Device::Pn(d)) => pn::describe(d, file_name, &mut notes).map(TomlOut::finish),
         None => {
             notes.refuse("not a GSD or GSDML file gsdc can read: `gsdc check` says why");
             None
@@ -91,33 +91,66 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
     };
     let mut round_trip = RoundTrip::default();
     let description = description.and_then(|toml| {
-        let old = device.as_ref()?;
-        let changes = rebuilt_changes(file_name, &toml, symbol.as_ref(), old, &mut notes)?;
-        for change in &changes {
-            match change.class {
-                Class::Breaking => round_trip.breaking += 1,
-                Class::Compatible => round_trip.compatible += 1,
-                Class::Cosmetic => round_trip.cosmetic += 1,
-            }
-            if change.class != Class::Cosmetic {
-                notes.different(change);
-            }
-        }
+        round_trip = judge(
+            file_name,
+            &toml,
+            symbol.as_ref(),
+            device.as_ref()?,
+            &mut notes,
+        )?;
         round_trip.is_clean().then_some(toml)
     });
-    Imported {
-        symbol: symbol.filter(|_| description.is_some()),
-        description,
-        text,
-        unsaid: notes.unsaid,
-        diagnostics: notes.diagnostics,
-        round_trip,
-    }
+    let symbol = symbol.filter(|_| description.is_some());
+    notes.imported(description, symbol, text, round_trip)
 }
 
-/// Loads the description (with its symbol), writes its GSD (the file a
-/// build writes; the layouts and the datasheet do not enter the
-/// comparison) and compares it with the file's device; `None` (and an
+/// The [`Files`] of an import without any.
+fn no_files(name: &str) -> Result<Vec<u8>, String> {
+    Err(format!(
+        "{name}: gsdc::import::import reads no files; import_with does"
+    ))
+}
+
+/// The device a file describes, and its text as gsdc reads it.
+fn read(file_name: &str, bytes: &[u8]) -> (Option<Device>, String) {
+    let device = crate::device::read(bytes, Some(file_name));
+    let text = match &device {
+        Some(Device::Pn(_)) => crate::gsdml::decode(bytes)
+            .map(|t| t.into_owned())
+            .unwrap_or_default(),
+        _ => crate::gsd::decode(bytes).into_owned(),
+    };
+    (device, text)
+}
+
+/// The round trip of `toml` against the file's device `old`: each breaking
+/// or compatible change an error (E601); `None` when the description does
+/// not build.
+fn judge(
+    file_name: &str,
+    toml: &str,
+    symbol: Option<&ImportedSymbol>,
+    old: &Device,
+    notes: &mut Notes,
+) -> Option<RoundTrip> {
+    let changes = rebuilt_changes(file_name, toml, symbol, old, notes)?;
+    let mut round_trip = RoundTrip::default();
+    for change in &changes {
+        match change.class {
+            Class::Breaking => round_trip.breaking += 1,
+            Class::Compatible => round_trip.compatible += 1,
+            Class::Cosmetic => round_trip.cosmetic += 1,
+        }
+        if change.class != Class::Cosmetic {
+            notes.different(change);
+        }
+    }
+    Some(round_trip)
+}
+
+/// Loads the description (with its symbol), writes its GSD or GSDML file
+/// (the file a build writes; the layouts and the datasheet do not enter
+/// the comparison) and compares it with the file's device; `None` (and an
 /// error) when the description does not load.
 fn rebuilt_changes(
     file_name: &str,
@@ -140,11 +173,21 @@ fn rebuilt_changes(
         notes.not_built(errors.into_iter());
         return None;
     };
-    let profibus = ir.profibus.as_ref()?;
-    let gsd = crate::emit::gsd::emit(&ir, profibus);
-    let new = crate::device::read(gsd.as_bytes(), Some(&profibus.file_name))?;
+    let (file, name) = match old {
+        Device::Dp(_) => {
+            let profibus = ir.profibus.as_ref()?;
+            (crate::emit::gsd::emit(&ir, profibus), &profibus.file_name)
+        }
+        Device::Pn(_) => {
+            let profinet = ir.profinet.as_ref()?;
+            (crate::emit::gsdml::emit(&ir, profinet), &profinet.file_name)
+        }
+    };
+    let new = crate::device::read(file.as_bytes(), Some(name))?;
     crate::diff::compare(old, &new)
 }
+
+const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML file whose modules carry its telegram (PKW and PZD words, standard telegram 1)";
 
 /// The diagnostics of one import, each at a line of the file.
 struct Notes {
@@ -155,6 +198,23 @@ struct Notes {
 }
 
 impl Notes {
+    fn imported(
+        self,
+        description: Option<String>,
+        symbol: Option<ImportedSymbol>,
+        text: String,
+        round_trip: RoundTrip,
+    ) -> Imported {
+        Imported {
+            description,
+            symbol,
+            text,
+            unsaid: self.unsaid,
+            diagnostics: self.diagnostics,
+            round_trip,
+        }
+    }
+
     fn new(text: &str) -> Notes {
         let starts = text.match_indices('\n').map(|(i, _)| i + 1);
         Notes {
@@ -204,8 +264,21 @@ impl Notes {
     /// E602: a file the description format cannot say.
     fn refuse(&mut self, why: &str) {
         self.diagnostics.push(
-            Diagnostic::error("E602", format!("cannot import this file: {why}"))
-                .help("gsdc import takes a drive option card's GSD file"),
+            Diagnostic::error("E602", format!("cannot import this file: {why}")).help(REFUSED_HELP),
+        );
+    }
+
+    /// E602 at the element (or line) that stops the import.
+    fn refuse_at(&mut self, why: &str, place: &Place) {
+        let at = place
+            .path
+            .as_ref()
+            .map_or(String::new(), |p| format!(" (at {})", &**p));
+        self.diagnostics.push(
+            Diagnostic::error("E602", format!("cannot import this file: {why}{at}"))
+                .at_opt(self.span(place))
+                .label("no place in the description")
+                .help(REFUSED_HELP),
         );
     }
 

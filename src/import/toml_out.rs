@@ -3,45 +3,101 @@
 
 use std::fmt::Write;
 
+/// A description being written: its tables in order, each with its lines,
+/// so that two imports (a GSD's and a GSDML file's) can be merged key by
+/// key before it is written out.
 #[derive(Default)]
 pub(super) struct TomlOut {
-    text: String,
+    sections: Vec<Section>,
+}
+
+/// A table (`[name]` or `[[name]]`), or lines before any table or of
+/// comments only (`header` empty).
+#[derive(Clone)]
+pub(super) struct Section {
+    pub header: String,
+    pub lines: Vec<Line>,
+}
+
+/// A key and its value written already, or a comment.
+#[derive(Clone)]
+pub(super) struct Line {
+    pub key: Option<String>,
+    pub text: String,
 }
 
 impl TomlOut {
     pub fn comment(&mut self, line: &str) {
-        let _ = writeln!(self.text, "# {line}");
+        self.push(None, format!("# {line}"));
+    }
+
+    /// Comments after the tables so far, as a block of their own.
+    pub fn comment_block(&mut self) {
+        self.sections.push(Section {
+            header: String::new(),
+            lines: Vec::new(),
+        });
     }
 
     /// `[name]`, after a blank line.
     pub fn table(&mut self, name: &str) {
-        self.blank();
-        let _ = writeln!(self.text, "[{name}]");
+        self.start(format!("[{name}]"));
     }
 
     /// `[[name]]`, after a blank line.
     pub fn array_item(&mut self, name: &str) {
-        self.blank();
-        let _ = writeln!(self.text, "[[{name}]]");
+        self.start(format!("[[{name}]]"));
     }
 
     /// `key = value`, the value written already (see [`quote`]).
     pub fn key(&mut self, key: &str, value: impl std::fmt::Display) {
-        let _ = writeln!(self.text, "{key} = {value}");
+        self.push(Some(key.to_string()), format!("{key} = {value}"));
     }
 
     pub fn string(&mut self, key: &str, value: &str) {
         self.key(key, quote(value));
     }
 
-    fn blank(&mut self) {
-        if !self.text.is_empty() && !self.text.ends_with("\n\n") {
-            self.text.push('\n');
+    fn start(&mut self, header: String) {
+        self.sections.push(Section {
+            header,
+            lines: Vec::new(),
+        });
+    }
+
+    fn push(&mut self, key: Option<String>, text: String) {
+        if self.sections.is_empty() {
+            self.comment_block();
+        }
+        if let Some(last) = self.sections.last_mut() {
+            last.lines.push(Line { key, text });
         }
     }
 
+    pub fn sections(self) -> Vec<Section> {
+        self.sections
+    }
+
+    pub fn from_sections(sections: Vec<Section>) -> TomlOut {
+        TomlOut { sections }
+    }
+
+    /// The text: each table after a blank line, a block of comments
+    /// right after what comes before it.
     pub fn finish(self) -> String {
-        self.text
+        let mut text = String::new();
+        for section in self.sections {
+            if !section.header.is_empty() {
+                if !text.is_empty() {
+                    text.push('\n');
+                }
+                let _ = writeln!(text, "{}", section.header);
+            }
+            for line in section.lines {
+                let _ = writeln!(text, "{}", line.text);
+            }
+        }
+        text
     }
 }
 

@@ -28,7 +28,14 @@ pub struct Profinet {
     pub max_input_length: u16,
     pub max_output_length: u16,
     pub interface: TextRef,
+    /// The interface submodule's SubmoduleIdentNumber.
+    pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,
+    /// The device access point's ModuleIdentNumber and its submodule's.
+    pub dap_ident: u32,
+    pub dap_submodule_ident: u32,
+    /// A PROFIdrive module's access point submodule's ident number.
+    pub access_point_ident: u32,
     pub ports: Vec<Port>,
     pub modules: Vec<Module>,
     /// The hardware catalog's groups of modules, in the order first used.
@@ -178,15 +185,17 @@ impl TextRef {
     }
 }
 
-/// The device access point's ModuleIdentNumber and its submodule's.
+/// gsdc's numbering, where the description states no ident number
+/// (`[profinet.ident_numbers]`): the device access point's
+/// ModuleIdentNumber and its submodule's.
 pub const DAP_IDENT: u32 = 0x0000_0001;
 /// The subslot of a submodule the GSDML gives none (FixedInSubslots'
 /// default): the DAP's own, a module's one data submodule.
 pub const DAP_SUBSLOT: u16 = 1;
 pub const DEFAULT_SUBSLOT: u16 = 1;
-/// Subslots of the interface and of its first port (IEC 61158-6-10). They
-/// are also the submodule ident numbers of the interface and the ports, as
-/// p-net does it, so firmware and GSDML share one number for each.
+/// Subslots of the interface and of its first port (IEC 61158-6-10). In
+/// gsdc's numbering they are also the submodule ident numbers of the
+/// interface and the ports, as p-net does it.
 pub const INTERFACE_SUBSLOT: u16 = 0x8000;
 pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
 /// The slot modules are plugged into; the DAP is in slot 0.
@@ -226,12 +235,14 @@ pub enum NetloadClass {
     III,
 }
 
-/// A port of the interface: its subslot is also its submodule ident number.
+/// A port of the interface.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Port {
     pub id: String,
     pub subslot: u16,
+    /// Its SubmoduleIdentNumber: its subslot in gsdc's numbering.
+    pub ident: u32,
     pub text: TextRef,
     /// One of the two ring ports an MRP client starts with.
     pub default_ringport: bool,
@@ -273,8 +284,10 @@ pub struct Module {
     pub category: String,
     pub name: TextRef,
     pub info: TextRef,
-    /// ModuleIdentNumber; the submodule has the same number.
+    /// ModuleIdentNumber, and its data submodule's SubmoduleIdentNumber
+    /// (the same in gsdc's numbering).
     pub ident_number: u32,
+    pub submodule_ident_number: u32,
     pub layout: Layout,
     /// Its name in generated code: `pkw_pzd12`.
     pub ident: Ident,
@@ -313,9 +326,9 @@ pub struct AccessPoint {
 /// PROFIdrive's API (14848).
 pub const PROFIDRIVE_API: u32 = 0x3A00;
 /// A PROFIdrive module's access point is in subslot 1, with this
-/// submodule ident number, and its data submodule in subslot 2, as ABB's
-/// FENA places them (no public statement of 0xFFFF was found; see
-/// docs/description.md).
+/// submodule ident number (gsdc's numbering), and its data submodule in
+/// subslot 2, as ABB's FENA places them (no public statement of 0xFFFF was
+/// found; see docs/description.md).
 pub const ACCESS_POINT_SUBSLOT: u16 = 1;
 pub const ACCESS_POINT_IDENT: u32 = 0x0000_FFFF;
 pub const PROFIDRIVE_DATA_SUBSLOT: u16 = 2;

@@ -13,10 +13,13 @@ use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
+mod idents;
 mod ids;
 mod interface;
 mod io;
 mod records;
+
+pub(crate) use io::{description as module_description, info_prefix, pkw_words};
 
 /// `info` after a notice that the file is a draft, naming the identity
 /// numbers that are placeholders, while any is one: the DAP's InfoText
@@ -75,7 +78,7 @@ pub fn lower(
     let kinds = modules(cx, p, telegram);
     let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;
     let mut categories: Vec<Category> = Vec::new();
-    let modules: Vec<Module> = kinds
+    let mut modules: Vec<Module> = kinds
         .into_iter()
         .map(|(kind, layout)| {
             let info = module_info(cx, &p.module_info, kind);
@@ -91,13 +94,23 @@ pub fn lower(
             io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
+    let mut ports: Vec<Port> = (1..=ports)
+        .map(|n| port(n, interface_properties.media_redundancy))
+        .collect();
+    let idents = idents::apply(cx, &p.ident_numbers, &mut modules, &mut ports);
     {
         use crate::i18n::files as w;
-        cx.convention(
-            w::IDENT_NUMBERS,
-            w::IDENT_NUMBERS_RULE,
-            w::IDENT_NUMBERS_WHY,
-        );
+        if idents.numbered_by_gsdc {
+            cx.convention(
+                if idents.stated {
+                    w::IDENT_NUMBERS_REST
+                } else {
+                    w::IDENT_NUMBERS
+                },
+                w::IDENT_NUMBERS_RULE,
+                w::IDENT_NUMBERS_WHY,
+            );
+        }
         cx.requirement(w::DAP, w::DAP_SERVICES, w::DAP_SERVICES_WHY);
         cx.requirement(
             w::INTERFACE,
@@ -108,7 +121,7 @@ pub fn lower(
     let value_items = records::value_items(mappings, &modules);
     let reading_plans = records::reading_plans(mappings, &modules);
     let fixed = records::fixed_values(mappings, &modules);
-    let (max_input_length, max_output_length) = io::max_lengths(&modules, ports);
+    let (max_input_length, max_output_length) = io::max_lengths(&modules, ports.len());
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -149,9 +162,11 @@ pub fn lower(
         max_input_length,
         max_output_length,
         interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
-        ports: (1..=ports)
-            .map(|n| port(n, interface_properties.media_redundancy))
-            .collect(),
+        interface_ident: idents.interface,
+        dap_ident: idents.dap,
+        dap_submodule_ident: idents.dap_submodule,
+        access_point_ident: idents.access_point,
+        ports,
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
@@ -184,6 +199,7 @@ fn port(number: u8, media_redundancy: bool) -> Port {
     Port {
         id: format!("IDS_PORT_{number}"),
         subslot: FIRST_PORT_SUBSLOT + u16::from(number) - 1,
+        ident: u32::from(FIRST_PORT_SUBSLOT + u16::from(number) - 1),
         text: TextRef::new(
             format!("IDT_PORT_{number}"),
             Text::gsdc(|lang| crate::i18n::files::port(lang, number)),

@@ -228,7 +228,17 @@ pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     // with their values.
     row(lang.t(w::BYTE_ORDER), lang.t(w::BYTE_ORDER_RULE));
     if ir.profinet.is_some() {
-        row(lang.t(w::PROFINET_NUMBERS), lang.t(w::AS_TABLES_ABOVE));
+        // The ident numbers are gsdc's unless the description states them
+        // all (`[profinet.ident_numbers]`); the records' numbers are gsdc's.
+        let numbered_by_gsdc = ir
+            .decisions
+            .iter()
+            .any(|d| d.path.starts_with("profinet ident numbers"));
+        let what = match numbered_by_gsdc {
+            true => w::PROFINET_NUMBERS,
+            false => w::PROFINET_RECORD_NUMBERS,
+        };
+        row(lang.t(what), lang.t(w::AS_TABLES_ABOVE));
     }
     if matches!(ir.telegram.pkw, PkwKind::PkeIndPwe | PkwKind::Profidrive) {
         row(lang.t(w::PKW_RESERVED_BITS), lang.t(w::WRITTEN_0));

@@ -573,6 +573,65 @@ fn placeholder(is: bool, sentence: &str) -> &str {
     }
 }
 
+/// The device access point's ident number, and its submodule's.
+fn dap_idents(p: &IrProfinet) -> Consts {
+    let dap = Val::hex_u32(p.dap_ident);
+    if p.dap_submodule_ident == p.dap_ident {
+        return Consts::one(
+            Doc::plain(
+                "The module ident number of the device access point in slot 0, and of its \
+                 submodule.",
+            ),
+            &["dap", "ident"],
+            Ty::U32,
+            dap,
+        );
+    }
+    Consts {
+        doc: Doc::plain(
+            "The module ident number of the device access point in slot 0, and its \
+             submodule's.",
+        ),
+        items: vec![
+            Const::new(&["dap", "ident"], Ty::U32, dap),
+            Const::new(
+                &["dap", "submodule", "ident"],
+                Ty::U32,
+                Val::hex_u32(p.dap_submodule_ident),
+            ),
+        ],
+    }
+}
+
+/// The submodule ident numbers of the interface and the ports, where they
+/// are not their subslots (gsdc's numbering, which the subslots say).
+fn interface_idents(p: &IrProfinet) -> Option<Consts> {
+    let by_subslot = p.interface_ident == u32::from(profinet::INTERFACE_SUBSLOT)
+        && p.ports
+            .iter()
+            .all(|port| port.ident == u32::from(port.subslot));
+    if by_subslot {
+        return None;
+    }
+    let mut items = vec![Const::new(
+        &["interface", "ident"],
+        Ty::U32,
+        Val::hex_u32(p.interface_ident),
+    )];
+    for (n, port) in (1u32..).zip(&p.ports) {
+        let name = format!("port{n}");
+        items.push(Const::new(
+            &[name.as_str(), "ident"],
+            Ty::U32,
+            Val::hex_u32(port.ident),
+        ));
+    }
+    Some(Consts {
+        doc: Doc::plain("The submodule ident numbers of the interface and of each port."),
+        items,
+    })
+}
+
 fn profinet(p: &IrProfinet) -> Vec<Consts> {
     let mut consts = vec![
         Consts::one(
@@ -597,15 +656,7 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
             Ty::U16,
             Val::hex_u16(p.device_id),
         ),
-        Consts::one(
-            Doc::plain(
-                "The module ident number of the device access point in slot 0, and of its \
-                 submodule.",
-            ),
-            &["dap", "ident"],
-            Ty::U32,
-            Val::hex_u32(profinet::DAP_IDENT),
-        ),
+        dap_idents(p),
         Consts {
             doc: Doc::plain(
                 "The subslots of the interface submodule and of the first of its ports.",
@@ -624,13 +675,14 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
                 Const::new(&["ports"], Ty::U8, Val::Dec(p.ports.len() as u64)),
             ],
         },
-        Consts::one(
-            Doc::plain("The slot the I/O module is plugged into."),
-            &["module", "slot"],
-            Ty::U16,
-            Val::Dec(profinet::MODULE_SLOT.into()),
-        ),
     ];
+    consts.extend(interface_idents(p));
+    consts.extend([Consts::one(
+        Doc::plain("The slot the I/O module is plugged into."),
+        &["module", "slot"],
+        Ty::U16,
+        Val::Dec(profinet::MODULE_SLOT.into()),
+    )]);
     for m in &p.modules {
         let name = &m.name.text.en;
         let constant = |what: &str, ty, value| Const {
@@ -640,11 +692,27 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
             ty,
             value,
         };
-        consts.push(Consts {
-            doc: Doc::plain(format!(
-                "Module \"{name}\": its ident number, and its submodule's."
-            )),
-            items: vec![constant("ident", Ty::U32, Val::hex_u32(m.ident_number))],
+        consts.push(if m.submodule_ident_number == m.ident_number {
+            Consts {
+                doc: Doc::plain(format!(
+                    "Module \"{name}\": its ident number, and its submodule's."
+                )),
+                items: vec![constant("ident", Ty::U32, Val::hex_u32(m.ident_number))],
+            }
+        } else {
+            Consts {
+                doc: Doc::plain(format!(
+                    "Module \"{name}\": its ident number, and its data submodule's."
+                )),
+                items: vec![
+                    constant("ident", Ty::U32, Val::hex_u32(m.ident_number)),
+                    constant(
+                        "submodule_ident",
+                        Ty::U32,
+                        Val::hex_u32(m.submodule_ident_number),
+                    ),
+                ],
+            }
         });
         if m.is_profidrive() {
             let subslot = |n: u16| Val::Dec(n.into());
@@ -664,7 +732,7 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
                     constant(
                         "access_point_ident",
                         Ty::U32,
-                        Val::hex_u32(profinet::ACCESS_POINT_IDENT),
+                        Val::hex_u32(p.access_point_ident),
                     ),
                     constant(
                         "data_subslot",

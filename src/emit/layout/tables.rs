@@ -431,17 +431,14 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ("vendor_id", hex(p.vendor_id, 4)),
             ("device_id", hex(p.device_id, 4)),
             ("dns_name", text(&p.dns_name)),
-            ("dap_ident", hex(profinet::DAP_IDENT, 8)),
+            ("dap_ident", hex(p.dap_ident, 8)),
             (
                 "dap_submodule",
-                fixed(profinet::DAP_SUBSLOT, profinet::DAP_IDENT),
+                fixed(profinet::DAP_SUBSLOT, p.dap_submodule_ident),
             ),
             (
                 "interface_submodule",
-                fixed(
-                    profinet::INTERFACE_SUBSLOT,
-                    profinet::INTERFACE_SUBSLOT.into(),
-                ),
+                fixed(profinet::INTERFACE_SUBSLOT, p.interface_ident),
             ),
             (
                 "ports",
@@ -449,7 +446,7 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                     Elem::Record("pn submodule"),
                     p.ports
                         .iter()
-                        .map(|port| fixed(port.subslot, port.subslot.into()))
+                        .map(|port| fixed(port.subslot, port.ident))
                         .collect(),
                 ),
             ),
@@ -457,7 +454,7 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                 "modules",
                 Value::List(
                     Elem::Record("pn module"),
-                    p.modules.iter().map(|m| pn_module(ir, m)).collect(),
+                    p.modules.iter().map(|m| pn_module(ir, p, m)).collect(),
                 ),
             ),
             ("pkw", pkw_codec(ir.telegram.pkw)),
@@ -515,11 +512,11 @@ fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) 
     ))
 }
 
-fn pn_module(ir: &Ir, m: &profinet::Module) -> Value {
+fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
     let access_point = m.access_point.as_ref().map(|_| {
         Box::new(submodule(
             profinet::ACCESS_POINT_SUBSLOT,
-            profinet::ACCESS_POINT_IDENT,
+            p.access_point_ident,
             (0, 0),
         ))
     });
@@ -541,7 +538,10 @@ fn pn_module(ir: &Ir, m: &profinet::Module) -> Value {
                 "access_point",
                 Value::Optional(Elem::Record("pn submodule"), access_point),
             ),
-            ("data", submodule(m.data_subslot(), m.ident_number, io)),
+            (
+                "data",
+                submodule(m.data_subslot(), m.submodule_ident_number, io),
+            ),
             ("records", Value::List(Elem::Record("pn record"), records)),
         ],
     ))

@@ -55,6 +55,7 @@ pub fn module(
             with_info(description, names.info),
         ),
         ident_number: ident_number(kind, layout),
+        submodule_ident_number: ident_number(kind, layout),
         layout,
         ident: code_name(kind, layout),
         input: items(Direction::In),
@@ -97,6 +98,13 @@ pub fn profidrive_telegram_1_name() -> Text {
     Text::phrase(files::STANDARD_TELEGRAM_1)
 }
 
+/// What `with_info` puts before the description's words in language
+/// `code`: gsdc's description and the full stop (an import strips it).
+pub(crate) fn info_prefix(code: &str, gsdc: &str) -> String {
+    let lang = crate::i18n::Lang::of(code).unwrap_or(crate::i18n::Lang::En);
+    files::with_info(lang, gsdc, "")
+}
+
 /// gsdc's description, then the description's own words after a full stop.
 fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     let Some(info) = info else {
@@ -107,7 +115,8 @@ fn with_info(gsdc: Text, info: Option<Text>) -> Text {
     })
 }
 
-/// Stable ident numbers, so firmware and GSDML agree without a table:
+/// gsdc's numbering, where the description states none: stable ident
+/// numbers, so firmware and GSDML agree without a table:
 /// 0x0000_0010 standard telegram 1, 0x0000_01nn nn PZD words, 0x0000_02nn
 /// the PKW and nn PZD words.
 fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
@@ -136,7 +145,7 @@ fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
 
 /// What a module carries, in gsdc's words; a vendor's telegram 1 under the
 /// name the description gives it, in each of the name's languages.
-fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
+pub(crate) fn description(kind: ModuleKind, layout: Layout, name: &Text, profidrive: bool) -> Text {
     let bytes = layout.bytes();
     let n = layout.pzd_words;
     match kind {
@@ -207,7 +216,7 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
 }
 
 /// The PKW channel's words, the same both ways: TextId tag and name.
-fn pkw_words(kind: PkwKind) -> &'static [(&'static str, Phrase)] {
+pub(crate) fn pkw_words(kind: PkwKind) -> &'static [(&'static str, Phrase)] {
     match kind {
         PkwKind::None => &[],
         PkwKind::PkeIndPwe => &[
@@ -280,10 +289,10 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 /// these is exactly what the checker needs (`tests/gsdml_reader.rs` holds
 /// the two to it); with at most 20 words in a module and 16 ports it stays
 /// far below the limit of 1440.
-pub fn max_lengths(modules: &[Module], ports: u8) -> (u16, u16) {
+pub fn max_lengths(modules: &[Module], ports: usize) -> (u16, u16) {
     let module = |m: &Module| m.layout.bytes() + 2 + u16::from(m.access_point.is_some());
     let largest = modules.iter().map(module).max().unwrap_or(0);
-    let length = largest + 2 + u16::from(ports);
+    let length = largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX);
     (length, length)
 }
 

@@ -1,0 +1,1028 @@
+//! A GSDML file's device ([`PnDevice`]) written as a description: identity
+//! and file name, the device access point's interface properties, the
+//! modules recognised from their IO data (the PKW channel and PZD words,
+//! standard telegram 1), their parameter records as mappings and settings,
+//! and the ident numbers as the file has them. What the format has no
+//! place for is a warning at its element (W600); a file whose layout the
+//! format cannot say at all (several access points, pluggable submodules, a
+//! module of other data than 16-bit words) is refused at its element (E602).
+
+use super::toml_out::{list, quote, TomlOut};
+use super::Notes;
+use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
+use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
+use crate::ir::profinet::{ModuleKind, PROFIDRIVE_API};
+use crate::ir::{Layout, PkwKind};
+
+/// Attributes of the device access point gsdc writes, with the value it
+/// writes (`None`: the description states it).
+const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
+    ("PNIO_Version", None),
+    ("PhysicalSlots", Some("0..1")),
+    ("MinDeviceInterval", None),
+    ("DNS_CompatibleName", None),
+    ("FixedInSlots", Some("0")),
+    ("ObjectUUID_LocalIndex", Some("1")),
+    ("NameOfStationNotTransferable", Some("false")),
+    ("DeviceAccessSupported", Some("false")),
+    ("CheckDeviceID_Allowed", Some("true")),
+    ("MultipleWriteSupported", Some("true")),
+    ("LLDP_NoD_Supported", Some("true")),
+    ("ResetToFactoryModes", Some("2")),
+    ("ModuleInfo/VendorName@Value", None),
+    ("ModuleInfo/OrderNumber@Value", None),
+    ("ModuleInfo/HardwareRelease@Value", None),
+    ("ModuleInfo/SoftwareRelease@Value", None),
+    ("CertificationInfo@ConformanceClass", None),
+    ("CertificationInfo@NetloadClass", None),
+    ("IOConfigData@MaxInputLength", None),
+    ("IOConfigData@MaxOutputLength", None),
+];
+
+const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
+    ("SupportedRT_Classes", Some("RT_CLASS_1")),
+    ("SupportedProtocols", Some("SNMP;LLDP")),
+    ("DCP_BoundarySupported", Some("true")),
+    ("PTP_BoundarySupported", Some("true")),
+    ("ApplicationRelations@StartupMode", Some("Legacy;Advanced")),
+    ("ApplicationRelations/TimingProperties@SendClock", None),
+    (
+        "ApplicationRelations/TimingProperties@ReductionRatio",
+        Some("1 2 4 8 16 32 64 128 256 512"),
+    ),
+    ("MediaRedundancy@SupportedRole", Some("Client")),
+];
+
+const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
+    ("MAUTypeList/MAUTypeItem@Value", Some("16")),
+    ("IsDefaultRingport", Some("true")),
+];
+
+const SUBMODULE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
+    ("API", None),
+    ("MayIssueProcessAlarm", Some("false")),
+    ("FixedInSubslots", None),
+    ("Writeable_IM_Records", None),
+];
+
+/// A module recognised: its data submodule, its PROFIdrive access point,
+/// and what it carries.
+struct Recognised<'a> {
+    module: &'a PnModule,
+    data: &'a Submodule,
+    access_point: Option<&'a Submodule>,
+    kind: ModuleKind,
+    layout: Layout,
+    pkw: Option<PkwKind>,
+}
+
+impl Recognised<'_> {
+    /// Its name in generated code, the key of `[profinet.ident_numbers]`.
+    fn code_name(&self) -> String {
+        match self.kind {
+            ModuleKind::StandardTelegram1 => "telegram1".into(),
+            ModuleKind::Pzd if self.layout.pkw => format!("pkw_pzd{}", self.layout.pzd_words),
+            ModuleKind::Pzd => format!("pzd{}", self.layout.pzd_words),
+        }
+    }
+
+    fn is_profidrive(&self) -> bool {
+        self.access_point.is_some()
+    }
+}
+
+/// The description of `device`, read from `file`; `None` when refused.
+pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Option<TomlOut> {
+    let dap = one_dap(device, notes)?;
+    if let Some(s) = device.submodules.first() {
+        notes.refuse_at("pluggable submodules (SubmoduleList): the description's modules each carry one submodule of data", &s.place);
+        return None;
+    }
+    let modules = dap
+        .useable_modules
+        .iter()
+        .filter_map(|r| device.modules.iter().find(|m| m.id == r.target))
+        .map(|m| recognise(m, notes))
+        .collect::<Option<Vec<_>>>()?;
+    let pkw = pkw_kind(&modules, notes)?;
+    let name = file_name(file, notes)?;
+    unsaid_extras(device, dap, &modules, notes);
+    let mut out = TomlOut::default();
+    out.comment(&format!(
+        "Imported by gsdc import from {file}. Every value below is the file's,"
+    ));
+    out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
+    device_table(&mut out, device, dap, &name);
+    let records = Records::of(&modules);
+    telegram_table(&mut out, &modules, pkw);
+    records.write_mappings(&mut out, notes);
+    records.write_settings(&mut out, &modules, notes);
+    profinet(&mut out, device, dap, &name, &modules, notes);
+    records.write_indexes(&mut out);
+    module_texts(&mut out, &modules, notes);
+    ident_numbers(&mut out, dap, &modules);
+    super::dp::manual(&mut out);
+    choices(&mut out, file, &records);
+    Some(out)
+}
+
+/// `[choices]`: every table imported marked with the file's name, and
+/// the identity a GSDML file does not give marked with what stands for it.
+fn choices(out: &mut TomlOut, file: &str, records: &Records) {
+    out.table("choices");
+    out.string(
+        "\"device.model\"",
+        "a GSDML file has no model name: the device access point's name stands for it",
+    );
+    out.string(
+        "\"device.revision\"",
+        "a GSDML file has no revision: its software release stands for it",
+    );
+    let reason = quote(&format!("imported from {file}"));
+    let mut tables = vec!["device", "telegram", "profinet"];
+    if !records.mappings().is_empty() {
+        tables.push("mappings");
+    }
+    if !records.settings.is_empty() {
+        tables.push("settings");
+    }
+    for table in tables {
+        out.key(&quote(table), &reason);
+    }
+}
+
+fn one_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
+    match device.daps.as_slice() {
+        [dap] => Some(dap),
+        [] => {
+            notes.refuse_at("no DeviceAccessPointItem", &device.place);
+            None
+        }
+        [_, second, ..] => {
+            notes.refuse_at(
+                &format!(
+                    "{} device access points: the description has one",
+                    device.daps.len()
+                ),
+                &second.item.place,
+            );
+            None
+        }
+    }
+}
+
+/// A module's kind and layout from its IO data: 16-bit words, as many each
+/// way; the PKW channel first when its four words have one of the names
+/// gsdc gives them; standard telegram 1 in PROFIdrive's API behind an
+/// access point, or a vendor's under gsdc's ID for it.
+fn recognise<'a>(module: &'a PnModule, notes: &mut Notes) -> Option<Recognised<'a>> {
+    if !module.useable_submodules.is_empty() {
+        notes.refuse_at(
+            &format!(
+                "module `{}` takes pluggable submodules: the description's modules each carry one submodule of data",
+                module.id
+            ),
+            &module.place,
+        );
+        return None;
+    }
+    let (access_point, data) = match module.submodules.as_slice() {
+        [data] => (None, data),
+        [map, data] if api(map) == PROFIDRIVE_API && !has_io(map) => (Some(map), data),
+        _ => {
+            notes.refuse_at(
+                &format!(
+                    "module `{}` has {} submodules: the description's modules carry one submodule of data (after PROFIdrive's access point)",
+                    module.id,
+                    module.submodules.len()
+                ),
+                &module.place,
+            );
+            return None;
+        }
+    };
+    let Some(words) = words(data) else {
+        notes.refuse_at(
+            &format!(
+                "module `{}`'s IO data: the description's modules carry 16-bit words, as many each way (a vendor's own PROFINET layout has no place in the format yet)",
+                module.id
+            ),
+            &data.place,
+        );
+        return None;
+    };
+    let input = data.io.input.as_ref().map_or(&[][..], |p| &p.items[..]);
+    let telegram_1 = access_point.is_some() || module.id == "IDM_STD_TEL_1";
+    let pkw = (!telegram_1 && words > 4)
+        .then(|| pkw_of(&input[..4]))
+        .flatten();
+    let kind = match telegram_1 {
+        true => ModuleKind::StandardTelegram1,
+        false => ModuleKind::Pzd,
+    };
+    let pkw_words = if pkw.is_some() { 4 } else { 0 };
+    Some(Recognised {
+        module,
+        data,
+        access_point,
+        kind,
+        layout: Layout::new(pkw.is_some(), words - pkw_words),
+        pkw,
+    })
+}
+
+fn api(s: &Submodule) -> u32 {
+    attribute(&s.attributes, "API")
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0)
+}
+
+fn has_io(s: &Submodule) -> bool {
+    [&s.io.input, &s.io.output]
+        .into_iter()
+        .any(|p| p.as_ref().is_some_and(|p| !p.items.is_empty()))
+}
+
+/// The 16-bit words a submodule carries each way (1..=20), when every item
+/// is one and both ways have as many.
+fn words(s: &Submodule) -> Option<u8> {
+    let count = |p: &Option<crate::device::pn::IoPart>| -> Option<usize> {
+        let items = &p.as_ref()?.items;
+        items
+            .iter()
+            .all(|i| &*i.data_type == "Unsigned16" && i.length.is_none())
+            .then_some(items.len())
+    };
+    let (input, output) = (count(&s.io.input)?, count(&s.io.output)?);
+    (input == output)
+        .then(|| u8::try_from(input).ok())
+        .flatten()
+        .filter(|w| (1..=20).contains(w))
+}
+
+/// The PKW channel whose word names (in English) four items have.
+fn pkw_of(items: &[DataItem]) -> Option<PkwKind> {
+    let names: Vec<&str> = items
+        .iter()
+        .map(|i| i.text.as_ref().map_or("", |t| &t.primary))
+        .collect();
+    [
+        PkwKind::PkeIndPwe,
+        PkwKind::StationCommandAddressValue,
+        PkwKind::Profidrive,
+    ]
+    .into_iter()
+    .find(|&kind| {
+        let gsdc: Vec<&str> = crate::lower::pkw_words(kind)
+            .iter()
+            .map(|(_, p)| p.get(crate::i18n::Lang::En))
+            .collect();
+        gsdc == names
+    })
+}
+
+/// The one PKW channel of the modules that have one (`PkwKind::None`
+/// without); `None` (refused) when they differ.
+fn pkw_kind(modules: &[Recognised], notes: &mut Notes) -> Option<PkwKind> {
+    let mut kinds = modules.iter().filter_map(|m| m.pkw.map(|k| (k, m)));
+    let Some((first, _)) = kinds.next() else {
+        return Some(PkwKind::None);
+    };
+    if let Some((_, other)) = kinds.find(|(k, _)| *k != first) {
+        notes.refuse_at(
+            "modules with PKW channels of different word names: the description has one channel",
+            &other.module.place,
+        );
+        return None;
+    }
+    Some(first)
+}
+
+fn attribute<'a>(attributes: &'a [Attribute], name: &str) -> Option<&'a str> {
+    attributes
+        .iter()
+        .find(|a| &*a.name == name)
+        .map(|a| match &a.value {
+            AttributeValue::Plain(v) => &**v,
+            AttributeValue::Text(t) => &*t.primary,
+        })
+}
+
+fn attribute_text<'a>(attributes: &'a [Attribute], name: &str) -> Option<&'a Text> {
+    attributes
+        .iter()
+        .find(|a| &*a.name == name)
+        .and_then(|a| match &a.value {
+            AttributeValue::Text(t) => Some(t),
+            AttributeValue::Plain(_) => None,
+        })
+}
+
+/// A text as the description writes it: a string, or every language.
+fn text(t: &Text) -> String {
+    if t.translations.keys().next().is_none() {
+        return quote(&t.primary);
+    }
+    let mut parts = vec![format!("en = {}", quote(&t.primary))];
+    parts.extend(
+        t.translations
+            .iter()
+            .map(|(code, text)| format!("{code} = {}", quote(text))),
+    );
+    format!("{{ {} }}", parts.join(", "))
+}
+
+/// The parts of a GSDML file name gsdc writes: vendor, family, date.
+struct FileName {
+    version: String,
+    vendor: String,
+    family: String,
+    date: String,
+}
+
+/// `GSDML-V2.32-Vendor-Family-20230830[-071447].xml`; refused otherwise,
+/// since the description's file name is made of these parts.
+fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
+    let Some(name) = parse_file_name(file) else {
+        notes.refuse(&format!(
+            "`{file}` is not a GSDML file name (GSDML-V<version>-<vendor>-<family>-<yyyymmdd>.xml): the description makes the file name from its parts"
+        ));
+        return None;
+    };
+    Some(name)
+}
+
+fn parse_file_name(file: &str) -> Option<FileName> {
+    let stem = file.strip_prefix("GSDML-")?;
+    let stem = stem
+        .strip_suffix(".xml")
+        .or_else(|| stem.strip_suffix(".XML"))?;
+    let (version, rest) = stem.split_once('-')?;
+    let (vendor, rest) = rest.split_once('-')?;
+    let digits = |s: &str, n: usize| s.len() == n && s.bytes().all(|b| b.is_ascii_digit());
+    let (rest, last) = rest.rsplit_once('-')?;
+    let (family, date, time) = match rest.rsplit_once('-') {
+        Some((family, date)) if digits(date, 8) && digits(last, 6) => (family, date, Some(last)),
+        _ if digits(last, 8) => (rest, last, None),
+        _ => return None,
+    };
+    let day = format!("{}-{}-{}", &date[..4], &date[4..6], &date[6..]);
+    Some(FileName {
+        version: version.trim_start_matches(['V', 'v']).to_string(),
+        vendor: vendor.to_string(),
+        family: family.to_string(),
+        date: match time {
+            Some(t) => format!("{day}T{}:{}:{}", &t[..2], &t[2..4], &t[4..]),
+            None => day,
+        },
+    })
+}
+
+fn device_table(out: &mut TomlOut, device: &PnDevice, dap: &Dap, name: &FileName) {
+    out.table("device");
+    let vendor = attribute(&device.identity, "DeviceIdentity/VendorName@Value").unwrap_or_default();
+    out.string("vendor", vendor);
+    out.string("family", &name.family);
+    let dap_name = dap.item.name.clone().unwrap_or_default();
+    out.string("model", &dap_name.primary);
+    let release = |what| attribute(&dap.item.attributes, what).unwrap_or_default();
+    let software = release("ModuleInfo/SoftwareRelease@Value");
+    out.string("revision", software);
+    out.string(
+        "hardware_release",
+        release("ModuleInfo/HardwareRelease@Value"),
+    );
+    out.string("software_release", software);
+    out.key("name", text(&dap_name));
+    if let Some(order) = attribute(&dap.item.attributes, "ModuleInfo/OrderNumber@Value") {
+        out.string("order_number", order);
+    }
+    if let Some(info) = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId") {
+        out.key("info", text(info));
+    }
+}
+
+/// `[telegram]` with the control and status words PZD1 carries: each
+/// named bit as the file names it (a field of several bits, or the values
+/// gsdc puts in a bit's name, stay in the names).
+fn telegram_table(out: &mut TomlOut, modules: &[Recognised], pkw: PkwKind) {
+    out.table("telegram");
+    let pkw_key = match pkw {
+        PkwKind::None => "none",
+        PkwKind::PkeIndPwe => "pke-ind-pwe",
+        PkwKind::StationCommandAddressValue => "station-command-address-value",
+        PkwKind::Profidrive => "profidrive",
+    };
+    out.string("pkw", pkw_key);
+    let words = modules
+        .iter()
+        .map(|m| m.layout.pzd_words)
+        .max()
+        .unwrap_or(1);
+    out.key("pzd_words", words);
+    if modules
+        .iter()
+        .any(|m| m.kind == ModuleKind::StandardTelegram1)
+    {
+        out.key("profidrive", modules.iter().any(Recognised::is_profidrive));
+    }
+    for (table, output) in [
+        ("telegram.control_word", true),
+        ("telegram.status_word", false),
+    ] {
+        let word = modules.iter().filter(|m| !m.is_profidrive()).find_map(|m| {
+            let part = if output {
+                &m.data.io.output
+            } else {
+                &m.data.io.input
+            };
+            let item = part
+                .as_ref()?
+                .items
+                .get(usize::from(m.layout.pkw_words()))?;
+            (item.use_as_bits && !item.bits.is_empty()).then_some(item)
+        });
+        if let Some(word) = word {
+            out.table(table);
+            out.key("name", text(&word.text.clone().unwrap_or_default()));
+            let bits: Vec<String> = word
+                .bits
+                .iter()
+                .map(|(bit, name)| format!("{{ bit = {bit}, name = {} }}", text(name)))
+                .collect();
+            out.key("bits", format!("[\n    {},\n]", bits.join(",\n    ")));
+        }
+    }
+}
+
+/// The modules' parameter records by kind, as gsdc writes them: a record
+/// whose entries grow with the module's PZD words is a PZD mapping (the
+/// first one controller to drive, the second drive to controller), one of
+/// several numbered entries the same in every module the custom indexes,
+/// any other the settings.
+#[derive(Default)]
+struct Records<'a> {
+    pzd_out: Option<(&'a Record, Pattern)>,
+    pzd_in: Option<(&'a Record, Pattern)>,
+    dpv1_index: Option<(&'a Record, Pattern)>,
+    settings: Vec<&'a Record>,
+}
+
+/// Entry names as `name = "PZD{n} ..."` writes them, from `first`.
+struct Pattern {
+    name: String,
+    first: u32,
+}
+
+impl<'a> Records<'a> {
+    fn of(modules: &[Recognised<'a>]) -> Records<'a> {
+        let mut indexes: Vec<u32> = Vec::new();
+        for m in modules {
+            for r in &m.data.records {
+                if !indexes.contains(&r.index) {
+                    indexes.push(r.index);
+                }
+            }
+        }
+        let mut records = Records::default();
+        for index in indexes {
+            let all: Vec<&Record> = modules
+                .iter()
+                .flat_map(|m| m.data.records.iter().filter(|r| r.index == index))
+                .collect();
+            let Some(largest) = all.iter().copied().max_by_key(|r| r.data.fields.len()) else {
+                continue;
+            };
+            let grows = all
+                .iter()
+                .any(|r| r.data.fields.len() != largest.data.fields.len());
+            match (pattern(&largest.data.fields), grows) {
+                (Some(p), true) if records.pzd_out.is_none() => {
+                    records.pzd_out = Some((largest, p))
+                }
+                (Some(p), true) if records.pzd_in.is_none() => records.pzd_in = Some((largest, p)),
+                // One entry could be either: a setting is the plainer.
+                (Some(p), false)
+                    if records.dpv1_index.is_none() && largest.data.fields.len() > 1 =>
+                {
+                    records.dpv1_index = Some((largest, p))
+                }
+                _ => records.settings.push(largest),
+            }
+        }
+        records
+    }
+
+    fn mappings(&self) -> Vec<(&'static str, &(&'a Record, Pattern))> {
+        [
+            ("pzd_out", &self.pzd_out),
+            ("pzd_in", &self.pzd_in),
+            ("dpv1_index", &self.dpv1_index),
+        ]
+        .into_iter()
+        .filter_map(|(key, r)| r.as_ref().map(|r| (key, r)))
+        .collect()
+    }
+
+    fn write_mappings(&self, out: &mut TomlOut, notes: &mut Notes) {
+        for (key, (record, pattern)) in self.mappings() {
+            out.table(&format!("mappings.{key}"));
+            out.key("name", &pattern.name);
+            out.key("first", pattern.first);
+            out.key("last", pattern.first + record.data.fields.len() as u32 - 1);
+            defaults_and_values(out, &record.data.fields, notes);
+            out.string("set_at", "master");
+        }
+    }
+
+    /// `[[settings]]`, one per entry of the settings record; an entry a
+    /// module fixes (not changeable) is the value each kind of module fixes
+    /// (`per_module`), its choices and default those of a module that lets
+    /// the user change it.
+    fn write_settings(&self, out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+        for record in &self.settings {
+            for field in &record.data.fields {
+                let in_modules: Vec<(ModuleKind, &Field)> = modules
+                    .iter()
+                    .filter_map(|m| {
+                        let r = m.data.records.iter().find(|r| r.index == record.index)?;
+                        let f = r
+                            .data
+                            .fields
+                            .iter()
+                            .find(|f| f.byte_offset == field.byte_offset)?;
+                        Some((m.kind, f))
+                    })
+                    .collect();
+                let changeable = in_modules.iter().map(|(_, f)| *f).find(|f| f.changeable);
+                out.array_item("settings");
+                out.key("name", text(&field.name));
+                defaults_and_values(
+                    out,
+                    std::slice::from_ref(changeable.unwrap_or(field)),
+                    notes,
+                );
+                out.string("set_at", "master");
+                if changeable.is_none() || in_modules.iter().any(|(_, f)| !f.changeable) {
+                    per_module(out, &in_modules);
+                }
+            }
+        }
+    }
+
+    fn write_indexes(&self, out: &mut TomlOut) {
+        let mut indexes: Vec<(&str, &Record)> = self
+            .mappings()
+            .into_iter()
+            .map(|(key, (r, _))| (key, *r))
+            .collect();
+        if let Some(first) = self.settings.first() {
+            indexes.push(("settings", first));
+        }
+        if indexes.is_empty() {
+            return;
+        }
+        out.table("profinet.records");
+        for (key, record) in indexes {
+            match &record.name {
+                Some(name) => out.key(
+                    key,
+                    format!("{{ index = {}, name = {} }}", record.index, text(name)),
+                ),
+                None => out.key(key, record.index),
+            }
+        }
+    }
+}
+
+/// The entries' names as one name with `{n}` for the entry's number,
+/// counting up from the first entry's, in every language.
+fn pattern(fields: &[Field]) -> Option<Pattern> {
+    let first = fields.first()?;
+    numbers_in(&first.name.primary)
+        .into_iter()
+        .find_map(|start| {
+            let pattern_of = |text_of: &dyn Fn(&Text) -> Option<String>| -> Option<String> {
+                let mut found: Option<String> = None;
+                for (i, f) in fields.iter().enumerate() {
+                    let n = start + u32::try_from(i).ok()?;
+                    let p = with_placeholder(&text_of(&f.name)?, n)?;
+                    if found.as_ref().is_some_and(|q| *q != p) {
+                        return None;
+                    }
+                    found = Some(p);
+                }
+                found
+            };
+            let primary = pattern_of(&|t: &Text| Some(t.primary.to_string()))?;
+            let mut parts = vec![format!("en = {}", quote(&primary))];
+            for code in first.name.translations.keys() {
+                let p = pattern_of(&|t: &Text| t.translations.get(code).map(str::to_string))?;
+                parts.push(format!("{code} = {}", quote(&p)));
+            }
+            let name = match parts.len() {
+                1 => quote(&primary),
+                _ => format!("{{ {} }}", parts.join(", ")),
+            };
+            Some(Pattern { name, first: start })
+        })
+}
+
+/// The decimal numbers a text has, in order.
+fn numbers_in(text: &str) -> Vec<u32> {
+    text.split(|c: char| !c.is_ascii_digit())
+        .filter_map(|s| s.parse().ok())
+        .collect()
+}
+
+/// `text` with its first standalone `n` written `{n}`.
+fn with_placeholder(text: &str, n: u32) -> Option<String> {
+    let digits = n.to_string();
+    let bytes = text.as_bytes();
+    let at = text.match_indices(&digits).map(|(i, _)| i).find(|&i| {
+        let before = i.checked_sub(1).map(|b| bytes[b].is_ascii_digit());
+        let after = bytes.get(i + digits.len()).map(u8::is_ascii_digit);
+        before != Some(true) && after != Some(true)
+    })?;
+    Some(format!(
+        "{}{{n}}{}",
+        &text[..at],
+        &text[at + digits.len()..]
+    ))
+}
+
+/// `per_module`: the value each kind of module fixes, where all modules of
+/// the kind fix one value (the user's value where they do not fix it).
+fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
+    let fixed = |kind: ModuleKind| -> Option<String> {
+        let values: Vec<Option<&Value>> = in_modules
+            .iter()
+            .filter(|(k, _)| *k == kind)
+            .map(|(_, f)| (!f.changeable).then_some(f.default.as_ref()).flatten())
+            .collect();
+        match values.first()? {
+            Some(Value::Int(v)) if values.iter().all(|w| *w == values[0]) => Some(v.to_string()),
+            _ => None,
+        }
+    };
+    let parts: Vec<String> = [
+        ("user_defined", ModuleKind::Pzd),
+        ("standard_telegram_1", ModuleKind::StandardTelegram1),
+    ]
+    .into_iter()
+    .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
+    .collect();
+    out.key("per_module", format!("{{ {} }}", parts.join(", ")));
+}
+
+/// `default` (or `defaults`) and `range` or `choices` of entries.
+fn defaults_and_values(out: &mut TomlOut, fields: &[Field], notes: &mut Notes) {
+    let defaults: Vec<String> = fields
+        .iter()
+        .map(|f| match &f.default {
+            Some(Value::Int(v)) => v.to_string(),
+            _ => "0".into(),
+        })
+        .collect();
+    match defaults.iter().all(|d| *d == defaults[0]) {
+        true => out.key("default", &defaults[0]),
+        false => out.key("defaults", list(&defaults)),
+    }
+    let first = &fields[0];
+    for f in fields.iter().filter(|f| f.data_type != "Unsigned16") {
+        notes.unsaid(
+            &format!(
+                "record entry \"{}\" of type {}",
+                f.name.primary, f.data_type
+            ),
+            &f.place,
+            "the description's record entries are Unsigned16",
+        );
+    }
+    if !first.choices.is_empty() {
+        let choices: Vec<String> = first
+            .choices
+            .iter()
+            .filter_map(|c| match &c.value {
+                Value::Int(v) => Some(format!("{{ value = {v}, text = {} }}", text(&c.text))),
+                _ => None,
+            })
+            .collect();
+        out.key("choices", format!("[\n    {},\n]", choices.join(",\n    ")));
+    } else if let Allowed::Ranges(ranges) = &first.allowed {
+        if let [(Value::Int(a), Value::Int(b))] = ranges.as_slice() {
+            out.key("range", format!("[{a}, {b}]"));
+        }
+    }
+}
+
+fn profinet(
+    out: &mut TomlOut,
+    device: &PnDevice,
+    dap: &Dap,
+    name: &FileName,
+    modules: &[Recognised],
+    notes: &mut Notes,
+) {
+    out.table("profinet");
+    let id = |n: Option<u32>| format!("{{ value = 0x{:04X} }}", n.unwrap_or(0));
+    out.key("vendor_id", id(device.vendor_id));
+    out.key("device_id", id(device.device_id));
+    out.string("file_vendor", &name.vendor);
+    out.string("gsdml_version", &name.version);
+    out.key("date", &name.date);
+    let attributes = &dap.item.attributes;
+    out.string(
+        "dns_name",
+        attribute(attributes, "DNS_CompatibleName").unwrap_or_default(),
+    );
+    let ports: Vec<&Submodule> = dap
+        .item
+        .submodules
+        .iter()
+        .filter(|s| s.kind == SubmoduleKind::Port)
+        .collect();
+    out.key("ports", ports.len());
+    out.key(
+        "min_device_interval",
+        attribute(attributes, "MinDeviceInterval").unwrap_or("32"),
+    );
+    let lengths = |pkw: bool| -> Vec<u8> {
+        modules
+            .iter()
+            .filter(|m| m.kind == ModuleKind::Pzd && m.layout.pkw == pkw)
+            .map(|m| m.layout.pzd_words)
+            .collect()
+    };
+    let (with, without) = (lengths(true), lengths(false));
+    let module_pkw = match (with.is_empty(), without.is_empty()) {
+        (false, true) => "with",
+        (true, false) => "without",
+        _ => "both",
+    };
+    if module_pkw == "both" && with != without {
+        notes.note(format!(
+            "the modules with the PKW channel have PZD words {with:?}, those without {without:?}: the description offers the same lengths both ways, {with:?}"
+        ));
+    }
+    let offered = if with.is_empty() { &without } else { &with };
+    out.key("pzd_lengths", list(offered));
+    out.string("module_pkw", module_pkw);
+    if modules
+        .iter()
+        .any(|m| m.kind == ModuleKind::StandardTelegram1)
+    {
+        out.key("standard_telegram_1", true);
+    }
+    interface_properties(out, dap);
+}
+
+fn interface_properties(out: &mut TomlOut, dap: &Dap) {
+    let interface = dap
+        .item
+        .submodules
+        .iter()
+        .find(|s| s.kind == SubmoduleKind::Interface);
+    let interface_attributes = interface.map_or(&[][..], |s| &s.attributes[..]);
+    if let Some(clocks) = attribute(
+        interface_attributes,
+        "ApplicationRelations/TimingProperties@SendClock",
+    ) {
+        out.key("send_clock", list(clocks.split_whitespace()));
+    }
+    for (key, name) in [
+        ("conformance_class", "CertificationInfo@ConformanceClass"),
+        ("netload_class", "CertificationInfo@NetloadClass"),
+    ] {
+        if let Some(class) = attribute(&dap.item.attributes, name) {
+            out.string(key, class);
+        }
+    }
+    let dap_submodule = dap
+        .item
+        .submodules
+        .iter()
+        .find(|s| s.kind == SubmoduleKind::Virtual);
+    let records = dap_submodule
+        .and_then(|s| attribute(&s.attributes, "Writeable_IM_Records"))
+        .unwrap_or_default();
+    out.key("writeable_im_records", list(records.split_whitespace()));
+    if attribute(interface_attributes, "MediaRedundancy@SupportedRole").is_some() {
+        out.key("media_redundancy", true);
+    }
+}
+
+/// `[profinet.module_info]` and `[profinet.module_name]`: what each kind
+/// of module's info text adds to gsdc's description of it, and a vendor's
+/// telegram 1's name.
+fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    let profidrive = modules.iter().any(Recognised::is_profidrive);
+    let mut infos: Vec<(&str, String)> = Vec::new();
+    let mut name = None;
+    for (key, kind) in [
+        ("user_defined", ModuleKind::Pzd),
+        ("standard_telegram_1", ModuleKind::StandardTelegram1),
+    ] {
+        let of_kind: Vec<&Recognised> = modules.iter().filter(|m| m.kind == kind).collect();
+        let Some(first) = of_kind.first() else {
+            continue;
+        };
+        let module_name = first.module.name.clone().unwrap_or_default();
+        if kind == ModuleKind::StandardTelegram1 && !profidrive {
+            name = Some(text(&module_name));
+        }
+        let added: Vec<Option<Text>> = of_kind
+            .iter()
+            .map(|m| added_info(m, &module_name, profidrive))
+            .collect();
+        match added.first() {
+            Some(Some(info)) if added.iter().all(|a| a.as_ref() == Some(info)) => {
+                if !info.primary.is_empty() {
+                    infos.push((key, text(info)));
+                }
+            }
+            _ => notes.unsaid(
+                &format!("module `{}`'s InfoText", first.module.id),
+                &first.module.place,
+                "the description's module info adds one text to gsdc's description of every module of a kind",
+            ),
+        }
+    }
+    if !infos.is_empty() {
+        out.table("profinet.module_info");
+        for (key, info) in infos {
+            out.key(key, info);
+        }
+    }
+    if let Some(name) = name {
+        out.table("profinet.module_name");
+        out.key("standard_telegram_1", name);
+    }
+}
+
+/// What a module's info text adds after gsdc's description of it, in
+/// every language (empty when it adds nothing); `None` when the text is
+/// not gsdc's description at all.
+fn added_info(m: &Recognised, name: &Text, profidrive: bool) -> Option<Text> {
+    let info = m.module.info.as_ref()?;
+    let name = ir_text(name);
+    let gsdc = crate::lower::module_description(m.kind, m.layout, &name, profidrive);
+    let strip = |code: &str, full: &str| -> Option<String> {
+        let own = gsdc.get(code);
+        if full == own {
+            return Some(String::new());
+        }
+        full.strip_prefix(&crate::lower::info_prefix(code, own))
+            .map(str::to_string)
+    };
+    let mut added = Text::plain(strip("en", &info.primary)?);
+    let mut translations = (*added.translations).clone();
+    for (code, full) in info.translations.iter() {
+        let language: std::sync::Arc<str> = std::sync::Arc::from(code);
+        translations.insert_first(&language, &strip(code, full)?);
+    }
+    added.translations = std::sync::Arc::new(translations);
+    Some(added)
+}
+
+/// A file's text as the description model's.
+fn ir_text(t: &Text) -> crate::ir::Text {
+    let mut text = crate::ir::Text::english(t.primary.to_string());
+    text.others = t
+        .translations
+        .iter()
+        .map(|(c, s)| (c.to_string(), s.to_string()))
+        .collect();
+    text
+}
+
+/// `[profinet.ident_numbers]`: every number as the file has it.
+fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
+    out.table("profinet.ident_numbers");
+    let hex = |n: u32| format!("0x{n:08X}");
+    let dap_ident = dap.item.ident.unwrap_or(0);
+    out.key("dap", hex(dap_ident));
+    let submodule = |kind| {
+        dap.item
+            .submodules
+            .iter()
+            .filter(move |s: &&Submodule| s.kind == kind)
+    };
+    if let Some(s) = submodule(SubmoduleKind::Virtual).next() {
+        out.key("dap_submodule", hex(s.ident.unwrap_or(0)));
+    }
+    if let Some(s) = submodule(SubmoduleKind::Interface).next() {
+        out.key("interface", hex(s.ident.unwrap_or(0)));
+    }
+    let ports: Vec<String> = submodule(SubmoduleKind::Port)
+        .map(|s| hex(s.ident.unwrap_or(0)))
+        .collect();
+    out.key("ports", list(ports));
+    if let Some(ap) = modules.iter().find_map(|m| m.access_point) {
+        out.key("access_point", hex(ap.ident.unwrap_or(0)));
+    }
+    let entries = |of: &dyn Fn(&Recognised) -> Option<u32>| -> String {
+        let items: Vec<String> = modules
+            .iter()
+            .filter_map(|m| Some(format!("{} = {}", m.code_name(), hex(of(m)?))))
+            .collect();
+        format!("{{ {} }}", items.join(", "))
+    };
+    out.key("modules", entries(&|m| m.module.ident));
+    let differ: Vec<&Recognised> = modules
+        .iter()
+        .filter(|m| m.data.ident != m.module.ident)
+        .collect();
+    if !differ.is_empty() {
+        out.key(
+            "submodules",
+            entries(&|m| (m.data.ident != m.module.ident).then_some(m.data.ident?)),
+        );
+    }
+}
+
+/// W600 for each attribute and element the description has no place for,
+/// or whose value gsdc writes another way.
+fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &mut Notes) {
+    let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
+        for a in attributes {
+            let fits = known.iter().any(|(name, value)| {
+                *name == &*a.name
+                    && value
+                        .is_none_or(|v| v == attribute(std::slice::from_ref(a), name).unwrap_or(""))
+            });
+            if !fits {
+                let why = match &*a.name {
+                    "Graphics/GraphicItemRef@GraphicItemTarget" | "Graphics/GraphicItemRef@Type" => {
+                        "the device symbol is a bitmap beside the file: give the description a PNG of it (`device.symbol`)"
+                    }
+                    _ => "the description has no key for it, or gsdc writes another value",
+                };
+                notes.unsaid(&format!("{of} {}", a.name), &a.place, why);
+            }
+        }
+    };
+    check(
+        &dap.item.attributes,
+        DAP_ATTRIBUTES,
+        "DeviceAccessPointItem",
+    );
+    for s in &dap.item.submodules {
+        let known = match s.kind {
+            SubmoduleKind::Interface => INTERFACE_ATTRIBUTES,
+            SubmoduleKind::Port => PORT_ATTRIBUTES,
+            _ => SUBMODULE_ATTRIBUTES,
+        };
+        check(&s.attributes, known, s.kind.element());
+    }
+    for m in modules {
+        check(
+            &m.module.attributes,
+            &[("ModuleInfo@CategoryRef", None)],
+            "ModuleItem",
+        );
+        for s in m.access_point.iter().chain([&m.data]) {
+            check(&s.attributes, SUBMODULE_ATTRIBUTES, "VirtualSubmoduleItem");
+        }
+    }
+    for a in device.identity.iter().filter(|a| {
+        ![
+            "DeviceIdentity/VendorName@Value",
+            "DeviceIdentity/InfoText@TextId",
+            "DeviceFunction/Family@MainFamily",
+            "DeviceFunction/Family@ProductFamily",
+        ]
+        .contains(&&*a.name)
+    }) {
+        notes.unsaid(&a.name, &a.place, "the description has no key for it");
+    }
+    for a in &device.other {
+        notes.unsaid(&a.name, &a.place, "the description has no key for it");
+    }
+    for d in &device.diagnosis {
+        notes.unsaid(
+            &format!("{} {}", d.element, d.error_type),
+            &d.place,
+            "the description has no PROFINET channel diagnosis",
+        );
+    }
+    for u in &device.unit_diagnosis {
+        notes.unsaid(
+            &format!("UnitDiagTypeItem {}", u.id),
+            &u.place,
+            "the description has no PROFINET unit diagnosis",
+        );
+    }
+    let used: Vec<&str> = modules.iter().map(|m| m.module.id.as_str()).collect();
+    for m in device
+        .modules
+        .iter()
+        .filter(|m| !used.contains(&m.id.as_str()))
+    {
+        notes.unsaid(
+            &format!("ModuleItem `{}`", m.id),
+            &m.place,
+            "no device access point offers it",
+        );
+    }
+}
