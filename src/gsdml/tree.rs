@@ -153,10 +153,16 @@ impl<'t> Builder<'t> {
             if self.declarations > shape::MAX_NAMESPACES {
                 return None;
             }
+            let prefix = match name.strip_prefix("xmlns:") {
+                None => "",
+                // `xmlns:` binds no prefix, and `xmlns` is no prefix to bind.
+                Some(prefix) if !is_name(prefix) || prefix.contains(':') || prefix == "xmlns" => {
+                    return None
+                }
+                Some(prefix) => prefix,
+            };
             let declared = self.declare(uri.clone());
-            let prefix = name.strip_prefix("xmlns").unwrap_or_default();
-            self.bindings
-                .push((prefix.strip_prefix(':').unwrap_or(prefix), declared, id));
+            self.bindings.push((prefix, declared, id));
         }
         let first_attribute = self.tree.attributes.len() as u32;
         for (name, value) in raw.drain(..).filter(|(name, _)| !is_declaration(name)) {
@@ -714,6 +720,8 @@ mod tests {
                 "<a xmlns:p=\"u\" xmlns:q=\"u\" p:x=\"1\" q:x=\"2\"/>",
             ),
             ("an undeclared prefix", "<p:a/>"),
+            ("a declaration of no prefix", "<a xmlns:=\"u\"/>"),
+            ("a declaration of xmlns", "<a xmlns:xmlns=\"u\"/>"),
             ("an undeclared attribute prefix", "<a p:x=\"1\"/>"),
             ("an unknown entity", "<a x=\"&nbsp;\"/>"),
             ("an unknown entity in text", "<a>&nbsp;</a>"),
