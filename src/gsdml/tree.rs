@@ -155,10 +155,8 @@ impl<'t> Builder<'t> {
             }
             let prefix = match name.strip_prefix("xmlns:") {
                 None => "",
-                // `xmlns:` binds no prefix, and `xmlns` is no prefix to bind.
-                Some(prefix) if !is_name(prefix) || prefix.contains(':') || prefix == "xmlns" => {
-                    return None
-                }
+                // `xmlns:` binds no prefix.
+                Some(prefix) if !is_name(prefix) || prefix.contains(':') => return None,
                 Some(prefix) => prefix,
             };
             let declared = self.declare(uri.clone());
@@ -721,7 +719,6 @@ mod tests {
             ),
             ("an undeclared prefix", "<p:a/>"),
             ("a declaration of no prefix", "<a xmlns:=\"u\"/>"),
-            ("a declaration of xmlns", "<a xmlns:xmlns=\"u\"/>"),
             ("an undeclared attribute prefix", "<a p:x=\"1\"/>"),
             ("an unknown entity", "<a x=\"&nbsp;\"/>"),
             ("an unknown entity in text", "<a>&nbsp;</a>"),
