@@ -21,6 +21,15 @@ fn body(gsd: &str) -> &str {
     &gsd[end..]
 }
 
+/// The description an import wrote, or a panic with its findings (`what`
+/// names the case).
+fn written<'i>(imported: &'i Imported, what: &str) -> &'i str {
+    imported
+        .description
+        .as_deref()
+        .unwrap_or_else(|| panic!("{what}: {:#?}", imported.diagnostics))
+}
+
 fn codes(imported: &Imported) -> Vec<&'static str> {
     imported.diagnostics.iter().map(|d| d.code).collect()
 }
@@ -53,10 +62,7 @@ fn shipped_device_files_import_and_rebuild_byte_identical_below_the_header() {
                 assert!(codes(&imported).contains(&"E602"), "{}", file.file_name);
                 continue;
             }
-            let toml = imported
-                .description
-                .as_deref()
-                .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
+            let toml = written(&imported, &name);
             assert!(imported.round_trip.is_clean(), "{name}");
             let symbol = imported.symbol.as_ref();
             let (rebuilt, diagnostics) = gsdc::load_with("imported.toml", toml, &|path: &str| {
@@ -161,10 +167,7 @@ fn fixture_gsdml_files_import_and_rebuild_byte_identical() {
         let (file_name, gsdml) =
             descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
         let imported = import(&file_name, gsdml.as_bytes());
-        let toml = imported
-            .description
-            .as_deref()
-            .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
+        let toml = written(&imported, &name);
         let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", toml);
         let rebuilt = rebuilt.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
         let (_, text) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsdml);
@@ -207,10 +210,7 @@ fn a_gsdml_files_own_ident_numbers_are_imported() {
         );
     assert_eq!(renumbered.matches("0x0000471").count(), 2);
     let imported = import(&name, renumbered.as_bytes());
-    let toml = imported
-        .description
-        .as_deref()
-        .unwrap_or_else(|| panic!("{:#?}", imported.diagnostics));
+    let toml = written(&imported, "");
     for stated in [
         "dap = 0x00010000",
         "dap_submodule = 0x00000001",
@@ -344,10 +344,7 @@ fn every_key_of_a_vendors_own_layout_round_trips_byte_for_byte() {
     let ir = descriptions::load_from("tests/fixtures/valid", "vendor_dp.toml");
     let (name, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
     let imported = import(&name, gsd.as_bytes());
-    let toml = imported
-        .description
-        .as_deref()
-        .unwrap_or_else(|| panic!("{:#?}", imported.diagnostics));
+    let toml = written(&imported, "");
     assert!(codes(&imported).is_empty(), "{:?}", imported.diagnostics);
     for said in [
         "[profibus.dpv1.alarms]",
@@ -474,10 +471,7 @@ fn latin1_strings_import_verbatim_and_rebuild_as_the_same_bytes() {
         b"\"PZD1 \xFCber 50 \xB0C\"".iter().copied(),
     );
     let imported = import_with(&name, &latin1, &|_: &str| Ok(bmp.clone()));
-    let toml = imported
-        .description
-        .as_deref()
-        .unwrap_or_else(|| panic!("{:#?}", imported.diagnostics));
+    let toml = written(&imported, "");
     assert!(toml.contains("[profibus]\ncharset = \"latin-1\"\n"));
     assert!(toml.contains("name = \"PZD1 über 50 °C\""));
     let png = &imported.symbol.as_ref().unwrap().png;
