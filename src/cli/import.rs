@@ -75,10 +75,11 @@ pub fn run(args: &Args) -> Status {
     }
 }
 
-/// A file beside the GSD `gsd` by its name, or by the same name in other
-/// letter case (GSD files name their bitmaps as written on Windows).
-fn read_beside(gsd: &Path, name: &str) -> Result<Vec<u8>, String> {
-    let dir = gsd.parent().unwrap_or(Path::new("."));
+/// A file beside the device file `beside` by its name, or by the same
+/// name in other letter case (GSD files name their bitmaps as written on
+/// Windows).
+fn read_beside(beside: &Path, name: &str) -> Result<Vec<u8>, String> {
+    let dir = beside.parent().unwrap_or(Path::new("."));
     let exact = dir.join(name);
     let path = if exact.is_file() {
         exact
@@ -92,7 +93,7 @@ fn read_beside(gsd: &Path, name: &str) -> Result<Vec<u8>, String> {
                     .and_then(|n| n.to_str())
                     .is_some_and(|n| n.eq_ignore_ascii_case(name))
             })
-            .ok_or_else(|| "no such file beside the GSD".to_string())?
+            .ok_or_else(|| "no such file beside it".to_string())?
     };
     match crate::output::read_device_file(&path) {
         Ok((_, bytes)) => Ok(bytes),

@@ -36,10 +36,10 @@ pub fn import_both(gsd: (&str, &[u8]), gsdml: (&str, &[u8]), files: Files<'_>) -
     let mut symbol = None;
     let described = match (&dp_device, &pn_device) {
         (Some(Device::Dp(d)), Some(Device::Pn(p))) => {
-            symbol = symbol::imported(d, files, &mut dp_notes);
+            symbol = symbol::imported(symbol::of_gsd(d), files, &mut dp_notes);
             let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
             let dp_out = dp::describe(d, gsd.0, symbol_name, &mut dp_notes);
-            let pn_out = pn::describe(p, gsdml.0, &mut pn_notes);
+            let pn_out = pn::describe(p, gsdml.0, None, &mut pn_notes);
             let agree = identities_agree(d, p, gsdml.0, &mut dp_notes);
             match (dp_out, pn_out, agree) {
                 (Some(a), Some(b), true) => Some(merge(a, b, (gsd.0, gsdml.0)).finish()),

@@ -65,25 +65,29 @@ pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
 /// Imports one GSD or GSDML file, `file_name` its own name (a GSD's
 /// becomes the description's `file_name`, a GSDML file's name its vendor,
 /// family and date; either is the reason under `[choices]`), without the
-/// files beside it: a GSD's `Bitmap_Device` is left out (W600).
+/// files beside it: the device symbol is left out (W600).
 pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
     import_with(file_name, bytes, &no_files)
 }
 
 /// [`import`] with the files beside the imported one: `files` gives the
-/// bytes of the bitmap a GSD's `Bitmap_Device` names (`NAME.bmp`). The
-/// core reads nothing.
+/// bytes of the bitmap a GSD's `Bitmap_Device` or a GSDML file's device
+/// symbol names (`NAME.bmp`). The core reads nothing.
 pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported {
     let (device, text) = read(file_name, bytes);
     let mut notes = Notes::new(&text);
     let mut symbol = None;
     let description = match &device {
         Some(Device::Dp(d)) => {
-            symbol = symbol::imported(d, files, &mut notes);
+            symbol = symbol::imported(symbol::of_gsd(d), files, &mut notes);
             let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
             dp::describe(d, file_name, symbol_name, &mut notes).map(TomlOut::finish)
         }
-        Some(Device::Pn(d)) => pn::describe(d, file_name, &mut notes).map(TomlOut::finish),
+        Some(Device::Pn(d)) => {
+            symbol = symbol::imported(symbol::of_gsdml(d), files, &mut notes);
+            let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
+            pn::describe(d, file_name, symbol_name, &mut notes).map(TomlOut::finish)
+        }
         None => {
             notes.refuse("not a GSD or GSDML file gsdc can read: `gsdc check` says why");
             None

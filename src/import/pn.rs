@@ -37,6 +37,9 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("CertificationInfo@NetloadClass", None),
     ("IOConfigData@MaxInputLength", None),
     ("IOConfigData@MaxOutputLength", None),
+    // Read by `super::symbol`, or left out there with its reason.
+    (super::symbol::GSDML_SYMBOL_TYPE, Some("DeviceSymbol")),
+    (super::symbol::GSDML_SYMBOL_TARGET, None),
 ];
 
 const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
@@ -92,7 +95,14 @@ impl Recognised<'_> {
 }
 
 /// The description of `device`, read from `file`; `None` when refused.
-pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Option<TomlOut> {
+/// `symbol` is the PNG's name the description gives as its device symbol
+/// (the DAP's `DeviceSymbol`, which `super::symbol` reads and judges).
+pub(super) fn describe(
+    device: &PnDevice,
+    file: &str,
+    symbol: Option<&str>,
+    notes: &mut Notes,
+) -> Option<TomlOut> {
     let dap = one_dap(device, notes)?;
     if let Some(s) = device.submodules.first() {
         notes.refuse_at("pluggable submodules (SubmoduleList): the description's modules each carry one submodule of data", &s.place);
@@ -112,7 +122,7 @@ pub(super) fn describe(device: &PnDevice, file: &str, notes: &mut Notes) -> Opti
         "Imported by gsdc import from {file}. Every value below is the file's,"
     ));
     out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
-    device_table(&mut out, device, dap, &name);
+    device_table(&mut out, device, dap, &name, symbol);
     let records = Records::of(&modules);
     telegram_table(&mut out, &modules, pkw);
     records.write_mappings(&mut out, notes);
@@ -378,7 +388,13 @@ fn parse_file_name(file: &str) -> Option<FileName> {
     })
 }
 
-fn device_table(out: &mut TomlOut, device: &PnDevice, dap: &Dap, name: &FileName) {
+fn device_table(
+    out: &mut TomlOut,
+    device: &PnDevice,
+    dap: &Dap,
+    name: &FileName,
+    symbol: Option<&str>,
+) {
     out.table("device");
     let vendor = attribute(&device.identity, "DeviceIdentity/VendorName@Value").unwrap_or_default();
     out.string("vendor", vendor);
@@ -399,6 +415,9 @@ fn device_table(out: &mut TomlOut, device: &PnDevice, dap: &Dap, name: &FileName
     }
     if let Some(info) = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId") {
         out.key("info", text(info));
+    }
+    if let Some(png) = symbol {
+        out.string("symbol", png);
     }
 }
 
@@ -952,12 +971,7 @@ fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &m
                         .is_none_or(|v| v == attribute(std::slice::from_ref(a), name).unwrap_or(""))
             });
             if !fits {
-                let why = match &*a.name {
-                    "Graphics/GraphicItemRef@GraphicItemTarget" | "Graphics/GraphicItemRef@Type" => {
-                        "the device symbol is a bitmap beside the file: give the description a PNG of it (`device.symbol`)"
-                    }
-                    _ => "the description has no key for it, or gsdc writes another value",
-                };
+                let why = "the description has no key for it, or gsdc writes another value";
                 notes.unsaid(&format!("{of} {}", a.name), &a.place, why);
             }
         }
