@@ -350,38 +350,33 @@ struct FileName {
     date: String,
 }
 
-/// `GSDML-V2.32-Vendor-Family-20230830[-071447].xml`; refused otherwise,
-/// since the description's file name is made of these parts.
+/// `GSDML-V2.32-Vendor-Family-20230830[-071447].xml`, read as `gsdc
+/// check` reads file names; refused otherwise, since the description's
+/// file name is made of these parts.
 fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
-    let Some(name) = parse_file_name(file) else {
-        notes.refuse(&format!(
-            "`{file}` is not a GSDML file name (GSDML-V<version>-<vendor>-<family>-<yyyymmdd>.xml): the description makes the file name from its parts"
-        ));
-        return None;
+    let parts = match crate::gsdml::version::parse_file_name(file) {
+        Ok(parts) => parts,
+        Err(why) => {
+            notes.refuse(&format!(
+                "`{file}` is not a GSDML file name (GSDML-V<version>-<vendor>-<family>-<yyyymmdd>.xml): {why}; the description makes the file name from its parts"
+            ));
+            return None;
+        }
     };
-    Some(name)
-}
-
-fn parse_file_name(file: &str) -> Option<FileName> {
-    let stem = file.strip_prefix("GSDML-")?;
-    let stem = stem
-        .strip_suffix(".xml")
-        .or_else(|| stem.strip_suffix(".XML"))?;
-    let (version, rest) = stem.split_once('-')?;
-    let (vendor, rest) = rest.split_once('-')?;
-    let digits = |s: &str, n: usize| s.len() == n && s.bytes().all(|b| b.is_ascii_digit());
-    let (rest, last) = rest.rsplit_once('-')?;
-    let (family, date, time) = match rest.rsplit_once('-') {
-        Some((family, date)) if digits(date, 8) && digits(last, 6) => (family, date, Some(last)),
-        _ if digits(last, 8) => (rest, last, None),
-        _ => return None,
-    };
+    // `parse_file_name` found the vendor and the family on each side of a `-`,
+    // a date of eight digits and a time of six.
+    let (vendor, family) = parts.vendor_and_family.split_once('-')?;
+    let date = parts.date;
     let day = format!("{}-{}-{}", &date[..4], &date[4..6], &date[6..]);
     Some(FileName {
-        version: version.trim_start_matches(['V', 'v']).to_string(),
+        version: parts
+            .version
+            .to_string()
+            .trim_start_matches('V')
+            .to_string(),
         vendor: vendor.to_string(),
         family: family.to_string(),
-        date: match time {
+        date: match parts.time {
             Some(t) => format!("{day}T{}:{}:{}", &t[..2], &t[2..4], &t[4..]),
             None => day,
         },
