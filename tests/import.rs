@@ -733,3 +733,21 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     assert_eq!(two_gsds.status.code(), Some(2));
     assert!(support::stderr(&two_gsds).contains("two files are a card's GSD and its GSDML file"));
 }
+
+/// A GSDML file under a name that is not PI's is refused: the description
+/// makes its file name from the name's parts, and the message says what
+/// is wrong with it.
+#[test]
+fn a_gsdml_file_under_another_name_is_refused_saying_why() {
+    let ir = descriptions::load("mv810-pnet02.toml");
+    let (_, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let imported = import("GSDML-V2.32-MEGMEET-MV800-20231399.xml", gsdml.as_bytes());
+    assert_eq!(imported.description, None);
+    let refused = messages(&imported, "E602");
+    assert_eq!(refused.len(), 1, "{:#?}", imported.diagnostics);
+    assert!(
+        refused[0].contains("is not a GSDML file name") && refused[0].contains("release date"),
+        "{}",
+        refused[0]
+    );
+}
