@@ -285,7 +285,7 @@ impl<'t> Builder<'t> {
         }
     }
 
-    /// The namespace a prefix is bound to; `None` when it is bound to none.
+    /// The namespace a prefix is bound to; `None` when none declared it.
     fn prefix(&mut self, prefix: &str) -> Option<u32> {
         match prefix {
             "xml" => Some(self.declare(Cow::Borrowed(XML_NAMESPACE))),
@@ -297,15 +297,24 @@ impl<'t> Builder<'t> {
 /// Whether `name` is an XML name with a prefix or none (a name that
 /// starts with `:` has none, as roxmltree reads it).
 fn is_name(name: &str) -> bool {
-    let part = |part: &str| {
-        let mut chars = part.chars();
-        chars.next().is_some_and(is_name_start) && chars.all(is_name_char)
-    };
-    match name.split_once(':') {
-        Some(("", local)) => part(local),
-        Some((prefix, local)) => part(prefix) && part(local),
-        None => part(name),
+    match memchr::memchr(b':', name.as_bytes()) {
+        Some(0) => is_name_part(&name[1..]),
+        Some(colon) => is_name_part(&name[..colon]) && is_name_part(&name[colon + 1..]),
+        None => is_name_part(name),
     }
+}
+
+/// A name without a colon; ASCII names, which GSDML files have, without
+/// decoding characters.
+fn is_name_part(part: &str) -> bool {
+    let bytes = part.as_bytes();
+    if bytes.is_ascii() {
+        let starts = |b: &u8| b.is_ascii_alphabetic() || *b == b'_';
+        let goes_on = |b: &u8| b.is_ascii_alphanumeric() || matches!(b, b'_' | b'-' | b'.');
+        return bytes.first().is_some_and(starts) && bytes.iter().all(goes_on);
+    }
+    let mut chars = part.chars();
+    chars.next().is_some_and(is_name_start) && chars.all(is_name_char)
 }
 
 /// XML 1.0's `NameStartChar`, the colon left out (namespaces give it its
