@@ -9,6 +9,13 @@ cp ../descriptions/*.toml ../tests/fixtures/invalid/*.toml corpus/description/
 cp ../descriptions/*.toml ../tests/fixtures/valid/*.toml corpus/compile/
 cp ../../shared/corpus/gsd/*.[gG][sS]? corpus/gsd/
 cp ../../shared/corpus/gsdml/*.xml ../../shared/corpus/gsdml-invalid/*.xml corpus/gsdml/
+# gsdc import: the corpus's GSD and GSDML files and what the shipped
+# descriptions build.
+mkdir -p corpus/import
+cp ../../shared/corpus/gsd/*.[gG][sS]? ../../shared/corpus/gsdml/*.xml corpus/import/
+cargo run --quiet --manifest-path ../Cargo.toml -- build ../descriptions/*.toml --out corpus/import-built >/dev/null
+cp corpus/import-built/*.GSD corpus/import-built/*.xml corpus/import/
+rm -rf corpus/import-built
 # gsdc doc: the descriptions that load; gsdc decode: each with arguments,
 # NUL after the description and after each argument but the last.
 mkdir -p corpus/doc corpus/decode

@@ -8,8 +8,8 @@
 //! for two files at a time. Here quick-xml finds the markup and the
 //! elements are linked in one flat list with their attributes: reading the
 //! device of the largest corpus file (SEW's 1.1 MB) took 5.3 ms through
-//! roxmltree and takes 3.4 ms so (in process, one thread), and `gsdc diff`
-//! of the two largest files went from 111 M instructions to 72 M. A
+//! roxmltree and takes about 4 ms so (in process, one thread), and `gsdc
+//! diff` of the two largest files went from 111 M instructions to 75 M. A
 //! document this reader accepts is one roxmltree accepts, with the same
 //! elements, namespaces, places and attribute values (tested against it on
 //! the corpus and on broken files, and fuzzed); what it refuses, the diff
