@@ -58,7 +58,7 @@ impl RoundTrip {
     }
 }
 
-/// Gives the bytes of a file named beside the imported one (a GSD's device
+/// Gives the bytes of a file named beside the imported one (its device
 /// symbol's bitmap), or says why it cannot.
 pub type Files<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
 
@@ -78,15 +78,14 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
     let mut notes = Notes::new(&text);
     let mut symbol = None;
     let description = match &device {
-        Some(Device::Dp(d)) => {
-            symbol = symbol::imported(symbol::of_gsd(d), files, &mut notes);
+        Some(device) => {
+            symbol = symbol::imported(symbol::of(device), files, &mut notes);
             let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
-            dp::describe(d, file_name, symbol_name, &mut notes).map(TomlOut::finish)
-        }
-        Some(Device::Pn(d)) => {
-            symbol = symbol::imported(symbol::of_gsdml(d), files, &mut notes);
-            let symbol_name = symbol.as_ref().map(|s| s.file_name.as_str());
-            pn::describe(d, file_name, symbol_name, &mut notes).map(TomlOut::finish)
+            let described = match device {
+                Device::Dp(d) => dp::describe(d, file_name, symbol_name, &mut notes),
+                Device::Pn(d) => pn::describe(d, file_name, symbol_name, &mut notes),
+            };
+            described.map(TomlOut::finish)
         }
         None => {
             notes.refuse("not a GSD or GSDML file gsdc can read: `gsdc check` says why");

@@ -7,7 +7,7 @@
 use super::Notes;
 use crate::device::dp::DpDevice;
 use crate::device::pn::PnDevice;
-use crate::device::{AttributeValue, Place};
+use crate::device::{AttributeValue, Device, Place};
 
 /// The PNG to write beside the description, under `file_name`.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -22,6 +22,14 @@ pub(super) struct SymbolRef<'d> {
     what: &'d str,
     stem: Option<&'d str>,
     place: &'d Place,
+}
+
+/// Where a GSD or GSDML file names its device symbol.
+pub(super) fn of(device: &Device) -> Option<SymbolRef<'_>> {
+    match device {
+        Device::Dp(d) => of_gsd(d),
+        Device::Pn(d) => of_gsdml(d),
+    }
 }
 
 /// A GSD's `Bitmap_Device`.
@@ -42,7 +50,7 @@ pub(super) const GSDML_SYMBOL_TARGET: &str = "Graphics/GraphicItemRef@GraphicIte
 
 /// A GSDML file's device symbol: its (first) device access point's one
 /// graphic, when that is a `DeviceSymbol`.
-pub(super) fn of_gsdml(device: &PnDevice) -> Option<SymbolRef<'_>> {
+fn of_gsdml(device: &PnDevice) -> Option<SymbolRef<'_>> {
     let attributes = &device.daps.first()?.item.attributes;
     let plain = |name: &str| {
         attributes
