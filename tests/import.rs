@@ -30,6 +30,13 @@ fn written<'i>(imported: &'i Imported, what: &str) -> &'i str {
         .unwrap_or_else(|| panic!("{what}: {:#?}", imported.diagnostics))
 }
 
+/// Fails naming the first of `lines` the description `toml` does not hold.
+fn assert_says(toml: &str, lines: &[&str]) {
+    for line in lines {
+        assert!(toml.contains(line), "{line} not in\n{toml}");
+    }
+}
+
 fn codes(imported: &Imported) -> Vec<&'static str> {
     imported.diagnostics.iter().map(|d| d.code).collect()
 }
@@ -203,15 +210,16 @@ fn a_gsdml_files_own_ident_numbers_are_imported() {
     assert_eq!(renumbered.matches("0x0000471").count(), 2);
     let imported = import(&name, renumbered.as_bytes());
     let toml = written(&imported, "");
-    for stated in [
-        "dap = 0x00010000",
-        "dap_submodule = 0x00000001",
-        "ports = [0x00008001, 0x00000002]",
-        "pkw_pzd1 = 0x00004711",
-        "submodules = { pkw_pzd1 = 0x00004712 }",
-    ] {
-        assert!(toml.contains(stated), "{stated} not in\n{toml}");
-    }
+    assert_says(
+        toml,
+        &[
+            "dap = 0x00010000",
+            "dap_submodule = 0x00000001",
+            "ports = [0x00008001, 0x00000002]",
+            "pkw_pzd1 = 0x00004711",
+            "submodules = { pkw_pzd1 = 0x00004712 }",
+        ],
+    );
     let (rebuilt, _) = descriptions::load_text("imported.toml", toml);
     let (_, text) = descriptions::one(
         gsdc::compile(&rebuilt.unwrap()).unwrap(),
@@ -338,15 +346,16 @@ fn every_key_of_a_vendors_own_layout_round_trips_byte_for_byte() {
     let imported = import(&name, gsd.as_bytes());
     let toml = written(&imported, "");
     assert!(codes(&imported).is_empty(), "{:?}", imported.diagnostics);
-    for said in [
-        "[profibus.dpv1.alarms]",
-        "[profibus.isochronous]",
-        "block_structure = \"required\"",
-        "clear = true",
-        "c1_read_write_required = true",
-    ] {
-        assert!(toml.contains(said), "{said}");
-    }
+    assert_says(
+        toml,
+        &[
+            "[profibus.dpv1.alarms]",
+            "[profibus.isochronous]",
+            "block_structure = \"required\"",
+            "clear = true",
+            "c1_read_write_required = true",
+        ],
+    );
     let (rebuilt, diagnostics) = gsdc::load("imported.toml", toml);
     let rebuilt = rebuilt.unwrap_or_else(|| panic!("{diagnostics:#?}"));
     let (_, again) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsd);
