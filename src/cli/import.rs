@@ -103,12 +103,16 @@ fn read_beside(beside: &Path, name: &str) -> Result<Vec<u8>, String> {
 }
 
 /// The symbol's PNG beside the description, then the description: both or
-/// neither, never over a file. The error names the file it is about.
+/// neither, never over a file, in a folder made when missing. The error
+/// names the file it is about.
 fn write_outputs(
     out: &Path,
     description: &str,
     symbol: Option<&crate::import::ImportedSymbol>,
 ) -> Result<(), (PathBuf, std::io::Error)> {
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| (dir.to_path_buf(), e))?;
+    }
     let png = symbol.map(|s| (out.with_file_name(&s.file_name), &s.png));
     if let Some((path, bytes)) = &png {
         write_new(path, bytes).map_err(|e| (path.clone(), e))?;

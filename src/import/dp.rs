@@ -5,6 +5,7 @@
 //! place for is a warning at its line (W600); whether leaving it out makes
 //! another device is the round trip's to judge (`super::round_trip`).
 
+use super::gateway;
 use super::toml_out::{hex, list, quote, Line, TomlOut};
 use super::Notes;
 use crate::device::dp::{DpDevice, DpModule, Keyword};
@@ -102,12 +103,18 @@ pub(super) fn describe(
     symbol: Option<&str>,
     notes: &mut Notes,
 ) -> Option<TomlOut> {
-    let telegram = telegram(device);
-    let Some(pzd_words) = telegram.pzd_words else {
-        notes.refuse(
-            "no module of this GSD is a drive's telegram (PZD words each way, after a PKW channel or not): the description format describes drive option cards",
-        );
-        return None;
+    let card = match telegram(device) {
+        TelegramShape {
+            pkw,
+            pzd_words: Some(pzd_words),
+        } => Card::Drive { pkw, pzd_words },
+        _ => match gateway::read(device, notes) {
+            Ok(g) => Card::Gateway(g),
+            Err(why) => {
+                notes.refuse(&why.unwrap_or_else(|| NEITHER.to_string()));
+                return None;
+            }
+        },
     };
     for k in &device.keywords {
         let fixed = FIXED.iter().find(|(key, _)| *key == k.key);
@@ -132,17 +139,40 @@ pub(super) fn describe(
     ));
     out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
     device_table(&mut out, device, symbol);
-    out.table("telegram");
-    out.string("pkw", if telegram.pkw { "pke-ind-pwe" } else { "none" });
-    out.key("pzd_words", pzd_words);
-    profibus(&mut out, device, file, notes);
+    if let Card::Drive { pkw, pzd_words } = card {
+        out.table("telegram");
+        out.string("pkw", if pkw { "pke-ind-pwe" } else { "none" });
+        out.key("pzd_words", pzd_words);
+    }
+    profibus(&mut out, device, file, &card, notes);
+    if let Card::Gateway(g) = &card {
+        gateway::write(&mut out, g, file, notes);
+    }
     manual(&mut out);
     out.table("choices");
     let reason = quote(&format!("imported from {file}"));
-    for table in ["device", "telegram", "profibus"] {
+    let bus_part = match card {
+        Card::Drive { .. } => "telegram",
+        Card::Gateway(_) => "gateway",
+    };
+    for table in ["device", bus_part, "profibus"] {
         out.key(&quote(table), &reason);
     }
+    if let Card::Gateway(_) = card {
+        for (key, why) in gateway::choices(file) {
+            out.key(&quote(&key), quote(&why));
+        }
+    }
     Some(with_charset(out))
+}
+
+const NEITHER: &str = "no module of this GSD is a drive's telegram (PZD words each way, after a PKW channel or not), nor are its modules a gateway's blocks of words one way each: the description format describes drive option cards and gateways";
+
+/// What the file's modules carry: a drive's telegram, or the nodes' words
+/// of a gateway.
+enum Card {
+    Drive { pkw: bool, pzd_words: u8 },
+    Gateway(gateway::Gateway),
 }
 
 /// The description, stating `charset = "latin-1"` in `[profibus]` when the
@@ -288,7 +318,8 @@ fn device_table(out: &mut TomlOut, device: &DpDevice, symbol: Option<&str>) {
     }
 }
 
-fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes) {
+fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, card: &Card, notes: &mut Notes) {
+    let is_drive = matches!(card, Card::Drive { .. });
     out.table("profibus");
     out.string("file_name", &gsd_file_name(file, notes));
     if let Some(r) = number_of(device, "GSD_Revision") {
@@ -329,23 +360,37 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, notes: &mut Notes)
             ("pins_24v", "24V_Pins"),
             ("modul_offset", "Modul_Offset"),
             ("max_module", "Max_Module"),
-            ("max_input_len", "Max_Input_Len"),
-            ("max_output_len", "Max_Output_Len"),
-            ("max_data_len", "Max_Data_Len"),
         ],
     );
-    if let Some(words) = ppo5_pzd_words(device) {
-        out.key("ppo5_pzd_words", words);
+    // A gateway's lengths are its `[gateway]`'s.
+    if is_drive {
+        numbers(
+            out,
+            device,
+            &[
+                ("max_input_len", "Max_Input_Len"),
+                ("max_output_len", "Max_Output_Len"),
+            ],
+        );
     }
-    modules(out, device, notes);
-    user_prm(out, device, notes);
+    numbers(out, device, &[("max_data_len", "Max_Data_Len")]);
+    // A gateway's modules, parameters and diagnosis are its `[gateway]`'s.
+    if is_drive {
+        if let Some(words) = ppo5_pzd_words(device) {
+            out.key("ppo5_pzd_words", words);
+        }
+        modules(out, device, notes);
+        user_prm(out, device, notes);
+    }
     out.table("profibus.baud_rates");
     for (baud, max_tsdr) in device.baud_rates() {
         out.key(&quote(baud.as_str()), max_tsdr.unwrap_or(0));
     }
     dpv1(out, device);
     isochronous(out, device);
-    diagnosis(out, device, notes);
+    if is_drive {
+        diagnosis(out, device, notes);
+    }
 }
 
 /// `[profibus.isochronous]` when the file has Isochron_Mode_supp = 1.

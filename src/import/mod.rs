@@ -12,6 +12,7 @@
 
 mod both;
 mod dp;
+mod gateway;
 mod pn;
 mod symbol;
 mod toml_out;
@@ -194,8 +195,8 @@ const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML
 
 /// The diagnostics of one import, each at a line of the file.
 struct Notes {
+    text: String,
     lines: Vec<usize>,
-    len: usize,
     diagnostics: Diagnostics,
     unsaid: usize,
 }
@@ -221,8 +222,8 @@ impl Notes {
     fn new(text: &str) -> Notes {
         let starts = text.match_indices('\n').map(|(i, _)| i + 1);
         Notes {
+            text: text.to_string(),
             lines: std::iter::once(0).chain(starts).collect(),
-            len: text.len(),
             diagnostics: Diagnostics::default(),
             unsaid: 0,
         }
@@ -235,8 +236,23 @@ impl Notes {
         let end = self
             .lines
             .get(index + 1)
-            .map_or(self.len, |&next| next.saturating_sub(1));
+            .map_or(self.text.len(), |&next| next.saturating_sub(1));
         Some(start..end.max(start))
+    }
+
+    /// The comment lines right above a place's line, without their `;`, in
+    /// order: where gsdc's own GSD says in words what no keyword can.
+    fn comments_above(&self, place: &Place) -> Vec<&str> {
+        let index = usize::try_from(place.line).unwrap_or(0).saturating_sub(1);
+        let mut comments: Vec<&str> = self.lines[..index.min(self.lines.len())]
+            .iter()
+            .rev()
+            .map(|&start| self.text[start..].lines().next().unwrap_or_default().trim())
+            .take_while(|line| line.starts_with(';'))
+            .map(|line| line.trim_start_matches(';').trim())
+            .collect();
+        comments.reverse();
+        comments
     }
 
     /// W600: a keyword or element the description has no place for.

@@ -177,10 +177,7 @@ fn gsd_areas(types: &[DiagType]) -> Vec<GsdArea> {
     if listed.is_empty() {
         return areas;
     }
-    let mut note = format!(
-        "The code of {}",
-        types_named(listed.iter().map(|(value, _)| *value))
-    );
+    let mut note = format!("The code of {}", codes_by_type(&listed));
     for t in types {
         if let DiagCode::Word(name) = &t.code {
             note.push_str(&format!(
@@ -200,13 +197,20 @@ fn gsd_areas(types: &[DiagType]) -> Vec<GsdArea> {
     areas
 }
 
-/// `type 1`, `types 1 and 3`, `types 1, 3 and 5`.
-fn types_named(values: impl Iterator<Item = u8>) -> String {
-    let values: Vec<String> = values.map(|v| v.to_string()).collect();
-    match values.as_slice() {
-        [one] => format!("type {one}"),
-        [rest @ .., last] => format!("types {} and {last}", rest.join(", ")),
-        [] => String::new(),
+/// Which type each listed code belongs to, which a GSD cannot say but its
+/// reader (and `gsdc import`) needs: `type 1 (35, 34)`, `type 1 (35) and
+/// type 3 (32)`, `type 1 (35), type 3 (32) and type 5 (7)`.
+fn codes_by_type(listed: &[(u8, &[Choice])]) -> String {
+    let each: Vec<String> = listed
+        .iter()
+        .map(|(value, codes)| {
+            let codes: Vec<String> = codes.iter().map(|c| c.value.to_string()).collect();
+            format!("type {value} ({})", codes.join(", "))
+        })
+        .collect();
+    match each.as_slice() {
+        [rest @ .., last] if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        _ => each.concat(),
     }
 }
 
@@ -214,10 +218,28 @@ fn types_named(values: impl Iterator<Item = u8>) -> String {
 mod tests {
     use super::*;
 
+    fn codes(values: &[i64]) -> Vec<Choice> {
+        values
+            .iter()
+            .map(|&value| Choice {
+                value,
+                text: crate::ir::Text::english(""),
+                ident: Ident::of(&["code"]),
+            })
+            .collect()
+    }
+
     #[test]
-    fn types_are_named_as_a_sentence_names_them() {
-        assert_eq!(types_named([1].into_iter()), "type 1");
-        assert_eq!(types_named([1, 3].into_iter()), "types 1 and 3");
-        assert_eq!(types_named([1, 3, 5].into_iter()), "types 1, 3 and 5");
+    fn the_codes_are_named_by_type_as_a_sentence_names_them() {
+        let (a, b, c) = (codes(&[35, 34]), codes(&[32]), codes(&[7]));
+        assert_eq!(codes_by_type(&[(1, &a)]), "type 1 (35, 34)");
+        assert_eq!(
+            codes_by_type(&[(1, &a), (3, &b)]),
+            "type 1 (35, 34) and type 3 (32)"
+        );
+        assert_eq!(
+            codes_by_type(&[(1, &a), (3, &b), (5, &c)]),
+            "type 1 (35, 34), type 3 (32) and type 5 (7)"
+        );
     }
 }

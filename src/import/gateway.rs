@@ -1,0 +1,448 @@
+//! A gateway's GSD written back as `[gateway]`: a card that carries the
+//! data of the nodes of a second bus (MD810's bridge mode). Its modules are
+//! blocks of words one way each, the same sizes both ways; its
+//! User_Prm_Data is the count of nodes in use, then each node's input and
+//! output words, named with the node's number; its diagnosis areas show the
+//! types and the listed codes. Which type a code belongs to, no keyword
+//! says: gsdc's GSD says it in the comment above the codes' area, which is
+//! read here; a file without it is refused.
+
+use super::toml_out::{list, quote, TomlOut};
+use super::Notes;
+use crate::device::dp::{DiagArea, DpDevice};
+use crate::device::{Allowed, Field, Value};
+use crate::gsd::config::{identifiers, Direction, Identifier};
+
+/// A gateway's GSD as the description says it.
+pub(super) struct Gateway {
+    first_node: u8,
+    last_node: u8,
+    max_input_len: i64,
+    max_output_len: i64,
+    node_count: Param,
+    input_words: NodeWords,
+    output_words: NodeWords,
+    module_words: Vec<u8>,
+    consistent: bool,
+    diagnosis: Vec<DiagType>,
+}
+
+/// The node count's parameter, or one direction's words of every node.
+struct Param {
+    name: String,
+    kind: String,
+    range: (i128, i128),
+    default: i128,
+}
+
+struct NodeWords {
+    /// `{n}` stands for the node's number.
+    param: Param,
+    defaults: Vec<i128>,
+}
+
+struct DiagType {
+    value: i64,
+    text: String,
+    code: DiagCode,
+}
+
+enum DiagCode {
+    Listed(Vec<(i64, String)>),
+    Word(String),
+}
+
+/// The file read as a gateway's: `Err(None)` when its modules are not
+/// blocks of words one way each (not a gateway's GSD), `Err(Some(why))`
+/// when they are but another part has no place in `[gateway]`.
+pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<String>> {
+    let (module_words, consistent) = word_blocks(device).ok_or(None)?;
+    let prm = &device.user_prm_data;
+    let [count, words @ ..] = prm.fields.as_slice() else {
+        return Err(Some(
+            "a gateway's User_Prm_Data has the count of nodes in use first".into(),
+        ));
+    };
+    if words.is_empty() || words.len() % 2 != 0 || !prm.consts.is_empty() {
+        return Err(Some(
+            "a gateway's User_Prm_Data is the node count, then each node's input and output words, and no constant bytes".into(),
+        ));
+    }
+    let inputs: Vec<&Field> = words.iter().step_by(2).collect();
+    let outputs: Vec<&Field> = words.iter().skip(1).step_by(2).collect();
+    let (input_words, first_in) = node_words(&inputs)?;
+    let (output_words, first_out) = node_words(&outputs)?;
+    let nodes = u8::try_from(inputs.len()).ok();
+    let (Some(first_node), Some(last_node)) = (
+        (first_in == first_out).then_some(first_in),
+        nodes.and_then(|n| first_in.checked_add(n - 1)),
+    ) else {
+        return Err(Some(
+            "the input and output words' names number the nodes differently".into(),
+        ));
+    };
+    let length = |keyword| {
+        device
+            .keyword(keyword)
+            .and_then(|k| k.value.as_number())
+            .ok_or_else(|| Some(format!("a gateway's GSD states {keyword}")))
+    };
+    Ok(Gateway {
+        first_node,
+        last_node,
+        max_input_len: length("Max_Input_Len")?,
+        max_output_len: length("Max_Output_Len")?,
+        node_count: param(count, &count.name.primary)?,
+        input_words,
+        output_words,
+        module_words,
+        consistent,
+        diagnosis: diagnosis(device, notes)?,
+    })
+}
+
+/// The sizes of the word blocks and whether each is consistent as a
+/// whole: every module one general identifier of words one way, the same
+/// sizes each way, all alike consistent.
+fn word_blocks(device: &DpDevice) -> Option<(Vec<u8>, bool)> {
+    let mut blocks = Vec::new();
+    for m in &device.modules {
+        let ids = identifiers(&m.config).ok()?;
+        let [Identifier::General { direction, data }] = ids.as_slice() else {
+            return None;
+        };
+        if !data.words || *direction == Direction::Both || !m.user_prm_data.is_empty() {
+            return None;
+        }
+        blocks.push((*direction, data.count, data.consistent));
+    }
+    let sizes = |way: Direction| -> Vec<u8> {
+        let mut sizes: Vec<u8> = blocks
+            .iter()
+            .filter(|(d, ..)| *d == way)
+            .map(|(_, count, _)| *count)
+            .collect();
+        sizes.sort_unstable();
+        sizes
+    };
+    let (input, output) = (sizes(Direction::Input), sizes(Direction::Output));
+    let consistent = blocks.first()?.2;
+    let alike = blocks.iter().all(|(.., c)| *c == consistent);
+    (input == output && alike).then_some((input, consistent))
+}
+
+/// One direction's parameters of every node: one name with the node's
+/// number in it, one range, and each node's default; and the first node's
+/// number.
+fn node_words(fields: &[&Field]) -> Result<(NodeWords, u8), Option<String>> {
+    let names: Vec<&str> = fields.iter().map(|f| &*f.name.primary).collect();
+    let (template, first) = numbered(&names).ok_or_else(|| {
+        Some(format!(
+            "the node parameters \"{}\" .. are not one name numbered by node",
+            names.first().copied().unwrap_or_default()
+        ))
+    })?;
+    let params: Vec<Param> = fields
+        .iter()
+        .map(|f| param(f, &template))
+        .collect::<Result<_, _>>()?;
+    let first_param = &params[0];
+    let alike = params
+        .iter()
+        .all(|p| p.kind == first_param.kind && p.range == first_param.range);
+    if !alike {
+        return Err(Some(format!(
+            "the node parameters \"{template}\" differ in type or range from node to node"
+        )));
+    }
+    let defaults = params.iter().map(|p| p.default).collect();
+    let param = params.into_iter().next().expect("a node at least");
+    Ok((NodeWords { param, defaults }, first))
+}
+
+/// The name with `{n}` for a number that counts up by one from name to
+/// name, and that number's first value: `Slave {n} TPDO words` and 1 for
+/// `Slave 1 TPDO words`, `Slave 2 TPDO words`.
+fn numbered(names: &[&str]) -> Option<(String, u8)> {
+    let first = names.first()?;
+    let runs = first.char_indices().filter(|(i, c)| {
+        c.is_ascii_digit() && !first[..*i].ends_with(|p: char| p.is_ascii_digit())
+    });
+    runs.filter_map(|(start, _)| {
+        let len = first[start..]
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(first.len() - start);
+        let number: u8 = first[start..start + len].parse().ok()?;
+        let template = format!("{}{{n}}{}", &first[..start], &first[start + len..]);
+        let counts = names.iter().enumerate().all(|(i, name)| {
+            u8::try_from(i)
+                .ok()
+                .and_then(|i| number.checked_add(i))
+                .is_some_and(|n| *name == template.replace("{n}", &n.to_string()))
+        });
+        counts.then_some((template, number))
+    })
+    .next()
+}
+
+/// A gateway parameter: a byte, a word or bits of a byte, one range of
+/// values, its default, nothing else.
+fn param(f: &Field, name: &str) -> Result<Param, Option<String>> {
+    let why = |what: &str| {
+        Some(format!(
+            "the gateway parameter \"{}\" {what}",
+            f.name.primary
+        ))
+    };
+    let kind = match (f.data_type.as_str(), f.bits) {
+        ("Unsigned8" | "Unsigned16", None) => format!("type = {}", quote(&f.data_type)),
+        ("Bit" | "BitArea", Some(b)) => {
+            format!("bits = [{}, {}]", b.offset, b.offset + b.length - 1)
+        }
+        (other, _) => return Err(why(&format!("is of type {other}"))),
+    };
+    let range = match &f.allowed {
+        Allowed::Ranges(r) => match r.as_slice() {
+            [(Value::Int(min), Value::Int(max))] => (*min, *max),
+            _ => return Err(why("takes other values than one range")),
+        },
+        Allowed::Any => return Err(why("gives no range")),
+    };
+    let default = match f.default {
+        Some(Value::Int(d)) => d,
+        _ => return Err(why("has no default")),
+    };
+    if !f.choices.is_empty() || !f.changeable || !f.visible || !f.attributes.is_empty() {
+        return Err(why("has texts, attributes or is fixed or hidden"));
+    }
+    Ok(Param {
+        name: name.to_string(),
+        kind,
+        range,
+        default,
+    })
+}
+
+/// The types of the area of bits 0-7 and the codes of the area of bits
+/// 16-23, each code given to the type the comment above its area names.
+fn diagnosis(device: &DpDevice, notes: &Notes) -> Result<Vec<DiagType>, Option<String>> {
+    let d = &device.diagnosis;
+    if !d.bits.is_empty() || !d.types.is_empty() || !d.channel.is_empty() {
+        return Err(Some(
+            "a gateway's diagnosis is its areas of type and code, no bits or diagnosis types"
+                .into(),
+        ));
+    }
+    let area = |first: i64| {
+        d.areas
+            .iter()
+            .find(|a| a.first == first && a.last == first + 7)
+    };
+    let (Some(types), codes) = (area(0), area(16)) else {
+        return match d.areas.is_empty() {
+            true => Ok(Vec::new()),
+            false => Err(Some(
+                "a gateway's diagnosis shows its types in bits 0-7".into(),
+            )),
+        };
+    };
+    if d.areas.len() != 1 + usize::from(codes.is_some()) {
+        return Err(Some(
+            "a gateway's diagnosis has an area of types (bits 0-7) and one of codes (bits 16-23)"
+                .into(),
+        ));
+    }
+    let by_type = codes.map(|c| codes_by_type(c, notes)).transpose()?;
+    let text_of = |value: i64| -> Option<String> {
+        codes?
+            .values
+            .iter()
+            .find(|v| v.value == value)
+            .map(|v| v.text.primary.to_string())
+    };
+    types
+        .values
+        .iter()
+        .map(|t| {
+            let said = by_type
+                .as_ref()
+                .and_then(|b| b.iter().find(|(v, _)| *v == t.value));
+            let code = match said {
+                Some((_, Said::Codes(values))) => DiagCode::Listed(
+                    values
+                        .iter()
+                        .map(|&v| text_of(v).map(|text| (v, text)).ok_or_else(|| missing(v)))
+                        .collect::<Result<_, _>>()?,
+                ),
+                Some((_, Said::Word(name))) => DiagCode::Word(name.clone()),
+                None => return Err(unsaid_type(t.value)),
+            };
+            Ok(DiagType {
+                value: t.value,
+                text: t.text.primary.to_string(),
+                code,
+            })
+        })
+        .collect()
+}
+
+fn missing(code: i64) -> Option<String> {
+    Some(format!(
+        "the comment above the codes' area names code {code}, which the area does not list"
+    ))
+}
+
+fn unsaid_type(value: i64) -> Option<String> {
+    Some(format!(
+        "the comment above the codes' area (bits 16-23) does not say what code type {value} carries: gsdc's GSD says which type each code belongs to there"
+    ))
+}
+
+/// What the comment says a type's code is.
+enum Said {
+    Codes(Vec<i64>),
+    Word(String),
+}
+
+/// The comment gsdc writes above the codes' area, read back: `The code
+/// of type 1 (35, 34) and type 3 (32); type 4 carries the high byte of its
+/// 16-bit code (Drive fault code) here`.
+fn codes_by_type(area: &DiagArea, notes: &Notes) -> Result<Vec<(i64, Said)>, Option<String>> {
+    let comment = notes.comments_above(&area.place).join(" ");
+    let Some((_, said)) = comment.split_once("The code of ") else {
+        return Err(Some(
+            "no comment above the codes' area (bits 16-23) says which type each code belongs to, as gsdc's GSD does".into(),
+        ));
+    };
+    let mut parts = said.split("; ");
+    let listed = parts.next().unwrap_or_default();
+    let mut by_type: Vec<(i64, Said)> = listed
+        .split("type ")
+        .skip(1)
+        .map(|item| {
+            let (value, codes) = item.split_once(" (")?;
+            let codes = codes.split_once(')')?.0;
+            let codes = codes
+                .split(", ")
+                .map(|c| c.parse().ok())
+                .collect::<Option<_>>()?;
+            Some((value.parse().ok()?, Said::Codes(codes)))
+        })
+        .collect::<Option<_>>()
+        .ok_or_else(|| {
+            Some(format!(
+                "the comment above the codes' area does not read as gsdc's: \"{comment}\""
+            ))
+        })?;
+    for word in parts {
+        let read = word
+            .strip_prefix("type ")
+            .and_then(|w| w.split_once(" carries the high byte of its 16-bit code ("))
+            .and_then(|(value, rest)| Some((value.parse().ok()?, rest.strip_suffix(") here")?)));
+        let Some((value, name)) = read else {
+            return Err(Some(format!(
+                "the comment above the codes' area does not read as gsdc's: \"{word}\""
+            )));
+        };
+        by_type.push((value, Said::Word(name.to_string())));
+    }
+    Ok(by_type)
+}
+
+/// `[gateway]` and its tables; and under `[choices]` what the GSD does not
+/// say, with a warning each (W600).
+pub(super) fn write(out: &mut TomlOut, g: &Gateway, file: &str, notes: &mut Notes) {
+    out.table("gateway");
+    out.string("bus", UNNAMED_BUS);
+    out.key("nodes", format!("[{}, {}]", g.first_node, g.last_node));
+    out.key("max_input_len", g.max_input_len);
+    out.key("max_output_len", g.max_output_len);
+    out.string("data_order", "node-ascending");
+    out.table("gateway.node_count");
+    write_param(out, &g.node_count);
+    out.key("default", g.node_count.default);
+    for (table, words) in [
+        ("gateway.input_words", &g.input_words),
+        ("gateway.output_words", &g.output_words),
+    ] {
+        out.table(table);
+        write_param(out, &words.param);
+        match words.defaults.as_slice() {
+            [first, rest @ ..] if rest.iter().all(|d| d == first) => out.key("default", first),
+            all => out.key("defaults", list(all)),
+        }
+    }
+    out.table("gateway.modules");
+    out.key("words", list(&g.module_words));
+    out.key("consistent", g.consistent);
+    for t in &g.diagnosis {
+        out.array_item("gateway.diagnosis.types");
+        out.key("value", t.value);
+        out.string("text", &t.text);
+        match &t.code {
+            DiagCode::Listed(codes) => {
+                let codes = codes
+                    .iter()
+                    .map(|(v, text)| format!("{{ value = {v}, text = {} }}", quote(text)));
+                out.key("codes", list(codes));
+            }
+            DiagCode::Word(name) => out.string("code_word", name),
+        }
+    }
+    for (key, why) in UNSAID {
+        notes.note(format!("{file} does not say {why}: the description's `{key}` is the import's, marked under [choices]"));
+    }
+    notes.note(format!("{file} does not say whether the gateway is a node of the second bus itself: the description leaves `gateway.own_node` out"));
+}
+
+/// The reasons under `[choices]` for what a gateway's GSD does not say.
+pub(super) fn choices(file: &str) -> impl Iterator<Item = (String, String)> + '_ {
+    UNSAID.iter().map(move |(key, why)| {
+        (
+            key.to_string(),
+            format!("{file} does not say {why}: the import's, to confirm against the manual"),
+        )
+    })
+}
+
+const UNNAMED_BUS: &str = "second bus";
+
+/// The keys of `[gateway]` no GSD keyword gives, and what each says.
+const UNSAID: [(&str, &str); 2] = [
+    ("gateway.bus", "which bus the nodes are on"),
+    (
+        "gateway.data_order",
+        "in which order the nodes' words follow each other",
+    ),
+];
+
+fn write_param(out: &mut TomlOut, p: &Param) {
+    out.string("name", &p.name);
+    let (key, value) = p
+        .kind
+        .split_once(" = ")
+        .expect("kinds are written as key = value");
+    out.key(key, value);
+    out.key("range", format!("[{}, {}]", p.range.0, p.range.1));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::numbered;
+
+    #[test]
+    fn a_name_numbered_by_node_is_found_in_its_number_that_counts() {
+        let names = [
+            "Slave 1 TPDO words",
+            "Slave 2 TPDO words",
+            "Slave 3 TPDO words",
+        ];
+        assert_eq!(numbered(&names), Some(("Slave {n} TPDO words".into(), 1)));
+        // The count is the second number; the first one stays.
+        let names = ["PDO2 of node 7", "PDO2 of node 8"];
+        assert_eq!(numbered(&names), Some(("PDO2 of node {n}".into(), 7)));
+        assert_eq!(numbered(&["Node 9 words", "Node 11 words"]), None);
+        assert_eq!(numbered(&["Words", "Words"]), None);
+        assert_eq!(numbered(&["Node 255", "Node 256"]), None);
+    }
+}
