@@ -401,7 +401,7 @@ fn a_gateway_with_its_node_words_in_bit_areas_imports_them_as_bits() {
     let toml = written(&imported, "bit areas");
     assert!(imported.round_trip.is_clean());
     assert_says(
-        &toml,
+        toml,
         &[
             "[gateway.input_words]\nname = \"Slave {n} TPDO words\"\nbits = [0, 3]\n",
             "[gateway.output_words]\nname = \"Slave {n} RPDO words\"\nbits = [4, 7]\n",

@@ -109,7 +109,7 @@ pub(super) fn describe(
             pzd_words: Some(pzd_words),
         } => Card::Drive { pkw, pzd_words },
         _ => match gateway::read(device, notes) {
-            Ok(g) => Card::Gateway(g),
+            Ok(g) => Card::Gateway(Box::new(g)),
             Err(why) => {
                 notes.refuse(&why.unwrap_or_else(|| NEITHER.to_string()));
                 return None;
@@ -172,7 +172,7 @@ const NEITHER: &str = "no module of this GSD is a drive's telegram (PZD words ea
 /// of a gateway.
 enum Card {
     Drive { pkw: bool, pzd_words: u8 },
-    Gateway(gateway::Gateway),
+    Gateway(Box<gateway::Gateway>),
 }
 
 /// The description, stating `charset = "latin-1"` in `[profibus]` when the
