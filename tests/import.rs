@@ -383,6 +383,59 @@ fn md810dp_gsd_and_bitmap() -> (String, String, Vec<u8>) {
     (name, gsd, bmp)
 }
 
+/// MD810's GSDML file changed by `change`, imported.
+fn md810_gsdml_changed(change: impl Fn(&str) -> String) -> Imported {
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let (name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    let changed = change(&gsdml);
+    assert_ne!(changed, gsdml, "the case changes the file");
+    import(&name, changed.as_bytes())
+}
+
+/// A GSDML file with more than the format can say is imported as far as
+/// it goes and judged: a second device access point, or a module whose
+/// data is not 16-bit words, is left out (W600 at its element), and the
+/// round trip finds the device changed (E601, breaking); nothing is
+/// written.
+#[test]
+fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
+    let second_dap = md810_gsdml_changed(|gsdml| {
+        let start = gsdml.find("<DeviceAccessPointItem ").unwrap();
+        let end_tag = "</DeviceAccessPointItem>";
+        let end = gsdml.find(end_tag).unwrap() + end_tag.len();
+        let copy = gsdml[start..end].replace(" ID=\"", " ID=\"V2_").replacen(
+            "ModuleIdentNumber=\"0x00000001\"",
+            "ModuleIdentNumber=\"0x00000009\"",
+            1,
+        );
+        format!("{}\n{copy}{}", &gsdml[..end], &gsdml[end..])
+    });
+    let bytes_module = md810_gsdml_changed(|gsdml| {
+        let module = gsdml.find("<ModuleItem ID=\"IDM_PZD_12\"").unwrap();
+        let item = "<DataItem DataType=\"Unsigned16\"";
+        let at = module + gsdml[module..].find(item).unwrap();
+        format!(
+            "{}<DataItem DataType=\"Unsigned32\"{}",
+            &gsdml[..at],
+            &gsdml[at + item.len()..]
+        )
+    });
+    for (imported, left_out, changed) in [
+        (&second_dap, "device access point `V2_IDD_DAP` is not imported: the description has one, the file's first (`IDD_DAP`)", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
+        (&bytes_module, "module `IDM_PZD_12` is not imported: its IO data is not 16-bit words as many each way", "input data of submodule \"12 PZD\" (0x0000010C) of module \"12 PZD\" (0x0000010C) (breaking): 26 bytes"),
+    ] {
+        assert_eq!(imported.description, None);
+        let warning = imported.diagnostics.iter().find(|d| d.code == "W600" && d.message.starts_with(left_out));
+        assert!(warning.is_some_and(|w| w.span.is_some()), "{left_out}: {:#?}", imported.diagnostics);
+        assert!(
+            messages(imported, "E601").iter().any(|m| m.contains(changed)),
+            "{changed}: {:#?}",
+            imported.diagnostics
+        );
+        assert!(imported.round_trip.breaking >= 1);
+    }
+}
+
 /// The GSD of MD810's bridge, built from its shipped description or a
 /// variant of it.
 fn gateway_gsd(text: &str) -> String {
@@ -652,7 +705,24 @@ fn outcome(imported: &Imported) -> String {
         .collect();
     stops.sort();
     stops.dedup();
+    stops.extend(left_out(imported));
     stops.join("; ")
+}
+
+/// The GSDML version, device access points and modules the import left
+/// out (W600), each a construct the round trip would find changed once the
+/// rest builds.
+fn left_out(imported: &Imported) -> Option<String> {
+    let parts: Vec<&str> = messages(imported, "W600")
+        .into_iter()
+        .filter_map(|m| m.split_once(" is not imported").map(|(what, _)| what))
+        .filter(|what| {
+            what.starts_with("GSDML V")
+                || (what.starts_with("device access point `") || what.starts_with("module `"))
+                    && what.ends_with('`')
+        })
+        .collect();
+    (!parts.is_empty()).then(|| format!("left out: {}", parts.join(", ")))
 }
 
 const TABLE_START: &str = "<!-- import table: tests/import.rs writes it -->\n";
@@ -685,18 +755,29 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
             ),
         }
     }
-    // A GSDML file refused is refused at the element that stops it.
+    // A GSDML file not imported says why: refused at its device access
+    // point (E602, no module the format can say), or its import does not
+    // build or builds another device (E601). Each device access point and
+    // module left out is a warning at its element.
     for row in &gsdml {
         if row.imported.description.is_none() {
-            let refusal = row.imported.diagnostics.iter().find(|d| d.code == "E602");
-            assert!(
-                refusal.is_some_and(
-                    |d| d.message.contains(" (at ApplicationProcess/") && d.span.is_some()
-                ),
-                "{}: {:#?}",
-                row.file,
-                row.imported.diagnostics
-            );
+            let diagnostics = &row.imported.diagnostics;
+            let refused = diagnostics.iter().any(|d| {
+                d.code == "E602"
+                    && d.message
+                        .contains(" (at ApplicationProcess/DeviceAccessPointList/")
+                    && d.span.is_some()
+            });
+            let different = diagnostics.iter().any(|d| d.code == "E601");
+            assert!(refused || different, "{}: {diagnostics:#?}", row.file);
+        }
+        let left_out = row.imported.diagnostics.iter().filter(|d| {
+            d.code == "W600"
+                && (d.message.starts_with("device access point `")
+                    || d.message.starts_with("module `"))
+        });
+        for d in left_out {
+            assert!(d.span.is_some(), "{}: {d:?}", row.file);
         }
     }
     let drives: Vec<&Row> = gsd.iter().chain(&gsdml).filter(|r| r.drive).collect();
@@ -737,9 +818,10 @@ fn run_import(file: &std::path::Path, out: &std::path::Path) -> std::process::Ou
 
 /// The command: writes the description and the symbol's PNG beside it
 /// (the bitmap found beside the GSD in other letter case), in a folder it
-/// makes when missing, never over a file; a GSDML file the format cannot say (ABB's FENA, three access
-/// points) is refused at the element that stops it, exit 1, nothing
-/// written; a GSD and a GSDML file of one card make one description.
+/// makes when missing, never over a file; a GSDML file the format cannot
+/// say (ABB's FENA: three access points, a name of station in capitals) is
+/// not imported, exit 1, nothing written, its errors shown first; a GSD
+/// and a GSDML file of one card make one description.
 #[test]
 fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     let dir = support::scratch("command");
@@ -783,13 +865,18 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     assert_eq!(over.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "kept");
     assert!(!out_dir.join("9KDP1.png").exists());
+    // ABB's FENA: its errors are shown before the 70 warnings, which
+    // name what the format cannot say.
     let gsdml = support::shared("corpus/gsdml/GSDML-V2.33-ABB-FENA-20170914.xml");
     let refused_out = dir.join("fena.toml");
     let refused = run_import(&gsdml, &refused_out);
     assert_eq!(refused.status.code(), Some(1));
-    assert!(support::stderr(&refused).contains(
-        "error[E602]: cannot import this file: 3 device access points: the description has one (at ApplicationProcess/DeviceAccessPointList/DeviceAccessPointItem[FENA_DAP_V4])"
-    ));
+    let stderr = support::stderr(&refused);
+    assert!(
+        stderr.starts_with("error[E601]: the import does not build: E132 `FENA` is not a DNS-compatible name of station"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("warning[W600]: device access point `FENA_DAP_V4` is not imported: the description has one, the file's first (`FENA_DAP_V3`)"));
     assert!(!refused_out.exists());
     // Two files: a card's GSD and GSDML file, in either order, make one
     // description; two GSD files are a usage error.

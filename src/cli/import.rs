@@ -4,6 +4,7 @@
 //! written only then, and never over a file.
 
 use super::{display_name, say, warn, Status, MAX_SHOWN};
+use crate::diag::Diagnostic;
 use crate::import::Imported;
 use crate::Source;
 use std::io::Write;
@@ -170,7 +171,11 @@ fn report(name: &str, imported: &Imported) {
         name,
         text: &imported.text,
     };
-    for d in imported.diagnostics.iter().take(MAX_SHOWN) {
+    // Errors first: they say why nothing was written, and a file of many
+    // keywords the description has no place for must not hide them.
+    let (errors, warnings): (Vec<&Diagnostic>, Vec<&Diagnostic>) =
+        imported.diagnostics.iter().partition(|d| d.is_error());
+    for d in errors.iter().chain(&warnings).take(MAX_SHOWN) {
         warn(&source.render(d));
     }
     let hidden = imported

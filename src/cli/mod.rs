@@ -41,7 +41,7 @@ enum Command {
     /// Write the datasheet of each description: `DIR/<stem>.html` (one page, no script) and `DIR/<stem>.md`.
     #[command(after_help = doc::EXAMPLES)]
     Doc(doc::Args),
-    /// Write a description from a card's GSD file; its build must be the same device.
+    /// Write a description from a card's GSD or GSDML file (or both); its build must be the same device.
     #[command(after_help = import::EXAMPLES)]
     Import(import::Args),
 }

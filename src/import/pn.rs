@@ -3,9 +3,11 @@
 //! modules recognised from their IO data (the PKW channel and PZD words,
 //! standard telegram 1), their parameter records as mappings and settings,
 //! and the ident numbers as the file has them. What the format has no
-//! place for is a warning at its element (W600); a file whose layout the
-//! format cannot say at all (several access points, pluggable submodules, a
-//! module of other data than 16-bit words) is refused at its element (E602).
+//! place for is a warning at its element (W600): a device access point
+//! after the first, pluggable submodules, a module of other data than 16-bit
+//! words; the round trip then names each change leaving it out makes
+//! (E601). A file without a module the format can say is refused at its
+//! device access point (E602).
 
 use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
@@ -103,18 +105,28 @@ pub(super) fn describe(
     symbol: Option<&str>,
     notes: &mut Notes,
 ) -> Option<TomlOut> {
-    let dap = one_dap(device, notes)?;
-    if let Some(s) = device.submodules.first() {
-        notes.refuse_at("pluggable submodules (SubmoduleList): the description's modules each carry one submodule of data", &s.place);
-        return None;
+    let dap = first_dap(device, notes)?;
+    for s in &device.submodules {
+        notes.unsaid(
+            &format!("pluggable submodule `{}`", s.id),
+            &s.place,
+            "the description's modules each carry one submodule of data",
+        );
     }
-    let modules = dap
+    let recognised: Vec<Recognised> = dap
         .useable_modules
         .iter()
         .filter_map(|r| device.modules.iter().find(|m| m.id == r.target))
-        .map(|m| recognise(m, notes))
-        .collect::<Option<Vec<_>>>()?;
-    let pkw = pkw_kind(&modules, notes)?;
+        .filter_map(|m| recognise(m, notes))
+        .collect();
+    let (modules, pkw) = one_pkw_kind(recognised, notes);
+    if modules.is_empty() {
+        notes.refuse_at(
+            "no module of its device access point carries a drive's telegram (16-bit words as many each way, the PKW channel first or not; standard telegram 1)",
+            &dap.item.place,
+        );
+        return None;
+    }
     let name = file_name(file, notes)?;
     unsaid_extras(device, dap, &modules, notes);
     let mut out = TomlOut::default();
@@ -161,24 +173,24 @@ fn choices(out: &mut TomlOut, file: &str, records: &Records) {
     }
 }
 
-fn one_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
-    match device.daps.as_slice() {
-        [dap] => Some(dap),
-        [] => {
-            notes.refuse_at("no DeviceAccessPointItem", &device.place);
-            None
-        }
-        [_, second, ..] => {
-            notes.refuse_at(
-                &format!(
-                    "{} device access points: the description has one",
-                    device.daps.len()
-                ),
-                &second.item.place,
-            );
-            None
-        }
+/// The first device access point; each other one is left out (W600), so
+/// that the round trip names what a file of several is beyond the format.
+fn first_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
+    let Some((first, others)) = device.daps.split_first() else {
+        notes.refuse_at("no DeviceAccessPointItem", &device.place);
+        return None;
+    };
+    for other in others {
+        notes.unsaid(
+            &format!("device access point `{}`", other.item.id),
+            &other.item.place,
+            &format!(
+                "the description has one, the file's first (`{}`)",
+                first.item.id
+            ),
+        );
     }
+    Some(first)
 }
 
 /// A module's kind and layout from its IO data: 16-bit words, as many each
@@ -187,12 +199,10 @@ fn one_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
 /// access point, or a vendor's under gsdc's ID for it.
 fn recognise<'a>(module: &'a PnModule, notes: &mut Notes) -> Option<Recognised<'a>> {
     if !module.useable_submodules.is_empty() {
-        notes.refuse_at(
-            &format!(
-                "module `{}` takes pluggable submodules: the description's modules each carry one submodule of data",
-                module.id
-            ),
+        notes.unsaid(
+            &format!("module `{}`", module.id),
             &module.place,
+            "it takes pluggable submodules; the description's modules each carry one submodule of data",
         );
         return None;
     }
@@ -200,24 +210,22 @@ fn recognise<'a>(module: &'a PnModule, notes: &mut Notes) -> Option<Recognised<'
         [data] => (None, data),
         [map, data] if api(map) == PROFIDRIVE_API && !has_io(map) => (Some(map), data),
         _ => {
-            notes.refuse_at(
+            notes.unsaid(
+                &format!("module `{}`", module.id),
+                &module.place,
                 &format!(
-                    "module `{}` has {} submodules: the description's modules carry one submodule of data (after PROFIdrive's access point)",
-                    module.id,
+                    "it has {} submodules; the description's modules carry one submodule of data (after PROFIdrive's access point)",
                     module.submodules.len()
                 ),
-                &module.place,
             );
             return None;
         }
     };
     let Some(words) = words(data) else {
-        notes.refuse_at(
-            &format!(
-                "module `{}`'s IO data: the description's modules carry 16-bit words, as many each way (a vendor's own PROFINET layout has no place in the format yet)",
-                module.id
-            ),
+        notes.unsaid(
+            &format!("module `{}`", module.id),
             &data.place,
+            "its IO data is not 16-bit words as many each way, which the description's modules carry (a vendor's own PROFINET layout has no place in the format yet)",
         );
         return None;
     };
@@ -291,21 +299,27 @@ fn pkw_of(items: &[DataItem]) -> Option<PkwKind> {
     })
 }
 
-/// The one PKW channel of the modules that have one (`PkwKind::None`
-/// without); `None` (refused) when they differ.
-fn pkw_kind(modules: &[Recognised], notes: &mut Notes) -> Option<PkwKind> {
-    let mut kinds = modules.iter().filter_map(|m| m.pkw.map(|k| (k, m)));
-    let Some((first, _)) = kinds.next() else {
-        return Some(PkwKind::None);
+/// The modules of one PKW channel (the first module's that has one), and
+/// that channel (`PkwKind::None` without): a module of another channel's
+/// word names is left out (W600), the description has one channel.
+fn one_pkw_kind<'a>(
+    modules: Vec<Recognised<'a>>,
+    notes: &mut Notes,
+) -> (Vec<Recognised<'a>>, PkwKind) {
+    let Some(first) = modules.iter().find_map(|m| m.pkw) else {
+        return (modules, PkwKind::None);
     };
-    if let Some((_, other)) = kinds.find(|(k, _)| *k != first) {
-        notes.refuse_at(
-            "modules with PKW channels of different word names: the description has one channel",
-            &other.module.place,
+    let (kept, other): (Vec<_>, Vec<_>) = modules
+        .into_iter()
+        .partition(|m| m.pkw.is_none_or(|k| k == first));
+    for m in other {
+        notes.unsaid(
+            &format!("module `{}`", m.module.id),
+            &m.module.place,
+            "its PKW channel's words are named otherwise than the first module's; the description has one channel",
         );
-        return None;
     }
-    Some(first)
+    (kept, first)
 }
 
 fn attribute<'a>(attributes: &'a [Attribute], name: &str) -> Option<&'a str> {
@@ -368,12 +382,19 @@ fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
     let (vendor, family) = parts.vendor_and_family.split_once('-')?;
     let date = parts.date;
     let day = format!("{}-{}-{}", &date[..4], &date[4..6], &date[6..]);
+    let version = match crate::lower::SUPPORTED_GSDML_VERSIONS.contains(&parts.version) {
+        true => parts.version,
+        false => {
+            let written = crate::lower::DEFAULT_GSDML_VERSION;
+            notes.note(format!(
+                "GSDML {} is not imported: gsdc writes {written}, which the description names; the round trip judges the change",
+                parts.version
+            ));
+            written
+        }
+    };
     Some(FileName {
-        version: parts
-            .version
-            .to_string()
-            .trim_start_matches('V')
-            .to_string(),
+        version: version.to_string().trim_start_matches('V').to_string(),
         vendor: vendor.to_string(),
         family: family.to_string(),
         date: match parts.time {
@@ -1022,12 +1043,16 @@ fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &m
             "the description has no PROFINET unit diagnosis",
         );
     }
-    let used: Vec<&str> = modules.iter().map(|m| m.module.id.as_str()).collect();
-    for m in device
-        .modules
-        .iter()
-        .filter(|m| !used.contains(&m.id.as_str()))
-    {
+    // A module of the first access point is imported or left out with its
+    // reason; one of another access point goes with it (left out above).
+    let offered = |m: &PnModule| {
+        device
+            .daps
+            .iter()
+            .flat_map(|d| &d.useable_modules)
+            .any(|r| r.target == m.id)
+    };
+    for m in device.modules.iter().filter(|m| !offered(m)) {
         notes.unsaid(
             &format!("ModuleItem `{}`", m.id),
             &m.place,

@@ -26,7 +26,10 @@ use checks::Checker;
 /// For `gsdc import`, which recognises PPO types by their config bytes.
 pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
-pub(crate) use profinet::{info_prefix, module_description, pkw_words};
+pub(crate) use profinet::{
+    info_prefix, module_description, pkw_words, DEFAULT_VERSION as DEFAULT_GSDML_VERSION,
+    SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
+};
 use toml::Spanned;
 
 /// Reads a file the description names (its symbol), relative to it: its

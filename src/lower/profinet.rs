@@ -48,8 +48,8 @@ fn draft(
 }
 
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
-const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
-const DEFAULT_VERSION: Version = Version::new(2, 32);
+pub(crate) const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
+pub(crate) const DEFAULT_VERSION: Version = Version::new(2, 32);
 
 pub fn lower(
     cx: &mut Checker,
