@@ -7,10 +7,11 @@
 //! says: gsdc's GSD says it in the comment above the codes' area, which is
 //! read here; a file without it is refused.
 
+use super::numbered::{pattern, Pattern};
 use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
 use crate::device::dp::{DiagArea, DpDevice};
-use crate::device::{Allowed, Field, Value};
+use crate::device::{Allowed, Field, Text, Value};
 use crate::gsd::config::{identifiers, Direction, Identifier};
 
 /// A gateway's GSD as the description says it.
@@ -29,6 +30,7 @@ pub(super) struct Gateway {
 
 /// The node count's parameter, or one direction's words of every node.
 struct Param {
+    /// As the description writes it: quoted, `{n}` standing for the node.
     name: String,
     kind: String,
     range: (i128, i128),
@@ -36,7 +38,6 @@ struct Param {
 }
 
 struct NodeWords {
-    /// `{n}` stands for the node's number.
     param: Param,
     defaults: Vec<i128>,
 }
@@ -72,13 +73,18 @@ pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<S
     let outputs: Vec<&Field> = words.iter().skip(1).step_by(2).collect();
     let (input_words, first_in) = node_words(&inputs)?;
     let (output_words, first_out) = node_words(&outputs)?;
-    let nodes = u8::try_from(inputs.len()).ok();
+    // Node numbers are bytes in the description and the layouts.
+    let last = u32::try_from(inputs.len() - 1)
+        .ok()
+        .and_then(|n| first_in.checked_add(n));
     let (Some(first_node), Some(last_node)) = (
-        (first_in == first_out).then_some(first_in),
-        nodes.and_then(|n| first_in.checked_add(n - 1)),
+        u8::try_from(first_in)
+            .ok()
+            .filter(|_| first_in == first_out),
+        last.and_then(|l| u8::try_from(l).ok()),
     ) else {
         return Err(Some(
-            "the input and output words' names number the nodes differently".into(),
+            "the input and output words' names number the nodes differently, or past 255".into(),
         ));
     };
     let length = |keyword| {
@@ -92,7 +98,7 @@ pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<S
         last_node,
         max_input_len: length("Max_Input_Len")?,
         max_output_len: length("Max_Output_Len")?,
-        node_count: param(count, &count.name.primary)?,
+        node_count: param(count, &quote(&count.name.primary))?,
         input_words,
         output_words,
         module_words,
@@ -134,17 +140,17 @@ fn word_blocks(device: &DpDevice) -> Option<(Vec<u8>, bool)> {
 /// One direction's parameters of every node: one name with the node's
 /// number in it, one range, and each node's default; and the first node's
 /// number.
-fn node_words(fields: &[&Field]) -> Result<(NodeWords, u8), Option<String>> {
-    let names: Vec<&str> = fields.iter().map(|f| &*f.name.primary).collect();
-    let (template, first) = numbered(&names).ok_or_else(|| {
+fn node_words(fields: &[&Field]) -> Result<(NodeWords, u32), Option<String>> {
+    let names: Vec<&Text> = fields.iter().map(|f| &f.name).collect();
+    let Pattern { name, first } = pattern(&names).ok_or_else(|| {
         Some(format!(
             "the node parameters \"{}\" .. are not one name numbered by node",
-            names.first().copied().unwrap_or_default()
+            names.first().map_or("", |n| &n.primary)
         ))
     })?;
     let params: Vec<Param> = fields
         .iter()
-        .map(|f| param(f, &template))
+        .map(|f| param(f, &name))
         .collect::<Result<_, _>>()?;
     let first_param = &params[0];
     let alike = params
@@ -152,37 +158,12 @@ fn node_words(fields: &[&Field]) -> Result<(NodeWords, u8), Option<String>> {
         .all(|p| p.kind == first_param.kind && p.range == first_param.range);
     if !alike {
         return Err(Some(format!(
-            "the node parameters \"{template}\" differ in type or range from node to node"
+            "the node parameters {name} differ in type or range from node to node"
         )));
     }
     let defaults = params.iter().map(|p| p.default).collect();
     let param = params.into_iter().next().expect("a node at least");
     Ok((NodeWords { param, defaults }, first))
-}
-
-/// The name with `{n}` for a number that counts up by one from name to
-/// name, and that number's first value: `Slave {n} TPDO words` and 1 for
-/// `Slave 1 TPDO words`, `Slave 2 TPDO words`.
-fn numbered(names: &[&str]) -> Option<(String, u8)> {
-    let first = names.first()?;
-    let runs = first.char_indices().filter(|(i, c)| {
-        c.is_ascii_digit() && !first[..*i].ends_with(|p: char| p.is_ascii_digit())
-    });
-    runs.filter_map(|(start, _)| {
-        let len = first[start..]
-            .find(|c: char| !c.is_ascii_digit())
-            .unwrap_or(first.len() - start);
-        let number: u8 = first[start..start + len].parse().ok()?;
-        let template = format!("{}{{n}}{}", &first[..start], &first[start + len..]);
-        let counts = names.iter().enumerate().all(|(i, name)| {
-            u8::try_from(i)
-                .ok()
-                .and_then(|i| number.checked_add(i))
-                .is_some_and(|n| *name == template.replace("{n}", &n.to_string()))
-        });
-        counts.then_some((template, number))
-    })
-    .next()
 }
 
 /// A gateway parameter: a byte, a word or bits of a byte, one range of
@@ -417,32 +398,11 @@ const UNSAID: [(&str, &str); 2] = [
 ];
 
 fn write_param(out: &mut TomlOut, p: &Param) {
-    out.string("name", &p.name);
+    out.key("name", &p.name);
     let (key, value) = p
         .kind
         .split_once(" = ")
         .expect("kinds are written as key = value");
     out.key(key, value);
     out.key("range", format!("[{}, {}]", p.range.0, p.range.1));
-}
-
-#[cfg(test)]
-mod tests {
-    use super::numbered;
-
-    #[test]
-    fn a_name_numbered_by_node_is_found_in_its_number_that_counts() {
-        let names = [
-            "Slave 1 TPDO words",
-            "Slave 2 TPDO words",
-            "Slave 3 TPDO words",
-        ];
-        assert_eq!(numbered(&names), Some(("Slave {n} TPDO words".into(), 1)));
-        // The count is the second number; the first one stays.
-        let names = ["PDO2 of node 7", "PDO2 of node 8"];
-        assert_eq!(numbered(&names), Some(("PDO2 of node {n}".into(), 7)));
-        assert_eq!(numbered(&["Node 9 words", "Node 11 words"]), None);
-        assert_eq!(numbered(&["Words", "Words"]), None);
-        assert_eq!(numbered(&["Node 255", "Node 256"]), None);
-    }
 }

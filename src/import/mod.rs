@@ -13,6 +13,7 @@
 mod both;
 mod dp;
 mod gateway;
+mod numbered;
 mod pn;
 mod symbol;
 mod toml_out;

@@ -9,6 +9,7 @@
 //! (E601). A file without a module the format can say is refused at its
 //! device access point (E602).
 
+use super::numbered::{pattern, Pattern};
 use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
@@ -503,12 +504,6 @@ struct Records<'a> {
     settings: Vec<&'a Record>,
 }
 
-/// Entry names as `name = "PZD{n} ..."` writes them, from `first`.
-struct Pattern {
-    name: String,
-    first: u32,
-}
-
 impl<'a> Records<'a> {
     fn of(modules: &[Recognised<'a>]) -> Records<'a> {
         let mut indexes: Vec<u32> = Vec::new();
@@ -531,7 +526,8 @@ impl<'a> Records<'a> {
             let grows = all
                 .iter()
                 .any(|r| r.data.fields.len() != largest.data.fields.len());
-            match (pattern(&largest.data.fields), grows) {
+            let names: Vec<&Text> = largest.data.fields.iter().map(|f| &f.name).collect();
+            match (pattern(&names), grows) {
                 (Some(p), true) if records.pzd_out.is_none() => {
                     records.pzd_out = Some((largest, p))
                 }
@@ -628,62 +624,6 @@ impl<'a> Records<'a> {
             }
         }
     }
-}
-
-/// The entries' names as one name with `{n}` for the entry's number,
-/// counting up from the first entry's, in every language.
-fn pattern(fields: &[Field]) -> Option<Pattern> {
-    let first = fields.first()?;
-    numbers_in(&first.name.primary)
-        .into_iter()
-        .find_map(|start| {
-            let pattern_of = |text_of: &dyn Fn(&Text) -> Option<String>| -> Option<String> {
-                let mut found: Option<String> = None;
-                for (i, f) in fields.iter().enumerate() {
-                    let n = start + u32::try_from(i).ok()?;
-                    let p = with_placeholder(&text_of(&f.name)?, n)?;
-                    if found.as_ref().is_some_and(|q| *q != p) {
-                        return None;
-                    }
-                    found = Some(p);
-                }
-                found
-            };
-            let primary = pattern_of(&|t: &Text| Some(t.primary.to_string()))?;
-            let mut parts = vec![format!("en = {}", quote(&primary))];
-            for code in first.name.translations.keys() {
-                let p = pattern_of(&|t: &Text| t.translations.get(code).map(str::to_string))?;
-                parts.push(format!("{code} = {}", quote(&p)));
-            }
-            let name = match parts.len() {
-                1 => quote(&primary),
-                _ => format!("{{ {} }}", parts.join(", ")),
-            };
-            Some(Pattern { name, first: start })
-        })
-}
-
-/// The decimal numbers a text has, in order.
-fn numbers_in(text: &str) -> Vec<u32> {
-    text.split(|c: char| !c.is_ascii_digit())
-        .filter_map(|s| s.parse().ok())
-        .collect()
-}
-
-/// `text` with its first standalone `n` written `{n}`.
-fn with_placeholder(text: &str, n: u32) -> Option<String> {
-    let digits = n.to_string();
-    let bytes = text.as_bytes();
-    let at = text.match_indices(&digits).map(|(i, _)| i).find(|&i| {
-        let before = i.checked_sub(1).map(|b| bytes[b].is_ascii_digit());
-        let after = bytes.get(i + digits.len()).map(u8::is_ascii_digit);
-        before != Some(true) && after != Some(true)
-    })?;
-    Some(format!(
-        "{}{{n}}{}",
-        &text[..at],
-        &text[at + digits.len()..]
-    ))
 }
 
 /// `per_module`: the value each kind of module fixes, where all modules of
