@@ -73,7 +73,7 @@ mod tests {
     use super::*;
 
     fn texts(names: &[&str]) -> Vec<Text> {
-        names.iter().map(|n| Text::plain(n)).collect()
+        names.iter().map(Text::plain).collect()
     }
 
     fn found(names: &[&str]) -> Option<(String, u32)> {
