@@ -45,8 +45,9 @@ fn codes(imported: &Imported) -> Vec<&'static str> {
 /// bitmap its build wrote beside it (its device symbol), and the import's
 /// build is that file byte for byte below the header, and that bitmap byte
 /// for byte. Without a finding, but for a gateway's GSD: it does not say
-/// the second bus, the order of the nodes' words or the gateway's own node,
-/// a warning (W600) each.
+/// the second bus, the order of the nodes' words, which of a node's two
+/// parameters is its input or the gateway's own node, a warning (W600)
+/// each.
 #[test]
 fn shipped_device_files_import_and_rebuild_byte_identical_below_the_header() {
     let mut imported_files = Vec::new();
@@ -67,7 +68,7 @@ fn shipped_device_files_import_and_rebuild_byte_identical_below_the_header() {
             let toml = written(&imported, &name);
             assert!(imported.round_trip.is_clean(), "{name}");
             let expected: &[&str] = match ir.gateway {
-                Some(_) => &["W600"; 3],
+                Some(_) => &["W600"; 4],
                 None => &[],
             };
             assert_eq!(
@@ -444,30 +445,70 @@ fn gateway_gsd(text: &str) -> String {
     descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd).1
 }
 
-/// A gateway whose nodes' words lie in bit areas (TPDO in bits 0-3, RPDO in
-/// bits 4-7 of a byte each) imports them as bits, and its build is the
-/// file below the header.
-#[test]
-fn a_gateway_with_its_node_words_in_bit_areas_imports_them_as_bits() {
-    let gsd = gateway_gsd(&descriptions::gateway_in_bit_areas());
+/// The import of the GSD a gateway description builds, after checking that
+/// the import's build is that GSD below the header (imported without the
+/// bitmap beside it, the build names none).
+fn gateway_round_trip(description: &str) -> Imported {
+    let gsd = gateway_gsd(description);
     let imported = import("MD810GW.GSD", gsd.as_bytes());
-    let toml = written(&imported, "bit areas");
+    let toml = written(&imported, "gateway");
     assert!(imported.round_trip.is_clean());
+    let rebuilt = gsdc::load("imported.toml", toml)
+        .0
+        .expect("the import loads");
+    let (_, text) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsd);
+    let without_symbol = body(&gsd).replace("Bitmap_Device               = \"MD810GW\"\r\n", "");
+    assert_ne!(without_symbol, body(&gsd));
+    assert!(body(&text) == without_symbol, "{}", body(&text));
+    imported
+}
+
+/// Variants of MD810's bridge import and rebuild below the header: the
+/// nodes' words in bit areas (TPDO in bits 0-3, RPDO in bits 4-7 of a
+/// byte each); only types of a 16-bit code, so no codes' area (the types'
+/// note says what they carry); one node, whose number its parameters'
+/// names do not show (W600).
+#[test]
+fn gateway_variants_import_and_rebuild_below_the_header() {
+    let bits = gateway_round_trip(&descriptions::gateway_in_bit_areas());
     assert_says(
-        toml,
+        written(&bits, "bit areas"),
         &[
             "[gateway.input_words]\nname = \"Slave {n} TPDO words\"\nbits = [0, 3]\n",
             "[gateway.output_words]\nname = \"Slave {n} RPDO words\"\nbits = [4, 7]\n",
         ],
     );
-    let rebuilt = gsdc::load("imported.toml", toml)
-        .0
-        .expect("the import loads");
-    let (_, text) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsd);
-    // Imported without the bitmap beside it, the build names none.
-    let without_symbol = body(&gsd).replace("Bitmap_Device               = \"MD810GW\"\r\n", "");
-    assert_ne!(without_symbol, body(&gsd));
-    assert!(body(&text) == without_symbol, "{}", body(&text));
+    let shipped = descriptions::shipped_text("md810-gateway.toml");
+    let listed = shipped
+        .find("[[gateway.diagnosis.types]]\nvalue = 1")
+        .unwrap();
+    let word = shipped
+        .find("[[gateway.diagnosis.types]]\nvalue = 4")
+        .unwrap();
+    let words_only: String = format!("{}{}", &shipped[..listed], &shipped[word..])
+        .lines()
+        .filter(|l| !l.starts_with("\"gateway.diagnosis.types["))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let words = gateway_round_trip(&words_only);
+    assert_says(
+        written(&words, "code words only"),
+        &["[[gateway.diagnosis.types]]\nvalue = 4\ntext = \"Drive reports fault\"\ncode_word = \"Drive fault code\"\n"],
+    );
+    assert_eq!(
+        written(&words, "code words only")
+            .matches("[[gateway.diagnosis.types]]")
+            .count(),
+        1
+    );
+    let one_node = shipped
+        .replace("nodes = [1, 30]", "nodes = [1, 1]")
+        .replace("range = [1, 30]", "range = [1, 1]");
+    let one = gateway_round_trip(&one_node);
+    assert_says(written(&one, "one node"), &["nodes = [1, 1]\n"]);
+    assert!(messages(&one, "W600")
+        .iter()
+        .any(|m| m.contains("names one node")));
 }
 
 /// A gateway's GSD with a part `[gateway]` cannot say is refused naming it
@@ -494,6 +535,16 @@ fn a_gateway_gsd_that_gateway_cannot_say_is_refused_saying_why() {
         (
             gsd.replace("\"INPUT 1 word\" 0x50", "\"INPUT 1 byte\" 0x10"),
             "nor are its modules a gateway's blocks of words one way each",
+        ),
+        // Bits past the byte: GSD's reader takes them, its rules do not.
+        (
+            gsd.replacen("Unsigned8 1 1-30", "BitArea(250-255) 1 1-30", 1),
+            "its modules are blocks of words one way each, as a gateway's, but the gateway parameter \"Number of CANopen slaves\" is of type BitArea, not a byte, a word or bits of one byte",
+        ),
+        // A GSD of an earlier gsdc, whose comment did not say it.
+        (
+            gsd.replace("; The code of type 1 (35, 34) and type 3 (32);", "; The code of types 1 and 3;"),
+            "is an older gsdc's, which does not say which type each code belongs to",
         ),
     ];
     for (text, why) in cases {

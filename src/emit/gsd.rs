@@ -545,15 +545,17 @@ fn wrap(line: &str) -> Vec<String> {
 const COMMENT_CONTINUED: &str = ";   ";
 
 /// A long comment as comment lines, each cut after a space where there is
-/// one; GSD text is ASCII, so bytes are characters here.
+/// one. Lengths count characters: a Latin-1 GSD's are a byte each in the
+/// file, two of those beyond ASCII here.
 fn wrap_comment(line: &str) -> Vec<String> {
     let mut pieces = Vec::new();
     let mut rest = line.to_string();
-    while rest.len() > MAX_LINE {
-        let cut = rest[..=MAX_LINE]
+    while rest.chars().count() > MAX_LINE {
+        let at = |n: usize| rest.char_indices().nth(n).map_or(rest.len(), |(i, _)| i);
+        let cut = rest[..at(MAX_LINE + 1)]
             .rfind(' ')
             .filter(|&i| i > COMMENT_CONTINUED.len())
-            .unwrap_or(MAX_LINE);
+            .unwrap_or(at(MAX_LINE));
         pieces.push(rest[..cut].trim_end().to_string());
         rest = format!("{COMMENT_CONTINUED}{}", rest[cut..].trim_start());
     }
@@ -562,14 +564,22 @@ fn wrap_comment(line: &str) -> Vec<String> {
 }
 
 /// Byte index to cut `line` at, leaving room for the `\`: the last space in
-/// a string or comma outside one within the limit, else the limit itself
-/// when it falls inside a string; `None` when the line may not be cut
-/// there. GSD text is ASCII, so bytes are characters here.
+/// a string or comma outside one within the limit (in characters), else the
+/// limit itself when it falls inside a string; `None` when the line may not
+/// be cut there.
 fn break_point(line: &str, starts_in_string: bool) -> Option<usize> {
     let limit = MAX_LINE - 1;
     let mut in_string = starts_in_string;
     let mut best = None;
-    for (i, c) in line.char_indices().take(limit) {
+    // Where the `limit`th character starts: a cut in a string without a
+    // space falls there, on a character's boundary (a Latin-1 string's
+    // characters beyond ASCII are two bytes here).
+    let mut at_limit = line.len();
+    for (n, (i, c)) in line.char_indices().enumerate() {
+        if n == limit {
+            at_limit = i;
+            break;
+        }
         match c {
             '"' => in_string = !in_string,
             ' ' if in_string => best = Some(i + 1),
@@ -577,7 +587,7 @@ fn break_point(line: &str, starts_in_string: bool) -> Option<usize> {
             _ => {}
         }
     }
-    best.or(in_string.then_some(limit))
+    best.or(in_string.then_some(at_limit))
 }
 
 #[cfg(test)]
@@ -621,6 +631,28 @@ mod tests {
         assert!(pieces.iter().all(|p| p.len() <= MAX_LINE));
         let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
         assert_eq!(joined, line);
+    }
+
+    /// A Latin-1 GSD's characters beyond ASCII (two bytes in Rust, one in
+    /// the file) are cut between, never inside, and counted as one: a word
+    /// of them in a string, and a comment of them.
+    #[test]
+    fn latin1_characters_count_as_one_and_are_never_cut_inside() {
+        let chars = |p: &String| p.chars().count();
+        // `a` puts the limit inside a two-byte character.
+        let line = format!("Info_Text = \"a{}\"", "\u{ff}".repeat(100));
+        let pieces = wrap(&line);
+        assert!(pieces.len() > 1 && pieces.iter().all(|p| chars(p) <= MAX_LINE));
+        let joined: String = pieces.iter().map(|p| p.trim_end_matches('\\')).collect();
+        assert_eq!(joined, line);
+        let comment = format!("; {}", "\u{e9}".repeat(100));
+        let pieces = wrap(&comment);
+        assert!(pieces.len() > 1 && pieces.iter().all(|p| chars(p) <= MAX_LINE));
+        let kept: String = pieces
+            .iter()
+            .map(|p| p.trim_start_matches(';').trim())
+            .collect();
+        assert_eq!(kept, "\u{e9}".repeat(100));
     }
 
     #[test]

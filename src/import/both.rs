@@ -31,8 +31,8 @@ pub struct Both {
 pub fn import_both(gsd: (&str, &[u8]), gsdml: (&str, &[u8]), files: Files<'_>) -> Both {
     let (dp_device, dp_text) = read(gsd.0, gsd.1);
     let (pn_device, pn_text) = read(gsdml.0, gsdml.1);
-    let mut dp_notes = Notes::new(&dp_text);
-    let mut pn_notes = Notes::new(&pn_text);
+    let mut dp_notes = Notes::new(dp_text);
+    let mut pn_notes = Notes::new(pn_text);
     let mut symbol = None;
     let described = match (&dp_device, &pn_device) {
         (Some(Device::Dp(d)), Some(Device::Pn(p))) => {
@@ -63,8 +63,8 @@ pub fn import_both(gsd: (&str, &[u8]), gsdml: (&str, &[u8]), files: Files<'_>) -
     Both {
         symbol: symbol.filter(|_| description.is_some()),
         description,
-        gsd: dp_notes.imported(None, None, dp_text, trips.0),
-        gsdml: pn_notes.imported(None, None, pn_text, trips.1),
+        gsd: dp_notes.imported(None, None, trips.0),
+        gsdml: pn_notes.imported(None, None, trips.1),
     }
 }
 

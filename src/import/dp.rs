@@ -111,7 +111,10 @@ pub(super) fn describe(
         _ => match gateway::read(device, notes) {
             Ok(g) => Card::Gateway(Box::new(g)),
             Err(why) => {
-                notes.refuse(&why.unwrap_or_else(|| NEITHER.to_string()));
+                notes.refuse(&why.map_or_else(
+                    || NEITHER.to_string(),
+                    |why| format!("its modules are blocks of words one way each, as a gateway's, but {why}"),
+                ));
                 return None;
             }
         },
@@ -636,30 +639,19 @@ fn constant_bytes(prm: &ParameterData, dpv1: bool) -> Vec<u8> {
 
 fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
     let name = f.name.primary.to_string();
-    let kind = match (f.data_type.as_str(), f.bits) {
-        ("Unsigned8", None) => "type = \"Unsigned8\"".to_string(),
-        ("Unsigned16", None) => "type = \"Unsigned16\"".to_string(),
-        ("Bit" | "BitArea", Some(b)) if b.length == 1 => format!("bits = {}", b.offset),
-        ("Bit" | "BitArea", Some(b)) => {
-            format!("bits = [{}, {}]", b.offset, b.offset + b.length - 1)
-        }
-        (other, _) => {
-            let what = format!("parameter \"{name}\" of type {other}");
-            notes.unsaid(
-                &what,
-                &f.place,
-                "card parameters are Unsigned8, Unsigned16, Bit or BitArea",
-            );
-            return;
-        }
+    let Some((stored_key, stored)) = super::prm::stored_as(f) else {
+        let what = format!("parameter \"{name}\" of type {}", f.data_type);
+        notes.unsaid(
+            &what,
+            &f.place,
+            "card parameters are Unsigned8, Unsigned16, or a Bit or BitArea of one byte",
+        );
+        return;
     };
     out.array_item("profibus.parameters");
     out.string("name", &name);
     out.key("offset", f.byte_offset);
-    out.key(
-        kind.split(" = ").next().unwrap_or_default(),
-        kind.split_once(" = ").map_or("", |(_, v)| v),
-    );
+    out.key(stored_key, stored);
     let default = match &f.default {
         Some(Value::Int(v)) => *v,
         _ => 0,

@@ -3,9 +3,10 @@
 //! blocks of words one way each, the same sizes both ways; its
 //! User_Prm_Data is the count of nodes in use, then each node's input and
 //! output words, named with the node's number; its diagnosis areas show the
-//! types and the listed codes. Which type a code belongs to, no keyword
-//! says: gsdc's GSD says it in the comment above the codes' area, which is
-//! read here; a file without it is refused.
+//! types and the listed codes. Which type a code belongs to, and what a
+//! type of a 16-bit code carries, no keyword says: gsdc's GSD says it in the
+//! comments above the areas, which are read here; a file without them is
+//! refused.
 
 use super::numbered::{pattern, Pattern};
 use super::toml_out::{list, quote, TomlOut};
@@ -26,13 +27,17 @@ pub(super) struct Gateway {
     module_words: Vec<u8>,
     consistent: bool,
     diagnosis: Vec<DiagType>,
+    /// One node only: its parameters' names do not show which number is
+    /// the node's (the first is taken).
+    one_node: bool,
 }
 
 /// The node count's parameter, or one direction's words of every node.
 struct Param {
     /// As the description writes it: quoted, `{n}` standing for the node.
     name: String,
-    kind: String,
+    /// `type` or `bits`, and its value ([`super::prm::stored_as`]).
+    stored_as: (&'static str, String),
     range: (i128, i128),
     default: i128,
 }
@@ -45,18 +50,20 @@ struct NodeWords {
 struct DiagType {
     value: i64,
     text: String,
-    code: DiagCode,
+    code: DiagCode<(i64, String)>,
 }
 
-enum DiagCode {
-    Listed(Vec<(i64, String)>),
+/// A type's code: one byte of the listed values (with their texts once
+/// the area's are read), or a 16-bit number of this meaning.
+enum DiagCode<C> {
+    Listed(Vec<C>),
     Word(String),
 }
 
 /// The file read as a gateway's: `Err(None)` when its modules are not
 /// blocks of words one way each (not a gateway's GSD), `Err(Some(why))`
 /// when they are but another part has no place in `[gateway]`.
-pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<String>> {
+pub(super) fn read(device: &DpDevice, notes: &mut Notes) -> Result<Gateway, Option<String>> {
     let (module_words, consistent) = word_blocks(device).ok_or(None)?;
     let prm = &device.user_prm_data;
     let [count, words @ ..] = prm.fields.as_slice() else {
@@ -93,7 +100,7 @@ pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<S
             .and_then(|k| k.value.as_number())
             .ok_or_else(|| Some(format!("a gateway's GSD states {keyword}")))
     };
-    Ok(Gateway {
+    let gateway = Gateway {
         first_node,
         last_node,
         max_input_len: length("Max_Input_Len")?,
@@ -104,7 +111,35 @@ pub(super) fn read(device: &DpDevice, notes: &Notes) -> Result<Gateway, Option<S
         module_words,
         consistent,
         diagnosis: diagnosis(device, notes)?,
-    })
+        one_node: inputs.len() == 1,
+    };
+    module_names(device, notes);
+    Ok(gateway)
+}
+
+/// W600 for each module not named as gsdc names a gateway's word blocks:
+/// the description has no key for their names.
+fn module_names(device: &DpDevice, notes: &mut Notes) {
+    for m in &device.modules {
+        let Ok(ids) = identifiers(&m.config) else {
+            continue;
+        };
+        let [Identifier::General { direction, data }] = ids.as_slice() else {
+            continue;
+        };
+        let direction = match direction {
+            Direction::Input => crate::ir::Direction::In,
+            _ => crate::ir::Direction::Out,
+        };
+        let gsdc = crate::lower::gateway_module_name(direction, data.count);
+        if m.name != gsdc {
+            notes.unsaid(
+                &format!("module name \"{}\"", m.name),
+                &m.place,
+                &format!("gsdc names a gateway's word blocks itself: \"{gsdc}\""),
+            );
+        }
+    }
 }
 
 /// The sizes of the word blocks and whether each is consistent as a
@@ -155,7 +190,7 @@ fn node_words(fields: &[&Field]) -> Result<(NodeWords, u32), Option<String>> {
     let first_param = &params[0];
     let alike = params
         .iter()
-        .all(|p| p.kind == first_param.kind && p.range == first_param.range);
+        .all(|p| p.stored_as == first_param.stored_as && p.range == first_param.range);
     if !alike {
         return Err(Some(format!(
             "the node parameters {name} differ in type or range from node to node"
@@ -175,13 +210,12 @@ fn param(f: &Field, name: &str) -> Result<Param, Option<String>> {
             f.name.primary
         ))
     };
-    let kind = match (f.data_type.as_str(), f.bits) {
-        ("Unsigned8" | "Unsigned16", None) => format!("type = {}", quote(&f.data_type)),
-        ("Bit" | "BitArea", Some(b)) => {
-            format!("bits = [{}, {}]", b.offset, b.offset + b.length - 1)
-        }
-        (other, _) => return Err(why(&format!("is of type {other}"))),
-    };
+    let stored_as = super::prm::stored_as(f).ok_or_else(|| {
+        why(&format!(
+            "is of type {}, not a byte, a word or bits of one byte",
+            f.data_type
+        ))
+    })?;
     let range = match &f.allowed {
         Allowed::Ranges(r) => match r.as_slice() {
             [(Value::Int(min), Value::Int(max))] => (*min, *max),
@@ -198,14 +232,14 @@ fn param(f: &Field, name: &str) -> Result<Param, Option<String>> {
     }
     Ok(Param {
         name: name.to_string(),
-        kind,
+        stored_as,
         range,
         default,
     })
 }
 
 /// The types of the area of bits 0-7 and the codes of the area of bits
-/// 16-23, each code given to the type the comment above its area names.
+/// 16-23, each type's code as the comments above the areas say it.
 fn diagnosis(device: &DpDevice, notes: &Notes) -> Result<Vec<DiagType>, Option<String>> {
     let d = &device.diagnosis;
     if !d.bits.is_empty() || !d.types.is_empty() || !d.channel.is_empty() {
@@ -233,7 +267,14 @@ fn diagnosis(device: &DpDevice, notes: &Notes) -> Result<Vec<DiagType>, Option<S
                 .into(),
         ));
     }
-    let by_type = codes.map(|c| codes_by_type(c, notes)).transpose()?;
+    let mut said = codes_said(&note_above(types, notes, TYPES_NOTE))?;
+    if let Some(codes) = codes {
+        let note = note_above(codes, notes, CODES_NOTE);
+        if note.is_empty() {
+            return Err(Some(format!("no comment above the codes' area (bits 16-23) says which type each code belongs to, as gsdc's GSD does (`{CODES_NOTE}type 1 (35, 34) ...`)")));
+        }
+        said.extend(codes_said(&note)?);
+    }
     let text_of = |value: i64| -> Option<String> {
         codes?
             .values
@@ -245,17 +286,14 @@ fn diagnosis(device: &DpDevice, notes: &Notes) -> Result<Vec<DiagType>, Option<S
         .values
         .iter()
         .map(|t| {
-            let said = by_type
-                .as_ref()
-                .and_then(|b| b.iter().find(|(v, _)| *v == t.value));
-            let code = match said {
-                Some((_, Said::Codes(values))) => DiagCode::Listed(
+            let code = match said.iter().find(|(v, _)| *v == t.value) {
+                Some((_, DiagCode::Listed(values))) => DiagCode::Listed(
                     values
                         .iter()
                         .map(|&v| text_of(v).map(|text| (v, text)).ok_or_else(|| missing(v)))
                         .collect::<Result<_, _>>()?,
                 ),
-                Some((_, Said::Word(name))) => DiagCode::Word(name.clone()),
+                Some((_, DiagCode::Word(name))) => DiagCode::Word(name.clone()),
                 None => return Err(unsaid_type(t.value)),
             };
             Ok(DiagType {
@@ -267,6 +305,19 @@ fn diagnosis(device: &DpDevice, notes: &Notes) -> Result<Vec<DiagType>, Option<S
         .collect()
 }
 
+/// How gsdc's notes above the types' and the codes' areas begin.
+const TYPES_NOTE: &str = "The type of the diagnosis";
+const CODES_NOTE: &str = "The code of ";
+
+/// The note gsdc writes above an area, from its first words on (the
+/// comment lines above it joined, as they were wrapped); empty without.
+fn note_above(area: &DiagArea, notes: &Notes, start: &str) -> String {
+    let comment = notes.comments_above(&area.place).join(" ");
+    comment
+        .find(start)
+        .map_or(String::new(), |at| comment[at..].to_string())
+}
+
 fn missing(code: i64) -> Option<String> {
     Some(format!(
         "the comment above the codes' area names code {code}, which the area does not list"
@@ -275,59 +326,47 @@ fn missing(code: i64) -> Option<String> {
 
 fn unsaid_type(value: i64) -> Option<String> {
     Some(format!(
-        "the comment above the codes' area (bits 16-23) does not say what code type {value} carries: gsdc's GSD says which type each code belongs to there"
+        "no comment above its diagnosis areas says what code type {value} carries, as gsdc's GSD says it"
     ))
 }
 
-/// What the comment says a type's code is.
-enum Said {
-    Codes(Vec<i64>),
-    Word(String),
-}
-
-/// The comment gsdc writes above the codes' area, read back: `The code
-/// of type 1 (35, 34) and type 3 (32); type 4 carries the high byte of its
-/// 16-bit code (Drive fault code) here`.
-fn codes_by_type(area: &DiagArea, notes: &Notes) -> Result<Vec<(i64, Said)>, Option<String>> {
-    let comment = notes.comments_above(&area.place).join(" ");
-    let Some((_, said)) = comment.split_once("The code of ") else {
-        return Err(Some(
-            "no comment above the codes' area (bits 16-23) says which type each code belongs to, as gsdc's GSD does".into(),
-        ));
+/// What a note says of the types' codes, read back: `The code of type 1
+/// (35, 34) and type 3 (32)`, each listed code's type; `type 4 carries the
+/// high byte of its 16-bit code (Drive fault code) here` or `type 4 carries
+/// a 16-bit code (Drive fault code) in bits 16-31`, a type's 16-bit code.
+fn codes_said(note: &str) -> Result<Vec<(i64, DiagCode<i64>)>, Option<String>> {
+    let unread = |what: &str| {
+        Some(format!(
+            "the comment above a diagnosis area does not read as gsdc's: \"{what}\""
+        ))
     };
-    let mut parts = said.split("; ");
-    let listed = parts.next().unwrap_or_default();
-    let mut by_type: Vec<(i64, Said)> = listed
-        .split("type ")
-        .skip(1)
-        .map(|item| {
-            let (value, codes) = item.split_once(" (")?;
-            let codes = codes.split_once(')')?.0;
-            let codes = codes
-                .split(", ")
-                .map(|c| c.parse().ok())
-                .collect::<Option<_>>()?;
-            Some((value.parse().ok()?, Said::Codes(codes)))
-        })
-        .collect::<Option<_>>()
-        .ok_or_else(|| {
-            Some(format!(
-                "the comment above the codes' area does not read as gsdc's: \"{comment}\""
-            ))
-        })?;
-    for word in parts {
-        let read = word
-            .strip_prefix("type ")
-            .and_then(|w| w.split_once(" carries the high byte of its 16-bit code ("))
-            .and_then(|(value, rest)| Some((value.parse().ok()?, rest.strip_suffix(") here")?)));
-        let Some((value, name)) = read else {
-            return Err(Some(format!(
-                "the comment above the codes' area does not read as gsdc's: \"{word}\""
-            )));
-        };
-        by_type.push((value, Said::Word(name.to_string())));
+    let mut said = Vec::new();
+    for sentence in note.split("; ") {
+        if let Some(listed) = sentence.strip_prefix(CODES_NOTE) {
+            if listed.starts_with("types ") {
+                return Err(Some(format!("the comment above the codes' area, \"{sentence}\", is an older gsdc's, which does not say which type each code belongs to: build the description again and import that")));
+            }
+            for item in listed.split("type ").skip(1) {
+                let read = item.split_once(" (").and_then(|(value, rest)| {
+                    let codes = rest.split_once(')')?.0.split(", ");
+                    let codes = codes.map(|c| c.parse().ok()).collect::<Option<_>>()?;
+                    Some((value.parse().ok()?, DiagCode::Listed(codes)))
+                });
+                said.push(read.ok_or_else(|| unread(sentence))?);
+            }
+        } else if let Some(word) = sentence.strip_prefix("type ") {
+            // The code's meaning is in the parentheses after `code (`.
+            let read = word.split_once(" carries ").and_then(|(value, rest)| {
+                let (_, meaning) = rest.split_once("code (")?;
+                let meaning = &meaning[..meaning.rfind(')')?];
+                Some((value.parse().ok()?, DiagCode::Word(meaning.to_string())))
+            });
+            said.push(read.ok_or_else(|| unread(sentence))?);
+        } else if sentence != TYPES_NOTE {
+            return Err(unread(sentence));
+        }
     }
-    Ok(by_type)
+    Ok(said)
 }
 
 /// `[gateway]` and its tables; and under `[choices]` what the GSD does not
@@ -374,6 +413,9 @@ pub(super) fn write(out: &mut TomlOut, g: &Gateway, file: &str, notes: &mut Note
         notes.note(format!("{file} does not say {why}: the description's `{key}` is the import's, marked under [choices]"));
     }
     notes.note(format!("{file} does not say whether the gateway is a node of the second bus itself: the description leaves `gateway.own_node` out"));
+    if g.one_node {
+        notes.note(format!("{file} names one node: which number in its parameters' names is the node's, they do not show; the import takes the first, {}", g.first_node));
+    }
 }
 
 /// The reasons under `[choices]` for what a gateway's GSD does not say.
@@ -389,20 +431,21 @@ pub(super) fn choices(file: &str) -> impl Iterator<Item = (String, String)> + '_
 const UNNAMED_BUS: &str = "second bus";
 
 /// The keys of `[gateway]` no GSD keyword gives, and what each says.
-const UNSAID: [(&str, &str); 2] = [
+const UNSAID: [(&str, &str); 3] = [
     ("gateway.bus", "which bus the nodes are on"),
     (
         "gateway.data_order",
         "in which order the nodes' words follow each other",
     ),
+    (
+        "gateway.input_words",
+        "which of each node's two parameters counts the words the master reads (the first, as gsdc writes them)",
+    ),
 ];
 
 fn write_param(out: &mut TomlOut, p: &Param) {
     out.key("name", &p.name);
-    let (key, value) = p
-        .kind
-        .split_once(" = ")
-        .expect("kinds are written as key = value");
+    let (key, value) = &p.stored_as;
     out.key(key, value);
     out.key("range", format!("[{}, {}]", p.range.0, p.range.1));
 }

@@ -15,6 +15,7 @@ mod dp;
 mod gateway;
 mod numbered;
 mod pn;
+mod prm;
 mod symbol;
 mod toml_out;
 
@@ -77,7 +78,7 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Imported {
 /// symbol names (`NAME.bmp`). The core reads nothing.
 pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported {
     let (device, text) = read(file_name, bytes);
-    let mut notes = Notes::new(&text);
+    let mut notes = Notes::new(text);
     let mut symbol = None;
     let description = match &device {
         Some(device) => {
@@ -106,7 +107,7 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
         round_trip.is_clean().then_some(toml)
     });
     let symbol = symbol.filter(|_| description.is_some());
-    notes.imported(description, symbol, text, round_trip)
+    notes.imported(description, symbol, round_trip)
 }
 
 /// The [`Files`] of an import without any.
@@ -192,7 +193,7 @@ fn rebuilt_changes(
     crate::diff::compare(old, &new)
 }
 
-const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML file whose modules carry its telegram (PKW and PZD words, standard telegram 1)";
+const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML file whose modules carry its telegram (PKW and PZD words, standard telegram 1), or a gateway's GSD as gsdc writes it";
 
 /// The diagnostics of one import, each at a line of the file.
 struct Notes {
@@ -207,24 +208,23 @@ impl Notes {
         self,
         description: Option<String>,
         symbol: Option<ImportedSymbol>,
-        text: String,
         round_trip: RoundTrip,
     ) -> Imported {
         Imported {
             description,
             symbol,
-            text,
+            text: self.text,
             unsaid: self.unsaid,
             diagnostics: self.diagnostics,
             round_trip,
         }
     }
 
-    fn new(text: &str) -> Notes {
+    fn new(text: String) -> Notes {
         let starts = text.match_indices('\n').map(|(i, _)| i + 1);
         Notes {
-            text: text.to_string(),
             lines: std::iter::once(0).chain(starts).collect(),
+            text,
             diagnostics: Diagnostics::default(),
             unsaid: 0,
         }

@@ -18,7 +18,9 @@ pub(super) struct Pattern {
 /// mapping's `PZD{n}(master->slaver)`, a gateway's `Slave {n} TPDO words`.
 pub(super) fn pattern(names: &[&Text]) -> Option<Pattern> {
     let first = names.first()?;
-    numbers_in(&first.primary).into_iter().find_map(|start| {
+    // Each try reads every name: a name of many numbers stays linear.
+    let tried = numbers_in(&first.primary).into_iter().take(MOST_TRIED);
+    tried.into_iter().find_map(|start| {
         let pattern_of = |text_of: &dyn Fn(&Text) -> Option<String>| -> Option<String> {
             let mut found: Option<String> = None;
             for (i, name) in names.iter().enumerate() {
@@ -44,6 +46,9 @@ pub(super) fn pattern(names: &[&Text]) -> Option<Pattern> {
         Some(Pattern { name, first: start })
     })
 }
+
+/// The numbers of the first name tried as the one that counts.
+const MOST_TRIED: usize = 8;
 
 /// The decimal numbers a text has, in order.
 fn numbers_in(text: &str) -> Vec<u32> {

@@ -8,6 +8,7 @@ mod diagnosis;
 mod modules;
 mod params;
 
+pub(crate) use modules::module_name;
 pub use params::place;
 
 use super::checks::Checker;

@@ -24,6 +24,7 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 use checks::Checker;
 /// For `gsdc import`, which recognises PPO types by their config bytes.
+pub(crate) use gateway::module_name as gateway_module_name;
 pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
 pub(crate) use profinet::{

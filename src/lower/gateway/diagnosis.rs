@@ -174,20 +174,28 @@ fn gsd_areas(types: &[DiagType]) -> Vec<GsdArea> {
             DiagCode::Word(_) => None,
         })
         .collect();
+    let words = types.iter().filter_map(|t| match &t.code {
+        DiagCode::Word(name) => Some((t.value, name.for_gsd())),
+        DiagCode::Listed(_) => None,
+    });
+    let (first_bit, last_bit) = byte_area(CODE_AT);
     if listed.is_empty() {
+        // No codes' area: the types' says what the types of a 16-bit code
+        // carry, so that the GSD says it somewhere (`gsdc import` reads it).
+        for (value, name) in words {
+            areas[0].note.push_str(&format!(
+                "; type {value} carries a 16-bit code ({name}) in bits {first_bit}-{}",
+                last_bit + 8
+            ));
+        }
         return areas;
     }
     let mut note = format!("The code of {}", codes_by_type(&listed));
-    for t in types {
-        if let DiagCode::Word(name) = &t.code {
-            note.push_str(&format!(
-                "; type {} carries the high byte of its 16-bit code ({}) here",
-                t.value,
-                name.for_gsd()
-            ));
-        }
+    for (value, name) in words {
+        note.push_str(&format!(
+            "; type {value} carries the high byte of its 16-bit code ({name}) here"
+        ));
     }
-    let (first_bit, last_bit) = byte_area(CODE_AT);
     areas.push(GsdArea {
         first_bit,
         last_bit,

@@ -44,14 +44,10 @@ pub(super) fn modules(
         .flat_map(|direction| sizes.iter().map(move |&words| (direction, words)))
         .zip(1..=u8::MAX)
         .map(|((direction, words), reference)| {
-            let way = match direction {
-                Direction::In => "input",
-                Direction::Out => "output",
-            };
-            let unit = if words == 1 { "word" } else { "words" };
+            let (way, unit) = way_and_unit(direction, words);
             Module {
                 reference,
-                name: format!("{} {words} {unit}", way.to_ascii_uppercase()),
+                name: module_name(direction, words),
                 direction,
                 words,
                 consistent,
@@ -105,6 +101,20 @@ fn layout_decisions(cx: &mut Checker, modules: &[Module], most: usize) {
 }
 
 /// The sizes, ascending, each 1..=16 words (one identifier byte) and once.
+/// A word block's name in the GSD: `INPUT 1 word`, `OUTPUT 16 words`.
+pub(crate) fn module_name(direction: Direction, words: u8) -> String {
+    let (way, unit) = way_and_unit(direction, words);
+    format!("{} {words} {unit}", way.to_ascii_uppercase())
+}
+
+fn way_and_unit(direction: Direction, words: u8) -> (&'static str, &'static str) {
+    let way = match direction {
+        Direction::In => "input",
+        Direction::Out => "output",
+    };
+    (way, if words == 1 { "word" } else { "words" })
+}
+
 fn module_sizes(cx: &mut Checker, words: &Spanned<Vec<Spanned<i64>>>) -> Vec<u8> {
     if words.get_ref().is_empty() {
         cx.push(
