@@ -10,13 +10,14 @@
 //!
 //! The import writes its description's GSD or GSDML file too, for its round
 //! trip (reads it back and compares it with the file, `gsdc diff`); the
-//! build writes the layouts besides and checks every file. Every GSDML file
-//! of the corpus, the largest corpus file (SEW's MOVI-C, 1.1 MB) among
-//! them, is refused by the import (E602: several device access points, or
-//! modules of their own IO layouts), so the GSDML measured is the largest
-//! that imports of the corpus's and of the GSDML files the shipped
-//! descriptions build (MV810's, a vendor's hand-written file would stand
-//! there). Needs ../shared beside the checkout.
+//! build writes the layouts besides and checks every file. No GSDML file of
+//! the corpus imports, the largest corpus file (SEW's MOVI-C, 1.1 MB) among
+//! them: refused (E602, no module the format can say) or not the same
+//! device (E601: several device access points, modules of their own IO
+//! layouts, README's table), so the GSDML measured is the largest that
+//! imports of the corpus's and of the GSDML files the shipped descriptions
+//! build (MV810's, a vendor's hand-written file would stand there). Needs
+//! ../shared beside the checkout.
 
 #[path = "common/mod.rs"]
 mod common;
