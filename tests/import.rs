@@ -513,8 +513,10 @@ fn gateway_variants_import_and_rebuild_below_the_header() {
 
 /// A gateway's GSD with a part `[gateway]` cannot say is refused naming it
 /// (E602): without the comment that says which type each code belongs to
-/// (no keyword says it), or with a node's parameter named out of turn; with
-/// a module of bytes it is neither a drive's nor a gateway's.
+/// (no keyword says it) or with an earlier gsdc's that did not say it, with
+/// a node's parameter named out of turn, or with a parameter in bits past
+/// its byte; with a module of bytes it is neither a drive's nor a
+/// gateway's.
 #[test]
 fn a_gateway_gsd_that_gateway_cannot_say_is_refused_saying_why() {
     let gsd = gateway_gsd(&descriptions::shipped_text("md810-gateway.toml"));
