@@ -37,6 +37,18 @@ fn assert_says(toml: &str, lines: &[&str]) {
     }
 }
 
+/// The files a build wrote, as an import finds the files beside the one
+/// it reads (its device symbol's bitmap).
+fn beside(files: &[gsdc::Artifact]) -> impl Fn(&str) -> Result<Vec<u8>, String> + '_ {
+    move |wanted: &str| {
+        files
+            .iter()
+            .find(|f| f.file_name == wanted)
+            .map(|f| f.contents.clone())
+            .ok_or_else(|| format!("{wanted}: not built"))
+    }
+}
+
 fn codes(imported: &Imported) -> Vec<&'static str> {
     imported.diagnostics.iter().map(|d| d.code).collect()
 }
@@ -53,13 +65,7 @@ fn shipped_device_files_import_and_rebuild_byte_identical_below_the_header() {
     let mut imported_files = Vec::new();
     for (name, ir) in descriptions::load_shipped() {
         let files = gsdc::compile(&ir).unwrap();
-        let beside = |wanted: &str| {
-            files
-                .iter()
-                .find(|f| f.file_name == wanted)
-                .map(|f| f.contents.clone())
-                .ok_or_else(|| format!("{wanted}: not built"))
-        };
+        let beside = beside(&files);
         for file in &files {
             if !matches!(file.kind, ArtifactKind::Gsd | ArtifactKind::Gsdml) {
                 continue;
@@ -251,13 +257,7 @@ fn a_gsd_and_a_gsdml_file_import_as_one_description_of_both_buses() {
             continue;
         }
         let files = gsdc::compile(&ir).unwrap();
-        let beside = |wanted: &str| {
-            files
-                .iter()
-                .find(|f| f.file_name == wanted)
-                .map(|f| f.contents.clone())
-                .ok_or_else(|| format!("{wanted}: not built"))
-        };
+        let beside = beside(&files);
         let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
         let (gsdml_name, gsdml) = descriptions::one(files.clone(), ArtifactKind::Gsdml);
         let both = import_both(
@@ -467,7 +467,8 @@ fn gateway_round_trip(description: &str) -> Imported {
 /// nodes' words in bit areas (TPDO in bits 0-3, RPDO in bits 4-7 of a
 /// byte each); only types of a 16-bit code, so no codes' area (the types'
 /// note says what they carry); one node, whose number its parameters'
-/// names do not show (W600).
+/// names do not show (W600); a word block named otherwise than gsdc names
+/// it (W600 at its line).
 #[test]
 fn gateway_variants_import_and_rebuild_below_the_header() {
     let bits = gateway_round_trip(&descriptions::gateway_in_bit_areas());
@@ -509,6 +510,19 @@ fn gateway_variants_import_and_rebuild_below_the_header() {
     assert!(messages(&one, "W600")
         .iter()
         .any(|m| m.contains("names one node")));
+    // A word block named otherwise: the build names it as gsdc does, a
+    // warning at its line; the round trip finds the name cosmetic.
+    let gsd = gateway_gsd(&shipped).replace("\"INPUT 2 words\" 0x51", "\"IN 2 words\" 0x51");
+    let renamed = import("MD810GW.GSD", gsd.as_bytes());
+    written(&renamed, "a module named otherwise");
+    let warning = renamed.diagnostics.iter().find(|d| {
+        d.message == "module name \"IN 2 words\" is not imported: gsdc names a gateway's word blocks itself: \"INPUT 2 words\""
+    });
+    assert!(
+        warning.is_some_and(|w| w.span.is_some()),
+        "{:#?}",
+        renamed.diagnostics
+    );
 }
 
 /// A gateway's GSD with a part `[gateway]` cannot say is refused naming it

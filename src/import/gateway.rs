@@ -64,7 +64,11 @@ enum DiagCode<C> {
 /// blocks of words one way each (not a gateway's GSD), `Err(Some(why))`
 /// when they are but another part has no place in `[gateway]`.
 pub(super) fn read(device: &DpDevice, notes: &mut Notes) -> Result<Gateway, Option<String>> {
-    let (module_words, consistent) = word_blocks(device).ok_or(None)?;
+    let WordBlocks {
+        sizes,
+        consistent,
+        each,
+    } = word_blocks(device).ok_or(None)?;
     let prm = &device.user_prm_data;
     let [count, words @ ..] = prm.fields.as_slice() else {
         return Err(Some(
@@ -108,30 +112,20 @@ pub(super) fn read(device: &DpDevice, notes: &mut Notes) -> Result<Gateway, Opti
         node_count: param(count, &quote(&count.name.primary))?,
         input_words,
         output_words,
-        module_words,
+        module_words: sizes,
         consistent,
         diagnosis: diagnosis(device, notes)?,
         one_node: inputs.len() == 1,
     };
-    module_names(device, notes);
+    module_names(device, &each, notes);
     Ok(gateway)
 }
 
 /// W600 for each module not named as gsdc names a gateway's word blocks:
 /// the description has no key for their names.
-fn module_names(device: &DpDevice, notes: &mut Notes) {
-    for m in &device.modules {
-        let Ok(ids) = identifiers(&m.config) else {
-            continue;
-        };
-        let [Identifier::General { direction, data }] = ids.as_slice() else {
-            continue;
-        };
-        let direction = match direction {
-            Direction::Input => crate::ir::Direction::In,
-            _ => crate::ir::Direction::Out,
-        };
-        let gsdc = crate::lower::gateway_module_name(direction, data.count);
+fn module_names(device: &DpDevice, each: &[(crate::ir::Direction, u8)], notes: &mut Notes) {
+    for (m, &(direction, words)) in device.modules.iter().zip(each) {
+        let gsdc = crate::lower::gateway_module_name(direction, words);
         if m.name != gsdc {
             notes.unsaid(
                 &format!("module name \"{}\"", m.name),
@@ -142,34 +136,53 @@ fn module_names(device: &DpDevice, notes: &mut Notes) {
     }
 }
 
-/// The sizes of the word blocks and whether each is consistent as a
-/// whole: every module one general identifier of words one way, the same
-/// sizes each way, all alike consistent.
-fn word_blocks(device: &DpDevice) -> Option<(Vec<u8>, bool)> {
-    let mut blocks = Vec::new();
+/// A gateway's modules: the sizes offered (the same each way), whether
+/// each is consistent as a whole, and each module's direction and words.
+struct WordBlocks {
+    sizes: Vec<u8>,
+    consistent: bool,
+    each: Vec<(crate::ir::Direction, u8)>,
+}
+
+/// The modules as a gateway's word blocks: every module one general
+/// identifier of words one way, the same sizes each way, all alike
+/// consistent.
+fn word_blocks(device: &DpDevice) -> Option<WordBlocks> {
+    let mut each = Vec::new();
+    let mut consistent = Vec::new();
     for m in &device.modules {
         let ids = identifiers(&m.config).ok()?;
         let [Identifier::General { direction, data }] = ids.as_slice() else {
             return None;
         };
-        if !data.words || *direction == Direction::Both || !m.user_prm_data.is_empty() {
+        let direction = match direction {
+            Direction::Input => crate::ir::Direction::In,
+            Direction::Output => crate::ir::Direction::Out,
+            Direction::Both => return None,
+        };
+        if !data.words || !m.user_prm_data.is_empty() {
             return None;
         }
-        blocks.push((*direction, data.count, data.consistent));
+        each.push((direction, data.count));
+        consistent.push(data.consistent);
     }
-    let sizes = |way: Direction| -> Vec<u8> {
-        let mut sizes: Vec<u8> = blocks
+    let sizes = |way: crate::ir::Direction| -> Vec<u8> {
+        let mut sizes: Vec<u8> = each
             .iter()
-            .filter(|(d, ..)| *d == way)
-            .map(|(_, count, _)| *count)
+            .filter(|(d, _)| *d == way)
+            .map(|(_, words)| *words)
             .collect();
         sizes.sort_unstable();
         sizes
     };
-    let (input, output) = (sizes(Direction::Input), sizes(Direction::Output));
-    let consistent = blocks.first()?.2;
-    let alike = blocks.iter().all(|(.., c)| *c == consistent);
-    (input == output && alike).then_some((input, consistent))
+    let input = sizes(crate::ir::Direction::In);
+    let first = *consistent.first()?;
+    let alike = consistent.iter().all(|c| *c == first);
+    (input == sizes(crate::ir::Direction::Out) && alike).then_some(WordBlocks {
+        sizes: input,
+        consistent: first,
+        each,
+    })
 }
 
 /// One direction's parameters of every node: one name with the node's
@@ -187,17 +200,14 @@ fn node_words(fields: &[&Field]) -> Result<(NodeWords, u32), Option<String>> {
         .iter()
         .map(|f| param(f, &name))
         .collect::<Result<_, _>>()?;
-    let first_param = &params[0];
-    let alike = params
-        .iter()
-        .all(|p| p.stored_as == first_param.stored_as && p.range == first_param.range);
-    if !alike {
+    let defaults = params.iter().map(|p| p.default).collect();
+    let mut params = params.into_iter();
+    let param = params.next().ok_or(None)?;
+    if !params.all(|p| p.stored_as == param.stored_as && p.range == param.range) {
         return Err(Some(format!(
             "the node parameters {name} differ in type or range from node to node"
         )));
     }
-    let defaults = params.iter().map(|p| p.default).collect();
-    let param = params.into_iter().next().expect("a node at least");
     Ok((NodeWords { param, defaults }, first))
 }
 
