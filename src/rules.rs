@@ -126,6 +126,10 @@ pub const RULES: &[Rule] = &[
     rule("E180", "a DPV1 alarm required but not supported"),
     rule("E181", "an isochronous cycle's least more than its longest"),
     rule("E182", "a DPV1 channel required but not supported"),
+    rule(
+        "E183",
+        "a device access point's modules not the description's, each once",
+    ),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -393,23 +393,82 @@ fn md810_gsdml_changed(change: impl Fn(&str) -> String) -> Imported {
     import(&name, changed.as_bytes())
 }
 
-/// A GSDML file with more than the format can say is imported as far as
-/// it goes and judged: a second device access point, or a module whose
-/// data is not 16-bit words, is left out (W600 at its element), and the
-/// round trip finds the device changed (E601, breaking); nothing is
-/// written.
-#[test]
-fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
-    let second_dap = md810_gsdml_changed(|gsdml| {
+/// MD810's GSDML with a second device access point: a copy of the first
+/// under other IDs, as `edit` changes it.
+fn md810_with_second_dap(edit: impl Fn(String) -> String) -> Imported {
+    md810_gsdml_changed(|gsdml| {
         let start = gsdml.find("<DeviceAccessPointItem ").unwrap();
         let end_tag = "</DeviceAccessPointItem>";
         let end = gsdml.find(end_tag).unwrap() + end_tag.len();
-        let copy = gsdml[start..end].replace(" ID=\"", " ID=\"V2_").replacen(
+        let copy = edit(gsdml[start..end].replace(" ID=\"", " ID=\"V2_"));
+        format!("{}\n{copy}{}", &gsdml[..end], &gsdml[end..])
+    })
+}
+
+/// A second device access point that differs from the first in its ident
+/// number, order number, hardware release and ports is imported as a
+/// `[[profinet.daps]]` entry saying just those, and rebuilds the same
+/// device.
+#[test]
+fn a_second_device_access_point_imports_as_what_it_changes() {
+    let imported = md810_with_second_dap(|dap| {
+        let second_port = dap.find("<PortSubmoduleItem ID=\"V2_IDS_PORT_2\"").unwrap();
+        let end_tag = "</PortSubmoduleItem>";
+        let end = second_port + dap[second_port..].find(end_tag).unwrap() + end_tag.len();
+        let one_port = format!("{}{}", &dap[..second_port], &dap[end..]);
+        one_port
+            .replacen(
+                "ModuleIdentNumber=\"0x00000001\"",
+                "ModuleIdentNumber=\"0x00000009\"",
+                1,
+            )
+            .replace("<HardwareRelease Value=\"", "<HardwareRelease Value=\"B-")
+            .replace(" IsDefaultRingport=\"true\"", "")
+            // A port less is a port's IOPS and IOCS less in the CRs.
+            .replace(
+                "MaxInputLength=\"38\" MaxOutputLength=\"38\"",
+                "MaxInputLength=\"37\" MaxOutputLength=\"37\"",
+            )
+            .replace("<MediaRedundancy SupportedRole=\"Client\"/>", "")
+    });
+    assert_eq!(
+        imported.round_trip.breaking, 0,
+        "{:#?}",
+        imported.diagnostics
+    );
+    assert_eq!(
+        imported.round_trip.compatible, 0,
+        "{:#?}",
+        imported.diagnostics
+    );
+    let description = imported.description.expect("written");
+    let entry = &description[description.find("[[profinet.daps]]").expect("an entry")..];
+    let entry = &entry[..entry.find("\n\n").unwrap_or(entry.len())];
+    assert!(entry.contains("ident = 0x00000009"), "{entry}");
+    assert!(entry.contains("hardware_release = \"B-"), "{entry}");
+    assert!(entry.contains("ports = 1"), "{entry}");
+    assert!(
+        !entry.contains("modules"),
+        "it offers every module: {entry}"
+    );
+}
+
+/// A GSDML file with more than the format can say is imported as far as
+/// it goes and judged: a second device access point whose ident number is
+/// the first's, or whose update time is not the first's (the description's
+/// share it), or a module whose data is not 16-bit words, is left out
+/// (W600 at its element), and the round trip finds the device changed
+/// (E601, breaking); nothing is written.
+#[test]
+fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
+    let same_ident = md810_with_second_dap(|dap| dap);
+    let other_interval = md810_with_second_dap(|dap| {
+        dap.replacen(
             "ModuleIdentNumber=\"0x00000001\"",
             "ModuleIdentNumber=\"0x00000009\"",
             1,
-        );
-        format!("{}\n{copy}{}", &gsdml[..end], &gsdml[end..])
+        )
+        .replace("MinDeviceInterval=\"32\"", "MinDeviceInterval=\"64\"")
     });
     let bytes_module = md810_gsdml_changed(|gsdml| {
         let module = gsdml.find("<ModuleItem ID=\"IDM_PZD_12\"").unwrap();
@@ -422,7 +481,8 @@ fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
         )
     });
     for (imported, left_out, changed) in [
-        (&second_dap, "device access point `V2_IDD_DAP` is not imported: the description has one, the file's first (`IDD_DAP`)", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
+        (&same_ident, "device access point `V2_IDD_DAP` is not imported: its ModuleIdentNumber 0x00000001 is another device access point's or module's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000001) (breaking): removed"),
+        (&other_interval, "device access point `V2_IDD_DAP` is not imported: its MinDeviceInterval is not the first device access point's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
         (&bytes_module, "module `IDM_PZD_12` is not imported: its IO data is not 16-bit words as many each way", "input data of submodule \"12 PZD\" (0x0000010C) of module \"12 PZD\" (0x0000010C) (breaking): 26 bytes"),
     ] {
         assert_eq!(imported.description, None);
@@ -943,7 +1003,7 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
         stderr.starts_with("error[E601]: the import does not build: E132 `FENA` is not a DNS-compatible name of station"),
         "{stderr}"
     );
-    assert!(stderr.contains("warning[W600]: device access point `FENA_DAP_V4` is not imported: the description has one, the file's first (`FENA_DAP_V3`)"));
+    assert!(stderr.contains("warning[W600]: module `ID_MODULE_STD_TGM2` is not imported"));
     assert!(!refused_out.exists());
     // Two files: a card's GSD and GSDML file, in either order, make one
     // description; two GSD files are a usage error.

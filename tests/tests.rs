@@ -107,6 +107,7 @@ mod limits;
 mod manual_texts;
 mod output_safety;
 mod outputs;
+mod pn_daps;
 mod properties;
 mod rule_docs;
 mod suite;

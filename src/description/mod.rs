@@ -559,6 +559,32 @@ pub struct Profinet {
     /// not gsdc's numbering (an imported file's own).
     #[serde(default)]
     pub ident_numbers: IdentNumbers,
+    /// The device access points after the first (`[profinet]`'s): other
+    /// hardware or firmware versions of the card, in one file.
+    #[serde(default)]
+    pub daps: Vec<Spanned<Dap>>,
+}
+
+/// `[[profinet.daps]]`: a device access point after the first. What it
+/// leaves out is the first's.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Dap {
+    pub name: Spanned<Text>,
+    pub info: Option<Spanned<Text>>,
+    /// Its ModuleIdentNumber, and its own submodule's when not the same.
+    pub ident: Spanned<u32>,
+    pub submodule_ident: Option<Spanned<u32>>,
+    pub order_number: Option<Spanned<String>>,
+    pub hardware_release: Option<Spanned<String>>,
+    pub software_release: Option<Spanned<String>>,
+    pub ports: Option<Spanned<u8>>,
+    /// One SubmoduleIdentNumber per port, where not the first DAP's.
+    pub port_idents: Option<Spanned<Vec<Spanned<u32>>>>,
+    pub media_redundancy: Option<Spanned<bool>>,
+    /// The modules it offers, by their names in generated code; all of
+    /// them when left out.
+    pub modules: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 /// `[profinet.ident_numbers]`: each key left out keeps gsdc's numbering.

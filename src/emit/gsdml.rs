@@ -9,7 +9,7 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
+    ConformanceClass, Dap, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
     ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
@@ -17,10 +17,6 @@ use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
 use quick_xml::Writer;
 
 const XSI: &str = "http://www.w3.org/2001/XMLSchema-instance";
-/// The DAP's ID and its submodule's.
-const DAP_ID: &str = "IDD_DAP";
-const DAP_SUBMODULE_ID: &str = "IDS_DAP";
-const INTERFACE_ID: &str = "IDS_INTERFACE";
 /// 100BASE-TX full duplex (IEC 61158-6-10 MAUType 16): the card's RJ45 ports.
 const MAU_100BASE_TX: &str = "16";
 const CONSISTENCY: &str = "All items consistency";
@@ -45,7 +41,11 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     doc.open("ProfileBody", &[]);
     device_identity(&mut doc, ir, profinet);
     doc.open("ApplicationProcess", &[]);
-    device_access_point(&mut doc, ir, profinet);
+    doc.open("DeviceAccessPointList", &[]);
+    for dap in &profinet.daps {
+        device_access_point(&mut doc, ir, profinet, dap);
+    }
+    doc.close("DeviceAccessPointList");
     module_list(&mut doc, ir, profinet);
     value_list(&mut doc, profinet);
     if let Some(symbol) = &profinet.device_symbol {
@@ -200,16 +200,15 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.close("DeviceFunction");
 }
 
-/// The one DAP: slot 0, with slot 1 for one module.
-fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
-    doc.open("DeviceAccessPointList", &[]);
+/// A DAP: slot 0, with slot 1 for one of the modules it offers.
+fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     doc.open(
         "DeviceAccessPointItem",
         &[
-            ("ID", DAP_ID),
+            ("ID", &dap.id),
             ("PNIO_Version", &p.gsdml_version.to_string()),
             ("PhysicalSlots", &format!("0..{MODULE_SLOT}")),
-            ("ModuleIdentNumber", &hex32(p.dap_ident)),
+            ("ModuleIdentNumber", &hex32(dap.ident)),
             ("MinDeviceInterval", &p.min_device_interval.to_string()),
             ("DNS_CompatibleName", &p.dns_name),
             ("FixedInSlots", "0"),
@@ -225,14 +224,13 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
             ("ResetToFactoryModes", "2"),
         ],
     );
-    let d = &ir.device;
-    let mut values = vec![("VendorName", d.vendor.as_str())];
-    values.extend(d.order_number.as_deref().map(|o| ("OrderNumber", o)));
+    let mut values = vec![("VendorName", ir.device.vendor.as_str())];
+    values.extend(dap.order_number.as_deref().map(|o| ("OrderNumber", o)));
     values.extend([
-        ("HardwareRelease", d.hardware_release.as_str()),
-        ("SoftwareRelease", d.software_release.as_str()),
+        ("HardwareRelease", dap.hardware_release.as_str()),
+        ("SoftwareRelease", dap.software_release.as_str()),
     ]);
-    module_info(doc, &p.device_name, &p.device_info, &values);
+    module_info(doc, &dap.name, &dap.info, &values);
     let properties = &p.interface_properties;
     doc.leaf(
         "CertificationInfo",
@@ -257,21 +255,21 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.leaf(
         "IOConfigData",
         &[
-            ("MaxInputLength", &p.max_input_length.to_string()),
-            ("MaxOutputLength", &p.max_output_length.to_string()),
+            ("MaxInputLength", &dap.max_input_length.to_string()),
+            ("MaxOutputLength", &dap.max_output_length.to_string()),
         ],
     );
     doc.open("UseableModules", &[]);
     let slot = MODULE_SLOT.to_string();
-    for m in &p.modules {
+    for m in dap.modules.iter().map(|&i| &p.modules[i]) {
         doc.leaf(
             "ModuleItemRef",
             &[("ModuleItemTarget", &m.id), ("AllowedInSlots", &slot)],
         );
     }
     doc.close("UseableModules");
-    dap_submodule(doc, p);
-    interface_and_ports(doc, p);
+    dap_submodule(doc, p, dap);
+    interface_and_ports(doc, p, dap);
     if let Some(symbol) = &p.device_symbol {
         doc.open("Graphics", &[]);
         doc.leaf(
@@ -281,7 +279,6 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         doc.close("Graphics");
     }
     doc.close("DeviceAccessPointItem");
-    doc.close("DeviceAccessPointList");
 }
 
 /// Name, InfoText and then any `Value` elements, in the schema's order.
@@ -309,18 +306,21 @@ fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&s
 /// The DAP's own submodule: no IO data and no records. A device that lets
 /// the controller write no I&M record has no Writeable_IM_Records (an
 /// empty list is not a value of it).
-fn dap_submodule(doc: &mut Doc, p: &Profinet) {
+fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.open("VirtualSubmoduleList", &[]);
-    let ident = hex32(p.dap_submodule_ident);
+    let ident = hex32(dap.submodule_ident);
     let records = blank_separated(&p.interface_properties.writeable_im_records);
-    let mut attributes = vec![("ID", DAP_SUBMODULE_ID), ("SubmoduleIdentNumber", &ident)];
+    let mut attributes = vec![
+        ("ID", dap.submodule_id.as_str()),
+        ("SubmoduleIdentNumber", &ident),
+    ];
     if !records.is_empty() {
         attributes.push(("Writeable_IM_Records", &records));
     }
     attributes.push(("MayIssueProcessAlarm", "false"));
     doc.open("VirtualSubmoduleItem", &attributes);
     doc.leaf("IOData", &[]);
-    module_info(doc, &p.device_name, &p.device_info, &[]);
+    module_info(doc, &dap.name, &dap.info, &[]);
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
 }
@@ -331,13 +331,13 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet) {
 /// not give. The DCP and PTP boundaries are declared as every corpus file
 /// of PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
 /// Portal's checker requires of V2.31 and later.
-fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
+fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.open("SystemDefinedSubmoduleList", &[]);
     doc.text(&p.interface);
     doc.open(
         "InterfaceSubmoduleItem",
         &[
-            ("ID", INTERFACE_ID),
+            ("ID", &dap.interface_id),
             ("SubslotNumber", &INTERFACE_SUBSLOT.to_string()),
             ("SubmoduleIdentNumber", &hex32(p.interface_ident)),
             ("TextId", &p.interface.id),
@@ -364,11 +364,11 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet) {
         ],
     );
     doc.close("ApplicationRelations");
-    if p.interface_properties.media_redundancy {
+    if dap.media_redundancy {
         doc.leaf("MediaRedundancy", &[("SupportedRole", "Client")]);
     }
     doc.close("InterfaceSubmoduleItem");
-    for port in &p.ports {
+    for port in &dap.ports {
         doc.text(&port.text);
         let subslot = port.subslot.to_string();
         let ident = hex32(port.ident);

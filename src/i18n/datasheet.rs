@@ -210,6 +210,12 @@ phrases! {
         de: "IO-Datenbytes höchstens, Eingänge und Ausgänge (mit IOPS und IOCS)",
     };
     PROFINET_DEVICE = { en: "PROFINET device", zh: "PROFINET 设备", de: "PROFINET-Gerät" };
+    DEVICE_ACCESS_POINTS = {
+        en: "Device access points",
+        zh: "设备访问点",
+        de: "Gerätezugriffspunkte",
+    };
+    ALL_MODULES = { en: "all", zh: "全部", de: "alle" };
     TO_CHECK = {
         en: "To check before shipping",
         zh: "发布前需核对",

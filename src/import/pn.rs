@@ -9,6 +9,8 @@
 //! (E601). A file without a module the format can say is refused at its
 //! device access point (E602).
 
+mod daps;
+
 use super::numbered::{pattern, Pattern};
 use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
@@ -106,7 +108,10 @@ pub(super) fn describe(
     symbol: Option<&str>,
     notes: &mut Notes,
 ) -> Option<TomlOut> {
-    let dap = first_dap(device, notes)?;
+    let (dap, others) = device.daps.split_first().or_else(|| {
+        notes.refuse_at("no DeviceAccessPointItem", &device.place);
+        None
+    })?;
     for s in &device.submodules {
         notes.unsaid(
             &format!("pluggable submodule `{}`", s.id),
@@ -129,7 +134,8 @@ pub(super) fn describe(
         return None;
     }
     let name = file_name(file, notes)?;
-    unsaid_extras(device, dap, &modules, notes);
+    let later = daps::later_daps(dap, others, &modules, notes);
+    unsaid_extras(device, (dap, &later), &modules, notes);
     let mut out = TomlOut::default();
     out.comment(&format!(
         "Imported by gsdc import from {file}. Every value below is the file's,"
@@ -144,6 +150,9 @@ pub(super) fn describe(
     records.write_indexes(&mut out);
     module_texts(&mut out, &modules, notes);
     ident_numbers(&mut out, dap, &modules);
+    for later in &later {
+        later.write(&mut out);
+    }
     super::dp::manual(&mut out);
     choices(&mut out, file, &records);
     Some(out)
@@ -172,26 +181,6 @@ fn choices(out: &mut TomlOut, file: &str, records: &Records) {
     for table in tables {
         out.key(&quote(table), &reason);
     }
-}
-
-/// The first device access point; each other one is left out (W600), so
-/// that the round trip names what a file of several is beyond the format.
-fn first_dap<'a>(device: &'a PnDevice, notes: &mut Notes) -> Option<&'a Dap> {
-    let Some((first, others)) = device.daps.split_first() else {
-        notes.refuse_at("no DeviceAccessPointItem", &device.place);
-        return None;
-    };
-    for other in others {
-        notes.unsaid(
-            &format!("device access point `{}`", other.item.id),
-            &other.item.place,
-            &format!(
-                "the description has one, the file's first (`{}`)",
-                first.item.id
-            ),
-        );
-    }
-    Some(first)
 }
 
 /// A module's kind and layout from its IO data: 16-bit words, as many each
@@ -918,7 +907,12 @@ fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
 
 /// W600 for each attribute and element the description has no place for,
 /// or whose value gsdc writes another way.
-fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &mut Notes) {
+fn unsaid_extras(
+    device: &PnDevice,
+    (first, later): (&Dap, &[daps::LaterDap]),
+    modules: &[Recognised],
+    notes: &mut Notes,
+) {
     let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
         for a in attributes {
             let fits = known.iter().any(|(name, value)| {
@@ -932,18 +926,20 @@ fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &m
             }
         }
     };
-    check(
-        &dap.item.attributes,
-        DAP_ATTRIBUTES,
-        "DeviceAccessPointItem",
-    );
-    for s in &dap.item.submodules {
-        let known = match s.kind {
-            SubmoduleKind::Interface => INTERFACE_ATTRIBUTES,
-            SubmoduleKind::Port => PORT_ATTRIBUTES,
-            _ => SUBMODULE_ATTRIBUTES,
-        };
-        check(&s.attributes, known, s.kind.element());
+    for dap in [first].into_iter().chain(later.iter().map(|l| l.dap)) {
+        check(
+            &dap.item.attributes,
+            DAP_ATTRIBUTES,
+            "DeviceAccessPointItem",
+        );
+        for s in &dap.item.submodules {
+            let known = match s.kind {
+                SubmoduleKind::Interface => INTERFACE_ATTRIBUTES,
+                SubmoduleKind::Port => PORT_ATTRIBUTES,
+                _ => SUBMODULE_ATTRIBUTES,
+            };
+            check(&s.attributes, known, s.kind.element());
+        }
     }
     for m in modules {
         check(
@@ -984,7 +980,8 @@ fn unsaid_extras(device: &PnDevice, dap: &Dap, modules: &[Recognised], notes: &m
         );
     }
     // A module of the first access point is imported or left out with its
-    // reason; one of another access point goes with it (left out above).
+    // reason; one only a later access point offers goes with it (left out
+    // in `daps`).
     let offered = |m: &PnModule| {
         device
             .daps

@@ -16,27 +16,22 @@ pub struct Profinet {
     pub vendor_id_placeholder: bool,
     pub device_id: u16,
     pub device_id_placeholder: bool,
-    /// The device's name and info text, as DeviceIdentity, the DAP and its
-    /// submodule show them.
-    pub device_name: TextRef,
+    /// The device's info text, as DeviceIdentity shows it (and the first
+    /// access point, unless it has its own).
     pub device_info: TextRef,
     /// DNS_CompatibleName: the default name of station.
     pub dns_name: String,
     /// Units of 31.25 us.
     pub min_device_interval: u16,
-    /// IOConfigData: the most bytes the plugged submodules exchange.
-    pub max_input_length: u16,
-    pub max_output_length: u16,
     pub interface: TextRef,
     /// The interface submodule's SubmoduleIdentNumber.
     pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,
-    /// The device access point's ModuleIdentNumber and its submodule's.
-    pub dap_ident: u32,
-    pub dap_submodule_ident: u32,
+    /// The device access points, the description's `[profinet]` first,
+    /// then its `[[profinet.daps]]`: never empty.
+    pub daps: Vec<Dap>,
     /// A PROFIdrive module's access point submodule's ident number.
     pub access_point_ident: u32,
-    pub ports: Vec<Port>,
     pub modules: Vec<Module>,
     /// The hardware catalog's groups of modules, in the order first used.
     pub categories: Vec<Category>,
@@ -62,6 +57,12 @@ pub struct GraphicItem {
 }
 
 impl Profinet {
+    /// The first device access point: the one the layouts' device tables
+    /// describe.
+    pub fn dap(&self) -> &Dap {
+        &self.daps[0]
+    }
+
     /// The record of a kind of mapping, when a module carries it.
     pub fn record(&self, kind: MappingKind) -> Option<&RecordPlan> {
         self.records.iter().find(|r| r.kind == kind)
@@ -78,8 +79,11 @@ impl Profinet {
     /// their bits, its records and their entries), the value items'. A
     /// TextId may come more than once.
     pub fn text_refs(&self) -> Vec<&TextRef> {
-        let mut refs = vec![&self.device_name, &self.device_info, &self.interface];
-        refs.extend(self.ports.iter().map(|p| &p.text));
+        let mut refs = vec![&self.device_info, &self.interface];
+        for dap in &self.daps {
+            refs.extend([&dap.name, &dap.info]);
+            refs.extend(dap.ports.iter().map(|p| &p.text));
+        }
         refs.extend(self.categories.iter().map(|c| &c.text));
         for m in &self.modules {
             refs.extend([&m.name, &m.info]);
@@ -212,8 +216,35 @@ pub struct InterfaceProperties {
     pub netload_class: NetloadClass,
     /// I&M records the controller may write, ascending.
     pub writeable_im_records: Vec<u8>,
+}
+
+/// A device access point (DAP): the card in slot 0 as one of its hardware
+/// or firmware versions presents itself. Every DAP has the same interface
+/// properties and offers modules of the same list.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Dap {
+    /// Its ID, its own submodule's and its interface's: `IDD_DAP`, then
+    /// `IDD_DAP_2` and so on.
+    pub id: String,
+    pub submodule_id: String,
+    pub interface_id: String,
+    /// Its ModuleIdentNumber and its own submodule's.
+    pub ident: u32,
+    pub submodule_ident: u32,
+    pub name: TextRef,
+    pub info: TextRef,
+    pub order_number: Option<String>,
+    pub hardware_release: String,
+    pub software_release: String,
+    pub ports: Vec<Port>,
     /// An MRP client: `MediaRedundancy`, the default ring ports.
     pub media_redundancy: bool,
+    /// The modules it offers: indexes into `Profinet::modules`, ascending.
+    pub modules: Vec<usize>,
+    /// IOConfigData: the most bytes the plugged submodules exchange.
+    pub max_input_length: u16,
+    pub max_output_length: u16,
 }
 
 /// CertificationInfo's conformance class: gsdc writes RT_CLASS_1 only, so

@@ -13,6 +13,7 @@ use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
+mod daps;
 mod idents;
 mod ids;
 mod interface;
@@ -74,7 +75,9 @@ pub fn lower(
     let info = p.info.as_ref().map(|i| cx.text(i, None, "profinet.info"));
     let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
     let interface_properties = interface_properties?;
-    interface::check_ring_ports(cx, p, ports);
+    let media_redundancy = p.media_redundancy.as_ref().is_some_and(|m| *m.get_ref());
+    let client = p.media_redundancy.as_ref().filter(|m| *m.get_ref());
+    interface::check_ring_ports(cx, client.map(Spanned::span), ports);
     let kinds = modules(cx, p, telegram);
     let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;
     let mut categories: Vec<Category> = Vec::new();
@@ -94,9 +97,7 @@ pub fn lower(
             io::module((kind, layout), telegram, (mappings, &records), names)
         })
         .collect();
-    let mut ports: Vec<Port> = (1..=ports)
-        .map(|n| port(n, interface_properties.media_redundancy))
-        .collect();
+    let mut ports: Vec<Port> = (1..=ports).map(|n| port(n, media_redundancy)).collect();
     let idents = idents::apply(cx, &p.ident_numbers, &mut modules, &mut ports);
     {
         use crate::i18n::files as w;
@@ -121,7 +122,28 @@ pub fn lower(
     let value_items = records::value_items(mappings, &modules);
     let reading_plans = records::reading_plans(mappings, &modules);
     let fixed = records::fixed_values(mappings, &modules);
-    let (max_input_length, max_output_length) = io::max_lengths(&modules, ports.len());
+    // The PROFINET part's own info text, else the device's, else its name;
+    // after the draft notice while an identity is a placeholder.
+    let device_info = TextRef::new(
+        ids::DEVICE_INFO,
+        draft(
+            info.or_else(|| device.info.clone())
+                .unwrap_or_else(|| device.name.clone()),
+            (&p.vendor_id, &p.device_id),
+        ),
+    );
+    let first = daps::First {
+        idents: &idents,
+        name: p.name.as_ref().map_or_else(
+            || device.name.clone(),
+            |n| cx.text(n, None, "profinet.name"),
+        ),
+        info: device_info.clone(),
+        ports,
+        media_redundancy,
+        device,
+    };
+    let daps = daps::lower(cx, p, first, &modules);
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -135,23 +157,7 @@ pub fn lower(
         vendor_id_placeholder: p.vendor_id.get_ref().placeholder,
         device_id: cx.spanned_in_range(&p.device_id.get_ref().value, 1, 0xFFFF, "device_id")?,
         device_id_placeholder: p.device_id.get_ref().placeholder,
-        device_name: TextRef::new(
-            ids::DEVICE_NAME,
-            p.name.as_ref().map_or_else(
-                || device.name.clone(),
-                |n| cx.text(n, None, "profinet.name"),
-            ),
-        ),
-        // The PROFINET part's own info text, else the device's, else its
-        // name; after the draft notice while an identity is a placeholder.
-        device_info: TextRef::new(
-            ids::DEVICE_INFO,
-            draft(
-                info.or_else(|| device.info.clone())
-                    .unwrap_or_else(|| device.name.clone()),
-                (&p.vendor_id, &p.device_id),
-            ),
-        ),
+        device_info,
         dns_name: dns_name(cx, &p.dns_name),
         min_device_interval: cx.spanned_in_range(
             &p.min_device_interval,
@@ -159,14 +165,10 @@ pub fn lower(
             4096,
             "min_device_interval",
         )?,
-        max_input_length,
-        max_output_length,
         interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
         interface_ident: idents.interface,
-        dap_ident: idents.dap,
-        dap_submodule_ident: idents.dap_submodule,
         access_point_ident: idents.access_point,
-        ports,
+        daps: daps?,
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {

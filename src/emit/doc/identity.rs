@@ -5,7 +5,7 @@ use super::page::{code, text, Builder, Cell, Run};
 use super::{decision_kind, with_placeholder, Lang};
 use crate::i18n::{sheet as w, Phrase};
 use crate::ir::profibus::Profibus;
-use crate::ir::profinet::Profinet;
+use crate::ir::profinet::{Dap, Profinet};
 use crate::ir::{Decision, Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -180,14 +180,15 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
     );
 }
 
+/// The device's PROFINET parameters; with one device access point its
+/// ports and IO data too, else a table of the access points has them.
 fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     // MinDeviceInterval counts 31.25 us = 125/4 us: a binary fraction, so
     // the product is exact in an f64 and prints as 312.5, not truncated.
     let micros = f64::from(p.min_device_interval) * 31.25;
-    let rows = vec![
+    let mut rows = vec![
         (lang.t(w::GSDML_VERSION), code(p.gsdml_version.to_string())),
         (lang.t(w::NAME_OF_STATION), code(&p.dns_name)),
-        (lang.t(w::PORTS), text(p.ports.len().to_string())),
         (
             lang.t(w::MIN_DEVICE_INTERVAL),
             text(format!(
@@ -195,15 +196,70 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
                 p.min_device_interval, micros
             )),
         ),
-        (
-            lang.t(w::MAX_IO_DATA),
-            text(format!("{}, {}", p.max_input_length, p.max_output_length)),
-        ),
     ];
+    if let [dap] = p.daps.as_slice() {
+        rows.insert(2, (lang.t(w::PORTS), text(dap.ports.len().to_string())));
+        rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap)));
+    }
     doc.table(
         lang.t(w::PROFINET_DEVICE),
         &[lang.t(w::PARAMETER), lang.t(w::VALUE)],
         rows.into_iter().map(|(k, v)| vec![text(k), v]).collect(),
+    );
+    if p.daps.len() > 1 {
+        daps_table(doc, p, lang);
+    }
+}
+
+fn max_io_data(dap: &Dap) -> Vec<Run> {
+    text(format!(
+        "{}, {}",
+        dap.max_input_length, dap.max_output_length
+    ))
+}
+
+/// One row per device access point: what tells the versions of the card
+/// apart.
+fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
+    let rows = p
+        .daps
+        .iter()
+        .map(|dap| {
+            let modules = if dap.modules.len() == p.modules.len() {
+                lang.t(w::ALL_MODULES).to_string()
+            } else {
+                let names: Vec<&str> = dap
+                    .modules
+                    .iter()
+                    .map(|&i| lang.text(&p.modules[i].name.text))
+                    .collect();
+                names.join(", ")
+            };
+            vec![
+                text(lang.text(&dap.name.text)),
+                code(format!("0x{:08X}", dap.ident)),
+                dap.order_number.as_deref().map_or_else(Vec::new, code),
+                code(&dap.hardware_release),
+                code(&dap.software_release),
+                text(dap.ports.len().to_string()),
+                max_io_data(dap),
+                text(modules),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t(w::DEVICE_ACCESS_POINTS),
+        &[
+            lang.t(w::NAME),
+            "ModuleIdentNumber",
+            lang.t(w::ORDER_NUMBER),
+            lang.t(w::HARDWARE_RELEASE),
+            lang.t(w::SOFTWARE_RELEASE),
+            lang.t(w::PORTS),
+            lang.t(w::MAX_IO_DATA),
+            lang.t(w::MODULES),
+        ],
+        rows,
     );
 }
 

@@ -21,7 +21,7 @@ pub(crate) use mappings::Group;
 
 use super::bit_range;
 use crate::ir::profibus::{self, Profibus as IrProfibus};
-use crate::ir::profinet::{self, Profinet as IrProfinet};
+use crate::ir::profinet::{self, Dap, Profinet as IrProfinet};
 use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, ValueSet as IrValueSet, Word as IrWord};
 use serde::Serialize;
 
@@ -575,8 +575,8 @@ fn placeholder(is: bool, sentence: &str) -> &str {
 
 /// The device access point's ident number, and its submodule's.
 fn dap_idents(p: &IrProfinet) -> Consts {
-    let dap = Val::hex_u32(p.dap_ident);
-    if p.dap_submodule_ident == p.dap_ident {
+    let dap = Val::hex_u32(p.dap().ident);
+    if p.dap().submodule_ident == p.dap().ident {
         return Consts::one(
             Doc::plain(
                 "The module ident number of the device access point in slot 0, and of its \
@@ -597,9 +597,42 @@ fn dap_idents(p: &IrProfinet) -> Consts {
             Const::new(
                 &["dap", "submodule", "ident"],
                 Ty::U32,
-                Val::hex_u32(p.dap_submodule_ident),
+                Val::hex_u32(p.dap().submodule_ident),
             ),
         ],
+    }
+}
+
+/// What firmware of a device access point after the first gives the
+/// controller in place of the first's: its ident numbers, and its ports'
+/// count and ident numbers.
+fn later_dap(number: usize, dap: &Dap) -> Consts {
+    let tag = format!("dap{number}");
+    let mut items = vec![
+        Const::new(&[&tag, "ident"], Ty::U32, Val::hex_u32(dap.ident)),
+        Const::new(
+            &[&tag, "submodule", "ident"],
+            Ty::U32,
+            Val::hex_u32(dap.submodule_ident),
+        ),
+        Const::new(&[&tag, "ports"], Ty::U8, Val::Dec(dap.ports.len() as u64)),
+    ];
+    for (n, port) in (1u32..).zip(&dap.ports) {
+        let port_tag = format!("port{n}");
+        items.push(Const::new(
+            &[&tag, &port_tag, "ident"],
+            Ty::U32,
+            Val::hex_u32(port.ident),
+        ));
+    }
+    Consts {
+        doc: Doc::plain(format!(
+            "Device access point {number} (\"{}\"), in place of the first in slot 0: its \
+             module ident number, its submodule's, its ports and their submodule ident \
+             numbers.",
+            dap.name.text.en
+        )),
+        items,
     }
 }
 
@@ -607,7 +640,8 @@ fn dap_idents(p: &IrProfinet) -> Consts {
 /// are not their subslots (gsdc's numbering, which the subslots say).
 fn interface_idents(p: &IrProfinet) -> Option<Consts> {
     let by_subslot = p.interface_ident == u32::from(profinet::INTERFACE_SUBSLOT)
-        && p.ports
+        && p.dap()
+            .ports
             .iter()
             .all(|port| port.ident == u32::from(port.subslot));
     if by_subslot {
@@ -618,7 +652,7 @@ fn interface_idents(p: &IrProfinet) -> Option<Consts> {
         Ty::U32,
         Val::hex_u32(p.interface_ident),
     )];
-    for (n, port) in (1u32..).zip(&p.ports) {
+    for (n, port) in (1u32..).zip(&p.dap().ports) {
         let name = format!("port{n}");
         items.push(Const::new(
             &[name.as_str(), "ident"],
@@ -672,11 +706,12 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
                     Ty::U16,
                     Val::hex_u16(profinet::FIRST_PORT_SUBSLOT),
                 ),
-                Const::new(&["ports"], Ty::U8, Val::Dec(p.ports.len() as u64)),
+                Const::new(&["ports"], Ty::U8, Val::Dec(p.dap().ports.len() as u64)),
             ],
         },
     ];
     consts.extend(interface_idents(p));
+    consts.extend((2..).zip(&p.daps[1..]).map(|(n, dap)| later_dap(n, dap)));
     consts.extend([Consts::one(
         Doc::plain("The slot the I/O module is plugged into."),
         &["module", "slot"],

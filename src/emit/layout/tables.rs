@@ -431,10 +431,10 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ("vendor_id", hex(p.vendor_id, 4)),
             ("device_id", hex(p.device_id, 4)),
             ("dns_name", text(&p.dns_name)),
-            ("dap_ident", hex(p.dap_ident, 8)),
+            ("dap_ident", hex(p.dap().ident, 8)),
             (
                 "dap_submodule",
-                fixed(profinet::DAP_SUBSLOT, p.dap_submodule_ident),
+                fixed(profinet::DAP_SUBSLOT, p.dap().submodule_ident),
             ),
             (
                 "interface_submodule",
@@ -444,7 +444,8 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                 "ports",
                 Value::List(
                     Elem::Record("pn submodule"),
-                    p.ports
+                    p.dap()
+                        .ports
                         .iter()
                         .map(|port| fixed(port.subslot, port.ident))
                         .collect(),

@@ -6,7 +6,6 @@ use super::Checker;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{Module, Port, ACCESS_POINT_IDENT, DAP_IDENT, INTERFACE_SUBSLOT};
-use std::collections::BTreeMap;
 use toml::Spanned;
 
 /// The ident numbers of the device access point and its fixed submodules.
@@ -23,8 +22,7 @@ pub struct DapIdents {
 
 /// Puts the stated numbers on the modules and ports, and checks them:
 /// a key that names no module (E177), a port count other than `ports`
-/// (E178), an access point without a PROFIdrive module (E179), two modules
-/// (the DAP among them) of one ModuleIdentNumber (E176).
+/// (E178), an access point without a PROFIdrive module (E179).
 pub fn apply(
     cx: &mut Checker,
     given: &raw::IdentNumbers,
@@ -62,7 +60,7 @@ pub fn apply(
     }
     if let Some(list) = &given.ports {
         stated = true;
-        port_idents(cx, list, ports);
+        port_idents(cx, (list, "profinet.ports"), ports);
     } else {
         numbered_by_gsdc |= !ports.is_empty();
     }
@@ -80,7 +78,6 @@ pub fn apply(
     }
     stated |= access_point.is_some() || given.dap_submodule.is_some();
     let dap = dap.unwrap_or(DAP_IDENT);
-    unique_module_idents(cx, given, dap, modules);
     DapIdents {
         dap,
         dap_submodule: value(&given.dap_submodule).unwrap_or(dap),
@@ -127,8 +124,12 @@ fn for_module(
     }
 }
 
-/// One ident number per port (E178 otherwise).
-fn port_idents(cx: &mut Checker, list: &Spanned<Vec<Spanned<u32>>>, ports: &mut [Port]) {
+/// One ident number per port (E178 otherwise); whether there was one each.
+pub(super) fn port_idents(
+    cx: &mut Checker,
+    (list, ports_key): (&Spanned<Vec<Spanned<u32>>>, &str),
+    ports: &mut [Port],
+) -> bool {
     if list.get_ref().len() != ports.len() {
         cx.push(
             Diagnostic::error(
@@ -141,43 +142,14 @@ fn port_idents(cx: &mut Checker, list: &Spanned<Vec<Spanned<u32>>>, ports: &mut 
             )
             .at(list.span())
             .label("one per port")
-            .help("give one SubmoduleIdentNumber for each port of profinet.ports, in port order"),
+            .help(format!(
+                "give one SubmoduleIdentNumber for each port of {ports_key}, in port order"
+            )),
         );
-        return;
+        return false;
     }
     for (port, n) in ports.iter_mut().zip(list.get_ref()) {
         port.ident = *n.get_ref();
     }
-}
-
-/// E176: a controller tells modules apart by their ModuleIdentNumber, the
-/// device access point's among them.
-fn unique_module_idents(cx: &mut Checker, given: &raw::IdentNumbers, dap: u32, modules: &[Module]) {
-    let mut seen: BTreeMap<u32, String> = BTreeMap::new();
-    seen.insert(dap, "the device access point".into());
-    for m in modules {
-        let name = m.ident.snake();
-        if let Some(first) = seen.get(&m.ident_number) {
-            let at = given
-                .modules
-                .iter()
-                .find(|(k, _)| *k.get_ref() == name)
-                .map(|(_, v)| v.span())
-                .or_else(|| given.dap.as_ref().map(Spanned::span));
-            cx.push(
-                Diagnostic::error(
-                    "E176",
-                    format!(
-                        "module `{name}` and {first} have ident number 0x{:08X}",
-                        m.ident_number
-                    ),
-                )
-                .at_opt(at)
-                .label("ident number given twice")
-                .help("a controller tells modules apart by their ModuleIdentNumber: give each module, and the device access point, its own"),
-            );
-        } else {
-            seen.insert(m.ident_number, format!("module `{name}`"));
-        }
-    }
+    true
 }

@@ -10,6 +10,7 @@ use crate::diag::Diagnostic;
 use crate::ir::profinet::{ConformanceClass, InterfaceProperties, NetloadClass};
 use crate::lower::checks::Checker;
 use std::collections::BTreeSet;
+use std::ops::Range;
 use toml::Spanned;
 
 /// 1, 2 and 4 ms: what every commercial GSDML in the corpus offers (ABB
@@ -61,21 +62,21 @@ pub fn properties(cx: &mut Checker, p: &Spanned<raw::Profinet>) -> Option<Interf
         conformance_class,
         netload_class,
         writeable_im_records,
-        media_redundancy: p.media_redundancy.as_ref().is_some_and(|m| *m.get_ref()),
     })
 }
 
-/// E152: an MRP client has two ring ports.
-pub fn check_ring_ports(cx: &mut Checker, p: &raw::Profinet, ports: u8) {
-    let Some(mrp) = &p.media_redundancy else {
+/// E152: an MRP client has two ring ports. `client` is where the
+/// description makes the device access point one, when it does.
+pub fn check_ring_ports(cx: &mut Checker, client: Option<Range<usize>>, ports: u8) {
+    let Some(at) = client else {
         return;
     };
-    if *mrp.get_ref() && ports < 2 {
+    if ports < 2 {
         cx.push(
             Diagnostic::error("E152", "media redundancy needs two ports")
-                .at(mrp.span())
+                .at(at)
                 .label("MRP client")
-                .help("an MRP client closes the ring through two ports: set ports = 2, or drop media_redundancy"),
+                .help("an MRP client closes the ring through two ports: set ports = 2, or media_redundancy = false"),
         );
     }
 }

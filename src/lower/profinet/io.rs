@@ -289,9 +289,9 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 /// these is exactly what the checker needs (`tests/gsdml_reader.rs` holds
 /// the two to it); with at most 20 words in a module and 16 ports it stays
 /// far below the limit of 1440.
-pub fn max_lengths(modules: &[Module], ports: usize) -> (u16, u16) {
+pub fn max_lengths<'a>(modules: impl Iterator<Item = &'a Module>, ports: usize) -> (u16, u16) {
     let module = |m: &Module| m.layout.bytes() + 2 + u16::from(m.access_point.is_some());
-    let largest = modules.iter().map(module).max().unwrap_or(0);
+    let largest = modules.map(module).max().unwrap_or(0);
     let length = largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX);
     (length, length)
 }

@@ -1,0 +1,216 @@
+//! The device access points after the first, as `[[profinet.daps]]`: what
+//! each says that differs from the first, in the keys the description has
+//! for it. One that the format cannot say is left out (W600), with why.
+
+use super::{attribute, list, text, Recognised};
+use crate::device::pn::{Dap, Submodule, SubmoduleKind};
+use crate::device::Attribute;
+use crate::import::toml_out::TomlOut;
+use crate::import::Notes;
+
+/// What the description's device access points share: the first's value
+/// stands for every one (`[profinet]` states it once).
+const SHARED: &[&str] = &[
+    "PNIO_Version",
+    "MinDeviceInterval",
+    "DNS_CompatibleName",
+    "ModuleInfo/VendorName@Value",
+    "CertificationInfo@ConformanceClass",
+    "CertificationInfo@NetloadClass",
+];
+const SHARED_INTERFACE: &[&str] = &["ApplicationRelations/TimingProperties@SendClock"];
+
+/// A later device access point, as the description says it.
+pub(super) struct LaterDap<'a> {
+    pub dap: &'a Dap,
+    keys: Vec<(&'static str, String)>,
+}
+
+impl LaterDap<'_> {
+    pub fn write(&self, out: &mut TomlOut) {
+        out.array_item("profinet.daps");
+        for (key, value) in &self.keys {
+            out.key(key, value);
+        }
+    }
+}
+
+/// Each device access point after the first that the format can say;
+/// the others are left out (W600) with the reason.
+pub(super) fn later_daps<'a>(
+    first: &Dap,
+    others: &'a [Dap],
+    modules: &[Recognised],
+    notes: &mut Notes,
+) -> Vec<LaterDap<'a>> {
+    let mut taken: Vec<u32> = first.item.ident.into_iter().collect();
+    taken.extend(modules.iter().filter_map(|m| m.module.ident));
+    let mut later = Vec::new();
+    for dap in others {
+        match later_dap(first, dap, modules, &taken) {
+            Ok(keys) => {
+                taken.extend(dap.item.ident);
+                later.push(LaterDap { dap, keys });
+            }
+            Err(why) => notes.unsaid(
+                &format!("device access point `{}`", dap.item.id),
+                &dap.item.place,
+                &why,
+            ),
+        }
+    }
+    later
+}
+
+/// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.
+fn later_dap(
+    first: &Dap,
+    dap: &Dap,
+    modules: &[Recognised],
+    taken: &[u32],
+) -> Result<Vec<(&'static str, String)>, String> {
+    let ident = dap
+        .item
+        .ident
+        .filter(|&i| i != 0)
+        .ok_or("it has no ModuleIdentNumber the description can state")?;
+    if taken.contains(&ident) {
+        return Err(format!(
+            "its ModuleIdentNumber 0x{ident:08X} is another device access point's or module's, which the description's cannot share (E176)"
+        ));
+    }
+    shared_as_first(first, dap)?;
+    let hex = |n: u32| format!("0x{n:08X}");
+    let mut keys = vec![
+        ("name", text(&dap.item.name.clone().unwrap_or_default())),
+        ("ident", hex(ident)),
+    ];
+    let (info, first_info) = (dap.item.info.as_ref(), first.item.info.as_ref());
+    if let Some(info) = info.filter(|&i| Some(i) != first_info) {
+        keys.push(("info", text(info)));
+    }
+    let own_submodule = submodules(dap, SubmoduleKind::Virtual).next();
+    if let Some(s) = own_submodule.filter(|s| s.ident != Some(ident)) {
+        keys.push(("submodule_ident", hex(s.ident.unwrap_or(0))));
+    }
+    for (key, name) in [
+        ("order_number", "ModuleInfo/OrderNumber@Value"),
+        ("hardware_release", "ModuleInfo/HardwareRelease@Value"),
+        ("software_release", "ModuleInfo/SoftwareRelease@Value"),
+    ] {
+        let value = attribute(&dap.item.attributes, name);
+        if value != attribute(&first.item.attributes, name) {
+            // A later DAP without the value would take the first's.
+            let value = value.ok_or(format!("it has no {key}, which the first has"))?;
+            keys.push((key, super::quote(value)));
+        }
+    }
+    keys.extend(ports(first, dap));
+    let mrp = |d: &Dap| {
+        let interface = submodules(d, SubmoduleKind::Interface).next();
+        interface
+            .is_some_and(|s| attribute(&s.attributes, "MediaRedundancy@SupportedRole").is_some())
+    };
+    if mrp(dap) != mrp(first) {
+        keys.push(("media_redundancy", mrp(dap).to_string()));
+    }
+    keys.extend(offered(first, dap, modules)?);
+    Ok(keys)
+}
+
+/// Err when `dap` differs from the first in what the description's
+/// device access points share.
+fn shared_as_first(first: &Dap, dap: &Dap) -> Result<(), String> {
+    let interface = |d: &Dap| -> Vec<Attribute> {
+        submodules(d, SubmoduleKind::Interface)
+            .flat_map(|s| s.attributes.clone())
+            .collect()
+    };
+    let pairs = [
+        (
+            SHARED,
+            first.item.attributes.clone(),
+            dap.item.attributes.clone(),
+        ),
+        (SHARED_INTERFACE, interface(first), interface(dap)),
+    ];
+    for (names, a, b) in &pairs {
+        for name in names.iter() {
+            if attribute(a, name) != attribute(b, name) {
+                return Err(format!(
+                    "its {name} is not the first device access point's, and the description's share it"
+                ));
+            }
+        }
+    }
+    let interface_ident = |d: &Dap| {
+        submodules(d, SubmoduleKind::Interface)
+            .next()
+            .and_then(|s| s.ident)
+    };
+    if interface_ident(first) != interface_ident(dap) {
+        return Err(
+            "its interface's SubmoduleIdentNumber is not the first device access point's, and the description's share it".into(),
+        );
+    }
+    let im = |d: &Dap| {
+        submodules(d, SubmoduleKind::Virtual)
+            .next()
+            .and_then(|s| attribute(&s.attributes, "Writeable_IM_Records"))
+            .map(str::to_string)
+    };
+    if im(first) != im(dap) {
+        return Err("its Writeable_IM_Records are not the first device access point's, and the description's share them".into());
+    }
+    Ok(())
+}
+
+/// `ports` and `port_idents`, where they are not what the first DAP's
+/// would give.
+fn ports(first: &Dap, dap: &Dap) -> Vec<(&'static str, String)> {
+    let idents = |d: &Dap| -> Vec<u32> {
+        submodules(d, SubmoduleKind::Port)
+            .map(|s| s.ident.unwrap_or(0))
+            .collect()
+    };
+    let (mine, firsts) = (idents(dap), idents(first));
+    let mut keys = Vec::new();
+    if mine.len() != firsts.len() {
+        keys.push(("ports", mine.len().to_string()));
+    }
+    if !firsts.starts_with(&mine) {
+        keys.push((
+            "port_idents",
+            list(mine.iter().map(|n| format!("0x{n:08X}"))),
+        ));
+    }
+    keys
+}
+
+/// `modules`, when the DAP offers fewer than the first; Err when it
+/// offers one the first does not. A module the first offers but the
+/// import leaves out is left out with its reason, here too.
+fn offered(
+    first: &Dap,
+    dap: &Dap,
+    modules: &[Recognised],
+) -> Result<Option<(&'static str, String)>, String> {
+    let mut names = Vec::new();
+    for r in &dap.useable_modules {
+        match modules.iter().find(|m| m.module.id == r.target) {
+            Some(m) => names.push(super::quote(&m.code_name())),
+            None if first.useable_modules.iter().any(|f| f.target == r.target) => {}
+            None => {
+                return Err(format!(
+                    "it offers module `{}`, which the first device access point does not (the description's first offers every module)",
+                    r.target
+                ))
+            }
+        }
+    }
+    Ok((names.len() != modules.len()).then(|| ("modules", list(names))))
+}
+
+fn submodules(dap: &Dap, kind: SubmoduleKind) -> impl Iterator<Item = &Submodule> {
+    dap.item.submodules.iter().filter(move |s| s.kind == kind)
+}

@@ -1,0 +1,286 @@
+//! The device access points: `[profinet]`'s, then each of
+//! `[[profinet.daps]]`, another hardware or firmware version of the card
+//! in the same file. A later DAP states what differs from the first (its
+//! ident number and name above all); what it leaves out is the first's.
+
+use super::{idents::DapIdents, interface, io, port, Checker};
+use crate::description as raw;
+use crate::diag::Diagnostic;
+use crate::ir::profinet::{Dap, Module, Port, TextRef};
+use crate::ir::{Device, Text};
+use std::collections::BTreeMap;
+use toml::Spanned;
+
+/// What the first DAP is: `[profinet]` and `[device]` say it.
+pub struct First<'a> {
+    pub idents: &'a DapIdents,
+    pub name: Text,
+    pub info: TextRef,
+    pub ports: Vec<Port>,
+    pub media_redundancy: bool,
+    pub device: &'a Device,
+}
+
+/// Every DAP, the first first; E176 when two of them, or a DAP and a
+/// module, share a ModuleIdentNumber.
+pub fn lower(
+    cx: &mut Checker,
+    p: &raw::Profinet,
+    first: First,
+    modules: &[Module],
+) -> Option<Vec<Dap>> {
+    let all_modules: Vec<usize> = (0..modules.len()).collect();
+    let (max_input_length, max_output_length) = io::max_lengths(modules.iter(), first.ports.len());
+    let device = first.device;
+    let mut daps = vec![Dap {
+        id: "IDD_DAP".into(),
+        submodule_id: "IDS_DAP".into(),
+        interface_id: "IDS_INTERFACE".into(),
+        ident: first.idents.dap,
+        submodule_ident: first.idents.dap_submodule,
+        name: TextRef::new(super::ids::DEVICE_NAME, first.name),
+        info: first.info,
+        order_number: device.order_number.clone(),
+        hardware_release: device.hardware_release.clone(),
+        software_release: device.software_release.clone(),
+        ports: first.ports,
+        media_redundancy: first.media_redundancy,
+        modules: all_modules,
+        max_input_length,
+        max_output_length,
+    }];
+    let mut complete = true;
+    for (number, given) in (2u8..).zip(&p.daps) {
+        match later(cx, (number, given.get_ref()), &daps[0], modules) {
+            Some(dap) => daps.push(dap),
+            None => complete = false,
+        }
+    }
+    unique_idents(cx, p, &daps, modules);
+    complete.then_some(daps)
+}
+
+/// DAP `number` (2 and on), from what it states and the first DAP.
+fn later(
+    cx: &mut Checker,
+    (number, given): (u8, &raw::Dap),
+    first: &Dap,
+    modules: &[Module],
+) -> Option<Dap> {
+    let what = |key: &str| format!("profinet.daps[{}].{key}", number - 2);
+    let ident = cx.spanned_in_range(&given.ident, 1, u32::MAX.into(), "a module ident number");
+    let name = cx.text(&given.name, None, &what("name"));
+    let info = given.info.as_ref().map_or_else(
+        || first.info.clone(),
+        |i| {
+            TextRef::new(
+                format!("IDT_DAP_{number}_INFO"),
+                cx.text(i, None, &what("info")),
+            )
+        },
+    );
+    let own = |cx: &mut Checker, s: &Option<Spanned<String>>, key: &str, inherited: &String| {
+        s.as_ref()
+            .map_or_else(|| inherited.clone(), |s| cx.required(s, &what(key)))
+    };
+    let hardware_release = own(
+        cx,
+        &given.hardware_release,
+        "hardware_release",
+        &first.hardware_release,
+    );
+    let software_release = own(
+        cx,
+        &given.software_release,
+        "software_release",
+        &first.software_release,
+    );
+    let order_number = match &given.order_number {
+        Some(o) => Some(cx.required(o, &what("order_number"))),
+        None => first.order_number.clone(),
+    };
+    let port_count = match &given.ports {
+        Some(n) => cx.spanned_in_range(n, 1, 16, &what("ports"))?,
+        None => u8::try_from(first.ports.len()).ok()?,
+    };
+    let media_redundancy = given
+        .media_redundancy
+        .as_ref()
+        .map_or(first.media_redundancy, |m| *m.get_ref());
+    // An MRP client stated here, or the first's on the ports stated here.
+    let client = match (&given.media_redundancy, &given.ports) {
+        (Some(m), _) => m.get_ref().then(|| m.span()),
+        (None, ports) => ports
+            .as_ref()
+            .filter(|_| media_redundancy)
+            .map(Spanned::span),
+    };
+    interface::check_ring_ports(cx, client, port_count);
+    let ports = ports(cx, (number, port_count, media_redundancy), given, first)?;
+    let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
+    let (max_input_length, max_output_length) =
+        io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
+    let ident = ident?;
+    Some(Dap {
+        id: format!("IDD_DAP_{number}"),
+        submodule_id: format!("IDS_DAP_{number}"),
+        interface_id: format!("IDS_INTERFACE_{number}"),
+        ident,
+        submodule_ident: given
+            .submodule_ident
+            .as_ref()
+            .map_or(ident, |s| *s.get_ref()),
+        name: TextRef::new(format!("IDT_DAP_{number}_NAME"), name),
+        info,
+        order_number,
+        hardware_release,
+        software_release,
+        ports,
+        media_redundancy,
+        modules: offered,
+        max_input_length,
+        max_output_length,
+    })
+}
+
+/// The ports of DAP `number`, with their ident numbers: those `port_idents`
+/// states, else the first DAP's port of the same number, else (where the
+/// first DAP's ports are numbered by their subslots, gsdc's numbering) the
+/// port's subslot. E178 when neither says a port's number.
+fn ports(
+    cx: &mut Checker,
+    (number, count, media_redundancy): (u8, u8, bool),
+    given: &raw::Dap,
+    first: &Dap,
+) -> Option<Vec<Port>> {
+    let mut ports: Vec<Port> = (1..=count)
+        .map(|n| Port {
+            id: format!("IDS_DAP_{number}_PORT_{n}"),
+            ..port(n, media_redundancy)
+        })
+        .collect();
+    if let Some(list) = &given.port_idents {
+        let key = format!("profinet.daps[{}].ports", number - 2);
+        return super::idents::port_idents(cx, (list, &key), &mut ports).then_some(ports);
+    }
+    let by_subslot = first.ports.iter().all(|p| p.ident == u32::from(p.subslot));
+    for (i, port) in ports.iter_mut().enumerate() {
+        match first.ports.get(i) {
+            Some(same) => port.ident = same.ident,
+            None if by_subslot => {}
+            None => {
+                let at = given.ports.as_ref().map(Spanned::span);
+                cx.push(
+                    Diagnostic::error(
+                        "E178",
+                        format!("no ident number for port {} of device access point {number}", i + 1),
+                    )
+                    .at_opt(at)
+                    .label("more ports than the first device access point")
+                    .help("the first device access point's ports have ident numbers of their own: give this one's as port_idents = [...], one per port"),
+                );
+                return None;
+            }
+        }
+    }
+    Some(ports)
+}
+
+/// The modules a later DAP offers, as indexes in module order: all of
+/// them when it does not say. E183 for a name that is no module's, a
+/// module named twice, or an empty list.
+fn offered_modules(
+    cx: &mut Checker,
+    given: Option<&Spanned<Vec<Spanned<String>>>>,
+    modules: &[Module],
+) -> Option<Vec<usize>> {
+    let Some(list) = given else {
+        return Some((0..modules.len()).collect());
+    };
+    let names: Vec<String> = modules.iter().map(|m| m.ident.snake()).collect();
+    let mut offered = Vec::new();
+    for name in list.get_ref() {
+        let problem = match names.iter().position(|n| n == name.get_ref()) {
+            None => "not a module of this description",
+            Some(i) if offered.contains(&i) => "named twice",
+            Some(i) => {
+                offered.push(i);
+                continue;
+            }
+        };
+        cx.push(
+            Diagnostic::error("E183", format!("`{}`: {problem}", name.get_ref()))
+                .at(name.span())
+                .label(problem)
+                .help(format!(
+                    "list each module the device access point offers once, named as in the generated code: {}",
+                    names.join(", ")
+                )),
+        );
+        return None;
+    }
+    if offered.is_empty() {
+        cx.push(
+            Diagnostic::error("E183", "a device access point that offers no module")
+                .at(list.span())
+                .label("empty")
+                .help("name the modules it offers, or leave `modules` out for all of them"),
+        );
+        return None;
+    }
+    offered.sort_unstable();
+    Some(offered)
+}
+
+/// E176: a controller tells the device access points and the modules
+/// apart by their ModuleIdentNumber.
+fn unique_idents(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap], modules: &[Module]) {
+    let given = &p.ident_numbers;
+    let dap_span = |i: usize| match i {
+        0 => given.dap.as_ref().map(Spanned::span),
+        n => p.daps.get(n - 1).map(|d| d.get_ref().ident.span()),
+    };
+    let module_span = |name: &str| {
+        given
+            .modules
+            .iter()
+            .find(|(k, _)| *k.get_ref() == name)
+            .map(|(_, v)| v.span())
+    };
+    // In the order the description states them: the first DAP's and the
+    // modules' under [profinet.ident_numbers], then the later DAPs'.
+    let dap = |i: usize| (daps[i].ident, dap_name(i), dap_span(i));
+    let numbered = std::iter::once(dap(0))
+        .chain(modules.iter().map(|m| {
+            let name = m.ident.snake();
+            (
+                m.ident_number,
+                format!("module `{name}`"),
+                module_span(&name),
+            )
+        }))
+        .chain((1..daps.len()).map(dap));
+    let mut seen: BTreeMap<u32, (String, Option<std::ops::Range<usize>>)> = BTreeMap::new();
+    for (ident, name, at) in numbered {
+        let Some((first, first_at)) = seen.get(&ident) else {
+            seen.insert(ident, (name, at));
+            continue;
+        };
+        cx.push(
+            Diagnostic::error(
+                "E176",
+                format!("{name} and {first} have ident number 0x{ident:08X}"),
+            )
+            .at_opt(at.or_else(|| first_at.clone()))
+            .label("ident number given twice")
+            .help("a controller tells modules apart by their ModuleIdentNumber: give each module, and each device access point, its own"),
+        );
+    }
+}
+
+fn dap_name(index: usize) -> String {
+    match index {
+        0 => "the device access point".into(),
+        n => format!("device access point {}", n + 1),
+    }
+}

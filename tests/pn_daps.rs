@@ -1,0 +1,149 @@
+//! Device access points after the first (`[[profinet.daps]]`): what each
+//! states, what it takes from the first, and what the rules refuse, each at
+//! its line and column. The fixture own_idents.toml has two; its GSDML,
+//! layouts and datasheet are reviewed snapshots (tests/outputs.rs), its
+//! GSDML is validated against PI's schema (tests/xsd.rs) and imported back
+//! (tests/import.rs).
+
+use crate::support::descriptions;
+
+const FIXTURES: &str = "tests/fixtures/valid";
+const NAME: &str = "own_idents.toml";
+
+fn text() -> String {
+    std::fs::read_to_string(crate::support::checkout(&format!("{FIXTURES}/{NAME}"))).unwrap()
+}
+
+/// The fixture with its `[[profinet.daps]]` replaced by `daps`.
+fn with_daps(daps: &str) -> String {
+    let text = text();
+    let start = text.find("[[profinet.daps]]").unwrap();
+    format!("{}{daps}", &text[..start])
+}
+
+fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
+    let (ir, diagnostics) = descriptions::load_text(NAME, text);
+    assert!(ir.is_none(), "built");
+    diagnostics
+        .errors()
+        .map(|d| {
+            let (line, column) = gsdc::line_col(text, d.span.clone().unwrap().start);
+            (d.code, line, column)
+        })
+        .collect()
+}
+
+/// Line and column of the last `needle` in `text`.
+fn place(text: &str, needle: &str) -> (usize, usize) {
+    gsdc::line_col(text, text.rfind(needle).unwrap())
+}
+
+#[test]
+fn a_later_dap_states_what_differs_and_takes_the_rest_from_the_first() {
+    let ir = descriptions::load_from(FIXTURES, NAME);
+    let p = ir.profinet.as_ref().unwrap();
+    let [first, one_port, third] = p.daps.as_slice() else {
+        panic!("three device access points: {:?}", p.daps.len());
+    };
+    assert_eq!(
+        (first.id.as_str(), first.ident, first.submodule_ident),
+        ("IDD_DAP", 0x100, 0x101)
+    );
+    assert_eq!(first.modules, [0, 1]);
+    // Stated: ident, name, order number, hardware release, one port, no
+    // MRP. Taken from the first: software release, info text, the port's
+    // ident number, every module; its submodule is numbered as it is.
+    assert_eq!(
+        (
+            one_port.id.as_str(),
+            one_port.ident,
+            one_port.submodule_ident
+        ),
+        ("IDD_DAP_2", 0x200, 0x200)
+    );
+    assert_eq!(one_port.order_number.as_deref(), Some("X4-PN-1P"));
+    assert_eq!(
+        (
+            one_port.hardware_release.as_str(),
+            one_port.software_release.as_str()
+        ),
+        ("V2", "V1")
+    );
+    assert_eq!(one_port.info, first.info);
+    assert_eq!(one_port.ports.len(), 1);
+    assert_eq!(one_port.ports[0].ident, first.ports[0].ident);
+    assert!(!one_port.media_redundancy && !one_port.ports[0].default_ringport);
+    assert_eq!(one_port.modules, first.modules);
+    // A port less is its IOPS and IOCS less in each CR.
+    assert_eq!(one_port.max_input_length + 1, first.max_input_length);
+    // The third offers standard telegram 1 alone, with its own submodule
+    // number and info text, and the first's MRP on two ports.
+    assert_eq!((third.ident, third.submodule_ident), (0x300, 0x301));
+    assert_eq!(third.order_number, None);
+    assert_ne!(third.info.id, first.info.id);
+    let names: Vec<String> = third
+        .modules
+        .iter()
+        .map(|&i| p.modules[i].ident.snake())
+        .collect();
+    assert_eq!(names, ["telegram1"]);
+    assert!(third.media_redundancy && third.ports.iter().all(|port| port.default_ringport));
+}
+
+#[test]
+fn a_dap_sharing_an_ident_number_is_refused_at_it() {
+    let text = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x00001001\n");
+    let at = place(&text, "0x00001001");
+    assert_eq!(errors(&text), [("E176", at.0, at.1)]);
+    let twice = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\n");
+    let at = place(&twice, "0x200");
+    assert_eq!(errors(&twice), [("E176", at.0, at.1)]);
+}
+
+/// The first DAP's ports have ident numbers of their own: a third port's
+/// is not guessed.
+#[test]
+fn more_ports_than_the_first_need_their_ident_numbers() {
+    let text = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\n");
+    let at = place(&text, "3\n");
+    assert_eq!(errors(&text), [("E178", at.0, at.1)]);
+    let stated = with_daps(
+        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\nport_idents = [1, 2, 3]\n",
+    );
+    let (ir, diagnostics) = descriptions::load_text(NAME, &stated);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let idents: Vec<u32> = ir.profinet.unwrap().daps[1]
+        .ports
+        .iter()
+        .map(|p| p.ident)
+        .collect();
+    assert_eq!(idents, [1, 2, 3]);
+    let short = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nport_idents = [1]\n");
+    let at = place(&short, "[1]");
+    assert_eq!(errors(&short), [("E178", at.0, at.1)]);
+}
+
+/// Stated, or the first's taken over on one port.
+#[test]
+fn a_dap_with_mrp_on_one_port_is_refused() {
+    let stated = with_daps(
+        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\nmedia_redundancy = true\n",
+    );
+    let at = place(&stated, "true");
+    assert_eq!(errors(&stated), [("E152", at.0, at.1)]);
+    let inherited = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\n");
+    let at = place(&inherited, "1\n");
+    assert_eq!(errors(&inherited), [("E152", at.0, at.1)]);
+}
+
+#[test]
+fn a_dap_names_each_module_once() {
+    let twice = with_daps(
+        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = [\"pzd1\", \"pzd1\"]\n",
+    );
+    let at = place(&twice, "\"pzd1\"");
+    assert_eq!(errors(&twice), [("E183", at.0, at.1)]);
+    let none = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = []\n");
+    let at = place(&none, "[]");
+    assert_eq!(errors(&none), [("E183", at.0, at.1)]);
+}
