@@ -147,3 +147,46 @@ fn a_dap_names_each_module_once() {
     let at = place(&none, "[]");
     assert_eq!(errors(&none), [("E183", at.0, at.1)]);
 }
+
+/// A DAP that does not lower does not shift the names and places of the
+/// ones after it.
+#[test]
+fn a_shared_ident_is_reported_at_its_own_entry_after_a_refused_one() {
+    let text = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 0\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x00001001\n");
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
+    assert!(ir.is_none());
+    let shared = diagnostics
+        .errors()
+        .find(|d| d.code == "E176")
+        .expect("E176");
+    assert_eq!(
+        gsdc::line_col(&text, shared.span.clone().unwrap().start),
+        place(&text, "0x00001001")
+    );
+    assert!(
+        shared
+            .message
+            .starts_with("device access point 3 (profinet.daps[1]) and module `pzd1`"),
+        "{}",
+        shared.message
+    );
+}
+
+/// While an identity is a placeholder, a later DAP's own info text says
+/// so, as the first's does: the catalog shows each.
+#[test]
+fn a_later_daps_own_info_carries_the_draft_notice() {
+    let text = text().replace(
+        "vendor_id = { value = 0x1234 }",
+        "vendor_id = { value = 0x1234, placeholder = true }",
+    );
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let p = ir.profinet.unwrap();
+    let own = &p.daps[2].info.text.en;
+    assert!(
+        own.contains("VendorID 0x1234") && own.ends_with("standard telegram 1 alone."),
+        "{own}"
+    );
+    assert!(p.daps[0].info.text.en.contains("VendorID 0x1234"));
+}

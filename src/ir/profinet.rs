@@ -16,8 +16,8 @@ pub struct Profinet {
     pub vendor_id_placeholder: bool,
     pub device_id: u16,
     pub device_id_placeholder: bool,
-    /// The device's info text, as DeviceIdentity shows it (and the first
-    /// access point, unless it has its own).
+    /// The device's info text, as DeviceIdentity shows it: the first
+    /// device access point's too, and a later one's that states none.
     pub device_info: TextRef,
     /// DNS_CompatibleName: the default name of station.
     pub dns_name: String,
@@ -277,6 +277,13 @@ pub struct Port {
     pub text: TextRef,
     /// One of the two ring ports an MRP client starts with.
     pub default_ringport: bool,
+}
+
+impl Port {
+    /// Whether its ident number is its subslot: gsdc's numbering.
+    pub fn numbered_by_subslot(&self) -> bool {
+        self.ident == u32::from(self.subslot)
+    }
 }
 
 /// A CategoryItem of the hardware catalog.

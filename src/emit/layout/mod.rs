@@ -643,7 +643,7 @@ fn interface_idents(p: &IrProfinet) -> Option<Consts> {
         && p.dap()
             .ports
             .iter()
-            .all(|port| port.ident == u32::from(port.subslot));
+            .all(profinet::Port::numbered_by_subslot);
     if by_subslot {
         return None;
     }

@@ -11,6 +11,9 @@ use crate::import::Notes;
 /// What the description's device access points share: the first's value
 /// stands for every one (`[profinet]` states it once).
 const SHARED: &[&str] = &[
+    // The device symbol: the description has one, for every DAP.
+    crate::import::symbol::GSDML_SYMBOL_TYPE,
+    crate::import::symbol::GSDML_SYMBOL_TARGET,
     "PNIO_Version",
     "MinDeviceInterval",
     "DNS_CompatibleName",
@@ -198,7 +201,12 @@ fn offered(
     let mut names = Vec::new();
     for r in &dap.useable_modules {
         match modules.iter().find(|m| m.module.id == r.target) {
-            Some(m) => names.push(super::quote(&m.code_name())),
+            Some(m) => {
+                let name = super::quote(&m.code_name());
+                if !names.contains(&name) {
+                    names.push(name);
+                }
+            }
             None if first.useable_modules.iter().any(|f| f.target == r.target) => {}
             None => {
                 return Err(format!(
@@ -207,6 +215,9 @@ fn offered(
                 ))
             }
         }
+    }
+    if names.is_empty() {
+        return Err("it offers none of the modules the import takes".into());
     }
     Ok((names.len() != modules.len()).then(|| ("modules", list(names))))
 }

@@ -50,32 +50,37 @@ pub fn lower(
         max_output_length,
     }];
     let mut complete = true;
-    for (number, given) in (2u8..).zip(&p.daps) {
-        match later(cx, (number, given.get_ref()), &daps[0], modules) {
+    for (index, given) in p.daps.iter().enumerate() {
+        match later(cx, (index, given.get_ref()), p, &daps[0], modules) {
             Some(dap) => daps.push(dap),
             None => complete = false,
         }
     }
-    unique_idents(cx, p, &daps, modules);
+    unique_idents(cx, p, daps[0].ident, modules);
     complete.then_some(daps)
 }
 
-/// DAP `number` (2 and on), from what it states and the first DAP.
+/// The DAP of `profinet.daps[index]`, number `index + 2` in the file.
 fn later(
     cx: &mut Checker,
-    (number, given): (u8, &raw::Dap),
+    (index, given): (usize, &raw::Dap),
+    p: &raw::Profinet,
     first: &Dap,
     modules: &[Module],
 ) -> Option<Dap> {
-    let what = |key: &str| format!("profinet.daps[{}].{key}", number - 2);
-    let ident = cx.spanned_in_range(&given.ident, 1, u32::MAX.into(), "a module ident number");
+    let number = index + 2;
+    let what = |key: &str| format!("profinet.daps[{index}].{key}");
+    let ident = cx.spanned_in_range(&given.ident, 1, u32::MAX.into(), &what("ident"));
     let name = cx.text(&given.name, None, &what("name"));
+    // Its own info text after the draft notice, as the first DAP's: the
+    // engineering tool's catalog shows each DAP's.
     let info = given.info.as_ref().map_or_else(
         || first.info.clone(),
         |i| {
+            let text = cx.text(i, None, &what("info"));
             TextRef::new(
                 format!("IDT_DAP_{number}_INFO"),
-                cx.text(i, None, &what("info")),
+                super::draft(text, (&p.vendor_id, &p.device_id)),
             )
         },
     );
@@ -116,7 +121,7 @@ fn later(
             .map(Spanned::span),
     };
     interface::check_ring_ports(cx, client, port_count);
-    let ports = ports(cx, (number, port_count, media_redundancy), given, first)?;
+    let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
     let (max_input_length, max_output_length) =
         io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
@@ -149,10 +154,11 @@ fn later(
 /// port's subslot. E178 when neither says a port's number.
 fn ports(
     cx: &mut Checker,
-    (number, count, media_redundancy): (u8, u8, bool),
+    (index, count, media_redundancy): (usize, u8, bool),
     given: &raw::Dap,
     first: &Dap,
 ) -> Option<Vec<Port>> {
+    let number = index + 2;
     let mut ports: Vec<Port> = (1..=count)
         .map(|n| Port {
             id: format!("IDS_DAP_{number}_PORT_{n}"),
@@ -160,10 +166,10 @@ fn ports(
         })
         .collect();
     if let Some(list) = &given.port_idents {
-        let key = format!("profinet.daps[{}].ports", number - 2);
+        let key = format!("the ports of profinet.daps[{index}]");
         return super::idents::port_idents(cx, (list, &key), &mut ports).then_some(ports);
     }
-    let by_subslot = first.ports.iter().all(|p| p.ident == u32::from(p.subslot));
+    let by_subslot = first.ports.iter().all(Port::numbered_by_subslot);
     for (i, port) in ports.iter_mut().enumerate() {
         match first.ports.get(i) {
             Some(same) => port.ident = same.ident,
@@ -173,7 +179,7 @@ fn ports(
                 cx.push(
                     Diagnostic::error(
                         "E178",
-                        format!("no ident number for port {} of device access point {number}", i + 1),
+                        format!("no ident number for port {} of device access point {number} (profinet.daps[{index}])", i + 1),
                     )
                     .at_opt(at)
                     .label("more ports than the first device access point")
@@ -233,13 +239,12 @@ fn offered_modules(
 }
 
 /// E176: a controller tells the device access points and the modules
-/// apart by their ModuleIdentNumber.
-fn unique_idents(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap], modules: &[Module]) {
+/// apart by their ModuleIdentNumber. Checked in the order the description
+/// states them (the first DAP's and the modules' under
+/// `[profinet.ident_numbers]`, then each `[[profinet.daps]]` entry's, even
+/// one that did not lower), each reported at the later of the two.
+fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules: &[Module]) {
     let given = &p.ident_numbers;
-    let dap_span = |i: usize| match i {
-        0 => given.dap.as_ref().map(Spanned::span),
-        n => p.daps.get(n - 1).map(|d| d.get_ref().ident.span()),
-    };
     let module_span = |name: &str| {
         given
             .modules
@@ -247,10 +252,12 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap], modules: &[M
             .find(|(k, _)| *k.get_ref() == name)
             .map(|(_, v)| v.span())
     };
-    // In the order the description states them: the first DAP's and the
-    // modules' under [profinet.ident_numbers], then the later DAPs'.
-    let dap = |i: usize| (daps[i].ident, dap_name(i), dap_span(i));
-    let numbered = std::iter::once(dap(0))
+    let first = (
+        first_ident,
+        "the device access point".to_string(),
+        given.dap.as_ref().map(Spanned::span),
+    );
+    let numbered = std::iter::once(first)
         .chain(modules.iter().map(|m| {
             let name = m.ident.snake();
             (
@@ -259,7 +266,14 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap], modules: &[M
                 module_span(&name),
             )
         }))
-        .chain((1..daps.len()).map(dap));
+        .chain(p.daps.iter().enumerate().map(|(index, d)| {
+            let ident = &d.get_ref().ident;
+            (
+                *ident.get_ref(),
+                format!("device access point {} (profinet.daps[{index}])", index + 2),
+                Some(ident.span()),
+            )
+        }));
     let mut seen: BTreeMap<u32, (String, Option<std::ops::Range<usize>>)> = BTreeMap::new();
     for (ident, name, at) in numbered {
         let Some((first, first_at)) = seen.get(&ident) else {
@@ -275,12 +289,5 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap], modules: &[M
             .label("ident number given twice")
             .help("a controller tells modules apart by their ModuleIdentNumber: give each module, and each device access point, its own"),
         );
-    }
-}
-
-fn dap_name(index: usize) -> String {
-    match index {
-        0 => "the device access point".into(),
-        n => format!("device access point {}", n + 1),
     }
 }

@@ -4,8 +4,8 @@
 use crate::ir::profinet::ModuleKind;
 use crate::ir::{Layout, MappingKind, MappingSet};
 
-/// TextIds of the device's name and description, shared by DeviceIdentity,
-/// the DAP and its submodule.
+/// TextIds of the first DAP's name (its submodule's too) and of the
+/// device's description, which DeviceIdentity and the first DAP share.
 pub const DEVICE_NAME: &str = "IDT_DEVICE_NAME";
 pub const DEVICE_INFO: &str = "IDT_DEVICE_INFO";
 pub const INTERFACE_TEXT: &str = "IDT_INTERFACE";
