@@ -66,15 +66,7 @@ fn default_totals(g: &Gateway) -> (usize, usize) {
 
 /// The codes of `text`'s errors, each with its line and column.
 fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
-    let (ir, diagnostics) = descriptions::load_text(NAME, text);
-    assert!(ir.is_none());
-    diagnostics
-        .errors()
-        .map(|d| {
-            let (line, column) = gsdc::line_col(text, d.span.clone().unwrap().start);
-            (d.code, line, column)
-        })
-        .collect()
+    descriptions::error_places(NAME, text)
 }
 
 /// Line and column of the first `needle` in `text`, at `within` of it.

@@ -22,15 +22,7 @@ fn with_daps(daps: &str) -> String {
 }
 
 fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
-    let (ir, diagnostics) = descriptions::load_text(NAME, text);
-    assert!(ir.is_none(), "built");
-    diagnostics
-        .errors()
-        .map(|d| {
-            let (line, column) = gsdc::line_col(text, d.span.clone().unwrap().start);
-            (d.code, line, column)
-        })
-        .collect()
+    descriptions::error_places(NAME, text)
 }
 
 /// Line and column of the last `needle` in `text`.

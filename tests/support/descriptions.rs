@@ -108,6 +108,20 @@ pub fn load_text(name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
     })
 }
 
+/// The errors of `text` (which must not build, loaded as [`load_text`]
+/// loads it), each as its code, line and column.
+pub fn error_places(name: &str, text: &str) -> Vec<(&'static str, usize, usize)> {
+    let (ir, diagnostics) = load_text(name, text);
+    assert!(ir.is_none(), "built");
+    diagnostics
+        .errors()
+        .map(|d| {
+            let (line, column) = gsdc::line_col(text, d.span.clone().unwrap().start);
+            (d.code, line, column)
+        })
+        .collect()
+}
+
 /// Copies the shipped descriptions' symbols into `dir/symbols`, for a test
 /// that writes a description (or a copy of one) into `dir`.
 pub fn copy_symbols(dir: &Path) {
