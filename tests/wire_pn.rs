@@ -64,8 +64,9 @@ fn assert_lines(text: &str, lines: &[&str]) {
 /// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
 /// pass: each of its modules, the soft card (found by its name of station,
 /// stopped by SIGINT and by SIGTERM), two negative cases (another module
-/// ident, another input length), and one for each module in an API other
-/// than 0 (a layout that says API 0).
+/// ident, another input length), one for each module in an API other than 0
+/// (a layout that says API 0), and one for each device access point after
+/// the first.
 fn with_profinet() -> Vec<(String, String, usize)> {
     let mut found = Vec::new();
     for folder in ["descriptions", "tests/fixtures/valid"] {
@@ -78,7 +79,8 @@ fn with_profinet() -> Vec<(String, String, usize)> {
                 continue;
             };
             let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
-            let exchanges = profinet.modules.len() + 1 + 2 + other_apis;
+            let later_daps = profinet.daps.len() - 1;
+            let exchanges = profinet.modules.len() + 1 + 2 + other_apis + later_daps;
             found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
         }
     }
@@ -123,6 +125,16 @@ fn every_profinet_description_every_module() {
     mv810_every_module_records_control_word_and_pkw(&text);
     md810_reads_f0_08_through_the_pkw_channel(&text);
     profidrive_telegram_behind_its_access_point_in_api_0x3a00(&text);
+    // own_idents.toml's later DAPs: the controller connects with each, as
+    // the GSDML gives it, to the device presenting the layout's.
+    assert_lines(
+        &text,
+        &[
+            "--- device access point 2: IDM_STD_TEL_1",
+            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 1",
+        ],
+    );
 }
 
 fn mv810_every_module_records_control_word_and_pkw(text: &str) {
@@ -245,5 +257,33 @@ fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
     assert_lines(
         &text,
         &["FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)"],
+    );
+}
+
+/// The device presents the layout's third device access point; a GSDML
+/// whose DAP 3 has another ident number is refused at slot 0 (pnio's
+/// ExpectedSubmoduleBlockReq module ident), while the first two still pass.
+#[test]
+fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
+    if !can_run() {
+        return;
+    }
+    let description = "tests/fixtures/valid/own_idents.toml";
+    let dir = edited_gsdml(description, |t| {
+        t.replace(
+            r#"ModuleIdentNumber="0x00000300""#,
+            r#"ModuleIdentNumber="0x00000399""#,
+        )
+    });
+    let (status, text) = exchange(&[description], Some(&dir));
+    assert_eq!(status, 1, "{text}");
+    assert_lines(
+        &text,
+        &[
+            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 1",
+            "FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 04",
+            "PROFINET own_idents: 7 passed, 1 failed",
+        ],
     );
 }

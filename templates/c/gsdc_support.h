@@ -2003,10 +2003,25 @@ typedef struct {
     size_t entry;
 } gsdc_pn_pzd_t;
 
+/* A device access point after the first: its module ident number, its own
+ * submodule, its ports (the interface is the first's) and the modules it
+ * offers, by their places in the device's modules. The firmware of another
+ * hardware or firmware version of the card presents it in slot 0 in place
+ * of the first. */
+typedef struct {
+    uint32_t ident;
+    gsdc_pn_submodule_t submodule;
+    const gsdc_pn_submodule_t *ports;
+    size_t ports_count;
+    const size_t *modules;
+    size_t modules_count;
+} gsdc_pn_dap_t;
+
 /* A PROFINET IO device: its identity and DNS_CompatibleName (the
  * NameOfStation an engineering tool proposes), the device access point in
  * slot 0 (its module ident number and its own submodule), the interface
- * submodule and its ports, every module of the GSDML, its PKW codec,
+ * submodule and its ports, the device access points after the first, every
+ * module of the GSDML, its PKW codec,
  * whether PZD1 from the controller is the control word and PZD1 to the
  * controller the status word, and the PZD words the records map each
  * way. */
@@ -2019,6 +2034,8 @@ typedef struct {
     gsdc_pn_submodule_t interface_submodule;
     const gsdc_pn_submodule_t *ports;
     size_t ports_count;
+    const gsdc_pn_dap_t *later_daps;
+    size_t later_daps_count;
     const gsdc_pn_module_t *modules;
     size_t modules_count;
     gsdc_pkw_codec_t pkw;

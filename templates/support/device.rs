@@ -352,6 +352,10 @@ pub struct PnDevice {
     pub dap_submodule: PnSubmodule,
     pub interface_submodule: PnSubmodule,
     pub ports: &'static [PnSubmodule],
+    /// The GSDML's device access points after the first: other hardware or
+    /// firmware versions of the card, in the GSDML's order. The firmware of
+    /// one presents it in slot 0 in place of the first.
+    pub later_daps: &'static [PnDap],
     /// Every module of the GSDML, in its order.
     pub modules: &'static [PnModule],
     pub pkw: PkwCodec,
@@ -363,6 +367,17 @@ pub struct PnDevice {
     /// record maps to a drive parameter, and those to the controller.
     pub pzd_out: &'static [PnPzd],
     pub pzd_in: &'static [PnPzd],
+}
+
+/// A device access point after the first: its module ident number, its own
+/// submodule, its ports (the interface is the first's) and the modules it
+/// offers, by their places in [`PnDevice::modules`].
+#[derive(Clone, Copy, Debug)]
+pub struct PnDap {
+    pub ident: u32,
+    pub submodule: PnSubmodule,
+    pub ports: &'static [PnSubmodule],
+    pub modules: &'static [usize],
 }
 
 /// A PZD word and the record entry whose value is the drive parameter it

@@ -28,7 +28,8 @@ pub mod numbering;
 pub use device::{DiagCode, DpDiagArea, DpDiagnosis, DpGateway, GatewayDiagType};
 pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, PzdParam, UserPrm};
 pub use device::{GatewayDiagnosis, GatewayNode, PnPzd};
-pub use device::{PnDevice, PnModule, PnRecord, PnSubmodule, PrmDataType, RecordReading};
+pub use device::{PnDap, PnDevice, PnModule, PnRecord, PnSubmodule};
+pub use device::{PrmDataType, RecordReading};
 pub use numbering::{AddressScheme, Numbering, NumberingPrefix, ParameterName, WrittenPrefix};
 
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The PROFINET exchange of one description: every module of its GSDML in its
-# slot, then the negative cases, each between two network namespaces of its
+# slot, then the negative cases, then each device access point after the
+# first with its first module, each between two network namespaces of its
 # own (netns-exchange.sh). The device is built from the description's layout
 # (wire/pn; the firmware holds the layouts WIRE_DESCRIPTIONS names, by
 # default every shipped description and valid fixture); the controller reads
@@ -84,13 +85,20 @@ echo "  against the layout itself) and acknowledges every record (the layout dec
 echo "  controller compares); pnio cannot refuse a record, so the layout's refusal is reported, not sent"
 [ "$scenario" = - ] && echo "  (no scenario of the manual for $name: records and data only)"
 station=""
-modules=()
-while read -r kind a b c d; do
-  case "$kind" in
-    station) station=$a ;;
-    module) modules+=("$a $b $c $d") ;;
-  esac
-done < <("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules)
+daps=1
+# The modules DAP $1 offers, into `modules`; the name of station and how
+# many DAPs the GSDML has into `station` and `daps`.
+list_modules() { # DAP
+  modules=()
+  while read -r kind a b c d; do
+    case "$kind" in
+      daps) daps=$a ;;
+      station) station=$a ;;
+      module) modules+=("$a $b $c $d") ;;
+    esac
+  done < <("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules --dap "$1")
+}
+list_modules 1
 
 passed=0 failed=0 unrun=0
 run_case() {
@@ -126,6 +134,14 @@ for entry in "${modules[@]}"; do
   if [ "$api" -ne 0 ]; then
     run_case "negative: $module, the device's layout places it in API 0, the GSDML in API $api" "$slot" "$module" "$module_name" - --mismatch api
   fi
+done
+# Each device access point after the first, with the first module it
+# offers: the device presents that DAP in slot 0 (its ident numbers and
+# ports from the layout's later_daps), the controller connects with it.
+for ((dap = 2; dap <= daps; dap++)); do
+  list_modules "$dap"
+  read -r module slot api module_name <<<"${modules[0]}"
+  run_case "device access point $dap: $module ($module_name) in slot $slot" "$slot" "$module" "$module_name" - --dap "$dap"
 done
 
 echo "PROFINET $name: $passed passed, $failed failed$([ "$unrun" -gt 0 ] && echo ", $unrun could not run")"

@@ -141,6 +141,8 @@ for flag in "$@"; do
       api) controller_flags+=(--expect-refusal DB810305) ;;
     esac
   fi
+  # The device access point the device presents is the one to connect with.
+  [ "$previous" = "--dap" ] && controller_flags+=(--dap "$flag")
   previous=$flag
 done
 status=0

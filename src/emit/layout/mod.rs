@@ -21,7 +21,7 @@ pub(crate) use mappings::Group;
 
 use super::bit_range;
 use crate::ir::profibus::{self, Profibus as IrProfibus};
-use crate::ir::profinet::{self, Dap, Profinet as IrProfinet};
+use crate::ir::profinet::{self, Profinet as IrProfinet};
 use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, ValueSet as IrValueSet, Word as IrWord};
 use serde::Serialize;
 
@@ -603,39 +603,6 @@ fn dap_idents(p: &IrProfinet) -> Consts {
     }
 }
 
-/// What firmware of a device access point after the first gives the
-/// controller in place of the first's: its ident numbers, and its ports'
-/// count and ident numbers.
-fn later_dap(number: usize, dap: &Dap) -> Consts {
-    let tag = format!("dap{number}");
-    let mut items = vec![
-        Const::new(&[&tag, "ident"], Ty::U32, Val::hex_u32(dap.ident)),
-        Const::new(
-            &[&tag, "submodule", "ident"],
-            Ty::U32,
-            Val::hex_u32(dap.submodule_ident),
-        ),
-        Const::new(&[&tag, "ports"], Ty::U8, Val::Dec(dap.ports.len() as u64)),
-    ];
-    for (n, port) in (1u32..).zip(&dap.ports) {
-        let port_tag = format!("port{n}");
-        items.push(Const::new(
-            &[&tag, &port_tag, "ident"],
-            Ty::U32,
-            Val::hex_u32(port.ident),
-        ));
-    }
-    Consts {
-        doc: Doc::plain(format!(
-            "Device access point {number} (\"{}\"), in place of the first in slot 0: its \
-             module ident number, its submodule's, its ports and their submodule ident \
-             numbers.",
-            dap.name.text.en
-        )),
-        items,
-    }
-}
-
 /// The submodule ident numbers of the interface and the ports, where they
 /// are not their subslots (gsdc's numbering, which the subslots say).
 fn interface_idents(p: &IrProfinet) -> Option<Consts> {
@@ -711,7 +678,6 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
         },
     ];
     consts.extend(interface_idents(p));
-    consts.extend((2..).zip(&p.daps[1..]).map(|(n, dap)| later_dap(n, dap)));
     consts.extend([Consts::one(
         Doc::plain("The slot the I/O module is plugged into."),
         &["module", "slot"],

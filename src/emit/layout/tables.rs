@@ -442,13 +442,13 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ),
             (
                 "ports",
+                Value::List(Elem::Record("pn submodule"), pn_ports(p.dap())),
+            ),
+            (
+                "later_daps",
                 Value::List(
-                    Elem::Record("pn submodule"),
-                    p.dap()
-                        .ports
-                        .iter()
-                        .map(|port| fixed(port.subslot, port.ident))
-                        .collect(),
+                    Elem::Record("pn dap"),
+                    p.daps[1..].iter().map(pn_dap).collect(),
                 ),
             ),
             (
@@ -499,6 +499,34 @@ fn pn_pzds(ir: &Ir, p: &Profinet, kind: MappingKind) -> Value {
         ))
     });
     Value::List(Elem::Record("pn pzd"), pzds.collect())
+}
+
+fn pn_ports(dap: &profinet::Dap) -> Vec<Value> {
+    let ports = dap.ports.iter();
+    ports
+        .map(|p| submodule(p.subslot, p.ident, (0, 0)))
+        .collect()
+}
+
+fn pn_dap(dap: &profinet::Dap) -> Value {
+    Value::Record(record(
+        "pn dap",
+        vec![
+            ("ident", hex(dap.ident, 8)),
+            (
+                "submodule",
+                submodule(profinet::DAP_SUBSLOT, dap.submodule_ident, (0, 0)),
+            ),
+            (
+                "ports",
+                Value::List(Elem::Record("pn submodule"), pn_ports(dap)),
+            ),
+            (
+                "modules",
+                Value::List(Elem::Index, dap.modules.iter().map(|&i| size(i)).collect()),
+            ),
+        ],
+    ))
 }
 
 fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) -> Value {

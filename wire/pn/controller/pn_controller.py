@@ -149,6 +149,13 @@ class Gsdml:
         _, clock, ratio = min(cycles)
         return clock, ratio
 
+    def dap(self, number: int) -> ET.Element:
+        """The DeviceAccessPointItem `number` (from 1, in the file's order)."""
+        daps = self.root.findall(".//{*}DeviceAccessPointItem")
+        if not 1 <= number <= len(daps):
+            raise CannotRun(f"the GSDML has {len(daps)} DeviceAccessPointItem, not a number {number}")
+        return daps[number - 1]
+
     def module(self, module_id: str) -> ET.Element:
         for item in self.root.iter():
             if item.tag.endswith("}ModuleItem") and item.get("ID") == module_id:
@@ -318,9 +325,9 @@ def say(text: str) -> None:
     print(text, flush=True)
 
 
-def io_slots(path: Path, module_id: str, slot: int, subs: list[Submodule]):
+def io_slots(path: Path, dap_id: str, module_id: str, slot: int, subs: list[Submodule]):
     device = pgsdml.load_gsdml(path)
-    slots = device.build_io_slots(slot_assignment={slot: module_id})
+    slots = device.build_io_slots(slot_assignment={slot: module_id}, dap_id=dap_id)
     # profinet-py numbers a module's submodules 1, 2, ... in their order;
     # the GSDML's FixedInSubslots is what counts.
     mine = [s for s in slots if s.slot == slot]
@@ -497,7 +504,7 @@ def identify(args) -> None:
     and the identity the device answers with checked against the GSDML: what
     an engineering tool does first with a soft card."""
     gsdml = Gsdml(args.gsdml)
-    station = gsdml.root.find(".//{*}DeviceAccessPointItem").get("DNS_CompatibleName")
+    station = gsdml.dap(1).get("DNS_CompatibleName")
     sock = ethernet_socket(args.iface)
     try:
         info = get_station_info(sock, get_mac(args.iface), station, timeout_sec=3)
@@ -513,10 +520,12 @@ def identify(args) -> None:
 def run(args) -> None:
     gsdml = Gsdml(args.gsdml)
     subs = gsdml.submodules(args.module)
-    slots = io_slots(args.gsdml, args.module, args.slot, subs)
+    dap = gsdml.dap(args.dap)
+    slots = io_slots(args.gsdml, dap.get("ID"), args.module, args.slot, subs)
     events = DeviceEvents(args.device_events)
     scenario = json.loads(args.scenario.read_text()) if args.scenario else {}
-    say(f"{args.module} in slot {args.slot}: " + ", ".join(
+    say(f"device access point {args.dap} ({dap.get('ID')}, ident {dap.get('ModuleIdentNumber')}), "
+        f"{args.module} in slot {args.slot}: " + ", ".join(
         f"subslot {s.subslot} ident 0x{s.ident:X} API 0x{s.api:X} in {sum(i.size for i in s.inputs)} "
         f"out {sum(i.size for i in s.outputs)}" for s in subs))
     cycle = gsdml.cycle()
@@ -567,13 +576,15 @@ def run(args) -> None:
         rpc.disconnect()
 
 
-def list_modules(path: Path) -> int:
-    """What the wire test plugs: every module the DAP may take, in its first
-    allowed slot, with the highest API of its submodules and its name (the
-    GSDML's, in its primary language, which the device finds the module
-    by); and the name of station (the DAP's DNS_CompatibleName)."""
+def list_modules(path: Path, number: int) -> int:
+    """What the wire test plugs: every module DAP `number` may take, in its
+    first allowed slot, with the highest API of its submodules and its name
+    (the GSDML's, in its primary language, which the device finds the module
+    by); the name of station (the DAP's DNS_CompatibleName); and how many
+    DAPs the GSDML has."""
     gsdml = Gsdml(path)
-    dap = gsdml.root.find(".//{*}DeviceAccessPointItem")
+    dap = gsdml.dap(number)
+    print(f"daps {len(gsdml.root.findall('.//{*}DeviceAccessPointItem'))}")
     print(f"station {dap.get('DNS_CompatibleName')}")
     for ref in dap.findall("{*}UseableModules/{*}ModuleItemRef"):
         slots = ref.get("FixedInSlots") or ref.get("AllowedInSlots")
@@ -596,13 +607,15 @@ def main() -> int:
     parser.add_argument("--station")
     parser.add_argument("--module", help="the GSDML's ModuleItem ID")
     parser.add_argument("--slot", type=int, default=1)
+    parser.add_argument("--dap", type=int, default=1,
+                        help="the DeviceAccessPointItem to connect with: its number in the GSDML, from 1")
     parser.add_argument("--device-events", type=Path)
     parser.add_argument("--scenario", type=Path)
     parser.add_argument("--expect-refusal", metavar="STATUS", type=lambda h: int(h, 16),
                         help="the PNIO status (hex, e.g. DB810304) the device must refuse the Connect with")
     args = parser.parse_args()
     if args.list_modules:
-        return list_modules(args.gsdml)
+        return list_modules(args.gsdml, args.dap)
     if args.identify:
         if args.iface is None:
             parser.error("--iface is required")

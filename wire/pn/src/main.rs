@@ -20,7 +20,7 @@ mod model;
 mod tap;
 
 use events::Events;
-use model::{api_of, device_model, Mismatch};
+use model::{api_of, device_model, AccessPoint, Mismatch};
 use pnio::dcp::{DcpConfig, DeviceProperties};
 use pnio::device::{Device, DeviceSetup, RtOptions};
 use pnio::eth::{bpf::acyclic_filter, AfPacketTransport, MacAddr};
@@ -41,17 +41,20 @@ struct Args {
     ip: Ipv4Addr,
     station: Option<String>,
     plug: Vec<(u16, String)>,
+    /// The device access point it presents: its number in the GSDML.
+    dap: usize,
     mismatch: Option<Mismatch>,
     seconds: Option<u64>,
 }
 
 const USAGE: &str = "usage: pn-device --card NAME --iface IF --ip A.B.C.D --plug SLOT=MODULE... \
-[--station NAME] [--mismatch module-ident|input-length|api] [--seconds N]";
+[--station NAME] [--dap N] [--mismatch module-ident|input-length|api] [--seconds N]";
 
 fn parse_args() -> Result<Args, String> {
     let mut args = std::env::args().skip(1);
     let (mut card, mut iface, mut ip, mut station) = (None, None, None, None);
     let (mut plug, mut mismatch, mut seconds) = (Vec::new(), None, None);
+    let mut dap = 1;
     while let Some(flag) = args.next() {
         let mut value = || args.next().ok_or(format!("{flag} needs a value"));
         match flag.as_str() {
@@ -75,6 +78,7 @@ fn parse_args() -> Result<Args, String> {
                     other => return Err(format!("--mismatch {other}: not a kind")),
                 })
             }
+            "--dap" => dap = value()?.parse().map_err(|e| format!("--dap: {e}"))?,
             "--seconds" => seconds = Some(value()?.parse().map_err(|e| format!("--seconds: {e}"))?),
             other => return Err(format!("unknown argument {other}")),
         }
@@ -85,6 +89,7 @@ fn parse_args() -> Result<Args, String> {
         ip: need(ip, "--ip")?,
         station,
         plug,
+        dap,
         mismatch,
         seconds,
     })
@@ -124,12 +129,18 @@ fn run(args: &Args) -> Result<(), String> {
     let device = card
         .pn
         .ok_or(format!("{} has no PROFINET part", card.name))?;
-    let plugged = plugged_modules(card, device, &args.plug)?;
+    let dap = AccessPoint::of(device, args.dap).ok_or(format!(
+        "{} has no device access point {} (it has {})",
+        card.name,
+        args.dap,
+        1 + device.later_daps.len()
+    ))?;
+    let plugged = plugged_modules(card, (device, &dap), &args.plug)?;
     let mac = mac_of(&args.iface)?;
     let events = Events::stdout();
     let station = args.station.as_deref().unwrap_or(device.dns_name);
 
-    let model = device_model(device, station, mac, &plugged, args.mismatch);
+    let model = device_model((device, &dap), station, mac, &plugged, args.mismatch);
     let setup = DeviceSetup {
         dcp: DcpConfig {
             mac,
@@ -155,7 +166,7 @@ fn run(args: &Args) -> Result<(), String> {
     let mismatch = args.mismatch;
     let apis = {
         let plugged = plugged.clone();
-        move |slot, subslot| api_of(device, &plugged, mismatch, slot, subslot)
+        move |slot, subslot| api_of((device, &dap), &plugged, mismatch, slot, subslot)
     };
     let mut device = Device::new(setup, eth, Tap::new(udp, seen_tx, apis));
     {
@@ -219,18 +230,20 @@ fn stop_on_signals() {
     }
 }
 
-/// The modules the arguments plug, each checked against the card's table.
+/// The modules the arguments plug, each checked against the card's table
+/// and the modules the device access point offers.
 fn plugged_modules(
     card: &Card,
-    device: &'static PnDevice,
+    (device, dap): (&'static PnDevice, &AccessPoint),
     plug: &[(u16, String)],
 ) -> Result<Vec<(u16, &'static PnModule)>, String> {
     plug.iter()
         .map(|(slot, name)| {
-            let module = device
+            let (place, module) = device
                 .modules
                 .iter()
-                .find(|m| m.name == name)
+                .enumerate()
+                .find(|(_, m)| m.name == name)
                 .ok_or(format!(
                     "{} has no module {name:?}; its modules: {}",
                     card.name,
@@ -241,6 +254,12 @@ fn plugged_modules(
                         .collect::<Vec<_>>()
                         .join(", ")
                 ))?;
+            if !dap.offers(place) {
+                return Err(format!(
+                    "device access point {} does not offer {name:?}",
+                    dap.number
+                ));
+            }
             if !module.slots.contains(slot) {
                 return Err(format!(
                     "{name:?} goes in slots {:?}, not {slot}",

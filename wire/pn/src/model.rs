@@ -7,6 +7,55 @@ use pnio::cm::{DeviceModel, SlotModel, SubmoduleModel};
 use pnio::eth::MacAddr;
 use wire_firmware::gsdc_support::{PnDevice, PnModule, PnSubmodule};
 
+/// The device access point the device presents in slot 0, as the layout
+/// gives it: the first (`PnDevice`'s own) or a later one (`later_daps`).
+#[derive(Debug, Clone, Copy)]
+pub struct AccessPoint {
+    /// Its number in the GSDML, from 1.
+    pub number: usize,
+    pub ident: u32,
+    pub submodule: PnSubmodule,
+    pub ports: &'static [PnSubmodule],
+    /// The modules it offers, by their places in `PnDevice::modules`; all
+    /// of them for the first.
+    pub modules: Option<&'static [usize]>,
+}
+
+impl AccessPoint {
+    /// DAP `number` (1 the first) of the layout's device, if it has one.
+    pub fn of(device: &'static PnDevice, number: usize) -> Option<AccessPoint> {
+        if number == 1 {
+            return Some(AccessPoint {
+                number,
+                ident: device.dap_ident,
+                submodule: device.dap_submodule,
+                ports: device.ports,
+                modules: None,
+            });
+        }
+        let later = device.later_daps.get(number.checked_sub(2)?)?;
+        Some(AccessPoint {
+            number,
+            ident: later.ident,
+            submodule: later.submodule,
+            ports: later.ports,
+            modules: Some(later.modules),
+        })
+    }
+
+    /// Whether it offers the module at `place` in `PnDevice::modules`.
+    pub fn offers(&self, place: usize) -> bool {
+        self.modules.is_none_or(|m| m.contains(&place))
+    }
+
+    /// Its own submodule, the interface (the device's) and its ports.
+    fn submodules(&self, device: &PnDevice) -> impl Iterator<Item = PnSubmodule> + '_ {
+        [self.submodule, device.interface_submodule]
+            .into_iter()
+            .chain(self.ports.iter().copied())
+    }
+}
+
 /// How the device departs from the layout, to show that the controller sees it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Mismatch {
@@ -25,20 +74,18 @@ pub enum Mismatch {
 const MAX_ALARM_DATA_LENGTH: u16 = 200;
 
 pub fn device_model(
-    device: &PnDevice,
+    (device, dap): (&PnDevice, &AccessPoint),
     station: &str,
     mac: MacAddr,
     plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
 ) -> DeviceModel {
-    let access_point = [device.dap_submodule, device.interface_submodule];
     let mut slots = vec![SlotModel {
         slot: 0,
-        module_ident: device.dap_ident,
-        submodules: access_point
-            .iter()
-            .chain(device.ports)
-            .map(submodule_model)
+        module_ident: dap.ident,
+        submodules: dap
+            .submodules(device)
+            .map(|s| submodule_model(&s))
             .collect(),
     }];
     for &(slot, module) in plugged {
@@ -92,16 +139,14 @@ fn submodule_model(s: &PnSubmodule) -> SubmoduleModel {
 /// with [`Mismatch::Api`], API 0 for a plugged module): the access point's
 /// submodules are in API 0, a module's in the module's.
 pub fn api_of(
-    device: &PnDevice,
+    (device, dap): (&PnDevice, &AccessPoint),
     plugged: &[(u16, &PnModule)],
     mismatch: Option<Mismatch>,
     slot: u16,
     subslot: u16,
 ) -> Option<u32> {
     if slot == 0 {
-        let mut access_point = [device.dap_submodule, device.interface_submodule]
-            .into_iter()
-            .chain(device.ports.iter().copied());
+        let mut access_point = dap.submodules(device);
         return access_point.any(|s| s.subslot == subslot).then_some(0);
     }
     let (_, module) = plugged.iter().find(|(s, _)| *s == slot)?;
