@@ -425,7 +425,7 @@ fn the_dap_keeps_the_rules_beyond_the_schema() {
         let ports: Vec<&str> = elements(&doc, "PortSubmoduleItem")
             .map(|p| attribute(p, "SubslotNumber"))
             .collect();
-        let expected: Vec<String> = (1..=profinet.dap().ports.len())
+        let expected: Vec<String> = (1..=profinet.first_dap().ports.len())
             .map(|p| (0x8000 + p).to_string())
             .collect();
         assert_eq!(ports, expected, "{name}");

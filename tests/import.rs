@@ -396,13 +396,24 @@ fn md810_gsdml_changed(change: impl Fn(&str) -> String) -> Imported {
 /// MD810's GSDML with a second device access point: a copy of the first
 /// under other IDs, as `edit` changes it.
 fn md810_with_second_dap(edit: impl Fn(String) -> String) -> Imported {
-    md810_gsdml_changed(|gsdml| {
-        let start = gsdml.find("<DeviceAccessPointItem ").unwrap();
-        let end_tag = "</DeviceAccessPointItem>";
-        let end = gsdml.find(end_tag).unwrap() + end_tag.len();
-        let copy = edit(gsdml[start..end].replace(" ID=\"", " ID=\"V2_"));
-        format!("{}\n{copy}{}", &gsdml[..end], &gsdml[end..])
-    })
+    md810_gsdml_changed(|gsdml| with_second_dap(gsdml, &edit))
+}
+
+fn with_second_dap(gsdml: &str, edit: &dyn Fn(String) -> String) -> String {
+    let start = gsdml.find("<DeviceAccessPointItem ").unwrap();
+    let end_tag = "</DeviceAccessPointItem>";
+    let end = gsdml.find(end_tag).unwrap() + end_tag.len();
+    let copy = edit(gsdml[start..end].replace(" ID=\"", " ID=\"V2_"));
+    format!("{}\n{copy}{}", &gsdml[..end], &gsdml[end..])
+}
+
+/// A second DAP of its own ident number.
+fn renumbered(dap: String) -> String {
+    dap.replacen(
+        "ModuleIdentNumber=\"0x00000001\"",
+        "ModuleIdentNumber=\"0x00000009\"",
+        1,
+    )
 }
 
 /// A second device access point that differs from the first in its ident
@@ -455,20 +466,29 @@ fn a_second_device_access_point_imports_as_what_it_changes() {
 
 /// A GSDML file with more than the format can say is imported as far as
 /// it goes and judged: a second device access point whose ident number is
-/// the first's, or whose update time is not the first's (the description's
-/// share it), or a module whose data is not 16-bit words, is left out
-/// (W600 at its element), and the round trip finds the device changed
-/// (E601, breaking); nothing is written.
+/// the first's, whose update time is not the first's (the description's
+/// share it), which lacks a release the first has, or which offers a
+/// module the first does not; or a module whose data is not 16-bit words:
+/// each is left out (W600 at its element), and the round trip finds the
+/// device changed (E601, breaking); nothing is written.
 #[test]
 fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
     let same_ident = md810_with_second_dap(|dap| dap);
     let other_interval = md810_with_second_dap(|dap| {
-        dap.replacen(
-            "ModuleIdentNumber=\"0x00000001\"",
-            "ModuleIdentNumber=\"0x00000009\"",
-            1,
-        )
-        .replace("MinDeviceInterval=\"32\"", "MinDeviceInterval=\"64\"")
+        renumbered(dap).replace("MinDeviceInterval=\"32\"", "MinDeviceInterval=\"64\"")
+    });
+    // The entry would take the first's hardware release.
+    let no_release = md810_with_second_dap(|dap| {
+        let start = dap.find("<HardwareRelease ").unwrap();
+        let end = start + dap[start..].find("/>").unwrap() + 2;
+        format!("{}{}", &renumbered(dap[..start].to_string()), &dap[end..])
+    });
+    // The description's first DAP offers every module.
+    let only_second_offers = md810_gsdml_changed(|gsdml| {
+        let both = with_second_dap(gsdml, &renumbered);
+        let first_ref = "<ModuleItemRef ModuleItemTarget=\"IDM_PZD_12\" AllowedInSlots=\"1\"/>";
+        assert!(both.contains(first_ref));
+        both.replacen(first_ref, "", 1)
     });
     let bytes_module = md810_gsdml_changed(|gsdml| {
         let module = gsdml.find("<ModuleItem ID=\"IDM_PZD_12\"").unwrap();
@@ -483,6 +503,8 @@ fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
     for (imported, left_out, changed) in [
         (&same_ident, "device access point `V2_IDD_DAP` is not imported: its ModuleIdentNumber 0x00000001 is another device access point's or module's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000001) (breaking): removed"),
         (&other_interval, "device access point `V2_IDD_DAP` is not imported: its MinDeviceInterval is not the first device access point's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
+        (&no_release, "device access point `V2_IDD_DAP` is not imported: it has no hardware_release, which the first has", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
+        (&only_second_offers, "device access point `V2_IDD_DAP` is not imported: it offers module `IDM_PZD_12`, which the first device access point does not", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
         (&bytes_module, "module `IDM_PZD_12` is not imported: its IO data is not 16-bit words as many each way", "input data of submodule \"12 PZD\" (0x0000010C) of module \"12 PZD\" (0x0000010C) (breaking): 26 bytes"),
     ] {
         assert_eq!(imported.description, None);

@@ -700,13 +700,7 @@ fn profinet(
         "dns_name",
         attribute(attributes, "DNS_CompatibleName").unwrap_or_default(),
     );
-    let ports: Vec<&Submodule> = dap
-        .item
-        .submodules
-        .iter()
-        .filter(|s| s.kind == SubmoduleKind::Port)
-        .collect();
-    out.key("ports", ports.len());
+    out.key("ports", submodules_of(dap, SubmoduleKind::Port).count());
     out.key(
         "min_device_interval",
         attribute(attributes, "MinDeviceInterval").unwrap_or("32"),
@@ -742,11 +736,7 @@ fn profinet(
 }
 
 fn interface_properties(out: &mut TomlOut, dap: &Dap) {
-    let interface = dap
-        .item
-        .submodules
-        .iter()
-        .find(|s| s.kind == SubmoduleKind::Interface);
+    let interface = submodules_of(dap, SubmoduleKind::Interface).next();
     let interface_attributes = interface.map_or(&[][..], |s| &s.attributes[..]);
     if let Some(clocks) = attribute(
         interface_attributes,
@@ -762,18 +752,31 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap) {
             out.string(key, class);
         }
     }
-    let dap_submodule = dap
-        .item
-        .submodules
-        .iter()
-        .find(|s| s.kind == SubmoduleKind::Virtual);
-    let records = dap_submodule
+    let records = submodules_of(dap, SubmoduleKind::Virtual)
+        .next()
         .and_then(|s| attribute(&s.attributes, "Writeable_IM_Records"))
         .unwrap_or_default();
     out.key("writeable_im_records", list(records.split_whitespace()));
-    if attribute(interface_attributes, "MediaRedundancy@SupportedRole").is_some() {
+    if mrp_client(dap) {
         out.key("media_redundancy", true);
     }
+}
+
+/// A DAP's submodules of one kind, in the file's order.
+fn submodules_of(dap: &Dap, kind: SubmoduleKind) -> impl Iterator<Item = &Submodule> {
+    dap.item.submodules.iter().filter(move |s| s.kind == kind)
+}
+
+/// Whether a DAP's interface is an MRP client.
+fn mrp_client(dap: &Dap) -> bool {
+    submodules_of(dap, SubmoduleKind::Interface)
+        .next()
+        .is_some_and(|s| attribute(&s.attributes, "MediaRedundancy@SupportedRole").is_some())
+}
+
+/// An ident number as the description writes it.
+fn hex32(n: u32) -> String {
+    format!("0x{n:08X}")
 }
 
 /// `[profinet.module_info]` and `[profinet.module_name]`: what each kind
@@ -863,15 +866,10 @@ fn ir_text(t: &Text) -> crate::ir::Text {
 /// `[profinet.ident_numbers]`: every number as the file has it.
 fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
     out.table("profinet.ident_numbers");
-    let hex = |n: u32| format!("0x{n:08X}");
+    let hex = hex32;
     let dap_ident = dap.item.ident.unwrap_or(0);
     out.key("dap", hex(dap_ident));
-    let submodule = |kind| {
-        dap.item
-            .submodules
-            .iter()
-            .filter(move |s: &&Submodule| s.kind == kind)
-    };
+    let submodule = |kind| submodules_of(dap, kind);
     if let Some(s) = submodule(SubmoduleKind::Virtual).next() {
         out.key("dap_submodule", hex(s.ident.unwrap_or(0)));
     }
@@ -909,7 +907,7 @@ fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
 /// or whose value gsdc writes another way.
 fn unsaid_extras(
     device: &PnDevice,
-    (first, later): (&Dap, &[daps::LaterDap]),
+    (first, later): (&Dap, &[daps::DapEntry]),
     modules: &[Recognised],
     notes: &mut Notes,
 ) {

@@ -59,7 +59,7 @@ pub struct GraphicItem {
 impl Profinet {
     /// The first device access point: the one the layouts' device tables
     /// describe.
-    pub fn dap(&self) -> &Dap {
+    pub fn first_dap(&self) -> &Dap {
         &self.daps[0]
     }
 

@@ -575,8 +575,8 @@ fn placeholder(is: bool, sentence: &str) -> &str {
 
 /// The device access point's ident number, and its submodule's.
 fn dap_idents(p: &IrProfinet) -> Consts {
-    let dap = Val::hex_u32(p.dap().ident);
-    if p.dap().submodule_ident == p.dap().ident {
+    let dap = Val::hex_u32(p.first_dap().ident);
+    if p.first_dap().submodule_ident == p.first_dap().ident {
         return Consts::one(
             Doc::plain(
                 "The module ident number of the device access point in slot 0, and of its \
@@ -597,7 +597,7 @@ fn dap_idents(p: &IrProfinet) -> Consts {
             Const::new(
                 &["dap", "submodule", "ident"],
                 Ty::U32,
-                Val::hex_u32(p.dap().submodule_ident),
+                Val::hex_u32(p.first_dap().submodule_ident),
             ),
         ],
     }
@@ -607,7 +607,7 @@ fn dap_idents(p: &IrProfinet) -> Consts {
 /// are not their subslots (gsdc's numbering, which the subslots say).
 fn interface_idents(p: &IrProfinet) -> Option<Consts> {
     let by_subslot = p.interface_ident == u32::from(profinet::INTERFACE_SUBSLOT)
-        && p.dap()
+        && p.first_dap()
             .ports
             .iter()
             .all(profinet::Port::numbered_by_subslot);
@@ -619,7 +619,7 @@ fn interface_idents(p: &IrProfinet) -> Option<Consts> {
         Ty::U32,
         Val::hex_u32(p.interface_ident),
     )];
-    for (n, port) in (1u32..).zip(&p.dap().ports) {
+    for (n, port) in (1u32..).zip(&p.first_dap().ports) {
         let name = format!("port{n}");
         items.push(Const::new(
             &[name.as_str(), "ident"],
@@ -673,7 +673,11 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
                     Ty::U16,
                     Val::hex_u16(profinet::FIRST_PORT_SUBSLOT),
                 ),
-                Const::new(&["ports"], Ty::U8, Val::Dec(p.dap().ports.len() as u64)),
+                Const::new(
+                    &["ports"],
+                    Ty::U8,
+                    Val::Dec(p.first_dap().ports.len() as u64),
+                ),
             ],
         },
     ];

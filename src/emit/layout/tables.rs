@@ -431,10 +431,10 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ("vendor_id", hex(p.vendor_id, 4)),
             ("device_id", hex(p.device_id, 4)),
             ("dns_name", text(&p.dns_name)),
-            ("dap_ident", hex(p.dap().ident, 8)),
+            ("dap_ident", hex(p.first_dap().ident, 8)),
             (
                 "dap_submodule",
-                fixed(profinet::DAP_SUBSLOT, p.dap().submodule_ident),
+                fixed(profinet::DAP_SUBSLOT, p.first_dap().submodule_ident),
             ),
             (
                 "interface_submodule",
@@ -442,7 +442,7 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ),
             (
                 "ports",
-                Value::List(Elem::Record("pn submodule"), pn_ports(p.dap())),
+                Value::List(Elem::Record("pn submodule"), pn_ports(p.first_dap())),
             ),
             (
                 "later_daps",

@@ -2,8 +2,8 @@
 //! each says that differs from the first, in the keys the description has
 //! for it. One that the format cannot say is left out (W600), with why.
 
-use super::{attribute, list, text, Recognised};
-use crate::device::pn::{Dap, Submodule, SubmoduleKind};
+use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
+use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
@@ -24,12 +24,12 @@ const SHARED: &[&str] = &[
 const SHARED_INTERFACE: &[&str] = &["ApplicationRelations/TimingProperties@SendClock"];
 
 /// A later device access point, as the description says it.
-pub(super) struct LaterDap<'a> {
+pub(super) struct DapEntry<'a> {
     pub dap: &'a Dap,
     keys: Vec<(&'static str, String)>,
 }
 
-impl LaterDap<'_> {
+impl DapEntry<'_> {
     pub fn write(&self, out: &mut TomlOut) {
         out.array_item("profinet.daps");
         for (key, value) in &self.keys {
@@ -45,15 +45,15 @@ pub(super) fn later_daps<'a>(
     others: &'a [Dap],
     modules: &[Recognised],
     notes: &mut Notes,
-) -> Vec<LaterDap<'a>> {
+) -> Vec<DapEntry<'a>> {
     let mut taken: Vec<u32> = first.item.ident.into_iter().collect();
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let mut later = Vec::new();
     for dap in others {
-        match later_dap(first, dap, modules, &taken) {
+        match entry_keys(first, dap, modules, &taken) {
             Ok(keys) => {
                 taken.extend(dap.item.ident);
-                later.push(LaterDap { dap, keys });
+                later.push(DapEntry { dap, keys });
             }
             Err(why) => notes.unsaid(
                 &format!("device access point `{}`", dap.item.id),
@@ -66,7 +66,7 @@ pub(super) fn later_daps<'a>(
 }
 
 /// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.
-fn later_dap(
+fn entry_keys(
     first: &Dap,
     dap: &Dap,
     modules: &[Recognised],
@@ -83,7 +83,7 @@ fn later_dap(
         ));
     }
     shared_as_first(first, dap)?;
-    let hex = |n: u32| format!("0x{n:08X}");
+    let hex = hex32;
     let mut keys = vec![
         ("name", text(&dap.item.name.clone().unwrap_or_default())),
         ("ident", hex(ident)),
@@ -109,13 +109,8 @@ fn later_dap(
         }
     }
     keys.extend(ports(first, dap));
-    let mrp = |d: &Dap| {
-        let interface = submodules(d, SubmoduleKind::Interface).next();
-        interface
-            .is_some_and(|s| attribute(&s.attributes, "MediaRedundancy@SupportedRole").is_some())
-    };
-    if mrp(dap) != mrp(first) {
-        keys.push(("media_redundancy", mrp(dap).to_string()));
+    if mrp_client(dap) != mrp_client(first) {
+        keys.push(("media_redundancy", mrp_client(dap).to_string()));
     }
     keys.extend(offered(first, dap, modules)?);
     Ok(keys)
@@ -182,10 +177,7 @@ fn ports(first: &Dap, dap: &Dap) -> Vec<(&'static str, String)> {
         keys.push(("ports", mine.len().to_string()));
     }
     if !firsts.starts_with(&mine) {
-        keys.push((
-            "port_idents",
-            list(mine.iter().map(|n| format!("0x{n:08X}"))),
-        ));
+        keys.push(("port_idents", list(mine.iter().copied().map(hex32))));
     }
     keys
 }
@@ -220,8 +212,4 @@ fn offered(
         return Err("it offers none of the modules the import takes".into());
     }
     Ok((names.len() != modules.len()).then(|| ("modules", list(names))))
-}
-
-fn submodules(dap: &Dap, kind: SubmoduleKind) -> impl Iterator<Item = &Submodule> {
-    dap.item.submodules.iter().filter(move |s| s.kind == kind)
 }

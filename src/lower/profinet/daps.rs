@@ -51,7 +51,7 @@ pub fn lower(
     }];
     let mut complete = true;
     for (index, given) in p.daps.iter().enumerate() {
-        match later(cx, (index, given.get_ref()), p, &daps[0], modules) {
+        match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules) {
             Some(dap) => daps.push(dap),
             None => complete = false,
         }
@@ -61,7 +61,7 @@ pub fn lower(
 }
 
 /// The DAP of `profinet.daps[index]`, number `index + 2` in the file.
-fn later(
+fn lower_entry(
     cx: &mut Checker,
     (index, given): (usize, &raw::Dap),
     p: &raw::Profinet,
