@@ -134,7 +134,8 @@ pub(super) fn describe(
         return None;
     }
     let name = file_name(file, notes)?;
-    let later = daps::later_daps(dap, others, &modules, notes);
+    let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
+    let later = daps::later_daps((dap, others), device_info, &modules, notes);
     unsaid_extras(device, (dap, &later), &modules, notes);
     let mut out = TomlOut::default();
     out.comment(&format!(

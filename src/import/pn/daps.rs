@@ -4,7 +4,7 @@
 
 use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
-use crate::device::Attribute;
+use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
 
@@ -39,10 +39,11 @@ impl DapEntry<'_> {
 }
 
 /// Each device access point after the first that the format can say;
-/// the others are left out (W600) with the reason.
+/// the others are left out (W600) with the reason. `device_info` is
+/// DeviceIdentity's info text: what an entry without `info` gets.
 pub(super) fn later_daps<'a>(
-    first: &Dap,
-    others: &'a [Dap],
+    (first, others): (&Dap, &'a [Dap]),
+    device_info: Option<&Text>,
     modules: &[Recognised],
     notes: &mut Notes,
 ) -> Vec<DapEntry<'a>> {
@@ -50,7 +51,7 @@ pub(super) fn later_daps<'a>(
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let mut later = Vec::new();
     for dap in others {
-        match entry_keys(first, dap, modules, &taken) {
+        match entry_keys((first, dap), device_info, modules, &taken) {
             Ok(keys) => {
                 taken.extend(dap.item.ident);
                 later.push(DapEntry { dap, keys });
@@ -67,8 +68,8 @@ pub(super) fn later_daps<'a>(
 
 /// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.
 fn entry_keys(
-    first: &Dap,
-    dap: &Dap,
+    (first, dap): (&Dap, &Dap),
+    device_info: Option<&Text>,
     modules: &[Recognised],
     taken: &[u32],
 ) -> Result<Vec<(&'static str, String)>, String> {
@@ -88,8 +89,7 @@ fn entry_keys(
         ("name", text(&dap.item.name.clone().unwrap_or_default())),
         ("ident", hex(ident)),
     ];
-    let (info, first_info) = (dap.item.info.as_ref(), first.item.info.as_ref());
-    if let Some(info) = info.filter(|&i| Some(i) != first_info) {
+    if let Some(info) = dap.item.info.as_ref().filter(|&i| Some(i) != device_info) {
         keys.push(("info", text(info)));
     }
     let own_submodule = submodules(dap, SubmoduleKind::Virtual).next();
