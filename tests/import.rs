@@ -1076,3 +1076,46 @@ fn a_gsdml_file_under_another_name_is_refused_saying_why() {
         refused[0]
     );
 }
+
+/// ABB's FENA offers three device access points, one per hardware version.
+/// With its name of station written in lower case (its capitals are E132),
+/// all three import: none is left out, and the round trip finds none
+/// removed or added; what it still finds lies in their attributes and the
+/// modules.
+#[test]
+fn fenas_three_device_access_points_import() {
+    let name = "GSDML-V2.33-ABB-FENA-20170914.xml";
+    let text = std::fs::read_to_string(support::shared("corpus/gsdml").join(name)).unwrap();
+    let lower = text.replace(
+        r#"DNS_CompatibleName="FENA""#,
+        r#"DNS_CompatibleName="fena""#,
+    );
+    assert_ne!(lower, text);
+    let imported = import(name, lower.as_bytes());
+    let left_out: Vec<&str> = messages(&imported, "W600")
+        .into_iter()
+        .filter(|m| m.starts_with("device access point"))
+        .collect();
+    assert!(left_out.is_empty(), "{left_out:#?}");
+    // `DAP "FENA-21" (0x00000003) (breaking): removed`, not an attribute's
+    // `DAP "FENA-21" (0x00000003) NumberOfAR (breaking): "2" removed`.
+    let whole_dap = |m: &&str| {
+        m.strip_suffix(" (breaking): removed")
+            .or_else(|| m.strip_suffix(" (compatible): added"))
+            .is_some_and(|head| head.contains("DAP \"") && head.ends_with(')'))
+    };
+    let daps_changed: Vec<&str> = messages(&imported, "E601")
+        .into_iter()
+        .filter(whole_dap)
+        .collect();
+    assert!(daps_changed.is_empty(), "{daps_changed:#?}");
+    // The other two are there to compare: their attributes are judged.
+    for dap in ["FENA-21", "FENA-01"] {
+        assert!(
+            messages(&imported, "E601")
+                .iter()
+                .any(|m| m.contains(&format!("DAP \"{dap}\""))),
+            "{dap}"
+        );
+    }
+}
