@@ -1119,3 +1119,32 @@ fn fenas_three_device_access_points_import() {
         );
     }
 }
+
+/// A later DAP without `info` takes DeviceIdentity's text, not the first
+/// DAP's: where the two differ, an entry whose text is the first DAP's
+/// states it.
+#[test]
+fn a_later_daps_info_is_judged_against_what_it_would_inherit() {
+    let imported = md810_gsdml_changed(|gsdml| {
+        // Both DAPs (and their submodules) show the device's name as their
+        // info text, which DeviceIdentity's InfoText is not.
+        let start = gsdml.find("<DeviceAccessPointList>").unwrap();
+        let end = gsdml.find("</DeviceAccessPointList>").unwrap();
+        let daps = gsdml[start..end].replace(
+            "<InfoText TextId=\"IDT_DEVICE_INFO\"/>",
+            "<InfoText TextId=\"IDT_DEVICE_NAME\"/>",
+        );
+        let changed = format!("{}{daps}{}", &gsdml[..start], &gsdml[end..]);
+        with_second_dap(&changed, &renumbered)
+    });
+    // A text is cosmetic to the round trip: the entry itself shows it.
+    let description = imported.description.expect("written");
+    let entry = &description[description.find("[[profinet.daps]]").expect("an entry")..];
+    let entry = &entry[..entry.find("\n\n").unwrap_or(entry.len())];
+    assert!(entry.contains("\ninfo = "), "{entry}");
+    assert!(
+        imported.round_trip.is_clean(),
+        "{:#?}",
+        imported.diagnostics
+    );
+}

@@ -130,9 +130,10 @@ fn every_profinet_description_every_module() {
     assert_lines(
         &text,
         &[
-            "--- device access point 2: IDM_STD_TEL_1",
             "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "PASS IDM_STD_TEL_1 under device access point 2: 0 records decoded, 1 inputs observed",
             "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 1",
+            "PASS IDM_STD_TEL_1 under device access point 3: 0 records decoded, 1 inputs observed",
         ],
     );
 }
@@ -281,8 +282,9 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
         &text,
         &[
             "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "PASS IDM_STD_TEL_1 under device access point 2:",
             "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 1",
-            "FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 04",
+            "FAIL IDM_STD_TEL_1 under device access point 3: Connect failed: PNIO status DB 81 03 04",
             "PROFINET own_idents: 7 passed, 1 failed",
         ],
     );

@@ -215,6 +215,20 @@ static void dump_pn(const gsdc_pn_device_t *d)
         printf("port %u %lu\n", (unsigned int)d->ports[i].subslot,
                (unsigned long)d->ports[i].ident);
     }
+    for (i = 0U; i < d->later_daps_count; i++) {
+        const gsdc_pn_dap_t *later = &d->later_daps[i];
+        printf("later_dap %lu submodule %u %lu", (unsigned long)later->ident,
+               (unsigned int)later->submodule.subslot, (unsigned long)later->submodule.ident);
+        for (j = 0U; j < later->ports_count; j++) {
+            printf(" port %u %lu", (unsigned int)later->ports[j].subslot,
+                   (unsigned long)later->ports[j].ident);
+        }
+        printf(" modules");
+        for (j = 0U; j < later->modules_count; j++) {
+            printf(" %lu", (unsigned long)d->modules[later->modules[j]].ident);
+        }
+        printf("\n");
+    }
     for (i = 0U; i < d->modules_count; i++) {
         const gsdc_pn_module_t *m = &d->modules[i];
         printf("module ");

@@ -212,6 +212,12 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
             ));
         }
     }
+    lines.extend(
+        doc.descendants()
+            .filter(|n| n.has_tag_name("DeviceAccessPointItem"))
+            .skip(1)
+            .map(|later| later_dap_line(&doc, later)),
+    );
     let text_of = |id: &str| {
         doc.descendants()
             .filter(|n| n.has_tag_name("PrimaryLanguage"))
@@ -283,6 +289,44 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         }
     }
     lines
+}
+
+/// A device access point after the first: its ident number, its own
+/// submodule, each port, and the ident number of each module it offers.
+fn later_dap_line(doc: &roxmltree::Document, dap: roxmltree::Node) -> String {
+    let own = dap
+        .descendants()
+        .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
+        .unwrap();
+    let mut line = format!(
+        "later_dap {} submodule {} {}",
+        number(attr(dap, "ModuleIdentNumber")),
+        number(own.attribute("FixedInSubslots").unwrap_or("1")),
+        number(attr(own, "SubmoduleIdentNumber"))
+    );
+    for port in dap
+        .descendants()
+        .filter(|n| n.has_tag_name("PortSubmoduleItem"))
+    {
+        line += &format!(
+            " port {} {}",
+            number(attr(port, "SubslotNumber")),
+            number(attr(port, "SubmoduleIdentNumber"))
+        );
+    }
+    line += " modules";
+    for reference in dap
+        .descendants()
+        .filter(|n| n.has_tag_name("ModuleItemRef"))
+    {
+        let target = attr(reference, "ModuleItemTarget");
+        let module = doc
+            .descendants()
+            .find(|n| n.has_tag_name("ModuleItem") && n.attribute("ID") == Some(target))
+            .unwrap();
+        line += &format!(" {}", number(attr(module, "ModuleIdentNumber")));
+    }
+    line
 }
 
 fn attr<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> &'a str {

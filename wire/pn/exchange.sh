@@ -87,8 +87,14 @@ echo "  controller compares); pnio cannot refuse a record, so the layout's refus
 station=""
 daps=1
 # The modules DAP $1 offers, into `modules`; the name of station and how
-# many DAPs the GSDML has into `station` and `daps`.
+# many DAPs the GSDML has into `station` and `daps`. Exit 2 (could not run)
+# when the controller cannot list them, or the DAP offers none.
 list_modules() { # DAP
+  local listing
+  listing=$("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules --dap "$1") || {
+    echo "PROFINET exchange of $name: the controller could not list device access point $1's modules" >&2
+    exit 2
+  }
   modules=()
   while read -r kind a b c d; do
     case "$kind" in
@@ -96,7 +102,11 @@ list_modules() { # DAP
       station) station=$a ;;
       module) modules+=("$a $b $c $d") ;;
     esac
-  done < <("$python" "$here/controller/pn_controller.py" --gsdml "$gsdml" --list-modules --dap "$1")
+  done <<<"$listing"
+  if [ ${#modules[@]} -eq 0 ]; then
+    echo "PROFINET exchange of $name: device access point $1 offers no module" >&2
+    exit 2
+  fi
 }
 list_modules 1
 

@@ -11,9 +11,11 @@
 # DEVICE: the pn-device binary; PYTHON: the venv's python with profinet-py;
 # CARD: the description's name in the firmware; STATION: the name of
 # station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT,
-# and NAME its name, by which the device finds it in its layout; SCENARIO: the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
+# and NAME its name, by which the device finds it in its layout; SCENARIO:
+# the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
 # (--mismatch KIND makes it a negative case, and the controller then expects
-# the Connect refused). The device takes its name of station from its
+# the Connect refused; --dap N makes it present device access point N in
+# slot 0, and the controller connects with the GSDML's Nth). The device takes its name of station from its
 # layout; the controller finds it by the GSDML's (STATION), so the two must
 # agree.
 #

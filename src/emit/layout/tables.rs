@@ -110,9 +110,9 @@ pub(crate) fn tables(ir: &Ir) -> Vec<Table> {
         name: Ident::of(&["pn", "device"]),
         doc: Doc::plain(format!(
             "The PROFINET IO device {} describes: its identity, the device \
-             access point with its interface and ports, every module with its \
-             submodules and parameter records, the PKW codec and the PZD words \
-             the records map.",
+             access point with its interface and ports, the device access points \
+             after the first, every module with its submodules and parameter \
+             records, the PKW codec and the PZD words the records map.",
             p.file_name
         )),
         record: pn_device(ir, p),

@@ -118,6 +118,21 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             .iter()
             .map(|p| format!("port {} {}", p.subslot, p.ident)),
     );
+    for later in d.later_daps {
+        let s = &later.submodule;
+        let mut line = format!(
+            "later_dap {} submodule {} {}",
+            later.ident, s.subslot, s.ident
+        );
+        for p in later.ports {
+            line += &format!(" port {} {}", p.subslot, p.ident);
+        }
+        line += " modules";
+        for &m in later.modules {
+            line += &format!(" {}", d.modules[m].ident);
+        }
+        lines.push(line);
+    }
     for m in d.modules {
         let slots: Vec<String> = m.slots.iter().map(u16::to_string).collect();
         lines.push(format!(

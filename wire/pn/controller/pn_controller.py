@@ -569,11 +569,17 @@ def run(args) -> None:
         if any(api != 0 for api in apis):
             say(f"  API 0x{apis[-1]:X}: the device checked it against its layout before pnio saw the Connect"
                 f"{' and merged the IOCRs to one API for pnio' if merged else ''}; pnio itself cannot check an API")
-        say(f"PASS {args.module}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks")
+        say(f"PASS {case(args)}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks")
     finally:
         if cyclic is not None:
             cyclic.stop()
         rpc.disconnect()
+
+
+def case(args) -> str:
+    """The exchange's name in its PASS and FAIL lines: the module, and the
+    device access point after the first it is plugged under."""
+    return args.module if args.dap == 1 else f"{args.module} under device access point {args.dap}"
 
 
 def list_modules(path: Path, number: int) -> int:
@@ -634,10 +640,10 @@ def main() -> int:
     try:
         run(args)
     except Failed as e:
-        say(f"FAIL {args.module}: {e}")
+        say(f"FAIL {case(args)}: {e}")
         return 1
     except CannotRun as e:
-        say(f"CANNOT RUN {args.module}: {e}")
+        say(f"CANNOT RUN {case(args)}: {e}")
         return 2
     return 0
 
