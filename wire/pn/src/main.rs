@@ -5,10 +5,12 @@
 //! layout's decoders, and runs the drive model on the cyclic data.
 //!
 //!     pn-device --card mv810-pnet02 --iface pn0 --ip 192.0.2.2 \
-//!               --plug "1=PKW + 12 PZD" [--station NAME] [--seconds 60]
+//!               --plug "1=PKW + 12 PZD" [--station NAME] [--dap N] [--seconds 60]
 //!
 //! Its name of station is the layout's (`PN_DEVICE.dns_name`, the GSDML's
-//! DNS_CompatibleName) unless `--station` gives another. Every event goes to
+//! DNS_CompatibleName) unless `--station` gives another. In slot 0 it
+//! presents the GSDML's first device access point, or with `--dap N` its
+//! Nth (the layout's `later_daps`), and takes only modules that one offers. Every event goes to
 //! stdout as one JSON object a line, for the controller side of the wire
 //! test (and a person) to read. Without `--seconds` it runs until SIGINT
 //! (Ctrl-C) or SIGTERM, then stops its device loop, says so and exits 0.
