@@ -867,27 +867,26 @@ fn ir_text(t: &Text) -> crate::ir::Text {
 /// `[profinet.ident_numbers]`: every number as the file has it.
 fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
     out.table("profinet.ident_numbers");
-    let hex = hex32;
     let dap_ident = dap.item.ident.unwrap_or(0);
-    out.key("dap", hex(dap_ident));
+    out.key("dap", hex32(dap_ident));
     let submodule = |kind| submodules_of(dap, kind);
     if let Some(s) = submodule(SubmoduleKind::Virtual).next() {
-        out.key("dap_submodule", hex(s.ident.unwrap_or(0)));
+        out.key("dap_submodule", hex32(s.ident.unwrap_or(0)));
     }
     if let Some(s) = submodule(SubmoduleKind::Interface).next() {
-        out.key("interface", hex(s.ident.unwrap_or(0)));
+        out.key("interface", hex32(s.ident.unwrap_or(0)));
     }
     let ports: Vec<String> = submodule(SubmoduleKind::Port)
-        .map(|s| hex(s.ident.unwrap_or(0)))
+        .map(|s| hex32(s.ident.unwrap_or(0)))
         .collect();
     out.key("ports", list(ports));
     if let Some(ap) = modules.iter().find_map(|m| m.access_point) {
-        out.key("access_point", hex(ap.ident.unwrap_or(0)));
+        out.key("access_point", hex32(ap.ident.unwrap_or(0)));
     }
     let entries = |of: &dyn Fn(&Recognised) -> Option<u32>| -> String {
         let items: Vec<String> = modules
             .iter()
-            .filter_map(|m| Some(format!("{} = {}", m.code_name(), hex(of(m)?))))
+            .filter_map(|m| Some(format!("{} = {}", m.code_name(), hex32(of(m)?))))
             .collect();
         format!("{{ {} }}", items.join(", "))
     };

@@ -75,8 +75,8 @@ pub fn lower(
     let info = p.info.as_ref().map(|i| cx.text(i, None, "profinet.info"));
     let ports = cx.spanned_in_range(&p.ports, 1, 16, "ports")?;
     let interface_properties = interface_properties?;
-    let media_redundancy = p.media_redundancy.as_ref().is_some_and(|m| *m.get_ref());
     let client = p.media_redundancy.as_ref().filter(|m| *m.get_ref());
+    let media_redundancy = client.is_some();
     interface::check_ring_ports(cx, client.map(Spanned::span), ports);
     let kinds = modules(cx, p, telegram);
     let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;

@@ -575,8 +575,9 @@ fn placeholder(is: bool, sentence: &str) -> &str {
 
 /// The device access point's ident number, and its submodule's.
 fn dap_idents(p: &IrProfinet) -> Consts {
-    let dap = Val::hex_u32(p.first_dap().ident);
-    if p.first_dap().submodule_ident == p.first_dap().ident {
+    let first = p.first_dap();
+    let dap = Val::hex_u32(first.ident);
+    if first.submodule_ident == first.ident {
         return Consts::one(
             Doc::plain(
                 "The module ident number of the device access point in slot 0, and of its \
@@ -597,7 +598,7 @@ fn dap_idents(p: &IrProfinet) -> Consts {
             Const::new(
                 &["dap", "submodule", "ident"],
                 Ty::U32,
-                Val::hex_u32(p.first_dap().submodule_ident),
+                Val::hex_u32(first.submodule_ident),
             ),
         ],
     }

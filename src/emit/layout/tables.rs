@@ -424,7 +424,6 @@ fn allowed(holds: &PrmHolds) -> (u16, u16, Vec<Value>) {
 // PROFINET
 
 fn pn_device(ir: &Ir, p: &Profinet) -> Record {
-    let fixed = |subslot: u16, ident: u32| submodule(subslot, ident, (0, 0));
     record(
         "pn device",
         vec![
@@ -434,11 +433,11 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ("dap_ident", hex(p.first_dap().ident, 8)),
             (
                 "dap_submodule",
-                fixed(profinet::DAP_SUBSLOT, p.first_dap().submodule_ident),
+                fixed_submodule(profinet::DAP_SUBSLOT, p.first_dap().submodule_ident),
             ),
             (
                 "interface_submodule",
-                fixed(profinet::INTERFACE_SUBSLOT, p.interface_ident),
+                fixed_submodule(profinet::INTERFACE_SUBSLOT, p.interface_ident),
             ),
             (
                 "ports",
@@ -503,9 +502,7 @@ fn pn_pzds(ir: &Ir, p: &Profinet, kind: MappingKind) -> Value {
 
 fn pn_ports(dap: &profinet::Dap) -> Vec<Value> {
     let ports = dap.ports.iter();
-    ports
-        .map(|p| submodule(p.subslot, p.ident, (0, 0)))
-        .collect()
+    ports.map(|p| fixed_submodule(p.subslot, p.ident)).collect()
 }
 
 fn pn_dap(dap: &profinet::Dap) -> Value {
@@ -515,7 +512,7 @@ fn pn_dap(dap: &profinet::Dap) -> Value {
             ("ident", hex(dap.ident, 8)),
             (
                 "submodule",
-                submodule(profinet::DAP_SUBSLOT, dap.submodule_ident, (0, 0)),
+                fixed_submodule(profinet::DAP_SUBSLOT, dap.submodule_ident),
             ),
             (
                 "ports",
@@ -527,6 +524,11 @@ fn pn_dap(dap: &profinet::Dap) -> Value {
             ),
         ],
     ))
+}
+
+/// A submodule without IO data: a DAP's own, the interface, a port.
+fn fixed_submodule(subslot: u16, ident: u32) -> Value {
+    submodule(subslot, ident, (0, 0))
 }
 
 fn submodule(subslot: u16, ident: u32, (input_len, output_len): (usize, usize)) -> Value {

@@ -84,17 +84,16 @@ fn entry_keys(
         ));
     }
     shared_as_first(first, dap)?;
-    let hex = hex32;
     let mut keys = vec![
         ("name", text(&dap.item.name.clone().unwrap_or_default())),
-        ("ident", hex(ident)),
+        ("ident", hex32(ident)),
     ];
     if let Some(info) = dap.item.info.as_ref().filter(|&i| Some(i) != device_info) {
         keys.push(("info", text(info)));
     }
     let own_submodule = submodules(dap, SubmoduleKind::Virtual).next();
     if let Some(s) = own_submodule.filter(|s| s.ident != Some(ident)) {
-        keys.push(("submodule_ident", hex(s.ident.unwrap_or(0))));
+        keys.push(("submodule_ident", hex32(s.ident.unwrap_or(0))));
     }
     for (key, name) in [
         ("order_number", "ModuleInfo/OrderNumber@Value"),
