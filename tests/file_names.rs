@@ -57,3 +57,47 @@ fn a_name_outside_ascii_or_with_a_newline_gives_valid_files() {
         assert!(layout.contains(&format!("from {shown}")), "{file_name:?}");
     }
 }
+
+/// The GSDML specification (5.1) lets the vendor and the family in a GSDML
+/// file name hold any character a Windows file name may, `-` and the space
+/// included (SEW's `MOVI-C-Decentralized-Electronics`): such a name builds
+/// and passes the build's own check of the file, which reads the name's
+/// parts back. A part that starts with `-` or holds a character Windows
+/// forbids is E133 at its key.
+#[test]
+fn a_gsdml_file_names_vendor_and_family_may_hold_dashes_and_spaces() {
+    let fixture = support::checkout("tests/fixtures/valid/own_idents.toml");
+    let text = std::fs::read_to_string(fixture).unwrap();
+    let named = |vendor: &str, family: &str| {
+        text.replacen("family = \"X4\"", &format!("family = \"{family}\""), 1)
+            .replacen(
+                "[profinet]\n",
+                &format!("[profinet]\nfile_vendor = \"{vendor}\"\n"),
+                1,
+            )
+    };
+    let (ir, diagnostics) = descriptions::load_text(
+        "own_idents.toml",
+        &named("Acme Drives", "X4-Drive Interface"),
+    );
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let files = gsdc::compile(&ir).unwrap_or_else(|e| panic!("{e:#?}"));
+    let (name, _) = descriptions::one(files, gsdc::ArtifactKind::Gsdml);
+    assert!(
+        name.starts_with("GSDML-V2.32-Acme Drives-X4-Drive Interface-"),
+        "{name}"
+    );
+    for (vendor, family) in [
+        ("-Acme", "X4"),
+        ("Acme", "X4 "),
+        ("Acme", "X4/5"),
+        ("Acme?", "X4"),
+    ] {
+        let text = named(vendor, family);
+        let codes: Vec<&str> = descriptions::error_places("own_idents.toml", &text)
+            .into_iter()
+            .map(|(code, ..)| code)
+            .collect();
+        assert_eq!(codes, ["E133"], "{vendor:?} {family:?}");
+    }
+}

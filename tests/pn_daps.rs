@@ -56,10 +56,10 @@ fn a_later_dap_states_what_differs_and_takes_the_rest_from_the_first() {
     assert_eq!(one_port.order_number.as_deref(), Some("X4-PN-1P"));
     assert_eq!(
         (
-            one_port.hardware_release.as_str(),
-            one_port.software_release.as_str()
+            one_port.hardware_release.as_deref(),
+            one_port.software_release.as_deref()
         ),
-        ("V2", "V1")
+        (Some("V2"), Some("V1"))
     );
     assert_eq!(one_port.info, first.info);
     assert_eq!(one_port.ports.len(), 1);
@@ -181,4 +181,43 @@ fn a_later_daps_own_info_carries_the_draft_notice() {
         "{own}"
     );
     assert!(p.daps[0].info.text.en.contains("VendorID 0x1234"));
+}
+
+/// A GSDML device access point may have no releases (SEW's MOVI-C has
+/// none), so a description without `[profibus]` may leave out the revision
+/// and the releases: the first DAP then writes neither `HardwareRelease` nor
+/// `SoftwareRelease`, a later one only what it states, and every file
+/// builds and passes gsdc's own checks. (With `[profibus]` they are E004:
+/// tests/fixtures/invalid/gsd_without_revision.toml.)
+#[test]
+fn a_description_without_a_gsd_may_leave_the_releases_out() {
+    let text = text().replace(
+        "revision = \"V1\"\nhardware_release = \"V1\"\nsoftware_release = \"V1\"\n",
+        "",
+    );
+    assert_ne!(text, self::text());
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    assert_eq!(ir.device.revision, None);
+    let releases: Vec<(Option<&str>, Option<&str>)> = ir
+        .profinet
+        .as_ref()
+        .unwrap()
+        .daps
+        .iter()
+        .map(|d| (d.hardware_release.as_deref(), d.software_release.as_deref()))
+        .collect();
+    assert_eq!(
+        releases,
+        [(None, None), (Some("V2"), None), (None, Some("V3"))]
+    );
+    let files = gsdc::compile(&ir).unwrap_or_else(|e| panic!("{e:#?}"));
+    let (_, gsdml) = descriptions::one(files, gsdc::ArtifactKind::Gsdml);
+    assert_eq!(
+        gsdml.matches("<HardwareRelease Value=\"V2\"/>").count(),
+        1,
+        "{gsdml}"
+    );
+    assert_eq!(gsdml.matches("<SoftwareRelease Value=\"V3\"/>").count(), 1);
+    assert_eq!(gsdml.matches("Release Value=").count(), 2);
 }

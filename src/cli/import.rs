@@ -172,10 +172,23 @@ fn report(name: &str, imported: &Imported) {
         text: &imported.text,
     };
     // Errors first: they say why nothing was written, and a file of many
-    // keywords the description has no place for must not hide them.
-    let (errors, warnings): (Vec<&Diagnostic>, Vec<&Diagnostic>) =
+    // keywords the description has no place for must not hide them. Nor
+    // may a round trip of many changes hide what was left out, which
+    // explains them: of many of both, each gets half.
+    let (errors, mut warnings): (Vec<&Diagnostic>, Vec<&Diagnostic>) =
         imported.diagnostics.iter().partition(|d| d.is_error());
-    for d in errors.iter().chain(&warnings).take(MAX_SHOWN) {
+    // The decisions the import took for the whole file (a version, a name
+    // of station, a class it writes otherwise) before what it left out at
+    // an element.
+    warnings.sort_by_key(|d| d.span.is_some());
+    let errors_shown = errors
+        .len()
+        .min((MAX_SHOWN / 2).max(MAX_SHOWN.saturating_sub(warnings.len())));
+    let warnings_shown = MAX_SHOWN - errors_shown;
+    let shown = errors[..errors_shown]
+        .iter()
+        .chain(warnings.iter().take(warnings_shown));
+    for d in shown {
         warn(&source.render(d));
     }
     let hidden = imported

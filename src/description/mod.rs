@@ -157,10 +157,11 @@ pub struct Device {
     pub family: Spanned<String>,
     /// Model name: GSD `Model_Name`.
     pub model: Spanned<String>,
-    /// GSD `Revision`.
-    pub revision: Spanned<String>,
-    pub hardware_release: Spanned<String>,
-    pub software_release: Spanned<String>,
+    /// GSD `Revision`. It and the releases are required with a
+    /// `[profibus]` (the GSD's keywords); a GSDML DAP may have no releases.
+    pub revision: Option<Spanned<String>>,
+    pub hardware_release: Option<Spanned<String>>,
+    pub software_release: Option<Spanned<String>>,
     pub order_number: Option<Spanned<String>>,
     pub name: Spanned<Text>,
     pub info: Option<Spanned<Text>>,

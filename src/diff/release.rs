@@ -45,7 +45,7 @@ impl Anchors {
             return Anchors::default();
         };
         Anchors {
-            revision: Some(desc.device.revision.span()),
+            revision: desc.device.revision.as_ref().map(toml::Spanned::span),
             date: desc.profinet.as_ref().map(|p| p.get_ref().date.span()),
             ident_number: desc
                 .profibus

@@ -225,11 +225,16 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         ],
     );
     let mut values = vec![("VendorName", ir.device.vendor.as_str())];
-    values.extend(dap.order_number.as_deref().map(|o| ("OrderNumber", o)));
-    values.extend([
-        ("HardwareRelease", dap.hardware_release.as_str()),
-        ("SoftwareRelease", dap.software_release.as_str()),
-    ]);
+    let optional = [
+        ("OrderNumber", &dap.order_number),
+        ("HardwareRelease", &dap.hardware_release),
+        ("SoftwareRelease", &dap.software_release),
+    ];
+    values.extend(
+        optional
+            .into_iter()
+            .filter_map(|(element, value)| Some((element, value.as_deref()?))),
+    );
     module_info(doc, &dap.name, &dap.info, &values);
     let properties = &p.interface_properties;
     doc.leaf(

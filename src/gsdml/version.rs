@@ -24,6 +24,10 @@ pub struct FileName<'n> {
     pub time: Option<&'n str>,
 }
 
+/// What a Windows file name cannot hold, and so neither the vendor nor the
+/// family of a GSDML file name.
+pub const WINDOWS_FORBIDDEN: [char; 9] = ['<', '>', ':', '"', '/', '\\', '|', '?', '*'];
+
 /// Splits a file name by the convention; the error says what is wrong.
 pub fn parse_file_name(name: &str) -> Result<FileName<'_>, &'static str> {
     let rest = name
@@ -56,7 +60,7 @@ pub fn parse_file_name(name: &str) -> Result<FileName<'_>, &'static str> {
     if vendor.is_empty() || family.is_empty() {
         return Err("it lacks the vendor or the device family");
     }
-    if vendor_and_family.contains(['<', '>', ':', '"', '/', '\\', '|', '?', '*']) {
+    if vendor_and_family.contains(WINDOWS_FORBIDDEN) {
         return Err("the vendor or family contains a character Windows forbids in file names");
     }
     Ok(FileName {

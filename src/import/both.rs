@@ -63,8 +63,8 @@ pub fn import_both(gsd: (&str, &[u8]), gsdml: (&str, &[u8]), files: Files<'_>) -
     Both {
         symbol: symbol.filter(|_| description.is_some()),
         description,
-        gsd: dp_notes.imported(None, None, trips.0),
-        gsdml: pn_notes.imported(None, None, trips.1),
+        gsd: dp_notes.imported((None, None), None, trips.0),
+        gsdml: pn_notes.imported((None, None), None, trips.1),
     }
 }
 

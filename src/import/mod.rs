@@ -33,7 +33,13 @@ use crate::diff::{Change, Class};
 #[derive(Debug)]
 #[non_exhaustive]
 pub struct Imported {
+    /// The description, when its build is the file's device: what `gsdc
+    /// import` writes.
     pub description: Option<String>,
+    /// The description when it builds but its build is another device
+    /// (E601): never written by `gsdc import`; what the import would start
+    /// from, for a benchmark or a look at how far the format goes.
+    pub another_device: Option<String>,
     /// The file's text as gsdc reads it, for the diagnostics' spans.
     pub text: String,
     pub diagnostics: Diagnostics,
@@ -96,7 +102,7 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
         }
     };
     let mut round_trip = RoundTrip::default();
-    let description = description.and_then(|toml| {
+    let built = description.and_then(|toml| {
         round_trip = judge(
             file_name,
             &toml,
@@ -104,10 +110,14 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
             device.as_ref()?,
             &mut notes,
         )?;
-        round_trip.is_clean().then_some(toml)
+        Some(toml)
     });
+    let (description, another_device) = match built {
+        Some(toml) if round_trip.is_clean() => (Some(toml), None),
+        built => (None, built),
+    };
     let symbol = symbol.filter(|_| description.is_some());
-    notes.imported(description, symbol, round_trip)
+    notes.imported((description, another_device), symbol, round_trip)
 }
 
 /// The [`Files`] of an import without any.
@@ -206,12 +216,13 @@ struct Notes {
 impl Notes {
     fn imported(
         self,
-        description: Option<String>,
+        (description, another_device): (Option<String>, Option<String>),
         symbol: Option<ImportedSymbol>,
         round_trip: RoundTrip,
     ) -> Imported {
         Imported {
             description,
+            another_device,
             symbol,
             text: self.text,
             unsaid: self.unsaid,

@@ -155,22 +155,24 @@ pub(super) fn describe(
         later.write(&mut out);
     }
     super::dp::manual(&mut out);
-    choices(&mut out, file, &records);
+    choices(&mut out, file, &records, software_release(dap).is_some());
     Some(out)
 }
 
 /// `[choices]`: every table imported marked with the file's name, and
 /// the identity a GSDML file does not give marked with what stands for it.
-fn choices(out: &mut TomlOut, file: &str, records: &Records) {
+fn choices(out: &mut TomlOut, file: &str, records: &Records, has_revision: bool) {
     out.table("choices");
     out.string(
         "\"device.model\"",
         "a GSDML file has no model name: the device access point's name stands for it",
     );
-    out.string(
-        "\"device.revision\"",
-        "a GSDML file has no revision: its software release stands for it",
-    );
+    if has_revision {
+        out.string(
+            "\"device.revision\"",
+            "a GSDML file has no revision: its software release stands for it",
+        );
+    }
     let reason = quote(&format!("imported from {file}"));
     let mut tables = vec!["device", "telegram", "profinet"];
     if !records.mappings().is_empty() {
@@ -395,6 +397,10 @@ fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
     })
 }
 
+fn software_release(dap: &Dap) -> Option<&str> {
+    attribute(&dap.item.attributes, "ModuleInfo/SoftwareRelease@Value")
+}
+
 fn device_table(
     out: &mut TomlOut,
     device: &PnDevice,
@@ -408,14 +414,22 @@ fn device_table(
     out.string("family", &name.family);
     let dap_name = dap.item.name.clone().unwrap_or_default();
     out.string("model", &dap_name.primary);
-    let release = |what| attribute(&dap.item.attributes, what).unwrap_or_default();
-    let software = release("ModuleInfo/SoftwareRelease@Value");
-    out.string("revision", software);
-    out.string(
-        "hardware_release",
-        release("ModuleInfo/HardwareRelease@Value"),
-    );
-    out.string("software_release", software);
+    // A device access point may have no releases (SEW's MOVI-C); the
+    // description then has none, nor the revision that stands for one.
+    let software = software_release(dap);
+    let releases = [
+        ("revision", software),
+        (
+            "hardware_release",
+            attribute(&dap.item.attributes, "ModuleInfo/HardwareRelease@Value"),
+        ),
+        ("software_release", software),
+    ];
+    for (key, value) in releases {
+        if let Some(value) = value {
+            out.string(key, value);
+        }
+    }
     out.key("name", text(&dap_name));
     if let Some(order) = attribute(&dap.item.attributes, "ModuleInfo/OrderNumber@Value") {
         out.string("order_number", order);
@@ -697,10 +711,7 @@ fn profinet(
     out.string("gsdml_version", &name.version);
     out.key("date", &name.date);
     let attributes = &dap.item.attributes;
-    out.string(
-        "dns_name",
-        attribute(attributes, "DNS_CompatibleName").unwrap_or_default(),
-    );
+    out.string("dns_name", &name_of_station(attributes, notes));
     out.key("ports", submodules_of(dap, SubmoduleKind::Port).count());
     out.key(
         "min_device_interval",
@@ -733,10 +744,24 @@ fn profinet(
     {
         out.key("standard_telegram_1", true);
     }
-    interface_properties(out, dap);
+    interface_properties(out, dap, notes);
 }
 
-fn interface_properties(out: &mut TomlOut, dap: &Dap) {
+/// The DAP's DNS_CompatibleName in lower case: the name of station a
+/// controller assigns has lower-case labels only (IEC 61158-6-10, E132),
+/// while the schema lets a file propose `FENA`; the change is said.
+fn name_of_station(attributes: &[Attribute], notes: &mut Notes) -> String {
+    let name = attribute(attributes, "DNS_CompatibleName").unwrap_or_default();
+    let lower = name.to_ascii_lowercase();
+    if lower != name {
+        notes.note(format!(
+            "DNS_CompatibleName `{name}` is imported as `{lower}`: a name of station has lower-case labels only (E132); the round trip judges the change"
+        ));
+    }
+    lower
+}
+
+fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes) {
     let interface = submodules_of(dap, SubmoduleKind::Interface).next();
     let interface_attributes = interface.map_or(&[][..], |s| &s.attributes[..]);
     if let Some(clocks) = attribute(
@@ -745,13 +770,11 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap) {
     ) {
         out.key("send_clock", list(clocks.split_whitespace()));
     }
-    for (key, name) in [
-        ("conformance_class", "CertificationInfo@ConformanceClass"),
-        ("netload_class", "CertificationInfo@NetloadClass"),
-    ] {
-        if let Some(class) = attribute(&dap.item.attributes, name) {
-            out.string(key, class);
-        }
+    if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@ConformanceClass") {
+        out.string("conformance_class", written_conformance_class(class, notes));
+    }
+    if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@NetloadClass") {
+        out.string("netload_class", class);
     }
     let records = submodules_of(dap, SubmoduleKind::Virtual)
         .next()
@@ -761,6 +784,18 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap) {
     if mrp_client(dap) {
         out.key("media_redundancy", true);
     }
+}
+
+/// Conformance class C (isochronous real time, RT_CLASS_3) is written as
+/// B, the most gsdc writes (E151), and said.
+fn written_conformance_class<'a>(class: &'a str, notes: &mut Notes) -> &'a str {
+    if class != "C" {
+        return class;
+    }
+    notes.note(
+        "conformance class C is imported as B: gsdc writes RT_CLASS_1 devices, not isochronous real time (E151); the round trip judges the change".to_string(),
+    );
+    "B"
 }
 
 /// A DAP's submodules of one kind, in the file's order.

@@ -206,9 +206,10 @@ pub struct Device {
     pub vendor: String,
     pub family: String,
     pub model: String,
-    pub revision: String,
-    pub hardware_release: String,
-    pub software_release: String,
+    /// With a GSD, the revision and the releases are always there (E004).
+    pub revision: Option<String>,
+    pub hardware_release: Option<String>,
+    pub software_release: Option<String>,
     pub order_number: Option<String>,
     pub name: Text,
     pub info: Option<Text>,

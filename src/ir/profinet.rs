@@ -235,8 +235,8 @@ pub struct Dap {
     pub name: TextRef,
     pub info: TextRef,
     pub order_number: Option<String>,
-    pub hardware_release: String,
-    pub software_release: String,
+    pub hardware_release: Option<String>,
+    pub software_release: Option<String>,
     pub ports: Vec<Port>,
     /// An MRP client: `MediaRedundancy`, the default ring ports.
     pub media_redundancy: bool,

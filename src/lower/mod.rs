@@ -49,7 +49,7 @@ pub fn lower(
     text: &str,
     files: Option<Files<'_>>,
 ) -> (Option<Ir>, Diagnostics) {
-    if let Some(missing) = missing_key(desc, text) {
+    if let Some(missing) = missing_key(desc, text).or_else(|| missing_gsd_identity(desc, text)) {
         return (None, Diagnostics(vec![missing]));
     }
     let latin1 = desc
@@ -204,6 +204,31 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
     )
 }
 
+/// E004 for the revision and releases a GSD states (`Revision`,
+/// `Hardware_Release`, `Software_Release`, mandatory keywords), which only a
+/// description without `[profibus]` may leave out: a GSDML device access
+/// point may have none (SEW's MOVI-C). Said at `[profibus]`, alone, as
+/// [`missing_key`] says its keys.
+fn missing_gsd_identity(desc: &Description, text: &str) -> Option<Diagnostic> {
+    let profibus = desc.profibus.as_ref()?;
+    let d = &desc.device;
+    let (key, keyword) = [
+        (&d.revision, "revision", "Revision"),
+        (&d.hardware_release, "hardware_release", "Hardware_Release"),
+        (&d.software_release, "software_release", "Software_Release"),
+    ]
+    .into_iter()
+    .find_map(|(value, key, keyword)| value.is_none().then_some((key, keyword)))?;
+    let start = profibus.span().start;
+    let line_end = text[start..].find('\n').map_or(text.len(), |n| start + n);
+    Some(
+        Diagnostic::error("E004", format!("missing field `device.{key}`"))
+            .at(start..line_end)
+            .label(format!("this GSD needs {keyword}"))
+            .help(format!("add `{key}` to [device]: a GSD states {keyword}; only a description without [profibus] may leave the revision and the releases out")),
+    )
+}
+
 fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> ir::Device {
     ir::Device {
         symbol: d
@@ -214,17 +239,18 @@ fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> 
         vendor: cx.gsd_string(&d.vendor, "Vendor_Name", "vendor"),
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, "Model_Name", "model"),
-        revision: cx.gsd_string(&d.revision, "Revision", "revision"),
-        hardware_release: cx.gsd_string(
-            &d.hardware_release,
-            "Hardware_Release",
-            "hardware_release",
-        ),
-        software_release: cx.gsd_string(
-            &d.software_release,
-            "Software_Release",
-            "software_release",
-        ),
+        revision: d
+            .revision
+            .as_ref()
+            .map(|r| cx.gsd_string(r, "Revision", "revision")),
+        hardware_release: d
+            .hardware_release
+            .as_ref()
+            .map(|r| cx.gsd_string(r, "Hardware_Release", "hardware_release")),
+        software_release: d
+            .software_release
+            .as_ref()
+            .map(|r| cx.gsd_string(r, "Software_Release", "software_release")),
         order_number: d
             .order_number
             .as_ref()

@@ -327,20 +327,28 @@ fn time_of_day(time: toml::value::Time) -> Result<TimeOfDay, &'static str> {
     })
 }
 
-/// Vendor and family as they go into the file name: letters, digits, `_`
-/// and `.`, since `-` separates the name's parts.
+/// Vendor and family as they go into the file name. The GSDML
+/// specification (5.1) lets them hold any character a Windows file name
+/// may, the space and `-` included (SEW's `MOVI-C-Decentralized-Electronics`);
+/// gsdc keeps to printable ASCII, and neither part may start or end with a
+/// space or `-`, so the name's parts stay readable and `gsdc check` splits
+/// them as written.
 fn file_name_part(cx: &mut Checker, part: &Spanned<String>, what: &str) -> String {
     let text = part.get_ref();
+    let edge = |c: char| c == ' ' || c == '-';
     let valid = !text.is_empty()
-        && text
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
+        && !text.starts_with(edge)
+        && !text.ends_with(edge)
+        && text.chars().all(|c| {
+            (c.is_ascii_graphic() || c == ' ')
+                && !crate::gsdml::version::WINDOWS_FORBIDDEN.contains(&c)
+        });
     if !valid {
         cx.push(
             Diagnostic::error("E133", format!("`{text}` cannot be part of a GSDML file name"))
                 .at(part.span())
-                .label("not letters and digits")
-                .help(format!("GSDML-V<version>-<Vendor>-<Family>-<date>.xml takes letters, digits and `_`; set {what}")),
+                .label("not a part of a file name")
+                .help(format!("GSDML-V<version>-<Vendor>-<Family>-<date>.xml takes printable ASCII but < > : \" / \\ | ? *, not starting or ending with a space or `-`; set {what}")),
         );
     }
     text.to_string()

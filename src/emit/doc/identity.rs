@@ -45,13 +45,18 @@ fn device_table(doc: &mut Builder, ir: &Ir, lang: Lang) {
         (lang.t(w::FAMILY), text(&d.family)),
         (lang.t(w::MODEL), text(&d.model)),
         (lang.t(w::NAME), text(lang.text(&d.name))),
-        (lang.t(w::REVISION), code(&d.revision)),
-        (lang.t(w::HARDWARE_RELEASE), code(&d.hardware_release)),
-        (lang.t(w::SOFTWARE_RELEASE), code(&d.software_release)),
     ];
-    if let Some(order) = &d.order_number {
-        rows.push((lang.t(w::ORDER_NUMBER), code(order)));
-    }
+    let optional = [
+        (w::REVISION, &d.revision),
+        (w::HARDWARE_RELEASE, &d.hardware_release),
+        (w::SOFTWARE_RELEASE, &d.software_release),
+        (w::ORDER_NUMBER, &d.order_number),
+    ];
+    rows.extend(
+        optional
+            .into_iter()
+            .filter_map(|(word, value)| Some((lang.t(word), code(value.as_deref()?)))),
+    );
     doc.table(
         lang.t(w::THE_DEVICE),
         &[lang.t(w::ITEM), lang.t(w::VALUE)],
@@ -239,8 +244,8 @@ fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
                 text(lang.text(&dap.name.text)),
                 code(format!("0x{:08X}", dap.ident)),
                 dap.order_number.as_deref().map_or_else(Vec::new, code),
-                code(&dap.hardware_release),
-                code(&dap.software_release),
+                dap.hardware_release.as_deref().map_or_else(Vec::new, code),
+                dap.software_release.as_deref().map_or_else(Vec::new, code),
                 text(dap.ports.len().to_string()),
                 max_io_data(dap),
                 text(modules),

@@ -84,10 +84,13 @@ fn lower_entry(
             )
         },
     );
-    let own = |cx: &mut Checker, s: &Option<Spanned<String>>, key: &str, inherited: &String| {
-        s.as_ref()
-            .map_or_else(|| inherited.clone(), |s| cx.required(s, &what(key)))
-    };
+    let own =
+        |cx: &mut Checker, s: &Option<Spanned<String>>, key: &str, inherited: &Option<String>| {
+            match s {
+                Some(s) => Some(cx.required(s, &what(key))),
+                None => inherited.clone(),
+            }
+        };
     let hardware_release = own(
         cx,
         &given.hardware_release,
@@ -100,10 +103,7 @@ fn lower_entry(
         "software_release",
         &first.software_release,
     );
-    let order_number = match &given.order_number {
-        Some(o) => Some(cx.required(o, &what("order_number"))),
-        None => first.order_number.clone(),
-    };
+    let order_number = own(cx, &given.order_number, "order_number", &first.order_number);
     let port_count = match &given.ports {
         Some(n) => cx.spanned_in_range(n, 1, 16, &what("ports"))?,
         None => u8::try_from(first.ports.len()).ok()?,
