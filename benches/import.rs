@@ -1,22 +1,25 @@
-//! `cargo bench --bench import`: `gsdc import` of the largest corpus GSD
-//! file and of the largest corpus GSDML file whose imports build, against
-//! `gsdc build` of the description each import makes, in one run, printing
-//! each ratio (above 1: the import is the faster).
+//! `cargo bench --bench import`: `gsdc import` against `gsdc build` of
+//! the description the import makes, in one run, printing each ratio
+//! (above 1: the import is the faster), for
 //!
-//! - as processes, as users run them: `gsdc import FILE --out DESC.toml`
-//!   (a new file each turn) against `gsdc build DESC.toml --out DIR`;
-//! - in process, on one thread: `import::import` against `load` and
-//!   `compile` of its description.
+//! - the largest corpus GSD file whose import builds;
+//! - the largest corpus file, SEW's MOVI-C GSDML (1.1 MB): its import builds
+//!   another device (E601, README's table), so `gsdc import` writes nothing
+//!   and exits 1 after the same work, and the build measured is of the
+//!   description it made ([`gsdc::import::Imported::another_device`]),
+//!   whose GSDML file is 52 kB: the import reads the whole file, the build
+//!   writes the part the format can say;
+//! - the largest GSDML file whose import is written (its round trip clean)
+//!   among the corpus's and those the shipped descriptions build (MV810's;
+//!   no corpus GSDML imports clean), where the two handle the same device.
 //!
-//! The import reads the whole file, then builds its description's GSD or
-//! GSDML file for its round trip (reads it back and compares it with the
-//! file, `gsdc diff`); the build writes the layouts besides and checks every
-//! file. The largest GSDML file is the largest corpus file, SEW's MOVI-C
-//! (1.1 MB): its build is another device (E601, README's table), so `gsdc
-//! import` writes nothing and exits 1 after the same work, and the build
-//! measured is of the description it made
-//! ([`gsdc::import::Imported::another_device`]). Needs ../shared beside the
-//! checkout.
+//! Each as processes, as users run them (`gsdc import FILE --out DESC.toml`,
+//! a new file each turn, against `gsdc build DESC.toml --out DIR`), and in
+//! process on one thread (`import::import` against `load` and `compile`).
+//! The import reads the file, then builds its description's GSD or GSDML
+//! file for its round trip (reads it back and compares it with the file,
+//! `gsdc diff`); the build writes the layouts besides and checks every file.
+//! Needs ../shared beside the checkout.
 
 #[path = "common/mod.rs"]
 mod common;
@@ -31,21 +34,27 @@ fn main() {
     let corpus = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus"));
     let dir = std::env::temp_dir().join(format!("gsdc-bench-import-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let gsd = largest_imported(device_files(&corpus.join("gsd")));
-    measure("GSD", gsd, &dir.join("gsd"));
-    let gsdml = largest_imported(device_files(&corpus.join("gsdml")));
-    measure("GSDML", gsdml, &dir.join("gsdml"));
+    let gsd = largest(device_files(&corpus.join("gsd")), Import::Builds);
+    measure("GSD file whose import builds", gsd, &dir.join("gsd"));
+    let gsdml = largest(device_files(&corpus.join("gsdml")), Import::Builds);
+    measure("GSDML file whose import builds", gsdml, &dir.join("gsdml"));
+    let shipped = shipped_gsdml_files(&dir);
+    let written = device_files(&corpus.join("gsdml"))
+        .into_iter()
+        .chain(shipped);
+    let clean = largest(written.collect(), Import::Written);
+    measure(
+        "GSDML file whose import is written",
+        clean,
+        &dir.join("clean"),
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Import against build of one file, as processes and in process.
 fn measure(kind: &str, (path, bytes, description): (PathBuf, Vec<u8>, String), dir: &Path) {
     let name = path.file_name().unwrap().to_string_lossy().into_owned();
-    println!(
-        "largest {kind} file whose import builds: {}, {} bytes",
-        path.display(),
-        bytes.len()
-    );
+    println!("largest {kind}: {}, {} bytes", path.display(), bytes.len());
     std::fs::create_dir_all(dir).unwrap();
     let desc = dir.join("imported.toml");
     std::fs::write(&desc, &description).unwrap();
@@ -88,17 +97,54 @@ fn device_files(folder: &Path) -> Vec<PathBuf> {
         .collect()
 }
 
-/// The largest of `files` whose import builds, its bytes and the
-/// description: the one `gsdc import` writes, or, where the build is
-/// another device (E601), the one it makes and does not write.
-fn largest_imported(files: Vec<PathBuf>) -> (PathBuf, Vec<u8>, String) {
+/// The GSDML files the shipped descriptions build, written into `dir`.
+fn shipped_gsdml_files(dir: &Path) -> Vec<PathBuf> {
+    let shipped = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/descriptions"));
+    let mut files = Vec::new();
+    for path in device_files(shipped) {
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let read = |p: &str| std::fs::read(shipped.join(p)).map_err(|e| e.to_string());
+        let Some(ir) = gsdc::load_with(&name, &text, &read).0 else {
+            continue;
+        };
+        for file in gsdc::compile(&ir).unwrap() {
+            if file.kind == gsdc::ArtifactKind::Gsdml {
+                let out = dir.join(&file.file_name);
+                std::fs::write(&out, &file.contents).unwrap();
+                files.push(out);
+            }
+        }
+    }
+    files
+}
+
+/// Which imports count.
+#[derive(Clone, Copy)]
+enum Import {
+    /// Its description builds: the one `gsdc import` writes, or the one it
+    /// makes and does not write, whose build is another device (E601).
+    Builds,
+    /// `gsdc import` writes it: its round trip is clean.
+    Written,
+}
+
+/// The largest of `files` whose import counts, its bytes and the
+/// description.
+fn largest(files: Vec<PathBuf>, counted: Import) -> (PathBuf, Vec<u8>, String) {
     let mut found: Vec<(PathBuf, Vec<u8>, String)> = files
         .into_iter()
         .filter_map(|path| {
             let bytes = std::fs::read(&path).ok()?;
             let name = path.file_name()?.to_string_lossy().into_owned();
             let imported = gsdc::import::import(&name, &bytes);
-            let description = imported.description.or(imported.another_device)?;
+            let description = match counted {
+                Import::Builds => imported.description.or(imported.another_device),
+                Import::Written => imported.description,
+            }?;
             Some((path, bytes, description))
         })
         .collect();

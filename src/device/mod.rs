@@ -20,6 +20,7 @@ pub mod pn;
 mod from_gsd;
 mod from_gsdml;
 
+use std::borrow::Cow;
 use std::fmt;
 use std::ops::{Deref, Range};
 use std::sync::{Arc, OnceLock};
@@ -41,25 +42,45 @@ pub enum Device {
 /// error, a GSD line the reader cannot read. `gsdc check` says why.
 /// `file_name` is the file's own name, when there is one.
 pub fn read(bytes: &[u8], file_name: Option<&str>) -> Option<Device> {
-    match crate::file_kind::detect(&bytes[..bytes.len().min(crate::file_kind::HEAD_BYTES)]) {
-        crate::file_kind::FileKind::Gsd => {
-            if crate::utf16::byte_order(bytes).is_some() {
-                return None;
+    read_with_text(bytes, file_name).0
+}
+
+/// [`read`], and the text the places of the device's facts are in: the
+/// GSDML file's decoded text when it is read as one, else the bytes as a
+/// GSD reader decodes them. Decoded once, for a reader that also shows
+/// the file (an import's findings).
+pub fn read_with_text<'b>(
+    bytes: &'b [u8],
+    file_name: Option<&str>,
+) -> (Option<Device>, Cow<'b, str>) {
+    use crate::file_kind::{detect, FileKind, HEAD_BYTES};
+    let kind = detect(&bytes[..bytes.len().min(HEAD_BYTES)]);
+    if kind == FileKind::Gsdml {
+        if let Ok(text) = crate::gsdml::decode(bytes) {
+            if let Some(device) = read_gsdml(&text, file_name) {
+                return (Some(Device::Pn(device)), text);
             }
-            let text = crate::gsd::decode(bytes);
-            let (file, findings) = crate::gsd::parse(&text);
-            (!findings.has_errors()).then(|| Device::Dp(read_gsd(&file, &text, file_name)))
         }
-        crate::file_kind::FileKind::Gsdml => {
-            let text = crate::gsdml::decode(bytes).ok()?;
-            let doc = crate::gsdml::parse_tree(&text)?;
-            let root = doc.root_element();
-            let is_gsdml =
-                crate::gsdml::tree::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
-            is_gsdml.then(|| Device::Pn(from_gsdml::read(&doc, file_name)))
-        }
-        crate::file_kind::FileKind::Bitmap | crate::file_kind::FileKind::Neither => None,
+        return (None, crate::gsd::decode(bytes));
     }
+    let text = crate::gsd::decode(bytes);
+    let is_gsd = kind == FileKind::Gsd && crate::utf16::byte_order(bytes).is_none();
+    if !is_gsd {
+        return (None, text);
+    }
+    let (file, findings) = crate::gsd::parse(&text);
+    let device = (!findings.has_errors()).then(|| Device::Dp(read_gsd(&file, &text, file_name)));
+    (device, text)
+}
+
+/// A GSDML file's device from its decoded text, `None` when it is not
+/// well-formed or not GSDML.
+fn read_gsdml(text: &str, file_name: Option<&str>) -> Option<PnDevice> {
+    let doc = crate::gsdml::parse_tree(text)?;
+    let root = doc.root_element();
+    let is_gsdml =
+        crate::gsdml::tree::in_gsdml(&root) && root.tag_name().name() == "ISO15745Profile";
+    is_gsdml.then(|| from_gsdml::read(&doc, file_name))
 }
 
 /// Where a fact is written: its line, and in a GSDML file the path of its

@@ -64,16 +64,11 @@ impl<'t> Tree<'t> {
         if !has_only_xml_characters(text) {
             return None;
         }
-        // Sized once from what bounds them, one element per `<` and one
-        // attribute per `=`, the lists are never copied as they grow: a
-        // 1 MB file has thousands of each. Capacity never used costs no
-        // memory the program touches.
-        let count = |b| memchr::memchr_iter(b, text.as_bytes()).count();
         let mut builder = Builder {
             tree: Tree {
                 text,
-                elements: Vec::with_capacity(count(b'<')),
-                attributes: Vec::with_capacity(count(b'=')),
+                elements: Vec::new(),
+                attributes: Vec::new(),
                 namespaces: Vec::new(),
             },
             open: Vec::new(),

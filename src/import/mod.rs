@@ -129,14 +129,8 @@ fn no_files(name: &str) -> Result<Vec<u8>, String> {
 
 /// The device a file describes, and its text as gsdc reads it.
 fn read(file_name: &str, bytes: &[u8]) -> (Option<Device>, String) {
-    let device = crate::device::read(bytes, Some(file_name));
-    let text = match &device {
-        Some(Device::Pn(_)) => crate::gsdml::decode(bytes)
-            .map(|t| t.into_owned())
-            .unwrap_or_default(),
-        _ => crate::gsd::decode(bytes).into_owned(),
-    };
-    (device, text)
+    let (device, text) = crate::device::read_with_text(bytes, Some(file_name));
+    (device, text.into_owned())
 }
 
 /// The round trip of `toml` against the file's device `old`: each breaking
@@ -232,7 +226,7 @@ impl Notes {
     }
 
     fn new(text: String) -> Notes {
-        let starts = text.match_indices('\n').map(|(i, _)| i + 1);
+        let starts = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1);
         Notes {
             lines: std::iter::once(0).chain(starts).collect(),
             text,
