@@ -1213,3 +1213,48 @@ fn a_later_daps_info_is_judged_against_what_it_would_inherit() {
         imported.diagnostics
     );
 }
+
+/// A value the import writes otherwise than the file says (a GSDML version,
+/// a conformance class or a name of station gsdc does not write) is a
+/// warning, and marked under `[choices]` with why: the build lists it among
+/// the description's own choices (W103), which a shipping build refuses
+/// until a maintainer has confirmed it.
+#[test]
+fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
+    let name = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
+    let imported = import(name, &support::corpus_file(&format!("gsdml/{name}")));
+    let toml = imported
+        .another_device
+        .as_deref()
+        .expect("its import builds");
+    let (ir, _) = descriptions::load_text("movi-c.toml", toml);
+    let ir = ir.expect("builds");
+    for (path, value, why) in [
+        (
+            "profinet.gsdml_version",
+            "\"2.32\"",
+            "GSDML V2.34 is not imported",
+        ),
+        (
+            "profinet.conformance_class",
+            "\"B\"",
+            "conformance class C is imported as B",
+        ),
+        (
+            "profinet.dns_name",
+            "\"sew-eurodrive-dfc2xx\"",
+            "DNS_CompatibleName `SEW-EURODRIVE-DFC2xX` is imported as `sew-eurodrive-dfc2xx`",
+        ),
+    ] {
+        let decision = ir
+            .decisions
+            .iter()
+            .find(|d| d.path == path)
+            .unwrap_or_else(|| panic!("{path}"));
+        assert_eq!(decision.value, value);
+        assert!(decision.reason.starts_with(why), "{}", decision.reason);
+        assert!(messages(&imported, "W600")
+            .iter()
+            .any(|m| m.starts_with(why)));
+    }
+}

@@ -132,7 +132,7 @@ fn merge(dp: TomlOut, pn: TomlOut, (gsd, gsdml): (&str, &str)) -> TomlOut {
     preamble.comment(&format!(
         "Imported by gsdc import from {gsd} and {gsdml}. Every value below is"
     ));
-    preamble.comment("the files', marked under [choices]: confirm each against the manual, then remove its mark.");
+    preamble.comment("the files', marked under [choices] (where one is not, its mark says why): confirm each against the manual, then remove its mark.");
     let mut out = preamble.sections();
     let gsd_parameters: Vec<String> = dp
         .iter()

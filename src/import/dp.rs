@@ -140,7 +140,7 @@ pub(super) fn describe(
     out.comment(&format!(
         "Imported by gsdc import from {file}. Every value below is the file's,"
     ));
-    out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
+    out.comment("marked under [choices] (where one is not, its mark says why): confirm each against the manual, then remove its mark.");
     device_table(&mut out, device, symbol);
     if let Card::Drive { pkw, pzd_words } = card {
         out.table("telegram");
@@ -166,6 +166,7 @@ pub(super) fn describe(
             out.key(&quote(&key), quote(&why));
         }
     }
+    notes.rewritten_marks(&mut out);
     Some(with_charset(out))
 }
 
@@ -437,9 +438,10 @@ fn gsd_file_name(file: &str, notes: &mut Notes) -> String {
         if tail.is_empty() { "IMPORTED" } else { &tail },
         if ext_ok { ext } else { "GSD" }
     );
-    notes.note(format!(
-        "`{file}` is not a GSD file name (8.3): the description names it `{name}`"
-    ));
+    notes.rewritten(
+        "profibus.file_name",
+        format!("`{file}` is not a GSD file name (8.3): the description names it `{name}`"),
+    );
     name
 }
 

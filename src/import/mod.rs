@@ -19,7 +19,7 @@ mod prm;
 mod symbol;
 mod toml_out;
 
-use toml_out::TomlOut;
+use toml_out::{quote, TomlOut};
 
 pub use both::{import_both, Both};
 pub use symbol::ImportedSymbol;
@@ -205,6 +205,9 @@ struct Notes {
     lines: Vec<usize>,
     diagnostics: Diagnostics,
     unsaid: usize,
+    /// The keys whose value the import writes otherwise than the file
+    /// says, with why: each is marked under `[choices]` with it.
+    rewritten: Vec<(String, String)>,
 }
 
 impl Notes {
@@ -232,6 +235,7 @@ impl Notes {
             text,
             diagnostics: Diagnostics::default(),
             unsaid: 0,
+            rewritten: Vec::new(),
         }
     }
 
@@ -284,6 +288,22 @@ impl Notes {
             Diagnostic::warning("W600", message)
                 .help("check it under [choices] before the release"),
         );
+    }
+
+    /// [`Notes::note`] for a value the description's `key` holds otherwise
+    /// than the file (a version or a class gsdc does not write), which
+    /// [`Notes::rewritten_marks`] then mark under `[choices]`: the header's
+    /// "every value below is the file's" does not hold for it.
+    fn rewritten(&mut self, key: &str, message: String) {
+        self.rewritten.push((key.to_string(), message.clone()));
+        self.note(message);
+    }
+
+    /// `[choices]` marks for the values written otherwise than the file.
+    fn rewritten_marks(&self, out: &mut TomlOut) {
+        for (key, why) in &self.rewritten {
+            out.key(&quote(key), quote(why));
+        }
     }
 
     /// E602: a file the description format cannot say.

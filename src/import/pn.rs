@@ -141,7 +141,7 @@ pub(super) fn describe(
     out.comment(&format!(
         "Imported by gsdc import from {file}. Every value below is the file's,"
     ));
-    out.comment("marked under [choices]: confirm each against the manual, then remove its mark.");
+    out.comment("marked under [choices] (where one is not, its mark says why): confirm each against the manual, then remove its mark.");
     device_table(&mut out, device, dap, &name, symbol);
     let records = Records::of(&modules);
     telegram_table(&mut out, &modules, pkw);
@@ -156,6 +156,7 @@ pub(super) fn describe(
     }
     super::dp::manual(&mut out);
     choices(&mut out, file, &records, software_release(dap).is_some());
+    notes.rewritten_marks(&mut out);
     Some(out)
 }
 
@@ -379,10 +380,13 @@ fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
         true => parts.version,
         false => {
             let written = crate::lower::DEFAULT_GSDML_VERSION;
-            notes.note(format!(
-                "GSDML {} is not imported: gsdc writes {written}, which the description names; the round trip judges the change",
-                parts.version
-            ));
+            notes.rewritten(
+                "profinet.gsdml_version",
+                format!(
+                    "GSDML {} is not imported: gsdc writes {written}, which the description names; the round trip judges the change",
+                    parts.version
+                ),
+            );
             written
         }
     };
@@ -731,9 +735,10 @@ fn profinet(
         _ => "both",
     };
     if module_pkw == "both" && with != without {
-        notes.note(format!(
-            "the modules with the PKW channel have PZD words {with:?}, those without {without:?}: the description offers the same lengths both ways, {with:?}"
-        ));
+        notes.rewritten(
+            "profinet.pzd_lengths",
+            format!("the modules with the PKW channel have PZD words {with:?}, those without {without:?}: the description offers the same lengths both ways, {with:?}"),
+        );
     }
     let offered = if with.is_empty() { &without } else { &with };
     out.key("pzd_lengths", list(offered));
@@ -754,9 +759,10 @@ fn name_of_station(attributes: &[Attribute], notes: &mut Notes) -> String {
     let name = attribute(attributes, "DNS_CompatibleName").unwrap_or_default();
     let lower = name.to_ascii_lowercase();
     if lower != name {
-        notes.note(format!(
-            "DNS_CompatibleName `{name}` is imported as `{lower}`: a name of station has lower-case labels only (E132); the round trip judges the change"
-        ));
+        notes.rewritten(
+            "profinet.dns_name",
+            format!("DNS_CompatibleName `{name}` is imported as `{lower}`: a name of station has lower-case labels only (E132); the round trip judges the change"),
+        );
     }
     lower
 }
@@ -792,7 +798,8 @@ fn written_conformance_class<'a>(class: &'a str, notes: &mut Notes) -> &'a str {
     if class != "C" {
         return class;
     }
-    notes.note(
+    notes.rewritten(
+        "profinet.conformance_class",
         "conformance class C is imported as B: gsdc writes RT_CLASS_1 devices, not isochronous real time (E151); the round trip judges the change".to_string(),
     );
     "B"
