@@ -235,6 +235,12 @@ pub(crate) fn conforms(root: &Json, node: &Json, value: &Toml) -> Result<(), Str
             n => Err(format!("{value:?} matches {n} of the alternatives")),
         };
     }
+    // `if` a value conforms to one schema, it must to `then`'s too.
+    if let (Some(condition), Some(then)) = (node.get("if"), node.get("then")) {
+        if conforms(root, condition, value).is_ok() {
+            conforms(root, then, value)?;
+        }
+    }
     if let Some(names) = node.get("enum").and_then(Json::as_array) {
         if !names
             .iter()
@@ -379,6 +385,9 @@ fn the_shipped_descriptions_conform_and_broken_ones_do_not() {
         include_str!("fixtures/invalid/unknown_key.toml"),
         include_str!("fixtures/invalid/profibus_key_typo.toml"),
         include_str!("fixtures/invalid/unknown_pkw_kind.toml"),
+        // A GSD's revision and releases: optional without [profibus] only.
+        include_str!("fixtures/invalid/gsd_without_revision.toml"),
+        include_str!("fixtures/invalid/gsd_without_releases.toml"),
     ];
     for text in invalid {
         let value: Toml = text.parse::<toml::Table>().map(Toml::Table).unwrap();

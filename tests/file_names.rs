@@ -89,9 +89,12 @@ fn a_gsdml_file_names_vendor_and_family_may_hold_dashes_and_spaces() {
     );
     for (vendor, family) in [
         ("-Acme", "X4"),
+        ("Acme-", "X4"),
+        (" Acme", "X4"),
         ("Acme", "X4 "),
         ("Acme", "X4/5"),
         ("Acme?", "X4"),
+        ("Acmé", "X4"),
     ] {
         let text = named(vendor, family);
         let codes: Vec<&str> = descriptions::error_places("own_idents.toml", &text)

@@ -879,12 +879,12 @@ fn changed_constructs(messages: &[&str]) -> String {
     let mut counts: std::collections::BTreeMap<String, usize> = Default::default();
     for message in messages {
         let subject = message
-            .split_once(": ")
-            .map_or(*message, |(_, m)| m)
-            .split(" (breaking)")
-            .next()
-            .and_then(|m| m.split(" (compatible)").next())
-            .unwrap_or_default();
+            .strip_prefix("the import builds another device: ")
+            .unwrap_or(message);
+        let subject = [" (breaking): ", " (compatible): "]
+            .iter()
+            .find_map(|class| subject.rsplit_once(class))
+            .map_or(subject, |(subject, _)| subject);
         *counts.entry(construct(subject)).or_default() += 1;
     }
     let named: Vec<String> = counts
@@ -904,8 +904,13 @@ fn changed_constructs(messages: &[&str]) -> String {
 fn construct(subject: &str) -> String {
     let words: Vec<&str> = subject.split(' ').collect();
     let last = words.last().copied().unwrap_or_default();
-    // A record, or a parameter of one: `record 1`.
-    if let Some(i) = words.iter().position(|&w| w == "record") {
+    // A record, or a parameter `of record N`; not the word in a name.
+    let of_record = words.windows(2).position(|w| w == ["of", "record"]);
+    let record = match words[0] {
+        "record" => Some(0),
+        _ => of_record.map(|i| i + 1),
+    };
+    if let Some(i) = record {
         return words[i..(i + 2).min(words.len())].join(" ");
     }
     if last.starts_with("(0x") {
@@ -1257,4 +1262,102 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
             .iter()
             .any(|m| m.starts_with(why)));
     }
+}
+
+/// A GSDML file name's vendor and family may both hold `-`: the import
+/// splits them where the family is the file's ProductFamily or the vendor
+/// its VendorName, at the only `-` when there is one, and otherwise at the
+/// first, marked under `[choices]` as its choice. The name the build
+/// writes is the same either way.
+#[test]
+fn a_file_names_vendor_and_family_are_split_as_the_file_names_them() {
+    let files = gsdc::compile(&descriptions::load("mv810-pnet02.toml")).unwrap();
+    let (_, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    // VendorName="Megmeet", ProductFamily="MV800".
+    for (name, vendor, family, chosen) in [
+        (
+            "GSDML-V2.32-MEGMEET-MV-800-20230830.xml",
+            "MEGMEET",
+            "MV-800",
+            false,
+        ),
+        (
+            "GSDML-V2.32-MEG-MEET-MV800-20230830.xml",
+            "MEG-MEET",
+            "MV800",
+            false,
+        ),
+        (
+            "GSDML-V2.32-MEG-MEET-MV-800-20230830.xml",
+            "MEG",
+            "MEET-MV-800",
+            true,
+        ),
+    ] {
+        let imported = import(name, gsdml.as_bytes());
+        let toml = imported
+            .description
+            .as_deref()
+            .or(imported.another_device.as_deref())
+            .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
+        assert!(
+            toml.contains(&format!("file_vendor = \"{vendor}\"")),
+            "{name}"
+        );
+        assert!(toml.contains(&format!("family = \"{family}\"")), "{name}");
+        assert_eq!(toml.contains("\"device.family\" = "), chosen, "{name}");
+        let (ir, diagnostics) = descriptions::load_text("mv810.toml", toml);
+        let ir = ir.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
+        assert_eq!(ir.profinet.unwrap().file_name, name);
+    }
+}
+
+/// A GSD file name that is not 8.3 is replaced, and the description's
+/// `profibus.file_name` is marked under `[choices]` with why.
+#[test]
+fn a_gsd_file_name_that_is_not_8_3_is_marked_with_why() {
+    let files = gsdc::compile(&descriptions::load("9kdp1.toml")).unwrap();
+    let (_, gsd) = descriptions::one(files, ArtifactKind::Gsd);
+    let imported = import("9kdp1-card.gsd", gsd.as_bytes());
+    let toml = imported
+        .description
+        .as_deref()
+        .or(imported.another_device.as_deref())
+        .expect("its import builds");
+    let mark = toml
+        .lines()
+        .find(|l| l.starts_with("\"profibus.file_name\" = "))
+        .unwrap_or_else(|| panic!("{toml}"));
+    assert!(
+        mark.contains("`9kdp1-card.gsd` is not a GSD file name (8.3)"),
+        "{mark}"
+    );
+}
+
+/// A GSD and a GSDML file whose device access point has no hardware
+/// release (a DAP may have none): the one description takes the GSD's,
+/// which the build then writes in the GSDML file too; the import says so.
+#[test]
+fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+    let (gsdml_name, gsdml) = descriptions::one(files.clone(), ArtifactKind::Gsdml);
+    let release = gsdml
+        .lines()
+        .find(|l| l.trim_start().starts_with("<HardwareRelease "))
+        .unwrap();
+    let without = gsdml.replacen(release, "", 1);
+    let both = import_both(
+        (&gsd_name, gsd.as_bytes()),
+        (&gsdml_name, without.as_bytes()),
+        &beside(&files),
+    );
+    let said = format!("{gsdml_name} has no ModuleInfo/HardwareRelease@Value: the description's is the GSD's Hardware_Release");
+    assert!(
+        messages(&both.gsd, "W600")
+            .iter()
+            .any(|m| m.starts_with(&said)),
+        "{:#?}",
+        both.gsd.diagnostics
+    );
 }

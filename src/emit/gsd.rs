@@ -173,12 +173,6 @@ fn render(template: &str, ir: &Ir, profibus: &Profibus) -> Result<String, miniji
         .render(context(ir, profibus))
 }
 
-/// The revision or a release: lowering refuses a `[profibus]` without them
-/// (E004), so a GSD always has its mandatory keywords.
-fn mandatory(value: &Option<String>) -> &str {
-    value.as_deref().unwrap_or_default()
-}
-
 fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
     let d = &ir.device;
     Context {
@@ -189,11 +183,11 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         gsd_revision: p.gsd_revision,
         vendor: &d.vendor,
         model: &d.model,
-        revision: mandatory(&d.revision),
+        revision: &p.releases.revision,
         ident_number: super::hex16(p.ident_number),
         notes: notes(ir),
-        hardware_release: mandatory(&d.hardware_release),
-        software_release: mandatory(&d.software_release),
+        hardware_release: &p.releases.hardware_release,
+        software_release: &p.releases.software_release,
         order_number: d.order_number.as_deref(),
         implementation_type: p.implementation_type.as_deref(),
         info_text: p.info_text.as_deref(),

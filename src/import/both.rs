@@ -84,10 +84,18 @@ fn identities_agree(dp: &DpDevice, pn: &PnDevice, gsdml_name: &str, notes: &mut 
     ];
     let mut agree = true;
     for (keyword, attributes, name) in facts {
-        let (Some(k), Some(a)) = (
+        let (k, a) = (
             dp.keyword(keyword),
             attributes.iter().find(|a| &*a.name == name),
-        ) else {
+        );
+        let (Some(k), Some(a)) = (k, a) else {
+            if k.is_some() {
+                // A DAP may leave out an order number or a release (SEW's
+                // MOVI-C does); the one description has the GSD's.
+                notes.note(format!(
+                    "{gsdml_name} has no {name}: the description's is the GSD's {keyword}, which the build writes in the GSDML file too; the round trip judges the change"
+                ));
+            }
             continue;
         };
         let gsdml_value = match &a.value {

@@ -166,7 +166,7 @@ pub(super) fn describe(
             out.key(&quote(&key), quote(&why));
         }
     }
-    notes.rewritten_marks(&mut out);
+    notes.chosen_marks(&mut out);
     Some(with_charset(out))
 }
 
@@ -438,7 +438,7 @@ fn gsd_file_name(file: &str, notes: &mut Notes) -> String {
         if tail.is_empty() { "IMPORTED" } else { &tail },
         if ext_ok { ext } else { "GSD" }
     );
-    notes.rewritten(
+    notes.chosen(
         "profibus.file_name",
         format!("`{file}` is not a GSD file name (8.3): the description names it `{name}`"),
     );

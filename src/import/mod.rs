@@ -205,9 +205,9 @@ struct Notes {
     lines: Vec<usize>,
     diagnostics: Diagnostics,
     unsaid: usize,
-    /// The keys whose value the import writes otherwise than the file
-    /// says, with why: each is marked under `[choices]` with it.
-    rewritten: Vec<(String, String)>,
+    /// The keys whose value the import chose, with why: each is marked
+    /// under `[choices]` with it.
+    chosen: Vec<(String, String)>,
 }
 
 impl Notes {
@@ -235,7 +235,7 @@ impl Notes {
             text,
             diagnostics: Diagnostics::default(),
             unsaid: 0,
-            rewritten: Vec::new(),
+            chosen: Vec::new(),
         }
     }
 
@@ -290,18 +290,20 @@ impl Notes {
         );
     }
 
-    /// [`Notes::note`] for a value the description's `key` holds otherwise
-    /// than the file (a version or a class gsdc does not write), which
-    /// [`Notes::rewritten_marks`] then mark under `[choices]`: the header's
-    /// "every value below is the file's" does not hold for it.
-    fn rewritten(&mut self, key: &str, message: String) {
-        self.rewritten.push((key.to_string(), message.clone()));
+    /// [`Notes::note`] for a value of the description's `key` the import
+    /// chose: one it writes otherwise than the file (a version or a class
+    /// gsdc does not write), or one the file does not say unambiguously.
+    /// [`Notes::chosen_marks`] marks it under `[choices]` with the same
+    /// words: the header's "every value below is the file's" does not hold
+    /// for it.
+    fn chosen(&mut self, key: &str, message: String) {
+        self.chosen.push((key.to_string(), message.clone()));
         self.note(message);
     }
 
-    /// `[choices]` marks for the values written otherwise than the file.
-    fn rewritten_marks(&self, out: &mut TomlOut) {
-        for (key, why) in &self.rewritten {
+    /// `[choices]` marks for the values the import chose.
+    fn chosen_marks(&self, out: &mut TomlOut) {
+        for (key, why) in &self.chosen {
             out.key(&quote(key), quote(why));
         }
     }

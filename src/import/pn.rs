@@ -133,7 +133,7 @@ pub(super) fn describe(
         );
         return None;
     }
-    let name = file_name(file, notes)?;
+    let name = file_name(file, device, notes)?;
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
     let later = daps::later_daps((dap, others), device_info, &modules, notes);
     unsaid_extras(device, (dap, &later), &modules, notes);
@@ -156,7 +156,7 @@ pub(super) fn describe(
     }
     super::dp::manual(&mut out);
     choices(&mut out, file, &records, software_release(dap).is_some());
-    notes.rewritten_marks(&mut out);
+    notes.chosen_marks(&mut out);
     Some(out)
 }
 
@@ -350,6 +350,43 @@ fn text(t: &Text) -> String {
     format!("{{ {} }}", parts.join(", "))
 }
 
+/// The vendor and the family of a file name's `Vendor-Family`, both of
+/// which may hold `-` (`SEW-MOVI-C-Decentralized-Electronics`): split where
+/// the family is the file's ProductFamily (its spaces as `-`) or the vendor
+/// its VendorName; else at the only `-`; else at the first, the import's
+/// choice, marked. The name the build writes is the same either way; the
+/// family is also the ProductFamily it writes.
+fn vendor_and_family<'n>(
+    both: &'n str,
+    device: &PnDevice,
+    notes: &mut Notes,
+) -> Option<(&'n str, &'n str)> {
+    let splits: Vec<(&str, &str)> = both
+        .match_indices('-')
+        .map(|(i, _)| (&both[..i], &both[i + 1..]))
+        .collect();
+    // Compared in one letter case, spaces as `-`.
+    let plain = |name: &str| name.replace(' ', "-").to_ascii_lowercase();
+    let the_file = |name: &str| attribute(&device.identity, name).map(plain);
+    let (product_family, vendor_name) = (
+        the_file("DeviceFunction/Family@ProductFamily"),
+        the_file("DeviceIdentity/VendorName@Value"),
+    );
+    let named = splits.iter().find(|(vendor, family)| {
+        product_family == Some(plain(family)) || vendor_name == Some(plain(vendor))
+    });
+    let only = (splits.len() == 1).then(|| splits[0]);
+    if let Some(split) = named.copied().or(only) {
+        return Some(split);
+    }
+    let &(vendor, family) = splits.first()?;
+    notes.chosen(
+        "device.family",
+        format!("the file name's `{both}` does not say where the vendor ends and the family begins, nor do its VendorName and ProductFamily: the import takes `{vendor}` and `{family}`"),
+    );
+    Some((vendor, family))
+}
+
 /// The parts of a GSDML file name gsdc writes: vendor, family, date.
 struct FileName {
     version: String,
@@ -361,7 +398,7 @@ struct FileName {
 /// `GSDML-V2.32-Vendor-Family-20230830[-071447].xml`, read as `gsdc
 /// check` reads file names; refused otherwise, since the description's
 /// file name is made of these parts.
-fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
+fn file_name(file: &str, device: &PnDevice, notes: &mut Notes) -> Option<FileName> {
     let parts = match crate::gsdml::version::parse_file_name(file) {
         Ok(parts) => parts,
         Err(why) => {
@@ -371,16 +408,15 @@ fn file_name(file: &str, notes: &mut Notes) -> Option<FileName> {
             return None;
         }
     };
-    // `parse_file_name` found the vendor and the family on each side of a `-`,
-    // a date of eight digits and a time of six.
-    let (vendor, family) = parts.vendor_and_family.split_once('-')?;
+    // `parse_file_name` found a date of eight digits and a time of six.
+    let (vendor, family) = vendor_and_family(parts.vendor_and_family, device, notes)?;
     let date = parts.date;
     let day = format!("{}-{}-{}", &date[..4], &date[4..6], &date[6..]);
     let version = match crate::lower::SUPPORTED_GSDML_VERSIONS.contains(&parts.version) {
         true => parts.version,
         false => {
             let written = crate::lower::DEFAULT_GSDML_VERSION;
-            notes.rewritten(
+            notes.chosen(
                 "profinet.gsdml_version",
                 format!(
                     "GSDML {} is not imported: gsdc writes {written}, which the description names; the round trip judges the change",
@@ -735,7 +771,7 @@ fn profinet(
         _ => "both",
     };
     if module_pkw == "both" && with != without {
-        notes.rewritten(
+        notes.chosen(
             "profinet.pzd_lengths",
             format!("the modules with the PKW channel have PZD words {with:?}, those without {without:?}: the description offers the same lengths both ways, {with:?}"),
         );
@@ -759,7 +795,7 @@ fn name_of_station(attributes: &[Attribute], notes: &mut Notes) -> String {
     let name = attribute(attributes, "DNS_CompatibleName").unwrap_or_default();
     let lower = name.to_ascii_lowercase();
     if lower != name {
-        notes.rewritten(
+        notes.chosen(
             "profinet.dns_name",
             format!("DNS_CompatibleName `{name}` is imported as `{lower}`: a name of station has lower-case labels only (E132); the round trip judges the change"),
         );
@@ -798,7 +834,7 @@ fn written_conformance_class<'a>(class: &'a str, notes: &mut Notes) -> &'a str {
     if class != "C" {
         return class;
     }
-    notes.rewritten(
+    notes.chosen(
         "profinet.conformance_class",
         "conformance class C is imported as B: gsdc writes RT_CLASS_1 devices, not isochronous real time (E151); the round trip judges the change".to_string(),
     );

@@ -8,6 +8,28 @@ use super::{
 pub use crate::spec::Baud;
 use std::fmt;
 
+/// `Revision`, `Hardware_Release` and `Software_Release`: the device's
+/// (`[device]`), which lowering requires with a GSD (E004); optional for a
+/// GSDML file alone, so `ir::Device` has them as options.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct GsdReleases {
+    pub revision: String,
+    pub hardware_release: String,
+    pub software_release: String,
+}
+
+impl GsdReleases {
+    /// The device's, when it states all three.
+    pub fn of(device: &super::Device) -> Option<GsdReleases> {
+        Some(GsdReleases {
+            revision: device.revision.clone()?,
+            hardware_release: device.hardware_release.clone()?,
+            software_release: device.software_release.clone()?,
+        })
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Profibus {
@@ -15,6 +37,8 @@ pub struct Profibus {
     /// "latin-1"`), written one byte each; else they are 7-bit ASCII.
     pub latin1: bool,
     pub file_name: String,
+    /// The device's revision and releases, which a GSD must state.
+    pub releases: GsdReleases,
     pub gsd_revision: u8,
     pub ident_number: u16,
     /// Not assigned by PI: the files say so.

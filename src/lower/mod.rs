@@ -182,10 +182,6 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
     if desc.gateway.is_some() {
         return None;
     }
-    let first_line = |span: std::ops::Range<usize>| {
-        let line = &text[span.clone()];
-        span.start..span.start + line.find('\n').unwrap_or(line.len())
-    };
     let (key, span) = if desc.telegram.is_none() {
         ("telegram", 0..0)
     } else {
@@ -194,7 +190,7 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
         if p.ppo_types.is_some() || p.modules.is_some() {
             return None;
         }
-        ("ppo_types", first_line(profibus.span()))
+        ("ppo_types", first_line(text, profibus.span()))
     };
     Some(
         Diagnostic::error("E004", format!("missing field `{key}`"))
@@ -207,26 +203,40 @@ fn missing_key(desc: &Description, text: &str) -> Option<Diagnostic> {
 /// E004 for the revision and releases a GSD states (`Revision`,
 /// `Hardware_Release`, `Software_Release`, mandatory keywords), which only a
 /// description without `[profibus]` may leave out: a GSDML device access
-/// point may have none (SEW's MOVI-C). Said at `[profibus]`, alone, as
-/// [`missing_key`] says its keys.
+/// point may have none (SEW's MOVI-C). Every one missing in one finding,
+/// at `[profibus]`, alone, as [`missing_key`] says its keys.
 fn missing_gsd_identity(desc: &Description, text: &str) -> Option<Diagnostic> {
     let profibus = desc.profibus.as_ref()?;
     let d = &desc.device;
-    let (key, keyword) = [
+    let missing: Vec<(&str, &str)> = [
         (&d.revision, "revision", "Revision"),
         (&d.hardware_release, "hardware_release", "Hardware_Release"),
         (&d.software_release, "software_release", "Software_Release"),
     ]
     .into_iter()
-    .find_map(|(value, key, keyword)| value.is_none().then_some((key, keyword)))?;
-    let start = profibus.span().start;
-    let line_end = text[start..].find('\n').map_or(text.len(), |n| start + n);
+    .filter(|(value, ..)| value.is_none())
+    .map(|(_, key, keyword)| (key, keyword))
+    .collect();
+    if missing.is_empty() {
+        return None;
+    }
+    let keys: Vec<String> = missing
+        .iter()
+        .map(|(key, _)| format!("`device.{key}`"))
+        .collect();
+    let keywords: Vec<&str> = missing.iter().map(|(_, keyword)| *keyword).collect();
     Some(
-        Diagnostic::error("E004", format!("missing field `device.{key}`"))
-            .at(start..line_end)
-            .label(format!("this GSD needs {keyword}"))
-            .help(format!("add `{key}` to [device]: a GSD states {keyword}; only a description without [profibus] may leave the revision and the releases out")),
+        Diagnostic::error("E004", format!("missing field {}", keys.join(", ")))
+            .at(first_line(text, profibus.span()))
+            .label(format!("this GSD needs {}", keywords.join(", ")))
+            .help("add what is missing to [device]: a GSD states Revision, Hardware_Release and Software_Release; only a description without [profibus] may leave them out"),
     )
+}
+
+/// The first line of `span` in `text`, without its line end.
+fn first_line(text: &str, span: std::ops::Range<usize>) -> std::ops::Range<usize> {
+    let line = &text[span.clone()];
+    span.start..span.start + line.find('\n').unwrap_or(line.len())
 }
 
 fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> ir::Device {

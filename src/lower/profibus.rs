@@ -11,8 +11,8 @@ use crate::diag::Diagnostic;
 use crate::i18n::files;
 use crate::ir::profibus::{
     Baud, Diagnosis, DiagnosisArea, DiagnosisBit, DpModule, Dpv1, Dpv1Class2, Features,
-    LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue, Profibus, UserPrm,
-    STANDARD_DIAG_BYTES,
+    GsdReleases, LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue,
+    Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
@@ -136,6 +136,8 @@ pub fn lower(
             .as_ref()
             .is_some_and(|c| *c.get_ref() == raw::Charset::Latin1),
         file_name: file_name(cx, &p.file_name),
+        // `missing_gsd_identity` has refused a description without them.
+        releases: GsdReleases::of(device)?,
         gsd_revision,
         ident_number: *ident.value.get_ref(),
         ident_placeholder: ident.placeholder,
