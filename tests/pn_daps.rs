@@ -25,6 +25,14 @@ fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
     descriptions::error_places(NAME, text)
 }
 
+/// The fixture with `daps` is refused with `code` alone, at the last
+/// `needle`.
+fn assert_refused_at(daps: &str, needle: &str, code: &str) {
+    let text = with_daps(daps);
+    let at = place(&text, needle);
+    assert_eq!(errors(&text), [(code, at.0, at.1)], "{daps}");
+}
+
 /// Line and column of the last `needle` in `text`.
 fn place(text: &str, needle: &str) -> (usize, usize) {
     gsdc::line_col(text, text.rfind(needle).unwrap())
@@ -94,21 +102,18 @@ fn a_later_dap_states_what_differs_and_takes_the_rest_from_the_first() {
 
 #[test]
 fn a_dap_sharing_an_ident_number_is_refused_at_it() {
-    let text = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x00001001\n");
-    let at = place(&text, "0x00001001");
-    assert_eq!(errors(&text), [("E176", at.0, at.1)]);
-    let twice = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\n");
-    let at = place(&twice, "0x200");
-    assert_eq!(errors(&twice), [("E176", at.0, at.1)]);
+    let shared = "[[profinet.daps]]\nname = \"V2\"\nident = 0x00001001\n";
+    assert_refused_at(shared, "0x00001001", "E176");
+    let twice = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\n";
+    assert_refused_at(twice, "0x200", "E176");
 }
 
 /// The first DAP's ports have ident numbers of their own: a third port's
 /// is not guessed.
 #[test]
 fn more_ports_than_the_first_need_their_ident_numbers() {
-    let text = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\n");
-    let at = place(&text, "3\n");
-    assert_eq!(errors(&text), [("E178", at.0, at.1)]);
+    let three = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\n";
+    assert_refused_at(three, "3\n", "E178");
     let stated = with_daps(
         "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\nport_idents = [1, 2, 3]\n",
     );
@@ -120,34 +125,26 @@ fn more_ports_than_the_first_need_their_ident_numbers() {
         .map(|p| p.ident)
         .collect();
     assert_eq!(idents, [1, 2, 3]);
-    let short = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nport_idents = [1]\n");
-    let at = place(&short, "[1]");
-    assert_eq!(errors(&short), [("E178", at.0, at.1)]);
+    let short = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nport_idents = [1]\n";
+    assert_refused_at(short, "[1]", "E178");
 }
 
 /// Stated, or the first's taken over on one port.
 #[test]
 fn a_dap_with_mrp_on_one_port_is_refused() {
-    let stated = with_daps(
-        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\nmedia_redundancy = true\n",
-    );
-    let at = place(&stated, "true");
-    assert_eq!(errors(&stated), [("E152", at.0, at.1)]);
-    let inherited = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\n");
-    let at = place(&inherited, "1\n");
-    assert_eq!(errors(&inherited), [("E152", at.0, at.1)]);
+    let stated =
+        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\nmedia_redundancy = true\n";
+    assert_refused_at(stated, "true", "E152");
+    let inherited = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 1\n";
+    assert_refused_at(inherited, "1\n", "E152");
 }
 
 #[test]
 fn a_dap_names_each_module_once() {
-    let twice = with_daps(
-        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = [\"pzd1\", \"pzd1\"]\n",
-    );
-    let at = place(&twice, "\"pzd1\"");
-    assert_eq!(errors(&twice), [("E183", at.0, at.1)]);
-    let none = with_daps("[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = []\n");
-    let at = place(&none, "[]");
-    assert_eq!(errors(&none), [("E183", at.0, at.1)]);
+    let twice = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = [\"pzd1\", \"pzd1\"]\n";
+    assert_refused_at(twice, "\"pzd1\"", "E183");
+    let none = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nmodules = []\n";
+    assert_refused_at(none, "[]", "E183");
 }
 
 /// A DAP that does not lower does not shift the names and places of the
