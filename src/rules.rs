@@ -113,6 +113,7 @@ pub const RULES: &[Rule] = &[
     rule("E158", "set at the drive and written by the master"),
     rule("E159", "a set-up step disagrees with a mapping"),
     rule("E160", "an example the telegrams cannot carry"),
+    rule("E161", "standard telegram 2 without PROFIdrive"),
     rule("E170", "a module's data not said once"),
     rule("E171", "not a config identifier"),
     rule("E172", "a keyword newer than the GSD revision"),

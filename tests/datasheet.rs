@@ -353,7 +353,7 @@ fn the_profidrive_channel_has_the_profiles_ids_and_worked_examples() {
         ["PWE1", "bytes 4-5", "value, high word", "value, high word"]
     );
     // The Chinese page has the same tables.
-    assert!(md.contains("*表 10 请求标识（PKE 位 15-12，十进制）*"));
+    assert!(md.contains("*表 11 请求标识（PKE 位 15-12，十进制）*"));
     assert!(md.contains("| 17 | 当前运行状态下无法处理请求 |"));
 }
 

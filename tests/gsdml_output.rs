@@ -493,18 +493,60 @@ fn text_values<'a>(doc: &'a Document) -> Vec<&'a str> {
         .collect()
 }
 
-/// A PROFIdrive card's standard telegram 1 is the profile's, placed as
-/// ABB's FENA places it: the module access point (no data, ident 0xFFFF)
+/// A PROFIdrive card's standard telegrams are the profile's, placed as
+/// ABB's FENA places them: the module access point (no data, ident 0xFFFF)
 /// fixed in subslot 1, the telegram fixed in subslot 2, both in API 14848,
-/// with the profile's word names; its other modules stay in API 0.
+/// with the profile's word names; telegram 2's speeds are Unsigned32 between
+/// two words, as in FENA's file; the card's other modules stay in API 0.
 #[test]
 fn a_profidrive_telegram_sits_behind_the_access_point_in_the_profiles_api() {
     let ir = fixture("profidrive.toml");
     let (text, _) = gsdml_of(&ir);
     let doc = Document::parse(&text).unwrap();
-    let module = elements(&doc, "ModuleItem")
-        .find(|m| m.attribute("ID") == Some("IDM_STD_TEL_1"))
-        .unwrap();
+    type Items = &'static [(&'static str, &'static str)];
+    const U16: &str = "Unsigned16";
+    let telegram_1: (_, Items, Items) = (
+        ("IDM_STD_TEL_1", "0x00000010"),
+        &[("STW1 (control word 1)", U16), ("NSOLL_A (speed setpoint A)", U16)],
+        &[("ZSW1 (status word 1)", U16), ("NIST_A (speed actual value A)", U16)],
+    );
+    let telegram_2: (_, Items, Items) = (
+        ("IDM_STD_TEL_2", "0x00000020"),
+        &[
+            ("STW1 (control word 1)", U16),
+            ("NSOLL_B (speed setpoint B)", "Unsigned32"),
+            ("STW2 (control word 2)", U16),
+        ],
+        &[
+            ("ZSW1 (status word 1)", U16),
+            ("NIST_B (speed actual value B)", "Unsigned32"),
+            ("ZSW2 (status word 2)", U16),
+        ],
+    );
+    for ((id, ident), output, input) in [telegram_1, telegram_2] {
+        let module = elements(&doc, "ModuleItem")
+            .find(|m| m.attribute("ID") == Some(id))
+            .unwrap();
+        assert_profidrive_module(&doc, module, ident, (output, input));
+    }
+    let other_apis: BTreeSet<&str> = elements(&doc, "VirtualSubmoduleItem")
+        .filter(|s| {
+            !s.ancestors()
+                .any(|a| a.attribute("ID").is_some_and(|id| id.starts_with("IDM_STD_TEL_")))
+        })
+        .filter_map(|s| s.attribute("API"))
+        .collect();
+    assert_eq!(other_apis, BTreeSet::from(["0"]));
+}
+
+/// One PROFIdrive module: its access point and data submodule placed, and
+/// its data items each way with their English names and data types.
+fn assert_profidrive_module(
+    doc: &Document,
+    module: Node,
+    ident: &str,
+    (output, input): (&[(&str, &str)], &[(&str, &str)]),
+) {
     let submodules: Vec<Node> = module
         .descendants()
         .filter(|n| n.has_tag_name("VirtualSubmoduleItem"))
@@ -519,47 +561,28 @@ fn a_profidrive_telegram_sits_behind_the_access_point_in_the_profiles_api() {
             )
         })
         .collect();
-    assert_eq!(
-        placed,
-        [("0x0000FFFF", "14848", "1"), ("0x00000010", "14848", "2")]
-    );
+    assert_eq!(placed, [("0x0000FFFF", "14848", "1"), (ident, "14848", "2")]);
     let access_point_data = children(submodules[0], "IOData").next().unwrap();
     assert_eq!(access_point_data.children().count(), 0);
+    let access_point_name = submodules[0]
+        .descendants()
+        .find(|n| n.has_tag_name("Name"))
+        .unwrap();
     assert_eq!(
-        english(
-            &doc,
-            attribute(
-                submodules[0]
-                    .descendants()
-                    .find(|n| n.has_tag_name("Name"))
-                    .unwrap(),
-                "TextId"
-            )
-        ),
+        english(doc, attribute(access_point_name, "TextId")),
         "Module Access Point"
     );
-    let words = |element: &str| -> Vec<&str> {
+    let items = |element: &str| -> Vec<(&str, &str)> {
         let io = submodules[1]
             .descendants()
             .find(|n| n.has_tag_name(element))
             .unwrap();
         children(io, "DataItem")
-            .map(|d| english(&doc, attribute(d, "TextId")))
+            .map(|d| (english(doc, attribute(d, "TextId")), attribute(d, "DataType")))
             .collect()
     };
-    assert_eq!(
-        words("Output"),
-        ["STW1 (control word 1)", "NSOLL_A (speed setpoint A)"]
-    );
-    assert_eq!(
-        words("Input"),
-        ["ZSW1 (status word 1)", "NIST_A (speed actual value A)"]
-    );
-    let other_apis: BTreeSet<&str> = elements(&doc, "VirtualSubmoduleItem")
-        .filter(|s| !s.ancestors().any(|a| a == module))
-        .filter_map(|s| s.attribute("API"))
-        .collect();
-    assert_eq!(other_apis, BTreeSet::from(["0"]));
+    assert_eq!(items("Output"), output, "{ident}");
+    assert_eq!(items("Input"), input, "{ident}");
     let category = children(module, "ModuleInfo").next().unwrap();
     assert_eq!(attribute(category, "CategoryRef"), "IDC_STANDARD_TELEGRAMS");
 }
@@ -723,15 +746,16 @@ fn stated_ident_numbers_replace_gsdcs_numbering() {
         idents("PortSubmoduleItem", "SubmoduleIdentNumber"),
         ["0x00000003", "0x00000004"]
     );
-    // The DAP's submodule, the access point, the telegram's data submodule,
-    // then the 1-PZD module, which keeps gsdc's number.
+    // The DAP's submodule, the access point and telegram 1's data
+    // submodule, the access point and telegram 2's, then the 1-PZD module:
+    // telegram 2 and the 1-PZD module keep gsdc's numbers.
     assert_eq!(
         idents("VirtualSubmoduleItem", "SubmoduleIdentNumber"),
-        ["0x00010001", "0x00000005", "0x00000B01", "0x00000101"]
+        ["0x00010001", "0x00000005", "0x00000B01", "0x00000005", "0x00000020", "0x00000101"]
     );
     assert_eq!(
         idents("ModuleItem", "ModuleIdentNumber"),
-        ["0x00000A01", "0x00000101"]
+        ["0x00000A01", "0x00000020", "0x00000101"]
     );
     let rust = descriptions::output_text(&ir, ArtifactKind::RustLayout);
     for constant in [

@@ -1042,8 +1042,8 @@ fn run_import(file: &std::path::Path, out: &std::path::Path) -> std::process::Ou
 /// The command: writes the description and the symbol's PNG beside it
 /// (the bitmap found beside the GSD in other letter case), in a folder it
 /// makes when missing, never over a file; a GSDML file whose import builds
-/// another device (ABB's FENA: standard telegram 2, PROFIsafe, attributes
-/// gsdc writes otherwise) is not written, exit 1, its errors shown first; a GSD
+/// another device (ABB's FENA: PROFIsafe, records that grow with the
+/// module, attributes gsdc writes otherwise) is not written, exit 1, its errors shown first; a GSD
 /// and a GSDML file of one card make one description.
 #[test]
 fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
@@ -1099,7 +1099,7 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
         stderr.starts_with("error[E601]: the import builds another device: "),
         "{stderr}"
     );
-    assert!(stderr.contains("warning[W600]: module `ID_MODULE_STD_TGM2` is not imported"));
+    assert!(stderr.contains("warning[W600]: module `ID_MODULE_SAFETY_ABB_PS1` is not imported"));
     assert!(stderr.contains(
         "warning[W600]: DNS_CompatibleName `FENA` is imported as `fena`: a name of station has lower-case labels only (E132)"
     ));
@@ -1188,6 +1188,42 @@ fn fenas_three_device_access_points_import() {
             "{dap}"
         );
     }
+}
+
+/// FENA's standard telegram 2 (STW1, NSOLL_B, STW2 / ZSW1, NIST_B, ZSW2;
+/// Unsigned16, Unsigned32, Unsigned16 each way, in API 14848 behind the
+/// module access point) is imported as `standard_telegram_2` with its own
+/// ident number, and the round trip finds nothing changed in its IO data,
+/// its API or its placement: what it finds in the module is its record 1,
+/// which grows with the module, and the attributes gsdc writes otherwise.
+#[test]
+fn fenas_standard_telegram_2_imports_as_the_profiles() {
+    let name = "GSDML-V2.33-ABB-FENA-20170914.xml";
+    let imported = import(name, &support::corpus_file(&format!("gsdml/{name}")));
+    let toml = imported.another_device.as_deref().expect("FENA's import builds");
+    assert_says(
+        toml,
+        &["standard_telegram_2 = true", "telegram2 = 0x00000012"],
+    );
+    // Named as gsdc names it (FENA's "Standard Telegram 2": a cosmetic change).
+    let module = "of module \"Standard telegram 2\" (0x00000012)";
+    let telegram_2: Vec<&str> = messages(&imported, "E601")
+        .into_iter()
+        .filter(|m| m.contains(module))
+        .collect();
+    assert!(!telegram_2.is_empty(), "the module is compared");
+    let unexpected: Vec<&&str> = telegram_2
+        .iter()
+        .filter(|m| {
+            !["record 1 ", "Writeable_IM_Records"]
+                .iter()
+                .any(|construct| m.contains(construct))
+        })
+        .collect();
+    assert!(unexpected.is_empty(), "{unexpected:#?}");
+    assert!(!messages(&imported, "W600")
+        .iter()
+        .any(|m| m.starts_with("module `ID_MODULE_STD_TGM2` is not imported")));
 }
 
 /// A later DAP without `info` takes DeviceIdentity's text, not the first

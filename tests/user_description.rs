@@ -258,6 +258,7 @@ fn each_profinet_module_fixes_the_setting_when_the_card_also_has_profibus() {
             telegram_selection_refs(&gsdml),
             [
                 fixed("IDM_STD_TEL_1", "1"),
+                fixed("IDM_STD_TEL_2", "2"),
                 fixed("IDM_PZD_2", "999"),
                 fixed("IDM_PZD_4", "999"),
                 fixed("IDM_PZD_6", "999"),
@@ -283,7 +284,7 @@ fn each_profinet_module_fixes_the_setting_when_the_card_also_has_profibus() {
             }
             // A user value, as any setting: its default and choices.
             _ => {
-                assert!(gsd.contains("ExtUserPrmData = 9 \"Telegram selection (P0922)\"\r\nUnsigned16 999 1,999\r\n"), "{gsd}");
+                assert!(gsd.contains("ExtUserPrmData = 9 \"Telegram selection (P0922)\"\r\nUnsigned16 999 1,2,999\r\n"), "{gsd}");
                 assert!(
                     gsd.contains("Max_User_Prm_Data_Len       = 20\r\n"),
                     "{gsd}"

@@ -184,15 +184,22 @@ fn md810_reads_f0_08_through_the_pkw_channel(text: &str) {
     );
 }
 
+/// Both standard telegrams of profidrive.toml: the controller reads
+/// telegram 2's 8 bytes each way from the GSDML's Unsigned16, Unsigned32,
+/// Unsigned16, the device the layout's 4 words; and each module in API
+/// 0x3A00 is refused when the layout would place it in API 0.
 fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
     assert_lines(
         text,
         &[
             "subslot 1 ident 0xFFFF API 0x3A00 in 0 out 0, subslot 2 ident 0x10 API 0x3A00 in 4 out 4",
+            "subslot 1 ident 0xFFFF API 0x3A00 in 0 out 0, subslot 2 ident 0x20 API 0x3A00 in 8 out 8",
             "API 0x3A00: the device checked it against its layout before pnio saw the Connect",
             "PASS IDM_STD_TEL_1",
+            "PASS IDM_STD_TEL_2",
+            "negative: IDM_STD_TEL_2, the device's layout places it in API 0, the GSDML in API 14848",
             "Connect refused as expected: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)",
-            "PROFINET profidrive: 6 passed, 0 failed",
+            "PROFINET profidrive: 8 passed, 0 failed",
         ],
     );
 }

@@ -224,6 +224,17 @@ fn render_telegram(t: &Telegram) -> String {
         &[true, false, false, true, false, false],
         rows,
     );
+    for double in &t.double_words {
+        let _ = writeln!(
+            out,
+            "\n{} (bytes {}-{}) = 0x{:08X} = {}",
+            double.name,
+            double.offset,
+            double.offset + 3,
+            double.value,
+            double.value
+        );
+    }
     for word in t.words.iter().filter(|w| !w.fields.is_empty()) {
         render_fields(&mut out, word);
     }

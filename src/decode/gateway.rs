@@ -122,6 +122,7 @@ pub(super) fn telegram(
         direction: module.direction,
         len: bytes.len(),
         words,
+        double_words: Vec::new(),
         pkw: None,
         gateway: Some(GatewayData {
             source: mapping.gateway_source(),

@@ -67,9 +67,9 @@ impl Module<'_> {
         }
     }
 
-    /// Whether its PZD words carry the description's mappings; standard
-    /// telegram 1 has fixed meanings instead, and a gateway's words are its
-    /// nodes'.
+    /// Whether its PZD words carry the description's mappings; the
+    /// standard telegrams have fixed meanings instead, and a gateway's words
+    /// are its nodes'.
     pub fn is_mapped(self) -> bool {
         match self {
             Module::Ppo(..) => true,
@@ -79,7 +79,8 @@ impl Module<'_> {
     }
 
     /// Whether PZD1 is the description's control or status word; in
-    /// PROFIdrive's standard telegram 1 it is the profile's STW1 or ZSW1.
+    /// PROFIdrive's standard telegrams 1 and 2 it is the profile's STW1 or
+    /// ZSW1.
     pub fn has_vendor_words(self) -> bool {
         match self {
             Module::Ppo(..) => true,
@@ -88,8 +89,8 @@ impl Module<'_> {
         }
     }
 
-    /// Whether it is a PROFIdrive card's standard telegram 1, whose PZD1 is
-    /// the profile's STW1 or ZSW1.
+    /// Whether it is a PROFIdrive card's standard telegram 1 or 2, whose
+    /// PZD1 is the profile's STW1 or ZSW1.
     pub fn is_profidrive_telegram(self) -> bool {
         matches!(self, Module::Profinet(m) if m.is_profidrive())
     }
@@ -102,11 +103,33 @@ impl Module<'_> {
                     Direction::Out => &m.output,
                     Direction::In => &m.input,
                 };
-                items.iter().map(|item| item.text.text.en.clone()).collect()
+                items.iter().flat_map(item_word_names).collect()
             }
             Module::Ppo(_, layout) => ppo_word_names(ir, layout, direction),
             Module::Gateway(_, m) => (1..=m.words).map(word_name).collect(),
         }
+    }
+
+    /// The 32-bit items in `direction`: the word each starts at (from 0,
+    /// the PKW channel's counted) and its name; none but in standard
+    /// telegram 2.
+    pub fn double_words(self, direction: Direction) -> Vec<(usize, String)> {
+        let Module::Profinet(m) = self else {
+            return Vec::new();
+        };
+        let items = match direction {
+            Direction::Out => &m.output,
+            Direction::In => &m.input,
+        };
+        let mut word = 0;
+        let mut found = Vec::new();
+        for item in items {
+            if item.double_word {
+                found.push((word, item.text.text.en.clone()));
+            }
+            word += usize::from(item.words());
+        }
+        found
     }
 
     /// What the module holds, for a help line: "PPO1 is 12 bytes each way:
@@ -130,6 +153,16 @@ impl Module<'_> {
             layout.bytes(),
             layout.pzd_words
         )
+    }
+}
+
+/// The name of each word of a data item: a 32-bit item's two words, high
+/// word first (standard telegram 2's NSOLL_B and NIST_B).
+fn item_word_names(item: &crate::ir::profinet::DataItem) -> Vec<String> {
+    let name = &item.text.text.en;
+    match item.double_word {
+        false => vec![name.clone()],
+        true => vec![format!("{name}, high word"), format!("{name}, low word")],
     }
 }
 

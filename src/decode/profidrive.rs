@@ -1,5 +1,5 @@
 //! PROFIdrive's control word STW1 and status word ZSW1 as standard
-//! telegram 1 carries them (speed control), bit by bit: the words of a card
+//! telegrams 1 and 2 carry them (speed control), bit by bit: the words of a card
 //! that implements the profile, whatever its description calls the control
 //! word of its vendor telegrams.
 //!
@@ -9,8 +9,10 @@
 //! SIDOOR system manual ("bits 0 to 10 correspond exactly to the PROFIBUS
 //! profile Variable-speed drives") and Kollmorgen's AKD2G PROFINET manual.
 //! Bits 11 to 15 are the device's own; a description says nothing of them
-//! for standard telegram 1, so a set one shows as not described. The names
-//! say what a 1 means.
+//! for the standard telegrams, so a set one shows as not described. The
+//! names say what a 1 means. Telegram 2's STW2 and ZSW2 are shown as words:
+//! their bits 0 to 11 are the device's own (SINAMICS G120 Fieldbuses
+//! function manual, 3.1.1.2).
 
 use crate::ir::Direction;
 

@@ -18,6 +18,9 @@ pub struct Telegram {
     pub direction: Direction,
     pub len: usize,
     pub words: Vec<DecodedWord>,
+    /// The 32-bit values over two of the words (standard telegram 2's
+    /// NSOLL_B and NIST_B), high word first.
+    pub double_words: Vec<DoubleWord>,
     pub pkw: Option<Pkw>,
     /// A gateway module's: the node configuration it is read against.
     pub gateway: Option<GatewayData>,
@@ -77,6 +80,15 @@ pub struct DecodedWord {
     pub fields: Vec<Field>,
     /// A gateway module's word: the node it belongs to, when known.
     pub node: Option<NodeWord>,
+}
+
+/// A 32-bit value over two words, high word first.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct DoubleWord {
+    /// Its first byte in the telegram.
+    pub offset: usize,
+    pub name: String,
+    pub value: u32,
 }
 
 /// The mapping of a PZD word and what its value makes the word carry.
@@ -146,11 +158,25 @@ pub(super) fn decode(
         .pkw
         .then(|| pkw_channel::decode(ir, direction, &pkw_words(bytes)))
         .flatten();
+    let double_words = module
+        .double_words(direction)
+        .into_iter()
+        .filter_map(|(word, name)| {
+            let offset = 2 * word;
+            let four = bytes.get(offset..offset + 4)?.try_into().ok()?;
+            Some(DoubleWord {
+                offset,
+                name,
+                value: u32::from_be_bytes(four),
+            })
+        })
+        .collect();
     Telegram {
         module: module.name(),
         direction,
         len: bytes.len(),
         words,
+        double_words,
         pkw,
         gateway: None,
     }
@@ -182,7 +208,7 @@ fn pzd_kind(direction: Direction) -> MappingKind {
 }
 
 /// The fields of PZD1 when it is a control or status word: the
-/// description's, or in a PROFIdrive card's standard telegram 1 the
+/// description's, or in a PROFIdrive card's standard telegram 1 or 2 the
 /// profile's STW1 and ZSW1; with every set bit neither names.
 fn first_word_fields(ir: &Ir, module: Module<'_>, direction: Direction, value: u16) -> Vec<Field> {
     let mut fields = if module.has_vendor_words() {

@@ -374,6 +374,41 @@ fn profidrive_standard_telegram_1_names_the_profiles_words() {
     }
 }
 
+/// Standard telegram 2: STW1's bits as telegram 1's, NSOLL_B's two words
+/// (high word first, as PROFINET sends the Unsigned32) read as one value,
+/// and STW2 a word; the other way ZSW1, NIST_B, ZSW2.
+#[test]
+fn profidrive_standard_telegram_2_reads_its_32_bit_speed() {
+    let ir = profidrive();
+    let t = decode(&ir, "standard telegram 2", Out, "047F 0001 86A0 F000");
+    assert_eq!(
+        names_and_values(&t),
+        [
+            (0, "STW1 (control word 1)", 0x047F),
+            (2, "NSOLL_B (speed setpoint B), high word", 0x0001),
+            (4, "NSOLL_B (speed setpoint B), low word", 0x86A0),
+            (6, "STW2 (control word 2)", 0xF000),
+        ]
+    );
+    assert_eq!(
+        t.double_words,
+        [DoubleWord {
+            offset: 2,
+            name: "NSOLL_B (speed setpoint B)".into(),
+            value: 100_000,
+        }]
+    );
+    assert_eq!(t.words[0].fields.len(), 11);
+    assert!(t.words[1..].iter().all(|w| w.fields.is_empty() && w.carries.is_none()));
+    let t = decode(&ir, "standard telegram 2", In, "0237 FFFF FFFE 0000");
+    assert_eq!(t.double_words[0].name, "NIST_B (speed actual value B)");
+    assert_eq!(t.double_words[0].value, 0xFFFF_FFFE);
+    assert_eq!(t.words[3].name, "ZSW2 (status word 2)");
+    assert_eq!((t.words[0].fields[0].name.as_str(), t.words[0].fields[0].value), ("Ready to switch on", 1));
+    // Telegram 1 has none.
+    assert!(decode(&ir, "standard telegram 1", Out, "047F 4000").double_words.is_empty());
+}
+
 fn md810_default_prm() -> String {
     format!("00 00 00 {}", "F0 00 ".repeat(30))
 }

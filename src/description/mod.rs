@@ -332,6 +332,8 @@ pub struct PerModule {
     pub user_defined: Spanned<Address>,
     /// Standard telegram 1, when it is offered.
     pub standard_telegram_1: Option<Spanned<Address>>,
+    /// Standard telegram 2, when it is offered.
+    pub standard_telegram_2: Option<Spanned<Address>>,
     /// With `[profibus]`, which has no modules that could fix it: whether
     /// the master sets it in User_Prm_Data. Required there.
     pub profibus: Option<Spanned<OnProfibus>>,
@@ -538,6 +540,9 @@ pub struct Profinet {
     /// Also offer standard telegram 1: PROFIdrive's (STW1, NSOLL_A / ZSW1,
     /// NIST_A) when `telegram.profidrive`, else the manual's of 2 PZD words.
     pub standard_telegram_1: Option<Spanned<bool>>,
+    /// Also offer PROFIdrive's standard telegram 2 (STW1, NSOLL_B, STW2 /
+    /// ZSW1, NIST_B, ZSW2; 32-bit speeds): only with `telegram.profidrive`.
+    pub standard_telegram_2: Option<Spanned<bool>>,
     /// Record indexes of the parameter records, with their names.
     #[serde(default)]
     pub records: RecordIndexes,
@@ -616,6 +621,7 @@ pub struct ModuleInfo {
     /// Every module of PKW and PZD words the description maps.
     pub user_defined: Option<Spanned<Text>>,
     pub standard_telegram_1: Option<Spanned<Text>>,
+    pub standard_telegram_2: Option<Spanned<Text>>,
 }
 
 #[derive(Debug, Default, Deserialize)]

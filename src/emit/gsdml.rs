@@ -531,14 +531,14 @@ fn data_item(doc: &mut Doc, item: &DataItem) {
     if item.bits.is_empty() {
         doc.leaf(
             "DataItem",
-            &[("DataType", "Unsigned16"), ("TextId", &item.text.id)],
+            &[("DataType", item.data_type()), ("TextId", &item.text.id)],
         );
         return;
     }
     doc.open(
         "DataItem",
         &[
-            ("DataType", "Unsigned16"),
+            ("DataType", item.data_type()),
             ("UseAsBits", "true"),
             ("TextId", &item.text.id),
         ],

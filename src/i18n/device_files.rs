@@ -21,12 +21,18 @@ phrases! {
 
     /// PROFIdrive's name of its telegram 1.
     STANDARD_TELEGRAM_1 = { en: "Standard telegram 1", zh: "标准报文 1", de: "Standardtelegramm 1" };
+    STANDARD_TELEGRAM_2 = { en: "Standard telegram 2", zh: "标准报文 2", de: "Standardtelegramm 2" };
 
     /// What a module carries.
     profidrive_telegram_1_info(bytes: u16) = {
         en: "PROFIdrive standard telegram 1: STW1 and NSOLL_A to the drive, ZSW1 and NIST_A from it; {bytes} bytes each way",
         zh: "PROFIdrive 标准报文 1：STW1 和 NSOLL_A 发往驱动器，ZSW1 和 NIST_A 来自驱动器；每个方向 {bytes} 字节",
         de: "PROFIdrive-Standardtelegramm 1: STW1 und NSOLL_A zum Antrieb, ZSW1 und NIST_A vom Antrieb; {bytes} Byte je Richtung",
+    };
+    profidrive_telegram_2_info(bytes: u16) = {
+        en: "PROFIdrive standard telegram 2: STW1, NSOLL_B (32 bits) and STW2 to the drive, ZSW1, NIST_B (32 bits) and ZSW2 from it; {bytes} bytes each way",
+        zh: "PROFIdrive 标准报文 2：STW1、NSOLL_B（32 位）和 STW2 发往驱动器，ZSW1、NIST_B（32 位）和 ZSW2 来自驱动器；每个方向 {bytes} 字节",
+        de: "PROFIdrive-Standardtelegramm 2: STW1, NSOLL_B (32 Bit) und STW2 zum Antrieb, ZSW1, NIST_B (32 Bit) und ZSW2 vom Antrieb; {bytes} Byte je Richtung",
     };
     /// A vendor's telegram 1, under the name the description gives it.
     vendor_telegram_1_info(name: &str, n: u8, bytes: u16) = {
@@ -67,6 +73,16 @@ phrases! {
     NSOLL_A = { en: "NSOLL_A (speed setpoint A)", zh: "NSOLL_A（速度设定值 A）", de: "NSOLL_A (Drehzahlsollwert A)" };
     ZSW1 = { en: "ZSW1 (status word 1)", zh: "ZSW1（状态字 1）", de: "ZSW1 (Zustandswort 1)" };
     NIST_A = { en: "NIST_A (speed actual value A)", zh: "NIST_A（速度实际值 A）", de: "NIST_A (Drehzahlistwert A)" };
+    /// Telegram 2's further words: the 32-bit speed setpoint and actual
+    /// value (ABB FENA's GSDML: "Fail safe NSOLL_B", "Fail safe STW2", an
+    /// Unsigned32 between two Unsigned16 each way), control and status word
+    /// 2 (SINAMICS G120 Fieldbuses function manual, A5E34229197B, 3.1.1.2:
+    /// "Control word 2 (STW2)", "Status word 2 (ZSW2)", in telegrams 2, 3
+    /// and 4).
+    STW2 = { en: "STW2 (control word 2)", zh: "STW2（控制字 2）", de: "STW2 (Steuerwort 2)" };
+    NSOLL_B = { en: "NSOLL_B (speed setpoint B)", zh: "NSOLL_B（速度设定值 B）", de: "NSOLL_B (Drehzahlsollwert B)" };
+    ZSW2 = { en: "ZSW2 (status word 2)", zh: "ZSW2（状态字 2）", de: "ZSW2 (Zustandswort 2)" };
+    NIST_B = { en: "NIST_B (speed actual value B)", zh: "NIST_B（速度实际值 B）", de: "NIST_B (Drehzahlistwert B)" };
 
     /// The PKW channel's words, the same both ways (MD810's manual writes
     /// `PWE 高 16 位`, `低 16 位`; PROFIdrive's and MV810's names).
@@ -121,9 +137,9 @@ phrases! {
         de: "PROFINET-Identnummern, die [profinet.ident_numbers] nicht angibt",
     };
     IDENT_NUMBERS_RULE = {
-        en: "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 for standard telegram 1, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
-        zh: "模块：nn 个 PZD 字为 0x0000_01nn，带 PKW 通道为 0x0000_02nn，标准报文 1 为 0x0000_0010，各子模块与其模块相同；DAP 及其子模块为 0x0000_0001；接口和各端口为其子槽号（0x8000、0x8001……）",
-        de: "Module 0x0000_01nn für nn PZD-Wörter, 0x0000_02nn mit dem PKW-Kanal, 0x0000_0010 für Standardtelegramm 1, jedes Submodul die seines Moduls; der DAP und sein Submodul 0x0000_0001; die Schnittstelle und die Ports ihre Subslots (0x8000, 0x8001...)",
+        en: "modules 0x0000_01nn for nn PZD words, 0x0000_02nn with the PKW channel, 0x0000_0010 and 0x0000_0020 for standard telegrams 1 and 2, each submodule its module's; the DAP and its submodule 0x0000_0001; the interface and ports their subslots (0x8000, 0x8001...)",
+        zh: "模块：nn 个 PZD 字为 0x0000_01nn，带 PKW 通道为 0x0000_02nn，标准报文 1 和 2 为 0x0000_0010 和 0x0000_0020，各子模块与其模块相同；DAP 及其子模块为 0x0000_0001；接口和各端口为其子槽号（0x8000、0x8001……）",
+        de: "Module 0x0000_01nn für nn PZD-Wörter, 0x0000_02nn mit dem PKW-Kanal, 0x0000_0010 und 0x0000_0020 für die Standardtelegramme 1 und 2, jedes Submodul die seines Moduls; der DAP und sein Submodul 0x0000_0001; die Schnittstelle und die Ports ihre Subslots (0x8000, 0x8001...)",
     };
     IDENT_NUMBERS_WHY = {
         en: "the manual gives none; the layouts carry each",

@@ -18,6 +18,7 @@ use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, Su
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
 use crate::ir::profinet::{ModuleKind, PROFIDRIVE_API};
 use crate::ir::{Layout, PkwKind};
+use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 
 /// Attributes of the device access point gsdc writes, with the value it
 /// writes (`None`: the description states it).
@@ -73,6 +74,14 @@ const SUBMODULE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("Writeable_IM_Records", None),
 ];
 
+/// Each kind of module by its key in `per_module`, `[profinet.module_info]`
+/// and (the standard telegrams) `[profinet]`.
+const MODULE_KIND_KEYS: [(&str, ModuleKind); 3] = [
+    ("user_defined", ModuleKind::Pzd),
+    ("standard_telegram_1", ModuleKind::StandardTelegram1),
+    ("standard_telegram_2", ModuleKind::StandardTelegram2),
+];
+
 /// A module recognised: its data submodule, its PROFIdrive access point,
 /// and what it carries.
 struct Recognised<'a> {
@@ -89,6 +98,7 @@ impl Recognised<'_> {
     fn code_name(&self) -> String {
         match self.kind {
             ModuleKind::StandardTelegram1 => "telegram1".into(),
+            ModuleKind::StandardTelegram2 => "telegram2".into(),
             ModuleKind::Pzd if self.layout.pkw => format!("pkw_pzd{}", self.layout.pzd_words),
             ModuleKind::Pzd => format!("pzd{}", self.layout.pzd_words),
         }
@@ -190,7 +200,9 @@ fn choices(out: &mut TomlOut, file: &str, records: &Records, has_revision: bool)
 /// A module's kind and layout from its IO data: 16-bit words, as many each
 /// way; the PKW channel first when its four words have one of the names
 /// gsdc gives them; standard telegram 1 in PROFIdrive's API behind an
-/// access point, or a vendor's under gsdc's ID for it.
+/// access point, or a vendor's under gsdc's ID for it; standard telegram 2
+/// in PROFIdrive's API behind an access point, a 32-bit value between two
+/// words each way.
 fn recognise<'a>(module: &'a PnModule, notes: &mut Notes) -> Option<Recognised<'a>> {
     if !module.useable_submodules.is_empty() {
         notes.unsaid(
@@ -215,11 +227,21 @@ fn recognise<'a>(module: &'a PnModule, notes: &mut Notes) -> Option<Recognised<'
             return None;
         }
     };
+    if access_point.is_some() && is_telegram_2(data) {
+        return Some(Recognised {
+            module,
+            data,
+            access_point,
+            kind: ModuleKind::StandardTelegram2,
+            layout: Layout::new(false, STANDARD_TELEGRAM_2_WORDS),
+            pkw: None,
+        });
+    }
     let Some(words) = words(data) else {
         notes.unsaid(
             &format!("module `{}`", module.id),
             &data.place,
-            "its IO data is not 16-bit words as many each way, which the description's modules carry (a vendor's own PROFINET layout has no place in the format yet)",
+            "its IO data is not 16-bit words as many each way, nor PROFIdrive's standard telegram 2, which the description's modules carry (a vendor's own PROFINET layout has no place in the format yet)",
         );
         return None;
     };
@@ -270,6 +292,23 @@ fn words(s: &Submodule) -> Option<u8> {
         .then(|| u8::try_from(input).ok())
         .flatten()
         .filter(|w| (1..=20).contains(w))
+}
+
+/// Standard telegram 2's IO data: Unsigned16, Unsigned32, Unsigned16 each
+/// way (STW1, NSOLL_B, STW2; ZSW1, NIST_B, ZSW2).
+fn is_telegram_2(s: &Submodule) -> bool {
+    let shape = |p: &Option<crate::device::pn::IoPart>| {
+        p.as_ref().is_some_and(|p| {
+            let types: Vec<&str> = p
+                .items
+                .iter()
+                .filter(|i| i.length.is_none())
+                .map(|i| &*i.data_type)
+                .collect();
+            p.items.len() == 3 && types == ["Unsigned16", "Unsigned32", "Unsigned16"]
+        })
+    };
+    shape(&s.io.input) && shape(&s.io.output)
 }
 
 /// The PKW channel whose word names (in English) four items have.
@@ -500,10 +539,7 @@ fn telegram_table(out: &mut TomlOut, modules: &[Recognised], pkw: PkwKind) {
         .max()
         .unwrap_or(1);
     out.key("pzd_words", words);
-    if modules
-        .iter()
-        .any(|m| m.kind == ModuleKind::StandardTelegram1)
-    {
+    if modules.iter().any(|m| m.kind != ModuleKind::Pzd) {
         out.key("profidrive", modules.iter().any(Recognised::is_profidrive));
     }
     for (table, output) in [
@@ -684,11 +720,8 @@ fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
             _ => None,
         }
     };
-    let parts: Vec<String> = [
-        ("user_defined", ModuleKind::Pzd),
-        ("standard_telegram_1", ModuleKind::StandardTelegram1),
-    ]
-    .into_iter()
+    let parts: Vec<String> = MODULE_KIND_KEYS
+        .into_iter()
     .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
     .collect();
     out.key("per_module", format!("{{ {} }}", parts.join(", ")));
@@ -779,11 +812,10 @@ fn profinet(
     let offered = if with.is_empty() { &without } else { &with };
     out.key("pzd_lengths", list(offered));
     out.string("module_pkw", module_pkw);
-    if modules
-        .iter()
-        .any(|m| m.kind == ModuleKind::StandardTelegram1)
-    {
-        out.key("standard_telegram_1", true);
+    for (key, kind) in &MODULE_KIND_KEYS[1..] {
+        if modules.iter().any(|m| m.kind == *kind) {
+            out.key(key, true);
+        }
     }
     interface_properties(out, dap, notes);
 }
@@ -865,10 +897,7 @@ fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
     let profidrive = modules.iter().any(Recognised::is_profidrive);
     let mut infos: Vec<(&str, String)> = Vec::new();
     let mut name = None;
-    for (key, kind) in [
-        ("user_defined", ModuleKind::Pzd),
-        ("standard_telegram_1", ModuleKind::StandardTelegram1),
-    ] {
+    for (key, kind) in MODULE_KIND_KEYS {
         let of_kind: Vec<&Recognised> = modules.iter().filter(|m| m.kind == kind).collect();
         let Some(first) = of_kind.first() else {
             continue;

@@ -179,6 +179,7 @@ pub enum Holds {
 pub struct FixedByModule {
     pub user_defined: u16,
     pub standard_telegram_1: Option<u16>,
+    pub standard_telegram_2: Option<u16>,
     /// Whether User_Prm_Data carries the setting, a PROFIBUS master setting
     /// it, as the description says; true without `[profibus]`.
     pub in_user_prm: bool,

@@ -303,6 +303,10 @@ pub enum ModuleKind {
     /// in) when the card implements the profile, else the vendor's telegram
     /// of two PZD words the manual names so.
     StandardTelegram1,
+    /// PROFIdrive's standard telegram 2: STW1, NSOLL_B (32 bits), STW2
+    /// out; ZSW1, NIST_B (32 bits), ZSW2 in; four words each way. Only of a
+    /// card that implements the profile.
+    StandardTelegram2,
 }
 
 /// A selectable module with its one submodule of the same ident number.
@@ -371,12 +375,36 @@ pub const ACCESS_POINT_SUBSLOT: u16 = 1;
 pub const ACCESS_POINT_IDENT: u32 = 0x0000_FFFF;
 pub const PROFIDRIVE_DATA_SUBSLOT: u16 = 2;
 
-/// One Unsigned16 word of IO data; a word with named bits shows them.
+/// One item of IO data: an Unsigned16 word, or an Unsigned32 value over
+/// two words (high word first, as PROFINET sends it); a word with named
+/// bits shows them.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct DataItem {
     pub text: TextRef,
     pub bits: Vec<BitItem>,
+    /// Two words: PROFIdrive's 32-bit setpoint and actual value.
+    pub double_word: bool,
+}
+
+impl DataItem {
+    /// The PZD words it spans.
+    pub fn words(&self) -> u8 {
+        if self.double_word {
+            2
+        } else {
+            1
+        }
+    }
+
+    /// Its DataType in the GSDML file.
+    pub fn data_type(&self) -> &'static str {
+        if self.double_word {
+            "Unsigned32"
+        } else {
+            "Unsigned16"
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -202,12 +202,16 @@ fn fixed_by_module(
         Some(value)
     };
     let per_module = p.get_ref();
+    let user_defined = value(&per_module.user_defined)?;
+    // A value given that the setting does not allow fails the whole.
+    let mut given = |address: &Option<Spanned<raw::Address>>| match address {
+        Some(address) => value(address).map(Some),
+        None => Some(None),
+    };
     Some(FixedByModule {
-        user_defined: value(&per_module.user_defined)?,
-        standard_telegram_1: match &per_module.standard_telegram_1 {
-            Some(v) => Some(value(v)?),
-            None => None,
-        },
+        standard_telegram_1: given(&per_module.standard_telegram_1)?,
+        standard_telegram_2: given(&per_module.standard_telegram_2)?,
+        user_defined,
         in_user_prm: per_module
             .profibus
             .as_ref()

@@ -74,11 +74,11 @@ fn per_module_settings(
     desc: &raw::Description,
     (profibus, profinet): (Option<&Profibus>, Option<&Profinet>),
 ) {
-    let telegram_1 = profinet.is_some_and(|p| {
-        p.modules
-            .iter()
-            .any(|m| m.kind == ModuleKind::StandardTelegram1)
-    });
+    let offers = |kind| profinet.is_some_and(|p| p.modules.iter().any(|m| m.kind == kind));
+    let (telegram_1, telegram_2) = (
+        offers(ModuleKind::StandardTelegram1),
+        offers(ModuleKind::StandardTelegram2),
+    );
     for setting in &desc.settings {
         let Some(per_module) = &setting.per_module else {
             continue;
@@ -104,6 +104,8 @@ fn per_module_settings(
             Some("per_module needs PROFINET modules: the description has no [profinet]")
         } else if per_module.get_ref().standard_telegram_1.is_some() && !telegram_1 {
             Some("standard telegram 1 is not offered: set standard_telegram_1 = true or drop its value")
+        } else if per_module.get_ref().standard_telegram_2.is_some() && !telegram_2 {
+            Some("standard telegram 2 is not offered: set standard_telegram_2 = true or drop its value")
         } else {
             None
         };

@@ -29,7 +29,7 @@ pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
 pub(crate) use profinet::{
     info_prefix, module_description, pkw_words, DEFAULT_VERSION as DEFAULT_GSDML_VERSION,
-    SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
+    STANDARD_TELEGRAM_2_WORDS, SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
 };
 use toml::Spanned;
 

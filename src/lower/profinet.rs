@@ -20,7 +20,9 @@ mod interface;
 mod io;
 mod records;
 
-pub(crate) use io::{description as module_description, info_prefix, pkw_words};
+pub(crate) use io::{
+    description as module_description, info_prefix, pkw_words, STANDARD_TELEGRAM_2_WORDS,
+};
 
 /// `info` after a notice that the file is a draft, naming the identity
 /// numbers that are placeholders, while any is one: the DAP's InfoText
@@ -191,6 +193,7 @@ fn module_info(cx: &mut Checker, info: &raw::ModuleInfo, kind: ModuleKind) -> Op
     let text = match kind {
         ModuleKind::Pzd => info.user_defined.as_ref(),
         ModuleKind::StandardTelegram1 => info.standard_telegram_1.as_ref(),
+        ModuleKind::StandardTelegram2 => info.standard_telegram_2.as_ref(),
     };
     text.map(|t| cx.text(t, None, "module info"))
 }
@@ -397,8 +400,8 @@ fn dns_name(cx: &mut Checker, name: &Spanned<String>) -> String {
     text.clone()
 }
 
-/// The selectable modules: standard telegram 1 first when offered, then
-/// the PZD lengths with the PKW channel, then without.
+/// The selectable modules: standard telegrams 1 and 2 first when offered,
+/// then the PZD lengths with the PKW channel, then without.
 fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<(ModuleKind, Layout)> {
     let pkw_choices: &[bool] = match p.module_pkw.get_ref() {
         ModulePkw::With => &[true],
@@ -425,6 +428,13 @@ fn modules(cx: &mut Checker, p: &raw::Profinet, telegram: &Telegram) -> Vec<(Mod
             Layout::new(false, io::STANDARD_TELEGRAM_1_WORDS),
         ));
     }
+    if let Some(offer) = p.standard_telegram_2.as_ref().filter(|s| *s.get_ref()) {
+        check_standard_telegram_2(cx, offer.span(), telegram);
+        modules.push((
+            ModuleKind::StandardTelegram2,
+            Layout::new(false, io::STANDARD_TELEGRAM_2_WORDS),
+        ));
+    }
     for &pkw in pkw_choices {
         for &pzd_words in &lengths {
             modules.push((ModuleKind::Pzd, Layout::new(pkw, pzd_words)));
@@ -443,6 +453,34 @@ fn check_standard_telegram_1(cx: &mut Checker, p: &raw::Profinet, telegram: &Tel
             .at(p.pzd_lengths.span())
             .label("for this device")
             .help("raise telegram.pzd_words to 2 or drop standard_telegram_1"),
+        );
+    }
+}
+
+/// Standard telegram 2 is PROFIdrive's only (E161), and needs four PZD
+/// words of the telegram (E113).
+fn check_standard_telegram_2(cx: &mut Checker, offer: std::ops::Range<usize>, telegram: &Telegram) {
+    if !telegram.profidrive {
+        cx.push(
+            Diagnostic::error("E161", "standard telegram 2 of a card without PROFIdrive")
+                .at(offer.clone())
+                .label("PROFIdrive's telegram")
+                .help("standard telegram 2 (STW1, NSOLL_B, STW2 / ZSW1, NIST_B, ZSW2) is the profile's: set [telegram] profidrive = true when the drive follows it, or offer the manual's telegram as PZD words"),
+        );
+    }
+    if telegram.pzd_words < io::STANDARD_TELEGRAM_2_WORDS {
+        cx.push(
+            Diagnostic::error(
+                "E113",
+                format!(
+                    "standard telegram 2 needs {} PZD words; the telegram has {}",
+                    io::STANDARD_TELEGRAM_2_WORDS,
+                    telegram.pzd_words
+                ),
+            )
+            .at(offer)
+            .label("for this device")
+            .help("raise telegram.pzd_words to 4 or drop standard_telegram_2"),
         );
     }
 }

@@ -66,6 +66,22 @@ static inline void gsdc_word_put(uint8_t *words, size_t index, uint16_t value)
     gsdc_u16be_put(&words[2U * index], value);
 }
 
+/* Words `index` and `index + 1` as one 32-bit value, high word first, as
+ * PROFINET sends an Unsigned32: standard telegram 2's NSOLL_B and NIST_B are
+ * at index 1. The caller keeps `index + 1` below the number of words. */
+static inline uint32_t gsdc_double_word_get(const uint8_t *words, size_t index)
+{
+    return ((uint32_t)gsdc_word_get(words, index) << 16U) |
+           (uint32_t)gsdc_word_get(words, index + 1U);
+}
+
+/* Writes `value` to words `index` and `index + 1`, high word first. */
+static inline void gsdc_double_word_put(uint8_t *words, size_t index, uint32_t value)
+{
+    gsdc_word_put(words, index, (uint16_t)(value >> 16U));
+    gsdc_word_put(words, index + 1U, (uint16_t)(value & 0xFFFFU));
+}
+
 /* The field of `word` under `mask`, shifted down by `shift` (its first bit,
  * below 16): a layout's <FIELD>_MASK and <FIELD>_SHIFT. */
 static inline uint16_t gsdc_field_get(uint16_t word, uint16_t mask, unsigned int shift)

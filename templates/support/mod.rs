@@ -146,6 +146,20 @@ impl<const PZD: usize, const BYTES: usize> PzdTelegram<PZD, BYTES> {
         put_words(&mut bytes, &self.pzd);
         bytes
     }
+
+    /// PZD words `first` and `first + 1` (from 0) as one 32-bit value, high
+    /// word first, as PROFINET sends an Unsigned32: standard telegram 2's
+    /// NSOLL_B and NIST_B are `double_word(1)`. Panics beyond the words.
+    pub fn double_word(&self, first: usize) -> u32 {
+        (u32::from(self.pzd[first].get()) << 16) | u32::from(self.pzd[first + 1].get())
+    }
+
+    /// Writes `value` to PZD words `first` and `first + 1`, high word first.
+    pub fn set_double_word(&mut self, first: usize, value: u32) {
+        let [a, b, c, d] = value.to_be_bytes();
+        self.pzd[first] = U16Be([a, b]);
+        self.pzd[first + 1] = U16Be([c, d]);
+    }
 }
 
 impl<const PZD: usize, const BYTES: usize> Default for PzdTelegram<PZD, BYTES> {

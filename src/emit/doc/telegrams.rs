@@ -6,7 +6,7 @@ use super::page::{code, text, Builder, Cell};
 use super::svg::{self, Align, Item, Line, Rect, Style, Svg, Weight};
 use super::{bits, bytes, parameter_name, Lang};
 use crate::i18n::sheet as w;
-use crate::ir::profinet::{self, ModuleKind};
+use crate::ir::profinet::{self, DataItem, ModuleKind};
 use crate::ir::{
     Allowed, Bus, Direction, EntryKey, Ir, Layout, MappingKind, ModuleId, PkwKind, Word,
 };
@@ -242,61 +242,19 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
     } else {
         Vec::new()
     };
-    let data_items = m
+    let standard_telegram = m
         .profinet
-        .filter(|p| p.kind == ModuleKind::StandardTelegram1)
+        .filter(|p| p.kind != ModuleKind::Pzd)
         .map(|p| match direction {
             Direction::Out => &p.output,
             Direction::In => &p.input,
         });
-    let pzd = (1..=m.layout.pzd_words).map(|n| {
-        let first_byte = m.layout.pzd_word_offset(n);
-        let label = format!("PZD{n}");
-        if let Some(items) = data_items {
-            let item = &items[usize::from(m.layout.pkw_words() + n - 1)];
-            let role = lang.text(&item.text.text).to_string();
-            return WordView {
-                label,
-                role,
-                mapped: false,
-                parameter: None,
-                first_byte,
-                last_byte: first_byte + 1,
-                style: Style::Pzd,
-            };
-        }
-        if let (1, Some(word)) = (n, ir.telegram.word(direction)) {
-            return WordView {
-                label,
-                role: lang.text(&word.name).to_string(),
-                mapped: false,
-                parameter: None,
-                first_byte,
-                last_byte: first_byte + 1,
-                style: Style::Word,
-            };
-        }
-        match mapped(ir, lang, direction, n) {
-            Some((role, parameter)) => WordView {
-                label,
-                role,
-                mapped: true,
-                parameter,
-                first_byte,
-                last_byte: first_byte + 1,
-                style: Style::Pzd,
-            },
-            None => WordView {
-                label,
-                role: lang.t(w::NOT_MAPPED).to_string(),
-                mapped: false,
-                parameter: None,
-                first_byte,
-                last_byte: first_byte + 1,
-                style: Style::Pzd,
-            },
-        }
-    });
+    let pzd = match standard_telegram {
+        Some(items) => item_views(items, m.layout, lang),
+        None => (1..=m.layout.pzd_words)
+            .map(|n| pzd_view(ir, lang, (m.layout, n), direction))
+            .collect(),
+    };
     pkw.into_iter()
         .enumerate()
         .map(|(i, (label, role))| WordView {
@@ -310,6 +268,55 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
         })
         .chain(pzd)
         .collect()
+}
+
+/// A standard telegram's words as its data items name them: a 32-bit item
+/// (telegram 2's NSOLL_B, NIST_B) is one view of two words.
+fn item_views(items: &[DataItem], layout: Layout, lang: Lang) -> Vec<WordView> {
+    let mut n = 1;
+    items
+        .iter()
+        .map(|item| {
+            let last = n + item.words() - 1;
+            let label = match last == n {
+                true => format!("PZD{n}"),
+                false => format!("PZD{n}-PZD{last}"),
+            };
+            let first_byte = layout.pzd_word_offset(n);
+            n = last + 1;
+            WordView {
+                label,
+                role: lang.text(&item.text.text).to_string(),
+                mapped: false,
+                parameter: None,
+                first_byte,
+                last_byte: first_byte + 2 * u16::from(item.words()) - 1,
+                style: Style::Pzd,
+            }
+        })
+        .collect()
+}
+
+/// PZD word `n` of a module of PZD words: the control or status word, a
+/// mapped word, or one no mapping names.
+fn pzd_view(ir: &Ir, lang: Lang, (layout, n): (Layout, u8), direction: Direction) -> WordView {
+    let (role, parameter, style) = match (n, ir.telegram.word(direction)) {
+        (1, Some(word)) => (lang.text(&word.name).to_string(), None, Style::Word),
+        _ => match mapped(ir, lang, direction, n) {
+            Some((role, parameter)) => (role, Some(parameter), Style::Pzd),
+            None => (lang.t(w::NOT_MAPPED).to_string(), None, Style::Pzd),
+        },
+    };
+    let first_byte = layout.pzd_word_offset(n);
+    WordView {
+        label: format!("PZD{n}"),
+        role,
+        mapped: parameter.is_some(),
+        parameter: parameter.flatten(),
+        first_byte,
+        last_byte: first_byte + 1,
+        style,
+    }
 }
 
 /// A mapped PZD word: what it carries by default, and the drive parameter

@@ -248,13 +248,13 @@ fn module(ir: &Ir, m: &CyclicModule) -> Module {
 }
 
 fn telegram(ir: &Ir, m: &CyclicModule, dir: Direction) -> Telegram {
-    let (suffix, way, standard) = match dir {
-        Direction::Out => ("out", "Master to drive", "STW1 and NSOLL_A"),
-        Direction::In => ("in", "Drive to master", "ZSW1 and NIST_A"),
+    let (suffix, way) = match dir {
+        Direction::Out => ("out", "Master to drive"),
+        Direction::In => ("in", "Drive to master"),
     };
     let doc = Doc::at(Scope::Root).text(way);
     let doc = match (m.is_profidrive(), ir.telegram.word(dir)) {
-        (true, _) => doc.text(format!(": PROFIdrive {standard}.")),
+        (true, _) => doc.text(format!(": PROFIdrive {}.", profidrive_words(m, dir))),
         (false, Some(_)) => {
             let word = word_name(dir);
             doc.text(format!("; PZD1 is the {}, ", word.replace('_', " ")))
@@ -266,6 +266,22 @@ fn telegram(ir: &Ir, m: &CyclicModule, dir: Direction) -> Telegram {
     Telegram {
         name: m.ident.tagged(suffix),
         doc,
+    }
+}
+
+/// A PROFIdrive telegram's words in `dir`, a 32-bit value with its PZD
+/// words (the layouts carry words).
+fn profidrive_words(m: &CyclicModule, dir: Direction) -> &'static str {
+    let telegram_2 = m
+        .profinet
+        .is_some_and(|p| p.kind == profinet::ModuleKind::StandardTelegram2);
+    match (telegram_2, dir) {
+        (false, Direction::Out) => "STW1 and NSOLL_A",
+        (false, Direction::In) => "ZSW1 and NIST_A",
+        (true, Direction::Out) => {
+            "STW1, NSOLL_B (32 bits: PZD2 the high word, PZD3 the low) and STW2"
+        }
+        (true, Direction::In) => "ZSW1, NIST_B (32 bits: PZD2 the high word, PZD3 the low) and ZSW2",
     }
 }
 

@@ -551,7 +551,9 @@ fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
             (0, 0),
         ))
     });
-    let io = (2 * m.input.len(), 2 * m.output.len());
+    // The same both ways; a 32-bit item is two words (telegram 2's NSOLL_B).
+    let bytes = usize::from(m.layout.bytes());
+    let io = (bytes, bytes);
     let records = m.records.iter().map(|r| pn_record(ir, r)).collect();
     Value::Record(record(
         "pn module",

@@ -71,7 +71,7 @@ pub fn apply(
             Diagnostic::error("E179", "an access point ident number without a PROFIdrive module")
                 .at(a.span())
                 .label("no module has an access point")
-                .help("only PROFIdrive's standard telegram 1 (profinet.standard_telegram_1 with telegram.profidrive) has a module access point; remove the key"),
+                .help("only PROFIdrive's standard telegrams (profinet.standard_telegram_1 with telegram.profidrive, profinet.standard_telegram_2) have a module access point; remove the key"),
         ),
         (None, true) => numbered_by_gsdc = true,
         _ => {}

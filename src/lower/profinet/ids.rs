@@ -18,6 +18,7 @@ pub const DEVICE_SYMBOL: &str = "IDG_DEVICE_SYMBOL";
 pub fn module_tag(kind: ModuleKind, layout: Layout) -> String {
     match kind {
         ModuleKind::StandardTelegram1 => "STD_TEL_1".into(),
+        ModuleKind::StandardTelegram2 => "STD_TEL_2".into(),
         ModuleKind::Pzd if layout.pkw => format!("PKW_{}", layout.pzd_words),
         ModuleKind::Pzd => format!("PZD_{}", layout.pzd_words),
     }

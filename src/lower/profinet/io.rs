@@ -11,6 +11,8 @@ use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram,
 
 /// Standard telegram 1 has two words each way.
 pub const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
+/// Standard telegram 2 has four: a word, a 32-bit value, a word.
+pub const STANDARD_TELEGRAM_2_WORDS: u8 = 4;
 
 /// What names a module besides its kind and layout.
 pub struct Names<'a> {
@@ -24,7 +26,8 @@ pub struct Names<'a> {
 /// A module of `kind` and `layout`. Standard telegram 1 of a PROFIdrive
 /// card is the profile's: in its API, behind the module access point, with
 /// the profile's word names; of any other card it is the vendor's telegram
-/// of PZD words, named as the manual names it.
+/// of PZD words, named as the manual names it. Standard telegram 2 is only
+/// the profile's (lowering refuses it elsewhere, E114).
 pub fn module(
     (kind, layout): (ModuleKind, Layout),
     telegram: &Telegram,
@@ -32,13 +35,15 @@ pub fn module(
     names: Names,
 ) -> Module {
     let tag = module_tag(kind, layout);
-    let profidrive = kind == ModuleKind::StandardTelegram1 && telegram.profidrive;
-    let items = |direction| match profidrive {
-        true => profidrive_telegram_1(direction),
-        false => data_items(telegram, layout, direction),
+    let profidrive = kind != ModuleKind::Pzd && telegram.profidrive;
+    let items = |direction| match (kind, profidrive) {
+        (ModuleKind::StandardTelegram2, _) => profidrive_telegram_2(direction),
+        (_, true) => profidrive_telegram_1(direction),
+        (_, false) => data_items(telegram, layout, direction),
     };
     let name = match kind {
         ModuleKind::StandardTelegram1 => names.telegram_1.clone(),
+        ModuleKind::StandardTelegram2 => Text::phrase(files::STANDARD_TELEGRAM_2),
         ModuleKind::Pzd => pzd_name(layout),
     };
     let description = description(kind, layout, &name, profidrive);
@@ -81,7 +86,7 @@ fn access_point(tag: &str) -> AccessPoint {
 /// modules of PZD words only (a vendor's telegram 1 among them).
 pub fn category(kind: ModuleKind, layout: Layout, profidrive: bool) -> Category {
     let (tag, text) = match kind {
-        ModuleKind::StandardTelegram1 if profidrive => {
+        ModuleKind::StandardTelegram1 | ModuleKind::StandardTelegram2 if profidrive => {
             ("STANDARD_TELEGRAMS", files::CATEGORY_STANDARD_TELEGRAMS)
         }
         _ if layout.pkw => ("PKW_PZD", files::CATEGORY_PKW_PZD),
@@ -117,11 +122,12 @@ fn with_info(gsdc: Text, info: Option<Text>) -> Text {
 
 /// gsdc's numbering, where the description states none: stable ident
 /// numbers, so firmware and GSDML agree without a table:
-/// 0x0000_0010 standard telegram 1, 0x0000_01nn nn PZD words, 0x0000_02nn
-/// the PKW and nn PZD words.
+/// 0x0000_00n0 standard telegram n, 0x0000_01nn nn PZD words,
+/// 0x0000_02nn the PKW and nn PZD words.
 fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
     match kind {
         ModuleKind::StandardTelegram1 => 0x10,
+        ModuleKind::StandardTelegram2 => 0x20,
         ModuleKind::Pzd => (if layout.pkw { 0x200 } else { 0x100 }) + u32::from(layout.pzd_words),
     }
 }
@@ -133,11 +139,12 @@ fn pzd_name(layout: Layout) -> Text {
     }
 }
 
-/// `telegram1`, `pkw_pzd12`, `pzd12`.
+/// `telegram1`, `telegram2`, `pkw_pzd12`, `pzd12`.
 fn code_name(kind: ModuleKind, layout: Layout) -> Ident {
     let pzd = format!("pzd{}", layout.pzd_words);
     match kind {
         ModuleKind::StandardTelegram1 => Ident::of(&["telegram1"]),
+        ModuleKind::StandardTelegram2 => Ident::of(&["telegram2"]),
         ModuleKind::Pzd if layout.pkw => Ident::of(&["pkw", &pzd]),
         ModuleKind::Pzd => Ident::of(&[&pzd]),
     }
@@ -155,6 +162,9 @@ pub(crate) fn description(kind: ModuleKind, layout: Layout, name: &Text, profidr
         ModuleKind::StandardTelegram1 => Text::composed(&[name], |code, lang| {
             files::vendor_telegram_1_info(lang, name.get(code), n, bytes)
         }),
+        ModuleKind::StandardTelegram2 => {
+            Text::gsdc(|lang| files::profidrive_telegram_2_info(lang, bytes))
+        }
         ModuleKind::Pzd => Text::gsdc(|lang| match (layout.pkw_words(), n) {
             (0, 1) => files::pzd_module_info_one(lang, bytes),
             (0, n) => files::pzd_module_info(lang, n, bytes),
@@ -168,6 +178,7 @@ fn plain(tag: &str, text: Text) -> DataItem {
     DataItem {
         text: TextRef::new(format!("IDT_{tag}"), text),
         bits: Vec::new(),
+        double_word: false,
     }
 }
 
@@ -183,6 +194,22 @@ fn profidrive_telegram_1(direction: Direction) -> Vec<DataItem> {
         .iter()
         .map(|(tag, name)| plain(tag, Text::phrase(*name)))
         .collect()
+}
+
+/// PROFIdrive's telegram 2: control or status word 1, the 32-bit speed
+/// setpoint or actual value, control or status word 2, as ABB's FENA
+/// declares them (Unsigned16, Unsigned32, Unsigned16).
+fn profidrive_telegram_2(direction: Direction) -> Vec<DataItem> {
+    let [first, speed, second] = match direction {
+        Direction::In => [("ZSW1", files::ZSW1), ("NIST_B", files::NIST_B), ("ZSW2", files::ZSW2)],
+        Direction::Out => [("STW1", files::STW1), ("NSOLL_B", files::NSOLL_B), ("STW2", files::STW2)],
+    };
+    let item = |(tag, name): (&str, Phrase)| plain(tag, Text::phrase(name));
+    let speed = DataItem {
+        double_word: true,
+        ..item(speed)
+    };
+    vec![item(first), speed, item(second)]
 }
 
 /// The module's words one way, in telegram order: the PKW channel, then
@@ -203,6 +230,7 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
     };
     let pzd = (1..=layout.pzd_words).map(|n| match word {
         Some(word) if n == 1 => DataItem {
+            double_word: false,
             text: TextRef::new(format!("IDT_{tag}_WORD"), word.name.clone()),
             bits: word
                 .bits

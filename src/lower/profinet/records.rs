@@ -345,6 +345,9 @@ fn ref_value<'a>(
         (ModuleKind::StandardTelegram1, Some(fixed)) => {
             Some((set, entry, Some(fixed.standard_telegram_1?)))
         }
+        (ModuleKind::StandardTelegram2, Some(fixed)) => {
+            Some((set, entry, Some(fixed.standard_telegram_2?)))
+        }
         _ => None,
     }
 }
