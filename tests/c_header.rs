@@ -282,7 +282,7 @@ fn all_layouts_compile_together_in_one_translation_unit() {
 }
 
 /// The tests `tests/c/manuals.c` runs: the Rust firmware crate's, one by one.
-const MANUAL_TESTS: [&str; 39] = [
+const MANUAL_TESTS: [&str; 40] = [
     "md810_read_f0_08",
     "md810_answer_50_hz",
     "md810_write_20_hz",
@@ -322,6 +322,7 @@ const MANUAL_TESTS: [&str; 39] = [
     "profidrive_error_answer",
     "profidrive_an_illegal_id_is_refused",
     "profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it",
+    "profidrive_standard_telegram_2_carries_a_32_bit_speed",
 ];
 
 /// The values of `key` in the GSD gsdc generates from `name`, one per line

@@ -1089,6 +1089,28 @@ static void profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it(vo
     CHECK(PROFIDRIVE_TELEGRAM1_IDENT == 0x10UL);
 }
 
+/* Standard telegram 2 as ABB's FENA declares it: STW1, NSOLL_B (an
+ * Unsigned32, which PROFINET sends high byte first), STW2; 8 bytes, placed
+ * as telegram 1 is. NSOLL_B = 100000 (0x000186A0) is words 1 and 2. */
+static void profidrive_standard_telegram_2_carries_a_32_bit_speed(void)
+{
+    uint8_t telegram[PROFIDRIVE_TELEGRAM2_BYTES];
+    uint8_t again[PROFIDRIVE_TELEGRAM2_BYTES] = {0};
+    CHECK(PROFIDRIVE_TELEGRAM2_BYTES == 8U);
+    CHECK(PROFIDRIVE_TELEGRAM2_PZD_WORDS == 4U);
+    CHECK(PROFIDRIVE_TELEGRAM2_IDENT == 0x20UL);
+    CHECK(PROFIDRIVE_TELEGRAM2_API == 14848UL);
+    CHECK(PROFIDRIVE_TELEGRAM2_DATA_SUBSLOT == 2U);
+    words("047F 0001 86A0 F000", telegram, sizeof telegram);
+    CHECK(gsdc_word_get(&telegram[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 0U) == 0x047FU);
+    CHECK(gsdc_double_word_get(&telegram[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 1U) == 100000UL);
+    CHECK(gsdc_word_get(&telegram[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 3U) == 0xF000U);
+    gsdc_word_put(&again[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 0U, 0x047FU);
+    gsdc_double_word_put(&again[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 1U, 100000UL);
+    gsdc_word_put(&again[PROFIDRIVE_TELEGRAM2_PZD_OFFSET], 3U, 0xF000U);
+    CHECK(same_bytes(again, telegram, sizeof telegram));
+}
+
 /* ------------------------------------------------------------------------ */
 
 static const test_t tests[] = {
@@ -1137,6 +1159,8 @@ static const test_t tests[] = {
     {"profidrive_an_illegal_id_is_refused", profidrive_an_illegal_id_is_refused},
     {"profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it",
      profidrive_standard_telegram_1_is_placed_as_the_gsdml_declares_it},
+    {"profidrive_standard_telegram_2_carries_a_32_bit_speed",
+     profidrive_standard_telegram_2_carries_a_32_bit_speed},
 };
 
 int main(void)

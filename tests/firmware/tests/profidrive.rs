@@ -39,6 +39,31 @@ fn standard_telegram_1_is_placed_as_the_gsdml_declares_it() {
     assert_eq!(out.pzd[1].get(), 0x4000);
 }
 
+/// Standard telegram 2 as ABB's FENA declares it: STW1, NSOLL_B (an
+/// Unsigned32, high byte first on PROFINET), STW2; placed as telegram 1 is.
+/// NSOLL_B = 100000 (0x000186A0) is PZD2 and PZD3.
+#[test]
+fn standard_telegram_2_carries_a_32_bit_speed() {
+    assert_eq!(TELEGRAM2_IDENT, 0x20);
+    assert_eq!(TELEGRAM2_API, 14848);
+    assert_eq!(TELEGRAM2_ACCESS_POINT_SUBSLOT, 1);
+    assert_eq!(TELEGRAM2_DATA_SUBSLOT, 2);
+    let telegram = bytes::<8>("047F 0001 86A0 F000");
+    let out = Telegram2Out::from_bytes(&telegram);
+    assert_eq!(out.pzd[0].get(), 0x047F);
+    assert_eq!(out.double_word(1), 100_000);
+    assert_eq!(out.pzd[3].get(), 0xF000);
+    let mut sent = Telegram2Out::default();
+    sent.pzd[0] = out.pzd[0];
+    sent.set_double_word(1, 100_000);
+    sent.pzd[3] = out.pzd[3];
+    assert_eq!(sent.to_bytes(), telegram);
+    // The drive's answer: NIST_B of -1 (0xFFFFFFFF) across both words.
+    let mut answer = Telegram2In::default();
+    answer.set_double_word(1, u32::MAX);
+    assert_eq!(answer.to_bytes(), bytes::<8>("0000 FFFF FFFF 0000"));
+}
+
 /// The description writes the setting's parameter as `P10.05`; the layout
 /// holds 1005, the PNU the channel carries.
 #[test]
