@@ -186,7 +186,8 @@ fn md810_reads_f0_08_through_the_pkw_channel(text: &str) {
 
 /// Both standard telegrams of profidrive.toml: the controller reads
 /// telegram 2's 8 bytes each way from the GSDML's Unsigned16, Unsigned32,
-/// Unsigned16, the device the layout's 4 words; and each module in API
+/// Unsigned16, the device the layout's 4 words, and the speed written as the
+/// GSDML's Unsigned32 is the layout's 32-bit value; and each module in API
 /// 0x3A00 is refused when the layout would place it in API 0.
 fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
     assert_lines(
@@ -196,7 +197,11 @@ fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
             "subslot 1 ident 0xFFFF API 0x3A00 in 0 out 0, subslot 2 ident 0x20 API 0x3A00 in 8 out 8",
             "API 0x3A00: the device checked it against its layout before pnio saw the Connect",
             "PASS IDM_STD_TEL_1",
-            "PASS IDM_STD_TEL_2",
+            // The controller writes NSOLL_B as the GSDML's Unsigned32; the
+            // device's layout reads it from PZD2 and PZD3 and the drive
+            // model's actual speed follows it.
+            "  NSOLL_B (speed setpoint B) 0x000186A0 at byte 2 -> the layout read 100000 (PZD2) -> NIST_B (speed actual value B) 0x000186A0",
+            "PASS IDM_STD_TEL_2: 0 records decoded, 1 inputs observed, 0 scenario checks, 1 32-bit values read by the layout",
             "negative: IDM_STD_TEL_2, the device's layout places it in API 0, the GSDML in API 14848",
             "Connect refused as expected: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)",
             "PROFINET profidrive: 8 passed, 0 failed",
@@ -265,6 +270,45 @@ fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
     assert_lines(
         &text,
         &["FAIL IDM_STD_TEL_1: Connect failed: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)"],
+    );
+}
+
+/// A GSDML that puts telegram 2's 32-bit speed first (Unsigned32,
+/// Unsigned16, Unsigned16, the same 8 bytes): the controller writes NSOLL_B
+/// at byte 0, the layout reads PZD2 and PZD3, and the exchange fails saying
+/// what the layout read (0x86A00000: the setpoint's low word and STW1's
+/// place); telegram 1 still passes.
+#[test]
+fn a_gsdml_that_moves_telegram_2s_speed_fails_and_says_what_the_layout_read() {
+    if !can_run() {
+        return;
+    }
+    let description = "tests/fixtures/valid/profidrive.toml";
+    let dir = edited_gsdml(description, |t| {
+        let order = |first: &str, speed: &str| {
+            (
+                format!(
+                    "<DataItem DataType=\"Unsigned16\" TextId=\"IDT_{first}\"/>\n                  <DataItem DataType=\"Unsigned32\" TextId=\"IDT_{speed}\"/>"
+                ),
+                format!(
+                    "<DataItem DataType=\"Unsigned32\" TextId=\"IDT_{speed}\"/>\n                  <DataItem DataType=\"Unsigned16\" TextId=\"IDT_{first}\"/>"
+                ),
+            )
+        };
+        let (input, moved_input) = order("ZSW1", "NIST_B");
+        let (output, moved_output) = order("STW1", "NSOLL_B");
+        assert!(t.contains(&input) && t.contains(&output));
+        t.replace(&input, &moved_input).replace(&output, &moved_output)
+    });
+    let (status, text) = exchange(&[description], Some(&dir));
+    assert_eq!(status, 1, "{text}");
+    assert_lines(
+        &text,
+        &[
+            "PASS IDM_STD_TEL_1",
+            "FAIL IDM_STD_TEL_2: slot 1 subslot 2, byte 0 (NSOLL_B (speed setpoint B)): the layout read [0, 2258632704], the controller wrote 100000",
+            "PROFINET profidrive: 7 passed, 1 failed",
+        ],
     );
 }
 

@@ -27,7 +27,7 @@ pub use mapping::{MappingInForce, ValueSource};
 pub use module::{find_module, Module};
 pub use pkw_channel::{Channel, Pkw, PkwSide};
 pub use prm::Prm;
-pub use telegram::{Carried, DecodedWord, DoubleWord, GatewayData, NodeTotals, Telegram};
+pub use telegram::{Carried, DecodedWord, GatewayData, NodeTotals, Telegram};
 
 use crate::diag::Diagnostic;
 use crate::ir::{Direction, Ir};

@@ -392,7 +392,7 @@ fn profidrive_standard_telegram_2_reads_its_32_bit_speed() {
     );
     assert_eq!(
         t.double_words,
-        [DoubleWord {
+        [telegram::DoubleWord {
             offset: 2,
             name: "NSOLL_B (speed setpoint B)".into(),
             value: 100_000,

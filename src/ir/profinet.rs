@@ -345,6 +345,21 @@ impl Module {
         self.api == PROFIDRIVE_API
     }
 
+    /// The PZD words (from 1, after the PKW channel) where a 32-bit item
+    /// starts: telegram 2's NSOLL_B and NIST_B at 2, the same both ways.
+    pub fn double_words(&self) -> Vec<u8> {
+        let mut word = 1;
+        let mut found = Vec::new();
+        for item in &self.output {
+            if item.double_word {
+                found.push(word);
+            }
+            word += item.words();
+        }
+        let pkw = self.layout.pkw_words();
+        found.into_iter().map(|w| w - pkw).collect()
+    }
+
     /// The subslot of its data submodule: after PROFIdrive's access point,
     /// or the default.
     pub fn data_subslot(&self) -> u16 {

@@ -2003,6 +2003,8 @@ typedef struct {
     uint32_t api;
     bool pkw;
     size_t pzd_words;
+    const size_t *double_words;
+    size_t double_words_count;
     const gsdc_pn_submodule_t *access_point;
     gsdc_pn_submodule_t data;
     const gsdc_pn_record_t *records;

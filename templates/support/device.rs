@@ -415,6 +415,9 @@ pub struct PnModule {
     /// each way.
     pub pkw: bool,
     pub pzd_words: usize,
+    /// The PZD words (from 1) where a 32-bit value starts, high word first,
+    /// the same both ways: standard telegram 2's NSOLL_B and NIST_B at 2.
+    pub double_words: &'static [usize],
     /// PROFIdrive's module access point: a submodule without data.
     pub access_point: Option<PnSubmodule>,
     /// The submodule with the IO data.

@@ -76,6 +76,19 @@ pub fn put_words(bytes: &mut [u8], words: &[U16Be]) {
     }
 }
 
+/// Words `first` and `first + 1` of `words` as one 32-bit value, high word
+/// first. Panics beyond the words.
+pub fn double_word(words: &[U16Be], first: usize) -> u32 {
+    (u32::from(words[first].get()) << 16) | u32::from(words[first + 1].get())
+}
+
+/// Writes `value` to words `first` and `first + 1`, high word first.
+pub fn put_double_word(words: &mut [U16Be], first: usize, value: u32) {
+    let [a, b, c, d] = value.to_be_bytes();
+    words[first] = U16Be([a, b]);
+    words[first + 1] = U16Be([c, d]);
+}
+
 /// A telegram with the PKW channel: 4 PKW words, then `PZD` PZD words;
 /// `BYTES` bytes on the bus. The layouts name each module's telegram with an
 /// alias, and check its size where they declare it ([`Self::LEN`]).
@@ -151,14 +164,12 @@ impl<const PZD: usize, const BYTES: usize> PzdTelegram<PZD, BYTES> {
     /// word first, as PROFINET sends an Unsigned32: standard telegram 2's
     /// NSOLL_B and NIST_B are `double_word(1)`. Panics beyond the words.
     pub fn double_word(&self, first: usize) -> u32 {
-        (u32::from(self.pzd[first].get()) << 16) | u32::from(self.pzd[first + 1].get())
+        double_word(&self.pzd, first)
     }
 
     /// Writes `value` to PZD words `first` and `first + 1`, high word first.
     pub fn set_double_word(&mut self, first: usize, value: u32) {
-        let [a, b, c, d] = value.to_be_bytes();
-        self.pzd[first] = U16Be([a, b]);
-        self.pzd[first + 1] = U16Be([c, d]);
+        put_double_word(&mut self.pzd, first, value);
     }
 }
 

@@ -176,6 +176,26 @@ static void print_submodule(const gsdc_pn_submodule_t *s)
            (unsigned long)s->ident, (unsigned long)s->input_len, (unsigned long)s->output_len);
 }
 
+/* The byte offsets of a module's 32-bit values (PZD word `w` after the PKW
+ * channel), the same both ways: nothing without any. */
+static void print_double_words(const gsdc_pn_module_t *m)
+{
+    size_t way;
+    size_t j;
+    size_t pkw_words = m->pkw ? 4U : 0U;
+    if (m->double_words_count == 0U) {
+        return;
+    }
+    printf("u32");
+    for (way = 0U; way < 2U; way++) {
+        printf(way == 0U ? " in" : " out");
+        for (j = 0U; j < m->double_words_count; j++) {
+            printf(" %lu", (unsigned long)(2U * (pkw_words + m->double_words[j] - 1U)));
+        }
+    }
+    printf("\n");
+}
+
 static void dump_record(const gsdc_pn_record_t *r)
 {
     uint8_t bytes[512];
@@ -242,6 +262,7 @@ static void dump_pn(const gsdc_pn_device_t *d)
             print_submodule(m->access_point);
         }
         print_submodule(&m->data);
+        print_double_words(m);
         for (j = 0U; j < m->records_count; j++) {
             dump_record(&m->records[j]);
         }

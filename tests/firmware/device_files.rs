@@ -264,6 +264,10 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
                 bytes("Input"),
                 bytes("Output")
             ));
+            let (input, output) = (u32_offsets(s, "Input"), u32_offsets(s, "Output"));
+            if !input.is_empty() || !output.is_empty() {
+                lines.push(format!("u32 in {input} out {output}"));
+            }
             for record in s
                 .descendants()
                 .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
@@ -340,6 +344,25 @@ fn number(text: &str) -> u64 {
         Some(hex) => u64::from_str_radix(hex, 16).unwrap(),
         None => text.parse().unwrap(),
     }
+}
+
+/// The byte offsets of a submodule's Unsigned32 data items in `direction`
+/// (`Input`, `Output`), blank-separated.
+fn u32_offsets(s: roxmltree::Node, direction: &str) -> String {
+    let mut offset = 0;
+    let mut found = Vec::new();
+    let items = s
+        .descendants()
+        .filter(|n| n.has_tag_name(direction))
+        .flat_map(|d| d.children().filter(|n| n.has_tag_name("DataItem")));
+    for item in items {
+        let data_type = attr(item, "DataType");
+        if data_type == "Unsigned32" {
+            found.push(offset.to_string());
+        }
+        offset += data_type_len(data_type);
+    }
+    found.join(" ")
 }
 
 fn data_type_len(data_type: &str) -> usize {

@@ -568,6 +568,13 @@ fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
             ("pkw", Value::Bool(m.layout.pkw)),
             ("pzd_words", number(m.layout.pzd_words)),
             (
+                "double_words",
+                Value::List(
+                    Elem::Index,
+                    m.double_words().into_iter().map(number).collect(),
+                ),
+            ),
+            (
                 "access_point",
                 Value::Optional(Elem::Record("pn submodule"), access_point),
             ),

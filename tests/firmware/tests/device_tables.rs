@@ -148,6 +148,17 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
                 s.subslot, s.ident, s.input_len, s.output_len
             ));
         }
+        if !m.double_words.is_empty() {
+            // Each the byte offset of PZD word `w`, the same both ways.
+            let pkw_words = if m.pkw { 4 } else { 0 };
+            let offsets: Vec<String> = m
+                .double_words
+                .iter()
+                .map(|w| (2 * (pkw_words + w - 1)).to_string())
+                .collect();
+            let offsets = offsets.join(" ");
+            lines.push(format!("u32 in {offsets} out {offsets}"));
+        }
         for r in m.records {
             let bytes: Vec<u8> = r.defaults.iter().flat_map(|v| v.to_be_bytes()).collect();
             let mut values = vec![0; r.entries.len()];

@@ -429,6 +429,7 @@ impl DpSlave {
                 let shape = Shape {
                     pkw: module.pkw,
                     pzd_words: module.pzd_words,
+                    double_words: &[],
                 };
                 let pzds = PzdTargets::of_user_prm(self.dp, prm);
                 let drive = &mut self.drive;

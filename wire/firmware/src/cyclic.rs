@@ -1,11 +1,15 @@
 //! The card's part of one cyclic exchange, on any bus: the telegram from
 //! the master goes to the drive (the PKW request answered, each PZD word
 //! written where the parameters the master set map it), and the telegram to
-//! the master comes from the drive.
+//! the master comes from the drive. A 32-bit value (standard telegram 2's
+//! speed setpoint NSOLL_B) the drive model follows at once: it comes back in
+//! the same place (the actual speed NIST_B), the model's own behaviour.
 
 use crate::card::{Card, PrmValues};
 use crate::drive::Drive;
-use crate::gsdc_support::{put_words, words, DpDevice, PnDevice, PnModule, PKW_BYTES};
+use crate::gsdc_support::{
+    double_word, put_double_word, put_words, words, DpDevice, PnDevice, PnModule, U16Be, PKW_BYTES,
+};
 
 /// What a module's telegram holds, each way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -14,6 +18,9 @@ pub struct Shape {
     pub pkw: bool,
     /// The PZD words after it.
     pub pzd_words: usize,
+    /// The PZD words (from 1) where a 32-bit value starts, the same both
+    /// ways.
+    pub double_words: &'static [usize],
 }
 
 impl Shape {
@@ -22,6 +29,27 @@ impl Shape {
         Shape {
             pkw: module.pkw,
             pzd_words: module.pzd_words,
+            double_words: module.double_words,
+        }
+    }
+
+    /// Each 32-bit value of the telegram `from_master`, read through the
+    /// layout's support code: its first PZD word (from 1) and the value.
+    pub fn double_words_of<'a>(
+        &'a self,
+        from_master: &'a [u8],
+    ) -> impl Iterator<Item = (usize, u32)> + 'a {
+        let pzd: [U16Be; MAX_PZD] = words(&from_master[self.pzd_offset()..]);
+        self.double_words
+            .iter()
+            .map(move |&word| (word, double_word(&pzd, word - 1)))
+    }
+
+    fn pzd_offset(&self) -> usize {
+        if self.pkw {
+            PKW_BYTES
+        } else {
+            0
         }
     }
 }
@@ -109,7 +137,7 @@ pub fn exchange(
     from_master: &[u8],
     to_master: &mut [u8],
 ) {
-    let pzd_at = if shape.pkw { PKW_BYTES } else { 0 };
+    let pzd_at = shape.pzd_offset();
     if shape.pkw {
         let answer = crate::pkw::answer(card.pkw(), drive, &words(&from_master[..PKW_BYTES]));
         put_words(&mut to_master[..PKW_BYTES], &answer);
@@ -134,6 +162,12 @@ pub fn exchange(
             _ => pzds.read(word).map_or(0, |a| read(drive, a)),
         };
         to_master[at..at + 2].copy_from_slice(&answer.to_be_bytes());
+    }
+    for (word, value) in shape.double_words_of(from_master) {
+        let mut pair = [U16Be::new(0); 2];
+        put_double_word(&mut pair, 0, value);
+        let at = pzd_at + 2 * (word - 1);
+        put_words(&mut to_master[at..at + 4], &pair);
     }
 }
 

@@ -15,7 +15,9 @@ has no reader for them). For one module in one slot it:
    its layout (the device's own account, its JSON events file);
 3. ends parameterisation (PrmEnd), answers ApplicationReady, exchanges cyclic
    data, and checks what a scenario from the manual asks for: the status word
-   answering a control word, the PKW channel answering a request;
+   answering a control word, the PKW channel answering a request; and each
+   32-bit value (standard telegram 2's NSOLL_B) read by the layout as it was
+   written;
 4. or, with --expect-refusal, checks that the device refuses the Connect and
    says with which PNIO status.
 
@@ -472,6 +474,49 @@ def run_scenario(cyclic, slot: int, subs: list[Submodule], scenario: dict, writt
     return checks
 
 
+# A 32-bit value whose words differ (0x0001, 0x86A0): a layout that swapped
+# them would read 0x86A00001.
+SPEED = 100000
+
+
+def follow_32_bit_values(cyclic, events: DeviceEvents, slot: int, subs: list[Submodule]) -> int:
+    """Each 4-byte output item (standard telegram 2's NSOLL_B, an Unsigned32
+    in the GSDML, which PROFINET sends high byte first) with a 4-byte input
+    item at the same place (NIST_B): the controller writes SPEED; the device
+    must say its layout read SPEED there, and its drive model (whose actual
+    speed follows the setpoint at once, the model's own) send it back."""
+    followed = 0
+    for sub in (s for s in subs if s.outputs and s.inputs):
+        for setpoint in (i for i in sub.outputs if i.size == 4):
+            actual = next((i for i in sub.inputs if i.size == 4 and i.offset == setpoint.offset), None)
+            if actual is None:
+                continue
+            out = bytearray(sum(i.size for i in sub.outputs))
+            out[setpoint.offset:setpoint.offset + 4] = SPEED.to_bytes(4, "big")
+            word = setpoint.offset // 2 + 1
+            data = exchange(cyclic, slot, sub, bytes(out),
+                            lambda d: int.from_bytes(d[actual.offset:actual.offset + 4], "big") == SPEED)
+            read = events.wait_for(lambda e: e.get("event") == "double-word" and e["slot"] == slot
+                                   and e["subslot"] == sub.subslot and e["value"] == SPEED)
+            got = int.from_bytes(data[actual.offset:actual.offset + 4], "big") if data else None
+            say(f"  {setpoint.name} 0x{SPEED:08X} at byte {setpoint.offset} -> the layout read "
+                + (f"{SPEED} (PZD{read[0]['word']})" if read else "something else")
+                + f" -> {actual.name} " + (f"0x{got:08X}" if got is not None else "none"))
+            if not read:
+                seen = [e["value"] for e in events.all() if e.get("event") == "double-word" and e["slot"] == slot]
+                raise Failed(f"slot {slot} subslot {sub.subslot}, byte {setpoint.offset} ({setpoint.name}): "
+                             f"the layout read {seen or 'nothing'}, the controller wrote {SPEED}")
+            if read[0]["word"] != word:
+                raise Failed(f"slot {slot} subslot {sub.subslot}, byte {setpoint.offset} ({setpoint.name}): "
+                             f"the layout read it as PZD{read[0]['word']}, the GSDML places it at PZD{word}")
+            if got != SPEED:
+                raise Failed(f"slot {slot} subslot {sub.subslot}, byte {actual.offset} ({actual.name}): "
+                             f"{'none' if got is None else '0x%08X' % got}, expected 0x{SPEED:08X} "
+                             "(the drive model's actual speed follows its setpoint)")
+            followed += 1
+    return followed
+
+
 def expected_value(value, written) -> int:
     """A value of the scenario: a number, or the value the controller wrote to
     a record (`{"record": 1, "entry": 0, "otherwise": 0}`)."""
@@ -563,13 +608,15 @@ def run(args) -> None:
         first = observe_inputs(cyclic, args.slot, subs)
         say(f"first data {(time.monotonic() - t0) * 1000:.0f} ms after DCP identify")
         checks = run_scenario(cyclic, args.slot, subs, scenario, written)
+        followed = follow_32_bit_values(cyclic, events, args.slot, subs)
         if args.scenario and checks == 0 and scenario.get("required", True) and any(s.outputs for s in subs):
             say("  (the scenario has no check that applies to this module)")
         merged = any(e.get("event") == "merged-apis" for e in events.all())
         if any(api != 0 for api in apis):
             say(f"  API 0x{apis[-1]:X}: the device checked it against its layout before pnio saw the Connect"
                 f"{' and merged the IOCRs to one API for pnio' if merged else ''}; pnio itself cannot check an API")
-        say(f"PASS {case(args)}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks")
+        say(f"PASS {case(args)}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks"
+            + (f", {followed} 32-bit values read by the layout" if followed else ""))
     finally:
         if cyclic is not None:
             cyclic.stop()

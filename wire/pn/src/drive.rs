@@ -18,6 +18,18 @@ pub struct Application {
     plugged: Vec<(u16, &'static PnModule)>,
     /// Each record's values: the GSDML's until the controller writes it.
     records: Vec<(&'static PnRecord, Decoded)>,
+    /// The 32-bit values last read from the controller's data.
+    double_words: Vec<DoubleWord>,
+}
+
+/// A 32-bit value the layout read from the controller's data.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DoubleWord {
+    pub slot: u16,
+    pub subslot: u16,
+    /// Its first PZD word, from 1.
+    pub word: usize,
+    pub value: u32,
 }
 
 impl Application {
@@ -41,6 +53,7 @@ impl Application {
             drive: wire_firmware::manuals::drive(card),
             plugged: plugged.to_vec(),
             records,
+            double_words: Vec::new(),
         }
     }
 
@@ -86,12 +99,14 @@ impl Application {
         Some(Ok((decoded, refused)))
     }
 
-    /// One cycle over every plugged module's data. Before the AR reaches
-    /// data exchange there is nothing to read, and nothing happens.
-    pub fn cycle(&mut self, image: &IoImage) {
+    /// One cycle over every plugged module's data, and the 32-bit values
+    /// the layout read that differ from the last cycle's. Before the AR
+    /// reaches data exchange there is nothing to read, and nothing happens.
+    pub fn cycle(&mut self, image: &IoImage) -> Vec<DoubleWord> {
         let Some(pn) = self.card.pn else {
-            return;
+            return Vec::new();
         };
+        let mut read = Vec::new();
         // The values of the plugged module's records (the one module of a
         // drive's card), as PN_DEVICE maps them to PZD words.
         let pzds = PzdTargets::of_records(pn, |index, entry| {
@@ -108,9 +123,20 @@ impl Application {
                 continue;
             };
             let mut to_controller = vec![0u8; data.input_len];
+            let shape = Shape::of_pn(module);
+            read.extend(
+                shape
+                    .double_words_of(&from_controller)
+                    .map(|(word, value)| DoubleWord {
+                        slot: *slot,
+                        subslot: data.subslot,
+                        word,
+                        value,
+                    }),
+            );
             exchange(
                 self.card,
-                Shape::of_pn(module),
+                shape,
                 &pzds,
                 &mut self.drive,
                 &from_controller,
@@ -118,5 +144,12 @@ impl Application {
             );
             let _ = image.write_inputs(*slot, data.subslot, &to_controller);
         }
+        let changed = read
+            .iter()
+            .filter(|d| !self.double_words.contains(d))
+            .copied()
+            .collect();
+        self.double_words = read;
+        changed
     }
 }

@@ -1,7 +1,7 @@
 //! The device's account of the exchange: one JSON object a line on stdout.
 
 use crate::connect::ApiMismatch;
-use crate::drive::Decoded;
+use crate::drive::{Decoded, DoubleWord};
 use pnio::cm::{AbortReason, ArState, Record};
 use pnio::eth::MacAddr;
 use std::io::Write;
@@ -102,6 +102,15 @@ impl Events {
         self.emit(format!(
             r#"{{"event":"record","api":{},"slot":{},"subslot":{},"index":{},"bytes":"{bytes}",{decoded}}}"#,
             record.api, record.slot, record.subslot, record.index
+        ));
+    }
+
+    /// A 32-bit value of the controller's data as the layout read it
+    /// (standard telegram 2's NSOLL_B), each time it changes.
+    pub fn double_word(&self, d: &DoubleWord) {
+        self.emit(format!(
+            r#"{{"event":"double-word","slot":{},"subslot":{},"word":{},"value":{}}}"#,
+            d.slot, d.subslot, d.word, d.value
         ));
     }
 

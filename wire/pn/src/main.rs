@@ -195,7 +195,9 @@ fn run(args: &Args) -> Result<(), String> {
         while let Ok(seen) = seen.try_recv() {
             report(&events, &mut application, seen);
         }
-        application.cycle(&image);
+        for read in application.cycle(&image) {
+            events.double_word(&read);
+        }
         std::thread::sleep(Duration::from_millis(1));
     }
     stop.store(true, Ordering::Relaxed);
