@@ -503,12 +503,17 @@ fn a_profidrive_telegram_sits_behind_the_access_point_in_the_profiles_api() {
     let ir = fixture("profidrive.toml");
     let (text, _) = gsdml_of(&ir);
     let doc = Document::parse(&text).unwrap();
-    type Items = &'static [(&'static str, &'static str)];
     const U16: &str = "Unsigned16";
     let telegram_1: (_, Items, Items) = (
         ("IDM_STD_TEL_1", "0x00000010"),
-        &[("STW1 (control word 1)", U16), ("NSOLL_A (speed setpoint A)", U16)],
-        &[("ZSW1 (status word 1)", U16), ("NIST_A (speed actual value A)", U16)],
+        &[
+            ("STW1 (control word 1)", U16),
+            ("NSOLL_A (speed setpoint A)", U16),
+        ],
+        &[
+            ("ZSW1 (status word 1)", U16),
+            ("NIST_A (speed actual value A)", U16),
+        ],
     );
     let telegram_2: (_, Items, Items) = (
         ("IDM_STD_TEL_2", "0x00000020"),
@@ -531,13 +536,18 @@ fn a_profidrive_telegram_sits_behind_the_access_point_in_the_profiles_api() {
     }
     let other_apis: BTreeSet<&str> = elements(&doc, "VirtualSubmoduleItem")
         .filter(|s| {
-            !s.ancestors()
-                .any(|a| a.attribute("ID").is_some_and(|id| id.starts_with("IDM_STD_TEL_")))
+            !s.ancestors().any(|a| {
+                a.attribute("ID")
+                    .is_some_and(|id| id.starts_with("IDM_STD_TEL_"))
+            })
         })
         .filter_map(|s| s.attribute("API"))
         .collect();
     assert_eq!(other_apis, BTreeSet::from(["0"]));
 }
+
+/// Data items as (English name, DataType), in order.
+type Items = &'static [(&'static str, &'static str)];
 
 /// One PROFIdrive module: its access point and data submodule placed, and
 /// its data items each way with their English names and data types.
@@ -545,7 +555,7 @@ fn assert_profidrive_module(
     doc: &Document,
     module: Node,
     ident: &str,
-    (output, input): (&[(&str, &str)], &[(&str, &str)]),
+    (output, input): (Items, Items),
 ) {
     let submodules: Vec<Node> = module
         .descendants()
@@ -561,7 +571,10 @@ fn assert_profidrive_module(
             )
         })
         .collect();
-    assert_eq!(placed, [("0x0000FFFF", "14848", "1"), (ident, "14848", "2")]);
+    assert_eq!(
+        placed,
+        [("0x0000FFFF", "14848", "1"), (ident, "14848", "2")]
+    );
     let access_point_data = children(submodules[0], "IOData").next().unwrap();
     assert_eq!(access_point_data.children().count(), 0);
     let access_point_name = submodules[0]
@@ -578,7 +591,12 @@ fn assert_profidrive_module(
             .find(|n| n.has_tag_name(element))
             .unwrap();
         children(io, "DataItem")
-            .map(|d| (english(doc, attribute(d, "TextId")), attribute(d, "DataType")))
+            .map(|d| {
+                (
+                    english(doc, attribute(d, "TextId")),
+                    attribute(d, "DataType"),
+                )
+            })
             .collect()
     };
     assert_eq!(items("Output"), output, "{ident}");
@@ -751,7 +769,14 @@ fn stated_ident_numbers_replace_gsdcs_numbering() {
     // telegram 2 and the 1-PZD module keep gsdc's numbers.
     assert_eq!(
         idents("VirtualSubmoduleItem", "SubmoduleIdentNumber"),
-        ["0x00010001", "0x00000005", "0x00000B01", "0x00000005", "0x00000020", "0x00000101"]
+        [
+            "0x00010001",
+            "0x00000005",
+            "0x00000B01",
+            "0x00000005",
+            "0x00000020",
+            "0x00000101"
+        ]
     );
     assert_eq!(
         idents("ModuleItem", "ModuleIdentNumber"),

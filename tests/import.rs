@@ -1200,7 +1200,10 @@ fn fenas_three_device_access_points_import() {
 fn fenas_standard_telegram_2_imports_as_the_profiles() {
     let name = "GSDML-V2.33-ABB-FENA-20170914.xml";
     let imported = import(name, &support::corpus_file(&format!("gsdml/{name}")));
-    let toml = imported.another_device.as_deref().expect("FENA's import builds");
+    let toml = imported
+        .another_device
+        .as_deref()
+        .expect("FENA's import builds");
     assert_says(
         toml,
         &["standard_telegram_2 = true", "telegram2 = 0x00000012"],

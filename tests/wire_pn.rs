@@ -298,7 +298,8 @@ fn a_gsdml_that_moves_telegram_2s_speed_fails_and_says_what_the_layout_read() {
         let (input, moved_input) = order("ZSW1", "NIST_B");
         let (output, moved_output) = order("STW1", "NSOLL_B");
         assert!(t.contains(&input) && t.contains(&output));
-        t.replace(&input, &moved_input).replace(&output, &moved_output)
+        t.replace(&input, &moved_input)
+            .replace(&output, &moved_output)
     });
     let (status, text) = exchange(&[description], Some(&dir));
     assert_eq!(status, 1, "{text}");

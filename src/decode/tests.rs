@@ -399,14 +399,24 @@ fn profidrive_standard_telegram_2_reads_its_32_bit_speed() {
         }]
     );
     assert_eq!(t.words[0].fields.len(), 11);
-    assert!(t.words[1..].iter().all(|w| w.fields.is_empty() && w.carries.is_none()));
+    assert!(t.words[1..]
+        .iter()
+        .all(|w| w.fields.is_empty() && w.carries.is_none()));
     let t = decode(&ir, "standard telegram 2", In, "0237 FFFF FFFE 0000");
     assert_eq!(t.double_words[0].name, "NIST_B (speed actual value B)");
     assert_eq!(t.double_words[0].value, 0xFFFF_FFFE);
     assert_eq!(t.words[3].name, "ZSW2 (status word 2)");
-    assert_eq!((t.words[0].fields[0].name.as_str(), t.words[0].fields[0].value), ("Ready to switch on", 1));
+    assert_eq!(
+        (
+            t.words[0].fields[0].name.as_str(),
+            t.words[0].fields[0].value
+        ),
+        ("Ready to switch on", 1)
+    );
     // Telegram 1 has none.
-    assert!(decode(&ir, "standard telegram 1", Out, "047F 4000").double_words.is_empty());
+    assert!(decode(&ir, "standard telegram 1", Out, "047F 4000")
+        .double_words
+        .is_empty());
 }
 
 fn md810_default_prm() -> String {

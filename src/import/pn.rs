@@ -722,8 +722,8 @@ fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
     };
     let parts: Vec<String> = MODULE_KIND_KEYS
         .into_iter()
-    .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
-    .collect();
+        .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
+        .collect();
     out.key("per_module", format!("{{ {} }}", parts.join(", ")));
 }
 

@@ -242,13 +242,13 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
     } else {
         Vec::new()
     };
-    let standard_telegram = m
-        .profinet
-        .filter(|p| p.kind != ModuleKind::Pzd)
-        .map(|p| match direction {
-            Direction::Out => &p.output,
-            Direction::In => &p.input,
-        });
+    let standard_telegram =
+        m.profinet
+            .filter(|p| p.kind != ModuleKind::Pzd)
+            .map(|p| match direction {
+                Direction::Out => &p.output,
+                Direction::In => &p.input,
+            });
     let pzd = match standard_telegram {
         Some(items) => item_views(items, m.layout, lang),
         None => (1..=m.layout.pzd_words)

@@ -281,7 +281,9 @@ fn profidrive_words(m: &CyclicModule, dir: Direction) -> &'static str {
         (true, Direction::Out) => {
             "STW1, NSOLL_B (32 bits: PZD2 the high word, PZD3 the low) and STW2"
         }
-        (true, Direction::In) => "ZSW1, NIST_B (32 bits: PZD2 the high word, PZD3 the low) and ZSW2",
+        (true, Direction::In) => {
+            "ZSW1, NIST_B (32 bits: PZD2 the high word, PZD3 the low) and ZSW2"
+        }
     }
 }
 

@@ -201,8 +201,16 @@ fn profidrive_telegram_1(direction: Direction) -> Vec<DataItem> {
 /// declares them (Unsigned16, Unsigned32, Unsigned16).
 fn profidrive_telegram_2(direction: Direction) -> Vec<DataItem> {
     let [first, speed, second] = match direction {
-        Direction::In => [("ZSW1", files::ZSW1), ("NIST_B", files::NIST_B), ("ZSW2", files::ZSW2)],
-        Direction::Out => [("STW1", files::STW1), ("NSOLL_B", files::NSOLL_B), ("STW2", files::STW2)],
+        Direction::In => [
+            ("ZSW1", files::ZSW1),
+            ("NIST_B", files::NIST_B),
+            ("ZSW2", files::ZSW2),
+        ],
+        Direction::Out => [
+            ("STW1", files::STW1),
+            ("NSOLL_B", files::NSOLL_B),
+            ("STW2", files::STW2),
+        ],
     };
     let item = |(tag, name): (&str, Phrase)| plain(tag, Text::phrase(name));
     let speed = DataItem {
