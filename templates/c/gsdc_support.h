@@ -1992,7 +1992,9 @@ typedef struct {
 
 /* A module of the GSDML: its English name, ident number, the slots it may
  * be plugged into, its API (0, or PROFIdrive's 0x3A00), whether its
- * telegrams start with the PKW channel and its PZD words each way,
+ * telegrams start with the PKW channel and its PZD words each way, the PZD
+ * words (from 1) where a 32-bit value starts, high word first, the same
+ * both ways (standard telegram 2's NSOLL_B and NIST_B at 2; NULL without),
  * PROFIdrive's module access point (NULL without one), its data submodule
  * and its records. */
 typedef struct {
