@@ -212,12 +212,17 @@ fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
 /// The description's GSDML, built by gsdc into a scratch directory, then
 /// changed by `edit`: a released file that disagrees with the firmware.
 #[track_caller]
-fn edited_gsdml(description: &str, edit: impl Fn(String) -> String) -> support::Scratch {
+fn edited_gsdml(
+    description: &str,
+    case: &str,
+    edit: impl Fn(String) -> String,
+) -> support::Scratch {
     let stem = Path::new(description)
         .file_stem()
         .unwrap()
         .to_string_lossy();
-    let dir = support::scratch(&format!("released-{stem}"));
+    // One folder per case: the tests run at once, two of them on one fixture.
+    let dir = support::scratch(&format!("released-{stem}-{case}"));
     let out = dir.to_str().unwrap();
     let built = support::gsdc(["build", description, "--out", out]);
     assert!(built.status.success(), "{}", support::stderr(&built));
@@ -239,7 +244,7 @@ fn a_gsdml_with_another_module_ident_fails_and_says_where() {
         return;
     }
     // Standard message 1's ident 0x10 becomes 0x11 in the GSDML only.
-    let dir = edited_gsdml("descriptions/mv810-pnet02.toml", |t| {
+    let dir = edited_gsdml("descriptions/mv810-pnet02.toml", "module-ident", |t| {
         t.replace(
             r#"ModuleIdentNumber="0x00000010""#,
             r#"ModuleIdentNumber="0x00000011""#,
@@ -262,7 +267,7 @@ fn a_gsdml_that_says_api_0_for_a_profidrive_telegram_fails() {
     if !can_run() {
         return;
     }
-    let dir = edited_gsdml("tests/fixtures/valid/profidrive.toml", |t| {
+    let dir = edited_gsdml("tests/fixtures/valid/profidrive.toml", "api-0", |t| {
         t.replace(r#"API="14848""#, r#"API="0""#)
     });
     let (status, text) = exchange(&["tests/fixtures/valid/profidrive.toml"], Some(&dir));
@@ -284,7 +289,7 @@ fn a_gsdml_that_moves_telegram_2s_speed_fails_and_says_what_the_layout_read() {
         return;
     }
     let description = "tests/fixtures/valid/profidrive.toml";
-    let dir = edited_gsdml(description, |t| {
+    let dir = edited_gsdml(description, "speed-moved", |t| {
         let order = |first: &str, speed: &str| {
             (
                 format!(
@@ -322,7 +327,7 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
         return;
     }
     let description = "tests/fixtures/valid/own_idents.toml";
-    let dir = edited_gsdml(description, |t| {
+    let dir = edited_gsdml(description, "dap-ident", |t| {
         t.replace(
             r#"ModuleIdentNumber="0x00000300""#,
             r#"ModuleIdentNumber="0x00000399""#,
