@@ -295,6 +295,8 @@ fn example_part(
                 first_byte: first,
                 last_byte: last,
                 style: Style::Pzd,
+                // A node's block, whatever its length: one box each.
+                columns: 1,
             })
             .collect::<Vec<_>>();
         (way(lang, direction), boxes)

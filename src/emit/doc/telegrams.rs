@@ -234,6 +234,9 @@ pub(super) struct WordView {
     pub first_byte: u16,
     pub last_byte: u16,
     pub style: Style,
+    /// The columns its box spans in the diagram: 2 for a 32-bit value
+    /// (telegram 2's speed), else 1.
+    pub columns: u32,
 }
 
 fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView> {
@@ -265,6 +268,7 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
             first_byte: 2 * i as u16,
             last_byte: 2 * i as u16 + 1,
             style: Style::Pkw,
+            columns: 1,
         })
         .chain(pzd)
         .collect()
@@ -292,6 +296,7 @@ fn item_views(items: &[DataItem], layout: Layout, lang: Lang) -> Vec<WordView> {
                 first_byte,
                 last_byte: first_byte + 2 * u16::from(item.words()) - 1,
                 style: Style::Pzd,
+                columns: u32::from(item.words()),
             }
         })
         .collect()
@@ -316,6 +321,7 @@ fn pzd_view(ir: &Ir, lang: Lang, (layout, n): (Layout, u8), direction: Direction
         first_byte,
         last_byte: first_byte + 1,
         style,
+        columns: 1,
     }
 }
 
@@ -516,15 +522,16 @@ const COLUMNS: u32 = 8;
 const BOX_W: u32 = 104;
 const BOX_GAP: u32 = 6;
 
-/// Two lanes of word boxes, eight a row, each lane under its title.
+/// Two lanes of word boxes, eight words a row, each lane under its title.
 pub(super) fn words_figure(
     lang: Lang,
     kind: &'static str,
     title: &str,
     lanes: [(&str, &[WordView]); 2],
 ) -> Svg {
-    let inner = BOX_W - 2 * svg::PAD;
+    let width_of = |columns: u32| columns * BOX_W + (columns - 1) * BOX_GAP;
     let lines_of = |w: &WordView| {
+        let inner = width_of(w.columns) - 2 * svg::PAD;
         let mut lines = vec![line(&w.label, Weight::Bold)];
         lines.extend(
             svg::wrap(&w.role, inner, Weight::Normal, 3)
@@ -559,26 +566,31 @@ pub(super) fn words_figure(
             line(name, Weight::Bold),
         ));
         y += title_h + 2;
-        for (i, word) in words.iter().enumerate() {
-            let (row, col) = (i as u32 / COLUMNS, i as u32 % COLUMNS);
+        let (mut row, mut col) = (0, 0);
+        for word in words {
+            let span = word.columns.clamp(1, COLUMNS);
+            if col + span > COLUMNS {
+                (row, col) = (row + 1, 0);
+            }
             items.push(Item {
                 rect: Rect {
                     x: MARGIN + col * (BOX_W + BOX_GAP),
                     y: y + row * (box_h + BOX_GAP),
-                    w: BOX_W,
+                    w: width_of(span),
                     h: box_h,
                 },
                 style: word.style,
                 align: Align::Middle,
                 lines: lines_of(word),
             });
+            col += span;
         }
-        let rows = (words.len() as u32).div_ceil(COLUMNS);
+        let rows = if words.is_empty() { 0 } else { row + 1 };
         y += rows * (box_h + BOX_GAP) + 8;
     }
     Svg {
         kind,
-        width: 2 * MARGIN + COLUMNS * BOX_W + (COLUMNS - 1) * BOX_GAP,
+        width: 2 * MARGIN + width_of(COLUMNS),
         height: y - 8 - BOX_GAP + MARGIN,
         title: title.to_string(),
         items,
