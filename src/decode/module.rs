@@ -117,19 +117,10 @@ impl Module<'_> {
         let Module::Profinet(m) = self else {
             return Vec::new();
         };
-        let items = match direction {
-            Direction::Out => &m.output,
-            Direction::In => &m.input,
-        };
-        let mut word = 0;
-        let mut found = Vec::new();
-        for item in items {
-            if item.double_word {
-                found.push((word, item.text.text.en.clone()));
-            }
-            word += usize::from(item.words());
-        }
-        found
+        m.placed_items(direction)
+            .filter(|(_, item)| item.double_word)
+            .map(|(at, item)| (usize::from(at), item.text.text.en.clone()))
+            .collect()
     }
 
     /// What the module holds, for a help line: "PPO1 is 12 bytes each way:

@@ -299,13 +299,12 @@ fn words(s: &Submodule) -> Option<u8> {
 fn is_telegram_2(s: &Submodule) -> bool {
     let shape = |p: &Option<crate::device::pn::IoPart>| {
         p.as_ref().is_some_and(|p| {
-            let types: Vec<&str> = p
+            let types: Vec<Option<&str>> = p
                 .items
                 .iter()
-                .filter(|i| i.length.is_none())
-                .map(|i| &*i.data_type)
+                .map(|i| i.length.is_none().then_some(&*i.data_type))
                 .collect();
-            p.items.len() == 3 && types == ["Unsigned16", "Unsigned32", "Unsigned16"]
+            types == [Some("Unsigned16"), Some("Unsigned32"), Some("Unsigned16")]
         })
     };
     shape(&s.io.input) && shape(&s.io.output)

@@ -3,7 +3,7 @@
 //! GSDML IDs and TextIds of everything, decided here so that the emitter
 //! only writes them down.
 
-use super::{EntryKey, Ident, Layout, MappingKind, SetKey, Text};
+use super::{Direction, EntryKey, Ident, Layout, MappingKind, SetKey, Text};
 pub use crate::spec::GsdmlVersion as Version;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -345,19 +345,27 @@ impl Module {
         self.api == PROFIDRIVE_API
     }
 
+    /// Its data items one way, each with the telegram word it starts at
+    /// (from 0, the PKW channel's words counted).
+    pub fn placed_items(&self, direction: Direction) -> impl Iterator<Item = (u8, &DataItem)> {
+        let items = match direction {
+            Direction::Out => &self.output,
+            Direction::In => &self.input,
+        };
+        items.iter().scan(0, |word, item| {
+            let at = *word;
+            *word += item.words();
+            Some((at, item))
+        })
+    }
+
     /// The PZD words (from 1, after the PKW channel) where a 32-bit item
     /// starts: telegram 2's NSOLL_B and NIST_B at 2, the same both ways.
     pub fn double_words(&self) -> Vec<u8> {
-        let mut word = 1;
-        let mut found = Vec::new();
-        for item in &self.output {
-            if item.double_word {
-                found.push(word);
-            }
-            word += item.words();
-        }
-        let pkw = self.layout.pkw_words();
-        found.into_iter().map(|w| w - pkw).collect()
+        self.placed_items(Direction::Out)
+            .filter(|(_, item)| item.double_word)
+            .map(|(at, _)| at + 1 - self.layout.pkw_words())
+            .collect()
     }
 
     /// The subslot of its data submodule: after PROFIdrive's access point,

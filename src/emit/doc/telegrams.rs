@@ -6,7 +6,7 @@ use super::page::{code, text, Builder, Cell};
 use super::svg::{self, Align, Item, Line, Rect, Style, Svg, Weight};
 use super::{bits, bytes, parameter_name, Lang};
 use crate::i18n::sheet as w;
-use crate::ir::profinet::{self, DataItem, ModuleKind};
+use crate::ir::profinet::{self, ModuleKind};
 use crate::ir::{
     Allowed, Bus, Direction, EntryKey, Ir, Layout, MappingKind, ModuleId, PkwKind, Word,
 };
@@ -245,15 +245,9 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
     } else {
         Vec::new()
     };
-    let standard_telegram =
-        m.profinet
-            .filter(|p| p.kind != ModuleKind::Pzd)
-            .map(|p| match direction {
-                Direction::Out => &p.output,
-                Direction::In => &p.input,
-            });
+    let standard_telegram = m.profinet.filter(|p| p.kind != ModuleKind::Pzd);
     let pzd = match standard_telegram {
-        Some(items) => item_views(items, m.layout, lang),
+        Some(module) => item_views(module, direction, lang),
         None => (1..=m.layout.pzd_words)
             .map(|n| pzd_view(ir, lang, (m.layout, n), direction))
             .collect(),
@@ -276,18 +270,16 @@ fn words(ir: &Ir, lang: Lang, m: &Module, direction: Direction) -> Vec<WordView>
 
 /// A standard telegram's words as its data items name them: a 32-bit item
 /// (telegram 2's NSOLL_B, NIST_B) is one view of two words.
-fn item_views(items: &[DataItem], layout: Layout, lang: Lang) -> Vec<WordView> {
-    let mut n = 1;
-    items
-        .iter()
-        .map(|item| {
-            let last = n + item.words() - 1;
-            let label = match last == n {
-                true => format!("PZD{n}"),
-                false => format!("PZD{n}-PZD{last}"),
+fn item_views(m: &profinet::Module, direction: Direction, lang: Lang) -> Vec<WordView> {
+    m.placed_items(direction)
+        .map(|(at, item)| {
+            // The standard telegrams have no PKW channel: word `at` is PZD at + 1.
+            let (first, last) = (at + 1, at + item.words());
+            let label = match last == first {
+                true => format!("PZD{first}"),
+                false => format!("PZD{first}-PZD{last}"),
             };
-            let first_byte = layout.pzd_word_offset(n);
-            n = last + 1;
+            let first_byte = m.layout.pzd_word_offset(first);
             WordView {
                 label,
                 role: lang.text(&item.text.text).to_string(),

@@ -27,7 +27,7 @@ pub struct Names<'a> {
 /// card is the profile's: in its API, behind the module access point, with
 /// the profile's word names; of any other card it is the vendor's telegram
 /// of PZD words, named as the manual names it. Standard telegram 2 is only
-/// the profile's (lowering refuses it elsewhere, E114).
+/// the profile's (lowering refuses it elsewhere, E161).
 pub fn module(
     (kind, layout): (ModuleKind, Layout),
     telegram: &Telegram,

@@ -493,7 +493,7 @@ def follow_32_bit_values(cyclic, events: DeviceEvents, slot: int, subs: list[Sub
                 continue
             out = bytearray(sum(i.size for i in sub.outputs))
             out[setpoint.offset:setpoint.offset + 4] = SPEED.to_bytes(4, "big")
-            word = setpoint.offset // 2 + 1
+            word = setpoint.offset // 2 + 1  # PZD number: gsdc writes no PKW channel before one
             data = exchange(cyclic, slot, sub, bytes(out),
                             lambda d: int.from_bytes(d[actual.offset:actual.offset + 4], "big") == SPEED)
             read = events.wait_for(lambda e: e.get("event") == "double-word" and e["slot"] == slot
