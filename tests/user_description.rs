@@ -320,6 +320,22 @@ fn what_a_per_module_setting_is_on_profibus_must_be_said_there_only() {
     assert_eq!(codes(&without_key), Vec::<&str>::new());
 }
 
+/// Each value `per_module` gives is a parameter the PROFIdrive channel must
+/// reach (E154): a parameter beyond PNU 2047 for any kind of module,
+/// telegram 2's as much as the others.
+#[test]
+fn every_per_module_value_is_kept_within_the_profidrive_pnus() {
+    for key in [
+        "user_defined = 999",
+        "standard_telegram_1 = 1",
+        "standard_telegram_2 = 2",
+    ] {
+        let (name, _) = key.split_once(" = ").unwrap();
+        let text = edited(AX200, key, &format!("{name} = \"P2048\""));
+        assert!(codes(&text).contains(&"E154"), "{key}: {:?}", codes(&text));
+    }
+}
+
 /// The User_Prm_Data of tests/fixtures/valid/ax200.toml: PZD3..PZD6 out
 /// (P1070), PZD3..PZD6 in (r0021, r0027, r0947, r0947), then the one setting
 /// it carries, the fault reaction, `fault_reaction`.

@@ -339,6 +339,15 @@ pub struct PerModule {
     pub profibus: Option<Spanned<OnProfibus>>,
 }
 
+impl PerModule {
+    /// Every value it gives, each kind of module's.
+    pub fn values(&self) -> impl Iterator<Item = &Spanned<Address>> {
+        std::iter::once(&self.user_defined)
+            .chain(&self.standard_telegram_1)
+            .chain(&self.standard_telegram_2)
+    }
+}
+
 /// The characters of a GSD's strings, and so its bytes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "kebab-case")]

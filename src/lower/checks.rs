@@ -255,6 +255,16 @@ impl Checker {
         s.get_ref().clone()
     }
 
+    /// [`Checker::gsd_string`] of a string the description may leave out.
+    pub fn optional_gsd_string(
+        &mut self,
+        s: Option<&Spanned<String>>,
+        keyword: &str,
+        what: &str,
+    ) -> Option<String> {
+        s.map(|s| self.gsd_string(s, keyword, what))
+    }
+
     /// A string the GSD writes as it is, at most `limit` characters (a
     /// module's or parameter's name).
     /// The description's words: recorded as given.

@@ -59,10 +59,7 @@ fn module(
     idents: &mut Scope,
 ) -> Option<DpModule> {
     let name = cx.gsd_name(&m.name, GSD_NAME_LEN, "module name");
-    let info = m
-        .info
-        .as_ref()
-        .map(|i| cx.gsd_string(i, "Info_Text", "module info"));
+    let info = cx.optional_gsd_string(m.info.as_ref(), "Info_Text", "module info");
     let (ppo, config, layout) = match (&m.ppo, &m.data) {
         (Some(ppo), None) => {
             let (number, layout) = ppo_type(cx, ppo, ppo5_pzd_words)?;

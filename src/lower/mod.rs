@@ -249,22 +249,22 @@ fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> 
         vendor: cx.gsd_string(&d.vendor, "Vendor_Name", "vendor"),
         family: cx.required(&d.family, "family"),
         model: cx.gsd_string(&d.model, "Model_Name", "model"),
-        revision: d
-            .revision
-            .as_ref()
-            .map(|r| cx.gsd_string(r, "Revision", "revision")),
-        hardware_release: d
-            .hardware_release
-            .as_ref()
-            .map(|r| cx.gsd_string(r, "Hardware_Release", "hardware_release")),
-        software_release: d
-            .software_release
-            .as_ref()
-            .map(|r| cx.gsd_string(r, "Software_Release", "software_release")),
-        order_number: d
-            .order_number
-            .as_ref()
-            .map(|o| cx.gsd_string(o, "OrderNumber", "order_number")),
+        revision: cx.optional_gsd_string(d.revision.as_ref(), "Revision", "revision"),
+        hardware_release: cx.optional_gsd_string(
+            d.hardware_release.as_ref(),
+            "Hardware_Release",
+            "hardware_release",
+        ),
+        software_release: cx.optional_gsd_string(
+            d.software_release.as_ref(),
+            "Software_Release",
+            "software_release",
+        ),
+        order_number: cx.optional_gsd_string(
+            d.order_number.as_ref(),
+            "OrderNumber",
+            "order_number",
+        ),
         name: cx.text(&d.name, None, "name"),
         info: d
             .info

@@ -141,10 +141,11 @@ pub fn lower(
         gsd_revision,
         ident_number: *ident.value.get_ref(),
         ident_placeholder: ident.placeholder,
-        implementation_type: p
-            .implementation_type
-            .as_ref()
-            .map(|i| cx.gsd_string(i, "Implementation_Type", "implementation_type")),
+        implementation_type: cx.optional_gsd_string(
+            p.implementation_type.as_ref(),
+            "Implementation_Type",
+            "implementation_type",
+        ),
         modules,
         max_input_len: limits.input,
         max_output_len: limits.output,

@@ -151,10 +151,7 @@ pub fn check_pnus(cx: &mut Checker, desc: &raw::Description, numbering: Option<&
                 .is_some_and(|h| *h.get_ref() == raw::Holds::Address);
         let values = std::iter::once(&setting.default)
             .chain(setting.range.iter().flat_map(|r| &r.get_ref().0))
-            .chain(setting.per_module.iter().flat_map(|p| {
-                let p = p.get_ref();
-                std::iter::once(&p.user_defined).chain(&p.standard_telegram_1)
-            }));
+            .chain(setting.per_module.iter().flat_map(|p| p.get_ref().values()));
         for value in values {
             check_pnu(cx, value, numbering, holds_addresses, 0);
         }
