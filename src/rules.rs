@@ -131,6 +131,7 @@ pub const RULES: &[Rule] = &[
         "E183",
         "a device access point's modules not the description's, each once",
     ),
+    rule("E184", "device access ARs without device access"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

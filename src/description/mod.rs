@@ -570,6 +570,9 @@ pub struct Profinet {
     pub writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
     /// MRP client on the first two ports.
     pub media_redundancy: Option<Spanned<bool>>,
+    /// What the card's PROFINET stack offers the controllers.
+    #[serde(default)]
+    pub stack: Stack,
     /// The ident numbers the GSDML and the layouts carry, where they are
     /// not gsdc's numbering (an imported file's own).
     #[serde(default)]
@@ -597,6 +600,10 @@ pub struct Dap {
     /// One SubmoduleIdentNumber per port, where not the first DAP's.
     pub port_idents: Option<Spanned<Vec<Spanned<u32>>>>,
     pub media_redundancy: Option<Spanned<bool>>,
+    /// What its stack offers where not the first's: each key left out is
+    /// the first's.
+    #[serde(default)]
+    pub stack: Stack,
     /// The modules it offers, by their names in generated code; all of
     /// them when left out.
     pub modules: Option<Spanned<Vec<Spanned<String>>>>,
@@ -622,6 +629,38 @@ pub struct IdentNumbers {
     /// Its data submodule's, where not the module's.
     #[serde(default)]
     pub submodules: BTreeMap<Spanned<String>, Spanned<u32>>,
+}
+
+/// `[profinet.stack]`: what the card's PROFINET stack offers the
+/// controllers, each the device access point's or interface's attribute of
+/// its name. A key left out keeps the attribute unwritten (its schema
+/// default) or gsdc's value.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Stack {
+    /// `AddressAssignment`: how the device may get its IP address.
+    pub address_assignment: Option<Spanned<Vec<Spanned<AddressAssignment>>>>,
+    /// `DeviceAccessSupported`: a supervisor's device access AR.
+    pub device_access: Option<Spanned<bool>>,
+    /// `NumberOfDeviceAccessAR`.
+    pub device_access_ars: Option<Spanned<u8>>,
+    /// `NameOfStationNotTransferable`.
+    pub name_of_station_not_transferable: Option<Spanned<bool>>,
+    /// `SharedDeviceSupported`: several controllers at once, each with its
+    /// own submodules.
+    pub shared_device: Option<Spanned<bool>>,
+    /// The interface's `ApplicationRelations@NumberOfAR`: the IO ARs it
+    /// holds at once.
+    pub application_relations: Option<Spanned<u16>>,
+}
+
+/// A way of address assignment, as GSDML names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[allow(clippy::upper_case_acronyms)]
+pub enum AddressAssignment {
+    DCP,
+    DHCP,
+    LOCAL,
 }
 
 #[derive(Debug, Default, Deserialize)]

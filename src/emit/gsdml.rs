@@ -202,28 +202,49 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 
 /// A DAP: slot 0, with slot 1 for one of the modules it offers.
 fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
-    doc.open(
-        "DeviceAccessPointItem",
-        &[
-            ("ID", &dap.id),
-            ("PNIO_Version", &p.gsdml_version.to_string()),
-            ("PhysicalSlots", &format!("0..{MODULE_SLOT}")),
-            ("ModuleIdentNumber", &hex32(dap.ident)),
-            ("MinDeviceInterval", &p.min_device_interval.to_string()),
-            ("DNS_CompatibleName", &p.dns_name),
-            ("FixedInSlots", "0"),
-            ("ObjectUUID_LocalIndex", "1"),
-            ("NameOfStationNotTransferable", "false"),
-            ("DeviceAccessSupported", "false"),
-            ("CheckDeviceID_Allowed", "true"),
-            // A device of PNIO_Version V2.31 or later must support multiple
-            // write, LLDP name of device and reset to factory mode 2 (reset
-            // communication parameters); every such file in the corpus says so.
-            ("MultipleWriteSupported", "true"),
-            ("LLDP_NoD_Supported", "true"),
-            ("ResetToFactoryModes", "2"),
-        ],
-    );
+    let stack = &dap.stack;
+    let flag = |on: bool| if on { "true" } else { "false" };
+    let physical_slots = format!("0..{MODULE_SLOT}");
+    let ident = hex32(dap.ident);
+    let interval = p.min_device_interval.to_string();
+    let version = p.gsdml_version.to_string();
+    let mut attributes = vec![
+        ("ID", dap.id.as_str()),
+        ("PNIO_Version", &version),
+        ("PhysicalSlots", &physical_slots),
+        ("ModuleIdentNumber", &ident),
+        ("MinDeviceInterval", &interval),
+        ("DNS_CompatibleName", &p.dns_name),
+        ("FixedInSlots", "0"),
+        ("ObjectUUID_LocalIndex", "1"),
+        (
+            "NameOfStationNotTransferable",
+            flag(stack.name_of_station_not_transferable),
+        ),
+        ("DeviceAccessSupported", flag(stack.device_access)),
+        ("CheckDeviceID_Allowed", "true"),
+        // A device of PNIO_Version V2.31 or later must support multiple
+        // write, LLDP name of device and reset to factory mode 2 (reset
+        // communication parameters); every such file in the corpus says so.
+        ("MultipleWriteSupported", "true"),
+        ("LLDP_NoD_Supported", "true"),
+        ("ResetToFactoryModes", "2"),
+    ];
+    let ars = stack.device_access_ars.map(|n| n.to_string());
+    attributes.extend(ars.as_deref().map(|n| ("NumberOfDeviceAccessAR", n)));
+    if stack.shared_device {
+        attributes.push(("SharedDeviceSupported", "true"));
+    }
+    let assignment = stack
+        .address_assignment
+        .iter()
+        .map(|a| a.token())
+        .collect::<Vec<_>>()
+        .join(";");
+    if !assignment.is_empty() {
+        attributes.push(("AddressAssignment", &assignment));
+    }
+    doc.open("DeviceAccessPointItem", &attributes);
     let mut values = vec![("VendorName", ir.device.vendor.as_str())];
     let optional = [
         ("OrderNumber", &dap.order_number),
@@ -354,10 +375,14 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     );
     // Both startup modes, or controllers that start up the legacy way
     // (older firmware) find no mode they share with the device.
-    doc.open(
-        "ApplicationRelations",
-        &[("StartupMode", "Legacy;Advanced")],
-    );
+    let ars = dap.stack.application_relations.map(|n| n.to_string());
+    let mut relations: Vec<(&str, &str)> = ars
+        .as_deref()
+        .map(|n| ("NumberOfAR", n))
+        .into_iter()
+        .collect();
+    relations.push(("StartupMode", "Legacy;Advanced"));
+    doc.open("ApplicationRelations", &relations);
     doc.leaf(
         "TimingProperties",
         &[

@@ -10,6 +10,7 @@
 //! device access point (E602).
 
 mod daps;
+mod stack;
 
 use super::numbered::{pattern, Pattern};
 use super::toml_out::{list, quote, TomlOut};
@@ -29,8 +30,11 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("DNS_CompatibleName", None),
     ("FixedInSlots", Some("0")),
     ("ObjectUUID_LocalIndex", Some("1")),
-    ("NameOfStationNotTransferable", Some("false")),
-    ("DeviceAccessSupported", Some("false")),
+    ("NameOfStationNotTransferable", None),
+    ("DeviceAccessSupported", None),
+    ("NumberOfDeviceAccessAR", None),
+    ("SharedDeviceSupported", None),
+    ("AddressAssignment", None),
     ("CheckDeviceID_Allowed", Some("true")),
     ("MultipleWriteSupported", Some("true")),
     ("LLDP_NoD_Supported", Some("true")),
@@ -53,6 +57,7 @@ const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("SupportedProtocols", Some("SNMP;LLDP")),
     ("DCP_BoundarySupported", Some("true")),
     ("PTP_BoundarySupported", Some("true")),
+    ("ApplicationRelations@NumberOfAR", None),
     ("ApplicationRelations@StartupMode", Some("Legacy;Advanced")),
     ("ApplicationRelations/TimingProperties@SendClock", None),
     (
@@ -145,7 +150,8 @@ pub(super) fn describe(
     }
     let name = file_name(file, device, notes)?;
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
-    let later = daps::later_daps((dap, others), device_info, &modules, notes);
+    let first_stack = stack::Declared::of(dap, notes);
+    let later = daps::later_daps((dap, others), &first_stack, device_info, &modules, notes);
     unsaid_extras(device, (dap, &later), &modules, notes);
     let mut out = TomlOut::default();
     out.comment(&format!(
@@ -158,6 +164,13 @@ pub(super) fn describe(
     records.write_mappings(&mut out, notes);
     records.write_settings(&mut out, &modules, notes);
     profinet(&mut out, device, dap, &name, &modules, notes);
+    let stack = first_stack.keys();
+    if !stack.is_empty() {
+        out.table("profinet.stack");
+        for (key, value) in stack {
+            out.key(key, value);
+        }
+    }
     records.write_indexes(&mut out);
     module_texts(&mut out, &modules, notes);
     ident_numbers(&mut out, dap, &modules);

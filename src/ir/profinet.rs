@@ -245,6 +245,45 @@ pub struct Dap {
     /// IOConfigData: the most bytes the plugged submodules exchange.
     pub max_input_length: u16,
     pub max_output_length: u16,
+    pub stack: Stack,
+}
+
+/// What the card's PROFINET stack offers the controllers through a DAP
+/// (`[profinet.stack]`): attributes of the DAP and its interface.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Stack {
+    /// `AddressAssignment`, in the description's order; empty: unwritten
+    /// (the schema's default, DCP).
+    pub address_assignment: Vec<AddressAssignment>,
+    pub device_access: bool,
+    /// `NumberOfDeviceAccessAR`, only with `device_access`.
+    pub device_access_ars: Option<u8>,
+    pub name_of_station_not_transferable: bool,
+    /// `SharedDeviceSupported`, written when true.
+    pub shared_device: bool,
+    /// The interface's `NumberOfAR`; unwritten: the schema's default, 1.
+    pub application_relations: Option<u16>,
+}
+
+/// A way the device may get its IP address.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum AddressAssignment {
+    Dcp,
+    Dhcp,
+    Local,
+}
+
+impl AddressAssignment {
+    /// Its GSDML token.
+    pub fn token(self) -> &'static str {
+        match self {
+            AddressAssignment::Dcp => "DCP",
+            AddressAssignment::Dhcp => "DHCP",
+            AddressAssignment::Local => "LOCAL",
+        }
+    }
 }
 
 /// CertificationInfo's conformance class: gsdc writes RT_CLASS_1 only, so

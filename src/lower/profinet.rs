@@ -19,6 +19,7 @@ mod ids;
 mod interface;
 mod io;
 mod records;
+mod stack;
 
 pub(crate) use io::{
     description as module_description, info_prefix, pkw_words, STANDARD_TELEGRAM_2_WORDS,

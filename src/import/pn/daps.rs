@@ -2,6 +2,7 @@
 //! each says that differs from the first, in the keys the description has
 //! for it. One that the format cannot say is left out (W600), with why.
 
+use super::stack::Declared;
 use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::{Attribute, Text};
@@ -43,6 +44,7 @@ impl DapEntry<'_> {
 /// DeviceIdentity's info text: what an entry without `info` gets.
 pub(super) fn later_daps<'a>(
     (first, others): (&Dap, &'a [Dap]),
+    first_stack: &Declared,
     device_info: Option<&Text>,
     modules: &[Recognised],
     notes: &mut Notes,
@@ -51,7 +53,15 @@ pub(super) fn later_daps<'a>(
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let mut later = Vec::new();
     for dap in others {
-        match entry_keys((first, dap), device_info, modules, &taken) {
+        let keys = entry_keys((first, dap), device_info, modules, &taken).and_then(|mut keys| {
+            let stack = Declared::of(dap, notes).over_first(first_stack)?;
+            if !stack.is_empty() {
+                let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+                keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));
+            }
+            Ok(keys)
+        });
+        match keys {
             Ok(keys) => {
                 taken.extend(dap.item.ident);
                 later.push(DapEntry { dap, keys });

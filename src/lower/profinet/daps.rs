@@ -3,10 +3,10 @@
 //! in the same file. A later DAP states what differs from the first (its
 //! ident number and name above all); what it leaves out is the first's.
 
-use super::{idents::DapIdents, interface, io, port, Checker};
+use super::{idents::DapIdents, interface, io, port, stack, Checker};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Dap, Module, Port, TextRef};
+use crate::ir::profinet::{Dap, Module, Port, Stack, TextRef};
 use crate::ir::{Device, Text};
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -32,6 +32,7 @@ pub fn lower(
     let all_modules: Vec<usize> = (0..modules.len()).collect();
     let (max_input_length, max_output_length) = io::max_lengths(modules.iter(), first.ports.len());
     let device = first.device;
+    let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack");
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
         submodule_id: "IDS_DAP".into(),
@@ -48,8 +49,9 @@ pub fn lower(
         modules: all_modules,
         max_input_length,
         max_output_length,
+        stack: first_stack.clone().unwrap_or_default(),
     }];
-    let mut complete = true;
+    let mut complete = first_stack.is_some();
     for (index, given) in p.daps.iter().enumerate() {
         match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules) {
             Some(dap) => daps.push(dap),
@@ -125,6 +127,7 @@ fn lower_entry(
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
     let (max_input_length, max_output_length) =
         io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
+    let stack = stack::lower(cx, &given.stack, &first.stack, &what("stack"))?;
     let ident = ident?;
     Some(Dap {
         id: format!("IDD_DAP_{number}"),
@@ -145,6 +148,7 @@ fn lower_entry(
         modules: offered,
         max_input_length,
         max_output_length,
+        stack,
     })
 }
 

@@ -1,0 +1,180 @@
+//! `[profinet.stack]`: what a device access point's attributes declare
+//! of the card's PROFINET stack, as the description's keys say it, and a
+//! later access point's `stack = { ... }` where it differs from the first.
+
+use super::{attribute, list, quote, submodules_of};
+use crate::device::pn::{Dap, SubmoduleKind};
+use crate::device::Attribute;
+use crate::import::Notes;
+
+/// The ways of address assignment the description names.
+const ADDRESS_ASSIGNMENTS: [&str; 3] = ["DCP", "DHCP", "LOCAL"];
+
+/// One device access point's stack, as its file declares it; a value
+/// the description cannot state is left out (W600) and unwritten.
+#[derive(PartialEq)]
+pub(super) struct Declared {
+    address_assignment: Option<Vec<String>>,
+    device_access: bool,
+    device_access_ars: Option<u8>,
+    name_of_station_not_transferable: bool,
+    shared_device: bool,
+    application_relations: Option<u16>,
+}
+
+impl Declared {
+    pub fn of(dap: &Dap, notes: &mut Notes) -> Declared {
+        let attributes = &dap.item.attributes;
+        let interface = submodules_of(dap, SubmoduleKind::Interface).next();
+        let flag = |name: &str| attribute(attributes, name) == Some("true");
+        let device_access = flag("DeviceAccessSupported");
+        let device_access_ars = count(
+            notes,
+            attributes,
+            "NumberOfDeviceAccessAR",
+            "the description's device_access_ars is 1 to 255",
+        )
+        .and_then(|n| u8::try_from(n).ok());
+        let device_access_ars = match (device_access_ars, device_access) {
+            (Some(_), false) => {
+                let place = attributes
+                    .iter()
+                    .find(|a| &*a.name == "NumberOfDeviceAccessAR");
+                if let Some(a) = place {
+                    notes.unsaid("NumberOfDeviceAccessAR", &a.place, "the description's device_access_ars needs device_access = true (E184), and DeviceAccessSupported is not true");
+                }
+                None
+            }
+            (ars, _) => ars,
+        };
+        let application_relations = count(
+            notes,
+            interface.map_or(&[][..], |s| &s.attributes[..]),
+            "ApplicationRelations@NumberOfAR",
+            "the description's application_relations is 1 to 65535",
+        );
+        Declared {
+            address_assignment: address_assignment(dap, notes),
+            device_access,
+            device_access_ars,
+            name_of_station_not_transferable: flag("NameOfStationNotTransferable"),
+            shared_device: flag("SharedDeviceSupported"),
+            application_relations,
+        }
+    }
+
+    /// The keys of `[profinet.stack]` that say this stack, the others
+    /// gsdc's defaults.
+    pub fn keys(&self) -> Vec<(&'static str, String)> {
+        self.keys_over(&Declared::gsdc())
+    }
+
+    /// What a later access point's `stack` states over the first's;
+    /// Err when it has no NumberOfDeviceAccessAR while the first has (the
+    /// description's later access points take the first's).
+    pub fn over_first(&self, first: &Declared) -> Result<Vec<(&'static str, String)>, String> {
+        if self.device_access_ars.is_none() && first.device_access_ars.is_some() {
+            return Err("it has no NumberOfDeviceAccessAR, which the first has: the description's later device access points take the first's".into());
+        }
+        Ok(self.keys_over(first))
+    }
+
+    /// What gsdc writes without `[profinet.stack]`.
+    fn gsdc() -> Declared {
+        Declared {
+            address_assignment: None,
+            device_access: false,
+            device_access_ars: None,
+            name_of_station_not_transferable: false,
+            shared_device: false,
+            application_relations: None,
+        }
+    }
+
+    /// The keys whose value differs from `base`'s. An assignment or a count
+    /// of ARs `base` has and this one does not is its schema default.
+    fn keys_over(&self, base: &Declared) -> Vec<(&'static str, String)> {
+        let mut keys = Vec::new();
+        if self.address_assignment != base.address_assignment {
+            let ways = self
+                .address_assignment
+                .clone()
+                .unwrap_or_else(|| vec!["DCP".into()]);
+            keys.push(("address_assignment", list(ways.iter().map(|w| quote(w)))));
+        }
+        flag(
+            &mut keys,
+            "device_access",
+            self.device_access,
+            base.device_access,
+        );
+        if self.device_access_ars != base.device_access_ars {
+            keys.extend(
+                self.device_access_ars
+                    .map(|n| ("device_access_ars", n.to_string())),
+            );
+        }
+        flag(
+            &mut keys,
+            "name_of_station_not_transferable",
+            self.name_of_station_not_transferable,
+            base.name_of_station_not_transferable,
+        );
+        flag(
+            &mut keys,
+            "shared_device",
+            self.shared_device,
+            base.shared_device,
+        );
+        if self.application_relations != base.application_relations {
+            keys.push((
+                "application_relations",
+                self.application_relations.unwrap_or(1).to_string(),
+            ));
+        }
+        keys
+    }
+}
+
+/// `key = mine` where it is not `theirs`.
+fn flag(keys: &mut Vec<(&'static str, String)>, key: &'static str, mine: bool, theirs: bool) {
+    if mine != theirs {
+        keys.push((key, mine.to_string()));
+    }
+}
+
+/// A count of ARs an attribute declares (1 or more); one the description
+/// cannot state is left out with `why`.
+fn count(notes: &mut Notes, attributes: &[Attribute], name: &str, why: &str) -> Option<u16> {
+    let a = attributes.iter().find(|a| &*a.name == name)?;
+    let value = attribute(std::slice::from_ref(a), name)?;
+    let parsed = value.parse().ok().filter(|&n: &u16| n >= 1);
+    if parsed.is_none() {
+        notes.unsaid(&format!("{name} `{value}`"), &a.place, why);
+    }
+    parsed
+}
+
+/// AddressAssignment's ways, when each is one the description names, once.
+fn address_assignment(dap: &Dap, notes: &mut Notes) -> Option<Vec<String>> {
+    let a = dap
+        .item
+        .attributes
+        .iter()
+        .find(|a| &*a.name == "AddressAssignment")?;
+    let value = attribute(std::slice::from_ref(a), "AddressAssignment")?;
+    let ways: Vec<String> = value.split(';').map(|w| w.trim().to_string()).collect();
+    let known = ways
+        .iter()
+        .all(|w| ADDRESS_ASSIGNMENTS.contains(&w.as_str()));
+    let once = ways.iter().enumerate().all(|(i, w)| !ways[..i].contains(w));
+    if known && once {
+        return Some(ways);
+    }
+    notes.unsaid(
+        &format!("AddressAssignment `{value}`"),
+        &a.place,
+        "the description's address_assignment names DCP, DHCP and LOCAL, each once",
+    );
+    None
+}
