@@ -1400,3 +1400,108 @@ fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
         both.gsd.diagnostics
     );
 }
+
+/// FENA's stack, as its device access points declare it (lines 27, 63,
+/// 77, 114, 134 and 168 of the file, read by hand): all three give their IP
+/// address by `LOCAL;DCP`, accept one device access AR and keep their name
+/// of station; the first two also a shared device and two IO ARs, which
+/// the third (FENA-01, 0x00000004) does not declare. The import states
+/// the first's in `[profinet.stack]` and the third's difference in its
+/// entry, and the round trip finds none of these attributes changed.
+#[test]
+fn fenas_stack_imports_per_device_access_point() {
+    let name = "GSDML-V2.33-ABB-FENA-20170914.xml";
+    let imported = import(name, &support::corpus_file(&format!("gsdml/{name}")));
+    let toml = imported
+        .another_device
+        .as_deref()
+        .expect("FENA's import builds");
+    assert_says(
+        toml,
+        &[
+            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\napplication_relations = 2\n",
+            "ident = 0x00000004\n",
+            "stack = { shared_device = false, application_relations = 1 }",
+        ],
+    );
+    let third = toml.find("ident = 0x00000004").unwrap();
+    let entry_end = toml[third..].find("\n\n").map_or(toml.len(), |e| third + e);
+    assert!(
+        toml[third..entry_end].contains("stack = "),
+        "the third DAP's entry states its stack"
+    );
+    let stack_changes: Vec<&str> = messages(&imported, "E601")
+        .into_iter()
+        .filter(|m| {
+            [
+                "AddressAssignment",
+                "DeviceAccessSupported",
+                "NumberOfDeviceAccessAR",
+                "NameOfStationNotTransferable",
+                "SharedDeviceSupported",
+                "NumberOfAR",
+            ]
+            .iter()
+            .any(|a| m.contains(a))
+        })
+        .collect();
+    assert!(stack_changes.is_empty(), "{stack_changes:#?}");
+}
+
+/// A second device access point whose stack differs states only that, and
+/// the import is written (its round trip clean); a stack attribute the
+/// description cannot say is left out at the attribute (W600), and the
+/// round trip judges leaving it out.
+#[test]
+fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its_attribute() {
+    let shared = md810_with_second_dap(|dap| {
+        renumbered(dap).replacen(
+            "ResetToFactoryModes=\"2\"",
+            "ResetToFactoryModes=\"2\" SharedDeviceSupported=\"true\" AddressAssignment=\"DCP;DHCP\"",
+            1,
+        )
+    });
+    let toml = written(&shared, "a DAP whose stack differs");
+    assert_says(
+        toml,
+        &["stack = { address_assignment = [\"DCP\", \"DHCP\"], shared_device = true }"],
+    );
+    assert!(!toml.contains("[profinet.stack]"), "the first's is gsdc's");
+
+    let unknown_way = md810_gsdml_changed(|gsdml| {
+        gsdml.replacen(
+            "ResetToFactoryModes=\"2\"",
+            "ResetToFactoryModes=\"2\" AddressAssignment=\"DCP;BOOTP\"",
+            1,
+        )
+    });
+    assert!(
+        messages(&unknown_way, "W600")
+            .iter()
+            .any(|m| m.starts_with("AddressAssignment `DCP;BOOTP` is not imported")),
+        "{:#?}",
+        messages(&unknown_way, "W600")
+    );
+    assert!(
+        messages(&unknown_way, "E601")
+            .iter()
+            .any(|m| m.contains("AddressAssignment")),
+        "the round trip judges what was left out"
+    );
+
+    let ars_without_access = md810_gsdml_changed(|gsdml| {
+        gsdml.replacen(
+            "ResetToFactoryModes=\"2\"",
+            "ResetToFactoryModes=\"2\" NumberOfDeviceAccessAR=\"1\"",
+            1,
+        )
+    });
+    assert!(
+        messages(&ars_without_access, "W600")
+            .iter()
+            .any(|m| m.starts_with("NumberOfDeviceAccessAR is not imported")
+                && m.contains("E184")),
+        "{:#?}",
+        messages(&ars_without_access, "W600")
+    );
+}
