@@ -1401,11 +1401,12 @@ fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
     );
 }
 
-/// FENA's stack, as its device access points declare it (lines 27, 63,
-/// 77, 114, 134 and 168 of the file, read by hand): all three give their IP
-/// address by `LOCAL;DCP`, accept one device access AR and keep their name
-/// of station; the first two also a shared device and two IO ARs, which
-/// the third (FENA-01, 0x00000004) does not declare. The import states
+/// FENA's stack, as its device access points declare it (lines 27 to 168
+/// of the file, read by hand): all three give their IP address by
+/// `LOCAL;DCP`, accept one device access AR and keep their name of
+/// station; the first two also a shared device, two IO ARs and IOConfigData
+/// of 44 bytes in and 42 out, where the third (FENA-01, 0x00000004)
+/// declares neither of the first two and 42 bytes each way. The import states
 /// the first's in `[profinet.stack]` and the third's difference in its
 /// entry, and the round trip finds none of these attributes changed.
 #[test]
@@ -1419,9 +1420,9 @@ fn fenas_stack_imports_per_device_access_point() {
     assert_says(
         toml,
         &[
-            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\napplication_relations = 2\n",
+            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\napplication_relations = 2\nmax_input_length = 44\nmax_output_length = 42\n",
             "ident = 0x00000004\n",
-            "stack = { shared_device = false, application_relations = 1 }",
+            "stack = { shared_device = false, application_relations = 1, max_input_length = 42 }",
         ],
     );
     let third = toml.find("ident = 0x00000004").unwrap();
@@ -1440,6 +1441,8 @@ fn fenas_stack_imports_per_device_access_point() {
                 "NameOfStationNotTransferable",
                 "SharedDeviceSupported",
                 "NumberOfAR",
+                "MaxInputLength",
+                "MaxOutputLength",
             ]
             .iter()
             .any(|a| m.contains(a))
@@ -1489,6 +1492,19 @@ fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its
         "the round trip judges what was left out"
     );
 
+    let too_short = md810_gsdml_changed(|gsdml| {
+        let at = gsdml.find("MaxInputLength=\"").unwrap() + "MaxInputLength=\"".len();
+        let end = at + gsdml[at..].find('"').unwrap();
+        format!("{}4{}", &gsdml[..at], &gsdml[end..])
+    });
+    assert!(
+        messages(&too_short, "W600")
+            .iter()
+            .any(|m| m.starts_with("IOConfigData@MaxInputLength `4` is not imported")),
+        "{:#?}",
+        messages(&too_short, "W600")
+    );
+
     let ars_without_access = md810_gsdml_changed(|gsdml| {
         gsdml.replacen(
             "ResetToFactoryModes=\"2\"",
@@ -1499,8 +1515,7 @@ fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its
     assert!(
         messages(&ars_without_access, "W600")
             .iter()
-            .any(|m| m.starts_with("NumberOfDeviceAccessAR is not imported")
-                && m.contains("E184")),
+            .any(|m| m.starts_with("NumberOfDeviceAccessAR is not imported") && m.contains("E184")),
         "{:#?}",
         messages(&ars_without_access, "W600")
     );

@@ -652,6 +652,9 @@ pub struct Stack {
     /// The interface's `ApplicationRelations@NumberOfAR`: the IO ARs it
     /// holds at once.
     pub application_relations: Option<Spanned<u16>>,
+    /// `IOConfigData`'s limits, where more than the modules need.
+    pub max_input_length: Option<Spanned<u16>>,
+    pub max_output_length: Option<Spanned<u16>>,
 }
 
 /// A way of address assignment, as GSDML names it.

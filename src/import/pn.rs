@@ -150,7 +150,7 @@ pub(super) fn describe(
     }
     let name = file_name(file, device, notes)?;
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
-    let first_stack = stack::Declared::of(dap, notes);
+    let first_stack = stack::Declared::of(dap, &modules, notes);
     let later = daps::later_daps((dap, others), &first_stack, device_info, &modules, notes);
     unsaid_extras(device, (dap, &later), &modules, notes);
     let mut out = TomlOut::default();

@@ -264,6 +264,10 @@ pub struct Stack {
     pub shared_device: bool,
     /// The interface's `NumberOfAR`; unwritten: the schema's default, 1.
     pub application_relations: Option<u16>,
+    /// `IOConfigData`'s limits where stated (never less than the modules
+    /// need); else what they need (`Dap::max_input_length`).
+    pub max_input_length: Option<u16>,
+    pub max_output_length: Option<u16>,
 }
 
 /// A way the device may get its IP address.

@@ -22,7 +22,7 @@ mod records;
 mod stack;
 
 pub(crate) use io::{
-    description as module_description, info_prefix, pkw_words, STANDARD_TELEGRAM_2_WORDS,
+    description as module_description, info_prefix, io_length, pkw_words, STANDARD_TELEGRAM_2_WORDS,
 };
 
 /// `info` after a notice that the file is a draft, naming the identity

@@ -54,7 +54,7 @@ pub(super) fn later_daps<'a>(
     let mut later = Vec::new();
     for dap in others {
         let keys = entry_keys((first, dap), device_info, modules, &taken).and_then(|mut keys| {
-            let stack = Declared::of(dap, notes).over_first(first_stack)?;
+            let stack = Declared::of(dap, modules, notes).over_first(first_stack)?;
             if !stack.is_empty() {
                 let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
                 keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));

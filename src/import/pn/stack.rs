@@ -2,7 +2,7 @@
 //! of the card's PROFINET stack, as the description's keys say it, and a
 //! later access point's `stack = { ... }` where it differs from the first.
 
-use super::{attribute, list, quote, submodules_of};
+use super::{attribute, list, quote, submodules_of, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::import::Notes;
@@ -12,7 +12,6 @@ const ADDRESS_ASSIGNMENTS: [&str; 3] = ["DCP", "DHCP", "LOCAL"];
 
 /// One device access point's stack, as its file declares it; a value
 /// the description cannot state is left out (W600) and unwritten.
-#[derive(PartialEq)]
 pub(super) struct Declared {
     address_assignment: Option<Vec<String>>,
     device_access: bool,
@@ -20,10 +19,28 @@ pub(super) struct Declared {
     name_of_station_not_transferable: bool,
     shared_device: bool,
     application_relations: Option<u16>,
+    /// IOConfigData's MaxInputLength and MaxOutputLength.
+    io: [IoLimit; 2],
+}
+
+/// One of IOConfigData's lengths: the file's, and what the access point's
+/// modules need as gsdc counts it (what gsdc writes unless stated).
+#[derive(Clone, Copy)]
+struct IoLimit {
+    file: Option<u16>,
+    needed: u16,
+}
+
+impl IoLimit {
+    /// What the description states: the file's length, where more.
+    fn stated(self) -> Option<u16> {
+        self.file.filter(|&f| f > self.needed)
+    }
 }
 
 impl Declared {
-    pub fn of(dap: &Dap, notes: &mut Notes) -> Declared {
+    /// `modules` are those the import takes; the DAP's own offer counts.
+    pub fn of(dap: &Dap, modules: &[Recognised], notes: &mut Notes) -> Declared {
         let attributes = &dap.item.attributes;
         let interface = submodules_of(dap, SubmoduleKind::Interface).next();
         let flag = |name: &str| attribute(attributes, name) == Some("true");
@@ -53,7 +70,16 @@ impl Declared {
             "ApplicationRelations@NumberOfAR",
             "the description's application_relations is 1 to 65535",
         );
+        let offered = modules
+            .iter()
+            .filter(|m| dap.useable_modules.iter().any(|r| r.target == m.module.id))
+            .map(|m| (m.layout, m.access_point.is_some()));
+        let ports = submodules_of(dap, SubmoduleKind::Port).count();
+        let needed = crate::lower::io_length(offered, ports);
+        let io = ["MaxInputLength", "MaxOutputLength"]
+            .map(|name| io_limit(attributes, &format!("IOConfigData@{name}"), needed, notes));
         Declared {
+            io,
             address_assignment: address_assignment(dap, notes),
             device_access,
             device_access_ars,
@@ -66,7 +92,7 @@ impl Declared {
     /// The keys of `[profinet.stack]` that say this stack, the others
     /// gsdc's defaults.
     pub fn keys(&self) -> Vec<(&'static str, String)> {
-        self.keys_over(&Declared::gsdc())
+        self.keys_over(&self.gsdc())
     }
 
     /// What a later access point's `stack` states over the first's;
@@ -80,8 +106,9 @@ impl Declared {
     }
 
     /// What gsdc writes without `[profinet.stack]`.
-    fn gsdc() -> Declared {
+    fn gsdc(&self) -> Declared {
         Declared {
+            io: self.io.map(|l| IoLimit { file: None, ..l }),
             address_assignment: None,
             device_access: false,
             device_access_ars: None,
@@ -132,8 +159,38 @@ impl Declared {
                 self.application_relations.unwrap_or(1).to_string(),
             ));
         }
+        // What gsdc writes for this DAP without a key: the base's stated
+        // length (a later DAP takes the first's), else what it needs.
+        for (key, (mine, base)) in ["max_input_length", "max_output_length"]
+            .into_iter()
+            .zip(self.io.iter().zip(&base.io))
+        {
+            let wanted = mine.stated().unwrap_or(mine.needed);
+            let inherited = base.stated().map_or(mine.needed, |b| b.max(mine.needed));
+            if wanted != inherited {
+                keys.push((key, wanted.to_string()));
+            }
+        }
         keys
     }
+}
+
+/// An IOConfigData length; one less than the modules need is left out
+/// (gsdc writes the need), and the round trip judges it.
+fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes) -> IoLimit {
+    let Some(a) = attributes.iter().find(|a| &*a.name == name) else {
+        return IoLimit { file: None, needed };
+    };
+    let text = attribute(std::slice::from_ref(a), name).unwrap_or_default();
+    let file = text.parse().ok().filter(|&f: &u16| f >= needed);
+    if file.is_none() {
+        notes.unsaid(
+            &format!("{name} `{text}`"),
+            &a.place,
+            &format!("it is not a length of at least what the modules need as gsdc counts them ({needed}), which gsdc writes"),
+        );
+    }
+    IoLimit { file, needed }
 }
 
 /// `key = mine` where it is not `theirs`.

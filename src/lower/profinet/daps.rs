@@ -30,9 +30,13 @@ pub fn lower(
     modules: &[Module],
 ) -> Option<Vec<Dap>> {
     let all_modules: Vec<usize> = (0..modules.len()).collect();
-    let (max_input_length, max_output_length) = io::max_lengths(modules.iter(), first.ports.len());
+    let needed = io::max_lengths(modules.iter(), first.ports.len());
     let device = first.device;
     let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack");
+    let (max_input_length, max_output_length) = match &first_stack {
+        Some(stack) => stack::io_lengths(cx, needed, stack, (&p.stack, &p.stack), "profinet.stack"),
+        None => needed,
+    };
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
         submodule_id: "IDS_DAP".into(),
@@ -125,9 +129,10 @@ fn lower_entry(
     interface::check_ring_ports(cx, client, port_count);
     let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
-    let (max_input_length, max_output_length) =
-        io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
+    let needed = io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
     let stack = stack::lower(cx, &given.stack, &first.stack, &what("stack"))?;
+    let (max_input_length, max_output_length) =
+        stack::io_lengths(cx, needed, &stack, (&given.stack, &p.stack), &what("stack"));
     let ident = ident?;
     Some(Dap {
         id: format!("IDD_DAP_{number}"),

@@ -326,10 +326,18 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 /// the two to it); with at most 20 words in a module and 16 ports it stays
 /// far below the limit of 1440.
 pub fn max_lengths<'a>(modules: impl Iterator<Item = &'a Module>, ports: usize) -> (u16, u16) {
-    let module = |m: &Module| m.layout.bytes() + 2 + u16::from(m.access_point.is_some());
-    let largest = modules.map(module).max().unwrap_or(0);
-    let length = largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX);
+    let length = io_length(modules.map(|m| (m.layout, m.access_point.is_some())), ports);
     (length, length)
+}
+
+/// [`max_lengths`] of modules given by their layout and whether they have
+/// a module access point (the same each way): what `gsdc import` compares
+/// a file's IOConfigData with.
+pub(crate) fn io_length(modules: impl Iterator<Item = (Layout, bool)>, ports: usize) -> u16 {
+    let module =
+        |(layout, access_point): (Layout, bool)| layout.bytes() + 2 + u16::from(access_point);
+    let largest = modules.map(module).max().unwrap_or(0);
+    largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX)
 }
 
 #[cfg(test)]

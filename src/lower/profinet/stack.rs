@@ -34,6 +34,27 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         )?),
         None => inherited.application_relations,
     };
+    let limit = |cx: &mut Checker,
+                 key: &Option<Spanned<u16>>,
+                 name: &str,
+                 inherited: Option<u16>| {
+        match key {
+            Some(n) => cx.spanned_in_range(n, 1, MAX_IO_LENGTH.into(), &format!("{at}.{name}")),
+            None => inherited,
+        }
+    };
+    let max_input_length = limit(
+        cx,
+        &given.max_input_length,
+        "max_input_length",
+        inherited.max_input_length,
+    );
+    let max_output_length = limit(
+        cx,
+        &given.max_output_length,
+        "max_output_length",
+        inherited.max_output_length,
+    );
     let stack = Stack {
         address_assignment,
         device_access: flag(&given.device_access, inherited.device_access),
@@ -44,9 +65,68 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         ),
         shared_device: flag(&given.shared_device, inherited.shared_device),
         application_relations,
+        max_input_length,
+        max_output_length,
     };
     check_device_access(cx, given, &stack)?;
     Some(stack)
+}
+
+/// IOConfigData's bound on each length (IEC 61158-6-10's largest frame
+/// payload; p-net's GSDML guide: "valid 0..1440").
+const MAX_IO_LENGTH: u16 = 1440;
+
+/// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
+/// way: the stack's limits where stated, else the need. E174 where a
+/// stated limit is less, at the key that states it: the DAP's own `stack`
+/// (`given`), else the first's (`first`), whose a later DAP takes.
+pub fn io_lengths(
+    cx: &mut Checker,
+    needed: (u16, u16),
+    stack: &Stack,
+    (given, first): (&raw::Stack, &raw::Stack),
+    at: &str,
+) -> (u16, u16) {
+    let mut length = |stated: Option<u16>,
+                      needed: u16,
+                      key: fn(&raw::Stack) -> &Option<Spanned<u16>>,
+                      name: &str| {
+        let Some(value) = stated else {
+            return needed;
+        };
+        let span = key(given)
+            .as_ref()
+            .or(key(first).as_ref())
+            .map(Spanned::span);
+        if let (true, Some(span)) = (value < needed, span) {
+            cx.push(
+                Diagnostic::error(
+                    "E174",
+                    format!("{at}.{name} = {value} is less than the modules need ({needed})"),
+                )
+                .at(span)
+                .label("too small")
+                .help(format!(
+                    "state at least {needed}, or leave it out: gsdc writes what the modules need"
+                )),
+            );
+        }
+        value.max(needed)
+    };
+    (
+        length(
+            stack.max_input_length,
+            needed.0,
+            |s| &s.max_input_length,
+            "max_input_length",
+        ),
+        length(
+            stack.max_output_length,
+            needed.1,
+            |s| &s.max_output_length,
+            "max_output_length",
+        ),
+    )
 }
 
 /// The ways of address assignment, each once, at least one.
