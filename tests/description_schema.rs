@@ -192,6 +192,11 @@ fn every_enumeration_of_the_schema_has_the_loaders_names() {
             // PPO types are strings the lowering reads: each name is accepted.
             for name in names {
                 let mut description = md810();
+                // A later device access point's entry has its required keys.
+                if path.starts_with(&["profinet".into(), "daps".into(), "[]".into()]) {
+                    let dap: toml::Table = "name = \"probe\"\nident = 0x99".parse().unwrap();
+                    *place(&mut description, &path[..2]) = Toml::Array(vec![Toml::Table(dap)]);
+                }
                 *place(&mut description, &path[..path.len() - 1]) =
                     Toml::Array(vec![Toml::String(name.into())]);
                 // PPO5's words go with PPO5 alone (E002 otherwise).
