@@ -568,6 +568,9 @@ pub struct Profinet {
     pub netload_class: Option<Spanned<NetloadClass>>,
     /// The I&M records the controller may write (1 to 4).
     pub writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
+    /// The I&M records the controller may write to each module's
+    /// submodules (1 to 4); none when left out.
+    pub module_writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
     /// MRP client on the first two ports.
     pub media_redundancy: Option<Spanned<bool>>,
     /// What the card's PROFINET stack offers the controllers.

@@ -485,7 +485,7 @@ fn allowed_values(allowed: &Allowed) -> String {
 fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     doc.open("ModuleList", &[]);
     for m in &p.modules {
-        module(doc, ir, m, p.access_point_ident);
+        module(doc, ir, p, m);
     }
     doc.close("ModuleList");
 }
@@ -493,8 +493,12 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 /// A module with its data submodule; a PROFIdrive
 /// telegram has the module access point before it, both in the profile's
 /// API and fixed in their subslots, as ABB's FENA has them.
-fn module(doc: &mut Doc, ir: &Ir, m: &Module, access_point_ident: u32) {
+fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
     let ident = hex32(m.ident_number);
+    let im_records = blank_separated(&p.interface_properties.module_writeable_im_records);
+    // An empty list is not a value of Writeable_IM_Records.
+    let writeable_im =
+        (!im_records.is_empty()).then_some(("Writeable_IM_Records", im_records.as_str()));
     doc.open(
         "ModuleItem",
         &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
@@ -503,16 +507,17 @@ fn module(doc: &mut Doc, ir: &Ir, m: &Module, access_point_ident: u32) {
     doc.open("VirtualSubmoduleList", &[]);
     let api = m.api.to_string();
     if let Some(map) = &m.access_point {
-        doc.open(
-            "VirtualSubmoduleItem",
-            &[
-                ("ID", map.id.as_str()),
-                ("SubmoduleIdentNumber", &hex32(access_point_ident)),
-                ("API", &api),
-                ("FixedInSubslots", &ACCESS_POINT_SUBSLOT.to_string()),
-                ("MayIssueProcessAlarm", "false"),
-            ],
-        );
+        let ident = hex32(p.access_point_ident);
+        let subslot = ACCESS_POINT_SUBSLOT.to_string();
+        let mut attributes = vec![
+            ("ID", map.id.as_str()),
+            ("SubmoduleIdentNumber", &ident),
+            ("API", &api),
+            ("FixedInSubslots", &subslot),
+        ];
+        attributes.extend(writeable_im);
+        attributes.push(("MayIssueProcessAlarm", "false"));
+        doc.open("VirtualSubmoduleItem", &attributes);
         doc.leaf("IOData", &[]);
         module_info(doc, &map.name, &map.info, &[]);
         doc.close("VirtualSubmoduleItem");
@@ -527,6 +532,7 @@ fn module(doc: &mut Doc, ir: &Ir, m: &Module, access_point_ident: u32) {
     if m.access_point.is_some() {
         attributes.push(("FixedInSubslots", &data_subslot));
     }
+    attributes.extend(writeable_im);
     attributes.push(("MayIssueProcessAlarm", "false"));
     doc.open("VirtualSubmoduleItem", &attributes);
     doc.open("IOData", &[]);

@@ -830,6 +830,53 @@ fn profinet(
         }
     }
     interface_properties(out, dap, notes);
+    module_im_records(out, modules, notes);
+}
+
+/// `module_writeable_im_records`: the records the first module's
+/// submodules let the controller write, which the description gives every
+/// module's; a submodule that declares others is left out at its attribute.
+fn module_im_records(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    const NAME: &str = "Writeable_IM_Records";
+    let submodules = || {
+        modules
+            .iter()
+            .flat_map(|m| m.access_point.into_iter().chain([m.data]))
+    };
+    let first = submodules()
+        .next()
+        .and_then(|s| attribute(&s.attributes, NAME));
+    let records = first.and_then(im_records);
+    for s in submodules() {
+        let Some(a) = s.attributes.iter().find(|a| &*a.name == NAME) else {
+            continue;
+        };
+        let said = records.is_some() && attribute(std::slice::from_ref(a), NAME) == first;
+        if !said {
+            notes.unsaid(
+                &format!("submodule `{}`'s {NAME}", s.id),
+                &a.place,
+                "the description's module_writeable_im_records is one list of I&M1 to I&M4, each once, for every module's submodules",
+            );
+        }
+    }
+    if let Some(records) = records {
+        out.key("module_writeable_im_records", list(records));
+    }
+}
+
+/// A Writeable_IM_Records list the description can state: I&M1 to I&M4,
+/// each once.
+fn im_records(value: &str) -> Option<Vec<u8>> {
+    let mut records = Vec::new();
+    for token in value.split_whitespace() {
+        let n: u8 = token.parse().ok().filter(|n| (1..=4).contains(n))?;
+        if records.contains(&n) {
+            return None;
+        }
+        records.push(n);
+    }
+    (!records.is_empty()).then_some(records)
 }
 
 /// The DAP's DNS_CompatibleName in lower case: the name of station a

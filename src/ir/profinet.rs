@@ -216,6 +216,9 @@ pub struct InterfaceProperties {
     pub netload_class: NetloadClass,
     /// I&M records the controller may write, ascending.
     pub writeable_im_records: Vec<u8>,
+    /// I&M records the controller may write to each module's submodules,
+    /// ascending; none by default.
+    pub module_writeable_im_records: Vec<u8>,
 }
 
 /// A device access point (DAP): the card in slot 0 as one of its hardware

@@ -1,6 +1,6 @@
 //! What the device access point and its interface declare of the
 //! firmware: send clocks, conformance and netload class, the writable I&M
-//! records and media redundancy. What the description leaves out is gsdc's
+//! records (the DAP's and the modules') and media redundancy. What the description leaves out is gsdc's
 //! default, said (W104) where the description would state it.
 
 use crate::description::{
@@ -50,18 +50,23 @@ pub fn properties(cx: &mut Checker, p: &Spanned<raw::Profinet>) -> Option<Interf
             NetloadClass::I
         }
     };
-    let writeable_im_records = match &p.writeable_im_records {
+    let dap_im_records = match &p.writeable_im_records {
         Some(records) => writeable_im_records(cx, records)?,
         None => {
             cx.defaulted("profinet.writeable_im_records", "[1, 2, 3]", near);
             DEFAULT_WRITEABLE_IM.to_vec()
         }
     };
+    let module_writeable_im_records = match &p.module_writeable_im_records {
+        Some(records) => writeable_im_records(cx, records)?,
+        None => Vec::new(),
+    };
     Some(InterfaceProperties {
         send_clock,
         conformance_class,
         netload_class,
-        writeable_im_records,
+        writeable_im_records: dap_im_records,
+        module_writeable_im_records,
     })
 }
 
