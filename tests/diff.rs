@@ -1093,3 +1093,20 @@ fn places_are_lines_and_element_paths() {
         Some("ApplicationProcess/ModuleList/ModuleItem[IDM_PKW_2]/VirtualSubmoduleList/VirtualSubmoduleItem[IDS_PKW_2]/RecordDataList/ParameterRecordDataItem[Index=1]/Ref[ByteOffset=0]")
     );
 }
+
+/// A module's only submodule written without FixedInSubslots is in
+/// subslot 1: writing `FixedInSubslots="1"` changes nothing, another
+/// subslot breaks old projects.
+#[test]
+fn gsdml_a_submodule_fixed_in_subslot_1_is_where_it_was() {
+    let at = "<VirtualSubmoduleItem ID=\"IDS_PKW_1\" SubmoduleIdentNumber=\"0x00000201\" API=\"0\"";
+    let stated = [F(at, "<VirtualSubmoduleItem ID=\"IDS_PKW_1\" SubmoduleIdentNumber=\"0x00000201\" API=\"0\" FixedInSubslots=\"1\"")];
+    assert_eq!(changes("mv810-pnet02.toml", GSDML, &stated), vec![]);
+    let moved = [F(at, "<VirtualSubmoduleItem ID=\"IDS_PKW_1\" SubmoduleIdentNumber=\"0x00000201\" API=\"0\" FixedInSubslots=\"2\"")];
+    one(
+        &changes("mv810-pnet02.toml", GSDML, &moved),
+        Breaking,
+        Kind::Module,
+        "\"1\" → \"2\"",
+    );
+}

@@ -396,7 +396,7 @@ fn submodule(of: &str, a: &Submodule, b: &Submodule, out: &mut Changes) {
         b.info.as_ref(),
         (Some(at.0), Some(at.1)),
     );
-    judge::attributes(&subject, &a.attributes, &b.attributes, out);
+    judge::attributes(&subject, &placed(a), &placed(b), out);
     io_part(
         &format!("input data of {subject}"),
         a.io.input.as_ref(),
@@ -410,6 +410,26 @@ fn submodule(of: &str, a: &Submodule, b: &Submodule, out: &mut Changes) {
         out,
     );
     records(&subject, &a.records, &b.records, out);
+}
+
+/// The attributes of `s`, a virtual submodule without FixedInSubslots
+/// given it as in subslot 1: its module's only submodule, where gsdc's
+/// layouts, device tables and wire test place it, as other GSDML readers
+/// do ("spec says default is 1 if omitted", one puts it). A file that
+/// writes `1` and one that writes nothing then place it alike. (A
+/// SubmoduleItemRef without it is not fixed at all, and is not changed.)
+fn placed(s: &Submodule) -> std::borrow::Cow<'_, [Attribute]> {
+    const FIXED: &str = "FixedInSubslots";
+    if s.kind != SubmoduleKind::Virtual || s.attributes.iter().any(|a| &*a.name == FIXED) {
+        return std::borrow::Cow::Borrowed(&s.attributes);
+    }
+    let mut attributes = s.attributes.clone();
+    attributes.push(Attribute {
+        name: FIXED.into(),
+        value: crate::device::AttributeValue::Plain("1".into()),
+        place: s.place.clone(),
+    });
+    std::borrow::Cow::Owned(attributes)
 }
 
 /// One direction of a submodule's data: its length and the types of its
