@@ -1110,3 +1110,20 @@ fn gsdml_a_submodule_fixed_in_subslot_1_is_where_it_was() {
         "\"1\" → \"2\"",
     );
 }
+
+/// A port's MAUTypes attribute naming the MAU types of its MAUTypeList is
+/// the list's older form, the same fact: no change. Naming another type
+/// is one.
+#[test]
+fn gsdml_mau_types_repeating_the_mau_type_list_change_nothing() {
+    let at = "TextId=\"IDT_PORT_1\">";
+    let repeated = [F(at, "TextId=\"IDT_PORT_1\" MAUTypes=\"16\">")];
+    assert_eq!(changes("mv810-pnet02.toml", GSDML, &repeated), vec![]);
+    let other = [F(at, "TextId=\"IDT_PORT_1\" MAUTypes=\"30\">")];
+    one(
+        &changes("mv810-pnet02.toml", GSDML, &other),
+        Compatible,
+        Kind::Feature,
+        "\"30\" added",
+    );
+}

@@ -1406,8 +1406,10 @@ fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
 /// `LOCAL;DCP`, accept one device access AR and keep their name of
 /// station; the first two also a shared device, two IO ARs and IOConfigData
 /// of 44 bytes in and 42 out, where the third (FENA-01, 0x00000004)
-/// declares neither of the first two and 42 bytes each way. Every
-/// submodule of its modules has `Writeable_IM_Records="1 2 3"`. The import states
+/// declares neither of the first two and 42 bytes each way. Every port
+/// lets the controller set its MAU type (100BASE-TX, also written as the
+/// older `MAUTypes` attribute), and every submodule of its modules has
+/// `Writeable_IM_Records="1 2 3"`. The import states
 /// the first's in `[profinet.stack]` and the third's difference in its
 /// entry, and the round trip finds none of these attributes changed.
 #[test]
@@ -1421,7 +1423,7 @@ fn fenas_stack_imports_per_device_access_point() {
     assert_says(
         toml,
         &[
-            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\napplication_relations = 2\nmax_input_length = 44\nmax_output_length = 42\n",
+            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\nmau_type_adjustable = true\napplication_relations = 2\nmax_input_length = 44\nmax_output_length = 42\n",
             "ident = 0x00000004\n",
             "stack = { shared_device = false, application_relations = 1, max_input_length = 42 }",
             // Every module's submodules (the telegrams' access points too)
@@ -1448,6 +1450,7 @@ fn fenas_stack_imports_per_device_access_point() {
                 "MaxInputLength",
                 "MaxOutputLength",
                 "Writeable_IM_Records",
+                "MAUType",
             ]
             .iter()
             .any(|a| m.contains(a))

@@ -658,6 +658,9 @@ pub struct Stack {
     /// `IOConfigData`'s limits, where more than the modules need.
     pub max_input_length: Option<Spanned<u16>>,
     pub max_output_length: Option<Spanned<u16>>,
+    /// Each port's `MAUTypeItem@AdjustSupported`: the controller may set
+    /// the port's MAU type.
+    pub mau_type_adjustable: Option<Spanned<bool>>,
 }
 
 /// A way of address assignment, as GSDML names it.

@@ -396,7 +396,7 @@ fn submodule(of: &str, a: &Submodule, b: &Submodule, out: &mut Changes) {
         b.info.as_ref(),
         (Some(at.0), Some(at.1)),
     );
-    judge::attributes(&subject, &placed(a), &placed(b), out);
+    judge::attributes(&subject, &compared(a), &compared(b), out);
     io_part(
         &format!("input data of {subject}"),
         a.io.input.as_ref(),
@@ -412,24 +412,47 @@ fn submodule(of: &str, a: &Submodule, b: &Submodule, out: &mut Changes) {
     records(&subject, &a.records, &b.records, out);
 }
 
-/// The attributes of `s`, a virtual submodule without FixedInSubslots
-/// given it as in subslot 1: its module's only submodule, where gsdc's
-/// layouts, device tables and wire test place it, as other GSDML readers
-/// do ("spec says default is 1 if omitted", one puts it). A file that
-/// writes `1` and one that writes nothing then place it alike. (A
-/// SubmoduleItemRef without it is not fixed at all, and is not changed.)
-fn placed(s: &Submodule) -> std::borrow::Cow<'_, [Attribute]> {
+/// The attributes of `s` as compared: one fact written two ways is
+/// written one way.
+///
+/// - A virtual submodule without FixedInSubslots is in subslot 1: its
+///   module's only submodule, where gsdc's layouts, device tables and wire
+///   test place it, as other GSDML readers do ("spec says default is 1 if
+///   omitted", one puts it). (A SubmoduleItemRef without it is not fixed at
+///   all, and is not changed.)
+/// - A port's MAUTypes attribute that names the MAU types its MAUTypeList
+///   names is the list's older form, which files keep for older tools
+///   (ABB's FENA and SEW's MOVI-C write both): it is left out.
+fn compared(s: &Submodule) -> std::borrow::Cow<'_, [Attribute]> {
     const FIXED: &str = "FixedInSubslots";
-    if s.kind != SubmoduleKind::Virtual || s.attributes.iter().any(|a| &*a.name == FIXED) {
-        return std::borrow::Cow::Borrowed(&s.attributes);
+    let has = |name: &str| s.attributes.iter().any(|a| &*a.name == name);
+    let mut attributes = std::borrow::Cow::Borrowed(&s.attributes[..]);
+    if s.kind == SubmoduleKind::Virtual && !has(FIXED) {
+        attributes.to_mut().push(Attribute {
+            name: FIXED.into(),
+            value: crate::device::AttributeValue::Plain("1".into()),
+            place: s.place.clone(),
+        });
     }
-    let mut attributes = s.attributes.clone();
-    attributes.push(Attribute {
-        name: FIXED.into(),
-        value: crate::device::AttributeValue::Plain("1".into()),
-        place: s.place.clone(),
-    });
-    std::borrow::Cow::Owned(attributes)
+    if s.kind == SubmoduleKind::Port && repeats_mau_type_list(&s.attributes) {
+        attributes.to_mut().retain(|a| &*a.name != "MAUTypes");
+    }
+    attributes
+}
+
+/// Whether a port's MAUTypes names the MAU types of its MAUTypeList.
+fn repeats_mau_type_list(attributes: &[Attribute]) -> bool {
+    let tokens = |name: &str| -> Option<BTreeSet<String>> {
+        let a = attributes.iter().find(|a| &*a.name == name)?;
+        let crate::device::AttributeValue::Plain(v) = &a.value else {
+            return None;
+        };
+        Some(v.split_whitespace().map(str::to_string).collect())
+    };
+    match (tokens("MAUTypes"), tokens("MAUTypeList/MAUTypeItem@Value")) {
+        (Some(attribute), Some(list)) => attribute == list,
+        _ => false,
+    }
 }
 
 /// One direction of a submodule's data: its length and the types of its

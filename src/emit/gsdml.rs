@@ -413,7 +413,11 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
         }
         doc.open("PortSubmoduleItem", &attributes);
         doc.open("MAUTypeList", &[]);
-        doc.leaf("MAUTypeItem", &[("Value", MAU_100BASE_TX)]);
+        let mut mau = vec![("Value", MAU_100BASE_TX)];
+        if dap.stack.mau_type_adjustable {
+            mau.push(("AdjustSupported", "true"));
+        }
+        doc.leaf("MAUTypeItem", &mau);
         doc.close("MAUTypeList");
         doc.close("PortSubmoduleItem");
     }

@@ -69,6 +69,10 @@ const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
 
 const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("MAUTypeList/MAUTypeItem@Value", Some("16")),
+    ("MAUTypeList/MAUTypeItem@AdjustSupported", None),
+    // The older form of the MAUTypeList, which the comparison takes for it
+    // when it names the same types.
+    ("MAUTypes", Some("16")),
     ("IsDefaultRingport", Some("true")),
 ];
 

@@ -271,6 +271,8 @@ pub struct Stack {
     /// need); else what they need (`Dap::max_input_length`).
     pub max_input_length: Option<u16>,
     pub max_output_length: Option<u16>,
+    /// Each port's `MAUTypeItem@AdjustSupported`.
+    pub mau_type_adjustable: bool,
 }
 
 /// A way the device may get its IP address.

@@ -19,6 +19,7 @@ pub(super) struct Declared {
     name_of_station_not_transferable: bool,
     shared_device: bool,
     application_relations: Option<u16>,
+    mau_type_adjustable: bool,
     /// IOConfigData's MaxInputLength and MaxOutputLength.
     io: [IoLimit; 2],
 }
@@ -80,6 +81,7 @@ impl Declared {
             .map(|name| io_limit(attributes, &format!("IOConfigData@{name}"), needed, notes));
         Declared {
             io,
+            mau_type_adjustable: mau_type_adjustable(dap, notes),
             address_assignment: address_assignment(dap, notes),
             device_access,
             device_access_ars,
@@ -115,6 +117,7 @@ impl Declared {
             name_of_station_not_transferable: false,
             shared_device: false,
             application_relations: None,
+            mau_type_adjustable: false,
         }
     }
 
@@ -152,6 +155,12 @@ impl Declared {
             "shared_device",
             self.shared_device,
             base.shared_device,
+        );
+        flag(
+            &mut keys,
+            "mau_type_adjustable",
+            self.mau_type_adjustable,
+            base.mau_type_adjustable,
         );
         if self.application_relations != base.application_relations {
             keys.push((
@@ -210,6 +219,34 @@ fn count(notes: &mut Notes, attributes: &[Attribute], name: &str, why: &str) -> 
         notes.unsaid(&format!("{name} `{value}`"), &a.place, why);
     }
     parsed
+}
+
+/// Whether the controller may set each port's MAU type: the first port's
+/// `AdjustSupported` on every MAU type, which the description gives every
+/// port; a port that says otherwise is left out at its attribute.
+fn mau_type_adjustable(dap: &Dap, notes: &mut Notes) -> bool {
+    const NAME: &str = "MAUTypeList/MAUTypeItem@AdjustSupported";
+    let adjustable = |attributes: &[Attribute]| {
+        attribute(attributes, NAME).is_some_and(|v| v.split_whitespace().all(|t| t == "true"))
+    };
+    let mut ports = submodules_of(dap, SubmoduleKind::Port);
+    let Some(first) = ports.next() else {
+        return false;
+    };
+    let first_adjustable = adjustable(&first.attributes);
+    for port in ports.filter(|p| adjustable(&p.attributes) != first_adjustable) {
+        let place = port
+            .attributes
+            .iter()
+            .find(|a| &*a.name == NAME)
+            .map_or(&port.place, |a| &a.place);
+        notes.unsaid(
+            &format!("port `{}`'s AdjustSupported", port.id),
+            place,
+            "the description's mau_type_adjustable is one value for every port of a device access point",
+        );
+    }
+    first_adjustable
 }
 
 /// AddressAssignment's ways, when each is one the description names, once.

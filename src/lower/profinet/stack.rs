@@ -64,6 +64,7 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
             inherited.name_of_station_not_transferable,
         ),
         shared_device: flag(&given.shared_device, inherited.shared_device),
+        mau_type_adjustable: flag(&given.mau_type_adjustable, inherited.mau_type_adjustable),
         application_relations,
         max_input_length,
         max_output_length,
