@@ -1528,3 +1528,58 @@ fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its
         messages(&ars_without_access, "W600")
     );
 }
+
+/// FENA's channel diagnosis (lines 762 to 847, read by hand): PROFIdrive's
+/// 19 fault classes 0x9000 to 0x9012 in the profile's API and nine
+/// PROFIsafe error types 64 to 72 (0x0040 to 0x0048), each with a name
+/// (English only) and none with extended diagnosis: all 28 are imported
+/// with their names, and the round trip finds none changed. Each of SEW's
+/// MOVI-C's 70 is imported or left out at its element (W600) with why.
+#[test]
+fn channel_diagnosis_imports_with_its_texts() {
+    let fena = "GSDML-V2.33-ABB-FENA-20170914.xml";
+    let imported = import(fena, &support::corpus_file(&format!("gsdml/{fena}")));
+    let toml = imported
+        .another_device
+        .as_deref()
+        .expect("FENA's import builds");
+    assert_eq!(toml.matches("[[profinet.channel_diagnosis]]").count(), 28);
+    assert_says(
+        toml,
+        &[
+            "[[profinet.channel_diagnosis]]\nerror_type = 0x9000\napi = 0x3A00\nname = \"Microcontroller Hardware or Software\"\n",
+            "[[profinet.channel_diagnosis]]\nerror_type = 0x0040\nname = \"Mismatch of safety destination address (F_Dest_Add)\"\n",
+        ],
+    );
+    let diagnosis_changes: Vec<&str> = messages(&imported, "E601")
+        .into_iter()
+        .filter(|m| m.contains("ChannelDiag"))
+        .collect();
+    assert!(diagnosis_changes.is_empty(), "{diagnosis_changes:#?}");
+
+    let movi_c = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
+    let imported = import(movi_c, &support::corpus_file(&format!("gsdml/{movi_c}")));
+    let toml = imported
+        .another_device
+        .as_deref()
+        .expect("MOVI-C's import builds");
+    let left_out: Vec<&str> = messages(&imported, "W600")
+        .into_iter()
+        .filter(|m| m.starts_with("ChannelDiagItem ") || m.starts_with("ProfileChannelDiagItem "))
+        .collect();
+    let said = toml.matches("[[profinet.channel_diagnosis]]").count();
+    assert_eq!(
+        said + left_out.len(),
+        70,
+        "each of MOVI-C's 70 items imported or left out"
+    );
+    // Some have extended diagnosis; some texts have line breaks, which the
+    // description's texts do not hold.
+    for why in ["extended diagnosis", "line break"] {
+        assert!(
+            left_out.iter().any(|m| m.contains(why)),
+            "{why}: {left_out:#?}"
+        );
+    }
+    assert!(said > 0);
+}

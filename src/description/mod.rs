@@ -584,6 +584,21 @@ pub struct Profinet {
     /// hardware or firmware versions of the card, in one file.
     #[serde(default)]
     pub daps: Vec<Spanned<Dap>>,
+    /// The channel diagnoses the card reports, with their texts.
+    #[serde(default)]
+    pub channel_diagnosis: Vec<Spanned<ChannelDiagnosis>>,
+}
+
+/// `[[profinet.channel_diagnosis]]`: an error type the card reports as
+/// channel diagnosis, and what the engineering tool shows for it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ChannelDiagnosis {
+    pub error_type: Spanned<u16>,
+    /// A profile's API (PROFIdrive's 0x3A00): a profile's error type.
+    pub api: Option<Spanned<u32>>,
+    pub name: Spanned<Text>,
+    pub help: Option<Spanned<Text>>,
 }
 
 /// `[[profinet.daps]]`: a device access point after the first. What it

@@ -48,6 +48,7 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     doc.close("DeviceAccessPointList");
     module_list(&mut doc, ir, profinet);
     value_list(&mut doc, profinet);
+    channel_diag_list(&mut doc, profinet);
     if let Some(symbol) = &profinet.device_symbol {
         doc.open("GraphicsList", &[]);
         doc.leaf(
@@ -614,6 +615,31 @@ fn blank_separated<T: ToString>(values: &[T]) -> String {
         .map(ToString::to_string)
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// The channel diagnoses, a profile's with its API.
+fn channel_diag_list(doc: &mut Doc, p: &Profinet) {
+    if p.channel_diagnosis.is_empty() {
+        return;
+    }
+    doc.open("ChannelDiagList", &[]);
+    for d in &p.channel_diagnosis {
+        let error_type = d.error_type.to_string();
+        let api = d.api.map(|a| a.to_string());
+        let element = match api {
+            Some(_) => "ProfileChannelDiagItem",
+            None => "ChannelDiagItem",
+        };
+        let mut attributes = vec![("ErrorType", error_type.as_str())];
+        attributes.extend(api.as_deref().map(|a| ("API", a)));
+        doc.open(element, &attributes);
+        doc.text_ref("Name", &d.name);
+        if let Some(help) = &d.help {
+            doc.text_ref("Help", help);
+        }
+        doc.close(element);
+    }
+    doc.close("ChannelDiagList");
 }
 
 /// One ValueItem per set of choices a record refers to.

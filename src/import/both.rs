@@ -169,7 +169,10 @@ fn merge(dp: TomlOut, pn: TomlOut, (gsd, gsdml): (&str, &str)) -> TomlOut {
             _ => out.push(section),
         }
     }
-    for section in pn.iter().filter(|s| s.header.starts_with("[profinet")) {
+    // `[profinet...]` tables and `[[profinet...]]` entries (later device
+    // access points, channel diagnosis).
+    let is_profinet = |header: &str| header.trim_start_matches('[').starts_with("profinet");
+    for section in pn.iter().filter(|s| is_profinet(&s.header)) {
         let mut section = section.clone();
         if let (true, Some(info)) = (section.header == "[profinet]", profinet_info.take()) {
             section.lines.insert(0, info);

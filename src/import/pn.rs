@@ -10,6 +10,7 @@
 //! device access point (E602).
 
 mod daps;
+mod diagnosis;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -180,6 +181,9 @@ pub(super) fn describe(
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
         later.write(&mut out);
+    }
+    for diagnosis in diagnosis::entries(device, notes) {
+        diagnosis.write(&mut out);
     }
     super::dp::manual(&mut out);
     choices(&mut out, file, &records, software_release(dap).is_some());
@@ -1132,13 +1136,6 @@ fn unsaid_extras(
     }
     for a in &device.other {
         notes.unsaid(&a.name, &a.place, "the description has no key for it");
-    }
-    for d in &device.diagnosis {
-        notes.unsaid(
-            &format!("{} {}", d.element, d.error_type),
-            &d.place,
-            "the description has no PROFINET channel diagnosis",
-        );
     }
     for u in &device.unit_diagnosis {
         notes.unsaid(

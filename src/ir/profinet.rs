@@ -44,6 +44,21 @@ pub struct Profinet {
     pub records: Vec<RecordPlan>,
     /// The value each module fixes, for each set fixed per module.
     pub fixed: Vec<FixedValues>,
+    /// The channel diagnoses the card reports, in the description's order.
+    pub channel_diagnosis: Vec<ChannelDiagnosis>,
+}
+
+/// An error type the card reports as channel diagnosis: a
+/// `ChannelDiagItem`, or with a profile's API a `ProfileChannelDiagItem`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ChannelDiagnosis {
+    pub error_type: u16,
+    pub api: Option<u32>,
+    pub name: TextRef,
+    pub help: Option<TextRef>,
+    /// Its constant's name in the layouts.
+    pub ident: Ident,
 }
 
 /// A GraphicItem: its ID and GraphicFile, the bitmap's name beside the

@@ -22,8 +22,9 @@ mod wording;
 use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
-use checks::Checker;
 /// For `gsdc import`, which recognises PPO types by their config bytes.
+pub(crate) use checks::is_clean as is_clean_text;
+use checks::Checker;
 pub(crate) use gateway::module_name as gateway_module_name;
 pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;

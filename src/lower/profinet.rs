@@ -14,6 +14,7 @@ use std::collections::BTreeSet;
 use toml::Spanned;
 
 mod daps;
+mod diagnosis;
 mod idents;
 mod ids;
 mod interface;
@@ -147,6 +148,7 @@ pub fn lower(
         device,
     };
     let daps = daps::lower(cx, p, first, &modules);
+    let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -186,6 +188,7 @@ pub fn lower(
         value_items,
         records: reading_plans,
         fixed,
+        channel_diagnosis: channel_diagnosis?,
     })
 }
 

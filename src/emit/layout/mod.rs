@@ -767,7 +767,29 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
             });
         }
     }
+    consts.extend(channel_diagnosis(p));
     consts
+}
+
+/// The error types the card reports as channel diagnosis, one constant
+/// each, named after its text.
+fn channel_diagnosis(p: &IrProfinet) -> Option<Consts> {
+    let items: Vec<Const> = p
+        .channel_diagnosis
+        .iter()
+        .map(|d| Const {
+            name: d.ident.clone(),
+            ty: Ty::U16,
+            value: Val::hex_u16(d.error_type),
+        })
+        .collect();
+    (!items.is_empty()).then(|| Consts {
+        doc: Doc::plain(
+            "The error types the card reports as channel diagnosis, as the GSDML's \
+             ChannelDiagList names them; a profile's (0x9000 and up) in the profile's API.",
+        ),
+        items,
+    })
 }
 
 #[cfg(test)]

@@ -1,0 +1,88 @@
+//! `[[profinet.channel_diagnosis]]`: a GSDML file's `ChannelDiagItem`s
+//! and `ProfileChannelDiagItem`s, each with its name and help in every
+//! language. One the description cannot say (extended diagnosis, another
+//! attribute, an error type outside the schema's range) is left out
+//! (W600) with why.
+
+use super::{attribute, text};
+use crate::device::pn::{DiagItem, PnDevice};
+use crate::device::Text;
+use crate::import::toml_out::TomlOut;
+use crate::import::Notes;
+
+/// The entries of the file's channel diagnosis the description can say.
+pub(super) fn entries<'a>(device: &'a PnDevice, notes: &mut Notes) -> Vec<Entry<'a>> {
+    let mut said = Vec::new();
+    for item in &device.diagnosis {
+        match entry(item) {
+            Ok(entry) => said.push(entry),
+            Err(why) => notes.unsaid(
+                &format!("{} {}", item.element, item.error_type),
+                &item.place,
+                why,
+            ),
+        }
+    }
+    said
+}
+
+/// One channel diagnosis, as its `[[profinet.channel_diagnosis]]` says it.
+pub(super) struct Entry<'a> {
+    item: &'a DiagItem,
+    api: Option<u32>,
+}
+
+impl Entry<'_> {
+    pub fn write(&self, out: &mut TomlOut) {
+        out.array_item("profinet.channel_diagnosis");
+        out.key("error_type", format!("0x{:04X}", self.item.error_type));
+        if let Some(api) = self.api {
+            out.key("api", format!("0x{api:04X}"));
+        }
+        let name = self.item.name.as_ref().expect("an entry has a name");
+        out.key("name", text(name));
+        if let Some(help) = &self.item.help {
+            out.key("help", text(help));
+        }
+    }
+}
+
+/// A text in each language the file gives it in.
+fn every_language(t: &Text) -> impl Iterator<Item = &str> {
+    std::iter::once(&*t.primary).chain(t.translations.iter().map(|(_, text)| text))
+}
+
+fn entry(item: &DiagItem) -> Result<Entry<'_>, &'static str> {
+    if !item.extended.is_empty() {
+        return Err(
+            "the description's channel diagnosis has no extended diagnosis (ExtChannelDiagItem)",
+        );
+    }
+    let Some(name) = &item.name else {
+        return Err("it has no name");
+    };
+    let texts = std::iter::once(name).chain(&item.help);
+    if !texts
+        .flat_map(every_language)
+        .all(crate::lower::is_clean_text)
+    {
+        return Err("a text of it is empty or has a line break or another control character, which the description's texts do not hold");
+    }
+    let profile = match &*item.element {
+        "ChannelDiagItem" => false,
+        "ProfileChannelDiagItem" => true,
+        _ => return Err(
+            "the description's channel diagnosis is ChannelDiagItems and ProfileChannelDiagItems",
+        ),
+    };
+    let api = attribute(&item.attributes, "API").and_then(|a| a.parse::<u32>().ok());
+    let others = item.attributes.iter().any(|a| &*a.name != "API");
+    if others || profile != api.is_some() {
+        return Err("the description's channel diagnosis has an error type, a profile's API, a name and a help text, and no other attribute");
+    }
+    let range = if profile { 0x9000..=0x9FFF } else { 15..=32767 };
+    if !range.contains(&item.error_type) {
+        return Err("its error type is outside the schema's range for its element");
+    }
+    Ok(Entry { item, api })
+}
