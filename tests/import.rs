@@ -1583,3 +1583,27 @@ fn channel_diagnosis_imports_with_its_texts() {
     }
     assert!(said > 0);
 }
+
+/// A card's GSD with a GSDML file of two device access points: the
+/// GSDML's `[[profinet.daps]]` entry is in the one description (the
+/// merge kept `[profinet...]` tables and dropped `[[profinet...]]`
+/// entries), and both files rebuild clean.
+#[test]
+fn a_gsd_and_a_gsdml_file_of_two_access_points_import_both() {
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let beside = beside(&files);
+    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+    let (gsdml_name, gsdml) = descriptions::one(files.clone(), ArtifactKind::Gsdml);
+    let gsdml = with_second_dap(&gsdml, &renumbered);
+    let both = import_both(
+        (&gsd_name, gsd.as_bytes()),
+        (&gsdml_name, gsdml.as_bytes()),
+        &beside,
+    );
+    let toml = both
+        .description
+        .as_deref()
+        .unwrap_or_else(|| panic!("{:#?} {:#?}", both.gsd.diagnostics, both.gsdml.diagnostics));
+    assert_says(toml, &["[[profinet.daps]]\n", "ident = 0x00000009\n"]);
+    assert!(both.gsd.round_trip.is_clean() && both.gsdml.round_trip.is_clean());
+}
