@@ -80,6 +80,15 @@ phrases! {
     WORD = { en: "Word", zh: "字", de: "Wort" };
     MODULE = { en: "Module", zh: "模块", de: "Modul" };
     DIAGNOSIS = { en: "Diagnosis", zh: "诊断", de: "Diagnose" };
+    CHANNEL_DIAGNOSIS = { en: "PROFINET channel diagnosis", zh: "PROFINET 通道诊断", de: "PROFINET-Kanaldiagnose" };
+    CHANNEL_DIAGNOSIS_INTRO = {
+        en: "The error types the card reports as channel diagnosis, and what the engineering tool shows for each; a profile's error types (0x9000 and up) are in the profile's API.",
+        zh: "扩展卡以通道诊断报告的错误类型，以及工程工具为每种错误显示的内容；行规的错误类型（0x9000 及以上）属于该行规的 API。",
+        de: "Die Fehlertypen, die die Karte als Kanaldiagnose meldet, und was das Engineering-Tool zu jedem anzeigt; die Fehlertypen eines Profils (ab 0x9000) liegen in der API des Profils.",
+    };
+    ERROR_TYPE = { en: "Error type", zh: "错误类型", de: "Fehlertyp" };
+    API = { all: "API" };
+    HELP = { en: "Help", zh: "帮助", de: "Hilfe" };
     DIAGNOSIS_BYTE_BY_BYTE = {
         en: "The diagnosis, byte by byte",
         zh: "诊断数据各字节",

@@ -378,6 +378,42 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
 }
 
+/// The error types the card reports as PROFINET channel diagnosis.
+pub(crate) fn channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = ir
+        .profinet
+        .as_ref()
+        .filter(|p| !p.channel_diagnosis.is_empty())
+    else {
+        return;
+    };
+    doc.section("channel-diagnosis", lang.t(w::CHANNEL_DIAGNOSIS));
+    doc.para(text(lang.t(w::CHANNEL_DIAGNOSIS_INTRO)));
+    let rows = p
+        .channel_diagnosis
+        .iter()
+        .map(|d| {
+            vec![
+                code(format!("0x{:04X}", d.error_type)),
+                d.api
+                    .map_or_else(|| text(""), |api| code(format!("0x{api:04X}"))),
+                text(lang.text(&d.name.text)),
+                text(d.help.as_ref().map_or("", |h| lang.text(&h.text))),
+            ]
+        })
+        .collect();
+    doc.table(
+        lang.t(w::CHANNEL_DIAGNOSIS),
+        &[
+            lang.t(w::ERROR_TYPE),
+            lang.t(w::API),
+            lang.t(w::NAME),
+            lang.t(w::HELP),
+        ],
+        rows,
+    );
+}
+
 fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
     let header = STANDARD_DIAG_BYTES;
     let mut rows = standard_diagnosis_rows(p, lang);
