@@ -1407,9 +1407,10 @@ fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
 /// FENA's stack, as its device access points and modules declare it
 /// (lines 27 to 480 of the file, read by hand): all three give their IP address by
 /// `LOCAL;DCP`, accept one device access AR and keep their name of
-/// station; the first two also a shared device, two IO ARs and IOConfigData
-/// of 44 bytes in and 42 out, where the third (FENA-01, 0x00000004)
-/// declares neither of the first two and 42 bytes each way. Every port
+/// station; the first two also a shared device, two IO ARs, slots 0 to 2
+/// and IOConfigData of 44 bytes in and 42 out, where the third (FENA-01,
+/// 0x00000004) declares neither of the first two, slots 0 to 1 and 42
+/// bytes each way. Every port
 /// lets the controller set its MAU type (100BASE-TX, also written as the
 /// older `MAUTypes` attribute), and every submodule of its modules has
 /// `Writeable_IM_Records="1 2 3"`. The import states
@@ -1422,9 +1423,9 @@ fn fenas_stack_imports_per_device_access_point() {
     assert_says(
         toml,
         &[
-            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\nmau_type_adjustable = true\napplication_relations = 2\nmax_input_length = 44\nmax_output_length = 42\n",
+            "[profinet.stack]\naddress_assignment = [\"LOCAL\", \"DCP\"]\ndevice_access = true\ndevice_access_ars = 1\nname_of_station_not_transferable = true\nshared_device = true\nmau_type_adjustable = true\napplication_relations = 2\nlast_slot = 2\nmax_input_length = 44\nmax_output_length = 42\n",
             "ident = 0x00000004\n",
-            "stack = { shared_device = false, application_relations = 1, max_input_length = 42 }",
+            "stack = { shared_device = false, application_relations = 1, last_slot = 1, max_input_length = 42 }",
             // Every module's submodules (the telegrams' access points too)
             // take I&M1 to I&M3 writes.
             "module_writeable_im_records = [1, 2, 3]\n",
@@ -1448,6 +1449,7 @@ fn fenas_stack_imports_per_device_access_point() {
                 "NumberOfAR",
                 "MaxInputLength",
                 "MaxOutputLength",
+                "PhysicalSlots",
                 "Writeable_IM_Records",
                 "MAUType",
             ]
@@ -1597,4 +1599,38 @@ fn a_gsd_and_a_gsdml_file_of_two_access_points_import_both() {
         .unwrap_or_else(|| panic!("{:#?} {:#?}", both.gsd.diagnostics, both.gsdml.diagnostics));
     assert_says(toml, &["[[profinet.daps]]\n", "ident = 0x00000009\n"]);
     assert!(both.gsd.round_trip.is_clean() && both.gsdml.round_trip.is_clean());
+}
+
+/// A later device access point with more ports than the first takes the
+/// first's IO limit and needs more: gsdc writes its need (13 bytes for
+/// standard telegram 1 behind its access point with four ports), and the
+/// import states nothing for it, so the file rebuilds the same.
+#[test]
+fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
+    let fixture =
+        std::fs::read_to_string(support::checkout("tests/fixtures/valid/own_idents.toml")).unwrap();
+    let text = fixture
+        .replacen(
+            "application_relations = 2\n",
+            "application_relations = 2\nmax_input_length = 12\nmax_output_length = 12\n",
+            1,
+        )
+        .replacen(
+            "modules = [\"telegram1\"]",
+            "modules = [\"telegram1\"]\nports = 4\nport_idents = [0x00000103, 0x00000103, 0x00000103, 0x00000103]",
+            1,
+        );
+    assert_ne!(text, fixture);
+    let (ir, diagnostics) = descriptions::load_text("own_idents.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    assert_eq!(gsdml.matches("MaxInputLength=\"").count(), 3);
+    assert!(gsdml.contains("MaxInputLength=\"12\" MaxOutputLength=\"12\""));
+    assert!(gsdml.contains("MaxInputLength=\"13\" MaxOutputLength=\"13\""));
+    let imported = import(&file_name, gsdml.as_bytes());
+    let toml = written(&imported, "own_idents with a four-port access point");
+    assert!(
+        !toml.contains("max_input_length = 13"),
+        "the need is not stated"
+    );
 }

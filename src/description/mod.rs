@@ -676,6 +676,8 @@ pub struct Stack {
     /// Each port's `MAUTypeItem@AdjustSupported`: the controller may set
     /// the port's MAU type.
     pub mau_type_adjustable: Option<Spanned<bool>>,
+    /// The last of the device's slots: `PhysicalSlots` 0 to it.
+    pub last_slot: Option<Spanned<u16>>,
 }
 
 /// A way of address assignment, as GSDML names it.

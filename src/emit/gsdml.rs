@@ -205,7 +205,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     let stack = &dap.stack;
     let flag = |on: bool| if on { "true" } else { "false" };
-    let physical_slots = format!("0..{MODULE_SLOT}");
+    let physical_slots = format!("0..{}", stack.last_slot.unwrap_or(MODULE_SLOT));
     let ident = hex32(dap.ident);
     let interval = p.min_device_interval.to_string();
     let version = p.gsdml_version.to_string();

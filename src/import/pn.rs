@@ -26,7 +26,7 @@ use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 /// writes (`None`: the description states it).
 const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("PNIO_Version", None),
-    ("PhysicalSlots", Some("0..1")),
+    ("PhysicalSlots", None),
     ("MinDeviceInterval", None),
     ("DNS_CompatibleName", None),
     ("FixedInSlots", Some("0")),
@@ -376,13 +376,18 @@ fn one_pkw_kind<'a>(
 }
 
 fn attribute<'a>(attributes: &'a [Attribute], name: &str) -> Option<&'a str> {
-    attributes
-        .iter()
-        .find(|a| &*a.name == name)
-        .map(|a| match &a.value {
-            AttributeValue::Plain(v) => &**v,
-            AttributeValue::Text(t) => &*t.primary,
-        })
+    found(attributes, name).map(|(_, value)| value)
+}
+
+/// The attribute `name`, with its value as written (a text's in the
+/// primary language): what a finding about it points at.
+fn found<'a>(attributes: &'a [Attribute], name: &str) -> Option<(&'a Attribute, &'a str)> {
+    let a = attributes.iter().find(|a| &*a.name == name)?;
+    let value = match &a.value {
+        AttributeValue::Plain(v) => &**v,
+        AttributeValue::Text(t) => &*t.primary,
+    };
+    Some((a, value))
 }
 
 fn attribute_text<'a>(attributes: &'a [Attribute], name: &str) -> Option<&'a Text> {
@@ -856,17 +861,21 @@ fn module_im_records(out: &mut TomlOut, modules: &[Recognised], notes: &mut Note
         .and_then(|s| attribute(&s.attributes, NAME));
     let records = first.and_then(im_records);
     for s in submodules() {
-        let Some(a) = s.attributes.iter().find(|a| &*a.name == NAME) else {
+        let value = found(&s.attributes, NAME);
+        if records.is_some() && value.map(|(_, v)| v) == first {
             continue;
-        };
-        let said = records.is_some() && attribute(std::slice::from_ref(a), NAME) == first;
-        if !said {
-            notes.unsaid(
-                &format!("submodule `{}`'s {NAME}", s.id),
-                &a.place,
-                "the description's module_writeable_im_records is one list of I&M1 to I&M4, each once, for every module's submodules",
-            );
         }
+        let what = match value {
+            Some(_) => format!("submodule `{}`'s {NAME}", s.id),
+            // The description gives it the first's list.
+            None if records.is_some() => format!("submodule `{}` without {NAME}", s.id),
+            None => continue,
+        };
+        notes.unsaid(
+            &what,
+            value.map_or(&s.place, |(a, _)| &a.place),
+            "the description's module_writeable_im_records is one list of I&M1 to I&M4, each once, for every module's submodules",
+        );
     }
     if let Some(records) = records {
         out.key("module_writeable_im_records", list(records));
@@ -917,11 +926,17 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes) {
     if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@NetloadClass") {
         out.string("netload_class", class);
     }
-    let records = submodules_of(dap, SubmoduleKind::Virtual)
-        .next()
-        .and_then(|s| attribute(&s.attributes, "Writeable_IM_Records"))
-        .unwrap_or_default();
-    out.key("writeable_im_records", list(records.split_whitespace()));
+    let own = submodules_of(dap, SubmoduleKind::Virtual).next();
+    let records = own.and_then(|s| found(&s.attributes, "Writeable_IM_Records"));
+    match records.map(|(a, value)| (a, im_records(value))) {
+        None => out.key("writeable_im_records", "[]"),
+        Some((_, Some(records))) => out.key("writeable_im_records", list(records)),
+        Some((a, None)) => notes.unsaid(
+            "Writeable_IM_Records",
+            &a.place,
+            "the description's writeable_im_records is a list of I&M1 to I&M4, each once",
+        ),
+    }
     if mrp_client(dap) {
         out.key("media_redundancy", true);
     }
@@ -1089,8 +1104,7 @@ fn unsaid_extras(
         for a in attributes {
             let fits = known.iter().any(|(name, value)| {
                 *name == &*a.name
-                    && value
-                        .is_none_or(|v| v == attribute(std::slice::from_ref(a), name).unwrap_or(""))
+                    && value.is_none_or(|v| Some(v) == attribute(std::slice::from_ref(a), name))
             });
             if !fits {
                 let why = "the description has no key for it, or gsdc writes another value";

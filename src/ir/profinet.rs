@@ -288,6 +288,8 @@ pub struct Stack {
     pub max_output_length: Option<u16>,
     /// Each port's `MAUTypeItem@AdjustSupported`.
     pub mau_type_adjustable: bool,
+    /// `PhysicalSlots` 0 to it, where more than the module's slot.
+    pub last_slot: Option<u16>,
 }
 
 /// A way the device may get its IP address.

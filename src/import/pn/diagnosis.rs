@@ -12,9 +12,13 @@ use crate::import::Notes;
 
 /// The entries of the file's channel diagnosis the description can say.
 pub(super) fn entries<'a>(device: &'a PnDevice, notes: &mut Notes) -> Vec<Entry<'a>> {
-    let mut said = Vec::new();
+    let mut said: Vec<Entry> = Vec::new();
     for item in &device.diagnosis {
-        match entry(item) {
+        let entry = entry(item).and_then(|e| match said.iter().any(|s| s.key() == e.key()) {
+            true => Err("its error type is another item's (in its API), which the description's channel diagnosis gives once"),
+            false => Ok(e),
+        });
+        match entry {
             Ok(entry) => said.push(entry),
             Err(why) => notes.unsaid(
                 &format!("{} {}", item.element, item.error_type),
@@ -33,6 +37,11 @@ pub(super) struct Entry<'a> {
 }
 
 impl Entry<'_> {
+    /// What identifies it: its error type in its API.
+    fn key(&self) -> (Option<u32>, u32) {
+        (self.api, self.item.error_type)
+    }
+
     pub fn write(&self, out: &mut TomlOut) {
         out.array_item("profinet.channel_diagnosis");
         out.key("error_type", format!("0x{:04X}", self.item.error_type));
@@ -75,7 +84,8 @@ fn entry(item: &DiagItem) -> Result<Entry<'_>, &'static str> {
             "the description's channel diagnosis is ChannelDiagItems and ProfileChannelDiagItems",
         ),
     };
-    let api = attribute(&item.attributes, "API").and_then(|a| a.parse::<u32>().ok());
+    let api = attribute(&item.attributes, "API")
+        .and_then(|a| a.parse::<u32>().ok().filter(|&api| api >= 1));
     let others = item.attributes.iter().any(|a| &*a.name != "API");
     if others || profile != api.is_some() {
         return Err("the description's channel diagnosis has an error type, a profile's API, a name and a help text, and no other attribute");

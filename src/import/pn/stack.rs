@@ -2,10 +2,12 @@
 //! of the card's PROFINET stack, as the description's keys say it, and a
 //! later access point's `stack = { ... }` where it differs from the first.
 
-use super::{attribute, list, quote, submodules_of, Recognised};
+use super::{attribute, found, list, quote, submodules_of, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::import::Notes;
+use crate::ir::profinet::MODULE_SLOT;
+use std::ops::RangeInclusive;
 
 /// The ways of address assignment the description names.
 const ADDRESS_ASSIGNMENTS: [&str; 3] = ["DCP", "DHCP", "LOCAL"];
@@ -20,6 +22,8 @@ pub(super) struct Declared {
     shared_device: bool,
     application_relations: Option<u16>,
     mau_type_adjustable: bool,
+    /// PhysicalSlots' last, where more than the module's slot.
+    last_slot: Option<u16>,
     /// IOConfigData's MaxInputLength and MaxOutputLength.
     io: [IoLimit; 2],
 }
@@ -46,29 +50,28 @@ impl Declared {
         let interface = submodules_of(dap, SubmoduleKind::Interface).next();
         let flag = |name: &str| attribute(attributes, name) == Some("true");
         let device_access = flag("DeviceAccessSupported");
-        let device_access_ars = count(
+        let device_access_ars = number(
             notes,
             attributes,
             "NumberOfDeviceAccessAR",
+            1..=u8::MAX.into(),
             "the description's device_access_ars is 1 to 255",
         )
         .and_then(|n| u8::try_from(n).ok());
         let device_access_ars = match (device_access_ars, device_access) {
             (Some(_), false) => {
-                let place = attributes
-                    .iter()
-                    .find(|a| &*a.name == "NumberOfDeviceAccessAR");
-                if let Some(a) = place {
+                if let Some((a, _)) = found(attributes, "NumberOfDeviceAccessAR") {
                     notes.unsaid("NumberOfDeviceAccessAR", &a.place, "the description's device_access_ars needs device_access = true (E184), and DeviceAccessSupported is not true");
                 }
                 None
             }
             (ars, _) => ars,
         };
-        let application_relations = count(
+        let application_relations = number(
             notes,
             interface.map_or(&[][..], |s| &s.attributes[..]),
             "ApplicationRelations@NumberOfAR",
+            1..=u16::MAX,
             "the description's application_relations is 1 to 65535",
         );
         let offered = modules
@@ -81,6 +84,7 @@ impl Declared {
             .map(|name| io_limit(attributes, &format!("IOConfigData@{name}"), needed, notes));
         Declared {
             io,
+            last_slot: last_slot(notes, attributes).filter(|&last| last > MODULE_SLOT),
             mau_type_adjustable: mau_type_adjustable(dap, notes),
             address_assignment: address_assignment(dap, notes),
             device_access,
@@ -118,6 +122,7 @@ impl Declared {
             shared_device: false,
             application_relations: None,
             mau_type_adjustable: false,
+            last_slot: None,
         }
     }
 
@@ -168,6 +173,10 @@ impl Declared {
                 self.application_relations.unwrap_or(1).to_string(),
             ));
         }
+        let slots = |d: &Declared| d.last_slot.unwrap_or(MODULE_SLOT);
+        if slots(self) != slots(base) {
+            keys.push(("last_slot", slots(self).to_string()));
+        }
         // What gsdc writes for this DAP without a key: the base's stated
         // length (a later DAP takes the first's), else what it needs.
         for (key, (mine, base)) in ["max_input_length", "max_output_length"]
@@ -184,21 +193,12 @@ impl Declared {
     }
 }
 
-/// An IOConfigData length; one less than the modules need is left out
-/// (gsdc writes the need), and the round trip judges it.
+/// An IOConfigData length; one less than the modules need, or more than
+/// the description takes, is left out (gsdc writes the need), and the
+/// round trip judges it.
 fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes) -> IoLimit {
-    let Some(a) = attributes.iter().find(|a| &*a.name == name) else {
-        return IoLimit { file: None, needed };
-    };
-    let text = attribute(std::slice::from_ref(a), name).unwrap_or_default();
-    let file = text.parse().ok().filter(|&f: &u16| f >= needed);
-    if file.is_none() {
-        notes.unsaid(
-            &format!("{name} `{text}`"),
-            &a.place,
-            &format!("it is not a length of at least what the modules need as gsdc counts them ({needed}), which gsdc writes"),
-        );
-    }
+    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}), which it writes without one, to 1440");
+    let file = number(notes, attributes, name, needed..=1440, &why);
     IoLimit { file, needed }
 }
 
@@ -209,16 +209,46 @@ fn flag(keys: &mut Vec<(&'static str, String)>, key: &'static str, mine: bool, t
     }
 }
 
-/// A count of ARs an attribute declares (1 or more); one the description
-/// cannot state is left out with `why`.
-fn count(notes: &mut Notes, attributes: &[Attribute], name: &str, why: &str) -> Option<u16> {
-    let a = attributes.iter().find(|a| &*a.name == name)?;
-    let value = attribute(std::slice::from_ref(a), name)?;
-    let parsed = value.parse().ok().filter(|&n: &u16| n >= 1);
+/// A number an attribute declares, within `range`; one outside it, or
+/// not a number, is left out with `why`.
+fn number(
+    notes: &mut Notes,
+    attributes: &[Attribute],
+    name: &str,
+    range: RangeInclusive<u16>,
+    why: &str,
+) -> Option<u16> {
+    let (a, value) = found(attributes, name)?;
+    let parsed = value.parse().ok().filter(|n| range.contains(n));
     if parsed.is_none() {
         notes.unsaid(&format!("{name} `{value}`"), &a.place, why);
     }
     parsed
+}
+
+/// The last slot of PhysicalSlots, when it names the slots from 0 to one
+/// (`0..2`, `0 1 2`); another list is left out.
+fn last_slot(notes: &mut Notes, attributes: &[Attribute]) -> Option<u16> {
+    let (a, value) = found(attributes, "PhysicalSlots")?;
+    let mut slots = Vec::new();
+    for token in value.split_whitespace() {
+        let (first, last) = token.split_once("..").unwrap_or((token, token));
+        match (first.parse::<u16>(), last.parse::<u16>()) {
+            (Ok(first), Ok(last)) if first <= last => slots.extend(first..=last),
+            _ => slots.clear(),
+        }
+    }
+    slots.sort_unstable();
+    let last = slots.last().copied().filter(|&last| last >= MODULE_SLOT);
+    let from_zero = last.filter(|&last| slots.iter().copied().eq(0..=last));
+    if from_zero.is_none() {
+        notes.unsaid(
+            &format!("PhysicalSlots `{value}`"),
+            &a.place,
+            "the description's last_slot gives the slots from 0 to it, 1 or more",
+        );
+    }
+    from_zero
 }
 
 /// Whether the controller may set each port's MAU type: the first port's
@@ -235,11 +265,7 @@ fn mau_type_adjustable(dap: &Dap, notes: &mut Notes) -> bool {
     };
     let first_adjustable = adjustable(&first.attributes);
     for port in ports.filter(|p| adjustable(&p.attributes) != first_adjustable) {
-        let place = port
-            .attributes
-            .iter()
-            .find(|a| &*a.name == NAME)
-            .map_or(&port.place, |a| &a.place);
+        let place = found(&port.attributes, NAME).map_or(&port.place, |(a, _)| &a.place);
         notes.unsaid(
             &format!("port `{}`'s AdjustSupported", port.id),
             place,
@@ -251,12 +277,7 @@ fn mau_type_adjustable(dap: &Dap, notes: &mut Notes) -> bool {
 
 /// AddressAssignment's ways, when each is one the description names, once.
 fn address_assignment(dap: &Dap, notes: &mut Notes) -> Option<Vec<String>> {
-    let a = dap
-        .item
-        .attributes
-        .iter()
-        .find(|a| &*a.name == "AddressAssignment")?;
-    let value = attribute(std::slice::from_ref(a), "AddressAssignment")?;
+    let (a, value) = found(&dap.item.attributes, "AddressAssignment")?;
     let ways: Vec<String> = value.split(';').map(|w| w.trim().to_string()).collect();
     let known = ways
         .iter()

@@ -32,11 +32,11 @@ pub fn lower(
     let all_modules: Vec<usize> = (0..modules.len()).collect();
     let needed = io::max_lengths(modules.iter(), first.ports.len());
     let device = first.device;
-    let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack");
-    let (max_input_length, max_output_length) = match &first_stack {
-        Some(stack) => stack::io_lengths(cx, needed, stack, (&p.stack, &p.stack), "profinet.stack"),
-        None => needed,
-    };
+    // A later DAP's stack is the first's with changes: none is checked
+    // against a stack that was refused.
+    let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack")?;
+    let (max_input_length, max_output_length) =
+        stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
         submodule_id: "IDS_DAP".into(),
@@ -53,9 +53,9 @@ pub fn lower(
         modules: all_modules,
         max_input_length,
         max_output_length,
-        stack: first_stack.clone().unwrap_or_default(),
+        stack: first_stack,
     }];
-    let mut complete = first_stack.is_some();
+    let mut complete = true;
     for (index, given) in p.daps.iter().enumerate() {
         match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules) {
             Some(dap) => daps.push(dap),
@@ -132,7 +132,7 @@ fn lower_entry(
     let needed = io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
     let stack = stack::lower(cx, &given.stack, &first.stack, &what("stack"))?;
     let (max_input_length, max_output_length) =
-        stack::io_lengths(cx, needed, &stack, (&given.stack, &p.stack), &what("stack"));
+        stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
     Some(Dap {
         id: format!("IDD_DAP_{number}"),

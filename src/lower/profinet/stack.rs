@@ -4,13 +4,13 @@
 
 use crate::description::{self as raw, AddressAssignment as RawAssignment};
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{AddressAssignment, Stack};
+use crate::ir::profinet::{AddressAssignment, Stack, MODULE_SLOT};
 use crate::lower::checks::Checker;
 use toml::Spanned;
 
 /// The stack `given` states over `inherited` (gsdc's defaults for the
-/// first DAP); `at` is the table's path. E184 for device access ARs
-/// without device access.
+/// first DAP); `at` is the table's path. E101 for a number out of its
+/// range, E184 for device access ARs without device access.
 pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) -> Option<Stack> {
     let flag = |key: &Option<Spanned<bool>>, inherited: bool| {
         key.as_ref().map_or(inherited, |k| *k.get_ref())
@@ -19,112 +19,108 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         Some(list) => address_assignment(cx, list, at)?,
         None => inherited.address_assignment.clone(),
     };
-    let device_access_ars = match &given.device_access_ars {
-        Some(n) => {
-            Some(cx.spanned_in_range(n, 1, u8::MAX.into(), &format!("{at}.device_access_ars"))?)
-        }
-        None => inherited.device_access_ars,
+    // Each: `None` left out (inherited), `Some(None)` out of range.
+    let ars = given.device_access_ars.as_ref().map(|n| {
+        cx.spanned_in_range::<u8, _>(n, 1, u8::MAX.into(), &format!("{at}.device_access_ars"))
+    });
+    let mut number = |key: &Option<Spanned<u16>>, name: &str, (min, max): (u16, u16)| {
+        let n = key.as_ref()?;
+        Some(cx.spanned_in_range::<u16, _>(n, min.into(), max.into(), &format!("{at}.{name}")))
     };
-    let application_relations = match &given.application_relations {
-        Some(n) => Some(cx.spanned_in_range(
-            n,
-            1,
-            u16::MAX.into(),
-            &format!("{at}.application_relations"),
-        )?),
-        None => inherited.application_relations,
-    };
-    let limit = |cx: &mut Checker,
-                 key: &Option<Spanned<u16>>,
-                 name: &str,
-                 inherited: Option<u16>| {
-        match key {
-            Some(n) => cx.spanned_in_range(n, 1, MAX_IO_LENGTH.into(), &format!("{at}.{name}")),
-            None => inherited,
-        }
-    };
-    let max_input_length = limit(
-        cx,
+    let relations = number(
+        &given.application_relations,
+        "application_relations",
+        (1, u16::MAX),
+    );
+    let input = number(
         &given.max_input_length,
         "max_input_length",
-        inherited.max_input_length,
+        (1, MAX_IO_LENGTH),
     );
-    let max_output_length = limit(
-        cx,
+    let output = number(
         &given.max_output_length,
         "max_output_length",
-        inherited.max_output_length,
+        (1, MAX_IO_LENGTH),
     );
+    let last_slot = number(&given.last_slot, "last_slot", (MODULE_SLOT, MAX_SLOT));
     let stack = Stack {
         address_assignment,
         device_access: flag(&given.device_access, inherited.device_access),
-        device_access_ars,
+        device_access_ars: stated_or(ars, inherited.device_access_ars)?,
         name_of_station_not_transferable: flag(
             &given.name_of_station_not_transferable,
             inherited.name_of_station_not_transferable,
         ),
         shared_device: flag(&given.shared_device, inherited.shared_device),
         mau_type_adjustable: flag(&given.mau_type_adjustable, inherited.mau_type_adjustable),
-        application_relations,
-        max_input_length,
-        max_output_length,
+        application_relations: stated_or(relations, inherited.application_relations)?,
+        max_input_length: stated_or(input, inherited.max_input_length)?,
+        max_output_length: stated_or(output, inherited.max_output_length)?,
+        last_slot: stated_or(last_slot, inherited.last_slot)?,
     };
     check_device_access(cx, given, &stack)?;
     Some(stack)
 }
+
+/// A number stated (`Some`, `Some(None)` when it was refused) or else
+/// `inherited`; `None` when refused.
+fn stated_or<T>(stated: Option<Option<T>>, inherited: Option<T>) -> Option<Option<T>> {
+    match stated {
+        Some(value) => value.map(Some),
+        None => Some(inherited),
+    }
+}
+
+/// The highest slot number GSDML allows (`PhysicalSlots`, 0x7FFF).
+const MAX_SLOT: u16 = 0x7FFF;
 
 /// IOConfigData's bound on each length (IEC 61158-6-10's largest frame
 /// payload; p-net's GSDML guide: "valid 0..1440").
 const MAX_IO_LENGTH: u16 = 1440;
 
 /// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
-/// way: the stack's limits where stated, else the need. E174 where a
-/// stated limit is less, at the key that states it: the DAP's own `stack`
-/// (`given`), else the first's (`first`), whose a later DAP takes.
+/// way: the stack's limits where stated, else the need. E174 where the
+/// DAP's own `stack` (`given`) states a limit less than its need; a later
+/// DAP that takes the first's limit and needs more (more ports) writes its
+/// need, as `gsdc import` expects.
 pub fn io_lengths(
     cx: &mut Checker,
     needed: (u16, u16),
     stack: &Stack,
-    (given, first): (&raw::Stack, &raw::Stack),
+    given: &raw::Stack,
     at: &str,
 ) -> (u16, u16) {
-    let mut length = |stated: Option<u16>,
-                      needed: u16,
-                      key: fn(&raw::Stack) -> &Option<Spanned<u16>>,
-                      name: &str| {
-        let Some(value) = stated else {
-            return needed;
-        };
-        let span = key(given)
-            .as_ref()
-            .or(key(first).as_ref())
-            .map(Spanned::span);
-        if let (true, Some(span)) = (value < needed, span) {
-            cx.push(
-                Diagnostic::error(
-                    "E174",
-                    format!("{at}.{name} = {value} is less than the modules need ({needed})"),
-                )
-                .at(span)
-                .label("too small")
-                .help(format!(
+    let mut length =
+        |value: Option<u16>, needed: u16, stated: &Option<Spanned<u16>>, name: &str| {
+            let Some(value) = value else {
+                return needed;
+            };
+            if let (true, Some(stated)) = (value < needed, stated) {
+                cx.push(
+                    Diagnostic::error(
+                        "E174",
+                        format!("{at}.{name} = {value} is less than the modules need ({needed})"),
+                    )
+                    .at(stated.span())
+                    .label("too small")
+                    .help(format!(
                     "state at least {needed}, or leave it out: gsdc writes what the modules need"
                 )),
-            );
-        }
-        value.max(needed)
-    };
+                );
+            }
+            value.max(needed)
+        };
     (
         length(
             stack.max_input_length,
             needed.0,
-            |s| &s.max_input_length,
+            &given.max_input_length,
             "max_input_length",
         ),
         length(
             stack.max_output_length,
             needed.1,
-            |s| &s.max_output_length,
+            &given.max_output_length,
             "max_output_length",
         ),
     )
