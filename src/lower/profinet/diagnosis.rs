@@ -10,10 +10,11 @@ use crate::ir::profinet::{ChannelDiagnosis, TextRef};
 use crate::ir::{Ident, Scope};
 use crate::lower::checks::Checker;
 use std::collections::BTreeSet;
+use std::ops::RangeInclusive;
 use toml::Spanned;
 
-const CHANNEL_ERROR_TYPES: (i64, i64) = (15, 32767);
-const PROFILE_ERROR_TYPES: (i64, i64) = (0x9000, 0x9FFF);
+const CHANNEL_ERROR_TYPES: RangeInclusive<u16> = 15..=32767;
+const PROFILE_ERROR_TYPES: RangeInclusive<u16> = 0x9000..=0x9FFF;
 
 /// Each entry; E101 for an error type outside its element's range or an
 /// API of 0, E105 for one given twice (in its API).
@@ -46,21 +47,7 @@ fn one(
         Some(api) => Some(cx.spanned_in_range(api, 1, u32::MAX.into(), &at("api"))?),
         None => None,
     };
-    let (min, max) = match api {
-        Some(_) => PROFILE_ERROR_TYPES,
-        None => CHANNEL_ERROR_TYPES,
-    };
-    let value = i64::from(*entry.error_type.get_ref());
-    if api.is_none() && (PROFILE_ERROR_TYPES.0..=PROFILE_ERROR_TYPES.1).contains(&value) {
-        cx.push(
-            Diagnostic::error("E101", format!("0x{value:04X} is a profile's error type, without its API"))
-                .at(entry.error_type.span())
-                .label("a profile's error type")
-                .help("error types 0x9000 to 0x9FFF are a profile's: give its api (PROFIdrive's 0x3A00), or an error type from 15 to 32767"),
-        );
-        return None;
-    }
-    let error_type: u16 = cx.spanned_in_range(&entry.error_type, min, max, &at("error_type"))?;
+    let error_type = error_type(cx, &entry.error_type, api)?;
     if !seen.insert((api, error_type)) {
         cx.duplicate(
             format!("channel diagnosis 0x{error_type:04X}"),
@@ -85,4 +72,41 @@ fn one(
         name: TextRef::new(id, name),
         ident,
     })
+}
+
+/// The error type, in its element's range (E101, in hex as GSDML files'
+/// readers and the profiles write error types): a profile's with its API.
+fn error_type(cx: &mut Checker, given: &Spanned<u16>, api: Option<u32>) -> Option<u16> {
+    let value = *given.get_ref();
+    let range = match api {
+        Some(_) => PROFILE_ERROR_TYPES,
+        None => CHANNEL_ERROR_TYPES,
+    };
+    if range.contains(&value) {
+        return Some(value);
+    }
+    let (message, label, help) = match api {
+        None if PROFILE_ERROR_TYPES.contains(&value) => (
+            format!("0x{value:04X} is a profile's error type, without its API"),
+            "a profile's error type",
+            "error types 0x9000 to 0x9FFF are a profile's: give its api (PROFIdrive's 0x3A00), or an error type from 0x000F to 0x7FFF".to_string(),
+        ),
+        Some(_) => (
+            format!("error type 0x{value:04X} is out of range for a profile's"),
+            "out of range",
+            "with an api the error type is the profile's, 0x9000 to 0x9FFF; leave api out for the card's own (0x000F to 0x7FFF)".to_string(),
+        ),
+        None => (
+            format!("error type 0x{value:04X} is out of range"),
+            "out of range",
+            "a channel diagnosis error type is 0x000F to 0x7FFF (0x0100 and up the card's own), or a profile's 0x9000 to 0x9FFF with its api".to_string(),
+        ),
+    };
+    cx.push(
+        Diagnostic::error("E101", message)
+            .at(given.span())
+            .label(label)
+            .help(help),
+    );
+    None
 }
