@@ -48,7 +48,7 @@ impl Declared {
     pub fn of(dap: &Dap, modules: &[Recognised], notes: &mut Notes) -> Declared {
         let attributes = &dap.item.attributes;
         let interface = submodules_of(dap, SubmoduleKind::Interface).next();
-        let flag = |name: &str| attribute(attributes, name) == Some("true");
+        let flag = |name: &str| attribute(attributes, name).is_some_and(is_true);
         let device_access = flag("DeviceAccessSupported");
         let device_access_ars = number(
             notes,
@@ -202,6 +202,11 @@ fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes
     IoLimit { file, needed }
 }
 
+/// An `xsd:boolean` that is true.
+fn is_true(value: &str) -> bool {
+    matches!(value, "true" | "1")
+}
+
 /// `key = mine` where it is not `theirs`.
 fn flag(keys: &mut Vec<(&'static str, String)>, key: &'static str, mine: bool, theirs: bool) {
     if mine != theirs {
@@ -257,7 +262,7 @@ fn last_slot(notes: &mut Notes, attributes: &[Attribute]) -> Option<u16> {
 fn mau_type_adjustable(dap: &Dap, notes: &mut Notes) -> bool {
     const NAME: &str = "MAUTypeList/MAUTypeItem@AdjustSupported";
     let adjustable = |attributes: &[Attribute]| {
-        attribute(attributes, NAME).is_some_and(|v| v.split_whitespace().all(|t| t == "true"))
+        attribute(attributes, NAME).is_some_and(|v| v.split_whitespace().all(is_true))
     };
     let mut ports = submodules_of(dap, SubmoduleKind::Port);
     let Some(first) = ports.next() else {

@@ -74,8 +74,8 @@ fn stated_or<T>(stated: Option<Option<T>>, inherited: Option<T>) -> Option<Optio
 /// The highest slot number GSDML allows (`PhysicalSlots`, 0x7FFF).
 const MAX_SLOT: u16 = 0x7FFF;
 
-/// IOConfigData's bound on each length (IEC 61158-6-10's largest frame
-/// payload; p-net's GSDML guide: "valid 0..1440").
+/// IOConfigData's bound on each length (p-net's GSDML guide: "valid
+/// 0..1440"; the reference notes' checks beyond the schema).
 const MAX_IO_LENGTH: u16 = 1440;
 
 /// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
