@@ -9,8 +9,8 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, Module, NetloadClass, ParameterRecord, Profinet, TextRef,
-    ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
+    ConformanceClass, Dap, DataItem, Module, NetloadClass, ParameterRecord, Profinet, Stack,
+    TextRef, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
@@ -231,20 +231,8 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         ("LLDP_NoD_Supported", "true"),
         ("ResetToFactoryModes", "2"),
     ];
-    let ars = stack.device_access_ars.map(|n| n.to_string());
-    attributes.extend(ars.as_deref().map(|n| ("NumberOfDeviceAccessAR", n)));
-    if stack.shared_device {
-        attributes.push(("SharedDeviceSupported", "true"));
-    }
-    let assignment = stack
-        .address_assignment
-        .iter()
-        .map(|a| a.token())
-        .collect::<Vec<_>>()
-        .join(";");
-    if !assignment.is_empty() {
-        attributes.push(("AddressAssignment", &assignment));
-    }
+    let stated = stated_stack_attributes(stack);
+    attributes.extend(stated.iter().map(|(name, value)| (*name, value.as_str())));
     doc.open("DeviceAccessPointItem", &attributes);
     let mut values = vec![("VendorName", ir.device.vendor.as_str())];
     let optional = [
@@ -328,6 +316,23 @@ fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&s
         doc.leaf(element, &[("Value", value)]);
     }
     doc.close("ModuleInfo");
+}
+
+/// The DAP attributes of its stack that are written only when the
+/// description states them (`[profinet.stack]`).
+fn stated_stack_attributes(stack: &Stack) -> Vec<(&'static str, String)> {
+    let mut attributes = Vec::new();
+    if let Some(ars) = stack.device_access_ars {
+        attributes.push(("NumberOfDeviceAccessAR", ars.to_string()));
+    }
+    if stack.shared_device {
+        attributes.push(("SharedDeviceSupported", "true".to_string()));
+    }
+    if !stack.address_assignment.is_empty() {
+        let ways: Vec<&str> = stack.address_assignment.iter().map(|a| a.token()).collect();
+        attributes.push(("AddressAssignment", ways.join(";")));
+    }
+    attributes
 }
 
 /// The DAP's own submodule: no IO data and no records. A device that lets
