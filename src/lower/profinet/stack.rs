@@ -71,7 +71,9 @@ fn stated_or<T>(stated: Option<Option<T>>, inherited: Option<T>) -> Option<Optio
     }
 }
 
-/// The highest slot number GSDML allows (`PhysicalSlots`, 0x7FFF).
+/// gsdc's bound on the last slot, not the schema's (`PhysicalSlots` is a
+/// ValueListT without one): 0x7FFF, where the schema's other 15-bit
+/// PROFINET numbers (record indexes, vendor error types) end.
 const MAX_SLOT: u16 = 0x7FFF;
 
 /// IOConfigData's bound on each length (p-net's GSDML guide: "valid
