@@ -1480,6 +1480,17 @@ fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its
     );
     assert!(!toml.contains("[profinet.stack]"), "the first's is gsdc's");
 
+    // An xsd:boolean of 1 is true, as the comparison reads it.
+    let one_is_true = md810_gsdml_changed(|gsdml| {
+        gsdml.replacen(
+            "DeviceAccessSupported=\"false\"",
+            "DeviceAccessSupported=\"1\"",
+            1,
+        )
+    });
+    let toml = written(&one_is_true, "DeviceAccessSupported=\"1\"");
+    assert_says(toml, &["[profinet.stack]\ndevice_access = true\n"]);
+
     let unknown_way = md810_gsdml_changed(|gsdml| {
         gsdml.replacen(
             "ResetToFactoryModes=\"2\"",

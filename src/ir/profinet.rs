@@ -302,6 +302,12 @@ pub enum AddressAssignment {
 }
 
 impl AddressAssignment {
+    pub const ALL: [AddressAssignment; 3] = [
+        AddressAssignment::Dcp,
+        AddressAssignment::Dhcp,
+        AddressAssignment::Local,
+    ];
+
     /// Its GSDML token.
     pub fn token(self) -> &'static str {
         match self {

@@ -21,7 +21,9 @@ mod interface;
 mod io;
 mod records;
 mod stack;
+pub(crate) use stack::MAX_IO_LENGTH;
 
+pub(crate) use diagnosis::{CHANNEL_ERROR_TYPES, PROFILE_ERROR_TYPES};
 pub(crate) use io::{
     description as module_description, info_prefix, io_length, pkw_words, STANDARD_TELEGRAM_2_WORDS,
 };

@@ -90,8 +90,11 @@ fn entry(item: &DiagItem) -> Result<Entry<'_>, &'static str> {
     if others || profile != api.is_some() {
         return Err("the description's channel diagnosis has an error type, a profile's API, a name and a help text, and no other attribute");
     }
-    let range = if profile { 0x9000..=0x9FFF } else { 15..=32767 };
-    if !range.contains(&item.error_type) {
+    let range = match profile {
+        true => crate::lower::PROFILE_ERROR_TYPES,
+        false => crate::lower::CHANNEL_ERROR_TYPES,
+    };
+    if !u16::try_from(item.error_type).is_ok_and(|t| range.contains(&t)) {
         return Err("its error type is outside the schema's range for its element");
     }
     Ok(Entry { item, api })

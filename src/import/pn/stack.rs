@@ -6,11 +6,8 @@ use super::{attribute, found, list, quote, submodules_of, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::import::Notes;
-use crate::ir::profinet::MODULE_SLOT;
+use crate::ir::profinet::{AddressAssignment, MODULE_SLOT};
 use std::ops::RangeInclusive;
-
-/// The ways of address assignment the description names.
-const ADDRESS_ASSIGNMENTS: [&str; 3] = ["DCP", "DHCP", "LOCAL"];
 
 /// One device access point's stack, as its file declares it; a value
 /// the description cannot state is left out (W600) and unwritten.
@@ -197,8 +194,9 @@ impl Declared {
 /// the description takes, is left out (gsdc writes the need), and the
 /// round trip judges it.
 fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes) -> IoLimit {
-    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}), which it writes without one, to 1440");
-    let file = number(notes, attributes, name, needed..=1440, &why);
+    let max = crate::lower::MAX_IO_LENGTH;
+    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}), which it writes without one, to {max}");
+    let file = number(notes, attributes, name, needed..=max, &why);
     IoLimit { file, needed }
 }
 
@@ -286,7 +284,7 @@ fn address_assignment(dap: &Dap, notes: &mut Notes) -> Option<Vec<String>> {
     let ways: Vec<String> = value.split(';').map(|w| w.trim().to_string()).collect();
     let known = ways
         .iter()
-        .all(|w| ADDRESS_ASSIGNMENTS.contains(&w.as_str()));
+        .all(|w| AddressAssignment::ALL.iter().any(|a| a.token() == w));
     let once = ways.iter().enumerate().all(|(i, w)| !ways[..i].contains(w));
     if known && once {
         return Some(ways);

@@ -13,8 +13,8 @@ use std::collections::BTreeSet;
 use std::ops::RangeInclusive;
 use toml::Spanned;
 
-const CHANNEL_ERROR_TYPES: RangeInclusive<u16> = 15..=32767;
-const PROFILE_ERROR_TYPES: RangeInclusive<u16> = 0x9000..=0x9FFF;
+pub(crate) const CHANNEL_ERROR_TYPES: RangeInclusive<u16> = 15..=32767;
+pub(crate) const PROFILE_ERROR_TYPES: RangeInclusive<u16> = 0x9000..=0x9FFF;
 
 /// Each entry; E101 for an error type outside its element's range or an
 /// API of 0, E105 for one given twice (in its API).

@@ -78,7 +78,7 @@ const MAX_SLOT: u16 = 0x7FFF;
 
 /// IOConfigData's bound on each length (p-net's GSDML guide: "valid
 /// 0..1440"; the reference notes' checks beyond the schema).
-const MAX_IO_LENGTH: u16 = 1440;
+pub(crate) const MAX_IO_LENGTH: u16 = 1440;
 
 /// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
 /// way: the stack's limits where stated, else the need. E174 where the
