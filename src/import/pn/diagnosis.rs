@@ -33,6 +33,7 @@ pub(super) fn entries<'a>(device: &'a PnDevice, notes: &mut Notes) -> Vec<Entry<
 /// One channel diagnosis, as its `[[profinet.channel_diagnosis]]` says it.
 pub(super) struct Entry<'a> {
     item: &'a DiagItem,
+    name: &'a Text,
     api: Option<u32>,
 }
 
@@ -48,8 +49,7 @@ impl Entry<'_> {
         if let Some(api) = self.api {
             out.key("api", format!("0x{api:04X}"));
         }
-        let name = self.item.name.as_ref().expect("an entry has a name");
-        out.key("name", text(name));
+        out.key("name", text(self.name));
         if let Some(help) = &self.item.help {
             out.key("help", text(help));
         }
@@ -97,5 +97,5 @@ fn entry(item: &DiagItem) -> Result<Entry<'_>, &'static str> {
     if !u16::try_from(item.error_type).is_ok_and(|t| range.contains(&t)) {
         return Err("its error type is outside the schema's range for its element");
     }
-    Ok(Entry { item, api })
+    Ok(Entry { item, name, api })
 }
