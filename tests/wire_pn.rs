@@ -131,9 +131,27 @@ fn every_profinet_description_every_module() {
         &text,
         &[
             "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
-            "PASS IDM_STD_TEL_1 under device access point 2: 0 records decoded, 1 inputs observed",
+            "PASS IDM_STD_TEL_1 under device access point 2: 1 records decoded, 1 inputs observed",
             "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 1",
-            "PASS IDM_STD_TEL_1 under device access point 3: 0 records decoded, 1 inputs observed",
+            "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
+        ],
+    );
+    own_idents_stop_mode_default_per_module(&text);
+}
+
+/// own_idents.toml's stop mode is each module's default, which the user may
+/// change (`per_module` with `changeable`): standard telegram 1's record
+/// holds it alone (default 0), the PZD module's after the fault reaction
+/// (default 1). The controller writes the value after each default, which
+/// the device takes only because the GSDML and the layout let it change.
+fn own_idents_stop_mode_default_per_module(text: &str) {
+    assert_lines(
+        text,
+        &[
+            "  record 1 (Drive settings) to slot 1 subslot 2: 00 01 = [1]",
+            "    decoded by the layout: Stop mode (P10.06) = 1",
+            "  record 1 (Drive settings) to slot 1 subslot 1: 00 01 00 02 = [1, 2]",
+            "    decoded by the layout: Fault reaction (P10.05) = 1, Stop mode (P10.06) = 2",
         ],
     );
 }

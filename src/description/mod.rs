@@ -312,7 +312,7 @@ pub struct Setting {
     pub holds: Option<Spanned<Holds>>,
     /// PROFINET: the value each kind of module fixes, which the user
     /// cannot change (MV810's P43.01: 1 for user-defined modules, 0 for
-    /// standard telegram 1).
+    /// standard telegram 1), or its default (`changeable`).
     pub per_module: Option<Spanned<PerModule>>,
     /// Where the drive parameter is set.
     pub set_at: Option<Spanned<SetAt>>,
@@ -334,6 +334,10 @@ pub struct PerModule {
     pub standard_telegram_1: Option<Spanned<Address>>,
     /// Standard telegram 2, when it is offered.
     pub standard_telegram_2: Option<Spanned<Address>>,
+    /// True: each value is that kind of module's default, which the user
+    /// may change (ABB FENA's stop mode: 1 in its PPO modules, 0 in its
+    /// standard telegrams); false, the default: the module fixes it.
+    pub changeable: Option<Spanned<bool>>,
     /// With `[profibus]`, which has no modules that could fix it: whether
     /// the master sets it in User_Prm_Data. Required there.
     pub profibus: Option<Spanned<OnProfibus>>,

@@ -674,7 +674,9 @@ impl<'a> Records<'a> {
     /// `[[settings]]`, one per entry of the settings record; an entry a
     /// module fixes (not changeable) is the value each kind of module fixes
     /// (`per_module`), its choices and default those of a module that lets
-    /// the user change it.
+    /// the user change it. An entry every module lets the user change whose
+    /// default differs by kind of module, or that a standard telegram
+    /// carries, is each kind's default (`per_module` with `changeable`).
     fn write_settings(&self, out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         for record in &self.settings {
             for field in &record.data.fields {
@@ -682,11 +684,10 @@ impl<'a> Records<'a> {
                     .iter()
                     .filter_map(|m| {
                         let r = m.data.records.iter().find(|r| r.index == record.index)?;
-                        let f = r
-                            .data
-                            .fields
-                            .iter()
-                            .find(|f| f.byte_offset == field.byte_offset)?;
+                        // By its name: a standard telegram's record holds
+                        // only the settings each kind of module writes, at
+                        // other offsets.
+                        let f = r.data.fields.iter().find(|f| f.name == field.name)?;
                         Some((m.kind, f))
                     })
                     .collect();
@@ -700,7 +701,9 @@ impl<'a> Records<'a> {
                 );
                 out.string("set_at", "master");
                 if changeable.is_none() || in_modules.iter().any(|(_, f)| !f.changeable) {
-                    per_module(out, &in_modules);
+                    per_module(out, &in_modules, false);
+                } else if defaults_differ_by_module(&in_modules) {
+                    per_module(out, &in_modules, true);
                 }
             }
         }
@@ -731,14 +734,30 @@ impl<'a> Records<'a> {
     }
 }
 
+/// Whether an entry every module lets the user change needs `per_module`
+/// to build: a standard telegram carries it (only `per_module` puts a
+/// setting there), or its default is not one for all modules.
+fn defaults_differ_by_module(in_modules: &[(ModuleKind, &Field)]) -> bool {
+    let in_telegram = in_modules.iter().any(|(k, _)| *k != ModuleKind::Pzd);
+    in_telegram
+        || in_modules
+            .iter()
+            .any(|(_, f)| f.default != in_modules[0].1.default)
+}
+
 /// `per_module`: the value each kind of module fixes, where all modules of
-/// the kind fix one value (the user's value where they do not fix it).
-fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
-    let fixed = |kind: ModuleKind| -> Option<String> {
+/// the kind fix one value (the user's value where they do not fix it); or,
+/// `changeable`, each kind's default, where all its modules have one.
+fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)], changeable: bool) {
+    let value = |kind: ModuleKind| -> Option<String> {
         let values: Vec<Option<&Value>> = in_modules
             .iter()
             .filter(|(k, _)| *k == kind)
-            .map(|(_, f)| (!f.changeable).then_some(f.default.as_ref()).flatten())
+            .map(|(_, f)| {
+                (changeable || !f.changeable)
+                    .then_some(f.default.as_ref())
+                    .flatten()
+            })
             .collect();
         match values.first()? {
             Some(Value::Int(v)) if values.iter().all(|w| *w == values[0]) => Some(v.to_string()),
@@ -747,7 +766,8 @@ fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)]) {
     };
     let parts: Vec<String> = MODULE_KIND_KEYS
         .into_iter()
-        .filter_map(|(key, kind)| Some(format!("{key} = {}", fixed(kind)?)))
+        .filter_map(|(key, kind)| Some(format!("{key} = {}", value(kind)?)))
+        .chain(changeable.then(|| "changeable = true".to_string()))
         .collect();
     out.key("per_module", format!("{{ {} }}", parts.join(", ")));
 }

@@ -120,8 +120,8 @@ pub struct MappingSet {
     pub allowed: Allowed,
     /// What its entries' values are.
     pub holds: Holds,
-    /// A setting whose value each PROFINET module fixes.
-    pub fixed: Option<FixedByModule>,
+    /// A setting whose value each kind of PROFINET module writes.
+    pub per_module: Option<PerModule>,
     /// Where the drive's parameters of the set are set: at the drive, or
     /// by the master at startup (User_Prm_Data, parameter records).
     pub set_at: SetAt,
@@ -172,14 +172,18 @@ pub enum Holds {
     Choice,
 }
 
-/// The value of a setting that each kind of PROFINET module fixes: the
-/// module writes it, the user cannot change it.
+/// The value of a setting that each kind of PROFINET module writes: one
+/// the module fixes (the user cannot change it), or the module's default.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
-pub struct FixedByModule {
+pub struct PerModule {
     pub user_defined: u16,
     pub standard_telegram_1: Option<u16>,
     pub standard_telegram_2: Option<u16>,
+    /// True: each value is its module's default, which the user may
+    /// change (ABB FENA's stop mode: 1 in its PPO modules, 0 in the
+    /// standard telegrams); false: the module fixes it.
+    pub changeable: bool,
     /// Whether User_Prm_Data carries the setting, a PROFIBUS master setting
     /// it, as the description says; true without `[profibus]`.
     pub in_user_prm: bool,

@@ -42,8 +42,9 @@ pub struct Profinet {
     /// How firmware reads the record of each kind of mapping a module
     /// carries, in the order of the kinds.
     pub records: Vec<RecordPlan>,
-    /// The value each module fixes, for each set fixed per module.
-    pub fixed: Vec<FixedValues>,
+    /// The value each module writes, for each set each kind of module
+    /// writes its own of.
+    pub module_values: Vec<ModuleValues>,
     /// The channel diagnoses the card reports, in the description's order.
     pub channel_diagnosis: Vec<ChannelDiagnosis>,
 }
@@ -83,9 +84,10 @@ impl Profinet {
         self.records.iter().find(|r| r.kind == kind)
     }
 
-    /// The values modules fix for the set `key`, when they fix one.
-    pub fn fixed(&self, key: SetKey) -> Option<&FixedValues> {
-        self.fixed.iter().find(|f| f.set == key)
+    /// The values each module writes for the set `key`, when each kind of
+    /// module writes its own.
+    pub fn module_values(&self, key: SetKey) -> Option<&ModuleValues> {
+        self.module_values.iter().find(|f| f.set == key)
     }
 
     /// Every text the GSDML refers to, in the order of the plan: the
@@ -145,12 +147,14 @@ pub enum RecordReading {
     Prefix,
 }
 
-/// The value of a set fixed per module, for each module that carries it:
-/// the module writes it; the user cannot change it.
+/// The value of a set each kind of module writes, for each module that
+/// carries it: one the module fixes, or the module's default.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
-pub struct FixedValues {
+pub struct ModuleValues {
     pub set: SetKey,
+    /// False: the modules fix the values; the user cannot change them.
+    pub changeable: bool,
     /// The module (its name in generated code and its ident number) and
     /// its value, in module order.
     pub modules: Vec<(Ident, u32, u16)>,
@@ -527,7 +531,7 @@ pub struct RecordRef {
     pub offset: u16,
     pub entry: EntryKey,
     pub text: TextRef,
-    /// The entry's default, or the value its module fixes.
+    /// The entry's default, or the value its module writes.
     pub default: u16,
     /// False where the module fixes the value.
     pub changeable: bool,

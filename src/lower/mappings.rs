@@ -7,8 +7,8 @@ use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::{
-    Allowed, EntryKey, FixedByModule, Holds, Ident, MappingEntry, MappingGroup, MappingKind,
-    MappingSet, Mappings, Numbering, SetAt, SetKey, Telegram, Text,
+    Allowed, EntryKey, Holds, Ident, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings,
+    Numbering, PerModule, SetAt, SetKey, Telegram, Text,
 };
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -178,13 +178,13 @@ fn said_set_at(said: &Spanned<raw::SetAt>) -> SetAt {
     }
 }
 
-/// The values a setting's modules fix, each one its setting allows.
-fn fixed_by_module(
+/// The values a setting's modules write, each one its setting allows.
+fn per_module(
     cx: &mut Checker,
     p: &Spanned<raw::PerModule>,
     allowed: &Allowed,
     numbering: Option<&Numbering>,
-) -> Option<FixedByModule> {
+) -> Option<PerModule> {
     let mut value = |address: &Spanned<raw::Address>| {
         let value = resolve_address(cx, address, numbering)?;
         if !allowed.contains(i64::from(value)) {
@@ -208,10 +208,11 @@ fn fixed_by_module(
         Some(address) => value(address).map(Some),
         None => Some(None),
     };
-    Some(FixedByModule {
+    Some(PerModule {
         standard_telegram_1: given(&per_module.standard_telegram_1)?,
         standard_telegram_2: given(&per_module.standard_telegram_2)?,
         user_defined,
+        changeable: per_module.changeable.as_ref().is_some_and(|c| *c.get_ref()),
         in_user_prm: per_module
             .profibus
             .as_ref()
@@ -277,8 +278,8 @@ fn lower_settings(
                 Some(said) => said_set_at(said),
                 None => unsaid_setting(cx, settings, i),
             };
-            set.fixed = match &s.per_module {
-                Some(p) => Some(fixed_by_module(cx, p, &set.allowed, numbering)?),
+            set.per_module = match &s.per_module {
+                Some(p) => Some(per_module(cx, p, &set.allowed, numbering)?),
                 None => None,
             };
             Some((set, s.name.span()))
@@ -353,7 +354,7 @@ fn build_set(
         key: SetKey { kind, first },
         allowed,
         holds,
-        fixed: None,
+        per_module: None,
         // Said by the caller, which knows where the description says it.
         set_at: SetAt::Master,
         allowed_ident: Ident::of(&["allowed"]),

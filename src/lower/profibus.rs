@@ -905,7 +905,7 @@ fn at_least(
 /// but a setting the description keeps from a PROFIBUS master
 /// (`per_module.profibus`); none set at the drive.
 fn in_user_prm(set: &MappingSet) -> bool {
-    set.master_writes() && set.fixed.is_none_or(|f| f.in_user_prm)
+    set.master_writes() && set.per_module.is_none_or(|f| f.in_user_prm)
 }
 
 /// A gateway's parameters from `start` on, within the limit (E116).

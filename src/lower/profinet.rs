@@ -127,7 +127,7 @@ pub fn lower(
     }
     let value_items = records::value_items(mappings, &modules);
     let reading_plans = records::reading_plans(mappings, &modules);
-    let fixed = records::fixed_values(mappings, &modules);
+    let module_values = records::module_values(mappings, &modules);
     // The PROFINET part's own info text, else the device's, else its name;
     // after the draft notice while an identity is a placeholder.
     let device_info = TextRef::new(
@@ -189,7 +189,7 @@ pub fn lower(
         modules,
         value_items,
         records: reading_plans,
-        fixed,
+        module_values,
         channel_diagnosis: channel_diagnosis?,
     })
 }

@@ -1,7 +1,7 @@
 //! A group of mappings in the layout: what each set of entries may hold,
 //! the entries with their defaults and drive parameters, where
 //! User_Prm_Data and the PROFINET record carry them, and the values each
-//! PROFINET module fixes.
+//! PROFINET module fixes or defaults.
 
 use super::{value_set, Const, Consts, Doc, Ref, Scope, Ty, Val, ValueSet};
 use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
@@ -21,7 +21,7 @@ pub(crate) struct Group {
     pub record: Option<Record>,
     /// DPV1 indexes: the bytes of each index's record.
     pub record_data: Option<Consts>,
-    pub fixed: Vec<Fixed>,
+    pub module_values: Vec<ModuleValues>,
 }
 
 /// Entries that share what they may hold.
@@ -82,14 +82,14 @@ pub(crate) struct Record {
 
 /// The value of a setting each PROFINET module fixes.
 #[derive(Serialize)]
-pub(crate) struct Fixed {
+pub(crate) struct ModuleValues {
     pub name: Ident,
     pub doc: Doc,
-    pub modules: Vec<FixedModule>,
+    pub modules: Vec<ModuleValue>,
 }
 
 #[derive(Serialize)]
-pub(crate) struct FixedModule {
+pub(crate) struct ModuleValue {
     /// The module's ident number constant.
     pub ident: Ident,
     pub value: u16,
@@ -159,7 +159,7 @@ pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
                 Val::Dec(len.into()),
             )],
         }),
-        fixed: fixed(ir, g),
+        module_values: module_values(ir, g),
     }
 }
 
@@ -259,26 +259,39 @@ fn entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entry> +
     })
 }
 
-/// For each set of `g` whose value PROFINET modules fix: every module that
-/// carries it, with its value.
-fn fixed(ir: &Ir, g: &MappingGroup) -> Vec<Fixed> {
+/// For each set of `g` whose value each kind of PROFINET module writes its
+/// own of: every module that carries it, with its value.
+fn module_values(ir: &Ir, g: &MappingGroup) -> Vec<ModuleValues> {
     let Some(profinet) = &ir.profinet else {
         return Vec::new();
     };
     g.sets
         .iter()
-        .filter_map(|set| Some((set, profinet.fixed(set.key)?)))
-        .map(|(set, fixed)| Fixed {
-            name: Ident::of(&["fixed"]).tagged(set.key.first),
-            doc: Doc::plain(format!(
-                "The value of \"{}\" each PROFINET module fixes, by its ident number: the \
-                 module writes it; the user cannot change it.",
-                set.entries[0].name.en
-            )),
-            modules: fixed
+        .filter_map(|set| Some((set, profinet.module_values(set.key)?)))
+        .map(|(set, values)| ModuleValues {
+            name: Ident::of(&[if values.changeable {
+                "module_default"
+            } else {
+                "fixed"
+            }])
+            .tagged(set.key.first),
+            doc: Doc::plain(if values.changeable {
+                format!(
+                    "The default of \"{}\" each PROFINET module writes, by its ident number: \
+                     the user may change it.",
+                    set.entries[0].name.en
+                )
+            } else {
+                format!(
+                    "The value of \"{}\" each PROFINET module fixes, by its ident number: the \
+                     module writes it; the user cannot change it.",
+                    set.entries[0].name.en
+                )
+            }),
+            modules: values
                 .modules
                 .iter()
-                .map(|(ident, _, value)| FixedModule {
+                .map(|(ident, _, value)| ModuleValue {
                     ident: ident.tagged("ident"),
                     value: *value,
                 })

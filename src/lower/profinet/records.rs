@@ -7,7 +7,7 @@ use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::i18n::files;
 use crate::ir::profinet::{
-    self, FixedValues, Module, ModuleKind, ParameterRecord, RecordReading, RecordRef, TextRef,
+    self, Module, ModuleKind, ModuleValues, ParameterRecord, RecordReading, RecordRef, TextRef,
     ValueItem,
 };
 use crate::ir::{Layout, MappingEntry, MappingKind, MappingSet, Mappings, Text};
@@ -283,8 +283,8 @@ fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
 
 /// The records a module carries, one Unsigned16 Ref per entry at offsets
 /// 0, 2, 4, ...: a user-defined module every kind, each PZD record with the
-/// words the module transports; standard telegram 1 only the settings its
-/// module fixes. A record with no entry for the module is left out.
+/// words the module transports; a standard telegram only the settings each
+/// kind of module writes its own value of. A record with no entry for the module is left out.
 pub fn records(
     mappings: &Mappings,
     plans: &[RecordPlan],
@@ -306,7 +306,7 @@ pub fn records(
                         entry.name.clone(),
                     ),
                     default: value.unwrap_or(entry.default),
-                    changeable: value.is_none(),
+                    changeable: set.per_module.is_none_or(|p| p.changeable),
                     value_item: set
                         .allowed
                         .choices()
@@ -326,7 +326,7 @@ pub fn records(
 }
 
 /// Whether `entry` is in the module's record, and the value the module
-/// fixes for it if it fixes one.
+/// writes for it if each kind of module writes its own.
 fn ref_value<'a>(
     set: &'a MappingSet,
     entry: &'a MappingEntry,
@@ -340,16 +340,13 @@ fn ref_value<'a>(
     if !set.master_writes() {
         return None;
     }
-    match (module, set.fixed) {
-        (ModuleKind::Pzd, fixed) if carried => Some((set, entry, fixed.map(|f| f.user_defined))),
-        (ModuleKind::StandardTelegram1, Some(fixed)) => {
-            Some((set, entry, Some(fixed.standard_telegram_1?)))
-        }
-        (ModuleKind::StandardTelegram2, Some(fixed)) => {
-            Some((set, entry, Some(fixed.standard_telegram_2?)))
-        }
-        _ => None,
-    }
+    let value = match (module, set.per_module) {
+        (ModuleKind::Pzd, per_module) if carried => per_module.map(|p| p.user_defined),
+        (ModuleKind::StandardTelegram1, Some(p)) => Some(p.standard_telegram_1?),
+        (ModuleKind::StandardTelegram2, Some(p)) => Some(p.standard_telegram_2?),
+        _ => return None,
+    };
+    Some((set, entry, value))
 }
 
 /// How firmware reads each kind of record some module carries: its index,
@@ -379,14 +376,15 @@ pub fn reading_plans(mappings: &Mappings, modules: &[Module]) -> Vec<profinet::R
         .collect()
 }
 
-/// For each set fixed per module: every module whose records carry it,
-/// with the value the module fixes.
-pub fn fixed_values(mappings: &Mappings, modules: &[Module]) -> Vec<FixedValues> {
+/// For each set each kind of module writes its own value of: every module
+/// whose records carry it, with the value the module writes.
+pub fn module_values(mappings: &Mappings, modules: &[Module]) -> Vec<ModuleValues> {
     mappings
         .sets()
-        .filter(|set| set.fixed.is_some())
-        .map(|set| FixedValues {
+        .filter_map(|set| Some((set, set.per_module?)))
+        .map(|(set, per_module)| ModuleValues {
             set: set.key,
+            changeable: per_module.changeable,
             modules: modules
                 .iter()
                 .flat_map(|m| {
