@@ -1646,29 +1646,35 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
     );
 }
 
-/// ABB FENA's stop mode and control-zero mode are in every module's record
-/// 1, the user may change them, and the stop mode's default is 1 in the PPO
-/// modules, 0 in the standard telegrams. The import states each kind's
-/// default (`per_module` with `changeable`), so that the telegrams' records
-/// keep the settings and no module's default or changeability changes in
-/// the round trip. (Their Integer8 type still does: the settings are
-/// Unsigned16.)
+/// ABB FENA's stop mode and control-zero mode are the first two bytes of
+/// every module's record 1: Integer8s the user may change, the stop mode's
+/// default 1 in the PPO modules, 0 in the standard telegrams. The import
+/// states each one's type and each kind's default (`per_module` with
+/// `changeable`), and the round trip finds no change in either, in any
+/// module: what remains of record 1 is its fail-safe values.
 #[test]
-fn fenas_per_module_defaults_import_as_each_kinds_changeable_default() {
+fn fenas_byte_settings_with_per_module_defaults_round_trip() {
     let imported = corpus_import(FENA);
     assert_says(
         another_device(&imported),
         &[
-            "name = \"Stop Mode Action selection\"",
+            "name = \"Stop Mode Action selection\"\ntype = \"Integer8\"\ndefault = 0\n",
             "per_module = { user_defined = 1, standard_telegram_1 = 0, standard_telegram_2 = 0, changeable = true }",
+            "name = \"Control-zero mode selection\"\ntype = \"Integer8\"\n",
         ],
     );
     let settings = ["Stop Mode Action selection", "Control-zero mode selection"];
     let changed: Vec<&str> = messages(&imported, "E601")
         .into_iter()
         .filter(|m| settings.iter().any(|s| m.contains(s)))
-        .filter(|m| !m.contains("type Integer8 → Unsigned16") && !m.contains("moved from byte"))
-        .filter(|m| !m.contains("at byte 1 of record 1") || !m.contains("removed"))
         .collect();
     assert!(changed.is_empty(), "{changed:#?}");
+    let record_1: Vec<&str> = messages(&imported, "E601")
+        .into_iter()
+        .filter(|m| m.contains("record 1 "))
+        .collect();
+    assert!(
+        record_1.iter().all(|m| m.contains("Fail safe")),
+        "{record_1:#?}"
+    );
 }

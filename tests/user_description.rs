@@ -177,7 +177,8 @@ fn without_a_separator_both_widths_are_required() {
         )
         .replace("\"r0000\", \"r2047\"", "\"r00.00\", \"r20.47\"")
         .replace("\"P0922\"", "\"P09.22\"")
-        .replace("\"P1900\"", "\"P19.00\"");
+        .replace("\"P1900\"", "\"P19.00\"")
+        .replace("\"P1121\"", "\"P11.21\"");
     let (ir, diagnostics) = load(&text);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
     assert_eq!(ir.numbering.unwrap().format(947).as_deref(), Some("r09.47"));
@@ -192,7 +193,7 @@ fn a_numbering_may_have_no_prefix() {
         "prefixes = { \"\" = 0 }",
     );
     for name in [
-        "1070", "0000", "2047", "0021", "0027", "0947", "0922", "1900",
+        "1070", "0000", "2047", "0021", "0027", "0947", "0922", "1900", "1121",
     ] {
         for prefix in ["P", "r"] {
             text = text.replace(&format!("\"{prefix}{name}\""), &format!("\"{name}\""));
@@ -268,12 +269,13 @@ fn each_profinet_module_fixes_the_setting_when_the_card_also_has_profibus() {
         let gsd = text_of(&files, ArtifactKind::Gsd);
         let selection = "ExtUserPrmData = 10 \"Telegram selection (P0922)\"";
         match profibus {
-            // The master cannot set it: User_Prm_Data has the other setting only.
+            // The master cannot set it: User_Prm_Data has the other
+            // settings only (the fault reaction, the ramp-down time's byte).
             "absent" => {
                 assert!(!gsd.contains("Telegram selection"), "{gsd}");
                 assert!(!gsd.contains("Free telegram"), "{gsd}");
                 assert!(
-                    gsd.contains("Max_User_Prm_Data_Len       = 18\r\n"),
+                    gsd.contains("Max_User_Prm_Data_Len       = 19\r\n"),
                     "{gsd}"
                 );
                 assert!(
@@ -286,12 +288,12 @@ fn each_profinet_module_fixes_the_setting_when_the_card_also_has_profibus() {
             _ => {
                 assert!(gsd.contains("ExtUserPrmData = 9 \"Telegram selection (P0922)\"\r\nUnsigned16 999 1,2,999\r\n"), "{gsd}");
                 assert!(
-                    gsd.contains("Max_User_Prm_Data_Len       = 20\r\n"),
+                    gsd.contains("Max_User_Prm_Data_Len       = 21\r\n"),
                     "{gsd}"
                 );
                 assert!(
                     gsd.contains(
-                        "Ext_User_Prm_Data_Ref(16)   = 9\r\nExt_User_Prm_Data_Ref(18)   = 10\r\n"
+                        "Ext_User_Prm_Data_Ref(16)   = 9\r\nExt_User_Prm_Data_Ref(18)   = 10\r\nExt_User_Prm_Data_Ref(20)   = 11\r\n"
                     ),
                     "{gsd}"
                 );
@@ -339,11 +341,14 @@ fn every_per_module_value_is_kept_within_the_profidrive_pnus() {
 /// The User_Prm_Data of tests/fixtures/valid/ax200.toml: PZD3..PZD6 out
 /// (P1070), PZD3..PZD6 in (r0021, r0027, r0947, r0947), then the one setting
 /// it carries, the fault reaction, `fault_reaction`.
+/// AX200's User_Prm_Data: its words, the fault reaction's among them,
+/// then the ramp-down time's byte (30 s, not its default).
 fn ax200_user_prm(fault_reaction: u16) -> String {
     let words = [1070, 1070, 1070, 1070, 21, 27, 947, 947, fault_reaction];
     let bytes: Vec<String> = words
         .iter()
         .flat_map(|w: &u16| w.to_be_bytes())
+        .chain([30])
         .map(|b| format!("0x{b:02X}"))
         .collect();
     bytes.join(", ")
@@ -371,7 +376,8 @@ fn run(command: &mut std::process::Command) {
 
 /// The C layout reads User_Prm_Data without the setting it does not carry:
 /// the fault reaction at bytes 16-17, checked against its own choices (999
-/// is the telegram selection's, and refused there).
+/// is the telegram selection's, and refused there), then the ramp-down
+/// time's one byte at 18.
 #[test]
 fn the_c_layout_reads_user_prm_data_without_the_setting_a_master_cannot_set() {
     let dir = written("c-prm", &[ArtifactKind::CHeader, ArtifactKind::CSupport]);
@@ -384,8 +390,9 @@ int main(void)
     const uint8_t free_telegram[] = {{ {free} }};
     ax200_user_prm_t prm;
     gsdc_prm_result_t result = ax200_decode_user_prm(ramp, sizeof ramp, &prm);
-    if (AX200_USER_PRM_LEN != 18U || sizeof prm.settings != 2U) return 1;
+    if (AX200_USER_PRM_LEN != 19U || sizeof prm.settings != 4U) return 1;
     if (result.fault != GSDC_PRM_OK || prm.settings[0] != 1U) return 2;
+    if (prm.settings[1] != 30U) return 5;
     if (prm.pzd_in[2] != 947U) return 3;
     result = ax200_decode_user_prm(free_telegram, sizeof free_telegram, &prm);
     if (result.fault != GSDC_PRM_NOT_ALLOWED || result.offset != 16U) return 4;
@@ -431,7 +438,7 @@ mod ax200 {{
 use gsdc_support::PrmError;
 fn main() {{
     let prm = ax200::decode_user_prm(&[{ramp}]).unwrap();
-    assert_eq!(prm.settings, [1]);
+    assert_eq!(prm.settings, [1, 30]);
     assert_eq!(prm.pzd_in[2], 947);
     assert_eq!(ax200::settings::USER_PRM_MAPPINGS[0].name, "Fault reaction (P1900)");
     let refused = ax200::decode_user_prm(&[{free}]).unwrap_err();

@@ -106,6 +106,17 @@ fn every_description_with_profibus_passes_the_dp_exchange() {
         assert!(text.contains(&summary), "{summary}\n{text}");
     }
     assert!(!text.contains("FAILED"), "{text}");
+    // AX200's ramp-down time is a setting of one byte (`type =
+    // "Unsigned8"`), after the fault reaction's word: the master sets it
+    // from the GSD (its default 10, then 191 by name), the slave's layout
+    // reads it there.
+    for line in [
+        "User_Prm_Data (19 bytes) 04 2E 04 2E 04 2E 04 2E 00 15 00 1B 03 B3 03 B3 00 00 0A",
+        "User_Prm_Data (19 bytes) 07 FF 07 FE 07 FD 07 FC 07 FB 07 FA 07 F9 07 F8 00 01 BF",
+        "ok: Data_Exch; the slave decoded the 10 parameters as the master set them",
+    ] {
+        assert!(text.contains(line), "{line}\n{text}");
+    }
 }
 
 /// Any description, not only the shipped ones: a card of one's own (9KDP1's

@@ -136,22 +136,26 @@ fn every_profinet_description_every_module() {
             "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
         ],
     );
-    own_idents_stop_mode_default_per_module(&text);
+    settings_of_a_byte_and_per_module_defaults(&text);
 }
 
-/// own_idents.toml's stop mode is each module's default, which the user may
-/// change (`per_module` with `changeable`): standard telegram 1's record
-/// holds it alone (default 0), the PZD module's after the fault reaction
-/// (default 1). The controller writes the value after each default, which
-/// the device takes only because the GSDML and the layout let it change.
-fn own_idents_stop_mode_default_per_module(text: &str) {
+/// own_idents.toml's stop mode is an Integer8, each module's default,
+/// which the user may change (`per_module` with `changeable`): standard
+/// telegram 1's record holds its one byte alone (default 0), the PZD
+/// module's after the fault reaction's two (default 1). The controller
+/// writes the value after each default, which the device takes only because
+/// the GSDML and the layout let it change. AX200's ramp-down time is an
+/// Unsigned8 after two words.
+fn settings_of_a_byte_and_per_module_defaults(text: &str) {
     assert_lines(
         text,
         &[
-            "  record 1 (Drive settings) to slot 1 subslot 2: 00 01 = [1]",
+            "  record 1 (Drive settings) to slot 1 subslot 2: 01 = [1]",
             "    decoded by the layout: Stop mode (P10.06) = 1",
-            "  record 1 (Drive settings) to slot 1 subslot 1: 00 01 00 02 = [1, 2]",
+            "  record 1 (Drive settings) to slot 1 subslot 1: 00 01 02 = [1, 2]",
             "    decoded by the layout: Fault reaction (P10.05) = 1, Stop mode (P10.06) = 2",
+            "  record 3 (Drive settings) to slot 1 subslot 1: 03 e7 00 01 11 = [999, 1, 17]",
+            "    decoded by the layout: Telegram selection (P0922) = 999, Fault reaction (P1900) = 1, Ramp-down time in s (P1121) = 17",
         ],
     );
 }

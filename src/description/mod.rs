@@ -316,6 +316,18 @@ pub struct Setting {
     pub per_module: Option<Spanned<PerModule>>,
     /// Where the drive parameter is set.
     pub set_at: Option<Spanned<SetAt>>,
+    /// How User_Prm_Data and the parameter records carry it: `Unsigned16`
+    /// (the default), `Unsigned8`, or `Integer8` (0 to 127: the format
+    /// says no negative value).
+    #[serde(rename = "type")]
+    pub data_type: Option<Spanned<SettingType>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum SettingType {
+    Unsigned8,
+    Integer8,
+    Unsigned16,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -732,6 +732,11 @@ phrases! {
         zh: "控制器插入模块时写入以下参数记录。每个条目一个 Unsigned16，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
         de: "Der Controller schreibt diese Datensätze, wenn er ein Modul steckt. Jeder enthält ein Unsigned16 je Eintrag, höherwertiges Byte zuerst; der PZD-Datensatz eines Moduls enthält die Wörter, die es überträgt, und die Tabellen zeigen den längsten.",
     };
+    RECORDS_INTRO_TYPED = {
+        en: "The controller writes these records when it plugs a module. Each holds its entries one after the other, each of its type, high byte first; a module's PZD record holds the words it transports, and the tables show the longest.",
+        zh: "控制器插入模块时写入以下参数记录。各条目依次排列，各为其类型，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
+        de: "Der Controller schreibt diese Datensätze, wenn er ein Modul steckt. Jeder enthält seine Einträge hintereinander, jeden in seinem Typ, höherwertiges Byte zuerst; der PZD-Datensatz eines Moduls enthält die Wörter, die es überträgt, und die Tabellen zeigen den längsten.",
+    };
     USER_PRM_HEADING = {
         en: "PROFIBUS parameter telegram (User_Prm_Data)",
         zh: "PROFIBUS 参数报文（User_Prm_Data）",
@@ -741,6 +746,11 @@ phrases! {
         en: " Every entry is one Unsigned16, high byte first; the configuration tool shows it in decimal.",
         zh: "每个条目为一个 Unsigned16，高字节在前；组态软件中以十进制显示。",
         de: " Jeder Eintrag ist ein Unsigned16, höherwertiges Byte zuerst; das Projektierungswerkzeug zeigt ihn dezimal.",
+    };
+    USER_PRM_ENTRY_TYPES = {
+        en: " An Unsigned8 or a Signed8 is one byte, an Unsigned16 two, high byte first; the configuration tool shows the values in decimal.",
+        zh: "Unsigned8 或 Signed8 占一个字节，Unsigned16 占两个字节，高字节在前；组态软件中以十进制显示。",
+        de: " Ein Unsigned8 oder Signed8 ist ein Byte, ein Unsigned16 zwei, höherwertiges Byte zuerst; das Projektierungswerkzeug zeigt die Werte dezimal.",
     };
     USER_PRM_GATEWAY_TYPES = {
         en: " An Unsigned8 is one byte, an Unsigned16 two, high byte first; a BitArea(first-last) is those bits of its byte, whose other bits other parameters hold. The configuration tool shows the values in decimal.",

@@ -666,7 +666,15 @@ impl<'a> Records<'a> {
             out.key("name", &pattern.name);
             out.key("first", pattern.first);
             out.key("last", pattern.first + record.data.fields.len() as u32 - 1);
-            defaults_and_values(out, &record.data.fields, notes);
+            for f in record
+                .data
+                .fields
+                .iter()
+                .filter(|f| f.data_type != "Unsigned16")
+            {
+                entry_type_unsaid(f, "a mapping's record entries are Unsigned16", notes);
+            }
+            defaults_and_values(out, &record.data.fields);
             out.string("set_at", "master");
         }
     }
@@ -694,11 +702,8 @@ impl<'a> Records<'a> {
                 let changeable = in_modules.iter().map(|(_, f)| *f).find(|f| f.changeable);
                 out.array_item("settings");
                 out.key("name", text(&field.name));
-                defaults_and_values(
-                    out,
-                    std::slice::from_ref(changeable.unwrap_or(field)),
-                    notes,
-                );
+                setting_type(out, field, notes);
+                defaults_and_values(out, std::slice::from_ref(changeable.unwrap_or(field)));
                 out.string("set_at", "master");
                 if changeable.is_none() || in_modules.iter().any(|(_, f)| !f.changeable) {
                     per_module(out, &in_modules, false);
@@ -772,8 +777,30 @@ fn per_module(out: &mut TomlOut, in_modules: &[(ModuleKind, &Field)], changeable
     out.key("per_module", format!("{{ {} }}", parts.join(", ")));
 }
 
+/// A setting's `type`: Unsigned16 unsaid, Unsigned8 and Integer8 said;
+/// another is left out.
+fn setting_type(out: &mut TomlOut, field: &Field, notes: &mut Notes) {
+    match field.data_type.as_str() {
+        "Unsigned16" => {}
+        "Unsigned8" | "Integer8" => out.string("type", &field.data_type),
+        _ => entry_type_unsaid(
+            field,
+            "a setting is an Unsigned16, an Unsigned8 or an Integer8",
+            notes,
+        ),
+    }
+}
+
+fn entry_type_unsaid(field: &Field, why: &str, notes: &mut Notes) {
+    let what = format!(
+        "record entry \"{}\" of type {}",
+        field.name.primary, field.data_type
+    );
+    notes.unsaid(&what, &field.place, why);
+}
+
 /// `default` (or `defaults`) and `range` or `choices` of entries.
-fn defaults_and_values(out: &mut TomlOut, fields: &[Field], notes: &mut Notes) {
+fn defaults_and_values(out: &mut TomlOut, fields: &[Field]) {
     let defaults: Vec<String> = fields
         .iter()
         .map(|f| match &f.default {
@@ -786,16 +813,6 @@ fn defaults_and_values(out: &mut TomlOut, fields: &[Field], notes: &mut Notes) {
         false => out.key("defaults", list(&defaults)),
     }
     let first = &fields[0];
-    for f in fields.iter().filter(|f| f.data_type != "Unsigned16") {
-        notes.unsaid(
-            &format!(
-                "record entry \"{}\" of type {}",
-                f.name.primary, f.data_type
-            ),
-            &f.place,
-            "the description's record entries are Unsigned16",
-        );
-    }
     if !first.choices.is_empty() {
         let choices: Vec<String> = first
             .choices

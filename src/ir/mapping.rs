@@ -122,6 +122,9 @@ pub struct MappingSet {
     pub holds: Holds,
     /// A setting whose value each kind of PROFINET module writes.
     pub per_module: Option<PerModule>,
+    /// How User_Prm_Data and the records carry each entry; a mapping's
+    /// are Unsigned16.
+    pub entry_type: EntryType,
     /// Where the drive's parameters of the set are set: at the drive, or
     /// by the master at startup (User_Prm_Data, parameter records).
     pub set_at: SetAt,
@@ -170,6 +173,44 @@ pub enum Holds {
     Address,
     Value,
     Choice,
+}
+
+/// How User_Prm_Data and the parameter records carry a set's entries, high
+/// byte first. Every value is from 0 to [`EntryType::max`]: an Integer8
+/// holds no negative value, so an unsigned byte reads it alike.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum EntryType {
+    Unsigned8,
+    Integer8,
+    Unsigned16,
+}
+
+impl EntryType {
+    pub fn bytes(self) -> u16 {
+        match self {
+            EntryType::Unsigned8 | EntryType::Integer8 => 1,
+            EntryType::Unsigned16 => 2,
+        }
+    }
+
+    /// The largest value an entry holds.
+    pub fn max(self) -> u16 {
+        match self {
+            EntryType::Unsigned8 => 0xFF,
+            EntryType::Integer8 => 0x7F,
+            EntryType::Unsigned16 => 0xFFFF,
+        }
+    }
+
+    /// As GSDML names it (`Ref@DataType`).
+    pub fn gsdml_name(self) -> &'static str {
+        match self {
+            EntryType::Unsigned8 => "Unsigned8",
+            EntryType::Integer8 => "Integer8",
+            EntryType::Unsigned16 => "Unsigned16",
+        }
+    }
 }
 
 /// The value of a setting that each kind of PROFINET module writes: one

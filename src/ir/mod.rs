@@ -19,8 +19,8 @@ pub use cyclic::{Bus, CyclicModule, ModuleId};
 pub use decision::{Decision, DecisionKind};
 pub use gateway::Gateway;
 pub use mapping::{
-    Allowed, EntryKey, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings,
-    PerModule, SetAt, SetKey,
+    Allowed, EntryKey, EntryType, Holds, MappingEntry, MappingGroup, MappingKind, MappingSet,
+    Mappings, PerModule, SetAt, SetKey,
 };
 pub use names::Ident;
 pub(crate) use names::Scope;

@@ -314,6 +314,9 @@ pub struct CardParam {
 #[non_exhaustive]
 pub enum PrmType {
     Unsigned8,
+    /// A setting's Integer8: lowering keeps its values from 0 to 127, so an
+    /// unsigned byte reads it alike.
+    Signed8,
     Unsigned16,
     /// Bits `first..=last` of the byte at the parameter's offset (GSD
     /// `Bit(n)` or `BitArea(first-last)`); other parameters may hold the
@@ -329,7 +332,7 @@ impl PrmType {
     pub fn bytes(self) -> u16 {
         match self {
             PrmType::Unsigned16 => 2,
-            PrmType::Unsigned8 | PrmType::Bits { .. } => 1,
+            PrmType::Unsigned8 | PrmType::Signed8 | PrmType::Bits { .. } => 1,
         }
     }
 
@@ -337,6 +340,7 @@ impl PrmType {
     pub fn max(self) -> u16 {
         match self {
             PrmType::Unsigned8 => 0xFF,
+            PrmType::Signed8 => 0x7F,
             PrmType::Unsigned16 => 0xFFFF,
             PrmType::Bits { first, last } => (1 << (last - first + 1)) - 1,
         }
@@ -347,7 +351,7 @@ impl PrmType {
     pub fn read(self, prm: &[u8], offset: usize) -> u16 {
         match self {
             PrmType::Unsigned16 => u16::from_be_bytes([prm[offset], prm[offset + 1]]),
-            PrmType::Unsigned8 => prm[offset].into(),
+            PrmType::Unsigned8 | PrmType::Signed8 => prm[offset].into(),
             PrmType::Bits { first, .. } => (u16::from(prm[offset]) >> first) & self.max(),
         }
     }
@@ -359,7 +363,7 @@ impl PrmType {
         match self {
             PrmType::Unsigned16 => prm[offset..offset + 2].copy_from_slice(&value.to_be_bytes()),
             // Lowering checked the value fits the type.
-            PrmType::Unsigned8 => prm[offset] = value as u8,
+            PrmType::Unsigned8 | PrmType::Signed8 => prm[offset] = value as u8,
             PrmType::Bits { first, .. } => {
                 let mask = (self.max() << first) as u8;
                 prm[offset] = (prm[offset] & !mask) | ((value << first) as u8 & mask);
@@ -373,6 +377,7 @@ impl fmt::Display for PrmType {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             PrmType::Unsigned8 => f.write_str("Unsigned8"),
+            PrmType::Signed8 => f.write_str("Signed8"),
             PrmType::Unsigned16 => f.write_str("Unsigned16"),
             PrmType::Bits { first, last } if first == last => write!(f, "Bit({first})"),
             PrmType::Bits { first, last } => write!(f, "BitArea({first}-{last})"),

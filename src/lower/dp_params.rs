@@ -75,7 +75,7 @@ pub(super) fn lower(
 /// The bits a parameter takes of each of its bytes, from its offset.
 fn bit_mask(data_type: PrmType) -> Vec<u16> {
     match data_type {
-        PrmType::Unsigned8 => vec![0xFF],
+        PrmType::Unsigned8 | PrmType::Signed8 => vec![0xFF],
         PrmType::Unsigned16 => vec![0xFF, 0xFF],
         PrmType::Bits { first, last } => vec![((1u16 << (last + 1)) - 1) & !((1u16 << first) - 1)],
     }

@@ -7,8 +7,8 @@ use super::telegram::value_set;
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::{
-    Allowed, EntryKey, Holds, Ident, MappingEntry, MappingGroup, MappingKind, MappingSet, Mappings,
-    Numbering, PerModule, SetAt, SetKey, Telegram, Text,
+    Allowed, EntryKey, EntryType, Holds, Ident, MappingEntry, MappingGroup, MappingKind,
+    MappingSet, Mappings, Numbering, PerModule, SetAt, SetKey, Telegram, Text,
 };
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -121,6 +121,7 @@ fn lower_set(
         choices: &m.choices,
         parameter: &m.parameter,
         holds: Holds::Address,
+        entry_type: EntryType::Unsigned16,
     };
     let mut set = build_set(cx, kind, &parts, (first, last), defaults, numbering)?;
     set.set_at = set_at(
@@ -265,6 +266,14 @@ fn lower_settings(
                         raw::Holds::Value => Holds::Value,
                         raw::Holds::Address => Holds::Address,
                     }),
+                entry_type: s
+                    .data_type
+                    .as_ref()
+                    .map_or(EntryType::Unsigned16, |t| match t.get_ref() {
+                        raw::SettingType::Unsigned8 => EntryType::Unsigned8,
+                        raw::SettingType::Integer8 => EntryType::Integer8,
+                        raw::SettingType::Unsigned16 => EntryType::Unsigned16,
+                    }),
             };
             let mut set = build_set(
                 cx,
@@ -295,6 +304,8 @@ struct Parts<'a> {
     parameter: &'a Option<Spanned<raw::Address>>,
     /// What a range holds; choices hold choices.
     holds: Holds,
+    /// How the entries are carried, which bounds their values.
+    entry_type: EntryType,
 }
 
 fn build_set(
@@ -355,6 +366,7 @@ fn build_set(
         allowed,
         holds,
         per_module: None,
+        entry_type: parts.entry_type,
         // Said by the caller, which knows where the description says it.
         set_at: SetAt::Master,
         allowed_ident: Ident::of(&["allowed"]),
@@ -415,7 +427,9 @@ fn defaults(
     }
 }
 
+/// What a set's entries may hold, within their type's values.
 fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option<Allowed> {
+    let type_max = m.entry_type.max();
     match (m.range, m.choices) {
         (Some(_), Some(choices)) => {
             cx.push(
@@ -436,18 +450,20 @@ fn allowed(cx: &mut Checker, m: &Parts, numbering: Option<&Numbering>) -> Option
                 cx.reversed(range.span(), min, max);
                 return None;
             }
+            let what = format!("the value of an {} setting", m.entry_type.gsdml_name());
+            let max = cx.in_range(max.into(), 0, type_max.into(), range.span(), &what)?;
             Some(Allowed::Range { min, max })
         }
         (None, Some(choices)) => Some(Allowed::Choices(value_set(
             cx,
             Ident::of(&["choice"]),
             choices.get_ref(),
-            (0, 0xFFFF),
+            (0, type_max.into()),
             Some(GSD_NAME_LEN),
         ))),
         (None, None) => Some(Allowed::Range {
             min: 0,
-            max: 0xFFFF,
+            max: type_max,
         }),
     }
 }

@@ -14,7 +14,7 @@ use crate::ir::profibus::{
     GsdReleases, LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue,
     Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
-use crate::ir::{Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
+use crate::ir::{EntryType, Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
@@ -338,12 +338,14 @@ fn layout_decisions(
             block.offset
         ));
     }
+    let params = || user_prm.blocks.iter().flat_map(|b| &b.params);
+    let entries = match params().all(|p| p.data_type == PrmType::Unsigned16) {
+        true => "one Unsigned16 per entry",
+        false => "each entry of its type (a setting's, else Unsigned16)",
+    };
     cx.layout(
         "profibus User_Prm_Data",
-        format!(
-            "{}; one Unsigned16 per entry, high byte first, no gaps",
-            places.join(", ")
-        ),
+        format!("{}; {entries}, high byte first, no gaps", places.join(", ")),
         files::USER_PRM_LAYOUT_REASON,
     );
 }
@@ -796,7 +798,6 @@ fn user_prm(
             .find(|t| t.of == PrmTextOf::Set(set))
             .map(|t| t.id)
     };
-    let entry_bytes = usize::from(PrmType::Unsigned16.bytes());
     let mut end = constant.len().max(card.end);
     let mut overflowing = None;
     let blocks = mappings
@@ -809,8 +810,9 @@ fn user_prm(
                 .entries()
                 .filter(|(set, _)| in_user_prm(set))
                 .map(|(set, entry)| {
+                    let data_type = prm_type(set.entry_type);
                     let offset = end;
-                    end += entry_bytes;
+                    end += usize::from(data_type.bytes());
                     if end > max_user_prm_len() {
                         overflowing.get_or_insert(set.key);
                     }
@@ -818,7 +820,7 @@ fn user_prm(
                         id: ids.next().unwrap_or(u16::MAX),
                         offset: saturate(offset),
                         value: PrmValue::Entry(entry.key),
-                        data_type: PrmType::Unsigned16,
+                        data_type,
                         text: text_of(set.key),
                     }
                 })
@@ -898,6 +900,16 @@ fn at_least(
                 "state at least {needed}, or leave it out: gsdc writes {what}"
             )),
         );
+    }
+}
+
+/// How User_Prm_Data carries an entry of a set: as its type, GSD naming
+/// an Integer8 Signed8.
+fn prm_type(entry_type: EntryType) -> PrmType {
+    match entry_type {
+        EntryType::Unsigned8 => PrmType::Unsigned8,
+        EntryType::Integer8 => PrmType::Signed8,
+        EntryType::Unsigned16 => PrmType::Unsigned16,
     }
 }
 

@@ -133,6 +133,24 @@ typedef struct {
  * `value`: a layout's <group>_entry_allows. */
 typedef bool (*gsdc_entry_allows_t)(size_t index, uint16_t value);
 
+/* The bytes entry `index` of a group of mappings takes in User_Prm_Data and
+ * the records: 2 (Unsigned16: every mapping), or 1 for a setting of a byte
+ * (Unsigned8, or Integer8 from 0 to 127). A layout's <group>_entry_bytes. */
+typedef size_t (*gsdc_entry_bytes_t)(size_t index);
+
+/* The value of an entry of `size` bytes (1 or 2) at `bytes`, high byte
+ * first. */
+static inline uint16_t gsdc_entry_get(const uint8_t *bytes, size_t size)
+{
+    uint16_t value;
+    if (size == 1U) {
+        value = (uint16_t)bytes[0];
+    } else {
+        value = gsdc_u16be_get(bytes);
+    }
+    return value;
+}
+
 /* GSDC_PRM_OK. */
 static inline gsdc_prm_result_t gsdc_prm_ok(void)
 {
@@ -157,41 +175,51 @@ static inline gsdc_prm_result_t gsdc_prm_check_len(size_t len, size_t expected)
     return result;
 }
 
-/* Checks `count` Unsigned16 values from byte `offset` of `bytes` (`len`
- * bytes long), each with `allows`: GSDC_PRM_LENGTH when they do not fit in
- * `len` bytes, GSDC_PRM_NOT_ALLOWED for the first value `allows` refuses,
- * else GSDC_PRM_OK. */
+/* Checks the values of the first `count` entries, each of its
+ * `entry_bytes`, from byte `offset` of `bytes` (`len` bytes long) with no
+ * gaps, each with `allows`: GSDC_PRM_LENGTH when they do not fit in `len`
+ * bytes, GSDC_PRM_NOT_ALLOWED for the first value `allows` refuses, else
+ * GSDC_PRM_OK. */
 static inline gsdc_prm_result_t gsdc_prm_check_values(const uint8_t *bytes, size_t len,
                                                       size_t offset, size_t count,
-                                                      gsdc_entry_allows_t allows)
+                                                      gsdc_entry_allows_t allows,
+                                                      gsdc_entry_bytes_t entry_bytes)
 {
     gsdc_prm_result_t result = gsdc_prm_ok();
+    size_t need = 0U;
+    size_t at = offset;
     size_t i;
-    if ((offset > len) || (count > ((len - offset) / 2U))) {
+    for (i = 0U; i < count; i++) {
+        need += entry_bytes(i);
+    }
+    if ((offset > len) || (need > (len - offset))) {
         result.fault = GSDC_PRM_LENGTH;
-        result.expected = offset + (2U * count);
+        result.expected = offset + need;
         result.found = len;
     }
     for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < count); i++) {
-        size_t at = offset + (2U * i);
-        uint16_t value = gsdc_u16be_get(&bytes[at]);
+        uint16_t value = gsdc_entry_get(&bytes[at], entry_bytes(i));
         if (!allows(i, value)) {
             result.fault = GSDC_PRM_NOT_ALLOWED;
             result.offset = at;
             result.value = value;
         }
+        at += entry_bytes(i);
     }
     return result;
 }
 
-/* Copies `count` Unsigned16 values from byte `offset` of `bytes` into
- * `values`; gsdc_prm_check_values has found them there. */
+/* Copies the values of the first `count` entries, each of its
+ * `entry_bytes`, from byte `offset` of `bytes` into `values`;
+ * gsdc_prm_check_values has found them there. */
 static inline void gsdc_prm_get_values(const uint8_t *bytes, size_t offset, size_t count,
-                                       uint16_t *values)
+                                       gsdc_entry_bytes_t entry_bytes, uint16_t *values)
 {
+    size_t at = offset;
     size_t i;
     for (i = 0U; i < count; i++) {
-        values[i] = gsdc_word_get(&bytes[offset], i);
+        values[i] = gsdc_entry_get(&bytes[at], entry_bytes(i));
+        at += entry_bytes(i);
     }
 }
 
@@ -200,11 +228,13 @@ static inline void gsdc_prm_get_values(const uint8_t *bytes, size_t offset, size
 static inline gsdc_prm_result_t gsdc_prm_read_values(const uint8_t *bytes, size_t len,
                                                      size_t offset, size_t count,
                                                      gsdc_entry_allows_t allows,
+                                                     gsdc_entry_bytes_t entry_bytes,
                                                      uint16_t *values)
 {
-    gsdc_prm_result_t result = gsdc_prm_check_values(bytes, len, offset, count, allows);
+    gsdc_prm_result_t result =
+        gsdc_prm_check_values(bytes, len, offset, count, allows, entry_bytes);
     if (result.fault == GSDC_PRM_OK) {
-        gsdc_prm_get_values(bytes, offset, count, values);
+        gsdc_prm_get_values(bytes, offset, count, entry_bytes, values);
     }
     return result;
 }
@@ -1982,6 +2012,7 @@ typedef struct {
     size_t len;
     gsdc_record_reading_t reading;
     gsdc_entry_allows_t allows;
+    gsdc_entry_bytes_t entry_bytes;
     const size_t *entries;
     size_t entries_count;
     const uint16_t *defaults;
@@ -2076,26 +2107,38 @@ static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *re
                                                       uint16_t *values)
 {
     gsdc_prm_result_t result = gsdc_prm_check_prefix_len(len, record->len);
-    size_t count = len / 2U;
+    size_t at = 0U;
     size_t i;
     if (record->reading == GSDC_RECORD_READING_WHOLE) {
         result = gsdc_prm_check_len(len, record->len);
     }
-    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < count); i++) {
-        uint16_t value = gsdc_word_get(bytes, i);
-        bool fixed = (i < record->changeable_count) && !record->changeable[i];
-        if (!record->allows(record->entries[i], value) ||
-            (fixed && ((i >= record->defaults_count) || (record->defaults[i] != value)))) {
-            result.fault = GSDC_PRM_NOT_ALLOWED;
-            result.offset = 2U * i;
-            result.value = value;
+    /* A prefix is of a PZD record's entries, two bytes each: every entry
+     * it holds ends within `len`. */
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->entries_count); i++) {
+        size_t size = record->entry_bytes(record->entries[i]);
+        if (at + size <= len) {
+            uint16_t value = gsdc_entry_get(&bytes[at], size);
+            bool fixed = (i < record->changeable_count) && !record->changeable[i];
+            if (!record->allows(record->entries[i], value) ||
+                (fixed && ((i >= record->defaults_count) || (record->defaults[i] != value)))) {
+                result.fault = GSDC_PRM_NOT_ALLOWED;
+                result.offset = at;
+                result.value = value;
+            }
         }
+        at += size;
     }
+    at = 0U;
     for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->defaults_count); i++) {
-        values[i] = record->defaults[i];
-        if (i < count) {
-            values[i] = gsdc_word_get(bytes, i);
+        size_t size = 2U;
+        if (i < record->entries_count) {
+            size = record->entry_bytes(record->entries[i]);
         }
+        values[i] = record->defaults[i];
+        if (at + size <= len) {
+            values[i] = gsdc_entry_get(&bytes[at], size);
+        }
+        at += size;
     }
     return result;
 }

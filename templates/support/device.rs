@@ -5,7 +5,7 @@
 // from the description through the plan the GSD and the GSDML are written
 // from.
 
-use super::{check_len, read_bytes, Mapping, PrmError};
+use super::{check_len, read_bytes, read_value, Mapping, PrmError};
 
 /// Which PKW codec of the support module the card's telegrams carry.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -430,8 +430,8 @@ pub struct PnModule {
 pub enum RecordReading {
     /// Every entry: exactly `len` bytes.
     Whole,
-    /// The first entries, two bytes each, at most `len` bytes; the others
-    /// keep their defaults.
+    /// The first entries (a PZD record's, two bytes each), at most `len`
+    /// bytes; the others keep their defaults.
     Prefix,
 }
 
@@ -439,10 +439,10 @@ pub enum RecordReading {
 #[derive(Clone, Copy, Debug)]
 pub struct PnRecord {
     pub index: u16,
-    /// Bytes, as the GSDML gives them: two per entry.
+    /// Bytes, as the GSDML gives them: its entries' bytes.
     pub len: usize,
     pub reading: RecordReading,
-    /// Its entries in record order, one Unsigned16 each.
+    /// Its entries in record order, each of its bytes, with no gaps.
     pub entries: &'static [&'static Mapping],
     /// Each entry's value as the GSDML gives it (DefaultValue): its
     /// default, or the value the module fixes.
@@ -458,10 +458,11 @@ impl PnRecord {
     /// fixes must hold its default), the entries a prefix leaves out with
     /// their defaults; nothing is written when it is refused.
     pub fn decode(&self, bytes: &[u8], values: &mut [u16]) -> Result<(), PrmError> {
-        let count = bytes.len() / 2;
         let fits = match self.reading {
             RecordReading::Whole => bytes.len() == self.len,
-            RecordReading::Prefix => 2 * count == bytes.len() && bytes.len() <= self.len,
+            RecordReading::Prefix => {
+                bytes.is_empty() || self.entry_ends().any(|(end, _)| end == bytes.len())
+            }
         };
         if !fits || values.len() < self.defaults.len() {
             return Err(PrmError::Length {
@@ -469,23 +470,33 @@ impl PnRecord {
                 found: bytes.len(),
             });
         }
-        for (i, entry) in self.entries.iter().enumerate().take(count) {
-            let value = u16::from_be_bytes(read_bytes(bytes, 2 * i)?);
+        let written = self.entry_ends().take_while(|(end, _)| *end <= bytes.len());
+        for (i, (end, entry)) in written.enumerate() {
+            let at = end - entry.bytes;
+            let value = read_value(bytes, at, entry)?;
             let fixed = self.changeable.get(i) == Some(&false);
             let held = self.defaults.get(i) == Some(&value);
             if !entry.allowed.contains(value) || fixed && !held {
-                return Err(PrmError::NotAllowed {
-                    offset: 2 * i,
-                    value,
-                });
+                return Err(PrmError::NotAllowed { offset: at, value });
             }
         }
-        for (i, (value, default)) in values.iter_mut().zip(self.defaults).enumerate() {
-            *value = match read_bytes(bytes, 2 * i) {
-                Ok(pair) => u16::from_be_bytes(pair),
-                Err(_) => *default,
+        let mut ends = self.entry_ends();
+        for (value, default) in values.iter_mut().zip(self.defaults) {
+            *value = match ends.next() {
+                Some((end, entry)) if end <= bytes.len() => {
+                    read_value(bytes, end - entry.bytes, entry)?
+                }
+                _ => *default,
             };
         }
         Ok(())
+    }
+
+    /// Where each entry ends in the record, with the entry.
+    fn entry_ends(&self) -> impl Iterator<Item = (usize, &'static Mapping)> + '_ {
+        self.entries.iter().scan(0, |end, entry| {
+            *end += entry.bytes;
+            Some((*end, *entry))
+        })
     }
 }

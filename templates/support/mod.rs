@@ -236,7 +236,8 @@ impl Allowed {
 }
 
 /// One configurable mapping: what a PZD word or a DPV1 index carries, or a
-/// setting; one Unsigned16 in the parameter telegram and in its record.
+/// setting; `bytes` in the parameter telegram and in its record, high byte
+/// first.
 #[derive(Clone, Copy, Debug)]
 pub struct Mapping {
     /// As the device files name it.
@@ -247,6 +248,28 @@ pub struct Mapping {
     /// The drive parameter that holds it, when the drive has one.
     pub parameter: Option<u16>,
     pub allowed: Allowed,
+    /// 2 (Unsigned16: every mapping), or 1 for a setting of one byte
+    /// (Unsigned8, or Integer8 from 0 to 127).
+    pub bytes: usize,
+}
+
+/// The bytes of a record or telegram block that holds `mappings`.
+pub const fn record_len(mappings: &[Mapping]) -> usize {
+    let mut len = 0;
+    let mut i = 0;
+    while i < mappings.len() {
+        len += mappings[i].bytes;
+        i += 1;
+    }
+    len
+}
+
+/// The value of `mapping` at `offset`.
+pub fn read_value(bytes: &[u8], offset: usize, mapping: &Mapping) -> Result<u16, PrmError> {
+    match mapping.bytes {
+        1 => read_bytes::<1>(bytes, offset).map(|[b]| b.into()),
+        _ => read_bytes(bytes, offset).map(u16::from_be_bytes),
+    }
 }
 
 /// The defaults of `mappings`, in order.
@@ -292,34 +315,35 @@ pub fn read_bytes<const N: usize>(bytes: &[u8], offset: usize) -> Result<[u8; N]
     })
 }
 
-/// The values of `mappings`, one Unsigned16 each from `offset` on, each one
-/// checked against what its mapping allows.
+/// The values of `mappings`, each of its bytes from `offset` on, with no
+/// gaps, each one checked against what its mapping allows.
 pub fn read_values<const N: usize>(
     bytes: &[u8],
     offset: usize,
     mappings: &[Mapping; N],
 ) -> Result<[u16; N], PrmError> {
     let mut values = [0; N];
-    for (i, (value, mapping)) in values.iter_mut().zip(mappings).enumerate() {
-        let at = offset.saturating_add(2 * i);
-        *value = u16::from_be_bytes(read_bytes(bytes, at)?);
+    let mut at = offset;
+    for (value, mapping) in values.iter_mut().zip(mappings) {
+        *value = read_value(bytes, at, mapping)?;
         if !mapping.allowed.contains(*value) {
             return Err(PrmError::NotAllowed {
                 offset: at,
                 value: *value,
             });
         }
+        at = at.saturating_add(mapping.bytes);
     }
     Ok(values)
 }
 
-/// The values of a PROFINET parameter record: exactly one Unsigned16 per
-/// mapping, each checked.
+/// The values of a PROFINET parameter record: exactly the mappings' bytes,
+/// each value checked.
 pub fn read_record<const N: usize>(
     bytes: &[u8],
     mappings: &[Mapping; N],
 ) -> Result<[u16; N], PrmError> {
-    check_len(bytes, 2 * N)?;
+    check_len(bytes, record_len(mappings))?;
     read_values(bytes, 0, mappings)
 }
 

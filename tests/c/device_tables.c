@@ -200,14 +200,22 @@ static void dump_record(const gsdc_pn_record_t *r)
 {
     uint8_t bytes[512];
     uint16_t values[256];
+    size_t len = 0U;
     size_t i;
     if (r->defaults_count > 256U) {
         fail("a record longer than the test's buffer");
     }
+    /* Each entry of its bytes, as the GSDML's Refs lay them out. */
     for (i = 0U; i < r->defaults_count; i++) {
-        gsdc_word_put(bytes, i, r->defaults[i]);
+        size_t size = r->entry_bytes(r->entries[i]);
+        if (size == 1U) {
+            bytes[len] = (uint8_t)r->defaults[i];
+        } else {
+            gsdc_u16be_put(&bytes[len], r->defaults[i]);
+        }
+        len += size;
     }
-    if (gsdc_pn_record_decode(r, bytes, 2U * r->defaults_count, values).fault != GSDC_PRM_OK) {
+    if (gsdc_pn_record_decode(r, bytes, len, values).fault != GSDC_PRM_OK) {
         fail("a record of the GSDML's defaults is refused");
     }
     printf("record %u len %lu reads", (unsigned int)r->index, (unsigned long)r->len);

@@ -44,6 +44,41 @@ static bool two_entries(size_t index, uint16_t value)
     return allowed;
 }
 
+static size_t two_bytes(size_t index)
+{
+    (void)index;
+    return 2U;
+}
+
+/* ABB FENA's record 1: two Integer8 settings (0 to 2, 0 to 1), then an
+ * Unsigned16. */
+static bool fena_allows(size_t index, uint16_t value)
+{
+    static const uint16_t max[3] = {2U, 1U, 0xFFFFU};
+    return (index < 3U) && (value <= max[index]);
+}
+
+static size_t fena_bytes(size_t index)
+{
+    static const size_t bytes[3] = {1U, 1U, 2U};
+    return (index < 3U) ? bytes[index] : 2U;
+}
+
+static void byte_and_word_entries_are_read_each_at_its_offset(void)
+{
+    static const uint8_t record[4] = {2U, 1U, 0x04U, 0x7EU};
+    static const uint8_t refused[4] = {0U, 2U, 0U, 0U};
+    uint16_t values[3] = {0U, 0U, 0U};
+    gsdc_prm_result_t result;
+    CHECK(gsdc_prm_read_values(record, 4U, 0U, 3U, fena_allows, fena_bytes, values).fault ==
+          GSDC_PRM_OK);
+    CHECK((values[0] == 2U) && (values[1] == 1U) && (values[2] == 0x047EU));
+    result = gsdc_prm_read_values(record, 3U, 0U, 3U, fena_allows, fena_bytes, values);
+    CHECK((result.fault == GSDC_PRM_LENGTH) && (result.expected == 4U) && (result.found == 3U));
+    result = gsdc_prm_read_values(refused, 4U, 0U, 3U, fena_allows, fena_bytes, values);
+    CHECK((result.fault == GSDC_PRM_NOT_ALLOWED) && (result.offset == 1U) && (result.value == 2U));
+}
+
 static void values_are_read_and_checked_at_their_offset(void)
 {
     static const uint8_t telegram[5] = {0x80U, 0xF0U, 0x12U, 0x00U, 0x02U};
@@ -51,16 +86,16 @@ static void values_are_read_and_checked_at_their_offset(void)
     static const uint8_t bad_address[5] = {0x80U, 0xA0U, 0x12U, 0x00U, 0x02U};
     uint16_t values[2] = {0U, 0U};
     gsdc_prm_result_t result;
-    CHECK(gsdc_prm_read_values(telegram, 5U, 1U, 2U, two_entries, values).fault == GSDC_PRM_OK);
+    CHECK(gsdc_prm_read_values(telegram, 5U, 1U, 2U, two_entries, two_bytes, values).fault == GSDC_PRM_OK);
     CHECK(values[0] == 0xF012U);
     CHECK(values[1] == 2U);
     values[0] = 0U;
-    result = gsdc_prm_read_values(bad_choice, 5U, 1U, 2U, two_entries, values);
+    result = gsdc_prm_read_values(bad_choice, 5U, 1U, 2U, two_entries, two_bytes, values);
     CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
     CHECK(result.offset == 3U);
     CHECK(result.value == 3U);
     CHECK(values[0] == 0U); /* written only when all are allowed */
-    result = gsdc_prm_read_values(bad_address, 5U, 1U, 2U, two_entries, values);
+    result = gsdc_prm_read_values(bad_address, 5U, 1U, 2U, two_entries, two_bytes, values);
     CHECK(result.fault == GSDC_PRM_NOT_ALLOWED);
     CHECK(result.offset == 1U);
     CHECK(result.value == 0xA012U);
@@ -70,13 +105,13 @@ static void reading_past_the_end_is_refused(void)
 {
     static const uint8_t telegram[5] = {0x80U, 0xF0U, 0x12U, 0x00U, 0x02U};
     uint16_t values[2] = {0U, 0U};
-    gsdc_prm_result_t result = gsdc_prm_read_values(telegram, 4U, 1U, 2U, two_entries, values);
+    gsdc_prm_result_t result = gsdc_prm_read_values(telegram, 4U, 1U, 2U, two_entries, two_bytes, values);
     CHECK(result.fault == GSDC_PRM_LENGTH);
     CHECK(result.expected == 5U);
     CHECK(result.found == 4U);
-    result = gsdc_prm_check_values(telegram, 5U, 6U, 1U, two_entries);
+    result = gsdc_prm_check_values(telegram, 5U, 6U, 1U, two_entries, two_bytes);
     CHECK(result.fault == GSDC_PRM_LENGTH);
-    result = gsdc_prm_check_values(telegram, 5U, (size_t)-1, 1U, two_entries);
+    result = gsdc_prm_check_values(telegram, 5U, (size_t)-1, 1U, two_entries, two_bytes);
     CHECK(result.fault == GSDC_PRM_LENGTH);
     CHECK(gsdc_prm_check_len(0U, 0U).fault == GSDC_PRM_OK);
     result = gsdc_prm_check_len(3U, 4U);
@@ -647,6 +682,8 @@ static const test_t tests[] = {
     {"words_are_big_endian", words_are_big_endian},
     {"bit_fields_read_and_write_their_bits_only", bit_fields_read_and_write_their_bits_only},
     {"values_are_read_and_checked_at_their_offset", values_are_read_and_checked_at_their_offset},
+    {"byte_and_word_entries_are_read_each_at_its_offset",
+     byte_and_word_entries_are_read_each_at_its_offset},
     {"reading_past_the_end_is_refused", reading_past_the_end_is_refused},
     {"pke_no_request_ignores_what_the_master_left", pke_no_request_ignores_what_the_master_left},
     {"pke_reserved_bits_are_not_read_and_written_0",

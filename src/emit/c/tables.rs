@@ -121,12 +121,15 @@ impl Statics<'_> {
             Value::Optional(_, Some(list)) => self.value(list, field, path, indent),
             Value::NodeTotals(true) => one(self.names.lower("user_prm_totals")),
             Value::Entries(kind, positions) => {
-                let allows = self.names.lower(&format!("{}_entry_allows", kind.key()));
+                let function = |what| self.names.lower(&format!("{}_{what}", kind.key()));
                 let places: Vec<Value> = positions
                     .iter()
                     .map(|&p| Value::Lit(Val::Dec(p as u64)))
                     .collect();
-                let mut parts = vec![("allows".to_string(), allows)];
+                let mut parts = vec![
+                    ("allows".to_string(), function("entry_allows")),
+                    ("entry_bytes".to_string(), function("entry_bytes")),
+                ];
                 parts.extend(self.list(Elem::Index, &places, field, path));
                 parts
             }

@@ -7,10 +7,10 @@ use super::{
 };
 use crate::i18n::sheet as w;
 use crate::ir::profibus::{
-    Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmValue, Profibus, STANDARD_DIAG_BYTES,
+    Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmType, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
 use crate::ir::profinet::ParameterRecord;
-use crate::ir::{Allowed, EntryKey, Ir, MappingKind, MappingSet};
+use crate::ir::{Allowed, EntryKey, EntryType, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -38,9 +38,20 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let records = longest_records(ir);
     if !records.is_empty() {
         doc.subsection("records", lang.t(w::PROFINET_RECORDS));
-        doc.para(text(lang.t(w::RECORDS_INTRO)));
+        // Records of Unsigned16 entries alone say so once; others give each
+        // entry's type.
+        let typed = records
+            .iter()
+            .flat_map(|r| &r.refs)
+            .any(|r| r.data_type != EntryType::Unsigned16);
+        let intro = if typed {
+            w::RECORDS_INTRO_TYPED
+        } else {
+            w::RECORDS_INTRO
+        };
+        doc.para(text(lang.t(intro)));
         for record in records {
-            record_table(doc, ir, lang, record);
+            record_table(doc, ir, lang, record, typed);
         }
     }
     choices(doc, ir, lang);
@@ -152,10 +163,13 @@ fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
     doc.subsection("user-prm", lang.t(w::USER_PRM_HEADING));
     let intro = w::user_prm_intro(lang, prm.len);
     // The gateway's sentence says every type, the card's own among them.
-    let types = if prm.gateway.is_empty() && prm.card.is_empty() {
+    let words_only = prm.params().all(|p| p.data_type == PrmType::Unsigned16);
+    let types = if !prm.gateway.is_empty() || !prm.card.is_empty() {
+        lang.t(w::USER_PRM_GATEWAY_TYPES)
+    } else if words_only {
         lang.t(w::USER_PRM_TYPES)
     } else {
-        lang.t(w::USER_PRM_GATEWAY_TYPES)
+        lang.t(w::USER_PRM_ENTRY_TYPES)
     };
     doc.para(text(format!("{intro}{types}")));
     // A drive parameter holds a mapping; a gateway's parameters have none.
@@ -300,31 +314,41 @@ fn dpv1_indexes(doc: &mut Builder, ir: &Ir, lang: Lang) {
     );
 }
 
-fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord) {
+/// A record's entries; with `typed`, each with its type.
+fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord, typed: bool) {
     let rows = record
         .refs
         .iter()
         .map(|r| {
             let (set, entry) = ir.mappings.entry(r.entry);
-            vec![
-                text(bytes(lang, r.offset, r.offset + 1)),
+            let last = r.offset + r.data_type.bytes() - 1;
+            let mut row = vec![
+                text(bytes(lang, r.offset, last)),
                 text(lang.text(&entry.name)),
                 text(mapping_value(ir, lang, set, entry.default)),
                 text(allowed(lang, set)),
                 drive_parameter(ir, entry),
-            ]
+            ];
+            if typed {
+                row.insert(2, text(r.data_type.gsdml_name()));
+            }
+            row
         })
         .collect();
+    let mut head = vec![
+        lang.t(w::BYTES),
+        lang.t(w::NAME),
+        lang.t(w::DEFAULT),
+        lang.t(w::RANGE_OR_CHOICES),
+        lang.t(w::DRIVE_PARAMETER),
+    ];
+    if typed {
+        head.insert(2, lang.t(w::TYPE));
+    }
     let name = lang.text(&record.name.text);
     doc.table(
         w::record_caption(lang, record.index, name, record.length),
-        &[
-            lang.t(w::BYTES),
-            lang.t(w::NAME),
-            lang.t(w::DEFAULT),
-            lang.t(w::RANGE_OR_CHOICES),
-            lang.t(w::DRIVE_PARAMETER),
-        ],
+        &head,
         rows,
     );
 }

@@ -224,7 +224,8 @@ fn field(p: &Profibus, param: &gateway::Param) -> PrmField {
         .placed(PrmValue::Gateway(param.key))
         .expect("lowering places every gateway parameter");
     let (ty, first, last) = match placed.data_type {
-        PrmType::Unsigned8 => ("unsigned8", 0, 0),
+        // A gateway's parameters are never Signed8 (a setting's type).
+        PrmType::Unsigned8 | PrmType::Signed8 => ("unsigned8", 0, 0),
         PrmType::Unsigned16 => ("unsigned16", 0, 0),
         PrmType::Bits { first, last } => ("bits", first, last),
     };

@@ -4,7 +4,7 @@
 //! PROFINET module fixes or defaults.
 
 use super::{value_set, Const, Consts, Doc, Ref, Scope, Ty, Val, ValueSet};
-use crate::ir::mapping::{Allowed, Holds, MappingGroup, MappingKind, MappingSet};
+use crate::ir::mapping::{Allowed, EntryType, Holds, MappingGroup, MappingKind, MappingSet};
 use crate::ir::profinet::RecordReading;
 use crate::ir::{Ident, Ir};
 use serde::Serialize;
@@ -21,6 +21,10 @@ pub(crate) struct Group {
     pub record: Option<Record>,
     /// DPV1 indexes: the bytes of each index's record.
     pub record_data: Option<Consts>,
+    /// How many bytes each entry takes, in a sentence.
+    pub entry_bytes: &'static str,
+    /// Every entry an Unsigned16.
+    pub two_bytes_each: bool,
     pub module_values: Vec<ModuleValues>,
 }
 
@@ -58,6 +62,8 @@ pub(crate) struct Entry {
     pub parameter_note: Option<String>,
     /// Its set's constant.
     pub allowed: Ident,
+    /// In User_Prm_Data and the record: 2, or 1 for a setting of a byte.
+    pub bytes: u16,
 }
 
 /// Where User_Prm_Data carries the group.
@@ -78,6 +84,8 @@ pub(crate) struct Record {
     /// A module's record holds the words it transports: the controller
     /// writes the first entries only.
     pub prefix: bool,
+    /// Its bytes: every entry's.
+    pub len: u16,
 }
 
 /// The value of a setting each PROFINET module fixes.
@@ -138,19 +146,25 @@ pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
             .and_then(|p| p.user_prm.block(g.kind))
             .map(|block| UserPrmBlock {
                 offset: block.offset,
-                doc: Doc::plain(
-                    "Where the first entry starts in User_Prm_Data; the others follow it, \
-                     two bytes each.",
-                ),
+                doc: Doc::plain(format!(
+                    "Where the first entry starts in User_Prm_Data; the others follow it, {}.",
+                    each_entrys_bytes(g)
+                )),
                 entries: profibus
                     .and_then(|p| p.user_prm.partial(g))
                     .unwrap_or_default(),
             }),
         record: record.map(|r| Record {
             index: r.index,
-            doc: Doc::plain("The PROFINET parameter record of these entries, two bytes each."),
+            doc: Doc::plain(format!(
+                "The PROFINET parameter record of these entries, {}.",
+                each_entrys_bytes(g)
+            )),
             prefix: r.reading == RecordReading::Prefix,
+            len: r.length,
         }),
+        entry_bytes: each_entrys_bytes(g),
+        two_bytes_each: two_bytes_each(g),
         record_data: g.record_length.map(|len| Consts {
             doc: Doc::plain("The bytes of the record each DPV1 index reads and writes."),
             items: vec![Const::new(
@@ -177,6 +191,19 @@ fn mapping_text(holds: Holds, value: u16) -> String {
     match holds {
         Holds::Address => crate::emit::hex16(value),
         Holds::Value | Holds::Choice => value.to_string(),
+    }
+}
+
+fn two_bytes_each(g: &MappingGroup) -> bool {
+    g.sets.iter().all(|s| s.entry_type == EntryType::Unsigned16)
+}
+
+/// How many bytes each entry of `g` takes, in a sentence.
+fn each_entrys_bytes(g: &MappingGroup) -> &'static str {
+    if two_bytes_each(g) {
+        "two bytes each"
+    } else {
+        "one or two bytes each by its type, with no gaps"
     }
 }
 
@@ -255,6 +282,7 @@ fn entries<'a>(ir: &'a Ir, set: &'a MappingSet) -> impl Iterator<Item = Entry> +
             parameter: e.parameter.map(Val::hex_u16),
             parameter_note: e.parameter.and_then(name_of),
             allowed: set.allowed_ident.clone(),
+            bytes: set.entry_type.bytes(),
         }
     })
 }

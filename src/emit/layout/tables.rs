@@ -363,7 +363,8 @@ fn user_prm(ir: &Ir, p: &Profibus) -> Record {
     let params = p.user_prm.params().map(|param| {
         let facts = ir.prm_facts(param);
         let (data_type, first, last) = match param.data_type {
-            PrmType::Unsigned8 => ("unsigned8", 0, 7),
+            // A Signed8 holds 0 to 127 (lowering), which a byte reads alike.
+            PrmType::Unsigned8 | PrmType::Signed8 => ("unsigned8", 0, 7),
             PrmType::Unsigned16 => ("unsigned16", 0, 15),
             PrmType::Bits { first, last } if first == last => ("bit", first, last),
             PrmType::Bits { first, last } => ("bit area", first, last),

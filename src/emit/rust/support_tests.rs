@@ -103,6 +103,7 @@ const MAPPINGS: [Mapping; 2] = [
             min: 0xF000,
             max: 0xF0FF,
         },
+        bytes: 2,
     },
     Mapping {
         name: "PZD3",
@@ -110,6 +111,7 @@ const MAPPINGS: [Mapping; 2] = [
         default: 1,
         parameter: Some(0x2B02),
         allowed: Allowed::Choices(is_small),
+        bytes: 2,
     },
 ];
 
@@ -170,6 +172,92 @@ fn a_record_has_exactly_one_word_per_mapping() {
     assert_eq!(read_record(&record, &MAPPINGS), Ok([0xF000, 1]));
     assert_eq!(read_record(&record[1..], &MAPPINGS), Err(length(4, 3)));
     assert_eq!(check_len(&[], 0), Ok(()));
+}
+
+/// ABB FENA's record 1 starts with two Integer8 settings (stop mode 0 to 2,
+/// control-zero mode 0 to 1), then an Unsigned16: each read at its own
+/// offset, with no gaps.
+const FENA_SETTINGS: [Mapping; 3] = [
+    Mapping {
+        name: "Stop mode",
+        number: 1,
+        default: 1,
+        parameter: None,
+        allowed: Allowed::Range { min: 0, max: 2 },
+        bytes: 1,
+    },
+    Mapping {
+        name: "Control-zero mode",
+        number: 2,
+        default: 0,
+        parameter: None,
+        allowed: Allowed::Range { min: 0, max: 1 },
+        bytes: 1,
+    },
+    Mapping {
+        name: "Fail safe control word",
+        number: 3,
+        default: 0,
+        parameter: None,
+        allowed: Allowed::Range {
+            min: 0,
+            max: 0xFFFF,
+        },
+        bytes: 2,
+    },
+];
+
+#[test]
+fn a_record_of_byte_and_word_settings_reads_each_at_its_offset() {
+    assert_eq!(record_len(&FENA_SETTINGS), 4);
+    let record = [2, 1, 0x04, 0x7E];
+    assert_eq!(read_record(&record, &FENA_SETTINGS), Ok([2, 1, 0x047E]));
+    assert_eq!(read_record(&record[..3], &FENA_SETTINGS), Err(length(4, 3)));
+    assert_eq!(
+        read_record(&[0, 2, 0, 0], &FENA_SETTINGS),
+        Err(PrmError::NotAllowed {
+            offset: 1,
+            value: 2
+        })
+    );
+}
+
+/// A module's record of byte and word settings, as the device tables give
+/// it: the telegram's record holds the stop mode alone, fixed at 0, the
+/// PZD module's all three; a fixed entry must hold its value.
+#[test]
+fn a_device_record_of_byte_and_word_settings_decodes_each_at_its_offset() {
+    use device::{PnRecord, RecordReading};
+    let whole = PnRecord {
+        index: 1,
+        len: 4,
+        reading: RecordReading::Whole,
+        entries: &[&FENA_SETTINGS[0], &FENA_SETTINGS[1], &FENA_SETTINGS[2]],
+        defaults: &[1, 0, 0],
+        changeable: &[true, true, true],
+    };
+    let mut values = [9; 3];
+    assert_eq!(whole.decode(&[2, 1, 0x04, 0x7E], &mut values), Ok(()));
+    assert_eq!(values, [2, 1, 0x047E]);
+    assert_eq!(whole.decode(&[2, 1, 0x04], &mut values), Err(length(4, 3)));
+    let fixed = PnRecord {
+        len: 1,
+        entries: &[&FENA_SETTINGS[0]],
+        defaults: &[0],
+        changeable: &[false],
+        ..whole
+    };
+    let mut value = [9];
+    assert_eq!(fixed.decode(&[0], &mut value), Ok(()));
+    assert_eq!(value, [0]);
+    assert_eq!(
+        fixed.decode(&[1], &mut value),
+        Err(PrmError::NotAllowed {
+            offset: 0,
+            value: 1
+        })
+    );
+    assert_eq!(value, [0], "nothing is written when refused");
 }
 
 mod md810 {
@@ -704,6 +792,7 @@ fn a_record_prefix_holds_the_words_its_module_transports() {
         default: 0,
         parameter: None,
         allowed: ALLOWED,
+        bytes: 2,
     };
     let mappings = [mapping(2), mapping(3), mapping(4)];
     assert_eq!(read_record_prefix(&[0, 1, 0, 3], &mappings), Ok([1, 3, 0]));

@@ -281,8 +281,8 @@ fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
     );
 }
 
-/// The records a module carries, one Unsigned16 Ref per entry at offsets
-/// 0, 2, 4, ...: a user-defined module every kind, each PZD record with the
+/// The records a module carries, one Ref per entry, each of its set's type,
+/// with no gaps: a user-defined module every kind, each PZD record with the
 /// words the module transports; a standard telegram only the settings each
 /// kind of module writes its own value of. A record with no entry for the module is left out.
 pub fn records(
@@ -294,12 +294,13 @@ pub fn records(
         .iter()
         .filter_map(|plan| {
             let group = mappings.group(plan.kind)?;
+            let mut end = 0;
             let refs: Vec<RecordRef> = group
                 .entries()
                 .filter_map(|(set, entry)| ref_value(set, entry, kind, layout))
-                .zip((0..).step_by(2))
-                .map(|((set, entry, value), offset)| RecordRef {
-                    offset,
+                .map(|(set, entry, value)| RecordRef {
+                    offset: next_offset(&mut end, set),
+                    data_type: set.entry_type,
                     entry: entry.key,
                     text: TextRef::new(
                         format!("IDT_{}_{}", kind_tag(plan.kind), entry.key.number),
@@ -317,12 +318,20 @@ pub fn records(
                 kind: plan.kind,
                 index: plan.index,
                 name: TextRef::new(format!("IDT_RECORD_{}", plan.index), plan.name.clone()),
-                // Entries per kind are bounded by lowering (at most 256 a set).
-                length: u16::try_from(2 * refs.len()).unwrap_or(u16::MAX),
+                length: end,
                 refs,
             })
         })
         .collect()
+}
+
+/// Where an entry of `set` starts after the record's `end`, which it moves.
+/// Entries per kind are bounded by lowering (at most 256 of at most two
+/// bytes), so no record reaches u16::MAX.
+fn next_offset(end: &mut u16, set: &MappingSet) -> u16 {
+    let offset = *end;
+    *end = end.saturating_add(set.entry_type.bytes());
+    offset
 }
 
 /// Whether `entry` is in the module's record, and the value the module
@@ -368,8 +377,10 @@ pub fn reading_plans(mappings: &Mappings, modules: &[Module]) -> Vec<profinet::R
             Some(profinet::RecordPlan {
                 kind: group.kind,
                 index: record.index,
-                // Entries per kind are bounded by lowering (at most 256 a set).
-                length: u16::try_from(2 * group.entries().count()).unwrap_or(u16::MAX),
+                length: group
+                    .entries()
+                    .map(|(set, _)| set.entry_type.bytes())
+                    .fold(0, u16::saturating_add),
                 reading,
             })
         })
