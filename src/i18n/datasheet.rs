@@ -808,6 +808,16 @@ phrases! {
         zh: "每个 Index 的记录长度为 {length} 字节；其它长度被拒绝。",
         de: "Der Datensatz jedes Index ist {length} Byte lang; andere Längen weist die Karte zurück.",
     };
+    module_values_caption(name: &str) = {
+        en: "{name}: the value each module writes, which the user cannot change",
+        zh: "{name}：各模块写入的值，用户不可更改",
+        de: "{name}: der Wert, den jedes Modul schreibt; der Benutzer kann ihn nicht ändern",
+    };
+    module_defaults_caption(name: &str) = {
+        en: "{name}: each module's default, which the user may change",
+        zh: "{name}：各模块的默认值，用户可以更改",
+        de: "{name}: der Vorgabewert jedes Moduls; der Benutzer kann ihn ändern",
+    };
     record_caption(index: u16, name: &str, length: u16) = {
         en: "Record {index}: {name}, {length} bytes",
         zh: "记录 {index}：{name}，{length} 字节",

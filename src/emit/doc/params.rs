@@ -53,6 +53,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         for record in records {
             record_table(doc, ir, lang, record, typed);
         }
+        module_values(doc, ir, lang);
     }
     choices(doc, ir, lang);
 }
@@ -351,6 +352,38 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
         &head,
         rows,
     );
+}
+
+/// For each setting each kind of module writes its own value of, the value
+/// of each module: the record tables show the longest record's.
+fn module_values(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = &ir.profinet else {
+        return;
+    };
+    for values in &p.module_values {
+        let set = ir
+            .mappings
+            .sets()
+            .find(|s| s.key == values.set)
+            .expect("lowering gives module values of its sets");
+        let rows = values
+            .modules
+            .iter()
+            .filter_map(|(_, ident_number, value)| {
+                let module = p.modules.iter().find(|m| m.ident_number == *ident_number)?;
+                Some(vec![
+                    text(lang.text(&module.name.text)),
+                    text(mapping_value(ir, lang, set, *value)),
+                ])
+            })
+            .collect();
+        let name = lang.text(&set.entries[0].name);
+        let caption = match values.changeable {
+            true => w::module_defaults_caption(lang, name),
+            false => w::module_values_caption(lang, name),
+        };
+        doc.table(caption, &[lang.t(w::MODULE), lang.t(w::VALUE)], rows);
+    }
 }
 
 /// A table for each set of choices.
