@@ -448,13 +448,16 @@ pub fn judge(
     Some(change)
 }
 
-/// Equal as the judge reads them: sets as sets, numbers as numbers.
+/// Equal as the judge reads them: sets as sets, numbers as numbers. An
+/// empty set says what its absence says where the rule has no default
+/// (FENA-01's `ApplicationClass=""`: no application class).
 fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
     match (old, new) {
         (Some(a), Some(b)) if judge == Set => {
             let (gone, added) = set_difference(a, b);
             gone.is_empty() && added.is_empty()
         }
+        (Some(set), None) | (None, Some(set)) if judge == Set => set.trim().is_empty(),
         (Some(a), Some(b)) if matches!(judge, Capability | Required) => {
             a == b || boolean(a).is_some_and(|x| boolean(b) == Some(x))
         }
@@ -728,6 +731,13 @@ mod tests {
             Some(Class::Breaking)
         );
         assert_eq!(class(modes, None, Some("Legacy")), None);
+        let classes = gsdml_rule("ApplicationClass");
+        assert_eq!(class(classes, Some(""), None), None);
+        assert_eq!(class(classes, None, Some(" ")), None);
+        assert_eq!(
+            class(classes, Some("FunctionalSafety"), None),
+            Some(Class::Breaking)
+        );
         let consistency = gsdml_rule("Consistency");
         assert_eq!(
             class(consistency, Some("All items consistency"), None),
