@@ -76,7 +76,8 @@ pub struct Parameter {
     pub name: Spanned<String>,
     /// Its byte in User_Prm_Data.
     pub offset: Spanned<u8>,
-    /// `Unsigned8` or `Unsigned16` (the default); not with `bits`.
+    /// `Unsigned8`, `Unsigned16` (the default) or `Signed8` (0 to 127: the
+    /// format says no negative value); not with `bits`.
     #[serde(rename = "type")]
     pub data_type: Option<Spanned<PrmType>>,
     /// Bits of the byte at `offset` (`Bit(n)`: one, `BitArea(first-last)`).
@@ -96,6 +97,7 @@ pub struct Parameter {
 pub enum PrmType {
     Unsigned8,
     Unsigned16,
+    Signed8,
 }
 
 /// `Unit_Diag_Bit(n) = "text"`: a bit of the device-related block with the

@@ -753,9 +753,9 @@ phrases! {
         de: " Ein Unsigned8 oder Signed8 ist ein Byte, ein Unsigned16 zwei, höherwertiges Byte zuerst; das Projektierungswerkzeug zeigt die Werte dezimal.",
     };
     USER_PRM_GATEWAY_TYPES = {
-        en: " An Unsigned8 is one byte, an Unsigned16 two, high byte first; a BitArea(first-last) is those bits of its byte, whose other bits other parameters hold. The configuration tool shows the values in decimal.",
-        zh: "Unsigned8 占一个字节，Unsigned16 占两个字节，高字节在前；BitArea(起始位-结束位) 为所在字节中的这些位，该字节的其余位属于其它参数。组态软件中以十进制显示。",
-        de: " Ein Unsigned8 ist ein Byte, ein Unsigned16 zwei, höherwertiges Byte zuerst; eine BitArea(erstes-letztes) sind diese Bits ihres Bytes, dessen übrige Bits andere Parameter belegen. Das Projektierungswerkzeug zeigt die Werte dezimal.",
+        en: " An Unsigned8 or a Signed8 is one byte, an Unsigned16 two, high byte first; a BitArea(first-last) is those bits of its byte, whose other bits other parameters hold. The configuration tool shows the values in decimal.",
+        zh: "Unsigned8 或 Signed8 占一个字节，Unsigned16 占两个字节，高字节在前；BitArea(起始位-结束位) 为所在字节中的这些位，该字节的其余位属于其它参数。组态软件中以十进制显示。",
+        de: " Ein Unsigned8 oder Signed8 ist ein Byte, ein Unsigned16 zwei, höherwertiges Byte zuerst; eine BitArea(erstes-letztes) sind diese Bits ihres Bytes, dessen übrige Bits andere Parameter belegen. Das Projektierungswerkzeug zeigt die Werte dezimal.",
     };
     DPV1_STATUS = {
         en: "DPV1_Status_1 to DPV1_Status_3",

@@ -641,12 +641,12 @@ fn constant_bytes(prm: &ParameterData, dpv1: bool) -> Vec<u8> {
 
 fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
     let name = f.name.primary.to_string();
-    let Some((stored_key, stored)) = super::prm::stored_as(f) else {
+    let Some((stored_key, stored)) = super::prm::stored_as(f).or_else(|| signed8(f)) else {
         let what = format!("parameter \"{name}\" of type {}", f.data_type);
         notes.unsaid(
             &what,
             &f.place,
-            "card parameters are Unsigned8, Unsigned16, or a Bit or BitArea of one byte",
+            "card parameters are Unsigned8, Unsigned16, Signed8 from 0 to 127, or a Bit or BitArea of one byte",
         );
         return;
     };
@@ -717,6 +717,19 @@ fn joined(mut ranges: Vec<(i128, i128)>) -> Vec<(i128, i128)> {
 
 /// Whether a value is among those a parameter allows (its texts may name
 /// more).
+/// A card parameter's `type = "Signed8"`, where its default and every value
+/// it allows are from 0 to 127, which is all the format says of one.
+fn signed8(f: &Field) -> Option<(&'static str, String)> {
+    let in_range = |v: &Value| matches!(v, Value::Int(0..=127));
+    let values_in_range = match &f.allowed {
+        Allowed::Any => false,
+        Allowed::Ranges(ranges) => ranges.iter().all(|(a, b)| in_range(a) && in_range(b)),
+    };
+    let default_in_range = f.default.as_ref().is_none_or(in_range);
+    (f.data_type == "Signed8" && f.bits.is_none() && values_in_range && default_in_range)
+        .then(|| ("type", quote("Signed8")))
+}
+
 fn allows(allowed: &Allowed, value: i128) -> bool {
     match allowed {
         Allowed::Any => true,

@@ -314,8 +314,8 @@ pub struct CardParam {
 #[non_exhaustive]
 pub enum PrmType {
     Unsigned8,
-    /// A setting's Integer8: lowering keeps its values from 0 to 127, so an
-    /// unsigned byte reads it alike.
+    /// A setting's Integer8, or a card parameter's Signed8: lowering keeps
+    /// its values from 0 to 127, so an unsigned byte reads it alike.
     Signed8,
     Unsigned16,
     /// Bits `first..=last` of the byte at the parameter's offset (GSD

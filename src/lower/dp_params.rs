@@ -113,6 +113,7 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
         (Some(t), None) => match t.get_ref() {
             raw::PrmType::Unsigned8 => PrmType::Unsigned8,
             raw::PrmType::Unsigned16 => PrmType::Unsigned16,
+            raw::PrmType::Signed8 => PrmType::Signed8,
         },
         (None, None) => PrmType::Unsigned16,
     };

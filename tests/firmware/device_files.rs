@@ -48,7 +48,12 @@ pub fn dp_lines(gsd: &Path) -> Vec<String> {
     lines.push(format!("user_prm {len} dpv1 {status}"));
     for (offset, def) in &prm.data_ref {
         let (kind, first, last) = match def.data_type {
-            gsd_parser::UserPrmDataType::Unsigned8 => ("Unsigned8", 0, 7),
+            // A Signed8 holds 0 to 127 in gsdc (the format says no negative
+            // value): the tables read its byte as an Unsigned8, within the
+            // GSD's range, compared below.
+            gsd_parser::UserPrmDataType::Unsigned8 | gsd_parser::UserPrmDataType::Signed8 => {
+                ("Unsigned8", 0, 7)
+            }
             gsd_parser::UserPrmDataType::Unsigned16 => ("Unsigned16", 0, 15),
             gsd_parser::UserPrmDataType::Bit(b) => ("Bit", b, b),
             gsd_parser::UserPrmDataType::BitArea(f, l) => ("BitArea", f, l),
