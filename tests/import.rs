@@ -1658,7 +1658,7 @@ fn fenas_byte_settings_with_per_module_defaults_round_trip() {
     assert_says(
         another_device(&imported),
         &[
-            "name = \"Stop Mode Action selection\"\ntype = \"Integer8\"\ndefault = 0\n",
+            "name = \"Stop Mode Action selection\"\ntype = \"Integer8\"\ndefault = 1\n",
             "per_module = { user_defined = 1, standard_telegram_1 = 0, standard_telegram_2 = 0, changeable = true }",
             "name = \"Control-zero mode selection\"\ntype = \"Integer8\"\n",
         ],

@@ -223,7 +223,8 @@ fn profidrive_telegram_behind_its_access_point_in_api_0x3a00(text: &str) {
             // device's layout reads it from PZD2 and PZD3 and the drive
             // model's actual speed follows it.
             "  NSOLL_B (speed setpoint B) 0x000186A0 at byte 2 -> the layout read 100000 (PZD2) -> NIST_B (speed actual value B) 0x000186A0",
-            "PASS IDM_STD_TEL_2: 0 records decoded, 1 inputs observed, 0 scenario checks, 1 32-bit values read by the layout",
+            // Its record holds the stop mode, each module's default.
+            "PASS IDM_STD_TEL_2: 1 records decoded, 1 inputs observed, 0 scenario checks, 1 32-bit values read by the layout",
             "negative: IDM_STD_TEL_2, the device's layout places it in API 0, the GSDML in API 14848",
             "Connect refused as expected: PNIO status DB 81 03 05 (Connect refused: ExpectedSubmoduleBlockReq, API)",
             "PROFINET profidrive: 8 passed, 0 failed",

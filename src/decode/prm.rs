@@ -1,7 +1,8 @@
 //! The parameter telegram's User_Prm_Data, as lowering laid it out: the
-//! constant bytes (the DPV1 status bytes), then one Unsigned16 per mapping
-//! entry, high byte first, then a gateway's parameters (bytes, words or bit
-//! areas), and what a gateway's add up to.
+//! constant bytes (the DPV1 status bytes), then one parameter per mapping
+//! entry (an Unsigned16, or a setting's type), high byte first, then a
+//! gateway's parameters (bytes, words or bit areas), and what a gateway's
+//! add up to.
 
 use super::gateway::totals;
 use super::mapping::{meaning, MappingInForce, ValueSource};

@@ -425,8 +425,17 @@ fn effective(f: &Field) -> Allowed {
                 .map(|c| (c.value.clone(), c.value.clone()))
                 .collect(),
         ),
+        // No AllowedValues: every value of its type, as a range states it.
+        (Allowed::Any, true) => type_range(f).unwrap_or(Allowed::Any),
         (allowed, _) => allowed.clone(),
     }
+}
+
+/// Every value of an integer field's type (`Unsigned8`: 0..255).
+fn type_range(f: &Field) -> Option<Allowed> {
+    let bit_length = f.bits.map_or(0, |b| u32::from(b.length));
+    let (min, max) = crate::gsdml::datatype::integer_range(&f.data_type, bit_length)?;
+    Some(Allowed::Ranges(vec![(Value::Int(min), Value::Int(max))]))
 }
 
 /// Whether every value `inner` allows, `outer` allows too.
@@ -580,6 +589,18 @@ mod tests {
         assert_eq!(
             changes(&new, &old),
             [(Class::Compatible, "allowed 0..10 → 0..14".into())]
+        );
+        // An Unsigned8 without AllowedValues allows 0..255, as stated.
+        let mut any = old.clone();
+        any.fields[0].data_type = "Unsigned8".into();
+        any.fields[0].allowed = Allowed::Any;
+        let mut stated = any.clone();
+        stated.fields[0].allowed = Allowed::Ranges(vec![(Value::Int(0), Value::Int(255))]);
+        assert_eq!(changes(&any, &stated), []);
+        stated.fields[0].allowed = Allowed::Ranges(vec![(Value::Int(0), Value::Int(254))]);
+        assert_eq!(
+            changes(&any, &stated),
+            [(Class::Breaking, "allowed 0..255 → 0..254".into())]
         );
         // 0..14 as two ranges that touch is the same set.
         new.fields[0].allowed = Allowed::Ranges(vec![

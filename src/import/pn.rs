@@ -687,19 +687,35 @@ impl<'a> Records<'a> {
     /// carries, is each kind's default (`per_module` with `changeable`).
     fn write_settings(&self, out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         for record in &self.settings {
-            for field in &record.data.fields {
+            for (i, field) in record.data.fields.iter().enumerate() {
+                // By its name, and which of that name it is: a standard
+                // telegram's record holds only the settings each kind of
+                // module writes, at other offsets.
+                let nth = record.data.fields[..i]
+                    .iter()
+                    .filter(|f| f.name == field.name)
+                    .count();
                 let in_modules: Vec<(ModuleKind, &Field)> = modules
                     .iter()
                     .filter_map(|m| {
                         let r = m.data.records.iter().find(|r| r.index == record.index)?;
-                        // By its name: a standard telegram's record holds
-                        // only the settings each kind of module writes, at
-                        // other offsets.
-                        let f = r.data.fields.iter().find(|f| f.name == field.name)?;
+                        let f = r
+                            .data
+                            .fields
+                            .iter()
+                            .filter(|f| f.name == field.name)
+                            .nth(nth)?;
                         Some((m.kind, f))
                     })
                     .collect();
-                let changeable = in_modules.iter().map(|(_, f)| *f).find(|f| f.changeable);
+                // The default of a PZD module before a telegram's, as the
+                // description's `default` is User_Prm_Data's, where a PZD
+                // module's value is.
+                let changeable = in_modules
+                    .iter()
+                    .filter(|(_, f)| f.changeable)
+                    .min_by_key(|(kind, _)| *kind != ModuleKind::Pzd)
+                    .map(|(_, f)| *f);
                 out.array_item("settings");
                 out.key("name", text(&field.name));
                 setting_type(out, field, notes);

@@ -203,8 +203,9 @@ pub struct Features {
 pub const MAX_WORDS_PER_IDENTIFIER: u8 = 16;
 
 /// The parameter telegram (User_Prm_Data): constant bytes at offset 0 (the
-/// DPV1 status bytes), then one block of Unsigned16 parameters per group of
-/// mappings, in telegram order, then a gateway's parameters, with no gaps.
+/// DPV1 status bytes), then one block of parameters per group of mappings
+/// (Unsigned16, but a setting's of its type), in telegram order, then a
+/// gateway's parameters, with no gaps.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct UserPrm {
@@ -272,8 +273,8 @@ pub struct PrmBlock {
     pub params: Vec<PrmParam>,
 }
 
-/// An `ExtUserPrmData`: a mapping entry (Unsigned16) or a gateway
-/// parameter, at its offset.
+/// An `ExtUserPrmData`: a mapping entry (Unsigned16, or a setting's type)
+/// or a gateway parameter, at its offset.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct PrmParam {

@@ -512,8 +512,9 @@ pub struct BitItem {
     pub text: TextRef,
 }
 
-/// A parameter record: one Unsigned16 per mapping entry, at consecutive
-/// byte offsets from 0.
+/// A parameter record: one Ref per mapping entry, each of its set's type
+/// (Unsigned16 but for a setting of a byte), at consecutive byte offsets
+/// from 0.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct ParameterRecord {

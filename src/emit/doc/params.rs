@@ -326,7 +326,9 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
             let mut row = vec![
                 text(bytes(lang, r.offset, last)),
                 text(lang.text(&entry.name)),
-                text(mapping_value(ir, lang, set, entry.default)),
+                // The record's own: a module writes its value of a
+                // per_module setting.
+                text(mapping_value(ir, lang, set, r.default)),
                 text(allowed(lang, set)),
                 drive_parameter(ir, entry),
             ];

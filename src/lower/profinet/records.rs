@@ -284,7 +284,8 @@ fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
 /// The records a module carries, one Ref per entry, each of its set's type,
 /// with no gaps: a user-defined module every kind, each PZD record with the
 /// words the module transports; a standard telegram only the settings each
-/// kind of module writes its own value of. A record with no entry for the module is left out.
+/// kind of module writes its own value of. A record with no entry for the
+/// module is left out.
 pub fn records(
     mappings: &Mappings,
     plans: &[RecordPlan],

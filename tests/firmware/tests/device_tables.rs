@@ -8,7 +8,7 @@ mod device_files;
 
 use device_files::{allowed_text, hex};
 use gsdc_firmware_check::gsdc_support::{
-    DpDevice, DpDiagnosis, DpParam, PnDevice, PrmDataType, PrmError, RecordReading,
+    DpDevice, DpDiagnosis, DpParam, PnDevice, PnRecord, PrmDataType, PrmError, RecordReading,
 };
 use gsdc_firmware_check::{md810_gateway, md810dp, mv810_pnet02, powtran_9kdp1, profidrive};
 use std::path::PathBuf;
@@ -160,7 +160,7 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             lines.push(format!("u32 in {offsets} out {offsets}"));
         }
         for r in m.records {
-            let bytes: Vec<u8> = r.defaults.iter().flat_map(|v| v.to_be_bytes()).collect();
+            let bytes = record_bytes(r, r.defaults);
             let mut values = vec![0; r.entries.len()];
             r.decode(&bytes, &mut values).unwrap();
             let reads: Vec<String> = values.iter().map(u16::to_string).collect();
@@ -373,12 +373,21 @@ fn a_gateway_takes_the_modules_that_carry_its_nodes_words() {
     assert_eq!(device.check_config(&prm, &short), None);
 }
 
+/// A record of `values`, each entry of its bytes, high byte first.
+fn record_bytes(r: &PnRecord, values: &[u16]) -> Vec<u8> {
+    r.entries
+        .iter()
+        .zip(values)
+        .flat_map(|(e, v)| v.to_be_bytes()[2 - e.bytes..].to_vec())
+        .collect()
+}
+
 #[test]
 fn a_record_is_refused_as_the_layouts_group_decoder_refuses_it() {
     for (name, device) in PN_DEVICES {
         for m in device.modules {
             for r in m.records {
-                let bytes: Vec<u8> = r.defaults.iter().flat_map(|v| v.to_be_bytes()).collect();
+                let bytes = record_bytes(r, r.defaults);
                 let mut values = vec![0; r.entries.len()];
                 let longer = [&bytes[..], &[0, 0]].concat();
                 assert!(
@@ -386,7 +395,8 @@ fn a_record_is_refused_as_the_layouts_group_decoder_refuses_it() {
                     "{name} {}",
                     m.name
                 );
-                assert!(r.decode(&bytes[..1], &mut values).is_err(), "{name}");
+                let short = &bytes[..bytes.len() - 1];
+                assert!(r.decode(short, &mut values).is_err(), "{name}");
                 if r.reading == RecordReading::Prefix {
                     // The first word alone: the others keep their defaults.
                     let mut first = vec![0; r.entries.len()];
@@ -394,15 +404,16 @@ fn a_record_is_refused_as_the_layouts_group_decoder_refuses_it() {
                     assert_eq!(first, r.defaults, "{name} {}", m.name);
                 }
                 for (i, entry) in r.entries.iter().enumerate() {
-                    let Some(value) = (0..=0xFFFF).find(|&v| !entry.allowed.contains(v)) else {
+                    // A value the entry's bytes can carry.
+                    let most = if entry.bytes == 1 { 0xFF } else { 0xFFFF };
+                    let Some(value) = (0..=most).find(|&v| !entry.allowed.contains(v)) else {
                         continue;
                     };
+                    let offset: usize = r.entries[..i].iter().map(|e| e.bytes).sum();
                     let mut refused = bytes.clone();
-                    refused[2 * i..2 * i + 2].copy_from_slice(&value.to_be_bytes());
-                    let error = PrmError::NotAllowed {
-                        offset: 2 * i,
-                        value,
-                    };
+                    refused[offset..offset + entry.bytes]
+                        .copy_from_slice(&value.to_be_bytes()[2 - entry.bytes..]);
+                    let error = PrmError::NotAllowed { offset, value };
                     assert_eq!(r.decode(&refused, &mut values), Err(error), "{name}");
                 }
             }

@@ -68,7 +68,7 @@ fn standard_telegram_2_carries_a_32_bit_speed() {
 /// holds 1005, the PNU the channel carries.
 #[test]
 fn p10_05_is_pnu_1005() {
-    let [setting] = settings::MAPPINGS;
+    let [setting, _stop_mode] = settings::MAPPINGS;
     assert_eq!(setting.parameter, Some(1005));
     assert_eq!(Pnu::new(1005).map(Pnu::get), Some(0x03ED));
 }
