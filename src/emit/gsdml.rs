@@ -446,7 +446,7 @@ fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
         let default = r.default.to_string();
         let allowed = allowed_values(&set.allowed);
         let mut attributes = vec![
-            ("DataType", r.data_type.gsdml_name()),
+            ("DataType", set.entry_type.gsdml_name()),
             ("ByteOffset", offset.as_str()),
             ("DefaultValue", default.as_str()),
             ("AllowedValues", allowed.as_str()),

@@ -3,7 +3,7 @@
 //! GSDML IDs and TextIds of everything, decided here so that the emitter
 //! only writes them down.
 
-use super::{Direction, EntryKey, EntryType, Ident, Layout, MappingKind, SetKey, Text};
+use super::{Direction, EntryKey, Ident, Layout, MappingKind, SetKey, Text};
 pub use crate::spec::GsdmlVersion as Version;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -530,7 +530,6 @@ pub struct ParameterRecord {
 #[non_exhaustive]
 pub struct RecordRef {
     pub offset: u16,
-    pub data_type: EntryType,
     pub entry: EntryKey,
     pub text: TextRef,
     /// The entry's default, or the value its module writes.

@@ -43,7 +43,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         let typed = records
             .iter()
             .flat_map(|r| &r.refs)
-            .any(|r| r.data_type != EntryType::Unsigned16);
+            .any(|r| ir.mappings.entry(r.entry).0.entry_type != EntryType::Unsigned16);
         let intro = if typed {
             w::RECORDS_INTRO_TYPED
         } else {
@@ -322,7 +322,7 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
         .iter()
         .map(|r| {
             let (set, entry) = ir.mappings.entry(r.entry);
-            let last = r.offset + r.data_type.bytes() - 1;
+            let last = r.offset + set.entry_type.bytes() - 1;
             let mut row = vec![
                 text(bytes(lang, r.offset, last)),
                 text(lang.text(&entry.name)),
@@ -333,7 +333,7 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
                 drive_parameter(ir, entry),
             ];
             if typed {
-                row.insert(2, text(r.data_type.gsdml_name()));
+                row.insert(2, text(set.entry_type.gsdml_name()));
             }
             row
         })
@@ -363,11 +363,7 @@ fn module_values(doc: &mut Builder, ir: &Ir, lang: Lang) {
         return;
     };
     for values in &p.module_values {
-        let set = ir
-            .mappings
-            .sets()
-            .find(|s| s.key == values.set)
-            .expect("lowering gives module values of its sets");
+        let set = ir.mappings.set(values.set);
         let rows = values
             .modules
             .iter()

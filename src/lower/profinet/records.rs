@@ -301,7 +301,6 @@ pub fn records(
                 .filter_map(|(set, entry)| ref_value(set, entry, kind, layout))
                 .map(|(set, entry, value)| RecordRef {
                     offset: next_offset(&mut end, set),
-                    data_type: set.entry_type,
                     entry: entry.key,
                     text: TextRef::new(
                         format!("IDT_{}_{}", kind_tag(plan.kind), entry.key.number),
