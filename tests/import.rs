@@ -1678,3 +1678,36 @@ fn fenas_byte_settings_with_per_module_defaults_round_trip() {
         "{record_1:#?}"
     );
 }
+
+/// PhysicalSlots is a set: overlapping ranges and repeats name the slots
+/// from 0 to the last as `0..3` does, and a range is never expanded, so a
+/// hostile list of 20,000 ranges of 65,536 slots each (billions of slots)
+/// is read as the one range it is, and left out as beyond gsdc's last
+/// slot. A list with a token that is not a number is left out at its
+/// attribute, whatever follows it.
+#[test]
+fn physical_slots_import_as_a_set_of_ranges() {
+    let slots = |list: String| {
+        md810_gsdml_changed(|gsdml| {
+            gsdml.replacen(
+                "PhysicalSlots=\"0..1\"",
+                &format!("PhysicalSlots=\"{list}\""),
+                1,
+            )
+        })
+    };
+    let overlapping = slots("0..2 1..3 3 2".into());
+    assert_says(written(&overlapping, "overlapping"), &["last_slot = 3\n"]);
+    let hostile = slots(["0..65535"; 20_000].join(" "));
+    // Beyond gsdc's last slot (32767): left out at the attribute.
+    let hostile = messages(&hostile, "W600").join("\n");
+    assert!(hostile.contains("1 to 32767"), "{hostile}");
+    let garbage = slots("x 0..3".into());
+    assert!(
+        messages(&garbage, "W600")
+            .iter()
+            .any(|m| m.contains("PhysicalSlots `x 0..3`")),
+        "{:#?}",
+        garbage.diagnostics
+    );
+}

@@ -30,7 +30,7 @@ pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
 pub(crate) use profinet::{
     info_prefix, io_length, module_description, pkw_words, CHANNEL_ERROR_TYPES,
-    DEFAULT_VERSION as DEFAULT_GSDML_VERSION, MAX_IO_LENGTH, PROFILE_ERROR_TYPES,
+    DEFAULT_VERSION as DEFAULT_GSDML_VERSION, MAX_IO_LENGTH, MAX_SLOT, PROFILE_ERROR_TYPES,
     STANDARD_TELEGRAM_2_WORDS, SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
 };
 use toml::Spanned;

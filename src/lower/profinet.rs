@@ -21,7 +21,7 @@ mod interface;
 mod io;
 mod records;
 mod stack;
-pub(crate) use stack::MAX_IO_LENGTH;
+pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
 
 pub(crate) use diagnosis::{CHANNEL_ERROR_TYPES, PROFILE_ERROR_TYPES};
 pub(crate) use io::{

@@ -5,6 +5,7 @@
 use super::{attribute, found, list, quote, submodules_of, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
+use crate::gsdml::values::ValueList;
 use crate::import::Notes;
 use crate::ir::profinet::{AddressAssignment, MODULE_SLOT};
 use std::ops::RangeInclusive;
@@ -233,22 +234,22 @@ fn number(
 /// (`0..2`, `0 1 2`); another list is left out.
 fn last_slot(notes: &mut Notes, attributes: &[Attribute]) -> Option<u16> {
     let (a, value) = found(attributes, "PhysicalSlots")?;
-    let mut slots = Vec::new();
-    for token in value.split_whitespace() {
-        let (first, last) = token.split_once("..").unwrap_or((token, token));
-        match (first.parse::<u16>(), last.parse::<u16>()) {
-            (Ok(first), Ok(last)) if first <= last => slots.extend(first..=last),
-            _ => slots.clear(),
-        }
-    }
-    slots.sort_unstable();
-    let last = slots.last().copied().filter(|&last| last >= MODULE_SLOT);
-    let from_zero = last.filter(|&last| slots.iter().copied().eq(0..=last));
+    // As a set of merged ranges: a list's ranges are never expanded, so a
+    // hostile `0..65535` repeated costs nothing.
+    let from_zero = match ValueList::parse(value).as_ref().map(ValueList::ranges) {
+        Some(&[(0, last)]) => u16::try_from(last)
+            .ok()
+            .filter(|last| (MODULE_SLOT..=crate::lower::MAX_SLOT).contains(last)),
+        _ => None,
+    };
     if from_zero.is_none() {
         notes.unsaid(
             &format!("PhysicalSlots `{value}`"),
             &a.place,
-            "the description's last_slot gives the slots from 0 to it, 1 or more",
+            &format!(
+                "the description's last_slot gives the slots from 0 to it, 1 to {}",
+                crate::lower::MAX_SLOT
+            ),
         );
     }
     from_zero

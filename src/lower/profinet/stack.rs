@@ -74,7 +74,7 @@ fn stated_or<T>(stated: Option<Option<T>>, inherited: Option<T>) -> Option<Optio
 /// gsdc's bound on the last slot, not the schema's (`PhysicalSlots` is a
 /// ValueListT without one): 0x7FFF, where the schema's other 15-bit
 /// PROFINET numbers (record indexes, vendor error types) end.
-const MAX_SLOT: u16 = 0x7FFF;
+pub(crate) const MAX_SLOT: u16 = 0x7FFF;
 
 /// IOConfigData's bound on each length (p-net's GSDML guide: "valid
 /// 0..1440"; the reference notes' checks beyond the schema).
