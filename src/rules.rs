@@ -132,6 +132,8 @@ pub const RULES: &[Rule] = &[
         "a device access point's modules not the description's, each once",
     ),
     rule("E184", "device access ARs without device access"),
+    rule("E185", "fail-safe values not one per output item"),
+    rule("E186", "fail-safe values without a settings record"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

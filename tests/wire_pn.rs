@@ -137,6 +137,27 @@ fn every_profinet_description_every_module() {
         ],
     );
     settings_of_a_byte_and_per_module_defaults(&text);
+    fail_safe_values_after_the_settings(&text);
+}
+
+/// profidrive.toml's record 1 ends with a fail-safe value per output item
+/// of the module (`[profinet.fail_safe_values]`): telegram 1's two words,
+/// telegram 2's STW1, NSOLL_B and STW2, the 1 PZD module's one word after
+/// its two settings. The controller writes the GSDML's Unsigned32 with its
+/// high word set (65543 = 0x0001_0007); the device's layout decodes every
+/// value at its offset, of its width.
+fn fail_safe_values_after_the_settings(text: &str) {
+    assert_lines(
+        text,
+        &[
+            "  record 1 (Drive settings) to slot 1 subslot 2: 01 00 04 00 07 = [1, 4, 7]",
+            "    decoded by the layout: Stop mode (P10.06) = 1, fail-safe value 1 = 4, fail-safe value 2 = 7",
+            "  record 1 (Drive settings) to slot 1 subslot 2: 01 00 04 00 01 00 07 00 0a = [1, 4, 65543, 10]",
+            "    decoded by the layout: Stop mode (P10.06) = 1, fail-safe value 1 = 4, fail-safe value 2 = 65543, fail-safe value 3 = 10",
+            "  record 1 (Drive settings) to slot 1 subslot 1: 00 01 02 00 07 = [1, 2, 7]",
+            "    decoded by the layout: Fault reaction (P10.05) = 1, Stop mode (P10.06) = 2, fail-safe value 1 = 7",
+        ],
+    );
 }
 
 /// own_idents.toml's stop mode is an Integer8, each module's default,

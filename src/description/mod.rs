@@ -578,6 +578,9 @@ pub struct Profinet {
     /// of a card that does not implement PROFIdrive.
     #[serde(default)]
     pub module_name: ModuleName,
+    /// Values the settings record of each module ends with, one for each
+    /// of its output items.
+    pub fail_safe_values: Option<Spanned<FailSafeValues>>,
     /// SendClock factors (units of 31.25 us) the interface accepts.
     pub send_clock: Option<Spanned<Vec<Spanned<u16>>>>,
     pub conformance_class: Option<Spanned<ConformanceClass>>,
@@ -712,6 +715,24 @@ pub struct ModuleInfo {
     pub user_defined: Option<Spanned<Text>>,
     pub standard_telegram_1: Option<Spanned<Text>>,
     pub standard_telegram_2: Option<Spanned<Text>>,
+}
+
+/// `[profinet.fail_safe_values]`: after its settings, each module's
+/// settings record holds one value for each of the module's output PZD
+/// items, of the item's width (ABB FENA's record 1: "Fail safe Control
+/// Word", ..., "Fail safe NSOLL_B", the values its stop mode "Use Fail-safe
+/// values" applies). The names of each kind of module's values, in
+/// telegram order.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FailSafeValues {
+    /// Every module of PKW and PZD words: one name per PZD word of the
+    /// longest, of which each module's record holds as many as it has.
+    pub user_defined: Spanned<Vec<Spanned<Text>>>,
+    /// Standard telegram 1's two items, when it is offered.
+    pub standard_telegram_1: Option<Spanned<Vec<Spanned<Text>>>>,
+    /// Standard telegram 2's three items, when it is offered.
+    pub standard_telegram_2: Option<Spanned<Vec<Spanned<Text>>>>,
 }
 
 #[derive(Debug, Default, Deserialize)]

@@ -732,6 +732,12 @@ phrases! {
         zh: "控制器插入模块时写入以下参数记录。每个条目一个 Unsigned16，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
         de: "Der Controller schreibt diese Datensätze, wenn er ein Modul steckt. Jeder enthält ein Unsigned16 je Eintrag, höherwertiges Byte zuerst; der PZD-Datensatz eines Moduls enthält die Wörter, die es überträgt, und die Tabellen zeigen den längsten.",
     };
+    FAIL_SAFE_CAPTION = {
+        en: "Fail-safe values: each module's settings record ends with one per output item, 0 by default, any value of its type",
+        zh: "故障安全值：各模块的设置记录以每个输出数据项一个值结尾，默认为 0，可取其类型的任意值",
+        de: "Ersatzwerte: der Einstellungsdatensatz jedes Moduls endet mit einem je Ausgangsdatum, Vorgabe 0, jeder Wert seines Typs",
+    };
+    FAIL_SAFE_VALUES = { en: "Fail-safe values", zh: "故障安全值", de: "Ersatzwerte" };
     RECORDS_INTRO_TYPED = {
         en: "The controller writes these records when it plugs a module. Each holds its entries one after the other, each of its type, high byte first; a module's PZD record holds the words it transports, and the tables show the longest.",
         zh: "控制器插入模块时写入以下参数记录。各条目依次排列，各为其类型，高字节在前；模块的 PZD 记录只含该模块传输的字，下表为最长的记录。",
@@ -817,6 +823,12 @@ phrases! {
         en: "{name}: each module's default, which the user may change",
         zh: "{name}：各模块的默认值，用户可以更改",
         de: "{name}: der Vorgabewert jedes Moduls; der Benutzer kann ihn ändern",
+    };
+    /// A fail-safe value and its type: `Fail safe NSOLL_B (Unsigned32)`.
+    fail_safe_value(name: &str, data_type: &str) = {
+        en: "{name} ({data_type})",
+        zh: "{name}（{data_type}）",
+        de: same,
     };
     record_caption(index: u16, name: &str, length: u16) = {
         en: "Record {index}: {name}, {length} bytes",

@@ -11,6 +11,7 @@
 
 mod daps;
 mod diagnosis;
+mod fail_safe;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -177,6 +178,9 @@ pub(super) fn describe(
         }
     }
     records.write_indexes(&mut out);
+    if let Some(fail_safe) = &records.fail_safe {
+        fail_safe.write(&mut out);
+    }
     module_texts(&mut out, &modules, notes);
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
@@ -607,6 +611,8 @@ struct Records<'a> {
     pzd_in: Option<(&'a Record, Pattern)>,
     dpv1_index: Option<(&'a Record, Pattern)>,
     settings: Vec<&'a Record>,
+    /// The fail-safe values the first settings record ends with.
+    fail_safe: Option<fail_safe::FailSafe<'a>>,
 }
 
 impl<'a> Records<'a> {
@@ -646,7 +652,25 @@ impl<'a> Records<'a> {
                 _ => records.settings.push(largest),
             }
         }
+        // The first settings record may end with fail-safe values: its
+        // settings are then those of the copy with the most of them.
+        records.fail_safe = records
+            .settings
+            .first()
+            .and_then(|first| fail_safe::of(modules, first.index));
+        if let (Some(f), Some(first)) = (&records.fail_safe, records.settings.first_mut()) {
+            *first = f.record;
+        }
         records
+    }
+
+    /// A settings record's entries that are settings: those before the
+    /// fail-safe values of the first.
+    fn settings_of(&self, record: &'a Record) -> &'a [Field] {
+        match &self.fail_safe {
+            Some(f) if std::ptr::eq(f.record, record) => f.settings,
+            _ => &record.data.fields,
+        }
     }
 
     fn mappings(&self) -> Vec<(&'static str, &(&'a Record, Pattern))> {
@@ -687,14 +711,12 @@ impl<'a> Records<'a> {
     /// carries, is each kind's default (`per_module` with `changeable`).
     fn write_settings(&self, out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         for record in &self.settings {
-            for (i, field) in record.data.fields.iter().enumerate() {
+            let fields = self.settings_of(record);
+            for (i, field) in fields.iter().enumerate() {
                 // By its name, and which of that name it is: a standard
                 // telegram's record holds only the settings each kind of
                 // module writes, at other offsets.
-                let nth = record.data.fields[..i]
-                    .iter()
-                    .filter(|f| f.name == field.name)
-                    .count();
+                let nth = fields[..i].iter().filter(|f| f.name == field.name).count();
                 let in_modules: Vec<(ModuleKind, &Field)> = modules
                     .iter()
                     .filter_map(|m| {

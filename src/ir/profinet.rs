@@ -114,6 +114,7 @@ impl Profinet {
             for record in &m.records {
                 refs.push(&record.name);
                 refs.extend(record.refs.iter().map(|r| &r.text));
+                refs.extend(record.fail_safe.iter().map(|v| &v.text));
             }
         }
         refs.extend(
@@ -497,11 +498,17 @@ impl DataItem {
 
     /// Its DataType in the GSDML file.
     pub fn data_type(&self) -> &'static str {
-        if self.double_word {
-            "Unsigned32"
-        } else {
-            "Unsigned16"
-        }
+        item_data_type(self.double_word)
+    }
+}
+
+/// The GSDML DataType of a data item, and of its fail-safe value: an
+/// Unsigned32 for a 32-bit item, else an Unsigned16.
+fn item_data_type(double_word: bool) -> &'static str {
+    if double_word {
+        "Unsigned32"
+    } else {
+        "Unsigned16"
     }
 }
 
@@ -521,9 +528,40 @@ pub struct ParameterRecord {
     pub kind: MappingKind,
     pub index: u16,
     pub name: TextRef,
-    /// Bytes: two per Ref.
+    /// Bytes: each Ref's and each fail-safe value's.
     pub length: u16,
     pub refs: Vec<RecordRef>,
+    /// After the Refs of the settings record, with
+    /// `[profinet.fail_safe_values]`: one value per output PZD item of the
+    /// module.
+    pub fail_safe: Vec<FailSafeValue>,
+}
+
+/// A value of a module's settings record for one of its output PZD items:
+/// the item's width, 0 by default, which the controller may change.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct FailSafeValue {
+    pub offset: u16,
+    pub text: TextRef,
+    /// An Unsigned32 for a 32-bit item (telegram 2's NSOLL_B), else an
+    /// Unsigned16.
+    pub double_word: bool,
+}
+
+impl FailSafeValue {
+    pub fn bytes(&self) -> u16 {
+        if self.double_word {
+            4
+        } else {
+            2
+        }
+    }
+
+    /// Its DataType in the GSDML file.
+    pub fn data_type(&self) -> &'static str {
+        item_data_type(self.double_word)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -9,12 +9,13 @@ use crate::ir::profinet::{
     Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
     FIRST_PORT_SUBSLOT,
 };
-use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
+use crate::ir::{Device, Layout, MappingKind, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
 mod daps;
 mod diagnosis;
+mod fail_safe;
 mod idents;
 mod ids;
 mod interface;
@@ -86,6 +87,8 @@ pub fn lower(
     interface::check_ring_ports(cx, client.map(Spanned::span), ports);
     let kinds = modules(cx, p, telegram);
     let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;
+    let settings_record = records.iter().any(|r| r.kind() == MappingKind::Setting);
+    let fail_safe = fail_safe::names(cx, p.fail_safe_values.as_ref(), &kinds, settings_record);
     let mut categories: Vec<Category> = Vec::new();
     let mut modules: Vec<Module> = kinds
         .into_iter()
@@ -99,6 +102,7 @@ pub fn lower(
                 telegram_1: &telegram_1_name,
                 info,
                 category: category.id,
+                fail_safe: fail_safe.as_ref(),
             };
             io::module((kind, layout), telegram, (mappings, &records), names)
         })

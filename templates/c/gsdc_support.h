@@ -2006,7 +2006,10 @@ typedef enum {
  * entry_allows checks it, each entry's value as the GSDML gives it
  * (DefaultValue: its default, or the value the module fixes), which fills
  * what a prefix leaves out, and whether the controller may change each
- * entry (the GSDML's Changeable: one that is not holds its default). */
+ * entry (the GSDML's Changeable: one that is not holds its default); and
+ * the bytes of each value the settings record ends with after its entries,
+ * one per output PZD item of the module (2, or 4 for a 32-bit item), when
+ * the description has fail-safe values. */
 typedef struct {
     uint16_t index;
     size_t len;
@@ -2019,6 +2022,8 @@ typedef struct {
     size_t defaults_count;
     const bool *changeable;
     size_t changeable_count;
+    const uint8_t *fail_safe;
+    size_t fail_safe_count;
 } gsdc_pn_record_t;
 
 /* A module of the GSDML: its English name, ident number, the slots it may
@@ -2139,6 +2144,32 @@ static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *re
             values[i] = gsdc_entry_get(&bytes[at], size);
         }
         at += size;
+    }
+    return result;
+}
+
+/* Decodes the fail-safe values a record the controller wrote, `len` bytes,
+ * ends with, high byte first, into values[0..fail_safe_count); any value of
+ * its width is allowed. `values` is written only when the result is
+ * GSDC_PRM_OK: the record is exactly the record's length. */
+static inline gsdc_prm_result_t gsdc_pn_record_fail_safe(const gsdc_pn_record_t *record,
+                                                         const uint8_t *bytes, size_t len,
+                                                         uint32_t *values)
+{
+    gsdc_prm_result_t result = gsdc_prm_check_len(len, record->len);
+    size_t at = 0U;
+    size_t i;
+    for (i = 0U; i < record->entries_count; i++) {
+        at += record->entry_bytes(record->entries[i]);
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->fail_safe_count); i++) {
+        uint32_t value = 0U;
+        size_t b;
+        for (b = 0U; b < record->fail_safe[i]; b++) {
+            value = (value << 8) | bytes[at + b];
+        }
+        values[i] = value;
+        at += record->fail_safe[i];
     }
     return result;
 }

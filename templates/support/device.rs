@@ -450,6 +450,10 @@ pub struct PnRecord {
     /// Whether the controller may change each entry (the GSDML's
     /// `Changeable`); an entry that is not holds its default.
     pub changeable: &'static [bool],
+    /// The bytes of each value the settings record ends with after its
+    /// entries, one per output PZD item of the module (2, or 4 for a
+    /// 32-bit item), when the description has fail-safe values.
+    pub fail_safe: &'static [u8],
 }
 
 impl PnRecord {
@@ -488,6 +492,29 @@ impl PnRecord {
                 }
                 _ => *default,
             };
+        }
+        Ok(())
+    }
+
+    /// The fail-safe values a record the controller wrote ends with, into
+    /// the first `fail_safe.len()` of `out`, high byte first; any value
+    /// of its width is allowed. Nothing is written when the record is not
+    /// `len` bytes long.
+    pub fn decode_fail_safe(&self, bytes: &[u8], out: &mut [u32]) -> Result<(), PrmError> {
+        check_len(bytes, self.len)?;
+        if out.len() < self.fail_safe.len() {
+            return Err(PrmError::Length {
+                expected: self.len,
+                found: bytes.len(),
+            });
+        }
+        let mut at = self.entry_ends().last().map_or(0, |(end, _)| end);
+        for (value, &size) in out.iter_mut().zip(self.fail_safe) {
+            let end = at + usize::from(size);
+            *value = bytes[at..end]
+                .iter()
+                .fold(0, |value, &byte| value << 8 | u32::from(byte));
+            at = end;
         }
         Ok(())
     }

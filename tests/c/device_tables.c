@@ -10,6 +10,7 @@
  * exits 1. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include LAYOUT_HEADER
 
@@ -198,14 +199,16 @@ static void print_double_words(const gsdc_pn_module_t *m)
 
 static void dump_record(const gsdc_pn_record_t *r)
 {
-    uint8_t bytes[512];
+    uint8_t bytes[2048];
     uint16_t values[256];
+    uint32_t fail_safe[256];
     size_t len = 0U;
     size_t i;
-    if (r->defaults_count > 256U) {
+    if ((r->defaults_count > 256U) || (r->fail_safe_count > 256U)) {
         fail("a record longer than the test's buffer");
     }
-    /* Each entry of its bytes, as the GSDML's Refs lay them out. */
+    /* Each entry of its bytes, as the GSDML's Refs lay them out, then each
+     * fail-safe value, 0 as the GSDML's default. */
     for (i = 0U; i < r->defaults_count; i++) {
         size_t size = r->entry_bytes(r->entries[i]);
         if (size == 1U) {
@@ -215,16 +218,34 @@ static void dump_record(const gsdc_pn_record_t *r)
         }
         len += size;
     }
-    if (gsdc_pn_record_decode(r, bytes, len, values).fault != GSDC_PRM_OK) {
+    for (i = 0U; i < r->fail_safe_count; i++) {
+        memset(&bytes[len], 0, r->fail_safe[i]);
+        len += r->fail_safe[i];
+    }
+    if ((gsdc_pn_record_decode(r, bytes, len, values).fault != GSDC_PRM_OK) ||
+        (gsdc_pn_record_fail_safe(r, bytes, len, fail_safe).fault != GSDC_PRM_OK)) {
         fail("a record of the GSDML's defaults is refused");
     }
-    printf("record %u len %lu reads", (unsigned int)r->index, (unsigned long)r->len);
+    printf("record %u len %lu bytes", (unsigned int)r->index, (unsigned long)r->len);
+    for (i = 0U; i < r->entries_count; i++) {
+        printf(" %lu", (unsigned long)r->entry_bytes(r->entries[i]));
+    }
+    for (i = 0U; i < r->fail_safe_count; i++) {
+        printf(" %u", (unsigned int)r->fail_safe[i]);
+    }
+    printf(" reads");
     for (i = 0U; i < r->entries_count; i++) {
         printf(" %u", (unsigned int)values[i]);
+    }
+    for (i = 0U; i < r->fail_safe_count; i++) {
+        printf(" %lu", (unsigned long)fail_safe[i]);
     }
     printf(" changeable");
     for (i = 0U; i < r->changeable_count; i++) {
         printf(" %d", r->changeable[i] ? 1 : 0);
+    }
+    for (i = 0U; i < r->fail_safe_count; i++) {
+        printf(" 1");
     }
     printf("\n");
 }

@@ -79,6 +79,42 @@ static void byte_and_word_entries_are_read_each_at_its_offset(void)
     CHECK((result.fault == GSDC_PRM_NOT_ALLOWED) && (result.offset == 1U) && (result.value == 2U));
 }
 
+/* FENA's standard telegram 2: record 1 holds the two Integer8 settings,
+ * then the fail-safe values of STW1, NSOLL_B (32 bits) and STW2. */
+static void a_record_ends_with_its_fail_safe_values(void)
+{
+    static const size_t entries[2] = {0U, 1U};
+    static const uint16_t defaults[2] = {0U, 0U};
+    static const bool changeable[2] = {true, true};
+    static const uint8_t widths[3] = {2U, 4U, 2U};
+    static const uint8_t bytes[10] = {2U, 1U, 0x04U, 0x7EU, 0x00U, 0x01U, 0x86U, 0xA0U, 0xABU, 0xCDU};
+    gsdc_pn_record_t record;
+    uint16_t settings[2] = {9U, 9U};
+    uint32_t values[3] = {9U, 9U, 9U};
+    gsdc_prm_result_t result;
+    record.index = 1U;
+    record.len = 10U;
+    record.reading = GSDC_RECORD_READING_WHOLE;
+    record.allows = fena_allows;
+    record.entry_bytes = fena_bytes;
+    record.entries = entries;
+    record.entries_count = 2U;
+    record.defaults = defaults;
+    record.defaults_count = 2U;
+    record.changeable = changeable;
+    record.changeable_count = 2U;
+    record.fail_safe = widths;
+    record.fail_safe_count = 3U;
+    CHECK(gsdc_pn_record_decode(&record, bytes, 10U, settings).fault == GSDC_PRM_OK);
+    CHECK((settings[0] == 2U) && (settings[1] == 1U));
+    CHECK(gsdc_pn_record_fail_safe(&record, bytes, 10U, values).fault == GSDC_PRM_OK);
+    CHECK((values[0] == 0x047EUL) && (values[1] == 100000UL) && (values[2] == 0xABCDUL));
+    values[1] = 9U;
+    result = gsdc_pn_record_fail_safe(&record, bytes, 9U, values);
+    CHECK((result.fault == GSDC_PRM_LENGTH) && (result.expected == 10U) && (result.found == 9U));
+    CHECK(values[1] == 9U); /* written only when the record is whole */
+}
+
 static void values_are_read_and_checked_at_their_offset(void)
 {
     static const uint8_t telegram[5] = {0x80U, 0xF0U, 0x12U, 0x00U, 0x02U};
@@ -684,6 +720,7 @@ static const test_t tests[] = {
     {"values_are_read_and_checked_at_their_offset", values_are_read_and_checked_at_their_offset},
     {"byte_and_word_entries_are_read_each_at_its_offset",
      byte_and_word_entries_are_read_each_at_its_offset},
+    {"a_record_ends_with_its_fail_safe_values", a_record_ends_with_its_fail_safe_values},
     {"reading_past_the_end_is_refused", reading_past_the_end_is_refused},
     {"pke_no_request_ignores_what_the_master_left", pke_no_request_ignores_what_the_master_left},
     {"pke_reserved_bits_are_not_read_and_written_0",

@@ -278,6 +278,15 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
                 .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
             {
                 let refs = record.children().filter(|n| n.has_tag_name("Ref"));
+                let widths: Vec<&str> = refs
+                    .clone()
+                    .map(|r| match attr(r, "DataType") {
+                        "Unsigned8" | "Integer8" => "1",
+                        "Unsigned16" => "2",
+                        "Unsigned32" => "4",
+                        other => panic!("a Ref of type {other}"),
+                    })
+                    .collect();
                 let reads: Vec<&str> = refs.clone().map(|r| attr(r, "DefaultValue")).collect();
                 // A Ref's Changeable is true unless it says otherwise (the
                 // schema's default).
@@ -288,9 +297,10 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
                     })
                     .collect();
                 lines.push(format!(
-                    "record {} len {} reads {} changeable {}",
+                    "record {} len {} bytes {} reads {} changeable {}",
                     attr(record, "Index"),
                     attr(record, "Length"),
+                    widths.join(" "),
                     reads.join(" "),
                     changeable.join(" ")
                 ));

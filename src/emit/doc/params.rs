@@ -40,10 +40,12 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         doc.subsection("records", lang.t(w::PROFINET_RECORDS));
         // Records of Unsigned16 entries alone say so once; others give each
         // entry's type.
-        let typed = records
-            .iter()
-            .flat_map(|r| &r.refs)
-            .any(|r| ir.mappings.entry(r.entry).0.entry_type != EntryType::Unsigned16);
+        let typed = records.iter().any(|r| {
+            r.refs
+                .iter()
+                .any(|f| ir.mappings.entry(f.entry).0.entry_type != EntryType::Unsigned16)
+                || r.fail_safe.iter().any(|v| v.double_word)
+        });
         let intro = if typed {
             w::RECORDS_INTRO_TYPED
         } else {
@@ -54,6 +56,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
             record_table(doc, ir, lang, record, typed);
         }
         module_values(doc, ir, lang);
+        fail_safe_values(doc, ir, lang);
     }
     choices(doc, ir, lang);
 }
@@ -337,6 +340,25 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
             }
             row
         })
+        .chain(record.fail_safe.iter().map(|value| {
+            let last = value.offset + value.bytes() - 1;
+            let max = if value.double_word {
+                u32::MAX
+            } else {
+                u16::MAX.into()
+            };
+            let mut row = vec![
+                text(bytes(lang, value.offset, last)),
+                text(lang.text(&value.text.text)),
+                text("0"),
+                text(w::range(lang, 0, max)),
+                text("—"),
+            ];
+            if typed {
+                row.insert(2, text(value.data_type()));
+            }
+            row
+        }))
         .collect();
     let mut head = vec![
         lang.t(w::BYTES),
@@ -352,6 +374,43 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
     doc.table(
         w::record_caption(lang, record.index, name, record.length),
         &head,
+        rows,
+    );
+}
+
+/// The fail-safe values each module's settings record ends with, one per
+/// output item: the record tables show the longest record's.
+fn fail_safe_values(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = &ir.profinet else {
+        return;
+    };
+    let rows: Vec<Vec<Cell>> = p
+        .modules
+        .iter()
+        .filter_map(|m| {
+            let record = m.records.iter().find(|r| !r.fail_safe.is_empty())?;
+            let values: Vec<String> = record
+                .fail_safe
+                .iter()
+                .map(|v| w::fail_safe_value(lang, lang.text(&v.text.text), v.data_type()))
+                .collect();
+            Some(vec![
+                text(lang.text(&m.name.text)),
+                text(bytes(lang, record.fail_safe[0].offset, record.length - 1)),
+                text(values.join(lang.t(w::SEMICOLON))),
+            ])
+        })
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    doc.table(
+        lang.t(w::FAIL_SAFE_CAPTION),
+        &[
+            lang.t(w::MODULE),
+            lang.t(w::BYTES),
+            lang.t(w::FAIL_SAFE_VALUES),
+        ],
         rows,
     );
 }

@@ -86,6 +86,9 @@ pub(crate) struct Record {
     pub prefix: bool,
     /// Its bytes: every entry's.
     pub len: u16,
+    /// Each module's record ends with its own fail-safe values: only the
+    /// device tables' records decode it.
+    pub fail_safe: bool,
 }
 
 /// The value of a setting each PROFINET module fixes.
@@ -162,6 +165,11 @@ pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
             )),
             prefix: r.reading == RecordReading::Prefix,
             len: r.length,
+            fail_safe: ir.profinet.iter().flat_map(|p| &p.modules).any(|m| {
+                m.records
+                    .iter()
+                    .any(|rec| rec.kind == g.kind && !rec.fail_safe.is_empty())
+            }),
         }),
         entry_bytes: each_entrys_bytes(g),
         two_bytes_each: two_bytes_each(g),

@@ -628,6 +628,13 @@ fn pn_record(ir: &Ir, r: &profinet::ParameterRecord) -> Value {
                     r.refs.iter().map(|f| Value::Bool(f.changeable)).collect(),
                 ),
             ),
+            (
+                "fail_safe",
+                Value::List(
+                    Elem::Byte,
+                    r.fail_safe.iter().map(|v| number(v.bytes())).collect(),
+                ),
+            ),
         ],
     ))
 }

@@ -235,6 +235,7 @@ fn a_device_record_of_byte_and_word_settings_decodes_each_at_its_offset() {
         entries: &[&FENA_SETTINGS[0], &FENA_SETTINGS[1], &FENA_SETTINGS[2]],
         defaults: &[1, 0, 0],
         changeable: &[true, true, true],
+        fail_safe: &[],
     };
     let mut values = [9; 3];
     assert_eq!(whole.decode(&[2, 1, 0x04, 0x7E], &mut values), Ok(()));
@@ -258,6 +259,39 @@ fn a_device_record_of_byte_and_word_settings_decodes_each_at_its_offset() {
         })
     );
     assert_eq!(value, [0], "nothing is written when refused");
+}
+
+/// FENA's standard telegram 2: record 1 holds the two byte settings, then
+/// the fail-safe values of STW1, NSOLL_B (32 bits) and STW2, each at its
+/// offset after the entries, high byte first.
+#[test]
+fn a_device_record_ends_with_its_fail_safe_values() {
+    use device::{PnRecord, RecordReading};
+    let record = PnRecord {
+        index: 1,
+        len: 10,
+        reading: RecordReading::Whole,
+        entries: &[&FENA_SETTINGS[0], &FENA_SETTINGS[1]],
+        defaults: &[0, 0],
+        changeable: &[true, true],
+        fail_safe: &[2, 4, 2],
+    };
+    let bytes = [2, 1, 0x04, 0x7E, 0x00, 0x01, 0x86, 0xA0, 0xAB, 0xCD];
+    let mut settings = [9; 2];
+    assert_eq!(record.decode(&bytes, &mut settings), Ok(()));
+    assert_eq!(settings, [2, 1]);
+    let mut values = [9; 3];
+    assert_eq!(record.decode_fail_safe(&bytes, &mut values), Ok(()));
+    assert_eq!(values, [0x047E, 100_000, 0xABCD]);
+    assert_eq!(
+        record.decode_fail_safe(&bytes[..9], &mut values),
+        Err(length(10, 9))
+    );
+    assert_eq!(
+        values,
+        [0x047E, 100_000, 0xABCD],
+        "nothing is written when refused"
+    );
 }
 
 mod md810 {

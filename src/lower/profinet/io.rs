@@ -1,6 +1,7 @@
 //! A module's IO data, word by word, with the TextIds of every word and
 //! named bit; and the IO lengths of the device access point.
 
+use super::fail_safe::FailSafeNames;
 use super::ids::module_tag;
 use super::records::{self, RecordPlan};
 use crate::i18n::{files, Phrase};
@@ -21,6 +22,8 @@ pub struct Names<'a> {
     /// What the description adds to gsdc's description of the module.
     pub info: Option<Text>,
     pub category: String,
+    /// The names of the values its settings record ends with.
+    pub fail_safe: Option<&'a FailSafeNames>,
 }
 
 /// A module of `kind` and `layout`. Standard telegram 1 of a PROFIdrive
@@ -47,6 +50,11 @@ pub fn module(
         ModuleKind::Pzd => pzd_name(layout),
     };
     let description = description(kind, layout, &name, profidrive);
+    let output = items(Direction::Out);
+    let fail_safe = names
+        .fail_safe
+        .map(|f| f.items(kind, layout, &output))
+        .unwrap_or_default();
     Module {
         kind,
         id: format!("IDM_{tag}"),
@@ -64,8 +72,8 @@ pub fn module(
         layout,
         ident: code_name(kind, layout),
         input: items(Direction::In),
-        output: items(Direction::Out),
-        records: records::records(mappings, records, (kind, layout)),
+        output,
+        records: records::records(mappings, records, (kind, layout), fail_safe),
     }
 }
 

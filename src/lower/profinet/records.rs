@@ -2,13 +2,14 @@
 //! Refs each module's records carry (sized to the module: a PZD record holds
 //! the words the module transports), and the ValueItems of their choices.
 
+use super::fail_safe::FailSafeItem;
 use super::ids::{kind_tag, value_tag};
 use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::i18n::files;
 use crate::ir::profinet::{
-    self, Module, ModuleKind, ModuleValues, ParameterRecord, RecordReading, RecordRef, TextRef,
-    ValueItem,
+    self, FailSafeValue, Module, ModuleKind, ModuleValues, ParameterRecord, RecordReading,
+    RecordRef, TextRef, ValueItem,
 };
 use crate::ir::{Layout, MappingEntry, MappingKind, MappingSet, Mappings, Text};
 use crate::lower::checks::Checker;
@@ -24,6 +25,12 @@ pub struct RecordPlan {
     kind: MappingKind,
     index: u16,
     name: Text,
+}
+
+impl RecordPlan {
+    pub fn kind(&self) -> MappingKind {
+        self.kind
+    }
 }
 
 /// One record per kind of mapping the description has: PZD out, PZD in,
@@ -284,13 +291,16 @@ fn no_mappings(cx: &mut Checker, kind: MappingKind, span: Range<usize>) {
 /// The records a module carries, one Ref per entry, each of its set's type,
 /// with no gaps: a user-defined module every kind, each PZD record with the
 /// words the module transports; a standard telegram only the settings each
-/// kind of module writes its own value of. A record with no entry for the
-/// module is left out.
+/// kind of module writes its own value of. The settings record ends with
+/// the module's `fail_safe` values. A record with no entry for the module
+/// is left out.
 pub fn records(
     mappings: &Mappings,
     plans: &[RecordPlan],
     (kind, layout): (ModuleKind, Layout),
+    fail_safe: Vec<FailSafeItem>,
 ) -> Vec<ParameterRecord> {
+    let mut fail_safe = Some(fail_safe);
     plans
         .iter()
         .filter_map(|plan| {
@@ -314,12 +324,28 @@ pub fn records(
                         .map(|_| format!("IDV_{}", value_tag(set))),
                 })
                 .collect();
-            (!refs.is_empty()).then(|| ParameterRecord {
+            let fail_safe: Vec<FailSafeValue> = match plan.kind {
+                MappingKind::Setting => fail_safe.take().unwrap_or_default(),
+                _ => Vec::new(),
+            }
+            .into_iter()
+            .map(|item| {
+                let value = FailSafeValue {
+                    offset: end,
+                    text: item.text,
+                    double_word: item.double_word,
+                };
+                end = end.saturating_add(value.bytes());
+                value
+            })
+            .collect();
+            (!refs.is_empty() || !fail_safe.is_empty()).then(|| ParameterRecord {
                 kind: plan.kind,
                 index: plan.index,
                 name: TextRef::new(format!("IDT_RECORD_{}", plan.index), plan.name.clone()),
                 length: end,
                 refs,
+                fail_safe,
             })
         })
         .collect()

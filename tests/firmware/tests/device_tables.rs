@@ -163,18 +163,23 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             let bytes = record_bytes(r, r.defaults);
             let mut values = vec![0; r.entries.len()];
             r.decode(&bytes, &mut values).unwrap();
-            let reads: Vec<String> = values.iter().map(u16::to_string).collect();
-            let changeable: Vec<&str> = r
-                .changeable
-                .iter()
-                .map(|&c| if c { "1" } else { "0" })
-                .collect();
+            let mut fail_safe = vec![0; r.fail_safe.len()];
+            r.decode_fail_safe(&bytes, &mut fail_safe).unwrap();
+            // The entries, then the fail-safe values, which the controller
+            // may always change.
+            let widths = r.entries.iter().map(|e| e.bytes.to_string());
+            let widths = widths.chain(r.fail_safe.iter().map(u8::to_string));
+            let reads = values.iter().map(u16::to_string);
+            let reads = reads.chain(fail_safe.iter().map(u32::to_string));
+            let changeable = r.changeable.iter().chain(r.fail_safe.iter().map(|_| &true));
+            let changeable = changeable.map(|&c| if c { "1" } else { "0" });
             lines.push(format!(
-                "record {} len {} reads {} changeable {}",
+                "record {} len {} bytes {} reads {} changeable {}",
                 r.index,
                 r.len,
-                reads.join(" "),
-                changeable.join(" ")
+                widths.collect::<Vec<_>>().join(" "),
+                reads.collect::<Vec<_>>().join(" "),
+                changeable.collect::<Vec<_>>().join(" ")
             ));
         }
     }
@@ -373,12 +378,15 @@ fn a_gateway_takes_the_modules_that_carry_its_nodes_words() {
     assert_eq!(device.check_config(&prm, &short), None);
 }
 
-/// A record of `values`, each entry of its bytes, high byte first.
+/// A record of `values`, each entry of its bytes, high byte first, then
+/// its fail-safe values, each 0.
 fn record_bytes(r: &PnRecord, values: &[u16]) -> Vec<u8> {
+    let fail_safe = r.fail_safe.iter().map(|&bytes| usize::from(bytes)).sum();
     r.entries
         .iter()
         .zip(values)
         .flat_map(|(e, v)| v.to_be_bytes()[2 - e.bytes..].to_vec())
+        .chain(std::iter::repeat_n(0, fail_safe))
         .collect()
 }
 

@@ -250,7 +250,13 @@ def other_value(ref: Ref, ordinal: int) -> int:
     else:
         start = -1  # the default is not among the allowed values
     value = nth((start + 1 + 3 * ordinal) % total)
-    return value if value != ref.default or total == 1 else nth((start + 2 + 3 * ordinal) % total)
+    value = value if value != ref.default or total == 1 else nth((start + 2 + 3 * ordinal) % total)
+    # A 32-bit value uses its high word too, so that a decoder that reads
+    # two bytes of it shows.
+    wide = value + 0x10000
+    if TYPE_SIZES[ref.data_type] == 4 and any(low <= wide <= high for low, high in ref.allowed):
+        return wide
+    return value
 
 
 def encode_record(record: RecordItem) -> tuple[bytes, list[int]]:

@@ -12,6 +12,15 @@ use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
 /// The entries of a record the controller wrote, each with its value.
 pub type Decoded = Vec<(&'static Mapping, u16)>;
 
+/// A record the controller wrote, as the layout decoded it: its entries,
+/// the fail-safe values it ends with, and the names of the entries whose
+/// values the drive refused.
+pub struct Written {
+    pub entries: Decoded,
+    pub fail_safe: Vec<u32>,
+    pub refused: Vec<&'static str>,
+}
+
 pub struct Application {
     card: &'static Card,
     drive: Drive,
@@ -68,14 +77,18 @@ impl Application {
         subslot: u16,
         index: u16,
         bytes: &[u8],
-    ) -> Option<Result<(Decoded, Vec<&'static str>), String>> {
+    ) -> Option<Result<Written, String>> {
         let (_, module) = self.plugged.iter().find(|(s, _)| *s == slot)?;
         let record = module
             .records
             .iter()
             .find(|r| module.data.subslot == subslot && r.index == index)?;
         let mut values = vec![0; record.entries.len()];
-        if let Err(e) = record.decode(bytes, &mut values) {
+        let mut fail_safe = vec![0; record.fail_safe.len()];
+        let decoded = record
+            .decode(bytes, &mut values)
+            .and_then(|()| record.decode_fail_safe(bytes, &mut fail_safe));
+        if let Err(e) = decoded {
             return Some(Err(format!("{e:?}")));
         }
         let decoded: Decoded = record.entries.iter().copied().zip(values).collect();
@@ -96,7 +109,11 @@ impl Application {
         {
             held.1 = decoded.clone();
         }
-        Some(Ok((decoded, refused)))
+        Some(Ok(Written {
+            entries: decoded,
+            fail_safe,
+            refused,
+        }))
     }
 
     /// One cycle over every plugged module's data, and the 32-bit values

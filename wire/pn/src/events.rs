@@ -1,7 +1,7 @@
 //! The device's account of the exchange: one JSON object a line on stdout.
 
 use crate::connect::ApiMismatch;
-use crate::drive::{Decoded, DoubleWord};
+use crate::drive::{DoubleWord, Written};
 use pnio::cm::{AbortReason, ArState, Record};
 use pnio::eth::MacAddr;
 use std::io::Write;
@@ -76,22 +76,25 @@ impl Events {
     /// A written record, with what the layout's decoder made of it (or why it
     /// refused it, or that the layout has no record at that place), and the
     /// entries whose value the drive refused.
-    #[allow(clippy::type_complexity)]
-    pub fn record(&self, record: &Record, decoded: Option<&Result<(Decoded, Vec<&str>), String>>) {
+    /// Its fail-safe values follow its entries, in record order.
+    pub fn record(&self, record: &Record, decoded: Option<&Result<Written, String>>) {
         let bytes: String = record.data.iter().map(|b| format!("{b:02x}")).collect();
         let decoded = match decoded {
             None => r#""layout":null"#.to_string(),
-            Some(Ok((values, refused))) => format!(
+            Some(Ok(written)) => format!(
                 r#""layout":[{}],"drive_refused":[{}]"#,
-                values
+                written
+                    .entries
                     .iter()
-                    .map(|(entry, value)| format!(
-                        r#"{{"entry":{},"value":{value}}}"#,
-                        quote(entry.name)
-                    ))
+                    .map(|(entry, value)| (quote(entry.name), u32::from(*value)))
+                    .chain(written.fail_safe.iter().enumerate().map(|(i, value)| {
+                        (quote(&format!("fail-safe value {}", i + 1)), *value)
+                    }))
+                    .map(|(entry, value)| format!(r#"{{"entry":{entry},"value":{value}}}"#))
                     .collect::<Vec<_>>()
                     .join(","),
-                refused
+                written
+                    .refused
                     .iter()
                     .map(|n| quote(n))
                     .collect::<Vec<_>>()
