@@ -19,6 +19,11 @@ pub enum Judge {
     /// A default for new projects (the slot a module is plugged into, the
     /// name of station): old projects keep theirs. Compatible.
     NewProjects,
+    /// The name of station a new project proposes: a default for new
+    /// projects, and a DNS name, which DNS compares without regard to case
+    /// (RFC 4343, 3), as the engineering tool does when it proposes it
+    /// (FENA's `FENA` is the name of station `fena`).
+    DnsName,
     /// The device supports something (`true`/`1`): dropping it breaks,
     /// adding it is compatible.
     Capability,
@@ -242,7 +247,7 @@ pub const GSDML: &[Rule] = &[
     rule("RequiredSchemaVersion", Version, File),
     rule("ProfileVersion", Version, File),
     // Defaults for new projects.
-    rule("DNS_CompatibleName", NewProjects, Id).because(
+    rule("DNS_CompatibleName", DnsName, Id).because(
         "the name of station a new project proposes; old projects keep the name they gave the device",
     ),
     rule("UsedInSlots", NewProjects, Module),
@@ -448,7 +453,8 @@ pub fn judge(
     Some(change)
 }
 
-/// Equal as the judge reads them: sets as sets, numbers as numbers. An
+/// Equal as the judge reads them: sets as sets, numbers as numbers, DNS
+/// names without regard to case. An
 /// empty set says what its absence says where the rule has no default
 /// (FENA-01's `ApplicationClass=""`: no application class).
 fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
@@ -458,6 +464,7 @@ fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
             gone.is_empty() && added.is_empty()
         }
         (Some(set), None) | (None, Some(set)) if judge == Set => set.trim().is_empty(),
+        (Some(a), Some(b)) if judge == DnsName => a.eq_ignore_ascii_case(b),
         (Some(a), Some(b)) if matches!(judge, Capability | Required) => {
             a == b || boolean(a).is_some_and(|x| boolean(b) == Some(x))
         }
@@ -486,7 +493,7 @@ fn verdict(judge: Judge, old: Option<&str>, new: Option<&str>) -> (Class, String
             Class::Compatible,
             "old projects are not affected; an engineering tool older than the new version may not install the file".into(),
         ),
-        NewProjects => (
+        NewProjects | DnsName => (
             Class::Compatible,
             "a default for new projects; old projects keep the value they were configured with".into(),
         ),
@@ -737,6 +744,13 @@ mod tests {
         assert_eq!(
             class(classes, Some("FunctionalSafety"), None),
             Some(Class::Breaking)
+        );
+        // A name of station proposed in capitals is the same name.
+        let station = gsdml_rule("DNS_CompatibleName");
+        assert_eq!(class(station, Some("FENA"), Some("fena")), None);
+        assert_eq!(
+            class(station, Some("fena"), Some("fena-2")),
+            Some(Class::Compatible)
         );
         let consistency = gsdml_rule("Consistency");
         assert_eq!(
