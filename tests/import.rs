@@ -1733,3 +1733,70 @@ fn physical_slots_import_as_a_set_of_ranges() {
         garbage.diagnostics
     );
 }
+
+/// A card's PROFINET description with `settings` and `pzd_lengths`, and
+/// `rest` after `[profinet]`'s keys.
+fn pn_card(settings: &[&str], pzd_lengths: &str, rest: &str) -> String {
+    let settings: String = settings
+        .iter()
+        .map(|name| {
+            format!("[[settings]]\nname = \"{name}\"\ndefault = 0\nrange = [0, 65535]\nset_at = \"master\"\n\n")
+        })
+        .collect();
+    format!(
+        "[device]\nvendor = \"Acme\"\nfamily = \"X1\"\nmodel = \"X1PN\"\nrevision = \"V1\"\n\
+         hardware_release = \"V1\"\nsoftware_release = \"V1\"\nname = \"X1 PROFINET card\"\n\n\
+         [telegram]\npkw = \"none\"\npzd_words = 4\nprofidrive = false\n\n{settings}\
+         [profinet]\nvendor_id = {{ value = 0x1234 }}\ndevice_id = {{ value = 0x0001 }}\n\
+         date = 2026-01-31\ndns_name = \"x1-pn\"\nmin_device_interval = 32\nports = 1\n\
+         pzd_lengths = {pzd_lengths}\nmodule_pkw = \"without\"\n{rest}"
+    )
+}
+
+/// The description the import of `description`'s GSDML writes, after
+/// checking that it rebuilds the file byte-identical below the header.
+fn gsdml_round_trip(description: &str) -> String {
+    let (ir, diagnostics) = descriptions::load_text("card.toml", description);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let imported = import(&file_name, gsdml.as_bytes());
+    let toml = written(&imported, "card.toml").to_string();
+    let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", &toml);
+    let rebuilt = rebuilt.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (_, text) = descriptions::one(gsdc::compile(&rebuilt).unwrap(), ArtifactKind::Gsdml);
+    assert_eq!(gsdml_body(&text), gsdml_body(&gsdml), "{toml}");
+    toml
+}
+
+/// The import tells fail-safe values from settings by what settings alone
+/// cannot rebuild. A card of one module whose last settings happen to be
+/// Unsigned16s of any value, default 0, as many as its output words, keeps
+/// them as settings (they are every module's, and User_Prm_Data's on a
+/// card with both buses); copies that differ by the module's output items
+/// are fail-safe values, and a setting that shares a fail-safe value's name
+/// is still found among the settings of each module's copy.
+#[test]
+fn fail_safe_values_are_told_from_settings_by_what_settings_cannot_rebuild() {
+    let one_module = gsdml_round_trip(&pn_card(
+        &[
+            "Stop mode",
+            "Speed scaling",
+            "Torque scaling",
+            "Ramp",
+            "Limit",
+        ],
+        "[4]",
+        "",
+    ));
+    assert!(!one_module.contains("fail_safe_values"), "{one_module}");
+    assert_says(&one_module, &["name = \"Torque scaling\""]);
+    let fail_safe = "[profinet.fail_safe_values]\nuser_defined = [\"A\", \"B\", \"C\", \"D\"]\nstandard_telegram_1 = [\"Stop mode\", \"X\"]\n";
+    let two_kinds = gsdml_round_trip(&pn_card(
+        &["Stop mode"],
+        "[2, 4]",
+        &format!(
+            "standard_telegram_1 = true\n\n[profinet.module_name]\nstandard_telegram_1 = \"Telegram 1\"\n\n{fail_safe}"
+        ),
+    ));
+    assert_says(&two_kinds, &[fail_safe]);
+}

@@ -461,18 +461,13 @@ fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
     }
     for value in &record.fail_safe {
         doc.text(&value.text);
-        let max = if value.double_word {
-            u32::MAX
-        } else {
-            u16::MAX.into()
-        };
         doc.leaf(
             "Ref",
             &[
                 ("DataType", value.data_type()),
                 ("ByteOffset", &value.offset.to_string()),
                 ("DefaultValue", "0"),
-                ("AllowedValues", &format!("0..{max}")),
+                ("AllowedValues", &format!("0..{}", value.max())),
                 ("Changeable", "true"),
                 ("Visible", "true"),
                 ("TextId", value.text.id.as_str()),

@@ -659,18 +659,18 @@ impl<'a> Records<'a> {
             .first()
             .and_then(|first| fail_safe::of(modules, first.index));
         if let (Some(f), Some(first)) = (&records.fail_safe, records.settings.first_mut()) {
-            *first = f.record;
+            *first = f.most_settings();
         }
         records
     }
 
-    /// A settings record's entries that are settings: those before the
-    /// fail-safe values of the first.
+    /// A copy of a settings record's entries that are settings: those
+    /// before its fail-safe values.
     fn settings_of(&self, record: &'a Record) -> &'a [Field] {
-        match &self.fail_safe {
-            Some(f) if std::ptr::eq(f.record, record) => f.settings,
-            _ => &record.data.fields,
-        }
+        self.fail_safe
+            .as_ref()
+            .and_then(|f| f.settings_of(record))
+            .unwrap_or(&record.data.fields)
     }
 
     fn mappings(&self) -> Vec<(&'static str, &(&'a Record, Pattern))> {
@@ -721,9 +721,8 @@ impl<'a> Records<'a> {
                     .iter()
                     .filter_map(|m| {
                         let r = m.data.records.iter().find(|r| r.index == record.index)?;
-                        let f = r
-                            .data
-                            .fields
+                        let f = self
+                            .settings_of(r)
                             .iter()
                             .filter(|f| f.name == field.name)
                             .nth(nth)?;

@@ -558,6 +558,15 @@ impl FailSafeValue {
         }
     }
 
+    /// The largest value its type holds, which it may be.
+    pub fn max(&self) -> u32 {
+        if self.double_word {
+            u32::MAX
+        } else {
+            u16::MAX.into()
+        }
+    }
+
     /// Its DataType in the GSDML file.
     pub fn data_type(&self) -> &'static str {
         item_data_type(self.double_word)

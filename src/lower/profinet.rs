@@ -9,7 +9,7 @@ use crate::ir::profinet::{
     Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
     FIRST_PORT_SUBSLOT,
 };
-use crate::ir::{Device, Layout, MappingKind, Mappings, PkwKind, Telegram, Text};
+use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
@@ -87,8 +87,13 @@ pub fn lower(
     interface::check_ring_ports(cx, client.map(Spanned::span), ports);
     let kinds = modules(cx, p, telegram);
     let telegram_1_name = standard_telegram_1_name(cx, (p, near), desc, telegram, &kinds)?;
-    let settings_record = records.iter().any(|r| r.kind() == MappingKind::Setting);
-    let fail_safe = fail_safe::names(cx, p.fail_safe_values.as_ref(), &kinds, settings_record);
+    // As the description says it, whatever errors its settings have.
+    let master_sets_settings = desc.settings.iter().any(|s| {
+        s.set_at
+            .as_ref()
+            .is_none_or(|at| *at.get_ref() == raw::SetAt::Master)
+    });
+    let fail_safe = fail_safe::names(cx, p, &kinds, master_sets_settings);
     let mut categories: Vec<Category> = Vec::new();
     let mut modules: Vec<Module> = kinds
         .into_iter()

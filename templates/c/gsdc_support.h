@@ -2001,15 +2001,15 @@ typedef enum {
 } gsdc_record_reading_t;
 
 /* A parameter record of a module's data submodule: its index, its bytes
- * (two per entry), how much of it the controller writes, its entries in
- * record order, each one a place in a layout's group of mappings, whose
- * entry_allows checks it, each entry's value as the GSDML gives it
- * (DefaultValue: its default, or the value the module fixes), which fills
- * what a prefix leaves out, and whether the controller may change each
- * entry (the GSDML's Changeable: one that is not holds its default); and
- * the bytes of each value the settings record ends with after its entries,
- * one per output PZD item of the module (2, or 4 for a 32-bit item), when
- * the description has fail-safe values. */
+ * (its entries', then its fail-safe values'), how much of it the controller
+ * writes, its entries in record order, each one a place in a layout's group
+ * of mappings, whose entry_allows checks it, each entry's value as the
+ * GSDML gives it (DefaultValue: its default, or the value the module
+ * fixes), which fills what a prefix leaves out, and whether the controller
+ * may change each entry (the GSDML's Changeable: one that is not holds its
+ * default); and the bytes of each value the settings record ends with after
+ * its entries, one per output PZD item of the module (2, or 4 for a 32-bit
+ * item), when the description has fail-safe values. */
 typedef struct {
     uint16_t index;
     size_t len;
@@ -2151,25 +2151,34 @@ static inline gsdc_prm_result_t gsdc_pn_record_decode(const gsdc_pn_record_t *re
 /* Decodes the fail-safe values a record the controller wrote, `len` bytes,
  * ends with, high byte first, into values[0..fail_safe_count); any value of
  * its width is allowed. `values` is written only when the result is
- * GSDC_PRM_OK: the record is exactly the record's length. */
+ * GSDC_PRM_OK: the record is exactly the record's length, and its entries
+ * and values fit in it (else the table disagrees with itself). */
 static inline gsdc_prm_result_t gsdc_pn_record_fail_safe(const gsdc_pn_record_t *record,
                                                          const uint8_t *bytes, size_t len,
                                                          uint32_t *values)
 {
     gsdc_prm_result_t result = gsdc_prm_check_len(len, record->len);
-    size_t at = 0U;
+    size_t start = 0U;
+    size_t end;
     size_t i;
     for (i = 0U; i < record->entries_count; i++) {
-        at += record->entry_bytes(record->entries[i]);
+        start += record->entry_bytes(record->entries[i]);
+    }
+    end = start;
+    for (i = 0U; i < record->fail_safe_count; i++) {
+        end += record->fail_safe[i];
+    }
+    if ((result.fault == GSDC_PRM_OK) && (end > len)) {
+        result = gsdc_prm_check_len(len, end);
     }
     for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->fail_safe_count); i++) {
         uint32_t value = 0U;
         size_t b;
         for (b = 0U; b < record->fail_safe[i]; b++) {
-            value = (value << 8) | bytes[at + b];
+            value = (value << 8) | bytes[start + b];
         }
         values[i] = value;
-        at += record->fail_safe[i];
+        start += record->fail_safe[i];
     }
     return result;
 }

@@ -439,7 +439,8 @@ pub enum RecordReading {
 #[derive(Clone, Copy, Debug)]
 pub struct PnRecord {
     pub index: u16,
-    /// Bytes, as the GSDML gives them: its entries' bytes.
+    /// Bytes, as the GSDML gives them: its entries' bytes, then its
+    /// fail-safe values'.
     pub len: usize,
     pub reading: RecordReading,
     /// Its entries in record order, each of its bytes, with no gaps.
@@ -497,18 +498,22 @@ impl PnRecord {
     }
 
     /// The fail-safe values a record the controller wrote ends with, into
-    /// the first `fail_safe.len()` of `out`, high byte first; any value
-    /// of its width is allowed. Nothing is written when the record is not
-    /// `len` bytes long.
+    /// the first `fail_safe.len()` of `out` (which holds at least as many),
+    /// high byte first; any value of its width is allowed. Nothing is
+    /// written when the record is not `len` bytes long, nor when its entries
+    /// and values would not fit in it (a table that disagrees with itself).
     pub fn decode_fail_safe(&self, bytes: &[u8], out: &mut [u32]) -> Result<(), PrmError> {
         check_len(bytes, self.len)?;
-        if out.len() < self.fail_safe.len() {
+        let start = self.entry_ends().last().map_or(0, |(end, _)| end);
+        let widths: usize = self.fail_safe.iter().map(|&b| usize::from(b)).sum();
+        let end = start + widths;
+        if end > bytes.len() || out.len() < self.fail_safe.len() {
             return Err(PrmError::Length {
-                expected: self.len,
+                expected: end,
                 found: bytes.len(),
             });
         }
-        let mut at = self.entry_ends().last().map_or(0, |(end, _)| end);
+        let mut at = start;
         for (value, &size) in out.iter_mut().zip(self.fail_safe) {
             let end = at + usize::from(size);
             *value = bytes[at..end]

@@ -113,6 +113,12 @@ static void a_record_ends_with_its_fail_safe_values(void)
     result = gsdc_pn_record_fail_safe(&record, bytes, 9U, values);
     CHECK((result.fault == GSDC_PRM_LENGTH) && (result.expected == 10U) && (result.found == 9U));
     CHECK(values[1] == 9U); /* written only when the record is whole */
+    /* A table whose entries and values would not fit its length is refused,
+     * not read past. */
+    record.len = 4U;
+    result = gsdc_pn_record_fail_safe(&record, bytes, 4U, values);
+    CHECK((result.fault == GSDC_PRM_LENGTH) && (result.expected == 10U) && (result.found == 4U));
+    CHECK(values[1] == 9U);
 }
 
 static void values_are_read_and_checked_at_their_offset(void)

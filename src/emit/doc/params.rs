@@ -152,8 +152,11 @@ fn longest_records(ir: &Ir) -> Vec<&ParameterRecord> {
         .flat_map(|p| &p.modules)
         .flat_map(|m| &m.records);
     for record in all {
+        // The most entries, then the most bytes: fail-safe values follow
+        // the settings, as many as the module has output items.
+        let size = |r: &ParameterRecord| (r.refs.len(), r.length);
         match longest.iter_mut().find(|r| r.index == record.index) {
-            Some(known) if known.refs.len() < record.refs.len() => *known = record,
+            Some(known) if size(known) < size(record) => *known = record,
             Some(_) => {}
             None => longest.push(record),
         }
@@ -342,16 +345,11 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
         })
         .chain(record.fail_safe.iter().map(|value| {
             let last = value.offset + value.bytes() - 1;
-            let max = if value.double_word {
-                u32::MAX
-            } else {
-                u16::MAX.into()
-            };
             let mut row = vec![
                 text(bytes(lang, value.offset, last)),
                 text(lang.text(&value.text.text)),
                 text("0"),
-                text(w::range(lang, 0, max)),
+                text(w::range(lang, 0, value.max())),
                 text("—"),
             ];
             if typed {

@@ -42,9 +42,9 @@ impl FailSafeNames {
         output: &[DataItem],
     ) -> Vec<FailSafeItem> {
         let (names, tag) = match kind {
-            ModuleKind::Pzd => (&self.user_defined, "FAIL_SAFE".to_string()),
-            ModuleKind::StandardTelegram1 => (&self.telegram_1, "FAIL_SAFE_TELEGRAM_1".into()),
-            ModuleKind::StandardTelegram2 => (&self.telegram_2, "FAIL_SAFE_TELEGRAM_2".into()),
+            ModuleKind::Pzd => (&self.user_defined, "FAIL_SAFE"),
+            ModuleKind::StandardTelegram1 => (&self.telegram_1, "FAIL_SAFE_TELEGRAM_1"),
+            ModuleKind::StandardTelegram2 => (&self.telegram_2, "FAIL_SAFE_TELEGRAM_2"),
         };
         let pzd = &output[usize::from(layout.pkw_words())..];
         pzd.iter()
@@ -59,18 +59,20 @@ impl FailSafeNames {
 }
 
 /// The names `[profinet.fail_safe_values]` gives, checked: as many as each
-/// kind of module has output items (E185), a list for each standard
-/// telegram offered and none for another (E004, E002), and a settings
-/// record to carry them (E186). None when the table is absent or wrong.
+/// kind of module has output items (E185; `user_defined` as many as the
+/// longest of `pzd_lengths` as written, whose own errors are said there), a
+/// list for each standard telegram offered and none for another (E004,
+/// E002), and settings the master sets, whose record carries them (E186).
+/// None when the table is absent or wrong.
 pub fn names(
     cx: &mut Checker,
-    given: Option<&Spanned<raw::FailSafeValues>>,
+    p: &raw::Profinet,
     kinds: &[(ModuleKind, Layout)],
-    settings_record: bool,
+    master_sets_settings: bool,
 ) -> Option<FailSafeNames> {
-    let given = given?;
+    let given = p.fail_safe_values.as_ref()?;
     let values = given.get_ref();
-    if !settings_record {
+    if !master_sets_settings {
         cx.push(
             Diagnostic::error("E186", "fail-safe values without a settings record to carry them")
                 .at(given.span())
@@ -79,12 +81,12 @@ pub fn names(
         );
         return None;
     }
-    let longest = kinds
+    let longest = p
+        .pzd_lengths
+        .get_ref()
         .iter()
-        .filter(|(kind, _)| *kind == ModuleKind::Pzd)
-        .map(|(_, layout)| usize::from(layout.pzd_words))
-        .max()
-        .unwrap_or(0);
+        .map(|n| usize::from(*n.get_ref()));
+    let longest = longest.max().unwrap_or(0);
     let offered = |kind| kinds.iter().any(|(k, _)| *k == kind);
     let user_defined = list(
         cx,

@@ -27,12 +27,6 @@ pub struct RecordPlan {
     name: Text,
 }
 
-impl RecordPlan {
-    pub fn kind(&self) -> MappingKind {
-        self.kind
-    }
-}
-
 /// One record per kind of mapping the description has: PZD out, PZD in,
 /// DPV1 indexes, settings; indexes 1, 2, 3, 4 and gsdc's names unless the
 /// description says otherwise (an index it leaves out is gsdc's default,
@@ -298,9 +292,8 @@ pub fn records(
     mappings: &Mappings,
     plans: &[RecordPlan],
     (kind, layout): (ModuleKind, Layout),
-    fail_safe: Vec<FailSafeItem>,
+    mut fail_safe: Vec<FailSafeItem>,
 ) -> Vec<ParameterRecord> {
-    let mut fail_safe = Some(fail_safe);
     plans
         .iter()
         .filter_map(|plan| {
@@ -324,21 +317,23 @@ pub fn records(
                         .map(|_| format!("IDV_{}", value_tag(set))),
                 })
                 .collect();
-            let fail_safe: Vec<FailSafeValue> = match plan.kind {
-                MappingKind::Setting => fail_safe.take().unwrap_or_default(),
+            // Only the settings record (one per module) takes them.
+            let items = match plan.kind {
+                MappingKind::Setting => std::mem::take(&mut fail_safe),
                 _ => Vec::new(),
-            }
-            .into_iter()
-            .map(|item| {
-                let value = FailSafeValue {
-                    offset: end,
-                    text: item.text,
-                    double_word: item.double_word,
-                };
-                end = end.saturating_add(value.bytes());
-                value
-            })
-            .collect();
+            };
+            let fail_safe: Vec<FailSafeValue> = items
+                .into_iter()
+                .map(|item| {
+                    let value = FailSafeValue {
+                        offset: end,
+                        text: item.text,
+                        double_word: item.double_word,
+                    };
+                    end = end.saturating_add(value.bytes());
+                    value
+                })
+                .collect();
             (!refs.is_empty() || !fail_safe.is_empty()).then(|| ParameterRecord {
                 kind: plan.kind,
                 index: plan.index,
