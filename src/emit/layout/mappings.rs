@@ -89,6 +89,9 @@ pub(crate) struct Record {
     /// Each module's record ends with its own fail-safe values: only the
     /// device tables' records decode it.
     pub fail_safe: bool,
+    /// A module's record leaves out the entries set at the drive: only the
+    /// device tables' records decode it.
+    pub master_only: bool,
 }
 
 /// The value of a setting each PROFINET module fixes.
@@ -170,6 +173,7 @@ pub(super) fn group(ir: &Ir, g: &MappingGroup) -> Group {
                     .iter()
                     .any(|rec| rec.kind == g.kind && !rec.fail_safe.is_empty())
             }),
+            master_only: !g.sets.iter().all(MappingSet::master_writes),
         }),
         entry_bytes: each_entrys_bytes(g),
         two_bytes_each: two_bytes_each(g),
