@@ -454,9 +454,9 @@ pub fn judge(
 }
 
 /// Equal as the judge reads them: sets as sets, numbers as numbers, DNS
-/// names without regard to case. An
-/// empty set says what its absence says where the rule has no default
-/// (FENA-01's `ApplicationClass=""`: no application class).
+/// names without regard to case. An empty set says what its absence says
+/// where the rule has no default (FENA-01's `ApplicationClass=""`: no
+/// application class).
 fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
     match (old, new) {
         (Some(a), Some(b)) if judge == Set => {

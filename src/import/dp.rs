@@ -715,8 +715,6 @@ fn joined(mut ranges: Vec<(i128, i128)>) -> Vec<(i128, i128)> {
     out
 }
 
-/// Whether a value is among those a parameter allows (its texts may name
-/// more).
 /// A card parameter's `type = "Signed8"`, where its default and every value
 /// it allows are from 0 to 127, which is all the format says of one.
 fn signed8(f: &Field) -> Option<(&'static str, String)> {
@@ -730,6 +728,8 @@ fn signed8(f: &Field) -> Option<(&'static str, String)> {
         .then(|| ("type", quote("Signed8")))
 }
 
+/// Whether a value is among those a parameter allows (its texts may name
+/// more).
 fn allows(allowed: &Allowed, value: i128) -> bool {
     match allowed {
         Allowed::Any => true,

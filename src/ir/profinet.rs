@@ -133,7 +133,7 @@ impl Profinet {
 pub struct RecordPlan {
     pub kind: MappingKind,
     pub index: u16,
-    /// Bytes with every entry of the kind, two each.
+    /// Bytes with every entry of the kind, each of its set's type.
     pub length: u16,
     pub reading: RecordReading,
 }

@@ -757,9 +757,8 @@ fn max_user_prm_len() -> usize {
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
 /// them), then one block per group of mappings in telegram order: one
 /// parameter per entry of its set's type, numbered from 1; then a
-/// gateway's parameters, as
-/// [`gateway::place`] places them. Sets with choices get a PrmText each,
-/// numbered from 1 in the same order.
+/// gateway's parameters, as [`gateway::place`] places them. Sets with
+/// choices get a PrmText each, numbered from 1 in the same order.
 fn user_prm(
     cx: &mut Checker,
     p: &raw::Profibus,
