@@ -134,6 +134,7 @@ pub const RULES: &[Rule] = &[
     rule("E184", "device access ARs without device access"),
     rule("E185", "fail-safe values not one per output item"),
     rule("E186", "fail-safe values without a settings record"),
+    rule("E187", "an add value's DataItems wider than the add value"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -747,3 +747,23 @@ fn diagnosis_bytes_say_what_the_description_says() {
         }
     }
 }
+
+/// own_idents.toml's extended diagnosis: one row per extended error type
+/// under its channel diagnosis's, with its add value's items, and the help
+/// text's line break shown as one in both renderings (a Markdown table row
+/// is one line).
+#[test]
+fn extended_diagnosis_is_tabled_with_its_line_breaks() {
+    let ir = descriptions::load_from("tests/fixtures/valid", "own_idents.toml");
+    let html = descriptions::output_text(&ir, ArtifactKind::DatasheetHtml);
+    assert!(html.contains(
+        "<tr><td><code>0x0100</code></td><td><code>0x0001</code></td><td>PTC sensor tripped</td>\
+         <td>- Let the motor cool down.<br>- Check the motor&#39;s ventilation.</td><td>1: Unsigned32</td></tr>\n\
+         <tr><td><code>0x0100</code></td><td><code>0x0002</code></td><td>Sensor wire broken</td>\
+         <td></td><td>1: Unsigned16, 2: Integer16</td></tr>"
+    ));
+    let markdown = descriptions::output_text(&ir, ArtifactKind::DatasheetMarkdown);
+    assert!(markdown.contains(
+        "| `0x0100` | `0x0001` | PTC sensor tripped | - Let the motor cool down.<br>- Check the motor's ventilation. | 1: Unsigned32 |\n"
+    ));
+}

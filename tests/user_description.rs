@@ -456,3 +456,42 @@ fn main() {{
         .arg(dir.join("main.rs")));
     run(&mut std::process::Command::new(&binary));
 }
+
+// ---------------------------------------------------------------------------
+// Texts that break lines: a channel diagnosis's, as SEW's MOVI-C writes
+// its remedies one per line, and no other.
+
+const OWN_IDENTS: &str = include_str!("fixtures/valid/own_idents.toml");
+
+/// The line break of own_idents.toml's extended diagnosis help reaches the
+/// GSDML as `&#10;`, which a reader takes back as a line break (a literal
+/// one would be read as a blank); a tab there, and a line break in the
+/// device's name, are E135.
+#[test]
+fn only_a_diagnosis_text_breaks_lines_and_only_with_a_line_break() {
+    let (ir, diagnostics) = gsdc::load("own_idents.toml", OWN_IDENTS);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let (_, gsdml) = one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let help = "- Let the motor cool down.\n- Check the motor's ventilation.";
+    let tree = roxmltree::Document::parse(&gsdml).unwrap();
+    let read_back = tree
+        .descendants()
+        .find(|n| {
+            n.attribute("TextId") == Some("IDT_DIAG_0100_0001_HELP") && n.has_attribute("Value")
+        })
+        .and_then(|n| n.attribute("Value"));
+    assert_eq!(read_back, Some(help));
+
+    let errors = |text: &str| -> Vec<&'static str> {
+        let (_, diagnostics) = gsdc::load("own_idents.toml", text);
+        diagnostics.errors().map(|d| d.code).collect()
+    };
+    let tab = edited(OWN_IDENTS, "cool down.\\n- Check", "cool down.\\t- Check");
+    assert_eq!(errors(&tab), ["E135"]);
+    let name = edited(
+        OWN_IDENTS,
+        "en = \"X4 drive interface\"",
+        "en = \"X4 drive\\ninterface\"",
+    );
+    assert_eq!(errors(&name), ["E135"]);
+}

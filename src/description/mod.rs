@@ -618,6 +618,44 @@ pub struct ChannelDiagnosis {
     pub api: Option<Spanned<u32>>,
     pub name: Spanned<Text>,
     pub help: Option<Spanned<Text>>,
+    /// Its extended error types (`ExtChannelDiagList`).
+    #[serde(default)]
+    pub extended: Vec<Spanned<ExtendedDiagnosis>>,
+}
+
+/// `[[profinet.channel_diagnosis.extended]]`: an extended error type the
+/// card reports with its channel diagnosis, what the engineering tool
+/// shows for it, and how it shows the diagnosis's add value.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExtendedDiagnosis {
+    pub error_type: Spanned<u16>,
+    pub name: Spanned<Text>,
+    pub help: Option<Spanned<Text>>,
+    /// The `DataItem`s of its `ExtChannelAddValue`, in order.
+    #[serde(default)]
+    pub add_value: Vec<Spanned<AddValueItem>>,
+}
+
+/// One `DataItem` of an extended diagnosis's add value.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AddValueItem {
+    pub id: Spanned<u8>,
+    #[serde(rename = "type")]
+    pub data_type: Spanned<AddValueType>,
+}
+
+/// The schema's types of an add value's `DataItem`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum AddValueType {
+    Integer8,
+    Integer16,
+    Integer32,
+    Unsigned8,
+    Unsigned16,
+    Unsigned32,
+    Float32,
 }
 
 /// `[[profinet.daps]]`: a device access point after the first. What it

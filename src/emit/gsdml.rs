@@ -9,11 +9,14 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, Module, NetloadClass, ParameterRecord, Profinet, Stack,
-    TextRef, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
+    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, Module, NetloadClass, ParameterRecord,
+    Profinet, Stack, TextRef, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
+use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
+use quick_xml::name::QName;
 use quick_xml::Writer;
 
 const XSI: &str = "http://www.w3.org/2001/XMLSchema-instance";
@@ -65,6 +68,22 @@ pub fn emit(ir: &Ir, profinet: &Profinet) -> String {
     doc.finish()
 }
 
+/// An element's start with its attributes, each value escaped. A line
+/// break (a diagnosis text's) is written `&#10;`: a reader turns one
+/// written as it is into a blank (XML 1.0, 3.3.3, attribute-value
+/// normalization).
+fn element<'a>(name: &'a str, attributes: &[(&str, &str)]) -> BytesStart<'a> {
+    let mut start = BytesStart::new(name);
+    for (key, value) in attributes {
+        let escaped = quick_xml::escape::escape(*value).replace('\n', "&#10;");
+        start.push_attribute(Attribute {
+            key: QName(key.as_bytes()),
+            value: escaped.into_bytes().into(),
+        });
+    }
+    start
+}
+
 /// The XML writer and the texts referenced so far, which go into the
 /// ExternalTextList at the end.
 struct Doc {
@@ -84,15 +103,11 @@ impl Doc {
     }
 
     fn open(&mut self, name: &str, attributes: &[(&str, &str)]) {
-        self.write(Event::Start(
-            BytesStart::new(name).with_attributes(attributes.iter().copied()),
-        ));
+        self.write(Event::Start(element(name, attributes)));
     }
 
     fn leaf(&mut self, name: &str, attributes: &[(&str, &str)]) {
-        self.write(Event::Empty(
-            BytesStart::new(name).with_attributes(attributes.iter().copied()),
-        ));
+        self.write(Event::Empty(element(name, attributes)));
     }
 
     fn close(&mut self, name: &str) {
@@ -657,9 +672,41 @@ fn channel_diag_list(doc: &mut Doc, p: &Profinet) {
         if let Some(help) = &d.help {
             doc.text_ref("Help", help);
         }
+        ext_channel_diag_list(doc, &d.extended);
         doc.close(element);
     }
     doc.close("ChannelDiagList");
+}
+
+/// A channel diagnosis's extended error types, each with the DataItems of
+/// its add value.
+fn ext_channel_diag_list(doc: &mut Doc, extended: &[ExtendedDiagnosis]) {
+    if extended.is_empty() {
+        return;
+    }
+    doc.open("ExtChannelDiagList", &[]);
+    for e in extended {
+        doc.open(
+            "ExtChannelDiagItem",
+            &[("ErrorType", &e.error_type.to_string())],
+        );
+        doc.text_ref("Name", &e.name);
+        if let Some(help) = &e.help {
+            doc.text_ref("Help", help);
+        }
+        if !e.add_value.is_empty() {
+            doc.open("ExtChannelAddValue", &[]);
+            for (id, data_type) in &e.add_value {
+                doc.leaf(
+                    "DataItem",
+                    &[("Id", &id.to_string()), ("DataType", data_type.name())],
+                );
+            }
+            doc.close("ExtChannelAddValue");
+        }
+        doc.close("ExtChannelDiagItem");
+    }
+    doc.close("ExtChannelDiagList");
 }
 
 /// One ValueItem per set of choices a record refers to.

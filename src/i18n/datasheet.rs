@@ -87,6 +87,18 @@ phrases! {
         de: "Die Fehlertypen, die die Karte als Kanaldiagnose meldet, und was das Engineering-Tool zu jedem anzeigt; die Fehlertypen eines Profils (ab 0x9000) liegen in der API des Profils.",
     };
     ERROR_TYPE = { en: "Error type", zh: "错误类型", de: "Fehlertyp" };
+    EXTENDED_DIAGNOSIS = {
+        en: "PROFINET extended channel diagnosis",
+        zh: "PROFINET 扩展通道诊断",
+        de: "Erweiterte PROFINET-Kanaldiagnose",
+    };
+    EXTENDED_DIAGNOSIS_INTRO = {
+        en: "The extended error types the card reports with a channel diagnosis's error type, and the data items of the 4-byte add value it sends with each.",
+        zh: "扩展卡随通道诊断错误类型报告的扩展错误类型，以及随每种错误发送的 4 字节附加值的数据项。",
+        de: "Die erweiterten Fehlertypen, die die Karte mit dem Fehlertyp einer Kanaldiagnose meldet, und die Datenelemente des 4-Byte-Zusatzwerts, den sie mit jedem sendet.",
+    };
+    EXTENDED_ERROR_TYPE = { en: "Extended error type", zh: "扩展错误类型", de: "Erweiterter Fehlertyp" };
+    ADD_VALUE = { en: "Add value", zh: "附加值", de: "Zusatzwert" };
     API = { all: "API" };
     HELP = { en: "Help", zh: "帮助", de: "Hilfe" };
     DIAGNOSIS_BYTE_BY_BYTE = {

@@ -60,6 +60,61 @@ pub struct ChannelDiagnosis {
     pub help: Option<TextRef>,
     /// Its constant's name in the layouts.
     pub ident: Ident,
+    /// Its extended error types, in the description's order.
+    pub extended: Vec<ExtendedDiagnosis>,
+}
+
+/// An `ExtChannelDiagItem`: an extended error type of a channel diagnosis.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ExtendedDiagnosis {
+    pub error_type: u16,
+    pub name: TextRef,
+    pub help: Option<TextRef>,
+    /// The `DataItem`s of its `ExtChannelAddValue`: each Id with its type.
+    pub add_value: Vec<(u8, AddValueType)>,
+    /// Its constant's name in the layouts.
+    pub ident: Ident,
+}
+
+pub use crate::description::AddValueType;
+
+impl AddValueType {
+    /// As GSDML spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            AddValueType::Integer8 => "Integer8",
+            AddValueType::Integer16 => "Integer16",
+            AddValueType::Integer32 => "Integer32",
+            AddValueType::Unsigned8 => "Unsigned8",
+            AddValueType::Unsigned16 => "Unsigned16",
+            AddValueType::Unsigned32 => "Unsigned32",
+            AddValueType::Float32 => "Float32",
+        }
+    }
+
+    pub fn bytes(self) -> u8 {
+        match self {
+            AddValueType::Integer8 | AddValueType::Unsigned8 => 1,
+            AddValueType::Integer16 | AddValueType::Unsigned16 => 2,
+            AddValueType::Integer32 | AddValueType::Unsigned32 | AddValueType::Float32 => 4,
+        }
+    }
+
+    /// The type GSDML's name spells.
+    pub fn from_name(name: &str) -> Option<Self> {
+        [
+            AddValueType::Integer8,
+            AddValueType::Integer16,
+            AddValueType::Integer32,
+            AddValueType::Unsigned8,
+            AddValueType::Unsigned16,
+            AddValueType::Unsigned32,
+            AddValueType::Float32,
+        ]
+        .into_iter()
+        .find(|t| t.name() == name)
+    }
 }
 
 /// A GraphicItem: its ID and GraphicFile, the bitmap's name beside the

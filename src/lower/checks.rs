@@ -32,6 +32,19 @@ pub struct Checker {
     given: BTreeSet<String>,
 }
 
+/// Whether a text may break lines (with `\n`, the one line break it holds).
+#[derive(Clone, Copy)]
+enum Lines {
+    One,
+    Many,
+}
+
+impl Lines {
+    fn allows(self, c: char) -> bool {
+        matches!(self, Lines::Many) && c == '\n'
+    }
+}
+
 /// Where the defaults of several items come from: `default` for all of
 /// them, or `defaults`, one each in order.
 pub enum Defaults<'a, T> {
@@ -222,6 +235,11 @@ impl Checker {
     /// Not empty, and no character that a device file, a generated header
     /// or generated code cannot hold safely; whether it is both.
     pub fn non_empty(&mut self, s: &str, span: Range<usize>, what: &str) -> bool {
+        self.non_empty_lines(s, span, what, Lines::One)
+    }
+
+    /// [`Checker::non_empty`], with line breaks where `lines` allows them.
+    fn non_empty_lines(&mut self, s: &str, span: Range<usize>, what: &str, lines: Lines) -> bool {
         let empty = s.trim().is_empty();
         if empty {
             self.push(
@@ -231,7 +249,7 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        let Some(bad) = s.chars().find(|&c| is_unsafe(c)) else {
+        let Some(bad) = s.chars().find(|&c| is_unsafe(c) && !lines.allows(c)) else {
             return !empty;
         };
         self.push(
@@ -350,9 +368,26 @@ impl Checker {
     /// checked for the GSD when `gsd_limit` is given. Other languages come
     /// out in the order of their codes.
     pub fn text(&mut self, t: &Spanned<Text>, gsd_limit: Option<usize>, what: &str) -> ir::Text {
+        self.text_of_lines(t, gsd_limit, what, Lines::One)
+    }
+
+    /// A text of one or more lines, which no GSD holds: a GSDML file's
+    /// texts may break lines (SEW's MOVI-C's diagnosis help texts list the
+    /// remedies one per line), and the datasheet shows the breaks.
+    pub fn text_of_lines_allowed(&mut self, t: &Spanned<Text>, what: &str) -> ir::Text {
+        self.text_of_lines(t, None, what, Lines::Many)
+    }
+
+    fn text_of_lines(
+        &mut self,
+        t: &Spanned<Text>,
+        gsd_limit: Option<usize>,
+        what: &str,
+        lines: Lines,
+    ) -> ir::Text {
         let text = t.get_ref();
         let en_span = text.en_span(&t.span());
-        let en_ok = self.non_empty(text.en.get_ref(), en_span.clone(), what);
+        let en_ok = self.non_empty_lines(text.en.get_ref(), en_span.clone(), what, lines);
         match (&text.gsd, gsd_limit) {
             (Some(gsd), Some(limit)) => self.check_gsd_text(gsd.get_ref(), gsd.span(), limit, what),
             // The English, refused above, is not refused again.
@@ -362,12 +397,12 @@ impl Checker {
             // A short form that only a rendered name puts into a GSD (its
             // caller checks it there), or nothing does: a text all the same.
             (Some(gsd), None) => {
-                self.non_empty(gsd.get_ref(), gsd.span(), what);
+                self.non_empty_lines(gsd.get_ref(), gsd.span(), what, lines);
             }
             (None, _) => {}
         }
         for (code, other) in &text.others {
-            self.non_empty(other.get_ref(), other.span(), what);
+            self.non_empty_lines(other.get_ref(), other.span(), what, lines);
             self.languages
                 .entry(code.get_ref().clone())
                 .or_insert_with(|| code.span());
@@ -579,6 +614,12 @@ pub fn is_gsd_char(c: char, latin1: bool) -> bool {
 /// again.
 pub fn is_clean(s: &str) -> bool {
     !s.trim().is_empty() && !s.chars().any(is_unsafe)
+}
+
+/// [`is_clean`], line breaks allowed: what
+/// [`Checker::text_of_lines_allowed`] takes.
+pub fn is_clean_lines(s: &str) -> bool {
+    !s.trim().is_empty() && !s.chars().any(|c| is_unsafe(c) && !Lines::Many.allows(c))
 }
 
 /// A character as a message shows it: itself in backticks when it prints,

@@ -23,15 +23,15 @@ use crate::description::{self as raw, Address, Description};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{self, AddressScheme, Fingerprint, Ir, Numbering};
 /// For `gsdc import`, which recognises PPO types by their config bytes.
-pub(crate) use checks::is_clean as is_clean_text;
+pub(crate) use checks::is_clean_lines as is_clean_text_of_lines;
 use checks::Checker;
 pub(crate) use gateway::module_name as gateway_module_name;
 pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
 pub(crate) use profinet::{
-    info_prefix, io_length, module_description, pkw_words, CHANNEL_ERROR_TYPES,
-    DEFAULT_VERSION as DEFAULT_GSDML_VERSION, MAX_IO_LENGTH, MAX_SLOT, PROFILE_ERROR_TYPES,
-    STANDARD_TELEGRAM_2_WORDS, SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
+    info_prefix, io_length, module_description, pkw_words, ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES,
+    DEFAULT_VERSION as DEFAULT_GSDML_VERSION, EXTENDED_ERROR_TYPES, MAX_IO_LENGTH, MAX_SLOT,
+    PROFILE_ERROR_TYPES, STANDARD_TELEGRAM_2_WORDS, SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,
 };
 use toml::Spanned;
 

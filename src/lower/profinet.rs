@@ -24,7 +24,9 @@ mod records;
 mod stack;
 pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
 
-pub(crate) use diagnosis::{CHANNEL_ERROR_TYPES, PROFILE_ERROR_TYPES};
+pub(crate) use diagnosis::{
+    ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES, EXTENDED_ERROR_TYPES, PROFILE_ERROR_TYPES,
+};
 pub(crate) use io::{
     description as module_description, info_prefix, io_length, pkw_words, STANDARD_TELEGRAM_2_WORDS,
 };

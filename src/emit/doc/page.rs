@@ -270,7 +270,8 @@ fn html_table(out: &mut String, table: &Table, label: &str) {
 fn html_cell(cell: &Cell) -> String {
     cell.iter()
         .map(|run| match run {
-            Run::Text(t) => escape(t),
+            // A diagnosis text may break lines: the cell shows the breaks.
+            Run::Text(t) => escape(t).replace('\n', "<br>"),
             Run::Code(t) => format!("<code>{}</code>", escape(t)),
             Run::Mark(t) => format!("<strong class=\"mark\">{}</strong>", escape(t)),
         })
@@ -364,7 +365,11 @@ fn md_text(text: &str) -> String {
         if escape {
             out.push('\\');
         }
-        out.push(if c == '\n' { ' ' } else { c });
+        match c {
+            // A table row is one line: a diagnosis text's break is HTML's.
+            '\n' => out.push_str("<br>"),
+            c => out.push(c),
+        }
     }
     out
 }

@@ -9,7 +9,7 @@ use crate::i18n::sheet as w;
 use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmType, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
-use crate::ir::profinet::ParameterRecord;
+use crate::ir::profinet::{ChannelDiagnosis, ParameterRecord};
 use crate::ir::{Allowed, EntryKey, EntryType, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
@@ -521,6 +521,46 @@ pub(crate) fn channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) 
             lang.t(w::API),
             lang.t(w::NAME),
             lang.t(w::HELP),
+        ],
+        rows,
+    );
+    extended_diagnosis_table(doc, &p.channel_diagnosis, lang);
+}
+
+/// Each extended error type under its channel diagnosis's, with the data
+/// items of its add value (`1: Unsigned32`).
+fn extended_diagnosis_table(doc: &mut Builder, all: &[ChannelDiagnosis], lang: Lang) {
+    let rows: Vec<Vec<Cell>> = all
+        .iter()
+        .flat_map(|d| d.extended.iter().map(move |e| (d, e)))
+        .map(|(d, e)| {
+            let add_value = e
+                .add_value
+                .iter()
+                .map(|(id, data_type)| format!("{id}: {}", data_type.name()))
+                .collect::<Vec<_>>()
+                .join(lang.t(w::LIST_SEPARATOR));
+            vec![
+                code(format!("0x{:04X}", d.error_type)),
+                code(format!("0x{:04X}", e.error_type)),
+                text(lang.text(&e.name.text)),
+                text(e.help.as_ref().map_or("", |h| lang.text(&h.text))),
+                text(add_value),
+            ]
+        })
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    doc.para(text(lang.t(w::EXTENDED_DIAGNOSIS_INTRO)));
+    doc.table(
+        lang.t(w::EXTENDED_DIAGNOSIS),
+        &[
+            lang.t(w::ERROR_TYPE),
+            lang.t(w::EXTENDED_ERROR_TYPE),
+            lang.t(w::NAME),
+            lang.t(w::HELP),
+            lang.t(w::ADD_VALUE),
         ],
         rows,
     );

@@ -768,6 +768,7 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
         }
     }
     consts.extend(channel_diagnosis(p));
+    consts.extend(p.channel_diagnosis.iter().filter_map(extended_diagnosis));
     consts
 }
 
@@ -788,6 +789,28 @@ fn channel_diagnosis(p: &IrProfinet) -> Option<Consts> {
             "The error types the card reports as channel diagnosis, as the GSDML's \
              ChannelDiagList names them; a profile's (0x9000 and up) in the profile's API.",
         ),
+        items,
+    })
+}
+
+/// A channel diagnosis's extended error types, which the card reports
+/// with its error type.
+fn extended_diagnosis(d: &profinet::ChannelDiagnosis) -> Option<Consts> {
+    let items: Vec<Const> = d
+        .extended
+        .iter()
+        .map(|e| Const {
+            name: e.ident.clone(),
+            ty: Ty::U16,
+            value: Val::hex_u16(e.error_type),
+        })
+        .collect();
+    (!items.is_empty()).then(|| Consts {
+        doc: Doc::plain(format!(
+            "The extended error types of channel diagnosis 0x{:04X} (\"{}\"), as its \
+             ExtChannelDiagList names them.",
+            d.error_type, d.name.text.en
+        )),
         items,
     })
 }

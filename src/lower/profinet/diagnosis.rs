@@ -1,12 +1,13 @@
 //! `[[profinet.channel_diagnosis]]`: the error types the card reports as
-//! channel diagnosis, with the texts the engineering tool shows for them.
-//! The ranges are the PI schema's: a `ChannelDiagItem`'s 15 to 32767
-//! (0x0100 up the vendor's own), a profile's `ProfileChannelDiagItem`'s
-//! 0x9000 to 0x9FFF in its API.
+//! channel diagnosis, with the texts the engineering tool shows for them,
+//! and their extended error types. The ranges are the PI schema's: a
+//! `ChannelDiagItem`'s 15 to 32767 (0x0100 up the vendor's own), a
+//! profile's `ProfileChannelDiagItem`'s 0x9000 to 0x9FFF in its API, an
+//! `ExtChannelDiagItem`'s 1 to 32767.
 
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{ChannelDiagnosis, TextRef};
+use crate::ir::profinet::{AddValueType, ChannelDiagnosis, ExtendedDiagnosis, TextRef};
 use crate::ir::{Ident, Scope};
 use crate::lower::checks::Checker;
 use std::collections::BTreeSet;
@@ -15,6 +16,13 @@ use toml::Spanned;
 
 pub(crate) const CHANNEL_ERROR_TYPES: RangeInclusive<u16> = 15..=32767;
 pub(crate) const PROFILE_ERROR_TYPES: RangeInclusive<u16> = 0x9000..=0x9FFF;
+pub(crate) const EXTENDED_ERROR_TYPES: RangeInclusive<u16> = 1..=32767;
+
+/// The bytes of a diagnosis's ExtChannelAddValue on the wire (IEC 61158-6-10's
+/// ExtChannelDiagnosis: ChannelNumber, ChannelProperties, ChannelErrorType,
+/// ExtChannelErrorType, then the Unsigned32 ExtChannelAddValue), which its
+/// `DataItem`s describe.
+pub(crate) const ADD_VALUE_BYTES: u8 = 4;
 
 /// Each entry; E101 for an error type outside its element's range or an
 /// API of 0, E105 for one given twice (in its API).
@@ -55,8 +63,11 @@ fn one(
         );
         return None;
     }
-    let name = cx.text(&entry.name, None, &at("name"));
-    let help = entry.help.as_ref().map(|h| cx.text(h, None, &at("help")));
+    let name = cx.text_of_lines_allowed(&entry.name, &at("name"));
+    let help = entry
+        .help
+        .as_ref()
+        .map(|h| cx.text_of_lines_allowed(h, &at("help")));
     let id = match api {
         Some(api) => format!("IDT_DIAG_{api:X}_{error_type:04X}"),
         None => format!("IDT_DIAG_{error_type:04X}"),
@@ -65,13 +76,111 @@ fn one(
         Ident::from_text(&format!("channel diagnosis {}", name.en), "diagnosis"),
         format!("{error_type:x}"),
     );
-    Some(ChannelDiagnosis {
+    let mut extended = Vec::new();
+    let mut seen_extended = BTreeSet::new();
+    for (at_extended, given) in entry.extended.iter().enumerate() {
+        let parent = Parent {
+            error_type,
+            id: &id,
+            at: &at(&format!("extended[{at_extended}]")),
+        };
+        let lowered = extended_one(cx, &parent, given.get_ref(), &mut seen_extended, names);
+        extended.extend(lowered);
+    }
+    (extended.len() == entry.extended.len()).then(|| ChannelDiagnosis {
         error_type,
         api,
         help: help.map(|h| TextRef::new(format!("{id}_HELP"), h)),
         name: TextRef::new(id, name),
         ident,
+        extended,
     })
+}
+
+/// What an extended error type takes from its channel diagnosis.
+struct Parent<'a> {
+    error_type: u16,
+    /// The channel diagnosis's TextId, which its extended ones extend.
+    id: &'a str,
+    /// Where the extended one is in the description.
+    at: &'a str,
+}
+
+/// One extended error type: E101 out of the schema's range, E105 given
+/// twice in its channel diagnosis.
+fn extended_one(
+    cx: &mut Checker,
+    parent: &Parent,
+    given: &raw::ExtendedDiagnosis,
+    seen: &mut BTreeSet<u16>,
+    names: &mut Scope,
+) -> Option<ExtendedDiagnosis> {
+    let at = |key: &str| format!("{}.{key}", parent.at);
+    let (min, max) = (*EXTENDED_ERROR_TYPES.start(), *EXTENDED_ERROR_TYPES.end());
+    let error_type: u16 =
+        cx.spanned_in_range(&given.error_type, min.into(), max.into(), &at("error_type"))?;
+    if !seen.insert(error_type) {
+        cx.duplicate(
+            format!(
+                "extended error type 0x{error_type:04X} of channel diagnosis 0x{:04X}",
+                parent.error_type
+            ),
+            given.error_type.span(),
+        );
+        return None;
+    }
+    let name = cx.text_of_lines_allowed(&given.name, &at("name"));
+    let help = given
+        .help
+        .as_ref()
+        .map(|h| cx.text_of_lines_allowed(h, &at("help")));
+    let add_value = add_value(cx, &given.add_value)?;
+    let id = format!("{}_{error_type:04X}", parent.id);
+    let ident = names.unique(
+        Ident::from_text(&format!("extended diagnosis {}", name.en), "diagnosis"),
+        format!("{:x}_{error_type:x}", parent.error_type),
+    );
+    Some(ExtendedDiagnosis {
+        error_type,
+        help: help.map(|h| TextRef::new(format!("{id}_HELP"), h)),
+        name: TextRef::new(id, name),
+        add_value,
+        ident,
+    })
+}
+
+/// The add value's `DataItem`s: each Id once (E105), and together no wider
+/// than the add value they describe (E187).
+fn add_value(
+    cx: &mut Checker,
+    given: &[Spanned<raw::AddValueItem>],
+) -> Option<Vec<(u8, AddValueType)>> {
+    let mut items: Vec<(u8, AddValueType)> = Vec::new();
+    for item in given {
+        let item = item.get_ref();
+        let id = *item.id.get_ref();
+        if items.iter().any(|&(seen, _)| seen == id) {
+            cx.duplicate(format!("add value DataItem Id {id}"), item.id.span());
+            return None;
+        }
+        items.push((id, *item.data_type.get_ref()));
+    }
+    let bytes: u32 = items.iter().map(|(_, t)| u32::from(t.bytes())).sum();
+    if bytes > u32::from(ADD_VALUE_BYTES) {
+        // From the first item to the last: more than one, to be too wide.
+        let span = given[0].span().start..given[given.len() - 1].span().end;
+        cx.push(
+            Diagnostic::error(
+                "E187",
+                format!("the add value's DataItems take {bytes} bytes, more than the add value's {ADD_VALUE_BYTES}"),
+            )
+            .at(span)
+            .label("too wide")
+            .help("a diagnosis carries its ExtChannelAddValue in an Unsigned32: describe it in DataItems of 4 bytes together, at most"),
+        );
+        return None;
+    }
+    Some(items)
 }
 
 /// The error type, in its element's range (E101, in hex as GSDML files'
