@@ -4,6 +4,7 @@
 use crate::description::Description;
 use crate::diag::InputLimit;
 use crate::diag::{Diagnostic, Diagnostics};
+use serde::Deserialize;
 
 /// The largest description gsdc reads (E006). Real ones are a few
 /// kilobytes; the limit keeps a mistaken or hostile file from costing
@@ -34,7 +35,15 @@ pub fn parse(text: &str) -> Result<Description, Diagnostics> {
     INPUT_LIMIT
         .check(text.len())
         .map_err(|d| Diagnostics(vec![d]))?;
-    toml::from_str::<Description>(text).map_err(|error| Diagnostics(vec![diagnose(text, &error)]))
+    let fail = |error: toml::de::Error| Diagnostics(vec![diagnose(text, &error)]);
+    let root = toml::de::DeTable::parse(text).map_err(fail)?;
+    // `[choices]` paths resolve in the tree with spans, which the
+    // deserializer then consumes: the text is parsed once for both.
+    let choice_targets = crate::description::choices::resolve_targets(root.get_ref(), text);
+    let mut description =
+        Description::deserialize(toml::de::Deserializer::from(root)).map_err(fail)?;
+    description.choice_targets = choice_targets;
+    Ok(description)
 }
 
 fn diagnose(text: &str, error: &toml::de::Error) -> Diagnostic {

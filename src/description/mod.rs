@@ -4,9 +4,11 @@
 //! diagnostic may point at is `Spanned`. No `flatten` or untagged enums here:
 //! they lose spans. Lowering ([`crate::lower`]) turns this into the IR.
 
+pub mod choices;
 pub mod dp;
 pub mod gateway;
 mod values;
+pub use values::digits;
 
 use crate::gsd::Baud;
 use serde::Deserialize;
@@ -24,6 +26,9 @@ pub struct Description {
     /// choice: key path (`profibus.min_slave_interval`) to the reason.
     #[serde(default)]
     pub choices: BTreeMap<Spanned<String>, Spanned<String>>,
+    /// Where each of `choices` leads: found by `load::parse`, not written.
+    #[serde(skip)]
+    pub choice_targets: choices::ChoiceTargets,
     pub device: Device,
     pub function_codes: Option<FunctionCodes>,
     /// Required, except in a gateway's description, which has none.

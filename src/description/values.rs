@@ -239,3 +239,13 @@ impl Record {
         }
     }
 }
+
+/// `text` as a number written in `radix`, when it is digits only and fits
+/// 32 bits. `str::parse` and `from_str_radix` also take a leading `+`, which
+/// a description's number never has (`F+0-+12`, `slave_family = "+1"`).
+pub fn digits(text: &str, radix: u32) -> Option<u32> {
+    if text.is_empty() || !(2..=36).contains(&radix) || !text.chars().all(|c| c.is_digit(radix)) {
+        return None;
+    }
+    u32::from_str_radix(text, radix).ok()
+}

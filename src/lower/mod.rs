@@ -123,7 +123,7 @@ pub fn lower(
         .map_or_else(Vec::new, |m| manual_languages(&mut cx, m));
     let given = cx.take_given();
     let mut decisions = cx.take_decisions();
-    decisions.extend(choices::lower(&mut cx, &desc.choices, text));
+    decisions.extend(choices::lower(&mut cx, &desc.choices, &desc.choice_targets));
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
     cx.languages_without_words();
     let languages = cx.languages();

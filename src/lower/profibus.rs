@@ -590,7 +590,7 @@ fn slave_family(cx: &mut Checker, family: &Spanned<String>) -> String {
     let mut parts = text.split('@');
     let main_ok = parts
         .next()
-        .and_then(|m| crate::ir::numbering::digits(m, 10))
+        .and_then(|m| crate::description::digits(m, 10))
         .is_some_and(|m| m <= u32::from(MAX_MAIN_FAMILY));
     let subs_ok = parts.all(|s| {
         !s.is_empty()

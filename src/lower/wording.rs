@@ -71,7 +71,9 @@ const MIN_WORDS: usize = 6;
 /// Whether gsdc wrote `text` around a text the description gave (a
 /// module's info text, a bit's name with its values).
 fn has_given_words(given: &BTreeSet<String>, text: &Text) -> bool {
+    // The length first: it rules out most given texts (a large file's
+    // hundreds of diagnosis texts, longer than gsdc's) without counting.
     given.iter().any(|g| {
-        g.chars().count() >= MIN_WORDS && g.len() < text.en.len() && text.en.contains(g.as_str())
+        g.len() < text.en.len() && g.chars().count() >= MIN_WORDS && text.en.contains(g.as_str())
     })
 }
