@@ -105,18 +105,28 @@ impl TomlOut {
 pub(super) fn quote(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 2);
     out.push('"');
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\t' => out.push_str("\\t"),
-            c if c.is_control() => {
+    // The runs between escapes are copied whole: a large file has a
+    // megabyte of texts, most of them without any.
+    let mut run = 0;
+    for (at, c) in text.char_indices() {
+        let short = match c {
+            '"' => Some("\\\""),
+            '\\' => Some("\\\\"),
+            '\n' => Some("\\n"),
+            '\t' => Some("\\t"),
+            c if c.is_control() => None,
+            _ => continue,
+        };
+        out.push_str(&text[run..at]);
+        match short {
+            Some(escape) => out.push_str(escape),
+            None => {
                 let _ = write!(out, "\\u{:04X}", u32::from(c));
             }
-            c => out.push(c),
         }
+        run = at + c.len_utf8();
     }
+    out.push_str(&text[run..]);
     out.push('"');
     out
 }
@@ -144,6 +154,7 @@ mod tests {
             "back\\slash",
             "tab\there",
             "bell\u{7}",
+            "– two\nlines, ± \u{85}C1 and \"end\"\n",
         ] {
             let doc = format!("k = {}", quote(text));
             let table: toml::Table = doc.parse().unwrap();

@@ -9,7 +9,7 @@
 use super::{attribute, text};
 use crate::device::pn::{DiagItem, PnDevice};
 use crate::device::Text;
-use crate::import::toml_out::TomlOut;
+use crate::import::toml_out::{list, TomlOut};
 use crate::import::Notes;
 use crate::ir::profinet::AddValueType;
 use crate::lower::{
@@ -91,12 +91,11 @@ impl Extended<'_> {
             out.key("help", text(help));
         }
         if !self.add_value.is_empty() {
-            let items: Vec<String> = self
+            let items = self
                 .add_value
                 .iter()
-                .map(|(id, t)| format!("{{ id = {id}, type = \"{}\" }}", t.name()))
-                .collect();
-            out.key("add_value", format!("[{}]", items.join(", ")));
+                .map(|(id, t)| format!("{{ id = {id}, type = \"{}\" }}", t.name()));
+            out.key("add_value", list(items));
         }
     }
 }
