@@ -93,6 +93,7 @@ impl AddValueType {
         }
     }
 
+    /// Its width in the add value.
     pub fn bytes(self) -> u8 {
         match self {
             AddValueType::Integer8 | AddValueType::Unsigned8 => 1,

@@ -775,44 +775,38 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
 /// The error types the card reports as channel diagnosis, one constant
 /// each, named after its text.
 fn channel_diagnosis(p: &IrProfinet) -> Option<Consts> {
-    let items: Vec<Const> = p
-        .channel_diagnosis
-        .iter()
-        .map(|d| Const {
-            name: d.ident.clone(),
-            ty: Ty::U16,
-            value: Val::hex_u16(d.error_type),
-        })
-        .collect();
-    (!items.is_empty()).then(|| Consts {
-        doc: Doc::plain(
+    error_types(
+        Doc::plain(
             "The error types the card reports as channel diagnosis, as the GSDML's \
              ChannelDiagList names them; a profile's (0x9000 and up) in the profile's API.",
         ),
-        items,
-    })
+        p.channel_diagnosis.iter().map(|d| (&d.ident, d.error_type)),
+    )
 }
 
 /// A channel diagnosis's extended error types, which the card reports
 /// with its error type.
 fn extended_diagnosis(d: &profinet::ChannelDiagnosis) -> Option<Consts> {
-    let items: Vec<Const> = d
-        .extended
-        .iter()
-        .map(|e| Const {
-            name: e.ident.clone(),
-            ty: Ty::U16,
-            value: Val::hex_u16(e.error_type),
-        })
-        .collect();
-    (!items.is_empty()).then(|| Consts {
-        doc: Doc::plain(format!(
+    error_types(
+        Doc::plain(format!(
             "The extended error types of channel diagnosis 0x{:04X} (\"{}\"), as its \
              ExtChannelDiagList names them.",
             d.error_type, d.name.text.en
         )),
-        items,
-    })
+        d.extended.iter().map(|e| (&e.ident, e.error_type)),
+    )
+}
+
+/// One constant per error type under `doc`; none without error types.
+fn error_types<'a>(doc: Doc, named: impl Iterator<Item = (&'a Ident, u16)>) -> Option<Consts> {
+    let items: Vec<Const> = named
+        .map(|(name, error_type)| Const {
+            name: name.clone(),
+            ty: Ty::U16,
+            value: Val::hex_u16(error_type),
+        })
+        .collect();
+    (!items.is_empty()).then_some(Consts { doc, items })
 }
 
 #[cfg(test)]

@@ -25,16 +25,24 @@ const ADD_VALUE_TYPES: &str = "ExtChannelAddValue/DataItem@DataType";
 pub(super) fn entries<'a>(device: &'a PnDevice, notes: &mut Notes) -> Vec<Entry<'a>> {
     let mut said: Vec<Entry> = Vec::new();
     for item in &device.diagnosis {
-        let entry = entry(item, notes).and_then(|e| match said.iter().any(|s| s.key() == e.key()) {
+        // Before the item's texts, whose notes would speak of an item not
+        // imported.
+        let again = said.iter().any(|s| s.key() == (api(item), item.error_type));
+        let entry = match again {
             true => Err("its error type is another item's (in its API), which the description's channel diagnosis gives once"),
-            false => Ok(e),
-        });
+            false => entry(item, notes),
+        };
         match entry {
             Ok(entry) => said.push(entry),
             Err(why) => notes.unsaid(&subject(item), &item.place, why),
         }
     }
     said
+}
+
+/// Its `API`, when it is one (1 and up).
+fn api(item: &DiagItem) -> Option<u32> {
+    attribute(&item.attributes, "API").and_then(|a| a.parse::<u32>().ok().filter(|&api| api >= 1))
 }
 
 /// A diagnosis item as a finding names it: `ChannelDiagItem 4097`.
@@ -142,8 +150,7 @@ fn entry<'a>(item: &'a DiagItem, notes: &mut Notes) -> Result<Entry<'a>, &'stati
             "the description's channel diagnosis is ChannelDiagItems and ProfileChannelDiagItems",
         ),
     };
-    let api = attribute(&item.attributes, "API")
-        .and_then(|a| a.parse::<u32>().ok().filter(|&api| api >= 1));
+    let api = api(item);
     let others = item.attributes.iter().any(|a| &*a.name != "API");
     if others || profile != api.is_some() {
         return Err("the description's channel diagnosis has an error type, a profile's API, a name and a help text, and no other attribute");
@@ -158,12 +165,10 @@ fn entry<'a>(item: &'a DiagItem, notes: &mut Notes) -> Result<Entry<'a>, &'stati
     let (name, help) = texts(item, notes)?;
     let mut extended: Vec<Extended> = Vec::new();
     for e in &item.extended {
-        let said = extended_entry(e, notes).and_then(|said| {
-            match extended.iter().any(|s| s.item.error_type == e.error_type) {
-                true => Err("its error type is another extended item's of its channel diagnosis"),
-                false => Ok(said),
-            }
-        });
+        let said = match extended.iter().any(|s| s.item.error_type == e.error_type) {
+            true => Err("its error type is another extended item's of its channel diagnosis"),
+            false => extended_entry(e, notes),
+        };
         match said {
             Ok(said) => extended.push(said),
             Err(why) => notes.unsaid(&format!("{} {}", subject(item), subject(e)), &e.place, why),

@@ -63,17 +63,13 @@ fn one(
         );
         return None;
     }
-    let name = cx.text_of_lines_allowed(&entry.name, &at("name"));
-    let help = entry
-        .help
-        .as_ref()
-        .map(|h| cx.text_of_lines_allowed(h, &at("help")));
     let id = match api {
         Some(api) => format!("IDT_DIAG_{api:X}_{error_type:04X}"),
         None => format!("IDT_DIAG_{error_type:04X}"),
     };
+    let (name, help) = name_and_help(cx, (&entry.name, entry.help.as_ref()), &id, at);
     let ident = names.unique(
-        Ident::from_text(&format!("channel diagnosis {}", name.en), "diagnosis"),
+        Ident::from_text(&format!("channel diagnosis {}", name.text.en), "diagnosis"),
         format!("{error_type:x}"),
     );
     let mut extended = Vec::new();
@@ -87,14 +83,30 @@ fn one(
         let lowered = extended_one(cx, &parent, given.get_ref(), &mut seen_extended, names);
         extended.extend(lowered);
     }
-    (extended.len() == entry.extended.len()).then(|| ChannelDiagnosis {
+    (extended.len() == entry.extended.len()).then_some(ChannelDiagnosis {
         error_type,
         api,
-        help: help.map(|h| TextRef::new(format!("{id}_HELP"), h)),
-        name: TextRef::new(id, name),
+        name,
+        help,
         ident,
         extended,
     })
+}
+
+/// A diagnosis's name and help, texts that may break lines, with their
+/// TextIds: `id`, and `id` with `_HELP`.
+fn name_and_help(
+    cx: &mut Checker,
+    (name, help): (&Spanned<raw::Text>, Option<&Spanned<raw::Text>>),
+    id: &str,
+    at: impl Fn(&str) -> String,
+) -> (TextRef, Option<TextRef>) {
+    let name = cx.text_of_lines_allowed(name, &at("name"));
+    let help = help.map(|h| cx.text_of_lines_allowed(h, &at("help")));
+    (
+        TextRef::new(id.to_string(), name),
+        help.map(|h| TextRef::new(format!("{id}_HELP"), h)),
+    )
 }
 
 /// What an extended error type takes from its channel diagnosis.
@@ -129,21 +141,17 @@ fn extended_one(
         );
         return None;
     }
-    let name = cx.text_of_lines_allowed(&given.name, &at("name"));
-    let help = given
-        .help
-        .as_ref()
-        .map(|h| cx.text_of_lines_allowed(h, &at("help")));
-    let add_value = add_value(cx, &given.add_value)?;
     let id = format!("{}_{error_type:04X}", parent.id);
+    let (name, help) = name_and_help(cx, (&given.name, given.help.as_ref()), &id, at);
+    let add_value = add_value(cx, &given.add_value)?;
     let ident = names.unique(
-        Ident::from_text(&format!("extended diagnosis {}", name.en), "diagnosis"),
+        Ident::from_text(&format!("extended diagnosis {}", name.text.en), "diagnosis"),
         format!("{:x}_{error_type:x}", parent.error_type),
     );
     Some(ExtendedDiagnosis {
         error_type,
-        help: help.map(|h| TextRef::new(format!("{id}_HELP"), h)),
-        name: TextRef::new(id, name),
+        name,
+        help,
         add_value,
         ident,
     })
