@@ -85,21 +85,7 @@ fn datasheets_render_in_chromium_as_a_reader_sees_them() {
     for (name, expected) in EXPECTED {
         let ir = descriptions::load(name);
         let html = write_datasheet(&ir, &dir);
-        let session = browser.new_page();
-        for domain in ["Page.enable", "Runtime.enable", "Log.enable"] {
-            browser.call(Some(&session), domain, json!({}));
-        }
-        browser.call(
-            Some(&session),
-            "Emulation.setDeviceMetricsOverride",
-            json!({ "width": WIDTH, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": false }),
-        );
-        browser.call(
-            Some(&session),
-            "Page.navigate",
-            json!({ "url": file_url(&html) }),
-        );
-        browser.wait_for("Page.loadEventFired");
+        let session = open(&mut browser, &html);
 
         let page = browser.eval(&session, PAGE);
         assert_eq!(
@@ -149,6 +135,53 @@ fn datasheets_render_in_chromium_as_a_reader_sees_them() {
         assert!(errors.is_empty(), "{name}: console errors {errors:#?}");
         browser.events.clear();
     }
+}
+
+/// A new page at the usual size with `html` loaded.
+fn open(browser: &mut Browser, html: &Path) -> String {
+    let session = browser.new_page();
+    for domain in ["Page.enable", "Runtime.enable", "Log.enable"] {
+        browser.call(Some(&session), domain, json!({}));
+    }
+    browser.call(
+        Some(&session),
+        "Emulation.setDeviceMetricsOverride",
+        json!({ "width": WIDTH, "height": HEIGHT, "deviceScaleFactor": 1, "mobile": false }),
+    );
+    browser.call(
+        Some(&session),
+        "Page.navigate",
+        json!({ "url": file_url(html) }),
+    );
+    browser.wait_for("Page.loadEventFired");
+    session
+}
+
+/// own_idents.toml's extended diagnosis help, two lines in the
+/// description, is shown on two lines: the cell's rendered text breaks
+/// where the help does, and the cell is as tall as two of its lines.
+#[test]
+fn a_diagnosis_help_of_two_lines_is_shown_on_two() {
+    let dir = support::scratch("datasheet-lines");
+    let mut browser = Browser::start("datasheet-lines");
+    let ir = descriptions::load_from("tests/fixtures/valid", "own_idents.toml");
+    let session = open(&mut browser, &write_datasheet(&ir, &dir));
+    let cell = browser.eval(
+        &session,
+        r#"(() => {
+            const td = [...document.querySelectorAll('main.lang-en td')]
+                .find(td => td.textContent.startsWith('- Let the motor'));
+            const line = parseFloat(getComputedStyle(td).lineHeight);
+            const style = getComputedStyle(td);
+            const inner = td.clientHeight - parseFloat(style.paddingTop) - parseFloat(style.paddingBottom);
+            return { text: td.innerText, lines: Math.round(inner / line) };
+        })()"#,
+    );
+    assert_eq!(
+        cell["text"],
+        json!("- Let the motor cool down.\n- Check the motor's ventilation.")
+    );
+    assert_eq!(cell["lines"], json!(2), "{cell}");
 }
 
 fn write_datasheet(ir: &gsdc::Ir, dir: &Path) -> PathBuf {
