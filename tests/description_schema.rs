@@ -177,6 +177,9 @@ fn every_table_of_the_schema_has_the_keys_the_loader_takes() {
     }
 }
 
+/// `[profinet.irt]`'s required keys.
+const IRT: &str = "max_bridge_delay = 5500\nmax_number_ir_frame_data = 256\nsend_clock = [32]\nreduction_ratio = [1]\nport_tx_delay = 92\nport_rx_delay = 340";
+
 #[test]
 fn every_enumeration_of_the_schema_has_the_loaders_names() {
     let root = schema();
@@ -196,6 +199,12 @@ fn every_enumeration_of_the_schema_has_the_loaders_names() {
                 if path.starts_with(&["profinet".into(), "daps".into(), "[]".into()]) {
                     let dap: toml::Table = "name = \"probe\"\nident = 0x99".parse().unwrap();
                     *place(&mut description, &path[..2]) = Toml::Array(vec![Toml::Table(dap)]);
+                }
+                // The RT_CLASS_3 table has its required keys, and makes the
+                // device one of class C (E151 with md810's class B).
+                if path.starts_with(&["profinet".into(), "irt".into()]) {
+                    *place(&mut description, &path[..2]) = Toml::Table(IRT.parse().unwrap());
+                    as_table(place(&mut description, &path[..1])).remove("conformance_class");
                 }
                 *place(&mut description, &path[..path.len() - 1]) =
                     Toml::Array(vec![Toml::String(name.into())]);

@@ -1266,8 +1266,8 @@ fn a_later_daps_info_is_judged_against_what_it_would_inherit() {
     );
 }
 
-/// A value the import writes otherwise than the file says (a GSDML version,
-/// a conformance class or a name of station gsdc does not write) is a
+/// A value the import writes otherwise than the file says (a GSDML version
+/// or a name of station gsdc does not write) is a
 /// warning, and marked under `[choices]` with why: the build lists it among
 /// the description's own choices (W103), which a shipping build refuses
 /// until a maintainer has confirmed it.
@@ -1282,11 +1282,6 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
             "profinet.gsdml_version",
             "\"2.32\"",
             "GSDML V2.34 is not imported",
-        ),
-        (
-            "profinet.conformance_class",
-            "\"B\"",
-            "conformance class C is imported as B",
         ),
         (
             "profinet.dns_name",
@@ -1305,6 +1300,76 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
             .iter()
             .any(|m| m.starts_with(why)));
     }
+}
+
+/// MOVI-C's isochronous real time and isochronous mode import with the
+/// file's values (its lines 82 to 92: the interface's RT_Class3Properties,
+/// SynchronisationMode, RT_Class3TimingProperties and the ports' delays;
+/// line 456 and its 17 siblings: each module's IsochroneMode), as class C,
+/// and no change of theirs is left in the round trip.
+#[test]
+fn isochronous_real_time_and_mode_import_with_the_files_values() {
+    let imported = corpus_import(MOVI_C);
+    assert_says(
+        another_device(&imported),
+        &[
+            "conformance_class = \"C\"",
+            "[profinet.irt]\nmax_bridge_delay = 5500\nmax_number_ir_frame_data = 256\nforwarding_mode = [\"Relative\"]\nstartup_mode = [\"Advanced\", \"Legacy\"]\nsend_clock = [32, 64, 128]\nreduction_ratio = [1, 2, 4, 8, 16]\npreferred_send_clock = 32\nmax_local_jitter = 50\nt_pll_max = 1000\nport_tx_delay = 92\nport_rx_delay = 340\n",
+            "[profinet.isochronous]\nrequired = false\nt_dc_base = 32\nt_dc_min = 1\nt_dc_max = 32\nt_io_base = 125000\nt_io_input_min = 1\nt_io_output_min = 1\n",
+        ],
+    );
+    let irt_words = [
+        "Isochrone",
+        "RT_Class3",
+        "RT_CLASS",
+        "Synchronisation",
+        "MaxPortTxDelay",
+        "MaxPortRxDelay",
+        "DelayMeasurement",
+        "ConformanceClass",
+    ];
+    for code in ["E601", "W600"] {
+        for message in messages(&imported, code) {
+            assert!(!irt_words.iter().any(|w| message.contains(w)), "{message}");
+        }
+    }
+    // Only PROFIenergy's application class is left: the DAP declares
+    // `Isochronous;EnergySaving`.
+    assert!(messages(&imported, "E601").iter().any(|m| m.contains(
+        "CertificationInfo@ApplicationClass (breaking): \"Isochronous;EnergySaving\" → \"Isochronous\""
+    )));
+}
+
+/// Class C without the RT_CLASS_3 properties the description needs (here
+/// MOVI-C without its RT_Class3Properties) is imported as class B, marked
+/// with why, and without isochronous mode, which needs RT_CLASS_3 (E188).
+#[test]
+fn class_c_without_its_rt_class_3_properties_is_imported_as_b_saying_why() {
+    let text = String::from_utf8(support::corpus_file(&format!("gsdml/{MOVI_C}"))).unwrap();
+    let properties = "<RT_Class3Properties ForwardingMode=\"Relative\" MaxBridgeDelay=\"5500\" MaxNumberIR_FrameData=\"256\" StartupMode=\"Advanced;Legacy\"/>";
+    assert_eq!(text.matches(properties).count(), 3, "one per DAP");
+    let imported = import(MOVI_C, text.replace(properties, "").as_bytes());
+    let toml = another_device(&imported);
+    assert!(
+        !toml.contains("\n[profinet.irt]\n") && !toml.contains("\n[profinet.isochronous]\n"),
+        "{toml}"
+    );
+    let (ir, _) = descriptions::load_text("movi-c.toml", toml);
+    let decision = ir
+        .expect("builds")
+        .decisions
+        .into_iter()
+        .find(|d| d.path == "profinet.conformance_class")
+        .expect("marked");
+    assert_eq!(decision.value, "\"B\"");
+    let why = "conformance class C is imported as B: the interface's RT_CLASS_3 is not imported";
+    assert!(decision.reason.starts_with(why), "{}", decision.reason);
+    assert!(messages(&imported, "W600")
+        .iter()
+        .any(|m| m.starts_with(why)));
+    assert!(messages(&imported, "W600")
+        .iter()
+        .any(|m| m.starts_with("VirtualSubmoduleItem IsochroneMode@T_DC_Base is not imported")));
 }
 
 /// A GSDML file name's vendor and family may both hold `-`: the import

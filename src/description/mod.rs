@@ -7,6 +7,7 @@
 pub mod choices;
 pub mod dp;
 pub mod gateway;
+pub mod irt;
 mod values;
 pub use values::digits;
 
@@ -589,6 +590,10 @@ pub struct Profinet {
     /// SendClock factors (units of 31.25 us) the interface accepts.
     pub send_clock: Option<Spanned<Vec<Spanned<u16>>>>,
     pub conformance_class: Option<Spanned<ConformanceClass>>,
+    /// Isochronous real time (RT_CLASS_3): conformance class C.
+    pub irt: Option<Spanned<irt::Irt>>,
+    /// Isochronous mode of the modules; needs `irt`.
+    pub isochronous: Option<Spanned<irt::Isochronous>>,
     pub netload_class: Option<Spanned<NetloadClass>>,
     /// The I&M records the controller may write (1 to 4).
     pub writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,

@@ -9,9 +9,9 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, Module, NetloadClass, ParameterRecord,
-    Profinet, Stack, TextRef, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
-    PROFIDRIVE_DATA_SUBSLOT,
+    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, InterfaceProperties, Irt, Isochronous,
+    Module, NetloadClass, ParameterRecord, Profinet, Stack, TextRef, ACCESS_POINT_SUBSLOT,
+    INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::attributes::Attribute;
@@ -261,27 +261,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
             .filter_map(|(element, value)| Some((element, value.as_deref()?))),
     );
     module_info(doc, &dap.name, &dap.info, &values);
-    let properties = &p.interface_properties;
-    doc.leaf(
-        "CertificationInfo",
-        &[
-            (
-                "ConformanceClass",
-                match properties.conformance_class {
-                    ConformanceClass::A => "A",
-                    ConformanceClass::B => "B",
-                },
-            ),
-            (
-                "NetloadClass",
-                match properties.netload_class {
-                    NetloadClass::I => "I",
-                    NetloadClass::II => "II",
-                    NetloadClass::III => "III",
-                },
-            ),
-        ],
-    );
+    certification_info(doc, &p.interface_properties);
     doc.leaf(
         "IOConfigData",
         &[
@@ -309,6 +289,31 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         doc.close("Graphics");
     }
     doc.close("DeviceAccessPointItem");
+}
+
+/// The conformance class, the isochronous application class when the
+/// modules have isochronous mode, and the netload class.
+fn certification_info(doc: &mut Doc, properties: &InterfaceProperties) {
+    let mut attributes = vec![(
+        "ConformanceClass",
+        match properties.conformance_class {
+            ConformanceClass::A => "A",
+            ConformanceClass::B => "B",
+            ConformanceClass::C => "C",
+        },
+    )];
+    if properties.isochronous.is_some() {
+        attributes.push(("ApplicationClass", "Isochronous"));
+    }
+    attributes.push((
+        "NetloadClass",
+        match properties.netload_class {
+            NetloadClass::I => "I",
+            NetloadClass::II => "II",
+            NetloadClass::III => "III",
+        },
+    ));
+    doc.leaf("CertificationInfo", &attributes);
 }
 
 /// Name, InfoText and then any `Value` elements, in the schema's order.
@@ -381,19 +386,41 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.open("SystemDefinedSubmoduleList", &[]);
     doc.text(&p.interface);
-    doc.open(
-        "InterfaceSubmoduleItem",
-        &[
-            ("ID", &dap.interface_id),
-            ("SubslotNumber", &INTERFACE_SUBSLOT.to_string()),
-            ("SubmoduleIdentNumber", &hex32(p.interface_ident)),
-            ("TextId", &p.interface.id),
-            ("SupportedRT_Classes", "RT_CLASS_1"),
-            ("SupportedProtocols", "SNMP;LLDP"),
-            ("DCP_BoundarySupported", "true"),
-            ("PTP_BoundarySupported", "true"),
-        ],
-    );
+    let interface_ident = hex32(p.interface_ident);
+    let interface_subslot = INTERFACE_SUBSLOT.to_string();
+    let properties = &p.interface_properties;
+    let irt = properties.irt.as_ref();
+    let mut attributes = vec![
+        ("ID", dap.interface_id.as_str()),
+        ("SubslotNumber", &interface_subslot),
+        ("SubmoduleIdentNumber", &interface_ident),
+        ("TextId", &p.interface.id),
+        (
+            "SupportedRT_Classes",
+            if irt.is_some() {
+                "RT_CLASS_1;RT_CLASS_3"
+            } else {
+                "RT_CLASS_1"
+            },
+        ),
+    ];
+    if properties.isochronous.is_some() {
+        attributes.push(("IsochroneModeSupported", "true"));
+        attributes.push(("IsochroneModeInRT_Classes", "RT_CLASS_3"));
+    }
+    attributes.extend([
+        ("SupportedProtocols", "SNMP;LLDP"),
+        ("DCP_BoundarySupported", "true"),
+        ("PTP_BoundarySupported", "true"),
+    ]);
+    // RT_CLASS_3 synchronises over PTCP, which measures each line's delay.
+    if irt.is_some() {
+        attributes.push(("DelayMeasurementSupported", "true"));
+    }
+    doc.open("InterfaceSubmoduleItem", &attributes);
+    if let Some(irt) = irt {
+        rt_class_3_properties(doc, irt);
+    }
     // Both startup modes, or controllers that start up the legacy way
     // (older firmware) find no mode they share with the device.
     let ars = dap.stack.application_relations.map(|n| n.to_string());
@@ -414,6 +441,15 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
             ("ReductionRatio", "1 2 4 8 16 32 64 128 256 512"),
         ],
     );
+    if let Some(irt) = irt {
+        let preferred = irt.preferred_send_clock.map(|c| c.to_string());
+        let mut timing = vec![
+            ("SendClock", blank_separated(&irt.send_clock)),
+            ("ReductionRatio", blank_separated(&irt.reduction_ratio)),
+        ];
+        timing.extend(preferred.map(|c| ("PreferredSendClock", c)));
+        doc.leaf("RT_Class3TimingProperties", &borrowed(&timing));
+    }
     doc.close("ApplicationRelations");
     if dap.media_redundancy {
         doc.leaf("MediaRedundancy", &[("SupportedRole", "Client")]);
@@ -429,6 +465,13 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
             ("SubmoduleIdentNumber", &ident),
             ("TextId", &port.text.id),
         ];
+        let delays = irt.map(|irt| (irt.port_tx_delay.to_string(), irt.port_rx_delay.to_string()));
+        if let Some((tx, rx)) = &delays {
+            attributes.extend([
+                ("MaxPortTxDelay", tx.as_str()),
+                ("MaxPortRxDelay", rx.as_str()),
+            ]);
+        }
         if port.default_ringport {
             attributes.push(("IsDefaultRingport", "true"));
         }
@@ -443,6 +486,58 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
         doc.close("PortSubmoduleItem");
     }
     doc.close("SystemDefinedSubmoduleList");
+}
+
+/// `RT_Class3Properties` and the `SynchronisationMode` of a sync slave
+/// over PTCP, in the schema's order.
+fn rt_class_3_properties(doc: &mut Doc, irt: &Irt) {
+    let mut properties = Vec::new();
+    if !irt.startup_mode.is_empty() {
+        properties.push(("StartupMode", irt.startup_mode.join(";")));
+    }
+    if !irt.forwarding_mode.is_empty() {
+        properties.push(("ForwardingMode", irt.forwarding_mode.join(";")));
+    }
+    properties.extend([
+        ("MaxBridgeDelay", irt.max_bridge_delay.to_string()),
+        (
+            "MaxNumberIR_FrameData",
+            irt.max_number_ir_frame_data.to_string(),
+        ),
+    ]);
+    doc.leaf("RT_Class3Properties", &borrowed(&properties));
+    let mut sync = vec![("SupportedRole", "SyncSlave".to_string())];
+    sync.extend(
+        irt.max_local_jitter
+            .map(|j| ("MaxLocalJitter", j.to_string())),
+    );
+    sync.extend(irt.t_pll_max.map(|t| ("T_PLL_MAX", t.to_string())));
+    sync.push(("SupportedSyncProtocols", "PTCP".to_string()));
+    doc.leaf("SynchronisationMode", &borrowed(&sync));
+}
+
+/// A data submodule's `IsochroneMode`.
+fn isochrone_mode(doc: &mut Doc, iso: &Isochronous) {
+    let mut attributes = vec![
+        ("T_DC_Base", iso.t_dc_base.to_string()),
+        ("T_DC_Min", iso.t_dc_min.to_string()),
+        ("T_DC_Max", iso.t_dc_max.to_string()),
+        ("T_IO_Base", iso.t_io_base.to_string()),
+        ("T_IO_InputMin", iso.t_io_input_min.to_string()),
+        ("T_IO_OutputMin", iso.t_io_output_min.to_string()),
+    ];
+    if iso.required {
+        attributes.push(("IsochroneModeRequired", "true".to_string()));
+    }
+    doc.leaf("IsochroneMode", &borrowed(&attributes));
+}
+
+/// Attributes of owned values, as [`Doc`] takes them.
+fn borrowed<'a>(attributes: &'a [(&'a str, String)]) -> Vec<(&'a str, &'a str)> {
+    attributes
+        .iter()
+        .map(|(name, value)| (*name, value.as_str()))
+        .collect()
 }
 
 fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
@@ -592,6 +687,9 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
         doc.close("RecordDataList");
     }
     module_info(doc, &m.name, &m.info, &[]);
+    if let Some(iso) = &p.interface_properties.isochronous {
+        isochrone_mode(doc, iso);
+    }
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
     doc.close("ModuleItem");

@@ -231,6 +231,17 @@ phrases! {
         de: "IO-Datenbytes höchstens, Eingänge und Ausgänge (mit IOPS und IOCS)",
     };
     PROFINET_DEVICE = { en: "PROFINET device", zh: "PROFINET 设备", de: "PROFINET-Gerät" };
+    IRT = {
+        en: "Isochronous real time (RT_CLASS_3)",
+        zh: "等时实时（RT_CLASS_3）",
+        de: "Isochrone Echtzeit (RT_CLASS_3)",
+    };
+    ISOCHRONOUS_MODE = {
+        en: "Isochronous mode of the modules (IsochroneMode)",
+        zh: "模块的等时同步模式（IsochroneMode）",
+        de: "Taktsynchronität der Module (IsochroneMode)",
+    };
+    ISOCHRONOUS_REQUIRED = { en: "required", zh: "必需", de: "erforderlich" };
     DEVICE_ACCESS_POINTS = {
         en: "Device access points",
         zh: "设备访问点",

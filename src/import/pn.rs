@@ -12,6 +12,7 @@
 mod daps;
 mod diagnosis;
 mod fail_safe;
+mod irt;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -158,7 +159,8 @@ pub(super) fn describe(
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
     let first_stack = stack::Declared::of(dap, &modules, notes);
     let later = daps::later_daps((dap, others), &first_stack, device_info, &modules, notes);
-    unsaid_extras(device, (dap, &later), &modules, notes);
+    let timing = irt::Declared::of(dap, &modules, notes);
+    unsaid_extras(device, (dap, &later), &modules, &timing, notes);
     let mut out = TomlOut::default();
     out.comment(&format!(
         "Imported by gsdc import from {file}. Every value below is the file's,"
@@ -169,7 +171,15 @@ pub(super) fn describe(
     telegram_table(&mut out, &modules, pkw);
     records.write_mappings(&mut out, notes);
     records.write_settings(&mut out, &modules, notes);
-    profinet(&mut out, device, dap, &name, &modules, notes);
+    profinet(
+        &mut out,
+        device,
+        dap,
+        &name,
+        &modules,
+        notes,
+        timing.irt.is_some(),
+    );
     let stack = first_stack.keys();
     if !stack.is_empty() {
         out.table("profinet.stack");
@@ -177,6 +187,7 @@ pub(super) fn describe(
             out.key(key, value);
         }
     }
+    timing.write(&mut out);
     records.write_indexes(&mut out);
     if let Some(fail_safe) = &records.fail_safe {
         fail_safe.write(&mut out);
@@ -874,6 +885,7 @@ fn profinet(
     name: &FileName,
     modules: &[Recognised],
     notes: &mut Notes,
+    has_irt: bool,
 ) {
     out.table("profinet");
     let id = |n: Option<u32>| format!("{{ value = 0x{:04X} }}", n.unwrap_or(0));
@@ -916,7 +928,7 @@ fn profinet(
             out.key(key, true);
         }
     }
-    interface_properties(out, dap, notes);
+    interface_properties(out, dap, notes, has_irt);
     module_im_records(out, modules, notes);
 }
 
@@ -985,7 +997,7 @@ fn name_of_station(attributes: &[Attribute], notes: &mut Notes) -> String {
     lower
 }
 
-fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes) {
+fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes, has_irt: bool) {
     let interface = submodules_of(dap, SubmoduleKind::Interface).next();
     let interface_attributes = interface.map_or(&[][..], |s| &s.attributes[..]);
     if let Some(clocks) = attribute(
@@ -995,7 +1007,10 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes) {
         out.key("send_clock", list(clocks.split_whitespace()));
     }
     if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@ConformanceClass") {
-        out.string("conformance_class", written_conformance_class(class, notes));
+        out.string(
+            "conformance_class",
+            written_conformance_class(class, has_irt, notes),
+        );
     }
     if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@NetloadClass") {
         out.string("netload_class", class);
@@ -1017,14 +1032,14 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes) {
 }
 
 /// Conformance class C (isochronous real time, RT_CLASS_3) is written as
-/// B, the most gsdc writes (E151), and said.
-fn written_conformance_class<'a>(class: &'a str, notes: &mut Notes) -> &'a str {
-    if class != "C" {
+/// B when its RT_CLASS_3 is not imported (`irt`), and said.
+fn written_conformance_class<'a>(class: &'a str, has_irt: bool, notes: &mut Notes) -> &'a str {
+    if class != "C" || has_irt {
         return class;
     }
     notes.chosen(
         "profinet.conformance_class",
-        "conformance class C is imported as B: gsdc writes RT_CLASS_1 devices, not isochronous real time (E151); the round trip judges the change".to_string(),
+        "conformance class C is imported as B: the interface's RT_CLASS_3 is not imported (its RT_Class3Properties are missing, or a value does not fit [profinet.irt]), and class C is RT_CLASS_3's (E151); the round trip judges the change".to_string(),
     );
     "B"
 }
@@ -1172,8 +1187,30 @@ fn unsaid_extras(
     device: &PnDevice,
     (first, later): (&Dap, &[daps::DapEntry]),
     modules: &[Recognised],
+    timing: &irt::Declared,
     notes: &mut Notes,
 ) {
+    let with = |always: &'static [(&'static str, Option<&'static str>)], when: bool, extra| {
+        let extra: &[_] = if when { extra } else { &[] };
+        [always, extra].concat()
+    };
+    let (has_irt, has_isochronous) = (timing.irt.is_some(), timing.isochronous.is_some());
+    let dap_known = with(
+        DAP_ATTRIBUTES,
+        has_isochronous,
+        irt::ISOCHRONOUS_DAP_ATTRIBUTES,
+    );
+    let interface_known = [
+        with(INTERFACE_ATTRIBUTES, has_irt, irt::IRT_INTERFACE_ATTRIBUTES),
+        with(&[], has_isochronous, irt::ISOCHRONOUS_INTERFACE_ATTRIBUTES),
+    ]
+    .concat();
+    let port_known = with(PORT_ATTRIBUTES, has_irt, irt::IRT_PORT_ATTRIBUTES);
+    let data_known = with(
+        SUBMODULE_ATTRIBUTES,
+        has_isochronous,
+        irt::ISOCHRONOUS_SUBMODULE_ATTRIBUTES,
+    );
     let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
         for a in attributes {
             let fits = known.iter().any(|(name, value)| {
@@ -1187,15 +1224,11 @@ fn unsaid_extras(
         }
     };
     for dap in [first].into_iter().chain(later.iter().map(|l| l.dap)) {
-        check(
-            &dap.item.attributes,
-            DAP_ATTRIBUTES,
-            "DeviceAccessPointItem",
-        );
+        check(&dap.item.attributes, &dap_known, "DeviceAccessPointItem");
         for s in &dap.item.submodules {
             let known = match s.kind {
-                SubmoduleKind::Interface => INTERFACE_ATTRIBUTES,
-                SubmoduleKind::Port => PORT_ATTRIBUTES,
+                SubmoduleKind::Interface => &interface_known,
+                SubmoduleKind::Port => &port_known,
                 _ => SUBMODULE_ATTRIBUTES,
             };
             check(&s.attributes, known, s.kind.element());
@@ -1207,9 +1240,10 @@ fn unsaid_extras(
             &[("ModuleInfo@CategoryRef", None)],
             "ModuleItem",
         );
-        for s in m.access_point.iter().chain([&m.data]) {
+        if let Some(s) = m.access_point {
             check(&s.attributes, SUBMODULE_ATTRIBUTES, "VirtualSubmoduleItem");
         }
+        check(&m.data.attributes, &data_known, "VirtualSubmoduleItem");
     }
     for a in device.identity.iter().filter(|a| {
         ![

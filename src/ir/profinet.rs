@@ -295,6 +295,46 @@ pub struct InterfaceProperties {
     /// I&M records the controller may write to each module's submodules,
     /// ascending; none by default.
     pub module_writeable_im_records: Vec<u8>,
+    /// Isochronous real time (RT_CLASS_3), with conformance class C.
+    pub irt: Option<Irt>,
+    /// Isochronous mode of every module's data submodule; only with `irt`.
+    pub isochronous: Option<Isochronous>,
+}
+
+/// RT_CLASS_3 as the interface and its ports declare it; times in ns.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Irt {
+    pub max_bridge_delay: u16,
+    pub max_number_ir_frame_data: u16,
+    /// `ForwardingMode` and `StartupMode` tokens, in the description's
+    /// order; empty: unwritten.
+    pub forwarding_mode: Vec<&'static str>,
+    pub startup_mode: Vec<&'static str>,
+    /// `RT_Class3TimingProperties`: factors of 31.25 us, ascending.
+    pub send_clock: Vec<u16>,
+    pub reduction_ratio: Vec<u16>,
+    pub preferred_send_clock: Option<u16>,
+    /// `SynchronisationMode`'s, when stated.
+    pub max_local_jitter: Option<u16>,
+    pub t_pll_max: Option<u16>,
+    /// Each port's `MaxPortTxDelay` and `MaxPortRxDelay`.
+    pub port_tx_delay: u16,
+    pub port_rx_delay: u16,
+}
+
+/// `IsochroneMode`: data cycles in `t_dc_base` units of 31.25 us, input
+/// and output times in `t_io_base` units of 1 ns.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Isochronous {
+    pub required: bool,
+    pub t_dc_base: u16,
+    pub t_dc_min: u16,
+    pub t_dc_max: u16,
+    pub t_io_base: u32,
+    pub t_io_input_min: u32,
+    pub t_io_output_min: u32,
 }
 
 /// A device access point (DAP): the card in slot 0 as one of its hardware
@@ -379,13 +419,14 @@ impl AddressAssignment {
     }
 }
 
-/// CertificationInfo's conformance class: gsdc writes RT_CLASS_1 only, so
-/// not class C (isochronous, RT_CLASS_3).
+/// CertificationInfo's conformance class: C exactly when the interface
+/// runs isochronous real time (`InterfaceProperties::irt`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ConformanceClass {
     A,
     B,
+    C,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -20,6 +20,7 @@ mod idents;
 mod ids;
 mod interface;
 mod io;
+mod irt;
 mod records;
 mod stack;
 pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
@@ -68,7 +69,8 @@ pub fn lower(
     (device, telegram, mappings): (&Device, &Telegram, &Mappings),
 ) -> Option<Profinet> {
     let records = records::plans(cx, p, desc, mappings);
-    let interface_properties = interface::properties(cx, p);
+    let interface_properties =
+        irt::timing(cx, p.get_ref()).and_then(|timing| interface::properties(cx, p, timing));
     let near = p.span();
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;

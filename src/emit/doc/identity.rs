@@ -5,7 +5,7 @@ use super::page::{code, text, Builder, Cell, Run};
 use super::{decision_kind, with_placeholder, Lang};
 use crate::i18n::{sheet as w, Phrase};
 use crate::ir::profibus::Profibus;
-use crate::ir::profinet::{Dap, Profinet};
+use crate::ir::profinet::{Dap, Irt, Isochronous, Profinet};
 use crate::ir::{Decision, Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -206,6 +206,16 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
         rows.insert(2, (lang.t(w::PORTS), text(dap.ports.len().to_string())));
         rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap)));
     }
+    let properties = &p.interface_properties;
+    if let Some(irt) = &properties.irt {
+        rows.push((lang.t(w::IRT), text(irt_summary(irt))));
+    }
+    if let Some(iso) = &properties.isochronous {
+        rows.push((
+            lang.t(w::ISOCHRONOUS_MODE),
+            text(isochronous_summary(iso, lang)),
+        ));
+    }
     doc.table(
         lang.t(w::PROFINET_DEVICE),
         &[lang.t(w::PARAMETER), lang.t(w::VALUE)],
@@ -213,6 +223,47 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     );
     if p.daps.len() > 1 {
         daps_table(doc, p, lang);
+    }
+}
+
+/// RT_CLASS_3's timing as the GSDML names it: what the engineering tool
+/// plans the IRT schedule with.
+fn irt_summary(irt: &Irt) -> String {
+    let numbers = |values: &[u16]| {
+        let written: Vec<String> = values.iter().map(u16::to_string).collect();
+        written.join(" ")
+    };
+    format!(
+        "SendClock {} × 31.25 µs, ReductionRatio {}, MaxBridgeDelay {} ns, MaxPortTxDelay {} ns, MaxPortRxDelay {} ns",
+        numbers(&irt.send_clock),
+        numbers(&irt.reduction_ratio),
+        irt.max_bridge_delay,
+        irt.port_tx_delay,
+        irt.port_rx_delay
+    )
+}
+
+/// The data cycles the modules follow and their least input and output
+/// times, in µs and in the GSDML's units.
+fn isochronous_summary(iso: &Isochronous, lang: Lang) -> String {
+    // T_DC_Base counts 31.25 us, a binary fraction: exact in an f64.
+    let cycle = |n: u16| f64::from(n) * f64::from(iso.t_dc_base) * 31.25;
+    let io_time = |n: u32| u64::from(n) * u64::from(iso.t_io_base);
+    let micros = |ns: u64| ns as f64 / 1000.0;
+    let summary = format!(
+        "T_DC {}–{} µs (T_DC_Base {} × 31.25 µs, T_DC_Min {}, T_DC_Max {}); T_IO_InputMin {} µs, T_IO_OutputMin {} µs (T_IO_Base {} ns)",
+        cycle(iso.t_dc_min),
+        cycle(iso.t_dc_max),
+        iso.t_dc_base,
+        iso.t_dc_min,
+        iso.t_dc_max,
+        micros(io_time(iso.t_io_input_min)),
+        micros(io_time(iso.t_io_output_min)),
+        iso.t_io_base
+    );
+    match iso.required {
+        true => format!("{summary}; {}", lang.t(w::ISOCHRONOUS_REQUIRED)),
+        false => summary,
     }
 }
 

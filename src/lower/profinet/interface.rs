@@ -7,7 +7,7 @@ use crate::description::{
     self as raw, ConformanceClass as RawConformance, NetloadClass as RawNetload,
 };
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{ConformanceClass, InterfaceProperties, NetloadClass};
+use crate::ir::profinet::{ConformanceClass, InterfaceProperties, Irt, Isochronous, NetloadClass};
 use crate::lower::checks::Checker;
 use std::collections::BTreeSet;
 use std::ops::Range;
@@ -24,7 +24,13 @@ const MAX_SEND_CLOCK: u16 = 128;
 /// I&M1 to I&M3, as 10 of the 16 corpus files; I&M0 and I&M5 are read-only.
 const DEFAULT_WRITEABLE_IM: [u8; 3] = [1, 2, 3];
 
-pub fn properties(cx: &mut Checker, p: &Spanned<raw::Profinet>) -> Option<InterfaceProperties> {
+/// The interface's properties, with its RT_CLASS_3 and the modules'
+/// isochronous mode (`timing`, [`super::irt::timing`]).
+pub fn properties(
+    cx: &mut Checker,
+    p: &Spanned<raw::Profinet>,
+    (irt, isochronous): (Option<Irt>, Option<Isochronous>),
+) -> Option<InterfaceProperties> {
     let near = p.span();
     let p = p.get_ref();
     let send_clock = match &p.send_clock {
@@ -35,7 +41,8 @@ pub fn properties(cx: &mut Checker, p: &Spanned<raw::Profinet>) -> Option<Interf
         }
     };
     let conformance_class = match &p.conformance_class {
-        Some(class) => conformance_class(cx, class)?,
+        Some(class) => conformance_class(cx, class, irt.is_some())?,
+        None if irt.is_some() => ConformanceClass::C,
         None => {
             cx.defaulted("profinet.conformance_class", "\"B\"", near.clone());
             ConformanceClass::B
@@ -67,6 +74,8 @@ pub fn properties(cx: &mut Checker, p: &Spanned<raw::Profinet>) -> Option<Interf
         netload_class,
         writeable_im_records: dap_im_records,
         module_writeable_im_records,
+        irt,
+        isochronous,
     })
 }
 
@@ -87,7 +96,10 @@ pub fn check_ring_ports(cx: &mut Checker, client: Option<Range<usize>>, ports: u
 }
 
 /// E150: ascending factors from 1 to 128, each once, 32 among them.
-fn send_clock(cx: &mut Checker, clocks: &Spanned<Vec<Spanned<u16>>>) -> Option<Vec<u16>> {
+pub(super) fn send_clock(
+    cx: &mut Checker,
+    clocks: &Spanned<Vec<Spanned<u16>>>,
+) -> Option<Vec<u16>> {
     let mut values = Vec::new();
     for clock in clocks.get_ref() {
         let value = *clock.get_ref();
@@ -126,24 +138,34 @@ fn send_clock(cx: &mut Checker, clocks: &Spanned<Vec<Spanned<u16>>>) -> Option<V
     Some(values)
 }
 
-/// E151: gsdc writes RT_CLASS_1 only, which is not enough for class C.
+/// E151: class C is the class of an RT_CLASS_3 device, and only its.
 fn conformance_class(
     cx: &mut Checker,
     class: &Spanned<RawConformance>,
+    has_irt: bool,
 ) -> Option<ConformanceClass> {
-    match class.get_ref() {
-        RawConformance::A => Some(ConformanceClass::A),
-        RawConformance::B => Some(ConformanceClass::B),
-        RawConformance::C => {
-            cx.push(
-                Diagnostic::error("E151", "gsdc cannot write a conformance class C device")
-                    .at(class.span())
-                    .label("class C")
-                    .help("class C needs isochronous real time (RT_CLASS_3), which gsdc does not describe; write \"A\" or \"B\""),
-            );
-            None
-        }
-    }
+    let help = match (class.get_ref(), has_irt) {
+        (RawConformance::A, false) => return Some(ConformanceClass::A),
+        (RawConformance::B, false) => return Some(ConformanceClass::B),
+        (RawConformance::C, true) => return Some(ConformanceClass::C),
+        (RawConformance::C, false) => "class C is isochronous real time (RT_CLASS_3): describe it in [profinet.irt], or write \"A\" or \"B\"",
+        (_, true) => "a device with isochronous real time ([profinet.irt]) is of class C: write \"C\", or leave conformance_class out",
+    };
+    let class_value = match class.get_ref() {
+        RawConformance::A => "A",
+        RawConformance::B => "B",
+        RawConformance::C => "C",
+    };
+    cx.push(
+        Diagnostic::error(
+            "E151",
+            format!("conformance class {class_value} does not match the interface"),
+        )
+        .at(class.span())
+        .label("this class")
+        .help(help),
+    );
+    None
 }
 
 /// I&M1 to I&M4, each once, ascending in the file.
