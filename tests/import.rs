@@ -1302,6 +1302,43 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
     }
 }
 
+/// MOVI-C's stack beyond FENA's (its line 26: `PowerOnToCommReady="5000"`,
+/// `AdaptsRealIdentification="true"`; line 82, the interface:
+/// `NetworkComponentDiagnosisSupported="true"`; lines 92 and 116, both
+/// ports: `PortDeactivationSupported`, `CheckMAUTypeSupported`,
+/// `CheckMAUTypeDifferenceSupported` true, `LinkStateDiagnosisCapability
+/// ="Up+Down"`) imports into `[profinet.stack]`, and the round trip finds
+/// none of these attributes changed.
+#[test]
+fn movi_cs_stack_attributes_import() {
+    let imported = corpus_import(MOVI_C);
+    assert_says(
+        another_device(&imported),
+        &["adapts_real_identification = true
+power_on_to_comm_ready = 5000
+network_component_diagnosis = true
+port_deactivation = true
+check_mau_type = true
+check_mau_type_difference = true
+link_state_diagnosis = \"Up+Down\"
+"],
+    );
+    let attributes = [
+        "PowerOnToCommReady",
+        "AdaptsRealIdentification",
+        "NetworkComponentDiagnosisSupported",
+        "PortDeactivationSupported",
+        "CheckMAUTypeSupported",
+        "CheckMAUTypeDifferenceSupported",
+        "LinkStateDiagnosisCapability",
+    ];
+    for code in ["E601", "W600"] {
+        for message in messages(&imported, code) {
+            assert!(!attributes.iter().any(|a| message.contains(a)), "{message}");
+        }
+    }
+}
+
 /// MOVI-C's isochronous real time and isochronous mode import with the
 /// file's values (its lines 82 to 92: the interface's RT_Class3Properties,
 /// SynchronisationMode, RT_Class3TimingProperties and the ports' delays;

@@ -352,6 +352,35 @@ fn stated_stack_attributes(stack: &Stack) -> Vec<(&'static str, String)> {
         let ways: Vec<&str> = stack.address_assignment.iter().map(|a| a.token()).collect();
         attributes.push(("AddressAssignment", ways.join(";")));
     }
+    if stack.adapts_real_identification {
+        attributes.push(("AdaptsRealIdentification", "true".to_string()));
+    }
+    if let Some(ms) = stack.power_on_to_comm_ready {
+        attributes.push(("PowerOnToCommReady", ms.to_string()));
+    }
+    attributes
+}
+
+/// Each port's attributes that `[profinet.stack]` states.
+fn stated_port_attributes(stack: &Stack) -> Vec<(&'static str, &'static str)> {
+    let flags = [
+        ("PortDeactivationSupported", stack.port_deactivation),
+        ("CheckMAUTypeSupported", stack.check_mau_type),
+        (
+            "CheckMAUTypeDifferenceSupported",
+            stack.check_mau_type_difference,
+        ),
+    ];
+    let mut attributes: Vec<_> = flags
+        .into_iter()
+        .filter(|&(_, on)| on)
+        .map(|(name, _)| (name, "true"))
+        .collect();
+    attributes.extend(
+        stack
+            .link_state_diagnosis
+            .map(|link| ("LinkStateDiagnosisCapability", link)),
+    );
     attributes
 }
 
@@ -407,6 +436,9 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     if properties.isochronous.is_some() {
         attributes.push(("IsochroneModeSupported", "true"));
         attributes.push(("IsochroneModeInRT_Classes", "RT_CLASS_3"));
+    }
+    if dap.stack.network_component_diagnosis {
+        attributes.push(("NetworkComponentDiagnosisSupported", "true"));
     }
     attributes.extend([
         ("SupportedProtocols", "SNMP;LLDP"),
@@ -472,6 +504,7 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
                 ("MaxPortRxDelay", rx.as_str()),
             ]);
         }
+        attributes.extend(stated_port_attributes(&dap.stack));
         if port.default_ringport {
             attributes.push(("IsDefaultRingport", "true"));
         }

@@ -50,6 +50,8 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("CertificationInfo@NetloadClass", None),
     ("IOConfigData@MaxInputLength", None),
     ("IOConfigData@MaxOutputLength", None),
+    ("AdaptsRealIdentification", None),
+    ("PowerOnToCommReady", None),
     // Read by `super::symbol`, or left out there with its reason.
     (super::symbol::GSDML_SYMBOL_TYPE, Some("DeviceSymbol")),
     (super::symbol::GSDML_SYMBOL_TARGET, None),
@@ -68,6 +70,7 @@ const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
         Some("1 2 4 8 16 32 64 128 256 512"),
     ),
     ("MediaRedundancy@SupportedRole", Some("Client")),
+    ("NetworkComponentDiagnosisSupported", None),
 ];
 
 const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
@@ -77,6 +80,10 @@ const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     // when it names the same types.
     ("MAUTypes", Some("16")),
     ("IsDefaultRingport", Some("true")),
+    ("PortDeactivationSupported", None),
+    ("CheckMAUTypeSupported", None),
+    ("CheckMAUTypeDifferenceSupported", None),
+    ("LinkStateDiagnosisCapability", None),
 ];
 
 const SUBMODULE_ATTRIBUTES: &[(&str, Option<&str>)] = &[

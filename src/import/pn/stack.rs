@@ -24,7 +24,26 @@ pub(super) struct Declared {
     last_slot: Option<u16>,
     /// IOConfigData's MaxInputLength and MaxOutputLength.
     io: [IoLimit; 2],
+    adapts_real_identification: bool,
+    power_on_to_comm_ready: Option<u32>,
+    network_component_diagnosis: bool,
+    /// Each port's flags, in [`PORT_FLAGS`]' order, and link state
+    /// diagnosis.
+    port_flags: [bool; 3],
+    link_state_diagnosis: Option<String>,
 }
+
+/// The ports' flags: each port's attribute, and the key that says it for
+/// every port.
+const PORT_FLAGS: [(&str, &str); 3] = [
+    ("PortDeactivationSupported", "port_deactivation"),
+    ("CheckMAUTypeSupported", "check_mau_type"),
+    (
+        "CheckMAUTypeDifferenceSupported",
+        "check_mau_type_difference",
+    ),
+];
+const LINK_STATES: [&str; 3] = ["Up", "Down", "Up+Down"];
 
 /// One of IOConfigData's lengths: the file's, and what the access point's
 /// modules need as gsdc counts it (what gsdc writes unless stated).
@@ -80,10 +99,20 @@ impl Declared {
         let needed = crate::lower::io_length(offered, ports);
         let io = ["MaxInputLength", "MaxOutputLength"]
             .map(|name| io_limit(attributes, &format!("IOConfigData@{name}"), needed, notes));
+        let interface_flag = |name: &str| {
+            interface.is_some_and(|s| attribute(&s.attributes, name).is_some_and(is_true))
+        };
         Declared {
             io,
             last_slot: last_slot(notes, attributes).filter(|&last| last > MODULE_SLOT),
             mau_type_adjustable: mau_type_adjustable(dap, notes),
+            adapts_real_identification: flag("AdaptsRealIdentification"),
+            power_on_to_comm_ready: power_on_to_comm_ready(attributes, notes),
+            network_component_diagnosis: interface_flag("NetworkComponentDiagnosisSupported"),
+            port_flags: PORT_FLAGS.map(|(name, key)| {
+                every_port(dap, name, key, notes, |value| value.is_some_and(is_true))
+            }),
+            link_state_diagnosis: link_state_diagnosis(dap, notes),
             address_assignment: address_assignment(dap, notes),
             device_access,
             device_access_ars,
@@ -121,6 +150,11 @@ impl Declared {
             application_relations: None,
             mau_type_adjustable: false,
             last_slot: None,
+            adapts_real_identification: false,
+            power_on_to_comm_ready: None,
+            network_component_diagnosis: false,
+            port_flags: [false; 3],
+            link_state_diagnosis: None,
         }
     }
 
@@ -165,6 +199,37 @@ impl Declared {
             self.mau_type_adjustable,
             base.mau_type_adjustable,
         );
+        flag(
+            &mut keys,
+            "adapts_real_identification",
+            self.adapts_real_identification,
+            base.adapts_real_identification,
+        );
+        if self.power_on_to_comm_ready != base.power_on_to_comm_ready {
+            keys.extend(
+                self.power_on_to_comm_ready
+                    .map(|ms| ("power_on_to_comm_ready", ms.to_string())),
+            );
+        }
+        flag(
+            &mut keys,
+            "network_component_diagnosis",
+            self.network_component_diagnosis,
+            base.network_component_diagnosis,
+        );
+        for ((_, key), (&mine, &theirs)) in PORT_FLAGS
+            .iter()
+            .zip(self.port_flags.iter().zip(&base.port_flags))
+        {
+            flag(&mut keys, key, mine, theirs);
+        }
+        if self.link_state_diagnosis != base.link_state_diagnosis {
+            keys.extend(
+                self.link_state_diagnosis
+                    .as_deref()
+                    .map(|link| ("link_state_diagnosis", quote(link))),
+            );
+        }
         if self.application_relations != base.application_relations {
             keys.push((
                 "application_relations",
@@ -255,28 +320,71 @@ fn last_slot(notes: &mut Notes, attributes: &[Attribute]) -> Option<u16> {
     from_zero
 }
 
-/// Whether the controller may set each port's MAU type: the first port's
-/// `AdjustSupported` on every MAU type, which the description gives every
-/// port; a port that says otherwise is left out at its attribute.
+/// Whether the controller may set each port's MAU type: `AdjustSupported`
+/// on every MAU type of every port.
 fn mau_type_adjustable(dap: &Dap, notes: &mut Notes) -> bool {
-    const NAME: &str = "MAUTypeList/MAUTypeItem@AdjustSupported";
-    let adjustable = |attributes: &[Attribute]| {
-        attribute(attributes, NAME).is_some_and(|v| v.split_whitespace().all(is_true))
-    };
+    every_port(
+        dap,
+        "MAUTypeList/MAUTypeItem@AdjustSupported",
+        "mau_type_adjustable",
+        notes,
+        |value| value.is_some_and(|v| v.split_whitespace().all(is_true)),
+    )
+}
+
+/// `PowerOnToCommReady`, when a number of ms.
+fn power_on_to_comm_ready(attributes: &[Attribute], notes: &mut Notes) -> Option<u32> {
+    let (a, value) = found(attributes, "PowerOnToCommReady")?;
+    let parsed = value.parse().ok();
+    if parsed.is_none() {
+        let why = "the description's power_on_to_comm_ready is a number of ms";
+        notes.unsaid(&format!("PowerOnToCommReady `{value}`"), &a.place, why);
+    }
+    parsed
+}
+
+/// Each port's `LinkStateDiagnosisCapability`, one the description names.
+fn link_state_diagnosis(dap: &Dap, notes: &mut Notes) -> Option<String> {
+    const NAME: &str = "LinkStateDiagnosisCapability";
+    let link = every_port(dap, NAME, "link_state_diagnosis", notes, |value| {
+        value.map(str::to_string)
+    })?;
+    if LINK_STATES.contains(&link.as_str()) {
+        return Some(link);
+    }
+    let port = submodules_of(dap, SubmoduleKind::Port).next()?;
+    let place = found(&port.attributes, NAME).map_or(&port.place, |(a, _)| &a.place);
+    let why = "the description's link_state_diagnosis is \"Up\", \"Down\" or \"Up+Down\"";
+    notes.unsaid(&format!("{NAME} `{link}`"), place, why);
+    None
+}
+
+/// What the first port declares in its attribute `name` (as `read`
+/// reads it), which the description's `key` gives every port; a port that
+/// declares otherwise is left out at its attribute.
+fn every_port<T: PartialEq + Default>(
+    dap: &Dap,
+    name: &str,
+    key: &str,
+    notes: &mut Notes,
+    read: impl Fn(Option<&str>) -> T,
+) -> T {
     let mut ports = submodules_of(dap, SubmoduleKind::Port);
     let Some(first) = ports.next() else {
-        return false;
+        return T::default();
     };
-    let first_adjustable = adjustable(&first.attributes);
-    for port in ports.filter(|p| adjustable(&p.attributes) != first_adjustable) {
-        let place = found(&port.attributes, NAME).map_or(&port.place, |(a, _)| &a.place);
+    let first_value = read(attribute(&first.attributes, name));
+    for port in ports.filter(|p| read(attribute(&p.attributes, name)) != first_value) {
+        let place = found(&port.attributes, name).map_or(&port.place, |(a, _)| &a.place);
         notes.unsaid(
-            &format!("port `{}`'s AdjustSupported", port.id),
+            &format!("port `{}`'s {name}", port.id),
             place,
-            "the description's mau_type_adjustable is one value for every port of a device access point",
+            &format!(
+                "the description's {key} is one value for every port of a device access point"
+            ),
         );
     }
-    first_adjustable
+    first_value
 }
 
 /// AddressAssignment's ways, when each is one the description names, once.

@@ -2,7 +2,7 @@
 //! controllers through a device access point. A later DAP's `stack` states
 //! what differs from the first's; each key it leaves out is the first's.
 
-use crate::description::{self as raw, AddressAssignment as RawAssignment};
+use crate::description::{self as raw, AddressAssignment as RawAssignment, LinkStateDiagnosis};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{AddressAssignment, Stack, MODULE_SLOT};
 use crate::lower::checks::Checker;
@@ -57,9 +57,41 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         max_input_length: stated_or(input, inherited.max_input_length)?,
         max_output_length: stated_or(output, inherited.max_output_length)?,
         last_slot: stated_or(last_slot, inherited.last_slot)?,
+        adapts_real_identification: flag(
+            &given.adapts_real_identification,
+            inherited.adapts_real_identification,
+        ),
+        power_on_to_comm_ready: given
+            .power_on_to_comm_ready
+            .as_ref()
+            .map(|ms| *ms.get_ref())
+            .or(inherited.power_on_to_comm_ready),
+        network_component_diagnosis: flag(
+            &given.network_component_diagnosis,
+            inherited.network_component_diagnosis,
+        ),
+        port_deactivation: flag(&given.port_deactivation, inherited.port_deactivation),
+        check_mau_type: flag(&given.check_mau_type, inherited.check_mau_type),
+        check_mau_type_difference: flag(
+            &given.check_mau_type_difference,
+            inherited.check_mau_type_difference,
+        ),
+        link_state_diagnosis: given
+            .link_state_diagnosis
+            .as_ref()
+            .map(|l| link_state_token(*l.get_ref()))
+            .or(inherited.link_state_diagnosis),
     };
     check_device_access(cx, given, &stack)?;
     Some(stack)
+}
+
+fn link_state_token(link: LinkStateDiagnosis) -> &'static str {
+    match link {
+        LinkStateDiagnosis::Up => "Up",
+        LinkStateDiagnosis::Down => "Down",
+        LinkStateDiagnosis::UpAndDown => "Up+Down",
+    }
 }
 
 /// A number stated (`Some`, `Some(None)` when it was refused) or else
