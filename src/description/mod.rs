@@ -745,18 +745,14 @@ pub struct Stack {
     pub mau_type_adjustable: Option<Spanned<bool>>,
     /// The last of the device's slots: `PhysicalSlots` 0 to it.
     pub last_slot: Option<Spanned<u16>>,
-    /// `AdaptsRealIdentification`: the device takes the configured
-    /// modules where the real ones differ but fit.
-    pub adapts_real_identification: Option<Spanned<bool>>,
     /// `PowerOnToCommReady`: ms from power on to communication ready.
     pub power_on_to_comm_ready: Option<Spanned<u32>>,
     /// The interface's `NetworkComponentDiagnosisSupported`.
     pub network_component_diagnosis: Option<Spanned<bool>>,
-    /// Each port's `PortDeactivationSupported`, `CheckMAUTypeSupported`,
-    /// `CheckMAUTypeDifferenceSupported` and `LinkStateDiagnosisCapability`.
+    /// Each port's `PortDeactivationSupported`, `CheckMAUTypeSupported` and
+    /// `LinkStateDiagnosisCapability`.
     pub port_deactivation: Option<Spanned<bool>>,
     pub check_mau_type: Option<Spanned<bool>>,
-    pub check_mau_type_difference: Option<Spanned<bool>>,
     pub link_state_diagnosis: Option<Spanned<LinkStateDiagnosis>>,
 }
 

@@ -292,7 +292,9 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
 }
 
 /// The conformance class, the isochronous application class when the
-/// modules have isochronous mode, and the netload class.
+/// modules have isochronous mode (ApplicationClass is in GSDML since V2.3,
+/// as PI's V2.3 stylesheet shows; SEW's MOVI-C, whose modules have
+/// IsochroneMode, declares `Isochronous`), and the netload class.
 fn certification_info(doc: &mut Doc, properties: &InterfaceProperties) {
     let mut attributes = vec![(
         "ConformanceClass",
@@ -352,9 +354,6 @@ fn stated_stack_attributes(stack: &Stack) -> Vec<(&'static str, String)> {
         let ways: Vec<&str> = stack.address_assignment.iter().map(|a| a.token()).collect();
         attributes.push(("AddressAssignment", ways.join(";")));
     }
-    if stack.adapts_real_identification {
-        attributes.push(("AdaptsRealIdentification", "true".to_string()));
-    }
     if let Some(ms) = stack.power_on_to_comm_ready {
         attributes.push(("PowerOnToCommReady", ms.to_string()));
     }
@@ -366,10 +365,6 @@ fn stated_port_attributes(stack: &Stack) -> Vec<(&'static str, &'static str)> {
     let flags = [
         ("PortDeactivationSupported", stack.port_deactivation),
         ("CheckMAUTypeSupported", stack.check_mau_type),
-        (
-            "CheckMAUTypeDifferenceSupported",
-            stack.check_mau_type_difference,
-        ),
     ];
     let mut attributes: Vec<_> = flags
         .into_iter()
@@ -407,9 +402,9 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 }
 
 /// The interface and its ports. In gsdc's numbering their submodule ident
-/// numbers are their subslot numbers, the convention p-net also follows. DCP_HelloSupported
-/// stays off: it would need PowerOnToCommReady, which the description does
-/// not give. The DCP and PTP boundaries are declared as every corpus file
+/// numbers are their subslot numbers, the convention p-net also follows.
+/// DCP_HelloSupported (fast start-up) stays off: the description does not
+/// claim it, and `[profinet.stack] power_on_to_comm_ready` alone does not. The DCP and PTP boundaries are declared as every corpus file
 /// of PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
 /// Portal's checker requires of V2.31 and later.
 fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {

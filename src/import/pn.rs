@@ -50,7 +50,6 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("CertificationInfo@NetloadClass", None),
     ("IOConfigData@MaxInputLength", None),
     ("IOConfigData@MaxOutputLength", None),
-    ("AdaptsRealIdentification", None),
     ("PowerOnToCommReady", None),
     // Read by `super::symbol`, or left out there with its reason.
     (super::symbol::GSDML_SYMBOL_TYPE, Some("DeviceSymbol")),
@@ -82,7 +81,6 @@ const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IsDefaultRingport", Some("true")),
     ("PortDeactivationSupported", None),
     ("CheckMAUTypeSupported", None),
-    ("CheckMAUTypeDifferenceSupported", None),
     ("LinkStateDiagnosisCapability", None),
 ];
 

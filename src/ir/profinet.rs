@@ -391,19 +391,16 @@ pub struct Stack {
     pub mau_type_adjustable: bool,
     /// `PhysicalSlots` 0 to it, where more than the module's slot.
     pub last_slot: Option<u16>,
-    /// `AdaptsRealIdentification`, written when true.
-    pub adapts_real_identification: bool,
     /// `PowerOnToCommReady` (ms), when stated.
     pub power_on_to_comm_ready: Option<u32>,
     /// The interface's `NetworkComponentDiagnosisSupported`, written when
     /// true.
     pub network_component_diagnosis: bool,
-    /// Each port's `PortDeactivationSupported`, `CheckMAUTypeSupported` and
-    /// `CheckMAUTypeDifferenceSupported`, written when true, and its
-    /// `LinkStateDiagnosisCapability` token when stated.
+    /// Each port's `PortDeactivationSupported` and `CheckMAUTypeSupported`,
+    /// written when true, and its `LinkStateDiagnosisCapability` token when
+    /// stated.
     pub port_deactivation: bool,
     pub check_mau_type: bool,
-    pub check_mau_type_difference: bool,
     pub link_state_diagnosis: Option<&'static str>,
 }
 

@@ -24,24 +24,19 @@ pub(super) struct Declared {
     last_slot: Option<u16>,
     /// IOConfigData's MaxInputLength and MaxOutputLength.
     io: [IoLimit; 2],
-    adapts_real_identification: bool,
     power_on_to_comm_ready: Option<u32>,
     network_component_diagnosis: bool,
     /// Each port's flags, in [`PORT_FLAGS`]' order, and link state
     /// diagnosis.
-    port_flags: [bool; 3],
+    port_flags: [bool; 2],
     link_state_diagnosis: Option<String>,
 }
 
 /// The ports' flags: each port's attribute, and the key that says it for
 /// every port.
-const PORT_FLAGS: [(&str, &str); 3] = [
+const PORT_FLAGS: [(&str, &str); 2] = [
     ("PortDeactivationSupported", "port_deactivation"),
     ("CheckMAUTypeSupported", "check_mau_type"),
-    (
-        "CheckMAUTypeDifferenceSupported",
-        "check_mau_type_difference",
-    ),
 ];
 const LINK_STATES: [&str; 3] = ["Up", "Down", "Up+Down"];
 
@@ -106,7 +101,6 @@ impl Declared {
             io,
             last_slot: last_slot(notes, attributes).filter(|&last| last > MODULE_SLOT),
             mau_type_adjustable: mau_type_adjustable(dap, notes),
-            adapts_real_identification: flag("AdaptsRealIdentification"),
             power_on_to_comm_ready: power_on_to_comm_ready(attributes, notes),
             network_component_diagnosis: interface_flag("NetworkComponentDiagnosisSupported"),
             port_flags: PORT_FLAGS.map(|(name, key)| {
@@ -150,10 +144,9 @@ impl Declared {
             application_relations: None,
             mau_type_adjustable: false,
             last_slot: None,
-            adapts_real_identification: false,
             power_on_to_comm_ready: None,
             network_component_diagnosis: false,
-            port_flags: [false; 3],
+            port_flags: [false; 2],
             link_state_diagnosis: None,
         }
     }
@@ -198,12 +191,6 @@ impl Declared {
             "mau_type_adjustable",
             self.mau_type_adjustable,
             base.mau_type_adjustable,
-        );
-        flag(
-            &mut keys,
-            "adapts_real_identification",
-            self.adapts_real_identification,
-            base.adapts_real_identification,
         );
         if self.power_on_to_comm_ready != base.power_on_to_comm_ready {
             keys.extend(

@@ -57,10 +57,6 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         max_input_length: stated_or(input, inherited.max_input_length)?,
         max_output_length: stated_or(output, inherited.max_output_length)?,
         last_slot: stated_or(last_slot, inherited.last_slot)?,
-        adapts_real_identification: flag(
-            &given.adapts_real_identification,
-            inherited.adapts_real_identification,
-        ),
         power_on_to_comm_ready: given
             .power_on_to_comm_ready
             .as_ref()
@@ -72,10 +68,6 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         ),
         port_deactivation: flag(&given.port_deactivation, inherited.port_deactivation),
         check_mau_type: flag(&given.check_mau_type, inherited.check_mau_type),
-        check_mau_type_difference: flag(
-            &given.check_mau_type_difference,
-            inherited.check_mau_type_difference,
-        ),
         link_state_diagnosis: given
             .link_state_diagnosis
             .as_ref()
