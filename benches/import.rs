@@ -7,7 +7,7 @@
 //!   another device (E601, README's table), so `gsdc import` writes nothing
 //!   and exits 1 after the same work, and the build measured is of the
 //!   description it made ([`gsdc::import::Imported::another_device`]),
-//!   whose GSDML file is 979 kB: the import reads the whole file, the
+//!   whose GSDML file is 982 kB: the import reads the whole file, the
 //!   build writes the part the format can say;
 //! - the largest GSDML file whose import is written (its round trip clean)
 //!   among the corpus's and those the shipped descriptions build (MV810's;
