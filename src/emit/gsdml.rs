@@ -404,8 +404,9 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 /// The interface and its ports. In gsdc's numbering their submodule ident
 /// numbers are their subslot numbers, the convention p-net also follows.
 /// DCP_HelloSupported (fast start-up) stays off: the description does not
-/// claim it, and `[profinet.stack] power_on_to_comm_ready` alone does not. The DCP and PTP boundaries are declared as every corpus file
-/// of PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
+/// claim it, and `[profinet.stack] power_on_to_comm_ready` alone does not.
+/// The DCP and PTP boundaries are declared as every corpus file of
+/// PNIO_Version V2.32 or later declares them (12 of 12), and as TIA
 /// Portal's checker requires of V2.31 and later.
 fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.open("SystemDefinedSubmoduleList", &[]);

@@ -1,7 +1,9 @@
 //! What the device access point and its interface declare of the
 //! firmware: send clocks, conformance and netload class, the writable I&M
-//! records (the DAP's and the modules') and media redundancy. What the description leaves out is gsdc's
-//! default, said (W104) where the description would state it.
+//! records (the DAP's and the modules') and media redundancy, with the
+//! RT_CLASS_3 and isochronous mode `super::irt` lowers. What the
+//! description leaves out is gsdc's default, said (W104) where the
+//! description would state it.
 
 use crate::description::{
     self as raw, ConformanceClass as RawConformance, NetloadClass as RawNetload,
@@ -138,7 +140,7 @@ pub(super) fn send_clock(
     Some(values)
 }
 
-/// E151: class C is the class of an RT_CLASS_3 device, and only its.
+/// E151: class C is the class of an RT_CLASS_3 device, and of no other.
 fn conformance_class(
     cx: &mut Checker,
     class: &Spanned<RawConformance>,
