@@ -117,8 +117,18 @@ fn isochronous(
     })
 }
 
-/// Reduction ratios, each once, from 1 to 512, in the description's order.
+/// Reduction ratios, at least one (an empty `ReductionRatio` is no value
+/// list), each once, from 1 to 512, in the description's order.
 fn reduction_ratios(cx: &mut Checker, ratios: &Spanned<Vec<Spanned<u16>>>) -> Option<Vec<u16>> {
+    if ratios.get_ref().is_empty() {
+        cx.push(
+            Diagnostic::error("E117", "profinet.irt.reduction_ratio is empty")
+                .at(ratios.span())
+                .label("empty")
+                .help("list the reduction ratios the interface accepts in RT_CLASS_3, e.g. [1, 2, 4, 8, 16]"),
+        );
+        return None;
+    }
     let mut seen = BTreeSet::new();
     let mut values = Vec::new();
     for ratio in ratios.get_ref() {
