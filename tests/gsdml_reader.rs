@@ -116,14 +116,25 @@ fn valid_corpus_has_only_the_known_findings() {
 
 /// The GSDML files gsdc writes for the shipped descriptions and the valid
 /// fixtures (one with PROFIdrive's access point in its largest module):
-/// (name, text).
-fn generated_gsdml() -> Vec<(String, String)> {
-    descriptions::all_valid()
-        .iter()
-        .flat_map(|(_, ir)| gsdc::compile(ir).unwrap())
-        .filter(|a| a.file_name.ends_with(".xml"))
-        .map(|a| (a.file_name, String::from_utf8(a.contents).unwrap()))
-        .collect()
+/// (name, text, whether its first access point's MaxInputLength and
+/// MaxOutputLength are stated in `[profinet.stack]` rather than what the
+/// modules need).
+fn generated_gsdml_with_limits() -> Vec<(String, String, [bool; 2])> {
+    let mut files = Vec::new();
+    for (_, ir) in descriptions::all_valid() {
+        let Some(profinet) = &ir.profinet else {
+            continue;
+        };
+        let stack = &profinet.daps[0].stack;
+        let stated = [stack.max_input_length, stack.max_output_length].map(|l| l.is_some());
+        for file in gsdc::compile(&ir).unwrap() {
+            if file.file_name.ends_with(".xml") {
+                let text = String::from_utf8(file.contents).unwrap();
+                files.push((file.file_name, text, stated));
+            }
+        }
+    }
+    files
 }
 
 /// One reading of IOConfigData on both sides: the MaxInputLength and
@@ -131,16 +142,18 @@ fn generated_gsdml() -> Vec<(String, String)> {
 /// largest module, status bytes included. One byte less and the checker
 /// finds a module that never fits (E310). Should the emitter stop counting
 /// IOPS/IOCS, or the checker, or either count something the other does
-/// not, one of the two assertions fails.
+/// not, one of the two assertions fails. A limit the description states
+/// (more than the need) is left out of the second.
 #[test]
 fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
-    let files = generated_gsdml();
+    let files = generated_gsdml_with_limits();
     assert_eq!(
         files.len(),
         7,
         "the shipped PROFINET descriptions and fixtures"
     );
-    for (name, text) in &files {
+    let mut lowered_limits = 0;
+    for (name, text, stated) in &files {
         let io_findings = |text: &str| -> Vec<&'static str> {
             check(text, Some(name))
                 .iter()
@@ -149,7 +162,11 @@ fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
                 .collect()
         };
         assert_eq!(io_findings(text), Vec::<&str>::new(), "{name}");
-        for attribute in ["MaxInputLength", "MaxOutputLength"] {
+        for (attribute, _) in ["MaxInputLength", "MaxOutputLength"]
+            .into_iter()
+            .zip(stated)
+            .filter(|(_, stated)| !**stated)
+        {
             let at = text.find(&format!("{attribute}=\"")).unwrap() + attribute.len() + 2;
             let digits = &text[at..at + text[at..].find('"').unwrap()];
             let value: u32 = digits.parse().unwrap();
@@ -159,8 +176,11 @@ fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
                 !found.is_empty() && found.iter().all(|c| *c == "E310"),
                 "{name}: {attribute} {value} - 1: {found:?}"
             );
+            lowered_limits += 1;
         }
     }
+    // Every file but profidrive's, whose limits are stated.
+    assert_eq!(lowered_limits, 2 * (files.len() - 1));
 }
 
 /// Each broken copy of the p-net sample with the errors it deserves, in

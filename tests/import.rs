@@ -1303,10 +1303,13 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
 }
 
 /// MOVI-C's stack beyond FENA's (its line 26: `PowerOnToCommReady="5000"`;
-/// line 82, the interface: `NetworkComponentDiagnosisSupported="true"`;
-/// lines 92 and 116, both ports: `PortDeactivationSupported` and
-/// `CheckMAUTypeSupported` true, `LinkStateDiagnosisCapability="Up+Down"`)
-/// imports into `[profinet.stack]`, and the round trip finds none of these
+/// line 38: `IOConfigData MaxInputLength="100" MaxOutputLength="100"
+/// MaxDataLength="200"`; line 82, the interface:
+/// `NetworkComponentDiagnosisSupported="true"`; line 86: `TimingProperties
+/// SendClock="32 64 128" ... PreferredSendClock="32"`; lines 92 and 116,
+/// both ports: `PortDeactivationSupported` and `CheckMAUTypeSupported`
+/// true, `LinkStateDiagnosisCapability="Up+Down"`) imports into `[profinet]`
+/// and `[profinet.stack]`, and the round trip finds none of these
 /// attributes changed. `AdaptsRealIdentification` and
 /// `CheckMAUTypeDifferenceSupported`, which gsdc's GSDML V2.32 does not
 /// write, are left out, each a warning, and the round trip names them.
@@ -1315,9 +1318,15 @@ fn movi_cs_stack_attributes_import() {
     let imported = corpus_import(MOVI_C);
     assert_says(
         another_device(&imported),
-        &["power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\nlink_state_diagnosis = \"Up+Down\"\n"],
+        &[
+            "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
+            "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\nlink_state_diagnosis = \"Up+Down\"\n",
+            "max_input_length = 100\nmax_output_length = 100\nmax_data_length = 200\n",
+        ],
     );
     let imported_attributes = [
+        "MaxDataLength",
+        "TimingProperties@PreferredSendClock",
         "PowerOnToCommReady",
         "NetworkComponentDiagnosisSupported",
         "PortDeactivationSupported",
@@ -1770,6 +1779,43 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
     assert!(
         !toml.contains("max_input_length = 13"),
         "the need is not stated"
+    );
+}
+
+/// MaxDataLength, stated for the first access point, is every later one's
+/// too (the second of own_idents needs 20 bytes in and out together, and
+/// takes the first's 22): the import states it once and the file rebuilds
+/// the same. A later access point without one, under a first with one, is
+/// one the description cannot say: left out, saying why.
+#[test]
+fn a_later_access_points_max_data_length_is_the_firsts_or_it_is_left_out() {
+    let fixture =
+        std::fs::read_to_string(support::checkout("tests/fixtures/valid/own_idents.toml")).unwrap();
+    let text = fixture.replacen(
+        "application_relations = 2\n",
+        "application_relations = 2\nmax_data_length = 22\n",
+        1,
+    );
+    assert_ne!(text, fixture);
+    let (ir, diagnostics) = descriptions::load_text("own_idents.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let stated = " MaxDataLength=\"22\"";
+    assert_eq!(gsdml.matches(stated).count(), 3);
+    let imported = import(&file_name, gsdml.as_bytes());
+    let toml = written(&imported, "own_idents with MaxDataLength");
+    assert_eq!(toml.matches("max_data_length = 22\n").count(), 1, "{toml}");
+    assert!(!toml.contains("max_data_length = 20"));
+
+    let second = gsdml.match_indices(stated).nth(1).unwrap().0;
+    let without = format!("{}{}", &gsdml[..second], &gsdml[second + stated.len()..]);
+    let imported = import(&file_name, without.as_bytes());
+    assert!(imported.description.is_none());
+    let why = "it has no IOConfigData@MaxDataLength, which the first has";
+    assert!(
+        messages(&imported, "W600").iter().any(|m| m.contains(why)),
+        "{:#?}",
+        messages(&imported, "W600")
     );
 }
 

@@ -589,6 +589,9 @@ pub struct Profinet {
     pub fail_safe_values: Option<Spanned<FailSafeValues>>,
     /// SendClock factors (units of 31.25 us) the interface accepts.
     pub send_clock: Option<Spanned<Vec<Spanned<u16>>>>,
+    /// `TimingProperties@PreferredSendClock`: the one of them the device
+    /// works best with.
+    pub preferred_send_clock: Option<Spanned<u16>>,
     pub conformance_class: Option<Spanned<ConformanceClass>>,
     /// Isochronous real time (RT_CLASS_3): conformance class C.
     pub irt: Option<Spanned<irt::Irt>>,
@@ -740,6 +743,8 @@ pub struct Stack {
     /// `IOConfigData`'s limits, where more than the modules need.
     pub max_input_length: Option<Spanned<u16>>,
     pub max_output_length: Option<Spanned<u16>>,
+    /// `IOConfigData@MaxDataLength`: the most bytes in and out together.
+    pub max_data_length: Option<Spanned<u16>>,
     /// Each port's `MAUTypeItem@AdjustSupported`: the controller may set
     /// the port's MAU type.
     pub mau_type_adjustable: Option<Spanned<bool>>,

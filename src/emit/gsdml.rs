@@ -262,13 +262,15 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     );
     module_info(doc, &dap.name, &dap.info, &values);
     certification_info(doc, &p.interface_properties);
-    doc.leaf(
-        "IOConfigData",
-        &[
-            ("MaxInputLength", &dap.max_input_length.to_string()),
-            ("MaxOutputLength", &dap.max_output_length.to_string()),
-        ],
+    let mut io = vec![
+        ("MaxInputLength", dap.max_input_length.to_string()),
+        ("MaxOutputLength", dap.max_output_length.to_string()),
+    ];
+    io.extend(
+        dap.max_data_length
+            .map(|n| ("MaxDataLength", n.to_string())),
     );
+    doc.leaf("IOConfigData", &borrowed(&io));
     doc.open("UseableModules", &[]);
     let slot = MODULE_SLOT.to_string();
     for m in dap.modules.iter().map(|&i| &p.modules[i]) {
@@ -459,16 +461,14 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
         .collect();
     relations.push(("StartupMode", "Legacy;Advanced"));
     doc.open("ApplicationRelations", &relations);
-    doc.leaf(
-        "TimingProperties",
-        &[
-            (
-                "SendClock",
-                &blank_separated(&p.interface_properties.send_clock),
-            ),
-            ("ReductionRatio", "1 2 4 8 16 32 64 128 256 512"),
-        ],
-    );
+    let properties = &p.interface_properties;
+    let preferred = properties.preferred_send_clock.map(|c| c.to_string());
+    let mut timing = vec![
+        ("SendClock", blank_separated(&properties.send_clock)),
+        ("ReductionRatio", "1 2 4 8 16 32 64 128 256 512".to_string()),
+    ];
+    timing.extend(preferred.map(|c| ("PreferredSendClock", c)));
+    doc.leaf("TimingProperties", &borrowed(&timing));
     if let Some(irt) = irt {
         let preferred = irt.preferred_send_clock.map(|c| c.to_string());
         let mut timing = vec![

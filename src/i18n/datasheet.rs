@@ -230,6 +230,7 @@ phrases! {
         zh: "最大 IO 数据字节数，输入、输出（含 IOPS、IOCS）",
         de: "IO-Datenbytes höchstens, Eingänge und Ausgänge (mit IOPS und IOCS)",
     };
+    IO_DATA_TOGETHER = { en: "together", zh: "合计", de: "zusammen" };
     PROFINET_DEVICE = { en: "PROFINET device", zh: "PROFINET 设备", de: "PROFINET-Gerät" };
     IRT = {
         en: "Isochronous real time (RT_CLASS_3)",

@@ -50,6 +50,7 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("CertificationInfo@NetloadClass", None),
     ("IOConfigData@MaxInputLength", None),
     ("IOConfigData@MaxOutputLength", None),
+    ("IOConfigData@MaxDataLength", None),
     ("PowerOnToCommReady", None),
     // Read by `super::symbol`, or left out there with its reason.
     (super::symbol::GSDML_SYMBOL_TYPE, Some("DeviceSymbol")),
@@ -64,6 +65,10 @@ const INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("ApplicationRelations@NumberOfAR", None),
     ("ApplicationRelations@StartupMode", Some("Legacy;Advanced")),
     ("ApplicationRelations/TimingProperties@SendClock", None),
+    (
+        "ApplicationRelations/TimingProperties@PreferredSendClock",
+        None,
+    ),
     (
         "ApplicationRelations/TimingProperties@ReductionRatio",
         Some("1 2 4 8 16 32 64 128 256 512"),
@@ -1005,11 +1010,15 @@ fn name_of_station(attributes: &[Attribute], notes: &mut Notes) -> String {
 fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes, has_irt: bool) {
     let interface = submodules_of(dap, SubmoduleKind::Interface).next();
     let interface_attributes = interface.map_or(&[][..], |s| &s.attributes[..]);
-    if let Some(clocks) = attribute(
+    let clocks = attribute(
         interface_attributes,
         "ApplicationRelations/TimingProperties@SendClock",
-    ) {
+    );
+    if let Some(clocks) = clocks {
         out.key("send_clock", list(clocks.split_whitespace()));
+    }
+    if let Some(preferred) = preferred_send_clock(interface_attributes, clocks, notes) {
+        out.key("preferred_send_clock", preferred);
     }
     if let Some(class) = attribute(&dap.item.attributes, "CertificationInfo@ConformanceClass") {
         out.string(
@@ -1034,6 +1043,30 @@ fn interface_properties(out: &mut TomlOut, dap: &Dap, notes: &mut Notes, has_irt
     if mrp_client(dap) {
         out.key("media_redundancy", true);
     }
+}
+
+/// TimingProperties' PreferredSendClock, when it is one of the send clocks
+/// (the schema's default, 32, when SendClock is not written), as the
+/// description's `preferred_send_clock` is (E150).
+fn preferred_send_clock(
+    interface: &[Attribute],
+    clocks: Option<&str>,
+    notes: &mut Notes,
+) -> Option<u16> {
+    const NAME: &str = "ApplicationRelations/TimingProperties@PreferredSendClock";
+    let (a, preferred) = found(interface, NAME)?;
+    let offered = |clock: u16| {
+        clocks
+            .unwrap_or("32")
+            .split_whitespace()
+            .any(|c| c.parse() == Ok(clock))
+    };
+    if let Some(clock) = preferred.parse().ok().filter(|&c| offered(c)) {
+        return Some(clock);
+    }
+    let why = "the description's preferred_send_clock is one of its send clocks (E150)";
+    notes.unsaid(&format!("PreferredSendClock `{preferred}`"), &a.place, why);
+    None
 }
 
 /// Conformance class C (isochronous real time, RT_CLASS_3) is written as

@@ -288,6 +288,8 @@ pub const MODULE_SLOT: u16 = 1;
 pub struct InterfaceProperties {
     /// SendClock factors, ascending; units of 31.25 us.
     pub send_clock: Vec<u16>,
+    /// `TimingProperties@PreferredSendClock`, one of `send_clock`.
+    pub preferred_send_clock: Option<u16>,
     pub conformance_class: ConformanceClass,
     pub netload_class: NetloadClass,
     /// I&M records the controller may write, ascending.
@@ -364,6 +366,10 @@ pub struct Dap {
     /// IOConfigData: the most bytes the plugged submodules exchange.
     pub max_input_length: u16,
     pub max_output_length: u16,
+    /// IOConfigData's MaxDataLength: the stack's, or what the plugged
+    /// submodules need in and out together where more; unwritten when the
+    /// stack states none.
+    pub max_data_length: Option<u16>,
     pub stack: Stack,
 }
 
@@ -387,6 +393,9 @@ pub struct Stack {
     /// need); else what they need (`Dap::max_input_length`).
     pub max_input_length: Option<u16>,
     pub max_output_length: Option<u16>,
+    /// `IOConfigData@MaxDataLength`, the most bytes in and out together,
+    /// where stated (never less than the modules need).
+    pub max_data_length: Option<u16>,
     /// Each port's `MAUTypeItem@AdjustSupported`.
     pub mau_type_adjustable: bool,
     /// `PhysicalSlots` 0 to it, where more than the module's slot.

@@ -204,7 +204,7 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     ];
     if let [dap] = p.daps.as_slice() {
         rows.insert(2, (lang.t(w::PORTS), text(dap.ports.len().to_string())));
-        rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap)));
+        rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap, lang)));
     }
     let properties = &p.interface_properties;
     if let Some(irt) = &properties.irt {
@@ -267,11 +267,12 @@ fn isochronous_summary(iso: &Isochronous, lang: Lang) -> String {
     }
 }
 
-fn max_io_data(dap: &Dap) -> Vec<Run> {
-    text(format!(
-        "{}, {}",
-        dap.max_input_length, dap.max_output_length
-    ))
+fn max_io_data(dap: &Dap, lang: Lang) -> Vec<Run> {
+    let each_way = format!("{}, {}", dap.max_input_length, dap.max_output_length);
+    text(match dap.max_data_length {
+        Some(together) => format!("{each_way}; {} {together}", lang.t(w::IO_DATA_TOGETHER)),
+        None => each_way,
+    })
 }
 
 /// One row per device access point: what tells the versions of the card
@@ -298,7 +299,7 @@ fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
                 dap.hardware_release.as_deref().map_or_else(Vec::new, code),
                 dap.software_release.as_deref().map_or_else(Vec::new, code),
                 text(dap.ports.len().to_string()),
-                max_io_data(dap),
+                max_io_data(dap, lang),
                 text(modules),
             ]
         })

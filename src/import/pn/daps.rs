@@ -22,7 +22,10 @@ const SHARED: &[&str] = &[
     "CertificationInfo@ConformanceClass",
     "CertificationInfo@NetloadClass",
 ];
-const SHARED_INTERFACE: &[&str] = &["ApplicationRelations/TimingProperties@SendClock"];
+const SHARED_INTERFACE: &[&str] = &[
+    "ApplicationRelations/TimingProperties@SendClock",
+    "ApplicationRelations/TimingProperties@PreferredSendClock",
+];
 
 /// A later device access point, as the description says it.
 pub(super) struct DapEntry<'a> {

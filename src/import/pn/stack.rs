@@ -22,8 +22,11 @@ pub(super) struct Declared {
     mau_type_adjustable: bool,
     /// PhysicalSlots' last, where more than the module's slot.
     last_slot: Option<u16>,
-    /// IOConfigData's MaxInputLength and MaxOutputLength.
+    /// IOConfigData's MaxInputLength and MaxOutputLength, and its
+    /// MaxDataLength (both ways together: written only when the file has
+    /// it).
     io: [IoLimit; 2],
+    data: IoLimit,
     power_on_to_comm_ready: Option<u32>,
     network_component_diagnosis: bool,
     /// Each port's flags, in [`PORT_FLAGS`]' order, and link state
@@ -92,13 +95,16 @@ impl Declared {
             .map(|m| (m.layout, m.access_point.is_some()));
         let ports = submodules_of(dap, SubmoduleKind::Port).count();
         let needed = crate::lower::io_length(offered, ports);
+        // The same each way: the modules' words are as many in as out.
         let io = ["MaxInputLength", "MaxOutputLength"]
-            .map(|name| io_limit(attributes, &format!("IOConfigData@{name}"), needed, notes));
+            .map(|name| io_limit(attributes, name, needed, notes));
+        let data = io_limit(attributes, "MaxDataLength", 2 * needed, notes);
         let interface_flag = |name: &str| {
             interface.is_some_and(|s| attribute(&s.attributes, name).is_some_and(is_true))
         };
         Declared {
             io,
+            data,
             last_slot: last_slot(notes, attributes).filter(|&last| last > MODULE_SLOT),
             mau_type_adjustable: mau_type_adjustable(dap, notes),
             power_on_to_comm_ready: power_on_to_comm_ready(attributes, notes),
@@ -129,6 +135,9 @@ impl Declared {
         if self.device_access_ars.is_none() && first.device_access_ars.is_some() {
             return Err("it has no NumberOfDeviceAccessAR, which the first has: the description's later device access points take the first's".into());
         }
+        if self.data.file.is_none() && first.data.file.is_some() {
+            return Err("it has no IOConfigData@MaxDataLength, which the first has: the description's later device access points take the first's".into());
+        }
         Ok(self.keys_over(first))
     }
 
@@ -136,6 +145,10 @@ impl Declared {
     fn gsdc(&self) -> Declared {
         Declared {
             io: self.io.map(|l| IoLimit { file: None, ..l }),
+            data: IoLimit {
+                file: None,
+                ..self.data
+            },
             address_assignment: None,
             device_access: false,
             device_access_ars: None,
@@ -239,17 +252,27 @@ impl Declared {
                 keys.push((key, wanted.to_string()));
             }
         }
+        // Only where the file writes one: `over_first` refuses a later DAP
+        // without one under the first's.
+        let inherited = base.data.file.map(|b| b.max(self.data.needed));
+        if let Some(data) = self.data.file.filter(|&d| Some(d) != inherited) {
+            keys.push(("max_data_length", data.to_string()));
+        }
         keys
     }
 }
 
-/// An IOConfigData length; one less than the modules need, or more than
-/// the description takes, is left out (gsdc writes the need), and the
-/// round trip judges it.
+/// An IOConfigData length, `needed` what the modules need as gsdc counts
+/// it; one less than that, or more than the description takes, is left
+/// out, and the round trip judges it.
 fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes) -> IoLimit {
-    let max = crate::lower::MAX_IO_LENGTH;
-    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}), which it writes without one, to {max}");
-    let file = number(notes, attributes, name, needed..=max, &why);
+    let max = match name {
+        "MaxDataLength" => 2 * crate::lower::MAX_IO_LENGTH,
+        _ => crate::lower::MAX_IO_LENGTH,
+    };
+    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}) to {max}");
+    let name = format!("IOConfigData@{name}");
+    let file = number(notes, attributes, &name, needed..=max, &why);
     IoLimit { file, needed }
 }
 

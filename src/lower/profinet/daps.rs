@@ -35,8 +35,7 @@ pub fn lower(
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
     let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack")?;
-    let (max_input_length, max_output_length) =
-        stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
+    let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
         submodule_id: "IDS_DAP".into(),
@@ -51,8 +50,9 @@ pub fn lower(
         ports: first.ports,
         media_redundancy: first.media_redundancy,
         modules: all_modules,
-        max_input_length,
-        max_output_length,
+        max_input_length: io.input,
+        max_output_length: io.output,
+        max_data_length: io.data,
         stack: first_stack,
     }];
     let mut complete = true;
@@ -131,8 +131,7 @@ fn lower_entry(
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
     let needed = io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
     let stack = stack::lower(cx, &given.stack, &first.stack, &what("stack"))?;
-    let (max_input_length, max_output_length) =
-        stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
+    let io = stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
     Some(Dap {
         id: format!("IDD_DAP_{number}"),
@@ -151,8 +150,9 @@ fn lower_entry(
         ports,
         media_redundancy,
         modules: offered,
-        max_input_length,
-        max_output_length,
+        max_input_length: io.input,
+        max_output_length: io.output,
+        max_data_length: io.data,
         stack,
     })
 }

@@ -42,6 +42,12 @@ pub fn properties(
             DEFAULT_SEND_CLOCK.to_vec()
         }
     };
+    let preferred_send_clock = preferred_send_clock(
+        cx,
+        p.preferred_send_clock.as_ref(),
+        &send_clock,
+        "RT_CLASS_1",
+    )?;
     let conformance_class = match &p.conformance_class {
         Some(class) => conformance_class(cx, class, irt.is_some())?,
         None if irt.is_some() => ConformanceClass::C,
@@ -72,6 +78,7 @@ pub fn properties(
     };
     Some(InterfaceProperties {
         send_clock,
+        preferred_send_clock,
         conformance_class,
         netload_class,
         writeable_im_records: dap_im_records,
@@ -95,6 +102,35 @@ pub fn check_ring_ports(cx: &mut Checker, client: Option<Range<usize>>, ports: u
                 .help("an MRP client closes the ring through two ports: set ports = 2, or media_redundancy = false"),
         );
     }
+}
+
+/// A preferred send clock, when stated: one of `offered`, the send clocks
+/// of the real-time `class` (E150).
+pub(super) fn preferred_send_clock(
+    cx: &mut Checker,
+    preferred: Option<&Spanned<u16>>,
+    offered: &[u16],
+    class: &str,
+) -> Option<Option<u16>> {
+    let Some(preferred) = preferred else {
+        return Some(None);
+    };
+    let value = *preferred.get_ref();
+    if offered.contains(&value) {
+        return Some(Some(value));
+    }
+    cx.push(
+        Diagnostic::error(
+            "E150",
+            format!("the preferred send clock {value} is not in the list"),
+        )
+        .at(preferred.span())
+        .label("not offered")
+        .help(format!(
+            "prefer one of the send clocks the interface accepts in {class}"
+        )),
+    );
+    None
 }
 
 /// E150: ascending factors from 1 to 128, each once, 32 among them.

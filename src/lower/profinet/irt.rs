@@ -2,7 +2,7 @@
 //! isochronous mode of the modules, each value checked against the range
 //! the schema gives its attribute.
 
-use super::interface::send_clock;
+use super::interface::{preferred_send_clock, send_clock};
 use crate::description::irt::{self as raw, ForwardingMode, StartupMode};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{Irt, Isochronous};
@@ -38,24 +38,12 @@ pub fn timing(
 fn irt(cx: &mut Checker, irt: &Spanned<raw::Irt>) -> Option<Irt> {
     let i = irt.get_ref();
     let send_clock = send_clock(cx, &i.send_clock)?;
-    let preferred_send_clock = match &i.preferred_send_clock {
-        Some(p) if !send_clock.contains(p.get_ref()) => {
-            cx.push(
-                Diagnostic::error(
-                    "E150",
-                    format!(
-                        "the preferred send clock {} is not in the list",
-                        p.get_ref()
-                    ),
-                )
-                .at(p.span())
-                .label("not offered")
-                .help("prefer one of the send clocks the interface accepts in RT_CLASS_3"),
-            );
-            return None;
-        }
-        p => p.as_ref().map(|p| *p.get_ref()),
-    };
+    let preferred_send_clock = preferred_send_clock(
+        cx,
+        i.preferred_send_clock.as_ref(),
+        &send_clock,
+        "RT_CLASS_3",
+    )?;
     Some(Irt {
         max_bridge_delay: *i.max_bridge_delay.get_ref(),
         max_number_ir_frame_data: cx.spanned_in_range(

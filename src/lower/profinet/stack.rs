@@ -42,6 +42,11 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         "max_output_length",
         (1, MAX_IO_LENGTH),
     );
+    let data = number(
+        &given.max_data_length,
+        "max_data_length",
+        (1, 2 * MAX_IO_LENGTH),
+    );
     let last_slot = number(&given.last_slot, "last_slot", (MODULE_SLOT, MAX_SLOT));
     let stack = Stack {
         address_assignment,
@@ -56,6 +61,7 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
         application_relations: stated_or(relations, inherited.application_relations)?,
         max_input_length: stated_or(input, inherited.max_input_length)?,
         max_output_length: stated_or(output, inherited.max_output_length)?,
+        max_data_length: stated_or(data, inherited.max_data_length)?,
         last_slot: stated_or(last_slot, inherited.last_slot)?,
         power_on_to_comm_ready: given
             .power_on_to_comm_ready
@@ -105,51 +111,61 @@ pub(crate) const MAX_SLOT: u16 = 0x7FFF;
 pub(crate) const MAX_IO_LENGTH: u16 = 1440;
 
 /// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
-/// way: the stack's limits where stated, else the need. E174 where the
-/// DAP's own `stack` (`given`) states a limit less than its need; a later
-/// DAP that takes the first's limit and needs more (more ports) writes its
-/// need, as `gsdc import` expects.
+/// way: the stack's limits where stated, else the need, and MaxDataLength
+/// (in and out together) where stated. E174 where the DAP's own `stack`
+/// (`given`) states a limit less than its need; a later DAP that takes the
+/// first's limit and needs more (more ports) writes its need, as `gsdc
+/// import` expects.
 pub fn io_lengths(
     cx: &mut Checker,
     needed: (u16, u16),
     stack: &Stack,
     given: &raw::Stack,
     at: &str,
-) -> (u16, u16) {
-    let mut length =
-        |value: Option<u16>, needed: u16, stated: &Option<Spanned<u16>>, name: &str| {
-            let Some(value) = value else {
-                return needed;
-            };
-            if let (true, Some(stated)) = (value < needed, stated) {
-                cx.push(
-                    Diagnostic::error(
-                        "E174",
-                        format!("{at}.{name} = {value} is less than the modules need ({needed})"),
-                    )
-                    .at(stated.span())
-                    .label("too small")
-                    .help(format!(
-                    "state at least {needed}, or leave it out: gsdc writes what the modules need"
-                )),
-                );
-            }
-            value.max(needed)
+) -> IoLengths {
+    let mut length = |value: Option<u16>, needed: u16, name: &str| {
+        let Some(value) = value else {
+            return needed;
         };
-    (
-        length(
-            stack.max_input_length,
-            needed.0,
-            &given.max_input_length,
-            "max_input_length",
-        ),
-        length(
-            stack.max_output_length,
-            needed.1,
-            &given.max_output_length,
-            "max_output_length",
-        ),
-    )
+        let stated = match name {
+            "max_input_length" => &given.max_input_length,
+            "max_output_length" => &given.max_output_length,
+            _ => &given.max_data_length,
+        };
+        if let (true, Some(stated)) = (value < needed, stated) {
+            let without = match name {
+                "max_data_length" => "MaxDataLength is unwritten",
+                _ => "gsdc writes what the modules need",
+            };
+            cx.push(
+                Diagnostic::error(
+                    "E174",
+                    format!("{at}.{name} = {value} is less than the modules need ({needed})"),
+                )
+                .at(stated.span())
+                .label("too small")
+                .help(format!(
+                    "state at least {needed}, or leave it out: {without}"
+                )),
+            );
+        }
+        value.max(needed)
+    };
+    IoLengths {
+        input: length(stack.max_input_length, needed.0, "max_input_length"),
+        output: length(stack.max_output_length, needed.1, "max_output_length"),
+        // In and out together.
+        data: stack
+            .max_data_length
+            .map(|data| length(Some(data), needed.0 + needed.1, "max_data_length")),
+    }
+}
+
+/// What a DAP's IOConfigData writes.
+pub struct IoLengths {
+    pub input: u16,
+    pub output: u16,
+    pub data: Option<u16>,
 }
 
 /// The ways of address assignment, each once, at least one.
