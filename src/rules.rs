@@ -136,6 +136,7 @@ pub const RULES: &[Rule] = &[
     rule("E186", "fail-safe values without a settings record"),
     rule("E187", "an add value's DataItems wider than the add value"),
     rule("E188", "isochronous mode without isochronous real time"),
+    rule("E189", "a vendor keyword that is not one"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

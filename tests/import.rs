@@ -1221,6 +1221,31 @@ fn fenas_standard_telegram_2_imports_as_the_profiles() {
         .any(|m| m.starts_with("module `ID_MODULE_STD_TGM2` is not imported")));
 }
 
+/// Siemens' SIMODRIVE 611U GSD has three keywords of its own (its lines
+/// 49 to 51: `OffsetFirstMPDBlock`, `ETERDelay` and `MaxResponseDelay`,
+/// each `= 0`), which the specification does not have: the import states
+/// them in `[profibus.vendor_keywords]`, in the file's order, the build
+/// writes them, and the round trip finds the same device.
+#[test]
+fn siemens_own_keywords_import_as_vendor_keywords() {
+    let name = "ivangre4__SIEM8055.GSD";
+    let imported = import(name, &support::corpus_file(&format!("gsd/{name}")));
+    let toml = written(&imported, name);
+    assert_says(
+        toml,
+        &["[profibus.vendor_keywords]\nOffsetFirstMPDBlock = 0\nETERDelay = 0\nMaxResponseDelay = 0\n"],
+    );
+    for keyword in ["OffsetFirstMPDBlock", "ETERDelay", "MaxResponseDelay"] {
+        assert!(
+            !messages(&imported, "W600")
+                .iter()
+                .any(|m| m.contains(keyword)),
+            "{keyword}"
+        );
+    }
+    assert!(imported.round_trip.is_clean());
+}
+
 const FENA: &str = "GSDML-V2.33-ABB-FENA-20170914.xml";
 const MOVI_C: &str = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
 

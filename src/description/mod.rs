@@ -453,6 +453,18 @@ pub struct Profibus {
     pub dpv1: Option<Spanned<Dpv1>>,
     pub isochronous: Option<Spanned<dp::Isochronous>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
+    /// Keywords of the vendor's own, which the GSD specification does not
+    /// have, written as they are (Siemens' `ETERDelay`).
+    #[serde(default)]
+    pub vendor_keywords: BTreeMap<Spanned<String>, Spanned<VendorValue>>,
+}
+
+/// A vendor keyword's value: a number or a string.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum VendorValue {
+    Number(i64),
+    Text(String),
 }
 
 #[derive(Debug, Deserialize)]

@@ -51,6 +51,7 @@ struct Context<'a> {
     dpv1: Option<Dpv1>,
     /// Prm_Block_Structure and isochronous mode (GSD revision 4), as stated.
     dp_v2: Vec<(&'static str, u32)>,
+    vendor_keywords: &'a [(String, String)],
     prm_len: u16,
     /// Max_User_Prm_Data_Len: the telegram's length, or more when stated;
     /// unwritten when 0 and unstated (a slave without parameters).
@@ -257,6 +258,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
             .concat(),
         }),
         dp_v2: dp_v2(p),
+        vendor_keywords: &p.vendor_keywords,
         prm_len: p.user_prm.len,
         prm_max_len: match p.user_prm.max_len {
             Some(max) => Some(max.into()),

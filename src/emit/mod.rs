@@ -348,7 +348,12 @@ fn gsd_file(ir: &Ir) -> Part {
         return (Vec::new(), Vec::new());
     };
     let text = gsd::emit(ir, profibus);
-    let mut problems = verify_gsd(&profibus.file_name, &text, profibus.latin1);
+    let mut problems = verify_gsd(
+        &profibus.file_name,
+        &text,
+        profibus.latin1,
+        &profibus.vendor_keywords,
+    );
     // One byte a character: ASCII as it is, and the Latin-1 characters a
     // description with `charset = "latin-1"` may have (the loader refuses
     // any other, E102).
@@ -422,15 +427,26 @@ fn symbols(ir: &Ir) -> Vec<Artifact> {
 }
 
 /// gsdc's own GSD must meet the strict rules: the vendor-file rules with
-/// warnings as errors, plus 7-bit ASCII, CRLF and lines of at most 80 characters.
-/// gsdc's own GSD must pass `check_strict`; a description that states its
-/// GSD is Latin-1 (`latin1`) has chosen the characters beyond ASCII that
-/// E241 refuses (each one a byte: the encoding checks it).
-fn verify_gsd(file_name: &str, text: &str, latin1: bool) -> Vec<Diagnostic> {
+/// warnings as errors, plus 7-bit ASCII, CRLF and lines of at most 80
+/// characters. A description that states its GSD is Latin-1 (`latin1`)
+/// has chosen the characters beyond ASCII that E241 refuses (each one a
+/// byte: the encoding checks it), and its `vendor_keywords` the keywords
+/// W205 does not know.
+fn verify_gsd(
+    file_name: &str,
+    text: &str,
+    latin1: bool,
+    vendor_keywords: &[(String, String)],
+) -> Vec<Diagnostic> {
+    let stated_keyword = |d: &Diagnostic| {
+        let name = d.span.as_ref().and_then(|s| text.get(s.clone()));
+        d.code == "W205" && name.is_some_and(|n| vendor_keywords.iter().any(|(k, _)| k == n))
+    };
     crate::gsd::check_strict(text)
         .into_iter()
         .filter(Diagnostic::is_error)
         .filter(|d| !(latin1 && d.code == "E241"))
+        .filter(|d| !stated_keyword(d))
         .map(|d| generated_file_breaks(file_name, d))
         .collect()
 }
@@ -519,7 +535,7 @@ mod tests {
 
     #[test]
     fn the_generated_gsd_passes_verification() {
-        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd(), false), []);
+        assert_eq!(verify_gsd("MD810DP.GSD", &md810_gsd(), false, &[]), []);
     }
 
     /// A character beyond ASCII is E241 in gsdc's GSD unless the
@@ -530,19 +546,38 @@ mod tests {
             "Vendor_Name                 = \"Inovance\"",
             "Vendor_Name                 = \"Inovance Gerätebau\"",
         );
-        let problems = verify_gsd("MD810DP.GSD", &umlaut, false);
+        let problems = verify_gsd("MD810DP.GSD", &umlaut, false, &[]);
         assert!(
             problems.iter().any(|d| d.message.contains("E241")),
             "{problems:?}"
         );
-        assert_eq!(verify_gsd("MD810DP.GSD", &umlaut, true), []);
+        assert_eq!(verify_gsd("MD810DP.GSD", &umlaut, true, &[]), []);
+    }
+
+    /// A keyword the specification does not have is W205, an error in
+    /// gsdc's own GSD, unless the description states it as a vendor's.
+    #[test]
+    fn an_unknown_keyword_passes_only_as_a_vendor_keyword() {
+        let with = md810_gsd().replace(
+            "Vendor_Name                 = \"Inovance\"",
+            "Vendor_Name                 = \"Inovance\"\r\nETERDelay = 0",
+        );
+        let problems = verify_gsd("MD810DP.GSD", &with, false, &[]);
+        assert!(
+            problems.iter().any(|d| d.message.contains("W205")),
+            "{problems:?}"
+        );
+        let stated = [("ETERDelay".to_string(), "0".to_string())];
+        assert_eq!(verify_gsd("MD810DP.GSD", &with, false, &stated), []);
+        let other = [("MaxResponseDelay".to_string(), "0".to_string())];
+        assert_ne!(verify_gsd("MD810DP.GSD", &with, false, &other), []);
     }
 
     #[test]
     fn a_gsd_breaking_a_rule_is_refused_naming_the_rule() {
         // PPO5 declared as 16 PZD words no longer fits Max_Input_Len = 32.
         let broken = md810_gsd().replace("0xF3,0xFB", "0xF3,0xFF");
-        let problems = verify_gsd("MD810DP.GSD", &broken, false);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false, &[]);
         assert!(!problems.is_empty());
         assert!(problems.iter().all(|d| d.code == "E900"));
         assert!(
@@ -579,7 +614,7 @@ mod tests {
             "Vendor_Name                 = \"Inovance\"",
             &format!("Vendor_Name = \"Inovance\" ;{}", "x".repeat(80)),
         );
-        let problems = verify_gsd("MD810DP.GSD", &broken, false);
+        let problems = verify_gsd("MD810DP.GSD", &broken, false, &[]);
         assert!(
             problems.iter().any(|d| d.message.contains("E240")),
             "{problems:?}"

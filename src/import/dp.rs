@@ -119,12 +119,14 @@ pub(super) fn describe(
             }
         },
     };
+    let vendor = vendor_keywords(device);
     for k in &device.keywords {
         let fixed = FIXED.iter().find(|(key, _)| *key == k.key);
         let said = IMPORTED.contains(&k.key.as_str())
             // Read by `super::symbol`, or left out there with its reason.
             || k.key == "bitmap_device"
-            || fixed.is_some_and(|(_, v)| k.value.as_number() == Some(*v));
+            || fixed.is_some_and(|(_, v)| k.value.as_number() == Some(*v))
+            || vendor.iter().any(|(v, _)| std::ptr::eq(*v, k));
         if !said {
             notes.unsaid(&k.name, &k.place, "the description has no key for it");
         }
@@ -148,6 +150,7 @@ pub(super) fn describe(
         out.key("pzd_words", pzd_words);
     }
     profibus(&mut out, device, file, &card, notes);
+    write_vendor_keywords(&mut out, &vendor);
     if let Card::Gateway(g) = &card {
         gateway::write(&mut out, g, file, notes);
     }
@@ -888,6 +891,50 @@ pub(super) fn manual(out: &mut TomlOut) {
     out.comment("[manual]");
     out.comment("title = \"...\"");
     out.comment("languages = [\"en\"]");
+}
+
+/// The keywords the GSD specification does not have, each once (a GSD reads
+/// keywords without regard to case), with a value
+/// `[profibus.vendor_keywords]` holds: a number of 0 to 2^32 - 1, or a
+/// string (`is_vendor_string`). Others are left out.
+fn vendor_keywords(device: &DpDevice) -> Vec<(&Keyword, String)> {
+    let mut vendor: Vec<(&Keyword, String)> = Vec::new();
+    for k in &device.keywords {
+        let once = !vendor
+            .iter()
+            .any(|(v, _)| v.name.eq_ignore_ascii_case(&k.name));
+        if !once || crate::lower::vendor_keyword_problem(&k.name).is_some() {
+            continue;
+        }
+        let value = match &k.value {
+            GsdValue::Number(n) => u32::try_from(*n).ok().map(|n| n.to_string()),
+            GsdValue::Str(s) if is_vendor_string(s) => Some(quote(s)),
+            _ => None,
+        };
+        vendor.extend(value.map(|v| (k, v)));
+    }
+    vendor
+}
+
+/// A string `[profibus.vendor_keywords]` holds: not empty, printable ASCII
+/// without `"`, no longer than the longest string keyword (`Info_Text`).
+fn is_vendor_string(s: &str) -> bool {
+    let printable = s.chars().all(|c| (' '..='~').contains(&c) && c != '"');
+    printable && !s.is_empty() && s.len() <= crate::gsd::keyword_max_len("Info_Text")
+}
+
+fn write_vendor_keywords(out: &mut TomlOut, vendor: &[(&Keyword, String)]) {
+    if vendor.is_empty() {
+        return;
+    }
+    out.table("profibus.vendor_keywords");
+    for (k, value) in vendor {
+        // Bare where TOML lets it be: a `.` would make a dotted key.
+        match k.name.contains('.') {
+            true => out.key(&quote(&k.name), value),
+            false => out.key(&k.name, value),
+        }
+    }
 }
 
 #[cfg(test)]

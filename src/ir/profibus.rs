@@ -44,6 +44,9 @@ pub struct Profibus {
     /// Not assigned by PI: the files say so.
     pub ident_placeholder: bool,
     pub implementation_type: Option<String>,
+    /// Keywords the GSD specification does not have, each with its value as
+    /// the GSD writes it (a number, or a string in quotes), by name.
+    pub vendor_keywords: Vec<(String, String)>,
     pub modules: Vec<DpModule>,
     /// Max_Input_Len and Max_Output_Len: the largest module's bytes, or
     /// what the description states.

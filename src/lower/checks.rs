@@ -312,6 +312,12 @@ impl Checker {
         }
     }
 
+    /// A string the GSD writes as it is, at most `limit` characters, that
+    /// is no text of the description (a vendor keyword's value).
+    pub fn check_gsd_string(&mut self, s: &str, span: Range<usize>, limit: usize, what: &str) {
+        self.check_gsd(s, span, limit, what, GsdForm::Only);
+    }
+
     /// What goes into the GSD of a text, which may have a short form beside it.
     pub fn check_gsd_text(&mut self, s: &str, span: Range<usize>, limit: usize, what: &str) {
         self.check_gsd(s, span, limit, what, GsdForm::OfText);

@@ -27,7 +27,7 @@ pub(crate) use checks::is_clean_lines as is_clean_text_of_lines;
 use checks::Checker;
 pub(crate) use gateway::module_name as gateway_module_name;
 pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
-pub(crate) use profibus::DEFAULT_PPO5_PZD_WORDS;
+pub(crate) use profibus::{vendor_keyword_problem, DEFAULT_PPO5_PZD_WORDS};
 pub(crate) use profinet::{
     info_prefix, io_length, module_description, pkw_words, ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES,
     DEFAULT_VERSION as DEFAULT_GSDML_VERSION, EXTENDED_ERROR_TYPES, MAX_IO_LENGTH, MAX_SLOT,

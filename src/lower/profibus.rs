@@ -146,6 +146,7 @@ pub fn lower(
             "Implementation_Type",
             "implementation_type",
         ),
+        vendor_keywords: vendor_keywords(cx, &p.vendor_keywords),
         modules,
         max_input_len: limits.input,
         max_output_len: limits.output,
@@ -1129,6 +1130,74 @@ fn diagnosis_area(
         ident: constants.unique(constant, first),
         values: value_set(cx, ident, &a.values, (0, max_value), Some(GSD_NAME_LEN)),
     })
+}
+
+/// `[profibus.vendor_keywords]`: each a name the GSD specification does not
+/// have (E189), with a number the GSD's unsigned numbers hold or a string
+/// as long as the longest string keyword (`Info_Text`) may be.
+fn vendor_keywords(
+    cx: &mut Checker,
+    given: &BTreeMap<Spanned<String>, Spanned<raw::VendorValue>>,
+) -> Vec<(String, String)> {
+    let mut keywords: Vec<(String, String)> = Vec::new();
+    for (name, value) in given {
+        let what = format!("profibus.vendor_keywords.{}", name.get_ref());
+        // A GSD's keywords are read without regard to case.
+        if keywords
+            .iter()
+            .any(|(k, _)| k.eq_ignore_ascii_case(name.get_ref()))
+        {
+            cx.duplicate(format!("vendor keyword {}", name.get_ref()), name.span());
+            continue;
+        }
+        let Some(name) = vendor_keyword_name(cx, name) else {
+            continue;
+        };
+        let written = match value.get_ref() {
+            raw::VendorValue::Number(n) => cx
+                .in_range::<u32>(*n, 0, u32::MAX.into(), value.span(), &what)
+                .map(|n| n.to_string()),
+            raw::VendorValue::Text(text) => {
+                let limit = crate::gsd::keyword_max_len("Info_Text");
+                cx.check_gsd_string(text, value.span(), limit, &what);
+                Some(format!("\"{text}\""))
+            }
+        };
+        keywords.extend(written.map(|w| (name, w)));
+    }
+    keywords
+}
+
+/// The longest vendor keyword: shorter than the schema's lookup key.
+const MAX_VENDOR_KEYWORD: usize = 47;
+
+fn vendor_keyword_name(cx: &mut Checker, name: &Spanned<String>) -> Option<String> {
+    let text = name.get_ref();
+    let Some((label, help)) = vendor_keyword_problem(text) else {
+        return Some(text.clone());
+    };
+    cx.push(
+        Diagnostic::error("E189", format!("`{text}` is not a vendor keyword"))
+            .at(name.span())
+            .label(label)
+            .help(help),
+    );
+    None
+}
+
+/// Why `name` cannot be a vendor keyword (E189): not a keyword's name, or
+/// one of the GSD specification's; `None` when it can.
+pub(crate) fn vendor_keyword_problem(name: &str) -> Option<(&'static str, String)> {
+    let shaped = name.len() <= MAX_VENDOR_KEYWORD
+        && name.starts_with(|c: char| c.is_ascii_alphabetic())
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
+    if !shaped {
+        return Some(("not a keyword's name", format!("a keyword is an ASCII letter, then letters, digits, `_` or `.`, at most {MAX_VENDOR_KEYWORD} characters")));
+    }
+    let spelling = crate::gsd::schema::resolve(name).spelling?;
+    Some(("a GSD keyword", format!("{spelling} is the specification's: state it with the description's key for it, or leave it to gsdc")))
 }
 
 #[cfg(test)]
