@@ -16,7 +16,7 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
 
-pub use values::{is_language_code, Address, BitRange, Exactly, Record, Text};
+pub use values::{is_language_code, Address, BitRange, Exactly, Record, Text, VendorValue};
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -457,14 +457,6 @@ pub struct Profibus {
     /// have, written as they are (Siemens' `ETERDelay`).
     #[serde(default)]
     pub vendor_keywords: BTreeMap<Spanned<String>, Spanned<VendorValue>>,
-}
-
-/// A vendor keyword's value: a number or a string.
-#[derive(Debug, Deserialize)]
-#[serde(untagged)]
-pub enum VendorValue {
-    Number(i64),
-    Text(String),
 }
 
 #[derive(Debug, Deserialize)]

@@ -16,26 +16,60 @@ pub enum Address {
 
 impl<'de> Deserialize<'de> for Address {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct AddressVisitor;
-        impl Visitor<'_> for AddressVisitor {
-            type Value = Address;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a number or a function-code name like \"F0-12\"")
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Address, E> {
-                Ok(Address::Number(v))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Address, E> {
-                i64::try_from(v)
-                    .map(Address::Number)
-                    .map_err(|_| E::custom("number too large"))
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<Address, E> {
-                Ok(Address::Name(v.to_string()))
-            }
-        }
-        deserializer.deserialize_any(AddressVisitor)
+        let expecting = "a number or a function-code name like \"F0-12\"";
+        Ok(match scalar(deserializer, expecting)? {
+            Scalar::Number(n) => Address::Number(n),
+            Scalar::Text(name) => Address::Name(name),
+        })
     }
+}
+
+/// A keyword of the vendor's own: a number or a string.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum VendorValue {
+    Number(i64),
+    Text(String),
+}
+
+impl<'de> Deserialize<'de> for VendorValue {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        Ok(match scalar(deserializer, "a whole number or a string")? {
+            Scalar::Number(n) => VendorValue::Number(n),
+            Scalar::Text(text) => VendorValue::Text(text),
+        })
+    }
+}
+
+/// A number or a string, as written; anything else is refused saying
+/// what was `expecting`.
+enum Scalar {
+    Number(i64),
+    Text(String),
+}
+
+fn scalar<'de, D: Deserializer<'de>>(
+    deserializer: D,
+    expecting: &'static str,
+) -> Result<Scalar, D::Error> {
+    struct ScalarVisitor(&'static str);
+    impl Visitor<'_> for ScalarVisitor {
+        type Value = Scalar;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str(self.0)
+        }
+        fn visit_i64<E: de::Error>(self, v: i64) -> Result<Scalar, E> {
+            Ok(Scalar::Number(v))
+        }
+        fn visit_u64<E: de::Error>(self, v: u64) -> Result<Scalar, E> {
+            i64::try_from(v)
+                .map(Scalar::Number)
+                .map_err(|_| E::custom("number too large"))
+        }
+        fn visit_str<E: de::Error>(self, v: &str) -> Result<Scalar, E> {
+            Ok(Scalar::Text(v.to_string()))
+        }
+    }
+    deserializer.deserialize_any(ScalarVisitor(expecting))
 }
 
 /// One bit (`bit = 3`) or an inclusive range of bits (`bit = [9, 10]`).
