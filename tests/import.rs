@@ -1246,6 +1246,29 @@ fn siemens_own_keywords_import_as_vendor_keywords() {
     assert!(imported.round_trip.is_clean());
 }
 
+/// Siemens' SIMADYN D SS52 GSD of 1998 has no `GSD_Revision` (the
+/// specification's first edition) and the vendor keyword `IsMaster = 1`
+/// (its line 28): the import states `gsd_revision = 0` and the keyword, the
+/// build writes no GSD_Revision, and the round trip finds the same device.
+#[test]
+fn a_gsd_without_gsd_revision_imports_as_revision_0() {
+    let name = "ivangre4__siem8037.gsd";
+    let imported = import(name, &support::corpus_file(&format!("gsd/{name}")));
+    let toml = written(&imported, name);
+    assert_says(
+        toml,
+        &[
+            "gsd_revision = 0\n",
+            "[profibus.vendor_keywords]\nIsMaster = 1\n",
+        ],
+    );
+    assert!(imported.round_trip.is_clean());
+    let (ir, diagnostics) = descriptions::load_text("siem8037.toml", toml);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (_, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
+    assert!(!gsd.contains("GSD_Revision"), "{gsd}");
+}
+
 const FENA: &str = "GSDML-V2.33-ABB-FENA-20170914.xml";
 const MOVI_C: &str = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
 

@@ -329,8 +329,15 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, card: &Card, notes
     let is_drive = matches!(card, Card::Drive { .. });
     out.table("profibus");
     out.string("file_name", &gsd_file_name(file, notes));
-    if let Some(r) = number_of(device, "GSD_Revision") {
-        out.key("gsd_revision", r);
+    // A file without GSD_Revision is of the specification's first edition,
+    // which the description states as revision 0.
+    match device.keyword("GSD_Revision") {
+        None => out.key("gsd_revision", 0),
+        Some(k) => {
+            if let Some(r) = k.value.as_number() {
+                out.key("gsd_revision", r);
+            }
+        }
     }
     if let Some(ident) = device.ident_number() {
         out.key("ident_number", format!("{{ value = 0x{ident:04X} }}"));

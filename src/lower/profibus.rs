@@ -59,6 +59,9 @@ pub fn lower(
         feature(&p.fail_safe, "fail_safe"),
     );
     let gsd_revision = match &p.gsd_revision {
+        // The specification's first edition, before GSD_Revision: the GSD
+        // writes no revision (Siemens' SIMADYN D SS52 of 1998).
+        Some(r) if *r.get_ref() == 0 => 0,
         Some(r) => cx.gsd_number(r, "GSD_Revision", "gsd_revision")?,
         None => DEFAULT_GSD_REVISION,
     };
