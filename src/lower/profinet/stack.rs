@@ -123,41 +123,53 @@ pub fn io_lengths(
     given: &raw::Stack,
     at: &str,
 ) -> IoLengths {
-    let mut length = |value: Option<u16>, needed: u16, name: &str| {
-        let Some(value) = value else {
-            return needed;
-        };
-        let stated = match name {
-            "max_input_length" => &given.max_input_length,
-            "max_output_length" => &given.max_output_length,
-            _ => &given.max_data_length,
-        };
-        if let (true, Some(stated)) = (value < needed, stated) {
-            let without = match name {
-                "max_data_length" => "MaxDataLength is unwritten",
-                _ => "gsdc writes what the modules need",
+    // `stated`: the key where this DAP's own stack states the limit, and
+    // what gsdc writes without it.
+    let mut length =
+        |value: Option<u16>, needed: u16, stated: (&Option<Spanned<u16>>, &str, &str)| {
+            let (key, name, without) = stated;
+            let Some(value) = value else {
+                return needed;
             };
-            cx.push(
-                Diagnostic::error(
-                    "E174",
-                    format!("{at}.{name} = {value} is less than the modules need ({needed})"),
-                )
-                .at(stated.span())
-                .label("too small")
-                .help(format!(
-                    "state at least {needed}, or leave it out: {without}"
-                )),
-            );
-        }
-        value.max(needed)
-    };
+            if let (true, Some(key)) = (value < needed, key) {
+                cx.push(
+                    Diagnostic::error(
+                        "E174",
+                        format!("{at}.{name} = {value} is less than the modules need ({needed})"),
+                    )
+                    .at(key.span())
+                    .label("too small")
+                    .help(format!(
+                        "state at least {needed}, or leave it out: {without}"
+                    )),
+                );
+            }
+            value.max(needed)
+        };
+    let need = "gsdc writes what the modules need";
     IoLengths {
-        input: length(stack.max_input_length, needed.0, "max_input_length"),
-        output: length(stack.max_output_length, needed.1, "max_output_length"),
+        input: length(
+            stack.max_input_length,
+            needed.0,
+            (&given.max_input_length, "max_input_length", need),
+        ),
+        output: length(
+            stack.max_output_length,
+            needed.1,
+            (&given.max_output_length, "max_output_length", need),
+        ),
         // In and out together.
-        data: stack
-            .max_data_length
-            .map(|data| length(Some(data), needed.0 + needed.1, "max_data_length")),
+        data: stack.max_data_length.map(|data| {
+            length(
+                Some(data),
+                needed.0 + needed.1,
+                (
+                    &given.max_data_length,
+                    "max_data_length",
+                    "MaxDataLength is unwritten",
+                ),
+            )
+        }),
     }
 }
 
