@@ -1269,6 +1269,44 @@ fn a_gsd_without_gsd_revision_imports_as_revision_0() {
     assert!(!gsd.contains("GSD_Revision"), "{gsd}");
 }
 
+/// The hardware catalog's groups as the vendors name them: FENA's PPO
+/// modules under "PPO Types" and both standard telegrams under "Standard
+/// Telegrams" (its lines 854-855 and 876-877), MOVI-C's process data
+/// modules under "Processdata Modules", in German "Prozessdaten Module"
+/// (lines 7188 and 9076). The round trips find no module's category
+/// changed.
+#[test]
+fn each_kinds_catalog_group_imports_with_its_texts() {
+    let fena = corpus_import(FENA);
+    assert_says(
+        another_device(&fena),
+        &["[profinet.categories]\nuser_defined = \"PPO Types\"\nstandard_telegram_1 = \"Standard Telegrams\"\nstandard_telegram_2 = \"Standard Telegrams\"\n"],
+    );
+    let movi_c = corpus_import(MOVI_C);
+    assert_says(
+        another_device(&movi_c),
+        &["[profinet.categories]\nuser_defined = { en = \"Processdata Modules\", de = \"Prozessdaten Module\" }\n"],
+    );
+    // Category changes are cosmetic, never E601: read them from the diff.
+    for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
+        let (ir, diagnostics) = descriptions::load_text("imported.toml", another_device(imported));
+        let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+        let (_, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+        let old = gsdc::device::read(&support::corpus_file(&format!("gsdml/{name}")), Some(name))
+            .unwrap();
+        let new = gsdc::device::read(gsdml.as_bytes(), Some(name)).unwrap();
+        let changes = gsdc::diff::compare(&old, &new).unwrap();
+        let categories: Vec<_> = changes
+            .iter()
+            // MOVI-C names the group on each data submodule too, which the
+            // description does not say (W600).
+            .filter(|c| c.subject.contains("CategoryRef") && !c.subject.starts_with("submodule"))
+            .map(|c| format!("{} {}", c.subject, c.change))
+            .collect();
+        assert_eq!(categories, Vec::<String>::new(), "{name}");
+    }
+}
+
 const FENA: &str = "GSDML-V2.33-ABB-FENA-20170914.xml";
 const MOVI_C: &str = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
 

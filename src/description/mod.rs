@@ -583,7 +583,11 @@ pub struct Profinet {
     pub records: RecordIndexes,
     /// What the module info texts add to gsdc's description of a module.
     #[serde(default)]
-    pub module_info: ModuleInfo,
+    pub module_info: KindTexts,
+    /// The hardware catalog's group of each kind of module, where not
+    /// gsdc's.
+    #[serde(default)]
+    pub categories: KindTexts,
     /// The modules' names where gsdc's would not do: standard telegram 1
     /// of a card that does not implement PROFIdrive.
     #[serde(default)]
@@ -783,9 +787,10 @@ pub enum AddressAssignment {
     LOCAL,
 }
 
+/// A text for each kind of PROFINET module.
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct ModuleInfo {
+pub struct KindTexts {
     /// Every module of PKW and PZD words the description maps.
     pub user_defined: Option<Spanned<Text>>,
     pub standard_telegram_1: Option<Spanned<Text>>,

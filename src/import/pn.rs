@@ -1103,6 +1103,7 @@ fn hex32(n: u32) -> String {
 /// of module's info text adds to gsdc's description of it, and a vendor's
 /// telegram 1's name.
 fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    categories(out, modules, notes);
     let profidrive = modules.iter().any(Recognised::is_profidrive);
     let mut infos: Vec<(&str, String)> = Vec::new();
     let mut name = None;
@@ -1142,6 +1143,64 @@ fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         out.table("profinet.module_name");
         out.key("standard_telegram_1", name);
     }
+}
+
+/// `[profinet.categories]`: each kind of module's group in the hardware
+/// catalog, where its modules share one that is not gsdc's. Modules of a
+/// kind in different groups are left out of it (W600): the description
+/// puts a kind in one.
+fn categories(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    let profidrive = modules.iter().any(Recognised::is_profidrive);
+    let mut stated = Vec::new();
+    for (key, kind) in MODULE_KIND_KEYS {
+        let of_kind: Vec<&Recognised> = modules.iter().filter(|m| m.kind == kind).collect();
+        let Some(first) = of_kind.first() else {
+            continue;
+        };
+        // None, or gsdc's own (which differ by layout): nothing to state.
+        let gsdcs = of_kind
+            .iter()
+            .all(|m| group_of(m).is_none_or(|g| is_gsdc_category(g, m, profidrive)));
+        if gsdcs {
+            continue;
+        }
+        let group = group_of(first);
+        match of_kind.iter().find(|m| group_of(m) != group) {
+            Some(other) => {
+                let why = "the description's categories put every module of a kind in one group";
+                notes.unsaid(
+                    &format!("module `{}`'s category", other.module.id),
+                    &other.module.place,
+                    why,
+                );
+            }
+            None => stated.extend(group.map(|g| (key, text(g)))),
+        }
+    }
+    if !stated.is_empty() {
+        out.table("profinet.categories");
+        for (key, group) in stated {
+            out.key(key, group);
+        }
+    }
+}
+
+/// A module's group in the hardware catalog.
+fn group_of<'a>(m: &Recognised<'a>) -> Option<&'a Text> {
+    attribute_text(&m.module.attributes, "ModuleInfo@CategoryRef")
+}
+
+/// Whether `group` is gsdc's category of the module in every language it
+/// has.
+fn is_gsdc_category(group: &Text, m: &Recognised, profidrive: bool) -> bool {
+    let gsdc = crate::lower::module_category(m.kind, m.layout, profidrive)
+        .text
+        .text;
+    gsdc.get("en") == &*group.primary
+        && group
+            .translations
+            .iter()
+            .all(|(code, text)| gsdc.get(code) == text)
 }
 
 /// What a module's info text adds after gsdc's description of it, in

@@ -29,7 +29,8 @@ pub(crate) use diagnosis::{
     ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES, EXTENDED_ERROR_TYPES, PROFILE_ERROR_TYPES,
 };
 pub(crate) use io::{
-    description as module_description, info_prefix, io_length, pkw_words, STANDARD_TELEGRAM_2_WORDS,
+    category as module_category, description as module_description, info_prefix, io_length,
+    pkw_words, STANDARD_TELEGRAM_2_WORDS,
 };
 
 /// `info` after a notice that the file is a draft, naming the identity
@@ -98,12 +99,16 @@ pub fn lower(
             .is_none_or(|at| *at.get_ref() == raw::SetAt::Master)
     });
     let fail_safe = fail_safe::names(cx, p, &kinds, master_sets_settings);
+    let stated = stated_categories(cx, p);
     let mut categories: Vec<Category> = Vec::new();
     let mut modules: Vec<Module> = kinds
         .into_iter()
         .map(|(kind, layout)| {
             let info = module_info(cx, &p.module_info, kind);
-            let category = io::category(kind, layout, telegram.profidrive);
+            let category = stated.iter().find(|(k, _)| *k == kind).map_or_else(
+                || io::category(kind, layout, telegram.profidrive),
+                |(_, c)| c.clone(),
+            );
             if !categories.iter().any(|c| c.id == category.id) {
                 categories.push(category.clone());
             }
@@ -208,13 +213,47 @@ pub fn lower(
 }
 
 /// What the description adds to a kind of module's info text.
-fn module_info(cx: &mut Checker, info: &raw::ModuleInfo, kind: ModuleKind) -> Option<Text> {
-    let text = match kind {
-        ModuleKind::Pzd => info.user_defined.as_ref(),
-        ModuleKind::StandardTelegram1 => info.standard_telegram_1.as_ref(),
-        ModuleKind::StandardTelegram2 => info.standard_telegram_2.as_ref(),
-    };
-    text.map(|t| cx.text(t, None, "module info"))
+fn module_info(cx: &mut Checker, info: &raw::KindTexts, kind: ModuleKind) -> Option<Text> {
+    kind_text(info, kind).map(|t| cx.text(t, None, "module info"))
+}
+
+/// A kind of module's text of `texts`.
+fn kind_text(texts: &raw::KindTexts, kind: ModuleKind) -> Option<&Spanned<raw::Text>> {
+    match kind {
+        ModuleKind::Pzd => texts.user_defined.as_ref(),
+        ModuleKind::StandardTelegram1 => texts.standard_telegram_1.as_ref(),
+        ModuleKind::StandardTelegram2 => texts.standard_telegram_2.as_ref(),
+    }
+}
+
+/// Each kind of module with the tag of its category's IDs.
+const KINDS: [(ModuleKind, &str); 3] = [
+    (ModuleKind::Pzd, "USER_DEFINED"),
+    (ModuleKind::StandardTelegram1, "STANDARD_TELEGRAM_1"),
+    (ModuleKind::StandardTelegram2, "STANDARD_TELEGRAM_2"),
+];
+
+/// `[profinet.categories]`: the hardware catalog's group of each kind of
+/// module it names, one CategoryItem for each text however many kinds
+/// share it. The kinds it leaves out are in gsdc's groups.
+fn stated_categories(cx: &mut Checker, p: &raw::Profinet) -> Vec<(ModuleKind, Category)> {
+    let mut stated: Vec<(ModuleKind, Category)> = Vec::new();
+    for (kind, tag) in KINDS {
+        let Some(given) = kind_text(&p.categories, kind) else {
+            continue;
+        };
+        let text = cx.text(given, None, "category");
+        let shared = stated.iter().find(|(_, c)| c.text.text == text);
+        let category = shared.map_or_else(
+            || Category {
+                id: format!("IDC_{tag}"),
+                text: TextRef::new(format!("IDT_CATEGORY_{tag}"), text),
+            },
+            |(_, c)| c.clone(),
+        );
+        stated.push((kind, category));
+    }
+    stated
 }
 
 /// Port `number`; an MRP client starts with ports 1 and 2 as its ring, as
