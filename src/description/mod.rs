@@ -598,7 +598,7 @@ pub struct Profinet {
     /// SendClock factors (units of 31.25 us) the interface accepts.
     pub send_clock: Option<Spanned<Vec<Spanned<u16>>>>,
     /// `TimingProperties@PreferredSendClock`: the one of them the device
-    /// works best with.
+    /// prefers.
     pub preferred_send_clock: Option<Spanned<u16>>,
     pub conformance_class: Option<Spanned<ConformanceClass>>,
     /// Isochronous real time (RT_CLASS_3): conformance class C.
