@@ -522,9 +522,7 @@ fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
 /// The GSD of MD810's bridge, built from its shipped description or a
 /// variant of it.
 fn gateway_gsd(text: &str) -> String {
-    let (ir, diagnostics) = descriptions::load_text("md810-gateway.toml", text);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-    descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd).1
+    built("md810-gateway.toml", text, ArtifactKind::Gsd).1
 }
 
 /// The import of the GSD a gateway description builds, after checking that
@@ -1229,7 +1227,7 @@ fn fenas_standard_telegram_2_imports_as_the_profiles() {
 #[test]
 fn siemens_own_keywords_import_as_vendor_keywords() {
     let name = "ivangre4__SIEM8055.GSD";
-    let imported = import(name, &support::corpus_file(&format!("gsd/{name}")));
+    let imported = corpus_gsd_import(name);
     let toml = written(&imported, name);
     assert_says(
         toml,
@@ -1253,7 +1251,7 @@ fn siemens_own_keywords_import_as_vendor_keywords() {
 #[test]
 fn a_gsd_without_gsd_revision_imports_as_revision_0() {
     let name = "ivangre4__siem8037.gsd";
-    let imported = import(name, &support::corpus_file(&format!("gsd/{name}")));
+    let imported = corpus_gsd_import(name);
     let toml = written(&imported, name);
     assert_says(
         toml,
@@ -1263,9 +1261,7 @@ fn a_gsd_without_gsd_revision_imports_as_revision_0() {
         ],
     );
     assert!(imported.round_trip.is_clean());
-    let (ir, diagnostics) = descriptions::load_text("siem8037.toml", toml);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-    let (_, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
+    let (_, gsd) = built("siem8037.toml", toml, ArtifactKind::Gsd);
     assert!(!gsd.contains("GSD_Revision"), "{gsd}");
 }
 
@@ -1289,9 +1285,11 @@ fn each_kinds_catalog_group_imports_with_its_texts() {
     );
     // Category changes are cosmetic, never E601: read them from the diff.
     for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
-        let (ir, diagnostics) = descriptions::load_text("imported.toml", another_device(imported));
-        let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-        let (_, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+        let (_, gsdml) = built(
+            "imported.toml",
+            another_device(imported),
+            ArtifactKind::Gsdml,
+        );
         let old = gsdc::device::read(&support::corpus_file(&format!("gsdml/{name}")), Some(name))
             .unwrap();
         let new = gsdc::device::read(gsdml.as_bytes(), Some(name)).unwrap();
@@ -1313,6 +1311,19 @@ const MOVI_C: &str = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-
 /// The import of a corpus GSDML file.
 fn corpus_import(name: &str) -> Imported {
     import(name, &support::corpus_file(&format!("gsdml/{name}")))
+}
+
+/// The import of a corpus GSD file.
+fn corpus_gsd_import(name: &str) -> Imported {
+    import(name, &support::corpus_file(&format!("gsd/{name}")))
+}
+
+/// The file of `kind` the description `text` builds, and its name; a panic
+/// with the diagnostics when it does not load.
+fn built(name: &str, text: &str, kind: ArtifactKind) -> (String, String) {
+    let (ir, diagnostics) = descriptions::load_text(name, text);
+    let ir = ir.unwrap_or_else(|| panic!("{name}: {diagnostics:#?}"));
+    descriptions::one(gsdc::compile(&ir).unwrap(), kind)
 }
 
 /// The description an import made whose round trip is not clean.
@@ -1854,9 +1865,7 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
             1,
         );
     assert_ne!(text, fixture);
-    let (ir, diagnostics) = descriptions::load_text("own_idents.toml", &text);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
     assert_eq!(gsdml.matches("MaxInputLength=\"").count(), 3);
     assert!(gsdml.contains("MaxInputLength=\"12\" MaxOutputLength=\"12\""));
     assert!(gsdml.contains("MaxInputLength=\"13\" MaxOutputLength=\"13\""));
@@ -1883,9 +1892,7 @@ fn a_later_access_points_max_data_length_is_the_firsts_or_it_is_left_out() {
         1,
     );
     assert_ne!(text, fixture);
-    let (ir, diagnostics) = descriptions::load_text("own_idents.toml", &text);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
     let stated = " MaxDataLength=\"22\"";
     assert_eq!(gsdml.matches(stated).count(), 3);
     let imported = import(&file_name, gsdml.as_bytes());
@@ -2014,9 +2021,7 @@ fn pn_card(settings: &[&str], pzd_lengths: &str, rest: &str) -> String {
 /// The description the import of `description`'s GSDML writes, after
 /// checking that it rebuilds the file byte-identical below the header.
 fn gsdml_round_trip(description: &str) -> String {
-    let (ir, diagnostics) = descriptions::load_text("card.toml", description);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
-    let (file_name, gsdml) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsdml);
+    let (file_name, gsdml) = built("card.toml", description, ArtifactKind::Gsdml);
     let imported = import(&file_name, gsdml.as_bytes());
     let toml = written(&imported, "card.toml").to_string();
     let (rebuilt, diagnostics) = descriptions::load_text("imported.toml", &toml);
