@@ -1399,7 +1399,8 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
     }
 }
 
-/// MOVI-C's stack beyond FENA's (its line 26: `PowerOnToCommReady="5000"`;
+/// MOVI-C's stack beyond FENA's (its line 26: `PowerOnToCommReady="5000"`,
+/// `RequiredSchemaVersion="V2.32"`;
 /// line 38: `IOConfigData MaxInputLength="100" MaxOutputLength="100"
 /// MaxDataLength="200"`; line 82, the interface:
 /// `NetworkComponentDiagnosisSupported="true"`; line 86: `TimingProperties
@@ -1417,11 +1418,13 @@ fn movi_cs_stack_attributes_import() {
         another_device(&imported),
         &[
             "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
+            "gsdml_version = \"2.32\"\nrequired_schema_version = \"2.32\"\n",
             "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\nlink_state_diagnosis = \"Up+Down\"\n",
             "max_input_length = 100\nmax_output_length = 100\nmax_data_length = 200\n",
         ],
     );
     let imported_attributes = [
+        "RequiredSchemaVersion",
         "MaxDataLength",
         "TimingProperties@PreferredSendClock",
         "PowerOnToCommReady",
@@ -2062,4 +2065,36 @@ fn fail_safe_values_are_told_from_settings_by_what_settings_cannot_rebuild() {
         ),
     ));
     assert_says(&two_kinds, &[fail_safe]);
+}
+
+/// An access point's RequiredSchemaVersion up to V2.32, the version gsdc
+/// writes, imports and rebuilds as the file has it (V2.3 written as PI's
+/// names write it, not V2.30); a later one is left out, saying why, and the
+/// round trip names the change (nothing written).
+#[test]
+fn a_required_schema_version_imports_up_to_the_one_gsdc_writes() {
+    let requiring = |version: &str| {
+        let attribute = format!(" PNIO_Version=\"V2.32\" RequiredSchemaVersion=\"{version}\"");
+        md810_gsdml_changed(|gsdml| gsdml.replacen(" PNIO_Version=\"V2.32\"", &attribute, 1))
+    };
+    let imported = requiring("V2.3");
+    let toml = written(&imported, "MD810 requiring V2.3");
+    assert!(
+        toml.contains("required_schema_version = \"2.3\"\n"),
+        "{toml}"
+    );
+    let (_, rebuilt) = built("md810-imported.toml", toml, ArtifactKind::Gsdml);
+    assert!(rebuilt.contains(" RequiredSchemaVersion=\"V2.3\""));
+
+    let imported = requiring("V2.4");
+    assert!(imported.description.is_none());
+    let why = "the description's required_schema_version is a GSDML version up to the file's, V2.32 (E190)";
+    assert!(
+        messages(&imported, "W600").iter().any(|m| m.contains(why)),
+        "{:#?}",
+        messages(&imported, "W600")
+    );
+    assert!(messages(&imported, "E601")
+        .iter()
+        .any(|m| m.contains("RequiredSchemaVersion")));
 }

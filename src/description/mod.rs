@@ -560,6 +560,9 @@ pub struct Profinet {
     pub file_vendor: Option<Spanned<String>>,
     /// GSDML schema version, "2.32" by default.
     pub gsdml_version: Option<Spanned<String>>,
+    /// Every device access point's `RequiredSchemaVersion`: the oldest
+    /// GSDML version an engineering tool must know to offer it.
+    pub required_schema_version: Option<Spanned<String>>,
     /// The file's date: part of its name and of its version. Never the clock.
     pub date: Spanned<toml::value::Datetime>,
     /// DNS_CompatibleName: the default name of station.

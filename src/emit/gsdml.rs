@@ -246,6 +246,8 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         ("LLDP_NoD_Supported", "true"),
         ("ResetToFactoryModes", "2"),
     ];
+    let required = p.required_schema_version.map(|v| v.to_string());
+    attributes.extend(required.as_deref().map(|v| ("RequiredSchemaVersion", v)));
     let stated = stated_stack_attributes(stack);
     attributes.extend(stated.iter().map(|(name, value)| (*name, value.as_str())));
     doc.open("DeviceAccessPointItem", &attributes);

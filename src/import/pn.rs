@@ -20,7 +20,7 @@ use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
-use crate::ir::profinet::{ModuleKind, PROFIDRIVE_API};
+use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
 use crate::ir::{Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 
@@ -28,6 +28,7 @@ use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 /// writes (`None`: the description states it).
 const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("PNIO_Version", None),
+    ("RequiredSchemaVersion", None),
     ("PhysicalSlots", None),
     ("MinDeviceInterval", None),
     ("DNS_CompatibleName", None),
@@ -903,8 +904,11 @@ fn profinet(
     out.key("device_id", id(device.device_id));
     out.string("file_vendor", &name.vendor);
     out.string("gsdml_version", &name.version);
-    out.key("date", &name.date);
     let attributes = &dap.item.attributes;
+    if let Some(version) = required_schema_version(attributes, notes) {
+        out.string("required_schema_version", &version.to_string()[1..]);
+    }
+    out.key("date", &name.date);
     out.string("dns_name", &name_of_station(attributes, notes));
     out.key("ports", submodules_of(dap, SubmoduleKind::Port).count());
     out.key(
@@ -940,6 +944,20 @@ fn profinet(
     }
     interface_properties(out, dap, notes, has_irt);
     module_im_records(out, modules, notes);
+}
+
+/// The access point's RequiredSchemaVersion, where gsdc can write it: a
+/// version up to the one gsdc writes (E190); a later one is left out, which
+/// the round trip judges.
+fn required_schema_version(attributes: &[Attribute], notes: &mut Notes) -> Option<Version> {
+    let (a, text) = found(attributes, "RequiredSchemaVersion")?;
+    let written = crate::lower::DEFAULT_GSDML_VERSION;
+    let version = Version::parse(text).filter(|&v| v >= Version::new(1, 0) && v <= written);
+    if version.is_none() {
+        let why = format!("the description's required_schema_version is a GSDML version up to the file's, {written} (E190)");
+        notes.unsaid(&format!("RequiredSchemaVersion `{text}`"), &a.place, &why);
+    }
+    version
 }
 
 /// `module_writeable_im_records`: the records the first module's

@@ -10,6 +10,9 @@ pub use crate::spec::GsdmlVersion as Version;
 #[non_exhaustive]
 pub struct Profinet {
     pub gsdml_version: Version,
+    /// Every device access point's `RequiredSchemaVersion`, when stated:
+    /// the oldest GSDML version a tool must know to offer it.
+    pub required_schema_version: Option<Version>,
     pub date: Date,
     pub file_name: String,
     pub vendor_id: u16,

@@ -75,6 +75,8 @@ pub fn lower(
     let near = p.span();
     let p = p.get_ref();
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
+    let required_schema_version =
+        required_schema_version(cx, p.required_schema_version.as_ref(), gsdml_version)?;
     let date = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
@@ -175,6 +177,7 @@ pub fn lower(
             date.compact()
         ),
         gsdml_version,
+        required_schema_version,
         date,
         // PI numbers vendors from 1: the schema's DeviceIdentity takes 0x0000,
         // but its CIM_Interface, naming the same vendor, does not (hex0T).
@@ -338,6 +341,41 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
         );
     }
     version
+}
+
+/// `RequiredSchemaVersion`: a GSDML version from the first, V1.0, to the
+/// file's own; an access point cannot require a version later than the
+/// file that describes it (E190). `Some(None)` when the description states
+/// none.
+fn required_schema_version(
+    cx: &mut Checker,
+    given: Option<&Spanned<String>>,
+    file: Version,
+) -> Option<Option<Version>> {
+    let Some(given) = given else {
+        return Some(None);
+    };
+    let text = given.get_ref();
+    let first = Version::new(1, 0);
+    let version = (!text.starts_with(['V', 'v']))
+        .then(|| Version::parse(text))
+        .flatten()
+        .filter(|v| (first..=file).contains(v));
+    if version.is_none() {
+        cx.push(
+            Diagnostic::error(
+                "E190",
+                format!("no device access point of a GSDML {file} file can require GSDML {text}"),
+            )
+            .at(given.span())
+            .label("not a version from 1.0 to the file's")
+            .help(format!(
+                "write the oldest version whose elements the access point needs, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V",
+                &file.to_string()[1..]
+            )),
+        );
+    }
+    version.map(Some)
 }
 
 /// The GSDML file name's date: a TOML local date, or a local date-time in

@@ -185,6 +185,17 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
     );
 }
 
+/// The file's GSDML version, and the oldest an engineering tool must know
+/// to offer the device access points, where the description states one.
+fn gsdml_version(p: &Profinet, lang: Lang) -> Cell {
+    let mut cell = code(p.gsdml_version.to_string());
+    if let Some(required) = p.required_schema_version {
+        let needs = format!("; {} ", lang.t(w::REQUIRED_SCHEMA_VERSION));
+        cell.extend([Run::Text(needs), Run::Code(required.to_string())]);
+    }
+    cell
+}
+
 /// The device's PROFINET parameters; with one device access point its
 /// ports and IO data too, else a table of the access points has them.
 fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
@@ -192,7 +203,7 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     // the product is exact in an f64 and prints as 312.5, not truncated.
     let micros = f64::from(p.min_device_interval) * 31.25;
     let mut rows = vec![
-        (lang.t(w::GSDML_VERSION), code(p.gsdml_version.to_string())),
+        (lang.t(w::GSDML_VERSION), gsdml_version(p, lang)),
         (lang.t(w::NAME_OF_STATION), code(&p.dns_name)),
         (
             lang.t(w::MIN_DEVICE_INTERVAL),

@@ -16,6 +16,7 @@ const SHARED: &[&str] = &[
     crate::import::symbol::GSDML_SYMBOL_TYPE,
     crate::import::symbol::GSDML_SYMBOL_TARGET,
     "PNIO_Version",
+    "RequiredSchemaVersion",
     "MinDeviceInterval",
     "DNS_CompatibleName",
     "ModuleInfo/VendorName@Value",
