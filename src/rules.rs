@@ -138,6 +138,7 @@ pub const RULES: &[Rule] = &[
     rule("E188", "isochronous mode without isochronous real time"),
     rule("E189", "a vendor keyword that is not one"),
     rule("E190", "a required GSDML version the file does not have"),
+    rule("E191", "port labels not one per port"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -1285,24 +1285,64 @@ fn each_kinds_catalog_group_imports_with_its_texts() {
     );
     // Category changes are cosmetic, never E601: read them from the diff.
     for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
-        let (_, gsdml) = built(
-            "imported.toml",
-            another_device(imported),
-            ArtifactKind::Gsdml,
-        );
-        let old = gsdc::device::read(&support::corpus_file(&format!("gsdml/{name}")), Some(name))
-            .unwrap();
-        let new = gsdc::device::read(gsdml.as_bytes(), Some(name)).unwrap();
-        let changes = gsdc::diff::compare(&old, &new).unwrap();
-        let categories: Vec<_> = changes
-            .iter()
+        let categories: Vec<_> = round_trip_changes(name, imported)
+            .into_iter()
             // MOVI-C names the group on each data submodule too, which the
             // description does not say (W600).
-            .filter(|c| c.subject.contains("CategoryRef") && !c.subject.starts_with("submodule"))
-            .map(|c| format!("{} {}", c.subject, c.change))
+            .filter(|c| c.contains("CategoryRef") && !c.starts_with("submodule"))
             .collect();
         assert_eq!(categories, Vec::<String>::new(), "{name}");
     }
+}
+
+/// The labels on the device of the interface and the ports: FENA's (lines
+/// 37-40, 87-91, 144-147: each access point labels its own one or two
+/// ports; texts at lines 869-871), MOVI-C's in English and German (lines
+/// 33-37, whose TextIds "X1", "X1P1", "X1P2" name "X1", "X1 P1", "X1 P2",
+/// lines 7291-7293 and in German alike). The round trips find no label
+/// changed.
+#[test]
+fn the_interfaces_and_ports_labels_import_with_their_texts() {
+    let fena = corpus_import(FENA);
+    assert_says(
+        another_device(&fena),
+        &["[profinet.subslot_labels]\ninterface = \"X1\"\nports = [\"X1 P1\", \"X1 P2\"]\n"],
+    );
+    let movi_c = corpus_import(MOVI_C);
+    assert_says(
+        another_device(&movi_c),
+        &["[profinet.subslot_labels]\ninterface = { en = \"X1\", de = \"X1\" }\nports = [{ en = \"X1 P1\", de = \"X1 P1\" }, { en = \"X1 P2\", de = \"X1 P2\" }]\n"],
+    );
+    for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
+        let labels: Vec<_> = round_trip_changes(name, imported)
+            .into_iter()
+            .filter(|c| c.contains("SubslotItem"))
+            .collect();
+        assert_eq!(labels, Vec::<String>::new(), "{name}");
+        assert!(!messages(imported, "W600")
+            .iter()
+            .any(|m| m.contains("SubslotList")));
+    }
+}
+
+/// What `gsdc diff` finds, each change as its subject and how, between the
+/// corpus GSDML file `name` and the build of the description its import
+/// made, whose round trip was not clean: cosmetic changes too, which are
+/// never E601.
+fn round_trip_changes(name: &str, imported: &Imported) -> Vec<String> {
+    let (_, gsdml) = built(
+        "imported.toml",
+        another_device(imported),
+        ArtifactKind::Gsdml,
+    );
+    let old =
+        gsdc::device::read(&support::corpus_file(&format!("gsdml/{name}")), Some(name)).unwrap();
+    let new = gsdc::device::read(gsdml.as_bytes(), Some(name)).unwrap();
+    gsdc::diff::compare(&old, &new)
+        .unwrap()
+        .iter()
+        .map(|c| format!("{} {}", c.subject, c.change))
+        .collect()
 }
 
 const FENA: &str = "GSDML-V2.33-ABB-FENA-20170914.xml";
@@ -1866,6 +1906,11 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
             "modules = [\"telegram1\"]",
             "modules = [\"telegram1\"]\nports = 4\nport_idents = [0x00000103, 0x00000103, 0x00000103, 0x00000103]",
             1,
+        )
+        .replacen(
+            "ports = [\"X1 P1\", { en = \"X1 P2\", zh = \"X1 端口 2\" }]",
+            "ports = [\"X1 P1\", \"X1 P2\", \"X1 P3\", \"X1 P4\"]",
+            1,
         );
     assert_ne!(text, fixture);
     let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
@@ -2097,4 +2142,32 @@ fn a_required_schema_version_imports_up_to_the_one_gsdc_writes() {
     assert!(messages(&imported, "E601")
         .iter()
         .any(|m| m.contains("RequiredSchemaVersion")));
+}
+
+/// Labels the description cannot say are left out, saying why: an access
+/// point of own_idents without its SubslotList, while the others have
+/// theirs (the description's labels are every access point's).
+#[test]
+fn labels_only_some_access_points_give_are_left_out() {
+    let fixture =
+        std::fs::read_to_string(support::checkout("tests/fixtures/valid/own_idents.toml")).unwrap();
+    let (file_name, gsdml) = built("own_idents.toml", &fixture, ArtifactKind::Gsdml);
+    let lists: Vec<(usize, &str)> = gsdml.match_indices("<SubslotList>").collect();
+    assert_eq!(lists.len(), 3);
+    let second = lists[1].0;
+    let end = second + gsdml[second..].find("</SubslotList>").unwrap() + "</SubslotList>".len();
+    let without = format!("{}{}", &gsdml[..second], &gsdml[end..]);
+    let imported = import(&file_name, without.as_bytes());
+    let why = "its SubslotList does not label its interface and then each of its ports, and the description's subslot_labels are every access point's";
+    assert!(
+        messages(&imported, "W600").iter().any(|m| m.contains(why)),
+        "{:#?}",
+        messages(&imported, "W600")
+    );
+    let toml = imported
+        .description
+        .as_deref()
+        .or(imported.another_device.as_deref())
+        .unwrap();
+    assert!(!toml.contains("subslot_labels"), "{toml}");
 }

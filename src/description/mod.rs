@@ -616,6 +616,8 @@ pub struct Profinet {
     pub module_writeable_im_records: Option<Spanned<Vec<Spanned<u8>>>>,
     /// MRP client on the first two ports.
     pub media_redundancy: Option<Spanned<bool>>,
+    /// The labels the interface and its ports carry on the device.
+    pub subslot_labels: Option<Spanned<SubslotLabels>>,
     /// What the card's PROFINET stack offers the controllers.
     #[serde(default)]
     pub stack: Stack,
@@ -788,6 +790,17 @@ pub enum AddressAssignment {
     DCP,
     DHCP,
     LOCAL,
+}
+
+/// `[profinet.subslot_labels]`: the labels the interface and its ports
+/// carry on the device (`X1`, `X1 P1`), which engineering tools show with
+/// them (GSDML `SubslotList`).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SubslotLabels {
+    pub interface: Spanned<Text>,
+    /// One per port, in port order.
+    pub ports: Spanned<Vec<Spanned<Text>>>,
 }
 
 /// A text for each kind of PROFINET module.

@@ -371,6 +371,14 @@ impl<'a> Reader<'a> {
                 "ModuleItemRef",
                 "ModuleItemTarget",
             ),
+            subslot_labels: child(node, "SubslotList")
+                .into_iter()
+                .flat_map(|list| children(list, "SubslotItem"))
+                .map(|item| {
+                    let number = item.attribute("SubslotNumber").and_then(|n| n.parse().ok());
+                    (number, item.attribute("TextId").map(|id| self.text(id)))
+                })
+                .collect(),
         }
     }
 

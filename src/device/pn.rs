@@ -49,6 +49,10 @@ pub struct Dap {
     pub item: PnModule,
     /// `UseableModules`: the modules the catalogue offers under this DAP.
     pub useable_modules: Vec<ItemRef>,
+    /// `SubslotList`: each labelled subslot's number and label, in the
+    /// file's order (also among `item`'s attributes, which the diff
+    /// compares).
+    pub subslot_labels: Vec<(Option<u16>, Option<Text>)>,
 }
 
 /// `ModuleItem`.

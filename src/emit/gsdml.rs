@@ -264,6 +264,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     );
     module_info(doc, &dap.name, &dap.info, &values);
     certification_info(doc, &p.interface_properties);
+    subslot_list(doc, p, dap);
     let mut io = vec![
         ("MaxInputLength", dap.max_input_length.to_string()),
         ("MaxOutputLength", dap.max_output_length.to_string()),
@@ -293,6 +294,28 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         doc.close("Graphics");
     }
     doc.close("DeviceAccessPointItem");
+}
+
+/// The labels on the device of the interface and of this access point's
+/// ports, when the description gives them (`SubslotList`, in GSDML since
+/// V2.3, as PI's V2.3 stylesheet shows).
+fn subslot_list(doc: &mut Doc, p: &Profinet, dap: &Dap) {
+    let Some(labels) = &p.subslot_labels else {
+        return;
+    };
+    let subslots =
+        std::iter::once(INTERFACE_SUBSLOT).chain(dap.ports.iter().map(|port| port.subslot));
+    let texts = std::iter::once(&labels.interface).chain(&labels.ports);
+    doc.open("SubslotList", &[]);
+    for (subslot, text) in subslots.zip(texts) {
+        doc.text(text);
+        let number = subslot.to_string();
+        doc.leaf(
+            "SubslotItem",
+            &[("SubslotNumber", &number), ("TextId", &text.id)],
+        );
+    }
+    doc.close("SubslotList");
 }
 
 /// The conformance class, the isochronous application class when the

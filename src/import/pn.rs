@@ -53,6 +53,9 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IOConfigData@MaxOutputLength", None),
     ("IOConfigData@MaxDataLength", None),
     ("PowerOnToCommReady", None),
+    // Read by `subslot_labels`, or left out there with its reason.
+    ("SubslotList/SubslotItem@SubslotNumber", None),
+    ("SubslotList/SubslotItem@TextId", None),
     // Read by `super::symbol`, or left out there with its reason.
     (super::symbol::GSDML_SYMBOL_TYPE, Some("DeviceSymbol")),
     (super::symbol::GSDML_SYMBOL_TARGET, None),
@@ -204,6 +207,10 @@ pub(super) fn describe(
         fail_safe.write(&mut out);
     }
     module_texts(&mut out, &modules, notes);
+    let imported_daps: Vec<&Dap> = std::iter::once(dap)
+        .chain(later.iter().map(|l| l.dap))
+        .collect();
+    subslot_labels(&mut out, &imported_daps, notes);
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
         later.write(&mut out);
@@ -1161,6 +1168,75 @@ fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         out.table("profinet.module_name");
         out.key("standard_telegram_1", name);
     }
+}
+
+/// `[profinet.subslot_labels]`, where every access point imported labels
+/// its interface and then each of its ports (`SubslotList`), and a port's
+/// label is the same in each; else the labels are left out, saying why.
+fn subslot_labels(out: &mut TomlOut, daps: &[&Dap], notes: &mut Notes) {
+    let Some(labelled) = daps.iter().find(|d| !d.subslot_labels.is_empty()) else {
+        return;
+    };
+    let mut ports: Vec<&Text> = Vec::new();
+    let mut interface = None;
+    for dap in daps {
+        let same_ports = labels_of(dap).and_then(|(own_interface, own_ports)| {
+            if interface.is_some_and(|i| i != own_interface) {
+                return Err("its interface's label is not the other access points'");
+            }
+            interface = Some(own_interface);
+            for (n, label) in own_ports.into_iter().enumerate() {
+                match ports.get(n) {
+                    Some(&known) if known != label => {
+                        return Err(
+                            "a port's label is not the same port's of the other access points",
+                        )
+                    }
+                    Some(_) => {}
+                    None => ports.push(label),
+                }
+            }
+            Ok(())
+        });
+        if let Err(why) = same_ports {
+            let why =
+                format!("{why}, and the description's subslot_labels are every access point's");
+            notes.unsaid("SubslotList", &labelled.item.place, &why);
+            return;
+        }
+    }
+    out.table("profinet.subslot_labels");
+    out.key(
+        "interface",
+        text(interface.expect("a labelled access point")),
+    );
+    out.key("ports", list(ports.into_iter().map(text)));
+}
+
+/// An access point's labels of its interface and of each of its ports,
+/// when its `SubslotList` labels those and nothing else, in that order.
+fn labels_of(dap: &Dap) -> Result<(&Text, Vec<&Text>), &'static str> {
+    let subslots: Vec<Option<u32>> = submodules_of(dap, SubmoduleKind::Interface)
+        .chain(submodules_of(dap, SubmoduleKind::Port))
+        .map(|s| s.subslot)
+        .collect();
+    let labelled: Vec<Option<u32>> = dap
+        .subslot_labels
+        .iter()
+        .map(|(n, _)| n.map(u32::from))
+        .collect();
+    if labelled != subslots {
+        return Err("its SubslotList does not label its interface and then each of its ports");
+    }
+    let mut labels = dap.subslot_labels.iter().map(|(_, label)| label.as_ref());
+    let interface = labels
+        .next()
+        .flatten()
+        .ok_or("a SubslotItem has no TextId")?;
+    let ports = labels
+        .collect::<Option<Vec<&Text>>>()
+        .ok_or("a SubslotItem has no TextId")?;
+    Ok((interface, ports))
 }
 
 /// `[profinet.categories]`: each kind of module's group in the hardware

@@ -27,6 +27,9 @@ pub struct Profinet {
     /// Units of 31.25 us.
     pub min_device_interval: u16,
     pub interface: TextRef,
+    /// The labels the interface and its ports carry on the device, when
+    /// the description gives them.
+    pub subslot_labels: Option<SubslotLabels>,
     /// The interface submodule's SubmoduleIdentNumber.
     pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,
@@ -159,6 +162,10 @@ impl Profinet {
         for dap in &self.daps {
             refs.extend([&dap.name, &dap.info]);
             refs.extend(dap.ports.iter().map(|p| &p.text));
+        }
+        if let Some(labels) = &self.subslot_labels {
+            refs.push(&labels.interface);
+            refs.extend(&labels.ports);
         }
         refs.extend(self.categories.iter().map(|c| &c.text));
         for m in &self.modules {
@@ -460,6 +467,16 @@ pub enum NetloadClass {
     I,
     II,
     III,
+}
+
+/// The labels the interface and its ports carry on the device (GSDML
+/// `SubslotList`): one for each port of the access point with the most; an
+/// access point labels its own.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct SubslotLabels {
+    pub interface: TextRef,
+    pub ports: Vec<TextRef>,
 }
 
 /// A port of the interface.

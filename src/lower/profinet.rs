@@ -6,8 +6,8 @@ use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::i18n::{self, files};
 use crate::ir::profinet::{
-    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, TextRef, TimeOfDay, Version,
-    FIRST_PORT_SUBSLOT,
+    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, SubslotLabels, TextRef,
+    TimeOfDay, Version, FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeSet;
@@ -171,6 +171,9 @@ pub fn lower(
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
+    let daps = daps?;
+    let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
+    let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports)?;
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -196,7 +199,8 @@ pub fn lower(
         interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
         interface_ident: idents.interface,
         access_point_ident: idents.access_point,
-        daps: daps?,
+        daps,
+        subslot_labels,
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
@@ -257,6 +261,46 @@ fn stated_categories(cx: &mut Checker, p: &raw::Profinet) -> Vec<(ModuleKind, Ca
         stated.push((kind, category));
     }
     stated
+}
+
+/// `[profinet.subslot_labels]`: the interface's label and one for each
+/// port of the access point with the most (E191 when the count differs).
+fn subslot_labels(
+    cx: &mut Checker,
+    given: Option<&Spanned<raw::SubslotLabels>>,
+    most_ports: usize,
+) -> Option<Option<SubslotLabels>> {
+    let Some(given) = given else {
+        return Some(None);
+    };
+    let given = given.get_ref();
+    let interface = cx.text(&given.interface, None, "profinet.subslot_labels.interface");
+    let ports: Vec<TextRef> = (1..)
+        .zip(given.ports.get_ref())
+        .map(|(n, label)| {
+            let text = cx.text(label, None, "profinet.subslot_labels.ports");
+            TextRef::new(format!("{}{n}", ids::PORT_LABEL_TEXT), text)
+        })
+        .collect();
+    if ports.len() != most_ports {
+        cx.push(
+            Diagnostic::error(
+                "E191",
+                format!(
+                    "port labels: {} given, {most_ports} needed",
+                    ports.len()
+                ),
+            )
+            .at(given.ports.span())
+            .label("one label per port")
+            .help("label each port of the device access point with the most ports, in port order; an access point with fewer labels its own"),
+        );
+        return None;
+    }
+    Some(Some(SubslotLabels {
+        interface: TextRef::new(ids::INTERFACE_LABEL_TEXT, interface),
+        ports,
+    }))
 }
 
 /// Port `number`; an MRP client starts with ports 1 and 2 as its ring, as

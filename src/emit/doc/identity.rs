@@ -196,6 +196,20 @@ fn gsdml_version(p: &Profinet, lang: Lang) -> Cell {
     cell
 }
 
+/// How many ports an access point has, with their labels on the device
+/// where the description gives them: `2 (X1 P1, X1 P2)`.
+fn ports(p: &Profinet, dap: &Dap, lang: Lang) -> Cell {
+    let count = dap.ports.len();
+    match &p.subslot_labels {
+        None => text(count.to_string()),
+        Some(labels) => {
+            let own = labels.ports.iter().take(count);
+            let names: Vec<&str> = own.map(|label| lang.text(&label.text)).collect();
+            text(format!("{count} ({})", names.join(", ")))
+        }
+    }
+}
+
 /// The device's PROFINET parameters; with one device access point its
 /// ports and IO data too, else a table of the access points has them.
 fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
@@ -214,7 +228,7 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
         ),
     ];
     if let [dap] = p.daps.as_slice() {
-        rows.insert(2, (lang.t(w::PORTS), text(dap.ports.len().to_string())));
+        rows.insert(2, (lang.t(w::PORTS), ports(p, dap, lang)));
         rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap, lang)));
     }
     let properties = &p.interface_properties;
@@ -309,7 +323,7 @@ fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
                 dap.order_number.as_deref().map_or_else(Vec::new, code),
                 dap.hardware_release.as_deref().map_or_else(Vec::new, code),
                 dap.software_release.as_deref().map_or_else(Vec::new, code),
-                text(dap.ports.len().to_string()),
+                ports(p, dap, lang),
                 max_io_data(dap, lang),
                 text(modules),
             ]

@@ -9,6 +9,10 @@ use crate::ir::{Layout, MappingKind, MappingSet};
 pub const DEVICE_NAME: &str = "IDT_DEVICE_NAME";
 pub const DEVICE_INFO: &str = "IDT_DEVICE_INFO";
 pub const INTERFACE_TEXT: &str = "IDT_INTERFACE";
+/// TextIds of the labels on the device: the interface's, and each port's
+/// (this and its number).
+pub const INTERFACE_LABEL_TEXT: &str = "IDT_LABEL_INTERFACE";
+pub const PORT_LABEL_TEXT: &str = "IDT_LABEL_PORT_";
 /// The device symbol's GraphicItem.
 pub const DEVICE_SYMBOL: &str = "IDG_DEVICE_SYMBOL";
 
