@@ -2171,3 +2171,29 @@ fn labels_only_some_access_points_give_are_left_out() {
         .unwrap();
     assert!(!toml.contains("subslot_labels"), "{toml}");
 }
+
+/// FENA's modules repeat its access points' releases (lines 192-193 and
+/// those of the five other modules: `HardwareRelease Value="1"`,
+/// `SoftwareRelease Value="V3.2.0"`, as the first access point's lines
+/// 33-34): the import says `module_releases`, and the round trip finds no
+/// module's release changed.
+#[test]
+fn modules_repeating_the_cards_releases_import() {
+    let fena = corpus_import(FENA);
+    let toml = another_device(&fena);
+    assert_says(
+        toml,
+        &[
+            "hardware_release = \"1\"\nsoftware_release = \"V3.2.0\"\n",
+            "module_releases = true\n",
+        ],
+    );
+    let releases: Vec<_> = round_trip_changes(FENA, &fena)
+        .into_iter()
+        .filter(|c| c.contains("Release"))
+        .collect();
+    assert_eq!(releases, Vec::<String>::new());
+    assert!(!messages(&fena, "W600")
+        .iter()
+        .any(|m| m.contains("Release")));
+}

@@ -204,7 +204,10 @@ fn a_later_daps_own_info_carries_the_draft_notice() {
 /// tests/fixtures/invalid/gsd_without_revision.toml.)
 #[test]
 fn a_description_without_a_gsd_may_leave_the_releases_out() {
-    let text = text().replace("revision = \"V1\"\nsoftware_release = \"V1\"\n", "");
+    // Nor do its modules repeat a release then (E192).
+    let text = text()
+        .replace("revision = \"V1\"\nsoftware_release = \"V1\"\n", "")
+        .replace("module_releases = true\n", "");
     assert_ne!(text, self::text());
     let (ir, diagnostics) = descriptions::load_text(NAME, &text);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));

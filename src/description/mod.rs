@@ -618,6 +618,9 @@ pub struct Profinet {
     pub media_redundancy: Option<Spanned<bool>>,
     /// The labels the interface and its ports carry on the device.
     pub subslot_labels: Option<Spanned<SubslotLabels>>,
+    /// Every module's ModuleInfo repeats the card's hardware and software
+    /// release, the first device access point's.
+    pub module_releases: Option<Spanned<bool>>,
     /// What the card's PROFINET stack offers the controllers.
     #[serde(default)]
     pub stack: Stack,

@@ -252,16 +252,11 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     attributes.extend(stated.iter().map(|(name, value)| (*name, value.as_str())));
     doc.open("DeviceAccessPointItem", &attributes);
     let mut values = vec![("VendorName", ir.device.vendor.as_str())];
-    let optional = [
+    values.extend(stated_values(&[
         ("OrderNumber", &dap.order_number),
         ("HardwareRelease", &dap.hardware_release),
         ("SoftwareRelease", &dap.software_release),
-    ];
-    values.extend(
-        optional
-            .into_iter()
-            .filter_map(|(element, value)| Some((element, value.as_deref()?))),
-    );
+    ]));
     module_info(doc, &dap.name, &dap.info, &values);
     certification_info(doc, &p.interface_properties);
     subslot_list(doc, p, dap);
@@ -351,11 +346,34 @@ fn module_info(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&str, &
     module_info_body(doc, name, info, values);
 }
 
-/// A module's ModuleInfo, with the category it is listed under.
-fn module_info_in(doc: &mut Doc, name: &TextRef, info: &TextRef, category: Option<&str>) {
-    let attributes: Vec<(&str, &str)> = category.map(|c| ("CategoryRef", c)).into_iter().collect();
-    doc.open("ModuleInfo", &attributes);
-    module_info_body(doc, name, info, &[]);
+/// A module's ModuleInfo, with the category it is listed under and the
+/// releases it repeats.
+fn module_info_in(doc: &mut Doc, m: &Module, releases: &[(&str, &str)]) {
+    doc.open("ModuleInfo", &[("CategoryRef", &m.category)]);
+    module_info_body(doc, &m.name, &m.info, releases);
+}
+
+/// The first device access point's releases, which every module's
+/// ModuleInfo repeats with `module_releases`.
+fn module_releases(p: &Profinet) -> Vec<(&'static str, &str)> {
+    if !p.module_releases {
+        return Vec::new();
+    }
+    let first = p.first_dap();
+    stated_values(&[
+        ("HardwareRelease", &first.hardware_release),
+        ("SoftwareRelease", &first.software_release),
+    ])
+}
+
+/// The ModuleInfo values that are stated, each with its element.
+fn stated_values<'a>(
+    values: &[(&'static str, &'a Option<String>)],
+) -> Vec<(&'static str, &'a str)> {
+    values
+        .iter()
+        .filter_map(|&(element, value)| Some((element, value.as_deref()?)))
+        .collect()
 }
 
 fn module_info_body(doc: &mut Doc, name: &TextRef, info: &TextRef, values: &[(&str, &str)]) {
@@ -692,7 +710,7 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
         "ModuleItem",
         &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
     );
-    module_info_in(doc, &m.name, &m.info, Some(&m.category));
+    module_info_in(doc, m, &module_releases(p));
     doc.open("VirtualSubmoduleList", &[]);
     let api = m.api.to_string();
     if let Some(map) = &m.access_point {

@@ -951,6 +951,30 @@ fn profinet(
     }
     interface_properties(out, dap, notes, has_irt);
     module_im_records(out, modules, notes);
+    if modules_repeat_releases(dap, modules) {
+        out.key("module_releases", true);
+    }
+}
+
+/// The releases a module's ModuleInfo may give.
+const MODULE_RELEASES: [&str; 2] = [
+    "ModuleInfo/HardwareRelease@Value",
+    "ModuleInfo/SoftwareRelease@Value",
+];
+
+/// Whether every module gives the releases the access point gives, each
+/// the same (`module_releases`). Modules that give none are gsdc's
+/// default; others are left out at each release (`unsaid_extras`).
+fn modules_repeat_releases(dap: &Dap, modules: &[Recognised]) -> bool {
+    let first = releases_of(&dap.item.attributes);
+    first.iter().any(Option::is_some)
+        && modules
+            .iter()
+            .all(|m| releases_of(&m.module.attributes) == first)
+}
+
+fn releases_of(attributes: &[Attribute]) -> [Option<&str>; 2] {
+    MODULE_RELEASES.map(|name| attribute(attributes, name))
 }
 
 /// The access point's RequiredSchemaVersion, where gsdc can write it: a
@@ -1425,12 +1449,12 @@ fn unsaid_extras(
             check(&s.attributes, known, s.kind.element());
         }
     }
+    let mut module_known = vec![("ModuleInfo@CategoryRef", None)];
+    if modules_repeat_releases(first, modules) {
+        module_known.extend(MODULE_RELEASES.map(|name| (name, None)));
+    }
     for m in modules {
-        check(
-            &m.module.attributes,
-            &[("ModuleInfo@CategoryRef", None)],
-            "ModuleItem",
-        );
+        check(&m.module.attributes, &module_known, "ModuleItem");
         if let Some(s) = m.access_point {
             check(&s.attributes, SUBMODULE_ATTRIBUTES, "VirtualSubmoduleItem");
         }

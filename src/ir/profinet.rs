@@ -30,6 +30,9 @@ pub struct Profinet {
     /// The labels the interface and its ports carry on the device, when
     /// the description gives them.
     pub subslot_labels: Option<SubslotLabels>,
+    /// Whether every module's ModuleInfo repeats the first device access
+    /// point's hardware and software release.
+    pub module_releases: bool,
     /// The interface submodule's SubmoduleIdentNumber.
     pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,

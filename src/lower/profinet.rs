@@ -6,7 +6,7 @@ use crate::description::{self as raw, ModulePkw};
 use crate::diag::Diagnostic;
 use crate::i18n::{self, files};
 use crate::ir::profinet::{
-    Category, Date, GraphicItem, Module, ModuleKind, Port, Profinet, SubslotLabels, TextRef,
+    Category, Dap, Date, GraphicItem, Module, ModuleKind, Port, Profinet, SubslotLabels, TextRef,
     TimeOfDay, Version, FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
@@ -174,6 +174,7 @@ pub fn lower(
     let daps = daps?;
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
     let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports)?;
+    let module_releases = module_releases(cx, p.module_releases.as_ref(), &daps[0])?;
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -201,6 +202,7 @@ pub fn lower(
         access_point_ident: idents.access_point,
         daps,
         subslot_labels,
+        module_releases,
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
@@ -301,6 +303,24 @@ fn subslot_labels(
         interface: TextRef::new(ids::INTERFACE_LABEL_TEXT, interface),
         ports,
     }))
+}
+
+/// `module_releases`: the modules repeat the first device access point's
+/// releases, so it must have one (E192).
+fn module_releases(cx: &mut Checker, given: Option<&Spanned<bool>>, first: &Dap) -> Option<bool> {
+    let Some(given) = given.filter(|g| *g.get_ref()) else {
+        return Some(false);
+    };
+    if first.hardware_release.is_none() && first.software_release.is_none() {
+        cx.push(
+            Diagnostic::error("E192", "the modules have no release to repeat")
+                .at(given.span())
+                .label("the first device access point has no release")
+                .help("give [device] hardware_release or software_release, the card's, or leave module_releases out"),
+        );
+        return None;
+    }
+    Some(true)
 }
 
 /// Port `number`; an MRP client starts with ports 1 and 2 as its ring, as
