@@ -121,7 +121,7 @@ pub const RULES: &[Rule] = &[
     rule("E174", "a stated limit less than the modules need"),
     rule("E175", "a parameter with both type and bits"),
     rule("E176", "two PROFINET modules of one ident number"),
-    rule("E177", "an ident number for a module not offered"),
+    rule("E177", "a key naming a module not offered"),
     rule("E178", "port ident numbers other than one per port"),
     rule("E179", "an access point ident number without PROFIdrive"),
     rule("E180", "a DPV1 alarm required but not supported"),

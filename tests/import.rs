@@ -2197,3 +2197,31 @@ fn modules_repeating_the_cards_releases_import() {
         .iter()
         .any(|m| m.contains("Release")));
 }
+
+/// FENA's modules' own names and info texts, and their data submodules'
+/// (lines 188-218 for PPO type 3, texts at lines 934-936; lines 399-436 for
+/// standard telegram 1, texts at 897-900), import as `module_texts` in
+/// place of gsdc's, and the round trip finds no module's or submodule's
+/// name or info text changed (the data items' names are still gsdc's).
+#[test]
+fn modules_own_names_and_info_texts_import() {
+    let fena = corpus_import(FENA);
+    assert_says(
+        another_device(&fena),
+        &[
+            "[profinet.module_texts.pzd2]\nname = \"PPO Type 3\"\ninfo = \"PPO Type 3\"\nsubmodule_name = \"PPO3 Data Object\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n",
+            "[profinet.module_texts.telegram1]\nname = \"Standard Telegram 1\"\ninfo = \"Standard Telegram 1\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n",
+        ],
+    );
+    let texts: Vec<_> = round_trip_changes(FENA, &fena)
+        .into_iter()
+        .filter(|c| c.contains(" name: ") || c.contains(" info text: "))
+        .filter(|c| {
+            c.starts_with("module") || c.starts_with("submodule \"") && !c.contains("Access Point")
+        })
+        .collect();
+    assert_eq!(texts, Vec::<String>::new());
+    assert!(!messages(&fena, "W600")
+        .iter()
+        .any(|m| m.contains("InfoText")));
+}

@@ -595,6 +595,9 @@ pub struct Profinet {
     /// of a card that does not implement PROFIdrive.
     #[serde(default)]
     pub module_name: ModuleName,
+    /// Single modules' own texts, by their names in generated code.
+    #[serde(default)]
+    pub module_texts: BTreeMap<Spanned<String>, Spanned<ModuleTexts>>,
     /// Values the settings record of each module ends with, one for each
     /// of its output items.
     pub fail_safe_values: Option<Spanned<FailSafeValues>>,
@@ -832,6 +835,18 @@ pub struct FailSafeValues {
     pub standard_telegram_1: Option<Spanned<Vec<Spanned<Text>>>>,
     /// Standard telegram 2's three items, when it is offered.
     pub standard_telegram_2: Option<Spanned<Vec<Spanned<Text>>>>,
+}
+
+/// `[profinet.module_texts.<module>]`: a module's own texts, each in place
+/// of the one gsdc, `module_name` or `module_info` gives it; its data
+/// submodule shows the module's name and info unless it has its own.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModuleTexts {
+    pub name: Option<Spanned<Text>>,
+    pub info: Option<Spanned<Text>>,
+    pub submodule_name: Option<Spanned<Text>>,
+    pub submodule_info: Option<Spanned<Text>>,
 }
 
 #[derive(Debug, Default, Deserialize)]

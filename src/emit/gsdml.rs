@@ -758,7 +758,7 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
         }
         doc.close("RecordDataList");
     }
-    module_info(doc, &m.name, &m.info, &[]);
+    module_info(doc, &m.submodule_name, &m.submodule_info, &[]);
     if let Some(iso) = &p.interface_properties.isochronous {
         isochrone_mode(doc, iso);
     }

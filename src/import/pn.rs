@@ -1156,30 +1156,44 @@ fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
     let profidrive = modules.iter().any(Recognised::is_profidrive);
     let mut infos: Vec<(&str, String)> = Vec::new();
     let mut name = None;
+    let mut own: Vec<(String, Vec<(&str, String)>)> = Vec::new();
     for (key, kind) in MODULE_KIND_KEYS {
         let of_kind: Vec<&Recognised> = modules.iter().filter(|m| m.kind == kind).collect();
         let Some(first) = of_kind.first() else {
             continue;
         };
-        let module_name = first.module.name.clone().unwrap_or_default();
-        if kind == ModuleKind::StandardTelegram1 && !profidrive {
-            name = Some(text(&module_name));
+        let gsdc_name = crate::lower::module_name(kind, first.layout)
+            .or_else(|| profidrive.then(crate::lower::profidrive_telegram_1_name));
+        // Standard telegram 1 of a card without PROFIdrive: the first's name
+        // is the kind's, `module_name`, and gsdc's description says it.
+        let kind_name = gsdc_name
+            .clone()
+            .unwrap_or_else(|| ir_text(first.module.name.as_ref().unwrap_or(&Text::default())));
+        if gsdc_name.is_none() {
+            name = first.module.name.as_ref().map(text);
         }
+        // What the kind's modules add to gsdc's description: the first's,
+        // where it is gsdc's description with or without words after it.
         let added: Vec<Option<Text>> = of_kind
             .iter()
-            .map(|m| added_info(m, &module_name, profidrive))
+            .map(|m| added_info(m, &kind_name, profidrive))
             .collect();
-        match added.first() {
-            Some(Some(info)) if added.iter().all(|a| a.as_ref() == Some(info)) => {
-                if !info.primary.is_empty() {
-                    infos.push((key, text(info)));
-                }
+        let kind_info = added
+            .first()
+            .cloned()
+            .flatten()
+            .filter(|t| !t.primary.is_empty());
+        if let Some(info) = &kind_info {
+            infos.push((key, text(info)));
+        }
+        for (m, added) in of_kind.iter().zip(added) {
+            let module_name = m.module.name.as_ref().filter(|n| !same_text(n, &kind_name));
+            let info_as_kinds =
+                added.is_some() && added.filter(|t| !t.primary.is_empty()) == kind_info;
+            let texts = own_texts(m, (module_name, !info_as_kinds), notes);
+            if !texts.is_empty() {
+                own.push((m.code_name(), texts));
             }
-            _ => notes.unsaid(
-                &format!("module `{}`'s InfoText", first.module.id),
-                &first.module.place,
-                "the description's module info adds one text to gsdc's description of every module of a kind",
-            ),
         }
     }
     if !infos.is_empty() {
@@ -1192,6 +1206,54 @@ fn module_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
         out.table("profinet.module_name");
         out.key("standard_telegram_1", name);
     }
+    for (module, texts) in own {
+        out.table(&format!("profinet.module_texts.{module}"));
+        for (key, value) in texts {
+            out.key(key, value);
+        }
+    }
+}
+
+/// A module's own texts (`[profinet.module_texts]`): its name where not
+/// gsdc's or its kind's, its info where its kind's would not give it, and
+/// its data submodule's name and info where not the module's.
+fn own_texts<'k>(
+    m: &Recognised,
+    (name, own_info): (Option<&Text>, bool),
+    notes: &mut Notes,
+) -> Vec<(&'k str, String)> {
+    let mut texts: Vec<(&str, String)> = name.map(|n| ("name", text(n))).into_iter().collect();
+    match (&m.module.info, own_info) {
+        (Some(info), true) => texts.push(("info", text(info))),
+        (None, _) => notes.unsaid(
+            &format!("module `{}` without an InfoText", m.module.id),
+            &m.module.place,
+            "gsdc gives every module an info text",
+        ),
+        (Some(_), false) => {}
+    }
+    if let Some(own) = other_than(&m.data.name, &m.module.name) {
+        texts.push(("submodule_name", text(own)));
+    }
+    if let Some(own) = other_than(&m.data.info, &m.module.info) {
+        texts.push(("submodule_info", text(own)));
+    }
+    texts
+}
+
+/// A submodule's own text, where it has one that is not its module's.
+fn other_than<'a>(own: &'a Option<Text>, module: &Option<Text>) -> Option<&'a Text> {
+    own.as_ref().filter(|&o| Some(o) != module.as_ref())
+}
+
+/// Whether a file's text is gsdc's, in English and in every language the
+/// file gives it.
+fn same_text(file: &Text, gsdc: &crate::ir::Text) -> bool {
+    *file.primary == *gsdc.en
+        && file
+            .translations
+            .iter()
+            .all(|(code, text)| gsdc.get(code) == text)
 }
 
 /// `[profinet.subslot_labels]`, where every access point imported labels
@@ -1324,10 +1386,9 @@ fn is_gsdc_category(group: &Text, m: &Recognised, profidrive: bool) -> bool {
 /// What a module's info text adds after gsdc's description of it, in
 /// every language (empty when it adds nothing); `None` when the text is
 /// not gsdc's description at all.
-fn added_info(m: &Recognised, name: &Text, profidrive: bool) -> Option<Text> {
+fn added_info(m: &Recognised, name: &crate::ir::Text, profidrive: bool) -> Option<Text> {
     let info = m.module.info.as_ref()?;
-    let name = ir_text(name);
-    let gsdc = crate::lower::module_description(m.kind, m.layout, &name, profidrive);
+    let gsdc = crate::lower::module_description(m.kind, m.layout, name, profidrive);
     let strip = |code: &str, full: &str| -> Option<String> {
         let own = gsdc.get(code);
         if full == own {

@@ -156,10 +156,11 @@ impl Profinet {
     }
 
     /// Every text the GSDML refers to, in the order of the plan: the
-    /// device's, the interface's and ports', the catalog's categories, each
-    /// module's (its name and info, its access point's, its IO data and
-    /// their bits, its records and their entries), the value items'. A
-    /// TextId may come more than once.
+    /// device's, the interface's and ports', their labels, the catalog's
+    /// categories, each module's (its name and info and its data
+    /// submodule's, its access point's, its IO data and their bits, its
+    /// records and their entries), the value items'. A TextId may come more
+    /// than once.
     pub fn text_refs(&self) -> Vec<&TextRef> {
         let mut refs = vec![&self.device_info, &self.interface];
         for dap in &self.daps {
@@ -172,7 +173,7 @@ impl Profinet {
         }
         refs.extend(self.categories.iter().map(|c| &c.text));
         for m in &self.modules {
-            refs.extend([&m.name, &m.info]);
+            refs.extend([&m.name, &m.info, &m.submodule_name, &m.submodule_info]);
             if let Some(map) = &m.access_point {
                 refs.extend([&map.name, &map.info]);
             }
@@ -542,6 +543,10 @@ pub struct Module {
     pub category: String,
     pub name: TextRef,
     pub info: TextRef,
+    /// Its data submodule's name and info: the module's, unless the
+    /// description gives the submodule its own.
+    pub submodule_name: TextRef,
+    pub submodule_info: TextRef,
     /// ModuleIdentNumber, and its data submodule's SubmoduleIdentNumber
     /// (the same in gsdc's numbering).
     pub ident_number: u32,

@@ -10,7 +10,7 @@ use crate::ir::profinet::{
     TimeOfDay, Version, FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use toml::Spanned;
 
 mod daps;
@@ -29,8 +29,8 @@ pub(crate) use diagnosis::{
     ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES, EXTENDED_ERROR_TYPES, PROFILE_ERROR_TYPES,
 };
 pub(crate) use io::{
-    category as module_category, description as module_description, info_prefix, io_length,
-    pkw_words, STANDARD_TELEGRAM_2_WORDS,
+    category as module_category, description as module_description, gsdc_name as module_name,
+    info_prefix, io_length, pkw_words, profidrive_telegram_1_name, STANDARD_TELEGRAM_2_WORDS,
 };
 
 /// `info` after a notice that the file is a draft, naming the identity
@@ -125,6 +125,7 @@ pub fn lower(
         .collect();
     let mut ports: Vec<Port> = (1..=ports).map(|n| port(n, media_redundancy)).collect();
     let idents = idents::apply(cx, &p.ident_numbers, &mut modules, &mut ports);
+    apply_module_texts(cx, &p.module_texts, &mut modules);
     {
         use crate::i18n::files as w;
         if idents.numbered_by_gsdc {
@@ -263,6 +264,45 @@ fn stated_categories(cx: &mut Checker, p: &raw::Profinet) -> Vec<(ModuleKind, Ca
         stated.push((kind, category));
     }
     stated
+}
+
+/// `[profinet.module_texts]`: each module's own texts, in place of those
+/// gsdc and the kind's keys give it (E177 for a key that names no module).
+/// Its data submodule shows the module's name and info unless given its
+/// own.
+fn apply_module_texts(
+    cx: &mut Checker,
+    given: &BTreeMap<Spanned<String>, Spanned<raw::ModuleTexts>>,
+    modules: &mut [Module],
+) {
+    for (key, texts) in given {
+        let texts = texts.get_ref();
+        let mut lower = |text: &Option<Spanned<raw::Text>>, field: &str| {
+            let what = format!("profinet.module_texts.{}.{field}", key.get_ref());
+            text.as_ref().map(|t| cx.text(t, None, &what))
+        };
+        let name = lower(&texts.name, "name");
+        let info = lower(&texts.info, "info");
+        let submodule_name = lower(&texts.submodule_name, "submodule_name");
+        let submodule_info = lower(&texts.submodule_info, "submodule_info");
+        idents::for_module(cx, key, modules, |m| {
+            let tag = ids::module_tag(m.kind, m.layout);
+            if let Some(name) = name {
+                m.name.text = name;
+            }
+            if let Some(info) = info {
+                m.info.text = info;
+            }
+            m.submodule_name = submodule_name.map_or_else(
+                || m.name.clone(),
+                |t| TextRef::new(format!("IDT_SUBMODULE_{tag}"), t),
+            );
+            m.submodule_info = submodule_info.map_or_else(
+                || m.info.clone(),
+                |t| TextRef::new(format!("IDT_SUBMODULE_INFO_{tag}"), t),
+            );
+        });
+    }
 }
 
 /// `[profinet.subslot_labels]`: the interface's label and one for each

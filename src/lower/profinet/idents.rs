@@ -95,7 +95,7 @@ fn module_ident(cx: &mut Checker, number: &Spanned<u32>) -> Option<u32> {
 
 /// Calls `set` with the module `key` names; E177 when it names no module
 /// the description offers.
-fn for_module(
+pub(super) fn for_module(
     cx: &mut Checker,
     key: &Spanned<String>,
     modules: &mut [Module],

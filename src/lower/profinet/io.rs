@@ -44,12 +44,13 @@ pub fn module(
         (_, true) => profidrive_telegram_1(direction),
         (_, false) => data_items(telegram, layout, direction),
     };
-    let name = match kind {
-        ModuleKind::StandardTelegram1 => names.telegram_1.clone(),
-        ModuleKind::StandardTelegram2 => Text::phrase(files::STANDARD_TELEGRAM_2),
-        ModuleKind::Pzd => pzd_name(layout),
-    };
+    let name = gsdc_name(kind, layout).unwrap_or_else(|| names.telegram_1.clone());
     let description = description(kind, layout, &name, profidrive);
+    let name = TextRef::new(format!("IDT_MODULE_{tag}"), name);
+    let info = TextRef::new(
+        format!("IDT_MODULE_INFO_{tag}"),
+        with_info(description, names.info),
+    );
     let output = items(Direction::Out);
     let fail_safe = names
         .fail_safe
@@ -62,11 +63,10 @@ pub fn module(
         api: if profidrive { PROFIDRIVE_API } else { 0 },
         access_point: profidrive.then(|| access_point(&tag)),
         category: names.category,
-        name: TextRef::new(format!("IDT_MODULE_{tag}"), name),
-        info: TextRef::new(
-            format!("IDT_MODULE_INFO_{tag}"),
-            with_info(description, names.info),
-        ),
+        submodule_name: name.clone(),
+        submodule_info: info.clone(),
+        name,
+        info,
         ident_number: ident_number(kind, layout),
         submodule_ident_number: ident_number(kind, layout),
         layout,
@@ -137,6 +137,17 @@ fn ident_number(kind: ModuleKind, layout: Layout) -> u32 {
         ModuleKind::StandardTelegram1 => 0x10,
         ModuleKind::StandardTelegram2 => 0x20,
         ModuleKind::Pzd => (if layout.pkw { 0x200 } else { 0x100 }) + u32::from(layout.pzd_words),
+    }
+}
+
+/// gsdc's name of a module of `kind`; `None` for standard telegram 1,
+/// which the profile names on a PROFIdrive card and the description on
+/// another.
+pub(crate) fn gsdc_name(kind: ModuleKind, layout: Layout) -> Option<Text> {
+    match kind {
+        ModuleKind::StandardTelegram1 => None,
+        ModuleKind::StandardTelegram2 => Some(Text::phrase(files::STANDARD_TELEGRAM_2)),
+        ModuleKind::Pzd => Some(pzd_name(layout)),
     }
 }
 
