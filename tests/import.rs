@@ -1273,26 +1273,16 @@ fn a_gsd_without_gsd_revision_imports_as_revision_0() {
 /// changed.
 #[test]
 fn each_kinds_catalog_group_imports_with_its_texts() {
-    let fena = corpus_import(FENA);
-    assert_says(
-        another_device(&fena),
-        &["[profinet.categories]\nuser_defined = \"PPO Types\"\nstandard_telegram_1 = \"Standard Telegrams\"\nstandard_telegram_2 = \"Standard Telegrams\"\n"],
-    );
-    let movi_c = corpus_import(MOVI_C);
-    assert_says(
-        another_device(&movi_c),
-        &["[profinet.categories]\nuser_defined = { en = \"Processdata Modules\", de = \"Prozessdaten Module\" }\n"],
-    );
     // Category changes are cosmetic, never E601: read them from the diff.
-    for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
-        let categories: Vec<_> = round_trip_changes(name, imported)
-            .into_iter()
-            // MOVI-C names the group on each data submodule too, which the
-            // description does not say (W600).
-            .filter(|c| c.contains("CategoryRef") && !c.starts_with("submodule"))
-            .collect();
-        assert_eq!(categories, Vec::<String>::new(), "{name}");
-    }
+    assert_imported_and_kept(
+        &[
+            (FENA, "[profinet.categories]\nuser_defined = \"PPO Types\"\nstandard_telegram_1 = \"Standard Telegrams\"\nstandard_telegram_2 = \"Standard Telegrams\"\n"),
+            (MOVI_C, "[profinet.categories]\nuser_defined = { en = \"Processdata Modules\", de = \"Prozessdaten Module\" }\n"),
+        ],
+        // MOVI-C names the group on each data submodule too, which the
+        // description does not say (W600).
+        |change| change.contains("CategoryRef") && !change.starts_with("submodule"),
+    );
 }
 
 /// The labels on the device of the interface and the ports: FENA's (lines
@@ -1303,26 +1293,37 @@ fn each_kinds_catalog_group_imports_with_its_texts() {
 /// changed.
 #[test]
 fn the_interfaces_and_ports_labels_import_with_their_texts() {
-    let fena = corpus_import(FENA);
-    assert_says(
-        another_device(&fena),
-        &["[profinet.subslot_labels]\ninterface = \"X1\"\nports = [\"X1 P1\", \"X1 P2\"]\n"],
+    let imported = assert_imported_and_kept(
+        &[
+            (FENA, "[profinet.subslot_labels]\ninterface = \"X1\"\nports = [\"X1 P1\", \"X1 P2\"]\n"),
+            (MOVI_C, "[profinet.subslot_labels]\ninterface = { en = \"X1\", de = \"X1\" }\nports = [{ en = \"X1 P1\", de = \"X1 P1\" }, { en = \"X1 P2\", de = \"X1 P2\" }]\n"),
+        ],
+        |change| change.contains("SubslotItem"),
     );
-    let movi_c = corpus_import(MOVI_C);
-    assert_says(
-        another_device(&movi_c),
-        &["[profinet.subslot_labels]\ninterface = { en = \"X1\", de = \"X1\" }\nports = [{ en = \"X1 P1\", de = \"X1 P1\" }, { en = \"X1 P2\", de = \"X1 P2\" }]\n"],
-    );
-    for (name, imported) in [(FENA, &fena), (MOVI_C, &movi_c)] {
-        let labels: Vec<_> = round_trip_changes(name, imported)
-            .into_iter()
-            .filter(|c| c.contains("SubslotItem"))
-            .collect();
-        assert_eq!(labels, Vec::<String>::new(), "{name}");
+    for imported in &imported {
         assert!(!messages(imported, "W600")
             .iter()
             .any(|m| m.contains("SubslotList")));
     }
+}
+
+/// Imports each corpus GSDML file of `files`, asserts that its description
+/// says the lines given with it, and that the round trip finds no change
+/// `kept` picks (cosmetic changes too, which are never E601); the imports.
+fn assert_imported_and_kept(files: &[(&str, &str)], kept: impl Fn(&str) -> bool) -> Vec<Imported> {
+    files
+        .iter()
+        .map(|&(name, says)| {
+            let imported = corpus_import(name);
+            assert_says(another_device(&imported), &[says]);
+            let changed: Vec<String> = round_trip_changes(name, &imported)
+                .into_iter()
+                .filter(|c| kept(c))
+                .collect();
+            assert_eq!(changed, Vec::<String>::new(), "{name}");
+            imported
+        })
+        .collect()
 }
 
 /// What `gsdc diff` finds, each change as its subject and how, between the
@@ -2179,21 +2180,15 @@ fn labels_only_some_access_points_give_are_left_out() {
 /// module's release changed.
 #[test]
 fn modules_repeating_the_cards_releases_import() {
-    let fena = corpus_import(FENA);
-    let toml = another_device(&fena);
-    assert_says(
-        toml,
-        &[
+    let imported = assert_imported_and_kept(
+        &[(
+            FENA,
             "hardware_release = \"1\"\nsoftware_release = \"V3.2.0\"\n",
-            "module_releases = true\n",
-        ],
+        )],
+        |change| change.contains("Release"),
     );
-    let releases: Vec<_> = round_trip_changes(FENA, &fena)
-        .into_iter()
-        .filter(|c| c.contains("Release"))
-        .collect();
-    assert_eq!(releases, Vec::<String>::new());
-    assert!(!messages(&fena, "W600")
+    assert_says(another_device(&imported[0]), &["module_releases = true\n"]);
+    assert!(!messages(&imported[0], "W600")
         .iter()
         .any(|m| m.contains("Release")));
 }
@@ -2205,23 +2200,20 @@ fn modules_repeating_the_cards_releases_import() {
 /// name or info text changed (the data items' names are still gsdc's).
 #[test]
 fn modules_own_names_and_info_texts_import() {
-    let fena = corpus_import(FENA);
-    assert_says(
-        another_device(&fena),
-        &[
-            "[profinet.module_texts.pzd2]\nname = \"PPO Type 3\"\ninfo = \"PPO Type 3\"\nsubmodule_name = \"PPO3 Data Object\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n",
-            "[profinet.module_texts.telegram1]\nname = \"Standard Telegram 1\"\ninfo = \"Standard Telegram 1\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n",
-        ],
+    let imported = assert_imported_and_kept(
+        &[(FENA, "[profinet.module_texts.pzd2]\nname = \"PPO Type 3\"\ninfo = \"PPO Type 3\"\nsubmodule_name = \"PPO3 Data Object\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n")],
+        |change| {
+            let text = change.contains(" name: ") || change.contains(" info text: ");
+            let of_a_module = change.starts_with("module")
+                || change.starts_with("submodule \"") && !change.contains("Access Point");
+            text && of_a_module
+        },
     );
-    let texts: Vec<_> = round_trip_changes(FENA, &fena)
-        .into_iter()
-        .filter(|c| c.contains(" name: ") || c.contains(" info text: "))
-        .filter(|c| {
-            c.starts_with("module") || c.starts_with("submodule \"") && !c.contains("Access Point")
-        })
-        .collect();
-    assert_eq!(texts, Vec::<String>::new());
-    assert!(!messages(&fena, "W600")
+    assert_says(
+        another_device(&imported[0]),
+        &["[profinet.module_texts.telegram1]\nname = \"Standard Telegram 1\"\ninfo = \"Standard Telegram 1\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n"],
+    );
+    assert!(!messages(&imported[0], "W600")
         .iter()
         .any(|m| m.contains("InfoText")));
 }

@@ -174,8 +174,9 @@ pub fn lower(
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
     let daps = daps?;
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
-    let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports)?;
-    let module_releases = module_releases(cx, p.module_releases.as_ref(), &daps[0])?;
+    let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports);
+    let module_releases = module_releases(cx, p.module_releases.as_ref(), &daps[0]);
+    let (subslot_labels, module_releases) = (subslot_labels?, module_releases?);
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
