@@ -797,3 +797,55 @@ fn stated_ident_numbers_replace_gsdcs_numbering() {
     let headers = descriptions::output_text(&ir, ArtifactKind::Gsdml);
     assert!(headers.contains("profinet ident numbers [profinet.ident_numbers] does not state"));
 }
+
+/// `[profinet.pzd_names]` names the PZD words after the control word the
+/// telegram names, which keeps its name, and every PZD word the other way,
+/// where it names no status word: french.toml's one module of 2 PZD words,
+/// its words in the order of the data items.
+#[test]
+fn pzd_names_follow_the_control_and_status_words() {
+    let fixture =
+        std::fs::read_to_string(crate::support::checkout("tests/fixtures/valid/french.toml"))
+            .unwrap();
+    let text = format!(
+        "{fixture}\n[profinet.pzd_names]\noutput = [\"Speed reference\"]\ninput = [\"Status\", \"Speed actual\"]\n"
+    );
+    let (ir, diagnostics) = descriptions::load_text("french.toml", &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:#?}"));
+    let (gsdml, _) = gsdml_of(&ir);
+    let doc = Document::parse(&gsdml).unwrap();
+    let names = |part: &str| -> Vec<&str> {
+        let module = elements(&doc, "ModuleItem").next().unwrap();
+        let items = module.descendants().filter(|n| n.has_tag_name(part));
+        let items = items.flat_map(|p| children(p, "DataItem"));
+        items
+            .map(|i| english(&doc, attribute(i, "TextId")))
+            .collect()
+    };
+    assert_eq!(names("Output"), ["Control word", "Speed reference"]);
+    assert_eq!(names("Input"), ["Status", "Speed actual"]);
+
+    let three = text.replace(
+        "[\"Speed reference\"]",
+        "[\"Control\", \"Speed reference\"]",
+    );
+    let errors = descriptions::error_places("french.toml", &three);
+    assert_eq!(errors.iter().map(|e| e.0).collect::<Vec<_>>(), ["E193"]);
+}
+
+/// A TextId names one text: in every description and fixture, no two of
+/// the texts the GSDML refers to (`Profinet::text_refs`) share a TextId
+/// with different words, which the file would show for both.
+#[test]
+fn no_text_id_names_two_texts() {
+    for (name, ir) in descriptions::all_valid() {
+        let Some(p) = &ir.profinet else {
+            continue;
+        };
+        let mut seen: std::collections::BTreeMap<&str, &gsdc::ir::Text> = Default::default();
+        for text in p.text_refs() {
+            let known = *seen.entry(text.id.as_str()).or_insert(&text.text);
+            assert_eq!(known, &text.text, "{name}: {} names two texts", text.id);
+        }
+    }
+}

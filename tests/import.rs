@@ -2217,3 +2217,30 @@ fn modules_own_names_and_info_texts_import() {
         .iter()
         .any(|m| m.contains("InfoText")));
 }
+
+/// FENA names its PPO modules' PZD words (lines 199-204 for PPO type 3:
+/// "Status", "Speed Actual", "Command", "Speed Reference"; PPO type 7's
+/// "Actual PZD3" to "Reference PZD12" at lines 337-392), the same word alike
+/// in every module: the import states them as `pzd_names`, and the round
+/// trip finds no PPO module's data item renamed (the standard telegrams',
+/// the profile's, are gsdc's).
+#[test]
+fn the_pzd_words_names_import() {
+    let quoted = |first: [&str; 2], rest: &str| {
+        let rest = (3..=12).map(|n| format!("{rest} PZD{n}"));
+        let names: Vec<String> = first.iter().map(|s| s.to_string()).chain(rest).collect();
+        let names: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
+        format!("[{}]", names.join(", "))
+    };
+    let says = format!(
+        "[profinet.pzd_names]\noutput = {}\ninput = {}\n",
+        quoted(["Command", "Speed Reference"], "Reference"),
+        quoted(["Status", "Speed Actual"], "Actual"),
+    );
+    let imported = assert_imported_and_kept(&[(FENA, &says)], |change| {
+        change.starts_with("item") && change.contains("of module \"PPO Type")
+    });
+    assert!(!messages(&imported[0], "W600")
+        .iter()
+        .any(|m| m.contains("PZD")));
+}

@@ -598,6 +598,8 @@ pub struct Profinet {
     /// Single modules' own texts, by their names in generated code.
     #[serde(default)]
     pub module_texts: BTreeMap<Spanned<String>, Spanned<ModuleTexts>>,
+    /// What the data items of the modules of PZD words call each word.
+    pub pzd_names: Option<Spanned<PzdNames>>,
     /// Values the settings record of each module ends with, one for each
     /// of its output items.
     pub fail_safe_values: Option<Spanned<FailSafeValues>>,
@@ -847,6 +849,16 @@ pub struct ModuleTexts {
     pub info: Option<Spanned<Text>>,
     pub submodule_name: Option<Spanned<Text>>,
     pub submodule_info: Option<Spanned<Text>>,
+}
+
+/// `[profinet.pzd_names]`: the names the GSDML's data items give the PZD
+/// words of the modules of PZD words, each way, from the first the
+/// telegram does not name (its control or status word).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PzdNames {
+    pub output: Option<Spanned<Vec<Spanned<Text>>>>,
+    pub input: Option<Spanned<Vec<Spanned<Text>>>>,
 }
 
 #[derive(Debug, Default, Deserialize)]

@@ -21,7 +21,7 @@ use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
 use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
-use crate::ir::{Layout, PkwKind};
+use crate::ir::{Direction, Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 
 /// Attributes of the device access point gsdc writes, with the value it
@@ -207,6 +207,7 @@ pub(super) fn describe(
         fail_safe.write(&mut out);
     }
     module_texts(&mut out, &modules, notes);
+    pzd_names(&mut out, &modules, notes);
     let imported_daps: Vec<&Dap> = std::iter::once(dap)
         .chain(later.iter().map(|l| l.dap))
         .collect();
@@ -600,23 +601,11 @@ fn telegram_table(out: &mut TomlOut, modules: &[Recognised], pkw: PkwKind) {
     if modules.iter().any(|m| m.kind != ModuleKind::Pzd) {
         out.key("profidrive", modules.iter().any(Recognised::is_profidrive));
     }
-    for (table, output) in [
-        ("telegram.control_word", true),
-        ("telegram.status_word", false),
+    for (table, direction) in [
+        ("telegram.control_word", Direction::Out),
+        ("telegram.status_word", Direction::In),
     ] {
-        let word = modules.iter().filter(|m| !m.is_profidrive()).find_map(|m| {
-            let part = if output {
-                &m.data.io.output
-            } else {
-                &m.data.io.input
-            };
-            let item = part
-                .as_ref()?
-                .items
-                .get(usize::from(m.layout.pkw_words()))?;
-            (item.use_as_bits && !item.bits.is_empty()).then_some(item)
-        });
-        if let Some(word) = word {
+        if let Some(word) = named_word(modules, direction) {
             out.table(table);
             out.key("name", text(&word.text.clone().unwrap_or_default()));
             let bits: Vec<String> = word
@@ -625,6 +614,76 @@ fn telegram_table(out: &mut TomlOut, modules: &[Recognised], pkw: PkwKind) {
                 .map(|(bit, name)| format!("{{ bit = {bit}, name = {} }}", text(name)))
                 .collect();
             out.key("bits", format!("[\n    {},\n]", bits.join(",\n    ")));
+        }
+    }
+}
+
+/// The control or status word (`direction`) the description's telegram
+/// names: the first PZD word of a module of PZD words, where one such
+/// module has bits in it.
+fn named_word<'a>(modules: &[Recognised<'a>], direction: Direction) -> Option<&'a DataItem> {
+    modules.iter().filter(|m| !m.is_profidrive()).find_map(|m| {
+        let item = pzd_items(m, direction).first()?;
+        (item.use_as_bits && !item.bits.is_empty()).then_some(item)
+    })
+}
+
+/// A module's data items one way after its PKW channel's: its PZD words.
+fn pzd_items<'a>(m: &Recognised<'a>, direction: Direction) -> &'a [DataItem] {
+    let part = match direction {
+        Direction::Out => &m.data.io.output,
+        Direction::In => &m.data.io.input,
+    };
+    part.as_ref()
+        .and_then(|p| p.items.get(usize::from(m.layout.pkw_words())..))
+        .unwrap_or_default()
+}
+
+/// `[profinet.pzd_names]`: the names the modules of PZD words give their
+/// PZD words each way, after a named control or status word, where every
+/// module gives a word the same name and any name is not gsdc's `PZD{n}`;
+/// else the names are left out, saying why.
+fn pzd_names(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    let mut lists = Vec::new();
+    'direction: for (key, direction) in [("output", Direction::Out), ("input", Direction::In)] {
+        let first = usize::from(named_word(modules, direction).is_some());
+        let mut names: Vec<&Text> = Vec::new();
+        let of_words = modules.iter().filter(|m| !m.is_profidrive());
+        for m in of_words {
+            for (i, item) in pzd_items(m, direction).iter().enumerate().skip(first) {
+                let same = match (names.get(i - first), &item.text) {
+                    (_, None) => false,
+                    (Some(&known), Some(name)) => known == name,
+                    (None, Some(name)) => {
+                        names.push(name);
+                        true
+                    }
+                };
+                if !same {
+                    let why = format!(
+                        "the description's pzd_names give PZD{} one name {key} in every module",
+                        i + 1
+                    );
+                    notes.unsaid(
+                        &format!("the name of PZD{} {key}", i + 1),
+                        &item.place,
+                        &why,
+                    );
+                    continue 'direction;
+                }
+            }
+        }
+        let gsdcs = (first + 1..)
+            .zip(&names)
+            .all(|(n, name)| same_text(name, &crate::ir::Text::english(format!("PZD{n}"))));
+        if !gsdcs {
+            lists.push((key, list(names.into_iter().map(text))));
+        }
+    }
+    if !lists.is_empty() {
+        out.table("profinet.pzd_names");
+        for (key, names) in lists {
+            out.key(key, names);
         }
     }
 }

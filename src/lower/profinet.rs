@@ -21,6 +21,7 @@ mod ids;
 mod interface;
 mod io;
 mod irt;
+mod pzd_names;
 mod records;
 mod stack;
 pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
@@ -101,6 +102,7 @@ pub fn lower(
             .is_none_or(|at| *at.get_ref() == raw::SetAt::Master)
     });
     let fail_safe = fail_safe::names(cx, p, &kinds, master_sets_settings);
+    let pzd_names = pzd_names::lower(cx, p.pzd_names.as_ref(), telegram);
     let stated = stated_categories(cx, p);
     let mut categories: Vec<Category> = Vec::new();
     let mut modules: Vec<Module> = kinds
@@ -119,6 +121,7 @@ pub fn lower(
                 info,
                 category: category.id,
                 fail_safe: fail_safe.as_ref(),
+                pzd: pzd_names.as_ref(),
             };
             io::module((kind, layout), telegram, (mappings, &records), names)
         })

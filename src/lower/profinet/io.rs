@@ -3,6 +3,7 @@
 
 use super::fail_safe::FailSafeNames;
 use super::ids::module_tag;
+use super::pzd_names::PzdNames;
 use super::records::{self, RecordPlan};
 use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{
@@ -24,6 +25,8 @@ pub struct Names<'a> {
     pub category: String,
     /// The names of the values its settings record ends with.
     pub fail_safe: Option<&'a FailSafeNames>,
+    /// The description's names of the PZD words, where it gives them.
+    pub pzd: Option<&'a PzdNames>,
 }
 
 /// A module of `kind` and `layout`. Standard telegram 1 of a PROFIdrive
@@ -42,7 +45,7 @@ pub fn module(
     let items = |direction| match (kind, profidrive) {
         (ModuleKind::StandardTelegram2, _) => profidrive_telegram_2(direction),
         (_, true) => profidrive_telegram_1(direction),
-        (_, false) => data_items(telegram, layout, direction),
+        (_, false) => data_items(telegram, layout, direction, names.pzd),
     };
     let name = gsdc_name(kind, layout).unwrap_or_else(|| names.telegram_1.clone());
     let description = description(kind, layout, &name, profidrive);
@@ -241,7 +244,12 @@ fn profidrive_telegram_2(direction: Direction) -> Vec<DataItem> {
 
 /// The module's words one way, in telegram order: the PKW channel, then
 /// PZD1..PZDn; PZD1 with its bits when it is the control or status word.
-fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<DataItem> {
+fn data_items(
+    telegram: &Telegram,
+    layout: Layout,
+    direction: Direction,
+    names: Option<&PzdNames>,
+) -> Vec<DataItem> {
     let pkw = if layout.pkw {
         pkw_words(telegram.pkw)
     } else {
@@ -265,9 +273,25 @@ fn data_items(telegram: &Telegram, layout: Layout, direction: Direction) -> Vec<
                 .flat_map(|field| bit_items(tag, field))
                 .collect(),
         },
-        _ => plain(&format!("PZD_{n}"), Text::english(format!("PZD{n}"))),
+        _ => match names.and_then(|names| names.of(telegram, direction, n)) {
+            Some(name) => plain(
+                &format!("WORD_{}_{n}", direction_tag(direction)),
+                name.clone(),
+            ),
+            None => plain(&format!("PZD_{n}"), Text::english(format!("PZD{n}"))),
+        },
     });
     pkw.chain(pzd).collect()
+}
+
+/// A named PZD word's TextId part (`IDT_WORD_OUT_2`): the name differs by
+/// direction, gsdc's `PZD1` does not (and `IDT_PZD_OUT_2` is a mapping
+/// record's entry).
+fn direction_tag(direction: Direction) -> &'static str {
+    match direction {
+        Direction::Out => "OUT",
+        Direction::In => "IN",
+    }
 }
 
 /// The PKW channel's words, the same both ways: TextId tag and name.
