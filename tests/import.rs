@@ -2244,3 +2244,14 @@ fn the_pzd_words_names_import() {
         .iter()
         .any(|m| m.contains("PZD")));
 }
+
+/// What FENA's access points are based on (lines 27, 77, 134:
+/// `ImplementationType="ADI Blackfin"`) imports, and the round trip finds it
+/// unchanged in each.
+#[test]
+fn what_the_access_points_are_based_on_imports() {
+    assert_imported_and_kept(
+        &[(FENA, "implementation_type = \"ADI Blackfin\"\n")],
+        |change| change.contains("ImplementationType"),
+    );
+}

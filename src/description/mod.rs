@@ -563,6 +563,9 @@ pub struct Profinet {
     /// Every device access point's `RequiredSchemaVersion`: the oldest
     /// GSDML version an engineering tool must know to offer it.
     pub required_schema_version: Option<Spanned<String>>,
+    /// Every device access point's `ImplementationType`: the hardware or
+    /// stack its PROFINET interface is based on, as the vendor names it.
+    pub implementation_type: Option<Spanned<String>>,
     /// The file's date: part of its name and of its version. Never the clock.
     pub date: Spanned<toml::value::Datetime>,
     /// DNS_CompatibleName: the default name of station.

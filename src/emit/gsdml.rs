@@ -248,6 +248,11 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     ];
     let required = p.required_schema_version.map(|v| v.to_string());
     attributes.extend(required.as_deref().map(|v| ("RequiredSchemaVersion", v)));
+    attributes.extend(
+        p.implementation_type
+            .as_deref()
+            .map(|t| ("ImplementationType", t)),
+    );
     let stated = stated_stack_attributes(stack);
     attributes.extend(stated.iter().map(|(name, value)| (*name, value.as_str())));
     doc.open("DeviceAccessPointItem", &attributes);

@@ -218,6 +218,7 @@ phrases! {
         de: "PROFIBUS-DP-Busparameter",
     };
     GSDML_VERSION = { en: "GSDML version", zh: "GSDML 版本", de: "GSDML-Version" };
+    IMPLEMENTATION_TYPE = { en: "Based on", zh: "基于", de: "Basiert auf" };
     REQUIRED_SCHEMA_VERSION = { en: "engineering tools need at least GSDML", zh: "工程工具至少需支持 GSDML", de: "Engineering-Werkzeuge brauchen mindestens GSDML" };
     NAME_OF_STATION = { en: "Name of station (default)", zh: "默认设备名称", de: "Gerätename (Vorgabe)" };
     PORTS = { en: "Ports", zh: "端口数", de: same };

@@ -29,6 +29,7 @@ use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("PNIO_Version", None),
     ("RequiredSchemaVersion", None),
+    ("ImplementationType", None),
     ("PhysicalSlots", None),
     ("MinDeviceInterval", None),
     ("DNS_CompatibleName", None),
@@ -974,6 +975,9 @@ fn profinet(
     if let Some(version) = required_schema_version(attributes, notes) {
         out.string("required_schema_version", &version.to_string()[1..]);
     }
+    if let Some(basis) = implementation_type(attributes, notes) {
+        out.string("implementation_type", basis);
+    }
     out.key("date", &name.date);
     out.string("dns_name", &name_of_station(attributes, notes));
     out.key("ports", submodules_of(dap, SubmoduleKind::Port).count());
@@ -1034,6 +1038,18 @@ fn modules_repeat_releases(dap: &Dap, modules: &[Recognised]) -> bool {
 
 fn releases_of(attributes: &[Attribute]) -> [Option<&str>; 2] {
     MODULE_RELEASES.map(|name| attribute(attributes, name))
+}
+
+/// The access point's ImplementationType, where the description can say
+/// it: one line of text (E117 otherwise).
+fn implementation_type<'a>(attributes: &'a [Attribute], notes: &mut Notes) -> Option<&'a str> {
+    let (a, basis) = found(attributes, "ImplementationType")?;
+    if basis.trim().is_empty() || basis.chars().any(char::is_control) {
+        let why = "the description's implementation_type is one line of text (E117)";
+        notes.unsaid("ImplementationType", &a.place, why);
+        return None;
+    }
+    Some(basis)
 }
 
 /// The access point's RequiredSchemaVersion, where gsdc can write it: a

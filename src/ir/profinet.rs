@@ -13,6 +13,9 @@ pub struct Profinet {
     /// Every device access point's `RequiredSchemaVersion`, when stated:
     /// the oldest GSDML version a tool must know to offer it.
     pub required_schema_version: Option<Version>,
+    /// Every device access point's `ImplementationType`, when stated: what
+    /// its PROFINET interface is based on.
+    pub implementation_type: Option<String>,
     pub date: Date,
     pub file_name: String,
     pub vendor_id: u16,

@@ -78,6 +78,10 @@ pub fn lower(
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let required_schema_version =
         required_schema_version(cx, p.required_schema_version.as_ref(), gsdml_version)?;
+    let implementation_type = p
+        .implementation_type
+        .as_ref()
+        .map(|t| cx.required(t, "profinet.implementation_type"));
     let date = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
@@ -187,6 +191,7 @@ pub fn lower(
         ),
         gsdml_version,
         required_schema_version,
+        implementation_type,
         date,
         // PI numbers vendors from 1: the schema's DeviceIdentity takes 0x0000,
         // but its CIM_Interface, naming the same vendor, does not (hex0T).

@@ -231,6 +231,9 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
         rows.insert(2, (lang.t(w::PORTS), ports(p, dap, lang)));
         rows.push((lang.t(w::MAX_IO_DATA), max_io_data(dap, lang)));
     }
+    if let Some(basis) = &p.implementation_type {
+        rows.insert(1, (lang.t(w::IMPLEMENTATION_TYPE), text(basis)));
+    }
     let properties = &p.interface_properties;
     if let Some(irt) = &properties.irt {
         rows.push((lang.t(w::IRT), text(irt_summary(irt))));

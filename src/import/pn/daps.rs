@@ -17,6 +17,7 @@ const SHARED: &[&str] = &[
     crate::import::symbol::GSDML_SYMBOL_TARGET,
     "PNIO_Version",
     "RequiredSchemaVersion",
+    "ImplementationType",
     "MinDeviceInterval",
     "DNS_CompatibleName",
     "ModuleInfo/VendorName@Value",
