@@ -2255,3 +2255,13 @@ fn what_the_access_points_are_based_on_imports() {
         |change| change.contains("ImplementationType"),
     );
 }
+
+/// FENA's interface name (lines 62, 113, 167:
+/// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
+/// its three access points, imports, and the round trip finds it unchanged.
+#[test]
+fn the_interfaces_name_imports() {
+    assert_imported_and_kept(&[(FENA, "interface_name = \"Interface\"\n")], |change| {
+        change.starts_with("interface") && change.contains(" name: ")
+    });
+}

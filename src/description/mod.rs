@@ -566,6 +566,8 @@ pub struct Profinet {
     /// Every device access point's `ImplementationType`: the hardware or
     /// stack its PROFINET interface is based on, as the vendor names it.
     pub implementation_type: Option<Spanned<String>>,
+    /// The interface submodule's name, where not gsdc's "PN-IO".
+    pub interface_name: Option<Spanned<Text>>,
     /// The file's date: part of its name and of its version. Never the clock.
     pub date: Spanned<toml::value::Datetime>,
     /// DNS_CompatibleName: the default name of station.

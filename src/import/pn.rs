@@ -186,10 +186,13 @@ pub(super) fn describe(
     telegram_table(&mut out, &modules, pkw);
     records.write_mappings(&mut out, notes);
     records.write_settings(&mut out, &modules, notes);
+    let imported_daps: Vec<&Dap> = std::iter::once(dap)
+        .chain(later.iter().map(|l| l.dap))
+        .collect();
     profinet(
         &mut out,
         device,
-        dap,
+        &imported_daps,
         &name,
         &modules,
         notes,
@@ -209,9 +212,6 @@ pub(super) fn describe(
     }
     module_texts(&mut out, &modules, notes);
     pzd_names(&mut out, &modules, notes);
-    let imported_daps: Vec<&Dap> = std::iter::once(dap)
-        .chain(later.iter().map(|l| l.dap))
-        .collect();
     subslot_labels(&mut out, &imported_daps, notes);
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
@@ -959,12 +959,13 @@ fn defaults_and_values(out: &mut TomlOut, fields: &[Field]) {
 fn profinet(
     out: &mut TomlOut,
     device: &PnDevice,
-    dap: &Dap,
+    daps: &[&Dap],
     name: &FileName,
     modules: &[Recognised],
     notes: &mut Notes,
     has_irt: bool,
 ) {
+    let dap = daps[0];
     out.table("profinet");
     let id = |n: Option<u32>| format!("{{ value = 0x{:04X} }}", n.unwrap_or(0));
     out.key("vendor_id", id(device.vendor_id));
@@ -977,6 +978,9 @@ fn profinet(
     }
     if let Some(basis) = implementation_type(attributes, notes) {
         out.string("implementation_type", basis);
+    }
+    if let Some(name) = interface_name(daps, notes) {
+        out.key("interface_name", text(name));
     }
     out.key("date", &name.date);
     out.string("dns_name", &name_of_station(attributes, notes));
@@ -1038,6 +1042,37 @@ fn modules_repeat_releases(dap: &Dap, modules: &[Recognised]) -> bool {
 
 fn releases_of(attributes: &[Attribute]) -> [Option<&str>; 2] {
     MODULE_RELEASES.map(|name| attribute(attributes, name))
+}
+
+/// The interface's name, where not gsdc's and every access point imported
+/// gives it alike (the description's is every access point's).
+fn interface_name<'a>(daps: &[&'a Dap], notes: &mut Notes) -> Option<&'a Text> {
+    let names: Vec<(&Submodule, Option<&Text>)> = daps
+        .iter()
+        .filter_map(|d| submodules_of(d, SubmoduleKind::Interface).next())
+        .map(|s| (s, s.name.as_ref()))
+        .collect();
+    let (first, name) = *names.first()?;
+    if let Some((other, _)) = names.iter().find(|(_, n)| *n != name) {
+        let why = "its name is not the first access point's interface's, and the description's interface_name is every access point's";
+        notes.unsaid(
+            &format!("interface `{}`'s name", other.id),
+            &other.place,
+            why,
+        );
+        return None;
+    }
+    let gsdcs = crate::ir::Text::english(crate::lower::INTERFACE_NAME);
+    let Some(name) = name else {
+        let why = "gsdc names every interface";
+        notes.unsaid(
+            &format!("interface `{}` without a name", first.id),
+            &first.place,
+            why,
+        );
+        return None;
+    };
+    (!same_text(name, &gsdcs)).then_some(name)
 }
 
 /// The access point's ImplementationType, where the description can say

@@ -63,6 +63,9 @@ fn draft(
 /// The GSDML versions gsdc writes: it emits nothing a version lacks.
 pub(crate) const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
 pub(crate) const DEFAULT_VERSION: Version = Version::new(2, 32);
+/// gsdc's name of the interface submodule, where the description gives
+/// none.
+pub(crate) const INTERFACE_NAME: &str = "PN-IO";
 
 pub fn lower(
     cx: &mut Checker,
@@ -82,6 +85,10 @@ pub fn lower(
         .implementation_type
         .as_ref()
         .map(|t| cx.required(t, "profinet.implementation_type"));
+    let interface_name = p.interface_name.as_ref().map_or_else(
+        || Text::english(INTERFACE_NAME),
+        |n| cx.text(n, None, "profinet.interface_name"),
+    );
     let date = date(cx, &p.date)?;
     let file_vendor = file_name_part(
         cx,
@@ -207,7 +214,7 @@ pub fn lower(
             4096,
             "min_device_interval",
         )?,
-        interface: TextRef::new(ids::INTERFACE_TEXT, Text::english("PN-IO")),
+        interface: TextRef::new(ids::INTERFACE_TEXT, interface_name),
         interface_ident: idents.interface,
         access_point_ident: idents.access_point,
         daps,
