@@ -1483,14 +1483,8 @@ fn group_of<'a>(m: &Recognised<'a>) -> Option<&'a Text> {
 /// Whether `group` is gsdc's category of the module in every language it
 /// has.
 fn is_gsdc_category(group: &Text, m: &Recognised, profidrive: bool) -> bool {
-    let gsdc = crate::lower::module_category(m.kind, m.layout, profidrive)
-        .text
-        .text;
-    gsdc.get("en") == &*group.primary
-        && group
-            .translations
-            .iter()
-            .all(|(code, text)| gsdc.get(code) == text)
+    let gsdc = crate::lower::module_category(m.kind, m.layout, profidrive);
+    same_text(group, &gsdc.text.text)
 }
 
 /// What a module's info text adds after gsdc's description of it, in
