@@ -18,6 +18,7 @@ use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
 use quick_xml::name::QName;
 use quick_xml::Writer;
+use std::collections::HashMap;
 
 const XSI: &str = "http://www.w3.org/2001/XMLSchema-instance";
 /// 100BASE-TX full duplex (IEC 61158-6-10 MAUType 16): the card's RJ45 ports.
@@ -90,6 +91,10 @@ struct Doc {
     xml: Writer<Vec<u8>>,
     /// TextId and text, in the order first referenced.
     texts: Vec<(String, Text)>,
+    /// Each TextId's place in `texts`: a large file references thousands,
+    /// and searching the list for each made writing one quadratic. Only
+    /// looked up, never iterated, so the output keeps the list's order.
+    text_places: HashMap<String, usize>,
 }
 
 impl Doc {
@@ -97,6 +102,7 @@ impl Doc {
         let mut doc = Doc {
             xml: Writer::new_with_indent(Vec::new(), b' ', 2),
             texts: Vec::new(),
+            text_places: HashMap::new(),
         };
         doc.write(Event::Decl(BytesDecl::new("1.0", Some("utf-8"), None)));
         doc
@@ -133,11 +139,15 @@ impl Doc {
     /// Registers a text for the ExternalTextList, in the order first
     /// referenced; lowering gives each TextId one text.
     fn text(&mut self, text: &TextRef) {
-        match self.texts.iter().find(|(known, _)| *known == text.id) {
-            Some((_, known)) => {
+        match self.text_places.get(&text.id) {
+            Some(&place) => {
+                let known = &self.texts[place].1;
                 debug_assert_eq!(*known, text.text, "TextId {} names two texts", text.id)
             }
-            None => self.texts.push((text.id.clone(), text.text.clone())),
+            None => {
+                self.text_places.insert(text.id.clone(), self.texts.len());
+                self.texts.push((text.id.clone(), text.text.clone()));
+            }
         }
     }
 

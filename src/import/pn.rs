@@ -23,6 +23,7 @@ use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
 use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
 use crate::ir::{Direction, Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
+use std::fmt::Write as _;
 
 /// Attributes of the device access point gsdc writes, with the value it
 /// writes (`None`: the description states it).
@@ -440,13 +441,12 @@ fn text(t: &Text) -> String {
     if t.translations.keys().next().is_none() {
         return quote(&t.primary);
     }
-    let mut parts = vec![format!("en = {}", quote(&t.primary))];
-    parts.extend(
-        t.translations
-            .iter()
-            .map(|(code, text)| format!("{code} = {}", quote(text))),
-    );
-    format!("{{ {} }}", parts.join(", "))
+    let mut every = format!("{{ en = {}", quote(&t.primary));
+    for (code, text) in t.translations.iter() {
+        let _ = write!(every, ", {code} = {}", quote(text));
+    }
+    every.push_str(" }");
+    every
 }
 
 /// The vendor and the family of a file name's `Vendor-Family`, both of

@@ -54,13 +54,14 @@ impl Ident {
 
     /// `ForwardRunning`: Rust types and enum variants.
     pub fn camel(&self) -> String {
-        self.0
-            .iter()
-            .flat_map(|w| {
-                let (head, tail) = w.split_at(1);
-                [head.to_ascii_uppercase(), tail.to_string()]
-            })
-            .collect()
+        let mut camel = String::with_capacity(self.0.iter().map(String::len).sum());
+        for word in &self.0 {
+            // Words are ASCII and never empty: one byte is one letter.
+            let (head, tail) = word.split_at(1);
+            camel.push(char::from(head.as_bytes()[0].to_ascii_uppercase()));
+            camel.push_str(tail);
+        }
+        camel
     }
 
     /// `FORWARD_RUNNING`: constants, C macros and enumerators.
@@ -120,27 +121,25 @@ impl Scope {
         let tag = tag.to_string();
         let mut candidate = ident.clone();
         let mut n = 1;
-        while self.is_taken(&candidate) {
+        // Each spelling made once per candidate: a large file's diagnosis
+        // names thousands of constants.
+        loop {
+            let (camel, snake) = (candidate.camel(), candidate.snake());
+            if !self.camel.contains(&camel) && !self.snake.contains(&snake) {
+                self.camel.insert(camel);
+                self.snake.insert(snake);
+                return candidate;
+            }
             candidate = match n {
                 1 => ident.tagged(&tag),
                 _ => ident.tagged(&tag).tagged(n),
             };
             n += 1;
         }
-        self.insert(&candidate);
-        candidate
     }
 
     /// Takes `ident` for a name the scope's owner writes itself.
     pub(crate) fn reserve(&mut self, ident: &Ident) {
-        self.insert(ident);
-    }
-
-    fn is_taken(&self, ident: &Ident) -> bool {
-        self.camel.contains(&ident.camel()) || self.snake.contains(&ident.snake())
-    }
-
-    fn insert(&mut self, ident: &Ident) {
         self.camel.insert(ident.camel());
         self.snake.insert(ident.snake());
     }
