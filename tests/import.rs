@@ -1404,6 +1404,75 @@ fn a_later_daps_info_is_judged_against_what_it_would_inherit() {
     );
 }
 
+/// An attribute the file gives at the value its absence means (FENA's
+/// `NumberOfAdditionalInputCR="0"`), or as gsdc writes it but spelt
+/// otherwise (MOVI-C's `StartupMode="Advanced;Legacy"`, a set), is not
+/// left out: the file gsdc writes says the same, and the round trip
+/// agrees. Any other value of it is still left out, and the round trip
+/// names the change.
+#[test]
+fn an_attribute_at_its_schema_default_or_spelt_otherwise_is_not_left_out() {
+    let with_relations = |relations: &'static str| {
+        md810_gsdml_changed(move |gsdml| {
+            gsdml.replacen(
+                "<ApplicationRelations StartupMode=\"Legacy;Advanced\">",
+                relations,
+                1,
+            )
+        })
+    };
+    let same = with_relations(
+        "<ApplicationRelations StartupMode=\"Advanced;Legacy\" NumberOfAdditionalInputCR=\"0\">",
+    );
+    // (The bitmap, which `import` without files cannot read, is left out.)
+    let left_out = messages(&same, "W600");
+    assert!(
+        !left_out.iter().any(|m| m.contains("ApplicationRelations")),
+        "{left_out:#?}"
+    );
+    assert!(same.round_trip.is_clean(), "{:#?}", same.diagnostics);
+    let other = with_relations(
+        "<ApplicationRelations StartupMode=\"Advanced\" NumberOfAdditionalInputCR=\"1\">",
+    );
+    let left_out = messages(&other, "W600");
+    for attribute in ["@StartupMode", "@NumberOfAdditionalInputCR"] {
+        assert!(
+            left_out.iter().any(|m| m.contains(attribute)),
+            "{attribute}: {left_out:#?}"
+        );
+        assert!(
+            messages(&other, "E601")
+                .iter()
+                .any(|m| m.contains(attribute)),
+            "{attribute}: {:#?}",
+            other.diagnostics
+        );
+    }
+    let fena = corpus_import(FENA);
+    let fena_left_out = messages(&fena, "W600");
+    for absent_means_the_same in [
+        "NumberOfAdditionalInputCR",
+        "NumberOfAdditionalOutputCR",
+        "NumberOfAdditionalMulticastProviderCR",
+        "NumberOfMulticastConsumerCR",
+        "IsochroneModeSupported",
+    ] {
+        assert!(
+            !fena_left_out
+                .iter()
+                .any(|m| m.contains(absent_means_the_same)),
+            "{absent_means_the_same}: {fena_left_out:#?}"
+        );
+    }
+    // FENA-01's ApplicationClass="" says what its absence says; FENA-11's
+    // and FENA-21's "FunctionalSafety" is still left out.
+    let application_class = fena_left_out
+        .iter()
+        .filter(|m| m.contains("CertificationInfo@ApplicationClass"))
+        .count();
+    assert_eq!(application_class, 2, "{fena_left_out:#?}");
+}
+
 /// A value the import writes otherwise than the file says (a GSDML version
 /// or a name of station gsdc does not write) is a
 /// warning, and marked under `[choices]` with why: the build lists it among

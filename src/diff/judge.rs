@@ -457,7 +457,7 @@ pub fn judge(
 /// names without regard to case. An empty set says what its absence says
 /// where the rule has no default (FENA-01's `ApplicationClass=""`: no
 /// application class).
-fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
+pub(super) fn same(old: Option<&str>, new: Option<&str>, judge: Judge) -> bool {
     match (old, new) {
         (Some(a), Some(b)) if judge == Set => {
             let (gone, added) = set_difference(a, b);

@@ -27,6 +27,15 @@ use crate::device::{Device, Place, Text};
 pub use gsd::compare as dp;
 pub use gsdml::compare as pn;
 
+/// Whether two values of a GSDML attribute, as the device model names it
+/// (`ApplicationRelations@StartupMode`), are the same as the comparison
+/// reads them: sets as sets, numbers as numbers, an absent value as the
+/// schema's default.
+pub(crate) fn same_gsdml_value(name: &str, old: Option<&str>, new: Option<&str>) -> bool {
+    let rule = judge::gsdml_rule(name);
+    judge::same(old.or(rule.default), new.or(rule.default), rule.judge)
+}
+
 /// Every change from `old` to `new`, breaking first; `None` when one is a
 /// GSD file's device and the other a GSDML file's.
 pub fn compare(old: &Device, new: &Device) -> Option<Vec<Change>> {

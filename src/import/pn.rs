@@ -1561,6 +1561,26 @@ fn ident_numbers(out: &mut TomlOut, dap: &Dap, modules: &[Recognised]) {
     }
 }
 
+/// Whether the file gsdc writes says what attribute `a` says, as the round
+/// trip's comparison reads both: `known` holds the attributes gsdc writes
+/// here, each with the one value it writes or `None` for the value the
+/// description states (imported from `a`). One gsdc does not write means
+/// its schema default (FENA's `NumberOfAdditionalInputCR="0"`); one it
+/// writes may differ in spelling only (MOVI-C's `StartupMode="Advanced;Legacy"`,
+/// a set).
+fn fits(a: &Attribute, known: &[(&str, Option<&str>)]) -> bool {
+    let value = attribute(std::slice::from_ref(a), &a.name);
+    let same = |written: Option<&str>| crate::diff::same_gsdml_value(&a.name, written, value);
+    let mut written = known
+        .iter()
+        .filter(|(name, _)| *name == &*a.name)
+        .peekable();
+    match written.peek() {
+        None => same(None),
+        Some(_) => written.any(|(_, v)| v.is_none_or(|v| same(Some(v)))),
+    }
+}
+
 /// W600 for each attribute and element the description has no place for,
 /// or whose value gsdc writes another way.
 fn unsaid_extras(
@@ -1593,11 +1613,7 @@ fn unsaid_extras(
     );
     let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
         for a in attributes {
-            let fits = known.iter().any(|(name, value)| {
-                *name == &*a.name
-                    && value.is_none_or(|v| Some(v) == attribute(std::slice::from_ref(a), name))
-            });
-            if !fits {
+            if !fits(a, known) {
                 let why = "the description has no key for it, or gsdc writes another value";
                 notes.unsaid(&format!("{of} {}", a.name), &a.place, why);
             }
