@@ -2325,6 +2325,25 @@ fn what_the_access_points_are_based_on_imports() {
     );
 }
 
+/// The family the catalog shows where the file name's is another: FENA's
+/// (line 22: `ProductFamily="ABB FENA"`, its name's `FENA`) and MOVI-C's
+/// (line 22: "MOVI-C Decentralized Electronics", its name's
+/// `MOVI-C-Decentralized-Electronics`) import, and the round trip finds
+/// them unchanged.
+#[test]
+fn the_product_family_imports() {
+    assert_imported_and_kept(
+        &[
+            (FENA, "product_family = \"ABB FENA\"\n"),
+            (
+                MOVI_C,
+                "product_family = \"MOVI-C Decentralized Electronics\"\n",
+            ),
+        ],
+        |change| change.contains("ProductFamily"),
+    );
+}
+
 /// FENA's interface name (lines 62, 113, 167:
 /// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
 /// its three access points, imports, and the round trip finds it unchanged.

@@ -566,6 +566,10 @@ pub struct Profinet {
     /// Every device access point's `ImplementationType`: the hardware or
     /// stack its PROFINET interface is based on, as the vendor names it.
     pub implementation_type: Option<Spanned<String>>,
+    /// The family the engineering tool's catalog shows (`ProductFamily`),
+    /// where not `[device] family`, the file name's (ABB's "ABB FENA" in
+    /// `GSDML-V2.33-ABB-FENA-20170914.xml`).
+    pub product_family: Option<Spanned<String>>,
     /// The interface submodule's name, where not gsdc's "PN-IO".
     pub interface_name: Option<Spanned<Text>>,
     /// The file's date: part of its name and of its version. Never the clock.

@@ -220,7 +220,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
         "Family",
         &[
             ("MainFamily", "Drives"),
-            ("ProductFamily", &ir.device.family),
+            ("ProductFamily", &p.product_family),
         ],
     );
     doc.close("DeviceFunction");

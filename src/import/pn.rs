@@ -982,6 +982,9 @@ fn profinet(
     if let Some(name) = interface_name(daps, notes) {
         out.key("interface_name", text(name));
     }
+    if let Some(family) = product_family(device, &name.family, notes) {
+        out.string("product_family", family);
+    }
     out.key("date", &name.date);
     out.string("dns_name", &name_of_station(attributes, notes));
     out.key("ports", submodules_of(dap, SubmoduleKind::Port).count());
@@ -1079,12 +1082,31 @@ fn interface_name<'a>(daps: &[&'a Dap], notes: &mut Notes) -> Option<&'a Text> {
 /// it: one line of text (E117 otherwise).
 fn implementation_type<'a>(attributes: &'a [Attribute], notes: &mut Notes) -> Option<&'a str> {
     let (a, basis) = found(attributes, "ImplementationType")?;
-    if basis.trim().is_empty() || basis.chars().any(char::is_control) {
-        let why = "the description's implementation_type is one line of text (E117)";
-        notes.unsaid("ImplementationType", &a.place, why);
+    one_line(a, basis, "implementation_type", notes)
+}
+
+/// The file's ProductFamily where it is not the family its name gives,
+/// which gsdc writes by default (FENA's "ABB FENA", MOVI-C's
+/// "MOVI-C Decentralized Electronics" against the name's
+/// `MOVI-C-Decentralized-Electronics`), and the description can say it:
+/// one line of text (E117 otherwise).
+fn product_family<'a>(device: &'a PnDevice, family: &str, notes: &mut Notes) -> Option<&'a str> {
+    let (a, product_family) = found(&device.identity, "DeviceFunction/Family@ProductFamily")?;
+    if product_family == family {
         return None;
     }
-    Some(basis)
+    one_line(a, product_family, "product_family", notes)
+}
+
+/// `value`, attribute `a`'s, where the description's `key`, one line of
+/// text (E117), can hold it; else left out saying so.
+fn one_line<'a>(a: &Attribute, value: &'a str, key: &str, notes: &mut Notes) -> Option<&'a str> {
+    if value.trim().is_empty() || value.chars().any(char::is_control) {
+        let why = format!("the description's {key} is one line of text (E117)");
+        notes.unsaid(&a.name, &a.place, &why);
+        return None;
+    }
+    Some(value)
 }
 
 /// The access point's RequiredSchemaVersion, where gsdc can write it: a

@@ -16,6 +16,8 @@ pub struct Profinet {
     /// Every device access point's `ImplementationType`, when stated: what
     /// its PROFINET interface is based on.
     pub implementation_type: Option<String>,
+    /// DeviceFunction's `ProductFamily`: `[device] family` unless stated.
+    pub product_family: String,
     pub date: Date,
     pub file_name: String,
     pub vendor_id: u16,

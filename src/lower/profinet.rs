@@ -85,6 +85,10 @@ pub fn lower(
         .implementation_type
         .as_ref()
         .map(|t| cx.required(t, "profinet.implementation_type"));
+    let product_family = p.product_family.as_ref().map_or_else(
+        || desc.device.family.get_ref().clone(),
+        |f| cx.required(f, "profinet.product_family"),
+    );
     let interface_name = p.interface_name.as_ref().map_or_else(
         || Text::english(INTERFACE_NAME),
         |n| cx.text(n, None, "profinet.interface_name"),
@@ -199,6 +203,7 @@ pub fn lower(
         gsdml_version,
         required_schema_version,
         implementation_type,
+        product_family,
         date,
         // PI numbers vendors from 1: the schema's DeviceIdentity takes 0x0000,
         // but its CIM_Interface, naming the same vendor, does not (hex0T).
