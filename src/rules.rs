@@ -141,6 +141,10 @@ pub const RULES: &[Rule] = &[
     rule("E191", "port labels not one per port"),
     rule("E192", "module releases without a release"),
     rule("E193", "PZD names not one per PZD word"),
+    rule(
+        "E194",
+        "a name for a profile word no telegram offered carries",
+    ),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -2344,6 +2344,37 @@ fn the_product_family_imports() {
     );
 }
 
+/// FENA calls each word of its standard telegrams "Output" or "Input"
+/// (lines 417-422 and 460-467: `T_ID_STD_STD_TGM1_OUTPUT`, line 894
+/// "Output"): the profile's words import under their abbreviations, and the
+/// round trip finds no data item renamed. Where telegram 2 names STW1
+/// otherwise than telegram 1, the description cannot say both: STW1 is
+/// left out, the other words still import.
+#[test]
+fn the_profile_words_names_import() {
+    let says = "[profinet.profile_word_names]\nSTW1 = \"Output\"\nNSOLL_A = \"Output\"\nZSW1 = \"Input\"\nNIST_A = \"Input\"\nNSOLL_B = \"Output\"\nSTW2 = \"Output\"\nNIST_B = \"Input\"\nZSW2 = \"Input\"\n";
+    assert_imported_and_kept(&[(FENA, says)], |change| {
+        change.starts_with("item ") && change.contains(" data of submodule ")
+    });
+    let fena = String::from_utf8(support::corpus_file(&format!("gsdml/{FENA}"))).unwrap();
+    let telegram_2 = fena.find("ID=\"ID_MODULE_STD_TGM2\"").unwrap();
+    let first_output = telegram_2 + fena[telegram_2..].find("TGM1_OUTPUT").unwrap();
+    let renamed = format!(
+        "{}TGM1_INPUT{}",
+        &fena[..first_output],
+        &fena[first_output + "TGM1_OUTPUT".len()..]
+    );
+    let imported = import(FENA, renamed.as_bytes());
+    let left_out = messages(&imported, "W600");
+    assert!(
+        left_out.iter().any(|m| m.starts_with("the name of STW1 ")),
+        "{left_out:#?}"
+    );
+    let description = another_device(&imported);
+    assert!(!description.contains("\nSTW1 = "), "{description}");
+    assert_says(description, &["NSOLL_A = \"Output\"\n"]);
+}
+
 /// FENA's interface name (lines 62, 113, 167:
 /// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
 /// its three access points, imports, and the round trip finds it unchanged.

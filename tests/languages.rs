@@ -47,7 +47,9 @@ fn the_german_texts_of_a_gsdml_carry_gsdcs_german_words() {
         ("IDT_MODULE_INFO_PZD_2", "2 PZD-Wörter; 4 Byte je Richtung"),
         ("IDT_MODULE_STD_TEL_1", "Standardtelegramm 1"),
         ("IDT_ACCESS_POINT", "Modulzugriffspunkt"),
-        ("IDT_STW1", "STW1 (Steuerwort 1)"),
+        ("IDT_NSOLL_A", "NSOLL_A (Drehzahlsollwert A)"),
+        // The description's own name of STW1 (`profile_word_names`).
+        ("IDT_STW1", "Ausgang"),
         ("IDT_ZSW1", "ZSW1 (Zustandswort 1)"),
         (
             "IDT_RECORD_1",

@@ -609,6 +609,11 @@ pub struct Profinet {
     pub module_texts: BTreeMap<Spanned<String>, Spanned<ModuleTexts>>,
     /// What the data items of the modules of PZD words call each word.
     pub pzd_names: Option<Spanned<PzdNames>>,
+    /// What the data items of PROFIdrive's standard telegrams call the
+    /// profile's words, by their abbreviations (`STW1 = "Output"`), where
+    /// not the profile's names.
+    #[serde(default)]
+    pub profile_word_names: BTreeMap<Spanned<String>, Spanned<Text>>,
     /// Values the settings record of each module ends with, one for each
     /// of its output items.
     pub fail_safe_values: Option<Spanned<FailSafeValues>>,

@@ -20,6 +20,7 @@ use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
+use crate::i18n::Phrase;
 use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
 use crate::ir::{Direction, Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
@@ -213,6 +214,7 @@ pub(super) fn describe(
     }
     module_texts(&mut out, &modules, notes);
     pzd_names(&mut out, &modules, notes);
+    profile_word_names(&mut out, &modules, notes);
     subslot_labels(&mut out, &imported_daps, notes);
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
@@ -631,12 +633,8 @@ fn named_word<'a>(modules: &[Recognised<'a>], direction: Direction) -> Option<&'
 
 /// A module's data items one way after its PKW channel's: its PZD words.
 fn pzd_items<'a>(m: &Recognised<'a>, direction: Direction) -> &'a [DataItem] {
-    let part = match direction {
-        Direction::Out => &m.data.io.output,
-        Direction::In => &m.data.io.input,
-    };
-    part.as_ref()
-        .and_then(|p| p.items.get(usize::from(m.layout.pkw_words())..))
+    io_items(m.data, direction)
+        .get(usize::from(m.layout.pkw_words())..)
         .unwrap_or_default()
 }
 
@@ -687,6 +685,57 @@ fn pzd_names(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
             out.key(key, names);
         }
     }
+}
+
+/// `[profinet.profile_word_names]`: the names PROFIdrive's standard
+/// telegrams give the profile's words (FENA's "Output" and "Input"), where
+/// a telegram names a word otherwise than the profile and every telegram
+/// carrying it names it alike; a word named two ways is left out, saying
+/// why.
+fn profile_word_names(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    let mut names: Vec<(&str, Phrase, &Text)> = Vec::new();
+    let mut two_ways: Vec<&str> = Vec::new();
+    for m in modules.iter().filter(|m| m.is_profidrive()) {
+        for direction in [Direction::Out, Direction::In] {
+            let words = crate::lower::profile_words(m.kind, direction);
+            for (&(word, profiles), item) in words.iter().zip(io_items(m.data, direction)) {
+                let Some(name) = &item.text else { continue };
+                match names.iter().find(|(known, _, _)| *known == word) {
+                    Some((_, _, known)) if *known != name && !two_ways.contains(&word) => {
+                        two_ways.push(word);
+                        let why = "the description's profile_word_names give a word one name in every telegram";
+                        notes.unsaid(&format!("the name of {word}"), &item.place, why);
+                    }
+                    Some(_) => {}
+                    None => names.push((word, profiles, name)),
+                }
+            }
+        }
+    }
+    let stated: Vec<(&str, &Text)> = names
+        .into_iter()
+        .filter(|(word, profiles, name)| {
+            !two_ways.contains(word) && !same_text(name, &crate::ir::Text::phrase(*profiles))
+        })
+        .map(|(word, _, name)| (word, name))
+        .collect();
+    if !stated.is_empty() {
+        out.table("profinet.profile_word_names");
+        for (word, name) in stated {
+            out.key(word, text(name));
+        }
+    }
+}
+
+/// A submodule's data items one way.
+fn io_items(data: &Submodule, direction: Direction) -> &[DataItem] {
+    let part = match direction {
+        Direction::Out => &data.io.output,
+        Direction::In => &data.io.input,
+    };
+    part.as_ref()
+        .map(|p| p.items.as_slice())
+        .unwrap_or_default()
 }
 
 /// The modules' parameter records by kind, as gsdc writes them: a record

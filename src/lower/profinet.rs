@@ -21,6 +21,7 @@ mod ids;
 mod interface;
 mod io;
 mod irt;
+mod profile_words;
 mod pzd_names;
 mod records;
 mod stack;
@@ -33,6 +34,7 @@ pub(crate) use io::{
     category as module_category, description as module_description, gsdc_name as module_name,
     info_prefix, io_length, pkw_words, profidrive_telegram_1_name, STANDARD_TELEGRAM_2_WORDS,
 };
+pub(crate) use profile_words::profile_words;
 
 /// `info` after a notice that the file is a draft, naming the identity
 /// numbers that are placeholders, while any is one: the DAP's InfoText
@@ -118,6 +120,8 @@ pub fn lower(
     });
     let fail_safe = fail_safe::names(cx, p, &kinds, master_sets_settings);
     let pzd_names = pzd_names::lower(cx, p.pzd_names.as_ref(), telegram);
+    let profile_words =
+        profile_words::lower(cx, &p.profile_word_names, &kinds, telegram.profidrive);
     let stated = stated_categories(cx, p);
     let mut categories: Vec<Category> = Vec::new();
     let mut modules: Vec<Module> = kinds
@@ -137,6 +141,7 @@ pub fn lower(
                 category: category.id,
                 fail_safe: fail_safe.as_ref(),
                 pzd: pzd_names.as_ref(),
+                profile_words: &profile_words,
             };
             io::module((kind, layout), telegram, (mappings, &records), names)
         })

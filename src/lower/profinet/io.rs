@@ -3,6 +3,7 @@
 
 use super::fail_safe::FailSafeNames;
 use super::ids::module_tag;
+use super::profile_words::profile_words;
 use super::pzd_names::PzdNames;
 use super::records::{self, RecordPlan};
 use crate::i18n::{files, Phrase};
@@ -10,6 +11,7 @@ use crate::ir::profinet::{
     AccessPoint, BitItem, Category, DataItem, Module, ModuleKind, TextRef, PROFIDRIVE_API,
 };
 use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram, Text};
+use std::collections::BTreeMap;
 
 /// Standard telegram 1 has two words each way.
 pub const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
@@ -27,6 +29,8 @@ pub struct Names<'a> {
     pub fail_safe: Option<&'a FailSafeNames>,
     /// The description's names of the PZD words, where it gives them.
     pub pzd: Option<&'a PzdNames>,
+    /// The description's names of the profile's words, by abbreviation.
+    pub profile_words: &'a BTreeMap<String, Text>,
 }
 
 /// A module of `kind` and `layout`. Standard telegram 1 of a PROFIdrive
@@ -43,8 +47,9 @@ pub fn module(
     let tag = module_tag(kind, layout);
     let profidrive = kind != ModuleKind::Pzd && telegram.profidrive;
     let items = |direction| match (kind, profidrive) {
-        (ModuleKind::StandardTelegram2, _) => profidrive_telegram_2(direction),
-        (_, true) => profidrive_telegram_1(direction),
+        (ModuleKind::StandardTelegram2, _) | (_, true) => {
+            profidrive_telegram(kind, direction, names.profile_words)
+        }
         (_, false) => data_items(telegram, layout, direction, names.pzd),
     };
     let name = gsdc_name(kind, layout).unwrap_or_else(|| names.telegram_1.clone());
@@ -204,42 +209,29 @@ fn plain(tag: &str, text: Text) -> DataItem {
     }
 }
 
-/// PROFIdrive's telegram 1, with the profile's names (MASTERDRIVES
-/// Compendium table 8.2-16: "STW1 Control word 1", "NSOLL_A Speed setpoint
-/// A", "ZSW1 Status word 1", "NIST_A Speed actual value A").
-fn profidrive_telegram_1(direction: Direction) -> Vec<DataItem> {
-    let words = match direction {
-        Direction::In => [("ZSW1", files::ZSW1), ("NIST_A", files::NIST_A)],
-        Direction::Out => [("STW1", files::STW1), ("NSOLL_A", files::NSOLL_A)],
-    };
-    words
+/// A PROFIdrive standard telegram's words one way, each named as the
+/// description names it or else as the profile does; telegram 2's second
+/// word is its 32-bit speed value.
+fn profidrive_telegram(
+    kind: ModuleKind,
+    direction: Direction,
+    names: &BTreeMap<String, Text>,
+) -> Vec<DataItem> {
+    let speed_is_32_bit = kind == ModuleKind::StandardTelegram2;
+    profile_words(kind, direction)
         .iter()
-        .map(|(tag, name)| plain(tag, Text::phrase(*name)))
+        .enumerate()
+        .map(|(i, &(tag, profiles))| {
+            let name = names
+                .get(tag)
+                .cloned()
+                .unwrap_or_else(|| Text::phrase(profiles));
+            DataItem {
+                double_word: speed_is_32_bit && i == 1,
+                ..plain(tag, name)
+            }
+        })
         .collect()
-}
-
-/// PROFIdrive's telegram 2: control or status word 1, the 32-bit speed
-/// setpoint or actual value, control or status word 2, as ABB's FENA
-/// declares them (Unsigned16, Unsigned32, Unsigned16).
-fn profidrive_telegram_2(direction: Direction) -> Vec<DataItem> {
-    let [first, speed, second] = match direction {
-        Direction::In => [
-            ("ZSW1", files::ZSW1),
-            ("NIST_B", files::NIST_B),
-            ("ZSW2", files::ZSW2),
-        ],
-        Direction::Out => [
-            ("STW1", files::STW1),
-            ("NSOLL_B", files::NSOLL_B),
-            ("STW2", files::STW2),
-        ],
-    };
-    let item = |(tag, name): (&str, Phrase)| plain(tag, Text::phrase(name));
-    let speed = DataItem {
-        double_word: true,
-        ..item(speed)
-    };
-    vec![item(first), speed, item(second)]
 }
 
 /// The module's words one way, in telegram order: the PKW channel, then
