@@ -2375,6 +2375,18 @@ fn the_profile_words_names_import() {
     assert_says(description, &["NSOLL_A = \"Output\"\n"]);
 }
 
+/// FENA describes its modules' access point its own way (lines 411, 454:
+/// `T_ID_STD_MAPPAP_INFO_TEXT`, line 896: "Acyclic parameter access is
+/// possible through this module"); its name, "Module Access Point", is
+/// gsdc's and is not stated. The round trip finds neither changed.
+#[test]
+fn the_access_points_texts_import() {
+    let says = "[profinet.access_point_texts]\ninfo = \"Acyclic parameter access is possible through this module\"\n\n";
+    assert_imported_and_kept(&[(FENA, says)], |change| {
+        change.starts_with("submodule \"Module Access Point\"")
+    });
+}
+
 /// FENA's interface name (lines 62, 113, 167:
 /// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
 /// its three access points, imports, and the round trip finds it unchanged.

@@ -609,6 +609,8 @@ pub struct Profinet {
     pub module_texts: BTreeMap<Spanned<String>, Spanned<ModuleTexts>>,
     /// What the data items of the modules of PZD words call each word.
     pub pzd_names: Option<Spanned<PzdNames>>,
+    /// The texts of the PROFIdrive modules' access point, where not gsdc's.
+    pub access_point_texts: Option<Spanned<AccessPointTexts>>,
     /// What the data items of PROFIdrive's standard telegrams call the
     /// profile's words, by their abbreviations (`STW1 = "Output"`), where
     /// not the profile's names.
@@ -863,6 +865,15 @@ pub struct ModuleTexts {
     pub info: Option<Spanned<Text>>,
     pub submodule_name: Option<Spanned<Text>>,
     pub submodule_info: Option<Spanned<Text>>,
+}
+
+/// `[profinet.access_point_texts]`: the name and info text of the access
+/// point every PROFIdrive module has in subslot 1, each in place of gsdc's.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AccessPointTexts {
+    pub name: Option<Spanned<Text>>,
+    pub info: Option<Spanned<Text>>,
 }
 
 /// `[profinet.pzd_names]`: the names the GSDML's data items give the PZD

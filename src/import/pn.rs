@@ -20,7 +20,7 @@ use super::toml_out::{list, quote, TomlOut};
 use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
-use crate::i18n::Phrase;
+use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
 use crate::ir::{Direction, Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
@@ -215,6 +215,7 @@ pub(super) fn describe(
     module_texts(&mut out, &modules, notes);
     pzd_names(&mut out, &modules, notes);
     profile_word_names(&mut out, &modules, notes);
+    access_point_texts(&mut out, &modules, notes);
     subslot_labels(&mut out, &imported_daps, notes);
     ident_numbers(&mut out, dap, &modules);
     for later in &later {
@@ -723,6 +724,38 @@ fn profile_word_names(out: &mut TomlOut, modules: &[Recognised], notes: &mut Not
         out.table("profinet.profile_word_names");
         for (word, name) in stated {
             out.key(word, text(name));
+        }
+    }
+}
+
+/// `[profinet.access_point_texts]`: the PROFIdrive modules' access point's
+/// name and info text (FENA's "Acyclic parameter access is possible
+/// through this module"), each where it is not gsdc's and every module's
+/// access point gives the same; else left out, saying why.
+fn access_point_texts(out: &mut TomlOut, modules: &[Recognised], notes: &mut Notes) {
+    let points: Vec<&Submodule> = modules.iter().filter_map(|m| m.access_point).collect();
+    let Some(first) = points.first() else {
+        return;
+    };
+    type TextOf = fn(&Submodule) -> Option<&Text>;
+    let texts: [(&str, TextOf, Phrase); 2] = [
+        ("name", |s| s.name.as_ref(), files::MODULE_ACCESS_POINT),
+        ("info", |s| s.info.as_ref(), files::MODULE_ACCESS_POINT_INFO),
+    ];
+    let mut stated = Vec::new();
+    for (key, text_of, gsdcs) in texts {
+        let Some(own) = text_of(first) else { continue };
+        if points.iter().any(|p| text_of(p) != Some(own)) {
+            let why = "the description's access_point_texts give every PROFIdrive module's access point one text";
+            notes.unsaid(&format!("the access point's {key}"), &first.place, why);
+        } else if !same_text(own, &crate::ir::Text::phrase(gsdcs)) {
+            stated.push((key, text(own)));
+        }
+    }
+    if !stated.is_empty() {
+        out.table("profinet.access_point_texts");
+        for (key, own) in stated {
+            out.key(key, own);
         }
     }
 }

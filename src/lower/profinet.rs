@@ -149,6 +149,7 @@ pub fn lower(
     let mut ports: Vec<Port> = (1..=ports).map(|n| port(n, media_redundancy)).collect();
     let idents = idents::apply(cx, &p.ident_numbers, &mut modules, &mut ports);
     apply_module_texts(cx, &p.module_texts, &mut modules);
+    apply_access_point_texts(cx, p.access_point_texts.as_ref(), &mut modules);
     {
         use crate::i18n::files as w;
         if idents.numbered_by_gsdc {
@@ -328,6 +329,39 @@ fn apply_module_texts(
                 |t| TextRef::new(format!("IDT_SUBMODULE_INFO_{tag}"), t),
             );
         });
+    }
+}
+
+/// `[profinet.access_point_texts]`: the PROFIdrive modules' access point's
+/// name and info, in place of gsdc's (E002 where no module has one).
+fn apply_access_point_texts(
+    cx: &mut Checker,
+    given: Option<&Spanned<raw::AccessPointTexts>>,
+    modules: &mut [Module],
+) {
+    let Some(given) = given else { return };
+    if !modules.iter().any(|m| m.access_point.is_some()) {
+        cx.push(
+            Diagnostic::error("E002", "access point texts on a card whose modules have no access point")
+                .at(given.span())
+                .label("no PROFIdrive module")
+                .help("remove [profinet.access_point_texts], or offer a standard telegram on a PROFIdrive card: its modules have the access point"),
+        );
+        return;
+    }
+    let texts = given.get_ref();
+    let mut lower = |text: &Option<Spanned<raw::Text>>, field: &str| {
+        let what = format!("profinet.access_point_texts.{field}");
+        text.as_ref().map(|t| cx.text(t, None, &what))
+    };
+    let (name, info) = (lower(&texts.name, "name"), lower(&texts.info, "info"));
+    for access_point in modules.iter_mut().filter_map(|m| m.access_point.as_mut()) {
+        if let Some(name) = &name {
+            access_point.name.text = name.clone();
+        }
+        if let Some(info) = &info {
+            access_point.info.text = info.clone();
+        }
     }
 }
 
