@@ -138,7 +138,7 @@ pub const RULES: &[Rule] = &[
     rule("E188", "isochronous mode without isochronous real time"),
     rule("E189", "a vendor keyword that is not one"),
     rule("E190", "a required GSDML version the file does not have"),
-    rule("E191", "port labels not one per port"),
+    rule("E191", "port labels or names not one per port"),
     rule("E192", "module releases without a release"),
     rule("E193", "PZD names not one per PZD word"),
     rule(

@@ -1976,12 +1976,8 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
             "modules = [\"telegram1\"]",
             "modules = [\"telegram1\"]\nports = 4\nport_idents = [0x00000103, 0x00000103, 0x00000103, 0x00000103]",
             1,
-        )
-        .replacen(
-            "ports = [\"X1 P1\", { en = \"X1 P2\", zh = \"X1 端口 2\" }]",
-            "ports = [\"X1 P1\", \"X1 P2\", \"X1 P3\", \"X1 P4\"]",
-            1,
         );
+    let text = descriptions::own_idents_port_texts(&text, 4);
     assert_ne!(text, fixture);
     let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
     assert_eq!(gsdml.matches("MaxInputLength=\"").count(), 3);
@@ -2385,6 +2381,36 @@ fn the_access_points_texts_import() {
     assert_imported_and_kept(&[(FENA, says)], |change| {
         change.starts_with("submodule \"Module Access Point\"")
     });
+}
+
+/// MOVI-C names its ports by their connectors (lines 92, 116:
+/// `TextId="Port1"`, `"Port2"`; line 7295: "Port 1 - RJ45 (X4233_1)", the
+/// German texts the same): the names import, one per port, and the round
+/// trip finds no port renamed. Where a second access point names its first
+/// port otherwise (MD810's GSDML, changed), the description cannot say
+/// both: the names are left out, saying which port.
+#[test]
+fn the_ports_names_import() {
+    let says = "port_names = [{ en = \"Port 1 - RJ45 (X4233_1)\", de = \"Port 1 - RJ45 (X4233_1)\" }, { en = \"Port 2 - RJ45 (X4233_2)\", de = \"Port 2 - RJ45 (X4233_2)\" }]\n";
+    assert_imported_and_kept(&[(MOVI_C, says)], |change| {
+        change.starts_with("port ") && change.contains(" name: ")
+    });
+    // MD810's GSDML with a second access point naming its port 1 "Port 2".
+    let imported = md810_with_second_dap(|dap| {
+        renumbered(dap).replacen("TextId=\"IDT_PORT_1\"", "TextId=\"IDT_PORT_2\"", 1)
+    });
+    let left_out = messages(&imported, "W600");
+    assert!(
+        left_out
+            .iter()
+            .any(|m| m.starts_with("port `V2_IDS_PORT_1`'s name is not imported")),
+        "{left_out:#?}"
+    );
+    let description = imported
+        .description
+        .as_deref()
+        .unwrap_or_else(|| another_device(&imported));
+    assert!(!description.contains("port_names"), "{description}");
 }
 
 /// FENA's interface name (lines 62, 113, 167:

@@ -114,14 +114,12 @@ fn a_dap_sharing_an_ident_number_is_refused_at_it() {
 fn more_ports_than_the_first_need_their_ident_numbers() {
     let three = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\n";
     assert_refused_at(three, "3\n", "E178");
-    // A third port needs its label too (E191).
-    let stated = with_daps(
-        "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\nport_idents = [1, 2, 3]\n",
-    )
-    .replacen(
-        "ports = [\"X1 P1\", { en = \"X1 P2\", zh = \"X1 端口 2\" }]",
-        "ports = [\"X1 P1\", \"X1 P2\", \"X1 P3\"]",
-        1,
+    // A third port needs its label and name too (E191).
+    let stated = descriptions::own_idents_port_texts(
+        &with_daps(
+            "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nports = 3\nport_idents = [1, 2, 3]\n",
+        ),
+        3,
     );
     let (ir, diagnostics) = descriptions::load_text(NAME, &stated);
     let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));

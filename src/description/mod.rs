@@ -639,6 +639,9 @@ pub struct Profinet {
     pub media_redundancy: Option<Spanned<bool>>,
     /// The labels the interface and its ports carry on the device.
     pub subslot_labels: Option<Spanned<SubslotLabels>>,
+    /// What the port submodules are called, one per port of the access
+    /// point with the most, where not gsdc's "Port 1", "Port 2"...
+    pub port_names: Option<Spanned<Vec<Spanned<Text>>>>,
     /// Every module's ModuleInfo repeats the card's hardware and software
     /// release, the first device access point's.
     pub module_releases: Option<Spanned<bool>>,

@@ -1064,6 +1064,9 @@ fn profinet(
     if let Some(name) = interface_name(daps, notes) {
         out.key("interface_name", text(name));
     }
+    if let Some(names) = port_names(daps, notes) {
+        out.key("port_names", list(names.into_iter().map(text)));
+    }
     if let Some(family) = product_family(device, &name.family, notes) {
         out.string("product_family", family);
     }
@@ -1158,6 +1161,34 @@ fn interface_name<'a>(daps: &[&'a Dap], notes: &mut Notes) -> Option<&'a Text> {
         return None;
     };
     (!same_text(name, &gsdcs)).then_some(name)
+}
+
+/// The ports' names, one per port of the access point with the most
+/// (MOVI-C's "Port 1 - RJ45 (X4233_1)"), where every access point imported
+/// names a port alike and some name is not gsdc's "Port n" (the
+/// description's are every access point's); else left out, saying why.
+fn port_names<'a>(daps: &[&'a Dap], notes: &mut Notes) -> Option<Vec<&'a Text>> {
+    let mut names: Vec<&Text> = Vec::new();
+    for dap in daps {
+        // Port n of each access point, as the build numbers them.
+        for (n, port) in submodules_of(dap, SubmoduleKind::Port).enumerate() {
+            let why = match (&port.name, names.get(n)) {
+                (None, _) => "gsdc names every port",
+                (Some(name), Some(&known)) if name != known => "its name is not the same port's of the other access points, and the description's port_names are every access point's",
+                (Some(_), Some(_)) => continue,
+                (Some(name), None) => {
+                    names.push(name);
+                    continue;
+                }
+            };
+            notes.unsaid(&format!("port `{}`'s name", port.id), &port.place, why);
+            return None;
+        }
+    }
+    let gsdcs = (1..)
+        .zip(&names)
+        .all(|(n, name)| same_text(name, &crate::ir::Text::gsdc(|lang| files::port(lang, n))));
+    (!gsdcs).then_some(names)
 }
 
 /// The access point's ImplementationType, where the description can say

@@ -196,11 +196,13 @@ pub fn lower(
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
-    let daps = daps?;
+    let mut daps = daps?;
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
     let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports);
+    let named_ports = name_ports(cx, p.port_names.as_ref(), &mut daps, most_ports);
     let module_releases = module_releases(cx, p.module_releases.as_ref(), &daps[0]);
     let (subslot_labels, module_releases) = (subslot_labels?, module_releases?);
+    named_ports?;
     Some(Profinet {
         file_name: format!(
             "GSDML-{gsdml_version}-{file_vendor}-{family}-{}.xml",
@@ -384,25 +386,54 @@ fn subslot_labels(
             TextRef::new(format!("{}{n}", ids::PORT_LABEL_TEXT), text)
         })
         .collect();
-    if ports.len() != most_ports {
-        cx.push(
-            Diagnostic::error(
-                "E191",
-                format!(
-                    "port labels: {} given, {most_ports} needed",
-                    ports.len()
-                ),
-            )
-            .at(given.ports.span())
-            .label("one label per port")
-            .help("label each port of the device access point with the most ports, in port order; an access point with fewer labels its own"),
-        );
-        return None;
-    }
+    one_per_port(cx, &given.ports, most_ports, ("label", "labels"))?;
     Some(Some(SubslotLabels {
         interface: TextRef::new(ids::INTERFACE_LABEL_TEXT, interface),
         ports,
     }))
+}
+
+/// `port_names`: each port's name in every access point, in place of gsdc's
+/// (E191 unless one per port of the access point with the most).
+fn name_ports(
+    cx: &mut Checker,
+    given: Option<&Spanned<Vec<Spanned<raw::Text>>>>,
+    daps: &mut [Dap],
+    most_ports: usize,
+) -> Option<()> {
+    let Some(given) = given else { return Some(()) };
+    let names: Vec<Text> = given
+        .get_ref()
+        .iter()
+        .map(|name| cx.text(name, None, "profinet.port_names"))
+        .collect();
+    one_per_port(cx, given, most_ports, ("name", "names"))?;
+    for port in daps.iter_mut().flat_map(|d| d.ports.iter_mut()) {
+        let number = usize::from(port.subslot - FIRST_PORT_SUBSLOT);
+        port.text.text = names[number].clone();
+    }
+    Some(())
+}
+
+/// One of `given` per port of the access point with the most, in port
+/// order (E191 otherwise); `what` is its kind, one and many.
+fn one_per_port<T>(
+    cx: &mut Checker,
+    given: &Spanned<Vec<T>>,
+    most_ports: usize,
+    (one, many): (&str, &str),
+) -> Option<()> {
+    let count = given.get_ref().len();
+    if count == most_ports {
+        return Some(());
+    }
+    cx.push(
+        Diagnostic::error("E191", format!("port {many}: {count} given, {most_ports} needed"))
+            .at(given.span())
+            .label(format!("one {one} per port"))
+            .help(format!("give each port of the device access point with the most ports its {one}, in port order; an access point with fewer has the first ones")),
+    );
+    None
 }
 
 /// `module_releases`: the modules repeat the first device access point's

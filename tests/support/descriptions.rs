@@ -99,6 +99,37 @@ pub fn mv810_set_by_master() -> String {
     format!("{by_master}\n[profinet.records]\npzd_out = 1\npzd_in = 2\nsettings = 4\n")
 }
 
+/// `text`, own_idents.toml or a variant of it, with a port label and a
+/// port name for each of `ports` ports: an access point with more ports
+/// than the fixture's two needs both (E191).
+pub fn own_idents_port_texts(text: &str, ports: usize) -> String {
+    let list = |each: &dyn Fn(usize) -> String| {
+        let items: Vec<String> = (1..=ports).map(each).collect();
+        format!("[{}]", items.join(", "))
+    };
+    let labels = format!("ports = {}", list(&|n| format!("\"X1 P{n}\"")));
+    let names = format!(
+        "port_names = {}",
+        list(&|n| format!("\"Port {n} - RJ45 (X1 P{n})\""))
+    );
+    let changed = text
+        .replacen(
+            "ports = [\"X1 P1\", { en = \"X1 P2\", zh = \"X1 端口 2\" }]",
+            &labels,
+            1,
+        )
+        .replacen(
+            "port_names = [\"Port 1 - RJ45 (X1 P1)\", { en = \"Port 2 - RJ45 (X1 P2)\", zh = \"端口 2 - RJ45（X1 P2）\" }]",
+            &names,
+            1,
+        );
+    assert!(
+        changed.contains(&labels) && changed.contains(&names),
+        "{text}"
+    );
+    changed
+}
+
 /// `text` (a shipped description, or one made from it) loaded as if it
 /// stood in `descriptions/`: the files it names are read from there.
 pub fn load_text(name: &str, text: &str) -> (Option<Ir>, Diagnostics) {
