@@ -2413,6 +2413,23 @@ fn the_ports_names_import() {
     assert!(!description.contains("port_names"), "{description}");
 }
 
+/// Each of MOVI-C's data submodules names its module's group too (line 531
+/// and on: `CategoryRef="PD Channel"`, as its module does): the import
+/// says so, leaves none of the sixteen out, and the round trip finds no
+/// CategoryRef changed.
+#[test]
+fn the_submodules_categories_import() {
+    let imported =
+        assert_imported_and_kept(&[(MOVI_C, "submodule_categories = true\n")], |change| {
+            change.contains("CategoryRef")
+        });
+    let left_out = messages(&imported[0], "W600");
+    assert!(
+        !left_out.iter().any(|m| m.contains("CategoryRef")),
+        "{left_out:#?}"
+    );
+}
+
 /// FENA's interface name (lines 62, 113, 167:
 /// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
 /// its three access points, imports, and the round trip finds it unchanged.

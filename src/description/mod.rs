@@ -645,6 +645,8 @@ pub struct Profinet {
     /// Every module's ModuleInfo repeats the card's hardware and software
     /// release, the first device access point's.
     pub module_releases: Option<Spanned<bool>>,
+    /// Every module's data submodule names the module's category too.
+    pub submodule_categories: Option<Spanned<bool>>,
     /// What the card's PROFINET stack offers the controllers.
     #[serde(default)]
     pub stack: Stack,

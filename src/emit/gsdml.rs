@@ -773,7 +773,11 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
         }
         doc.close("RecordDataList");
     }
-    module_info(doc, &m.submodule_name, &m.submodule_info, &[]);
+    match p.submodule_categories {
+        true => doc.open("ModuleInfo", &[("CategoryRef", &m.category)]),
+        false => doc.open("ModuleInfo", &[]),
+    }
+    module_info_body(doc, &m.submodule_name, &m.submodule_info, &[]);
     if let Some(iso) = &p.interface_properties.isochronous {
         isochrone_mode(doc, iso);
     }

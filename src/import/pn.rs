@@ -1109,6 +1109,21 @@ fn profinet(
     if modules_repeat_releases(dap, modules) {
         out.key("module_releases", true);
     }
+    if submodules_repeat_categories(modules) {
+        out.key("submodule_categories", true);
+    }
+}
+
+const CATEGORY: &str = "ModuleInfo@CategoryRef";
+
+/// Whether every module's data submodule names its module's category too
+/// (`submodule_categories`, MOVI-C's 16); others are left out at each
+/// (`unsaid_extras`).
+fn submodules_repeat_categories(modules: &[Recognised]) -> bool {
+    modules.iter().all(|m| {
+        let category = attribute(&m.module.attributes, CATEGORY);
+        category.is_some() && attribute(&m.data.attributes, CATEGORY) == category
+    })
 }
 
 /// The releases a module's ModuleInfo may give.
@@ -1741,11 +1756,14 @@ fn unsaid_extras(
     ]
     .concat();
     let port_known = with(PORT_ATTRIBUTES, has_irt, irt::IRT_PORT_ATTRIBUTES);
-    let data_known = with(
+    let mut data_known = with(
         SUBMODULE_ATTRIBUTES,
         has_isochronous,
         irt::ISOCHRONOUS_SUBMODULE_ATTRIBUTES,
     );
+    if submodules_repeat_categories(modules) {
+        data_known.push((CATEGORY, None));
+    }
     let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
         for a in attributes {
             if !fits(a, known) {
@@ -1765,10 +1783,11 @@ fn unsaid_extras(
             check(&s.attributes, known, s.kind.element());
         }
     }
-    let mut module_known = vec![("ModuleInfo@CategoryRef", None)];
+    let mut module_known = vec![(CATEGORY, None)];
     if modules_repeat_releases(first, modules) {
         module_known.extend(MODULE_RELEASES.map(|name| (name, None)));
     }
+
     for m in modules {
         check(&m.module.attributes, &module_known, "ModuleItem");
         if let Some(s) = m.access_point {

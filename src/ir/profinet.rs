@@ -38,6 +38,9 @@ pub struct Profinet {
     /// Whether every module's ModuleInfo repeats the first device access
     /// point's hardware and software release.
     pub module_releases: bool,
+    /// Whether every module's data submodule names the module's category
+    /// too (its ModuleInfo's CategoryRef).
+    pub submodule_categories: bool,
     /// The interface submodule's SubmoduleIdentNumber.
     pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,

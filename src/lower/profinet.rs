@@ -233,6 +233,10 @@ pub fn lower(
         daps,
         subslot_labels,
         module_releases,
+        submodule_categories: p
+            .submodule_categories
+            .as_ref()
+            .is_some_and(|s| *s.get_ref()),
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {
