@@ -1787,7 +1787,6 @@ fn unsaid_extras(
     if modules_repeat_releases(first, modules) {
         module_known.extend(MODULE_RELEASES.map(|name| (name, None)));
     }
-
     for m in modules {
         check(&m.module.attributes, &module_known, "ModuleItem");
         if let Some(s) = m.access_point {

@@ -420,7 +420,7 @@ fn name_ports(
 }
 
 /// One of `given` per port of the access point with the most, in port
-/// order (E191 otherwise); `what` is its kind, one and many.
+/// order (E191 otherwise); `one` and `many` name what is given.
 fn one_per_port<T>(
     cx: &mut Checker,
     given: &Spanned<Vec<T>>,
