@@ -129,6 +129,12 @@ fn more_ports_than_the_first_need_their_ident_numbers() {
         .map(|p| p.ident)
         .collect();
     assert_eq!(idents, [1, 2, 3]);
+    // Labels for the three ports and names for two: E191 at the names.
+    let third_name = ", \"Port 3 - RJ45 (X1 P3)\"]";
+    let two_names = stated.replacen(third_name, "]", 1);
+    assert_ne!(two_names, stated);
+    let at = place(&two_names, "[\"Port 1 - RJ45");
+    assert_eq!(errors(&two_names), [("E191", at.0, at.1)]);
     let short = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\nport_idents = [1]\n";
     assert_refused_at(short, "[1]", "E178");
 }
