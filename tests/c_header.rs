@@ -372,12 +372,13 @@ fn the_manuals_telegrams_round_trip_in_c() {
 }
 
 /// The tests `tests/c/support.c` runs: those of the Rust support code.
-const SUPPORT_TESTS: [&str; 31] = [
+const SUPPORT_TESTS: [&str; 32] = [
     "words_are_big_endian",
     "bit_fields_read_and_write_their_bits_only",
     "values_are_read_and_checked_at_their_offset",
     "byte_and_word_entries_are_read_each_at_its_offset",
     "a_record_ends_with_its_fail_safe_values",
+    "an_access_point_record_reads_whole_values_and_bits",
     "reading_past_the_end_is_refused",
     "pke_no_request_ignores_what_the_master_left",
     "pke_reserved_bits_are_not_read_and_written_0",

@@ -2430,6 +2430,45 @@ fn the_submodules_categories_import() {
     );
 }
 
+/// MOVI-C's own records: its access point's record 8200 (lines 62-67: one
+/// Bit, its ValueItem "OnOffEnabling" 0 "Off", 1 "On", lines 1126-1131)
+/// and each port's records 9000 to 9002 (lines 95-110: record 9001 two
+/// Unsigned32 thresholds of default 10), the same in every port of its
+/// three access points. They import, and the round trip finds no record
+/// changed. Where one port lacks record 9002, the description cannot give
+/// every port the same records: the ports' records are left out, each named.
+#[test]
+fn the_access_points_and_ports_records_import() {
+    let access_point = "[[profinet.access_point_records]]\nindex = 8200\nname = { en = \"Alarm settings (head)\", de = \"Alarmeinstellungen (Kopf)\" }\n\n[[profinet.access_point_records.values]]\nname = { en = \"Enable diagnosis alarms\", de = \"Diagnose - Alarme aktivieren\" }\noffset = 0\nbits = 0\ndefault = 0\nchoices = [{ value = 0, text = { en = \"Off\", de = \"Aus\" } }, { value = 1, text = { en = \"On\", de = \"An\" } }]\n";
+    let port = "[[profinet.port_records]]\nindex = 9001\nname = { en = \"Maintenance Required Alarms\", de = \"Maintenance Required Alarme\" }\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad rcvd packets' / min\", de = \"Schwellwert 'bad rcvd packets'/min\" }\noffset = 0\ntype = \"Unsigned32\"\ndefault = 10\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad sent packets' / min\", de = \"Schwellwert 'bad sent packets'/min\" }\noffset = 4\ntype = \"Unsigned32\"\ndefault = 10\n";
+    let imported = assert_imported_and_kept(&[(MOVI_C, access_point), (MOVI_C, port)], |change| {
+        change.starts_with("record ")
+    });
+    assert!(!messages(&imported[0], "W600")
+        .iter()
+        .any(|m| m.starts_with("record ")));
+    // MOVI-C with its first port's record 9002 taken out.
+    let text = String::from_utf8(support::corpus_file(&format!("gsdml/{MOVI_C}"))).unwrap();
+    let start = text
+        .find("<ParameterRecordDataItem Index=\"9002\"")
+        .unwrap();
+    let end = start + text[start..].find("</ParameterRecordDataItem>").unwrap();
+    let without = format!(
+        "{}{}",
+        &text[..start],
+        &text[end + "</ParameterRecordDataItem>".len()..]
+    );
+    let imported = import(MOVI_C, without.as_bytes());
+    let left_out = messages(&imported, "W600");
+    for index in [9000, 9001] {
+        let expected = format!("record {index} of the port is not imported: not every port has the same records, which the description gives each port alike");
+        assert!(left_out.contains(&expected.as_str()), "{left_out:#?}");
+    }
+    let description = another_device(&imported);
+    assert!(!description.contains("port_records"), "{description}");
+    assert!(description.contains("[[profinet.access_point_records]]"));
+}
+
 /// FENA's interface name (lines 62, 113, 167:
 /// `TextId="T_ID_INTERFACE_MODULE"`, line 872: "Interface"), the same in
 /// its three access points, imports, and the round trip finds it unchanged.

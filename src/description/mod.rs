@@ -661,6 +661,56 @@ pub struct Profinet {
     /// The channel diagnoses the card reports, with their texts.
     #[serde(default)]
     pub channel_diagnosis: Vec<Spanned<ChannelDiagnosis>>,
+    /// The parameter records of every device access point's own submodule.
+    #[serde(default)]
+    pub access_point_records: Vec<Spanned<SubmoduleRecord>>,
+    /// The parameter records of every port.
+    #[serde(default)]
+    pub port_records: Vec<Spanned<SubmoduleRecord>>,
+}
+
+/// `[[profinet.access_point_records]]`, `[[profinet.port_records]]`: a
+/// parameter record of the card's own (a setting of the device or of a
+/// port, not a drive parameter), which the controller writes at startup.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SubmoduleRecord {
+    pub index: Spanned<u16>,
+    pub name: Spanned<Text>,
+    /// Its values, each at its byte (and bits); the record is as long as
+    /// they reach.
+    pub values: Spanned<Vec<Spanned<RecordValue>>>,
+}
+
+/// A value of a [`SubmoduleRecord`]: the keys of `[[profibus.parameters]]`,
+/// with a text in every language for its name.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RecordValue {
+    pub name: Spanned<Text>,
+    /// Its first byte in the record.
+    pub offset: Spanned<u16>,
+    /// `Unsigned8`, `Unsigned16` or `Unsigned32`; not with `bits`.
+    #[serde(rename = "type")]
+    pub data_type: Option<Spanned<RecordValueType>>,
+    /// Bits of the byte at `offset` (`Bit`: one, `BitArea`: several).
+    pub bits: Option<Spanned<BitRange>>,
+    pub default: Spanned<i64>,
+    /// What it may hold, both ends included; its type's values when unsaid.
+    pub range: Option<Spanned<Exactly<Spanned<i64>, 2>>>,
+    /// Or one of these, each with the text the engineering tool shows.
+    pub choices: Option<Spanned<Vec<Choice>>>,
+    /// False: the tool shows the value and lets nobody change it.
+    pub changeable: Option<Spanned<bool>>,
+    /// False: the tool does not show it.
+    pub visible: Option<Spanned<bool>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum RecordValueType {
+    Unsigned8,
+    Unsigned16,
+    Unsigned32,
 }
 
 /// `[[profinet.channel_diagnosis]]`: an error type the card reports as

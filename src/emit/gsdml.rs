@@ -10,8 +10,9 @@ use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
     ConformanceClass, Dap, DataItem, ExtendedDiagnosis, InterfaceProperties, Irt, Isochronous,
-    Module, NetloadClass, ParameterRecord, Profinet, Stack, TextRef, ACCESS_POINT_SUBSLOT,
-    INTERFACE_SUBSLOT, MODULE_SLOT, PROFIDRIVE_DATA_SUBSLOT,
+    Module, NetloadClass, ParameterRecord, Profinet, RecordValue, RecordValueType, Stack,
+    SubmoduleRecord, TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::attributes::Attribute;
@@ -439,7 +440,7 @@ fn stated_port_attributes(stack: &Stack) -> Vec<(&'static str, &'static str)> {
     attributes
 }
 
-/// The DAP's own submodule: no IO data and no records. A device that lets
+/// The DAP's own submodule: no IO data, the card's records of it. A device that lets
 /// the controller write no I&M record has no Writeable_IM_Records (an
 /// empty list is not a value of it).
 fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
@@ -456,6 +457,7 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     attributes.push(("MayIssueProcessAlarm", "false"));
     doc.open("VirtualSubmoduleItem", &attributes);
     doc.leaf("IOData", &[]);
+    submodule_records(doc, &p.access_point_records);
     module_info(doc, &dap.name, &dap.info, &[]);
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
@@ -563,6 +565,7 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
             attributes.push(("IsDefaultRingport", "true"));
         }
         doc.open("PortSubmoduleItem", &attributes);
+        submodule_records(doc, &p.port_records);
         doc.open("MAUTypeList", &[]);
         let mut mau = vec![("Value", MAU_100BASE_TX)];
         if dap.stack.mau_type_adjustable {
@@ -677,31 +680,103 @@ fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
 /// GSDML's value list: `min..max` runs and single values, e.g. "0..14" or
 /// "0..3 6 9..10".
 fn allowed_values(allowed: &Allowed) -> String {
-    let run = |first: i64, last: i64| {
+    match allowed {
+        Allowed::Range { min, max } => runs_text(&[((*min).into(), (*max).into())]),
+        Allowed::Choices(set) => runs_text(&runs(set.choices.iter().map(|c| c.value))),
+    }
+}
+
+/// Values as runs of consecutive ones, ascending.
+fn runs(values: impl Iterator<Item = i64>) -> Vec<(i64, i64)> {
+    let mut values: Vec<i64> = values.collect();
+    values.sort_unstable();
+    let mut runs: Vec<(i64, i64)> = Vec::new();
+    for value in values {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == value => *last = value,
+            _ => runs.push((value, value)),
+        }
+    }
+    runs
+}
+
+fn runs_text(runs: &[(i64, i64)]) -> String {
+    let run = |&(first, last): &(i64, i64)| {
         if first == last {
             first.to_string()
         } else {
             format!("{first}..{last}")
         }
     };
-    match allowed {
-        Allowed::Range { min, max } => run((*min).into(), (*max).into()),
-        Allowed::Choices(set) => {
-            let mut values: Vec<i64> = set.choices.iter().map(|c| c.value).collect();
-            values.sort_unstable();
-            let mut runs: Vec<(i64, i64)> = Vec::new();
-            for value in values {
-                match runs.last_mut() {
-                    Some((_, last)) if *last + 1 == value => *last = value,
-                    _ => runs.push((value, value)),
-                }
-            }
-            runs.into_iter()
-                .map(|(first, last)| run(first, last))
-                .collect::<Vec<_>>()
-                .join(" ")
-        }
+    runs.iter().map(run).collect::<Vec<_>>().join(" ")
+}
+
+/// The card's own records of the access point or a port, when it has any.
+fn submodule_records(doc: &mut Doc, records: &[SubmoduleRecord]) {
+    if records.is_empty() {
+        return;
     }
+    doc.open("RecordDataList", &[]);
+    for record in records {
+        doc.open(
+            "ParameterRecordDataItem",
+            &[
+                ("Index", &record.index.to_string()),
+                ("Length", &record.length.to_string()),
+            ],
+        );
+        doc.text_ref("Name", &record.name);
+        for value in &record.values {
+            record_value(doc, value);
+        }
+        doc.close("ParameterRecordDataItem");
+    }
+    doc.close("RecordDataList");
+}
+
+/// A record value's Ref. Its AllowedValues are written only where they
+/// allow less than its type holds, whose values the schema allows without.
+fn record_value(doc: &mut Doc, value: &RecordValue) {
+    doc.text(&value.text);
+    let offset = value.offset.to_string();
+    let default = value.default.to_string();
+    let allowed = match &value.choices {
+        Some(item) => runs(item.assignments.iter().map(|(v, _)| *v)),
+        None => vec![(value.min.into(), value.max.into())],
+    };
+    let every_value = allowed == [(0, value.data_type.max().into())];
+    let allowed = (!every_value).then(|| runs_text(&allowed));
+    // A BitArea's length; a Bit is one.
+    let (first_bit, bit_length) = match value.data_type {
+        RecordValueType::Bits { first, last } => (
+            Some(first.to_string()),
+            (last > first).then(|| (last - first + 1).to_string()),
+        ),
+        _ => (None, None),
+    };
+    let mut attributes = vec![
+        ("DataType", value.data_type.gsdml_name()),
+        ("ByteOffset", offset.as_str()),
+    ];
+    attributes.extend(first_bit.as_deref().map(|b| ("BitOffset", b)));
+    attributes.extend(bit_length.as_deref().map(|b| ("BitLength", b)));
+    attributes.push(("DefaultValue", default.as_str()));
+    attributes.extend(allowed.as_deref().map(|a| ("AllowedValues", a)));
+    attributes.extend(
+        value
+            .choices
+            .as_ref()
+            .map(|c| ("ValueItemTarget", c.id.as_str())),
+    );
+    attributes.extend([
+        (
+            "Changeable",
+            if value.changeable { "true" } else { "false" },
+        ),
+        ("Visible", if value.visible { "true" } else { "false" }),
+        ("TextId", value.text.id.as_str()),
+    ]);
+    doc.leaf("Ref", &attributes);
 }
 
 fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
@@ -898,13 +973,21 @@ fn ext_channel_diag_list(doc: &mut Doc, extended: &[ExtendedDiagnosis]) {
     doc.close("ExtChannelDiagList");
 }
 
-/// One ValueItem per set of choices a record refers to.
+/// One ValueItem per set of choices a module's record refers to, then one
+/// per record value of the access point and the ports with choices.
 fn value_list(doc: &mut Doc, p: &Profinet) {
-    if p.value_items.is_empty() {
+    let records = p.access_point_records.iter().chain(&p.port_records);
+    let values = records.flat_map(|r| &r.values);
+    let items: Vec<&ValueItem> = p
+        .value_items
+        .iter()
+        .chain(values.filter_map(|v| v.choices.as_ref()))
+        .collect();
+    if items.is_empty() {
         return;
     }
     doc.open("ValueList", &[]);
-    for item in &p.value_items {
+    for item in items {
         doc.open("ValueItem", &[("ID", &item.id)]);
         doc.open("Assignments", &[]);
         for (value, text) in &item.assignments {

@@ -72,6 +72,9 @@ phrases! {
         de: "Byte {first}-{last}",
     };
     bytes_count(n: impl Display) = { en: "{n} bytes", zh: "{n} 字节", de: "{n} Byte" };
+    ONE_BYTE = { en: "1 byte", zh: "1 字节", de: "1 Byte" };
+    /// Where a Bit or BitArea is: `byte 0, bits 4-6`.
+    byte_bits(byte: &str, bits: &str) = { en: "{byte}, {bits}", zh: "{byte}，{bits}", de: same };
     MEANING = { en: "Meaning", zh: "含义", de: "Bedeutung" };
     VALUE = { en: "Value", zh: "值", de: "Wert" };
     NAME = { en: "Name", zh: "名称", de: same };
@@ -856,10 +859,34 @@ phrases! {
         zh: "{name}（{data_type}）",
         de: same,
     };
-    record_caption(index: u16, name: &str, length: u16) = {
-        en: "Record {index}: {name}, {length} bytes",
-        zh: "记录 {index}：{name}，{length} 字节",
-        de: "Datensatz {index}: {name}, {length} Byte",
+    OWN_RECORDS = {
+        en: "Records of the device access point and the ports",
+        zh: "设备接入点和端口的参数记录",
+        de: "Datensätze des Gerätezugangspunkts und der Ports",
+    };
+    OWN_RECORDS_INTRO = {
+        en: "The controller writes these records at startup, with the values the user set: those of the device access point to its own submodule (slot 0, subslot 1), those of the ports to every port. Each value is high byte first; a bit's place counts from bit 0 of its byte.",
+        zh: "控制器在启动时以用户设定的值写入以下参数记录：设备接入点的记录写入其自身子模块（插槽 0，子插槽 1），端口的记录写入每个端口。各值高字节在前；位的位置从其字节的 Bit0 算起。",
+        de: "Der Controller schreibt diese Datensätze beim Anlauf mit den Werten, die der Benutzer eingestellt hat: die des Gerätezugangspunkts in dessen eigenes Submodul (Steckplatz 0, Subslot 1), die der Ports in jeden Port. Jeder Wert steht mit dem höherwertigen Byte zuerst; die Stelle eines Bits zählt ab Bit 0 seines Bytes.",
+    };
+    ACCESS_POINT_RECORD = { en: "Device access point", zh: "设备接入点", de: "Gerätezugangspunkt" };
+    PORT_RECORD = { en: "Every port", zh: "每个端口", de: "Jeder Port" };
+    /// A value the controller may not change: `1, fixed`.
+    fixed_value(value: &str) = {
+        en: "{value}, fixed",
+        zh: "{value}，固定",
+        de: "{value}, fest",
+    };
+    /// `size`: [`bytes_count`], or [`ONE_BYTE`].
+    own_record_caption(whose: &str, index: u16, name: &str, size: &str) = {
+        en: "{whose}, record {index}: {name}, {size}",
+        zh: "{whose}，记录 {index}：{name}，{size}",
+        de: "{whose}, Datensatz {index}: {name}, {size}",
+    };
+    record_caption(index: u16, name: &str, size: &str) = {
+        en: "Record {index}: {name}, {size}",
+        zh: "记录 {index}：{name}，{size}",
+        de: "Datensatz {index}: {name}, {size}",
     };
     diagnosis_intro(standard: u8, length: u8) = {
         en: "The slave's diagnosis: {standard} standard bytes, then the device-related block of {length} bytes, its header byte first (bits 7-6 = 00, bits 5-0 = the block's length). Unit_Diag_Area bits count from bit 0 of the byte after the header.",

@@ -13,6 +13,7 @@ mod daps;
 mod diagnosis;
 mod fail_safe;
 mod irt;
+mod own_records;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -224,6 +225,10 @@ pub(super) fn describe(
     for diagnosis in diagnosis::entries(device, notes) {
         diagnosis.write(&mut out);
     }
+    let daps: Vec<&Dap> = std::iter::once(dap)
+        .chain(later.iter().map(|l| l.dap))
+        .collect();
+    own_records::own_records(&daps, notes).write(&mut out);
     super::dp::manual(&mut out);
     choices(&mut out, file, &records, software_release(dap).is_some());
     notes.chosen_marks(&mut out);

@@ -64,6 +64,10 @@ pub struct Profinet {
     pub module_values: Vec<ModuleValues>,
     /// The channel diagnoses the card reports, in the description's order.
     pub channel_diagnosis: Vec<ChannelDiagnosis>,
+    /// The parameter records of every device access point's own submodule,
+    /// and of every port, in the description's order.
+    pub access_point_records: Vec<SubmoduleRecord>,
+    pub port_records: Vec<SubmoduleRecord>,
 }
 
 /// An error type the card reports as channel diagnosis: a
@@ -194,6 +198,10 @@ impl Profinet {
                 refs.extend(record.refs.iter().map(|r| &r.text));
                 refs.extend(record.fail_safe.iter().map(|v| &v.text));
             }
+        }
+        for record in self.access_point_records.iter().chain(&self.port_records) {
+            refs.push(&record.name);
+            refs.extend(record.values.iter().map(|v| &v.text));
         }
         refs.extend(
             self.value_items
@@ -740,11 +748,109 @@ pub struct RecordRef {
     pub value_item: Option<String>,
 }
 
-/// A set's choices with their TextIds.
+/// The choices of a mapping's set or of a record value, with their
+/// TextIds.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct ValueItem {
     pub id: String,
-    pub set: SetKey,
     pub assignments: Vec<(i64, TextRef)>,
+}
+
+/// A parameter record of the card's own, of the device access point's
+/// submodule or of a port (not of a drive parameter): values at the
+/// places the description gives, which the controller writes at startup.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct SubmoduleRecord {
+    pub index: u16,
+    pub name: TextRef,
+    /// Bytes: as far as its values reach.
+    pub length: u16,
+    /// In the description's order.
+    pub values: Vec<RecordValue>,
+}
+
+/// A value of a [`SubmoduleRecord`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct RecordValue {
+    pub text: TextRef,
+    /// Its first byte in the record.
+    pub offset: u16,
+    pub data_type: RecordValueType,
+    pub default: u32,
+    /// What it may hold, both ends included: its choices' least and most
+    /// value when it has choices.
+    pub min: u32,
+    pub max: u32,
+    /// Its ValueItem, when it has choices: only their values are allowed.
+    pub choices: Option<ValueItem>,
+    pub changeable: bool,
+    pub visible: bool,
+}
+
+impl RecordValue {
+    /// Whether it may hold `value`.
+    pub fn allows(&self, value: u32) -> bool {
+        match &self.choices {
+            Some(item) => item.assignments.iter().any(|(v, _)| *v == i64::from(value)),
+            None => (self.min..=self.max).contains(&value),
+        }
+    }
+}
+
+/// How a record holds a value: whole bytes, high byte first, or some bits
+/// of one byte.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RecordValueType {
+    Unsigned8,
+    Unsigned16,
+    Unsigned32,
+    /// Bits `first` to `last` of the byte: GSDML's `Bit` when one, else
+    /// `BitArea`.
+    Bits {
+        first: u8,
+        last: u8,
+    },
+}
+
+impl RecordValueType {
+    /// The bytes it takes from its offset.
+    pub fn bytes(self) -> u16 {
+        match self {
+            Self::Unsigned16 => 2,
+            Self::Unsigned32 => 4,
+            Self::Unsigned8 | Self::Bits { .. } => 1,
+        }
+    }
+
+    /// The most it can hold.
+    pub fn max(self) -> u32 {
+        match self {
+            Self::Unsigned8 => u8::MAX.into(),
+            Self::Unsigned16 => u16::MAX.into(),
+            Self::Unsigned32 => u32::MAX,
+            Self::Bits { first, last } => (1 << (last - first + 1)) - 1,
+        }
+    }
+
+    /// Its `DataType` in the GSDML file.
+    pub fn gsdml_name(self) -> &'static str {
+        match self {
+            Self::Unsigned8 => "Unsigned8",
+            Self::Unsigned16 => "Unsigned16",
+            Self::Unsigned32 => "Unsigned32",
+            Self::Bits { first, last } if first == last => "Bit",
+            Self::Bits { .. } => "BitArea",
+        }
+    }
+
+    /// The bits it takes of each of its bytes, from its offset.
+    pub fn masks(self) -> Vec<u8> {
+        match self {
+            Self::Bits { first, last } => vec![(0xFF >> (7 - last)) & (0xFF << first)],
+            whole => vec![0xFF; usize::from(whole.bytes())],
+        }
+    }
 }

@@ -3,11 +3,10 @@
 //! them, and the fixed bytes under them.
 
 use super::checks::{Checker, GSD_NAME_LEN};
-use super::telegram::value_set;
+use super::param_values::{self, Holds, Taken};
 use crate::description::dp as raw;
-use crate::diag::Diagnostic;
 use crate::ir::profibus::{CardParam, PrmParam, PrmType, PrmValue};
-use crate::ir::{Allowed, Ident};
+use crate::ir::Allowed;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -31,34 +30,15 @@ pub(super) fn lower(
         facts: Vec::new(),
         end: 0,
     };
-    let mut taken: Vec<(usize, u16, String)> = Vec::new();
+    let mut taken = Taken::default();
     for p in params {
         let Some((data_type, fact)) = parameter(cx, p) else {
             continue;
         };
         let offset = usize::from(*p.offset.get_ref());
-        let bits = bit_mask(data_type);
-        for (byte, mask) in bits.iter().enumerate() {
-            let at = offset + byte;
-            if let Some((_, _, other)) = taken.iter().find(|(o, m, _)| *o == at && m & mask != 0) {
-                cx.push(
-                    Diagnostic::error(
-                        "E114",
-                        format!(
-                            "parameter \"{}\" overlaps another at byte {at}",
-                            p.name.get_ref()
-                        ),
-                    )
-                    .at(p.offset.span())
-                    .label("bits taken already")
-                    .help(format!(
-                        "\"{other}\" takes some of its bits: two parameters cannot share a bit"
-                    )),
-                );
-            }
-            taken.push((at, *mask, p.name.get_ref().clone()));
-        }
-        placed.end = placed.end.max(offset + bits.len());
+        let masks = bit_mask(data_type);
+        taken.take(cx, p.name.get_ref(), (offset, &masks), p.offset.span());
+        placed.end = placed.end.max(offset + masks.len());
         let text = fact.allowed.choices().and_then(|_| text_ids.next());
         placed.params.push(PrmParam {
             id: ids.next().unwrap_or(u16::MAX),
@@ -73,11 +53,11 @@ pub(super) fn lower(
 }
 
 /// The bits a parameter takes of each of its bytes, from its offset.
-fn bit_mask(data_type: PrmType) -> Vec<u16> {
+fn bit_mask(data_type: PrmType) -> Vec<u8> {
     match data_type {
         PrmType::Unsigned8 | PrmType::Signed8 => vec![0xFF],
         PrmType::Unsigned16 => vec![0xFF, 0xFF],
-        PrmType::Bits { first, last } => vec![((1u16 << (last + 1)) - 1) & !((1u16 << first) - 1)],
+        PrmType::Bits { first, last } => vec![(0xFF >> (7 - last)) & (0xFF << first)],
     }
 }
 
@@ -85,30 +65,12 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
     let name = cx.gsd_name(&p.name, GSD_NAME_LEN, "parameter name");
     let data_type = match (&p.data_type, &p.bits) {
         (Some(t), Some(_)) => {
-            cx.push(
-                Diagnostic::error("E175", format!("parameter \"{name}\" has both `type` and `bits`"))
-                    .at(t.span())
-                    .label("remove this or `bits`")
-                    .help("`bits` stores the parameter in some bits of one byte (a GSD Bit or BitArea); `type` in whole bytes"),
-            );
+            param_values::both_type_and_bits(cx, &name, t.span());
             return None;
         }
         (_, Some(bits)) => {
-            let range = bits.get_ref();
-            if !(0..=7).contains(&range.first) || !(range.first..=7).contains(&range.last) {
-                cx.push(
-                    Diagnostic::error("E101", format!("bits {}..={} are not bits of one byte", range.first, range.last))
-                        .at(bits.span())
-                        .label("not within 0..=7")
-                        .help("a parameter's bits are bits of the byte at its offset: [first, last] within 0..=7"),
-                );
-                return None;
-            }
-            // Checked above: 0 <= first <= last <= 7.
-            PrmType::Bits {
-                first: range.first as u8,
-                last: range.last as u8,
-            }
+            let (first, last) = param_values::bits_of_a_byte(cx, bits)?;
+            PrmType::Bits { first, last }
         }
         (Some(t), None) => match t.get_ref() {
             raw::PrmType::Unsigned8 => PrmType::Unsigned8,
@@ -118,59 +80,22 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
         (None, None) => PrmType::Unsigned16,
     };
     let most = i64::from(data_type.max());
-    let ident = Ident::of(&["choice"]);
-    let allowed = match (&p.range, &p.choices) {
-        (Some(_), Some(choices)) => {
-            cx.push(
-                Diagnostic::error(
-                    "E119",
-                    format!("parameter \"{name}\" has both `range` and `choices`"),
-                )
-                .at(choices.span())
-                .label("choices given here")
-                .help("a parameter takes a value within a range, or one of its choices"),
-            );
-            return None;
-        }
-        (Some(range), None) => {
-            let crate::description::Exactly([min, max]) = range.get_ref();
-            let min: u16 = cx.spanned_in_range(min, 0, most, "the parameter's least value")?;
-            let max: u16 = cx.spanned_in_range(max, 0, most, "the parameter's most value")?;
-            if min > max {
-                cx.reversed(range.span(), min, max);
-                return None;
-            }
-            Allowed::Range { min, max }
-        }
-        (None, Some(choices)) => Allowed::Choices(value_set(
-            cx,
-            ident,
-            choices.get_ref(),
-            (0, most),
-            Some(GSD_NAME_LEN),
-        )),
-        (None, None) => Allowed::Range {
-            min: 0,
-            max: data_type.max(),
+    let choices = (p.range.as_ref(), p.choices.as_ref());
+    let holds = param_values::holds(cx, &name, choices, most, Some(GSD_NAME_LEN))?;
+    let default = param_values::default(cx, &name, &p.default, (most, &holds))?;
+    let allowed = match holds {
+        // Within the type's values, which are u16's.
+        Holds::Range(min, max) => Allowed::Range {
+            min: min as u16,
+            max: max as u16,
         },
+        Holds::Choices(set) => Allowed::Choices(set),
     };
-    let default: u16 = cx.spanned_in_range(&p.default, 0, most, "the parameter's default")?;
-    if !allowed.contains(i64::from(default)) {
-        cx.push(
-            Diagnostic::error(
-                "E108",
-                format!("default {default} is not among the values parameter \"{name}\" allows"),
-            )
-            .at(p.default.span())
-            .label("not allowed")
-            .help("pick a default within the range or among the choices"),
-        );
-    }
     Some((
         data_type,
         CardParam {
             name: crate::ir::Text::english(name),
-            default,
+            default: default as u16,
             allowed,
             changeable: p.changeable.as_ref().is_none_or(|c| *c.get_ref()),
             visible: p.visible.as_ref().is_none_or(|v| *v.get_ref()),

@@ -13,6 +13,7 @@ mod gateway;
 mod manual;
 mod mappings;
 mod meaning;
+mod param_values;
 mod ppo;
 mod profibus;
 mod profinet;

@@ -11,6 +11,7 @@ use crate::ir::profinet::{
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::{BTreeMap, BTreeSet};
+use submodule_records::Whose;
 use toml::Spanned;
 
 mod daps;
@@ -25,6 +26,7 @@ mod profile_words;
 mod pzd_names;
 mod records;
 mod stack;
+mod submodule_records;
 pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
 
 pub(crate) use diagnosis::{
@@ -196,6 +198,9 @@ pub fn lower(
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
+    let access_point_records =
+        submodule_records::lower(cx, &p.access_point_records, Whose::AccessPoint);
+    let port_records = submodule_records::lower(cx, &p.port_records, Whose::Port);
     let mut daps = daps?;
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
     let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports);
@@ -252,6 +257,8 @@ pub fn lower(
         records: reading_plans,
         module_values,
         channel_diagnosis: channel_diagnosis?,
+        access_point_records: access_point_records?,
+        port_records: port_records?,
     })
 }
 

@@ -115,7 +115,8 @@ typedef enum {
     GSDC_PRM_OK = 0,
     /* It is `found` bytes long; it must be `expected`. */
     GSDC_PRM_LENGTH,
-    /* The value at byte `offset` is `value`, which its parameter does not allow. */
+    /* The value at byte `offset` is `value`, which its parameter does not
+     * allow (up to 32 bits: a record value of the access point or a port). */
     GSDC_PRM_NOT_ALLOWED
 } gsdc_prm_fault_t;
 
@@ -126,7 +127,7 @@ typedef struct {
     size_t expected;
     size_t found;
     size_t offset;
-    uint16_t value;
+    uint32_t value;
 } gsdc_prm_result_t;
 
 /* Whether entry `index` (0 = the first) of a group of mappings may hold
@@ -2073,14 +2074,46 @@ typedef struct {
     size_t modules_count;
 } gsdc_pn_dap_t;
 
+/* A value of a record of the card's own: its English name, its first byte
+ * in the record, its bytes (1, 2 or 4, high byte first; 0 for bits of the
+ * byte at `offset`), the bits of a Bit or BitArea (0 and 7 for whole
+ * bytes), its default, what it may hold (min to max, and one of `values`
+ * when the GSDML lists them: NULL for every value of the range), and
+ * whether the controller may change it (one that is not holds its
+ * default). */
+typedef struct {
+    const char *name;
+    size_t offset;
+    size_t bytes;
+    uint8_t first_bit;
+    uint8_t last_bit;
+    uint32_t default_value;
+    uint32_t min;
+    uint32_t max;
+    const uint32_t *values;
+    size_t values_count;
+    bool changeable;
+} gsdc_pn_record_value_t;
+
+/* A parameter record of the card's own, of a device access point's
+ * submodule or of a port: its index, its bytes (as far as its values
+ * reach) and its values in the GSDML's order. */
+typedef struct {
+    uint16_t index;
+    size_t len;
+    const gsdc_pn_record_value_t *values;
+    size_t values_count;
+} gsdc_pn_submodule_record_t;
+
 /* A PROFINET IO device: its identity and DNS_CompatibleName (the
  * NameOfStation an engineering tool proposes), the device access point in
  * slot 0 (its module ident number and its own submodule), the interface
  * submodule and its ports, the device access points after the first, every
  * module of the GSDML, its PKW codec,
  * whether PZD1 from the controller is the control word and PZD1 to the
- * controller the status word, and the PZD words the records map each
- * way. */
+ * controller the status word, the PZD words the records map each
+ * way, and the card's own records of every device access point's
+ * submodule and of every port. */
 typedef struct {
     uint16_t vendor_id;
     uint16_t device_id;
@@ -2101,7 +2134,74 @@ typedef struct {
     size_t pzd_out_count;
     const gsdc_pn_pzd_t *pzd_in;
     size_t pzd_in_count;
+    const gsdc_pn_submodule_record_t *access_point_records;
+    size_t access_point_records_count;
+    const gsdc_pn_submodule_record_t *port_records;
+    size_t port_records_count;
 } gsdc_pn_device_t;
+
+/* The value `v` holds in a record of `len` bytes at `bytes`: GSDC_PRM_LENGTH
+ * when its bytes are not all in it. */
+static inline gsdc_prm_result_t gsdc_pn_record_value_get(const gsdc_pn_record_value_t *v,
+                                                         const uint8_t *bytes, size_t len,
+                                                         uint32_t *value)
+{
+    size_t whole = v->bytes;
+    gsdc_prm_result_t result = gsdc_prm_ok();
+    uint32_t number = 0U;
+    size_t b;
+    if (whole == 0U) {
+        whole = 1U; /* bits of one byte */
+    }
+    if ((v->offset > len) || (whole > len - v->offset)) {
+        return gsdc_prm_check_len(len, v->offset + whole);
+    }
+    for (b = 0U; b < whole; b++) {
+        number = (number << 8) | bytes[v->offset + b];
+    }
+    if (v->bytes == 0U) {
+        number = (number >> v->first_bit) & ((1U << (v->last_bit - v->first_bit + 1U)) - 1U);
+    }
+    *value = number;
+    return result;
+}
+
+/* Whether the GSDML allows `value` for `v`. */
+static inline bool gsdc_pn_record_value_allows(const gsdc_pn_record_value_t *v, uint32_t value)
+{
+    bool listed = (v->values_count == 0U);
+    size_t i;
+    for (i = 0U; i < v->values_count; i++) {
+        listed = listed || (v->values[i] == value);
+    }
+    return (value >= v->min) && (value <= v->max) && listed &&
+           (v->changeable || (value == v->default_value));
+}
+
+/* The values of a record the controller wrote (exactly `len` bytes) into
+ * values[0..values_count), each one checked (one the controller may not
+ * change must hold its default); `values` is written only when the result
+ * is GSDC_PRM_OK. */
+static inline gsdc_prm_result_t gsdc_pn_submodule_record_decode(
+    const gsdc_pn_submodule_record_t *record, const uint8_t *bytes, size_t len, uint32_t *values)
+{
+    gsdc_prm_result_t result = gsdc_prm_check_len(len, record->len);
+    size_t i;
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->values_count); i++) {
+        const gsdc_pn_record_value_t *v = &record->values[i];
+        uint32_t value = 0U;
+        result = gsdc_pn_record_value_get(v, bytes, len, &value);
+        if ((result.fault == GSDC_PRM_OK) && !gsdc_pn_record_value_allows(v, value)) {
+            result.fault = GSDC_PRM_NOT_ALLOWED;
+            result.offset = v->offset;
+            result.value = value;
+        }
+    }
+    for (i = 0U; (result.fault == GSDC_PRM_OK) && (i < record->values_count); i++) {
+        (void)gsdc_pn_record_value_get(&record->values[i], bytes, len, &values[i]);
+    }
+    return result;
+}
 
 /* The entries' values of a record the controller wrote (`len` bytes) into
  * the first entries_count of `values`, each one checked (an entry the

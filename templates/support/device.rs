@@ -235,7 +235,7 @@ impl DpParam {
         } else {
             Err(PrmError::NotAllowed {
                 offset: self.offset,
-                value,
+                value: value.into(),
             })
         }
     }
@@ -245,7 +245,7 @@ impl DpParam {
     pub fn write(&self, user_prm: &mut [u8], value: u16) -> Result<(), PrmError> {
         let not_allowed = PrmError::NotAllowed {
             offset: self.offset,
-            value,
+            value: value.into(),
         };
         if !self.allows(value) {
             return Err(not_allowed);
@@ -367,6 +367,98 @@ pub struct PnDevice {
     /// record maps to a drive parameter, and those to the controller.
     pub pzd_out: &'static [PnPzd],
     pub pzd_in: &'static [PnPzd],
+    /// The card's own records of every device access point's submodule,
+    /// and of every port.
+    pub access_point_records: &'static [PnSubmoduleRecord],
+    pub port_records: &'static [PnSubmoduleRecord],
+}
+
+/// A parameter record of the card's own, of a device access point's
+/// submodule or of a port: values at the places the GSDML gives them.
+#[derive(Clone, Copy, Debug)]
+pub struct PnSubmoduleRecord {
+    pub index: u16,
+    /// Bytes: as far as its values reach.
+    pub len: usize,
+    /// In the GSDML's order.
+    pub values: &'static [PnRecordValue],
+}
+
+/// A value of a [`PnSubmoduleRecord`]: whole bytes, high byte first, or
+/// some bits of one byte.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PnRecordValue {
+    /// As the GSDML names it, in English.
+    pub name: &'static str,
+    /// Its first byte in the record.
+    pub offset: usize,
+    /// Its bytes (1, 2 or 4); 0 for bits of the byte at `offset`.
+    pub bytes: usize,
+    /// The bits of a `Bit` or `BitArea`; 0 and 7 for whole bytes.
+    pub first_bit: u8,
+    pub last_bit: u8,
+    pub default_value: u32,
+    /// What it may hold: `min` to `max`, and one of `values` when the
+    /// GSDML lists them (empty: every value of the range).
+    pub min: u32,
+    pub max: u32,
+    pub values: &'static [u32],
+    /// Whether the controller may change it (the GSDML's `Changeable`); a
+    /// value that is not holds its default.
+    pub changeable: bool,
+}
+
+impl PnRecordValue {
+    /// Whether the GSDML allows `value` here.
+    pub fn allows(&self, value: u32) -> bool {
+        (self.min..=self.max).contains(&value)
+            && (self.values.is_empty() || self.values.contains(&value))
+            && (self.changeable || value == self.default_value)
+    }
+
+    /// Its value in `record`, which holds its bytes.
+    fn read(&self, record: &[u8]) -> Result<u32, PrmError> {
+        let whole = self.bytes.max(1);
+        let end = self.offset.saturating_add(whole);
+        let bytes = record.get(self.offset..end).ok_or(PrmError::Length {
+            expected: end,
+            found: record.len(),
+        })?;
+        let number = bytes.iter().fold(0, |n, &b| n << 8 | u32::from(b));
+        Ok(match self.bytes {
+            0 => (number >> self.first_bit) & ((1 << (self.last_bit - self.first_bit + 1)) - 1),
+            _ => number,
+        })
+    }
+}
+
+impl PnSubmoduleRecord {
+    /// The values of a record the controller wrote, exactly `len` bytes,
+    /// into the first `values.len()` of `out`, each one checked (one the
+    /// controller may not change must hold its default); nothing is
+    /// written when it is refused.
+    pub fn decode(&self, bytes: &[u8], out: &mut [u32]) -> Result<(), PrmError> {
+        check_len(bytes, self.len)?;
+        if out.len() < self.values.len() {
+            return Err(PrmError::Length {
+                expected: self.len,
+                found: bytes.len(),
+            });
+        }
+        for value in self.values {
+            let read = value.read(bytes)?;
+            if !value.allows(read) {
+                return Err(PrmError::NotAllowed {
+                    offset: value.offset,
+                    value: read,
+                });
+            }
+        }
+        for (slot, value) in out.iter_mut().zip(self.values) {
+            *slot = value.read(bytes)?;
+        }
+        Ok(())
+    }
 }
 
 /// A device access point after the first: its module ident number, its own
@@ -482,7 +574,10 @@ impl PnRecord {
             let fixed = self.changeable.get(i) == Some(&false);
             let held = self.defaults.get(i) == Some(&value);
             if !entry.allowed.contains(value) || fixed && !held {
-                return Err(PrmError::NotAllowed { offset: at, value });
+                return Err(PrmError::NotAllowed {
+                    offset: at,
+                    value: value.into(),
+                });
             }
         }
         let mut ends = self.entry_ends();

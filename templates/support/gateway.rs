@@ -106,7 +106,7 @@ impl PrmField {
     fn not_allowed(self, value: u16) -> PrmError {
         PrmError::NotAllowed {
             offset: self.offset,
-            value,
+            value: value.into(),
         }
     }
 }

@@ -28,8 +28,8 @@ pub mod numbering;
 pub use device::{DiagCode, DpDiagArea, DpDiagnosis, DpGateway, GatewayDiagType};
 pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, PzdParam, UserPrm};
 pub use device::{GatewayDiagnosis, GatewayNode, PnPzd};
-pub use device::{PnDap, PnDevice, PnModule, PnRecord, PnSubmodule};
-pub use device::{PrmDataType, RecordReading};
+pub use device::{PnDap, PnDevice, PnModule, PnRecord, PnRecordValue, PnSubmodule};
+pub use device::{PnSubmoduleRecord, PrmDataType, RecordReading};
 pub use numbering::{AddressScheme, Numbering, NumberingPrefix, ParameterName, WrittenPrefix};
 
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,
@@ -288,8 +288,9 @@ pub const fn defaults<const N: usize>(mappings: &[Mapping; N]) -> [u16; N] {
 pub enum PrmError {
     /// It is `found` bytes long; it must be `expected`.
     Length { expected: usize, found: usize },
-    /// The value at byte `offset` is not one its parameter allows.
-    NotAllowed { offset: usize, value: u16 },
+    /// The value at byte `offset` is not one its parameter allows (up to
+    /// 32 bits: a record value of the access point or a port).
+    NotAllowed { offset: usize, value: u32 },
 }
 
 /// Refuses `bytes` unless it is exactly `len` long.
@@ -329,7 +330,7 @@ pub fn read_values<const N: usize>(
         if !mapping.allowed.contains(*value) {
             return Err(PrmError::NotAllowed {
                 offset: at,
-                value: *value,
+                value: (*value).into(),
             });
         }
         at = at.saturating_add(mapping.bytes);
@@ -370,7 +371,7 @@ pub fn read_record_prefix<const N: usize>(
         if !mapping.allowed.contains(*value) {
             return Err(PrmError::NotAllowed {
                 offset: at,
-                value: *value,
+                value: (*value).into(),
             });
         }
     }

@@ -250,6 +250,47 @@ static void dump_record(const gsdc_pn_record_t *r)
     printf("\n");
 }
 
+/* A record of the access point or a port, as device_files.rs reads it from
+ * the GSDML: each value's place, default, range, listed values and whether
+ * the controller may change it; and the record of its defaults decoded. */
+static void dump_own_record(const char *what, const gsdc_pn_submodule_record_t *r)
+{
+    uint8_t bytes[64] = {0U};
+    uint32_t values[16];
+    size_t i;
+    size_t j;
+    if ((r->len > sizeof bytes) || (r->values_count > 16U)) {
+        fail("a record longer than the test's buffer");
+    }
+    printf("%s %u len %lu", what, (unsigned int)r->index, (unsigned long)r->len);
+    for (i = 0U; i < r->values_count; i++) {
+        const gsdc_pn_record_value_t *v = &r->values[i];
+        printf(" | %lu %lu %u-%u default %lu range %lu..%lu values", (unsigned long)v->offset,
+               (unsigned long)v->bytes, (unsigned int)v->first_bit, (unsigned int)v->last_bit,
+               (unsigned long)v->default_value, (unsigned long)v->min, (unsigned long)v->max);
+        for (j = 0U; j < v->values_count; j++) {
+            printf(" %lu", (unsigned long)v->values[j]);
+        }
+        printf(" changeable %d", v->changeable ? 1 : 0);
+        /* Its default, placed in the record of defaults. */
+        for (j = 0U; j < v->bytes; j++) {
+            bytes[v->offset + j] = (uint8_t)(v->default_value >> (8U * (v->bytes - 1U - j)));
+        }
+        if (v->bytes == 0U) {
+            bytes[v->offset] |= (uint8_t)(v->default_value << v->first_bit);
+        }
+    }
+    printf("\n");
+    if (gsdc_pn_submodule_record_decode(r, bytes, r->len, values).fault != GSDC_PRM_OK) {
+        fail("a record of the GSDML's defaults is refused");
+    }
+    for (i = 0U; i < r->values_count; i++) {
+        if (values[i] != r->values[i].default_value) {
+            fail("a record of the GSDML's defaults decodes to other values");
+        }
+    }
+}
+
 static void dump_pn(const gsdc_pn_device_t *d)
 {
     size_t i;
@@ -277,6 +318,12 @@ static void dump_pn(const gsdc_pn_device_t *d)
             printf(" %lu", (unsigned long)d->modules[later->modules[j]].ident);
         }
         printf("\n");
+    }
+    for (i = 0U; i < d->access_point_records_count; i++) {
+        dump_own_record("dap_record", &d->access_point_records[i]);
+    }
+    for (i = 0U; i < d->port_records_count; i++) {
+        dump_own_record("port_record", &d->port_records[i]);
     }
     for (i = 0U; i < d->modules_count; i++) {
         const gsdc_pn_module_t *m = &d->modules[i];

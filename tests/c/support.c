@@ -121,6 +121,78 @@ static void a_record_ends_with_its_fail_safe_values(void)
     CHECK(values[1] == 9U);
 }
 
+/* A value of a record of the access point or a port: whole bytes, or bits
+ * of one byte when `bytes` is 0; any value, changeable. */
+static gsdc_pn_record_value_t record_value(size_t offset, size_t bytes, uint8_t first_bit,
+                                           uint8_t last_bit)
+{
+    gsdc_pn_record_value_t v;
+    v.name = "value";
+    v.offset = offset;
+    v.bytes = bytes;
+    v.first_bit = first_bit;
+    v.last_bit = last_bit;
+    v.default_value = 0U;
+    v.min = 0U;
+    v.max = 0xFFFFFFFFUL;
+    v.values = NULL;
+    v.values_count = 0U;
+    v.changeable = true;
+    return v;
+}
+
+/* SEW MOVI-C's records of a port and of its access point, as the Rust
+ * support's test has them: record 9001's two Unsigned32 thresholds, high
+ * byte first; record 8200's alarm bit (0 or 1) in bit 0, beside a bit area
+ * of bits 4 to 6 that holds 1 to 5 and a byte nobody may change from its
+ * default 1. */
+static void an_access_point_record_reads_whole_values_and_bits(void)
+{
+    static const uint8_t thresholds_bytes[8] = {0U, 0U, 0U, 10U, 0x00U, 0x01U, 0x86U, 0xA0U};
+    static const uint32_t on_off[2] = {0U, 1U};
+    static const uint8_t set[2] = {0x51U, 1U};     /* bit 0, bits 4 to 6 = 5 */
+    static const uint8_t too_high[2] = {0x60U, 1U}; /* bits 4 to 6 = 6 */
+    static const uint8_t changed[2] = {0x10U, 2U};
+    gsdc_pn_record_value_t thresholds_values[2];
+    gsdc_pn_record_value_t alarm_values[3];
+    gsdc_pn_submodule_record_t thresholds;
+    gsdc_pn_submodule_record_t alarms;
+    uint32_t out[3] = {9U, 9U, 9U};
+    gsdc_prm_result_t result;
+    thresholds_values[0] = record_value(0U, 4U, 0U, 7U);
+    thresholds_values[1] = record_value(4U, 4U, 0U, 7U);
+    thresholds.index = 9001U;
+    thresholds.len = 8U;
+    thresholds.values = thresholds_values;
+    thresholds.values_count = 2U;
+    CHECK(gsdc_pn_submodule_record_decode(&thresholds, thresholds_bytes, 8U, out).fault == GSDC_PRM_OK);
+    CHECK((out[0] == 10U) && (out[1] == 100000UL));
+    result = gsdc_pn_submodule_record_decode(&thresholds, thresholds_bytes, 7U, out);
+    CHECK((result.fault == GSDC_PRM_LENGTH) && (result.expected == 8U) && (result.found == 7U));
+    alarm_values[0] = record_value(0U, 0U, 0U, 0U);
+    alarm_values[0].max = 1U;
+    alarm_values[0].values = on_off;
+    alarm_values[0].values_count = 2U;
+    alarm_values[1] = record_value(0U, 0U, 4U, 6U);
+    alarm_values[1].min = 1U;
+    alarm_values[1].max = 5U;
+    alarm_values[1].default_value = 2U;
+    alarm_values[2] = record_value(1U, 1U, 0U, 7U);
+    alarm_values[2].default_value = 1U;
+    alarm_values[2].changeable = false;
+    alarms.index = 8200U;
+    alarms.len = 2U;
+    alarms.values = alarm_values;
+    alarms.values_count = 3U;
+    CHECK(gsdc_pn_submodule_record_decode(&alarms, set, 2U, out).fault == GSDC_PRM_OK);
+    CHECK((out[0] == 1U) && (out[1] == 5U) && (out[2] == 1U));
+    result = gsdc_pn_submodule_record_decode(&alarms, too_high, 2U, out);
+    CHECK((result.fault == GSDC_PRM_NOT_ALLOWED) && (result.offset == 0U) && (result.value == 6U));
+    result = gsdc_pn_submodule_record_decode(&alarms, changed, 2U, out);
+    CHECK((result.fault == GSDC_PRM_NOT_ALLOWED) && (result.offset == 1U) && (result.value == 2U));
+    CHECK((out[0] == 1U) && (out[1] == 5U) && (out[2] == 1U)); /* written only when accepted */
+}
+
 static void values_are_read_and_checked_at_their_offset(void)
 {
     static const uint8_t telegram[5] = {0x80U, 0xF0U, 0x12U, 0x00U, 0x02U};
@@ -727,6 +799,8 @@ static const test_t tests[] = {
     {"byte_and_word_entries_are_read_each_at_its_offset",
      byte_and_word_entries_are_read_each_at_its_offset},
     {"a_record_ends_with_its_fail_safe_values", a_record_ends_with_its_fail_safe_values},
+    {"an_access_point_record_reads_whole_values_and_bits",
+     an_access_point_record_reads_whole_values_and_bits},
     {"reading_past_the_end_is_refused", reading_past_the_end_is_refused},
     {"pke_no_request_ignores_what_the_master_left", pke_no_request_ignores_what_the_master_left},
     {"pke_reserved_bits_are_not_read_and_written_0",

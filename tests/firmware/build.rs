@@ -1,5 +1,5 @@
-//! Generates every shipped description's files, and the PROFIdrive
-//! fixture's, into OUT_DIR with gsdc's build-script API, as a firmware crate
+//! Generates every shipped description's files, and two fixtures' (a
+//! PROFIdrive card, and one with ident numbers and records of its own), into OUT_DIR with gsdc's build-script API, as a firmware crate
 //! would; `examples.rs`, the manuals' worked examples each description
 //! gives (`[[examples]]`), for tests/manuals.rs to round-trip through the
 //! layouts; and, for tests/numbering.rs, how gsdc itself names every address
@@ -16,15 +16,18 @@ const DESCRIPTIONS: [&str; 4] = [
     "md810-gateway.toml",
 ];
 
+/// The PROFIdrive card, and the card whose ident numbers and records are
+/// its own (an imported file's).
+const FIXTURES: [&str; 2] = ["profidrive.toml", "own_idents.toml"];
+
 fn main() {
     let out_dir = std::env::var("OUT_DIR").expect("cargo sets OUT_DIR");
     let descriptions = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../descriptions");
-    let profidrive =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid/profidrive.toml");
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/valid");
     let paths: Vec<PathBuf> = DESCRIPTIONS
         .iter()
         .map(|name| descriptions.join(name))
-        .chain([profidrive])
+        .chain(FIXTURES.iter().map(|name| fixtures.join(name)))
         .collect();
     let mut examples = String::from(EXAMPLE_TYPE);
     for path in &paths {

@@ -223,6 +223,16 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
             .skip(1)
             .map(|later| later_dap_line(&doc, later)),
     );
+    lines.extend(own_record_lines(&doc, "dap_record", dap_submodule));
+    // Every port of every access point carries the records the first
+    // port does, which the table lists once.
+    let ports: Vec<Vec<String>> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("PortSubmoduleItem"))
+        .map(|port| own_record_lines(&doc, "port_record", port))
+        .collect();
+    assert!(ports.windows(2).all(|w| w[0] == w[1]), "{ports:?}");
+    lines.extend(ports.into_iter().next().unwrap_or_default());
     let text_of = |id: &str| {
         doc.descendants()
             .filter(|n| n.has_tag_name("PrimaryLanguage"))
@@ -308,6 +318,88 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         }
     }
     lines
+}
+
+/// The records of a device access point's own submodule or of a port:
+/// each value's place (byte, bytes, bits), default, range, listed values
+/// and whether the controller may change it, as the GSDML gives them.
+fn own_record_lines(
+    doc: &roxmltree::Document,
+    what: &str,
+    submodule: roxmltree::Node,
+) -> Vec<String> {
+    let records = submodule
+        .children()
+        .filter(|n| n.has_tag_name("RecordDataList"))
+        .flat_map(|l| {
+            l.children()
+                .filter(|n| n.has_tag_name("ParameterRecordDataItem"))
+        });
+    records
+        .map(|record| {
+            let mut line = format!(
+                "{what} {} len {}",
+                attr(record, "Index"),
+                attr(record, "Length")
+            );
+            for r in record.children().filter(|n| n.has_tag_name("Ref")) {
+                line += &own_record_value(doc, r);
+            }
+            line
+        })
+        .collect()
+}
+
+/// ` | byte bytes first-last default d range min..max values v... changeable c`
+/// of a record's Ref: 0 bytes for a Bit or BitArea; its range the ends of
+/// its AllowedValues, else its type's; its values its ValueItem's.
+fn own_record_value(doc: &roxmltree::Document, r: roxmltree::Node) -> String {
+    let data_type = attr(r, "DataType");
+    let first: u32 = r.attribute("BitOffset").unwrap_or("0").parse().unwrap();
+    let (bytes, bits) = match data_type {
+        "Bit" => (0, (first, first)),
+        "BitArea" => {
+            let length: u32 = attr(r, "BitLength").parse().unwrap();
+            (0, (first, first + length - 1))
+        }
+        other => (data_type_len(other), (0, 7)),
+    };
+    let type_max = match bytes {
+        0 => (1u64 << (bits.1 - bits.0 + 1)) - 1,
+        n => (1u64 << (8 * n)) - 1,
+    };
+    let (min, max) = match r.attribute("AllowedValues") {
+        Some(runs) => {
+            let ends: Vec<&str> = runs.split([' ', '.']).filter(|p| !p.is_empty()).collect();
+            (number(ends[0]), number(ends[ends.len() - 1]))
+        }
+        None => (0, type_max),
+    };
+    let values: Vec<&str> = r
+        .attribute("ValueItemTarget")
+        .map(|id| {
+            let item = doc
+                .descendants()
+                .find(|n| n.has_tag_name("ValueItem") && n.attribute("ID") == Some(id))
+                .unwrap();
+            item.descendants()
+                .filter(|n| n.has_tag_name("Assign"))
+                .map(|a| attr(a, "Content"))
+                .collect()
+        })
+        .unwrap_or_default();
+    let changeable = match r.attribute("Changeable") {
+        Some("false") => 0,
+        _ => 1,
+    };
+    format!(
+        " | {} {bytes} {}-{} default {} range {min}..{max} values{} changeable {changeable}",
+        attr(r, "ByteOffset"),
+        bits.0,
+        bits.1,
+        attr(r, "DefaultValue"),
+        values.iter().map(|v| format!(" {v}")).collect::<String>()
+    )
 }
 
 /// A device access point after the first: its ident number, its own

@@ -42,6 +42,7 @@ fn elem_type(elem: Elem) -> String {
         Elem::Bool => "bool".into(),
         Elem::Byte => "uint8_t".into(),
         Elem::Word => "uint16_t".into(),
+        Elem::Long => "uint32_t".into(),
         Elem::Index => "size_t".into(),
         Elem::Record(name) => format!("gsdc_{}_t", type_ident(name).snake()),
     }

@@ -9,7 +9,7 @@ use crate::i18n::sheet as w;
 use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmType, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
-use crate::ir::profinet::{ChannelDiagnosis, ParameterRecord};
+use crate::ir::profinet::{ChannelDiagnosis, ParameterRecord, RecordValue, RecordValueType};
 use crate::ir::{Allowed, EntryKey, EntryType, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
@@ -19,7 +19,11 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         .profibus
         .as_ref()
         .is_some_and(|p| !p.user_prm.gateway.is_empty() || !p.user_prm.card.is_empty());
-    if ir.mappings.groups.is_empty() && !other_params {
+    let own_records = ir
+        .profinet
+        .as_ref()
+        .is_some_and(|p| !p.access_point_records.is_empty() || !p.port_records.is_empty());
+    if ir.mappings.groups.is_empty() && !other_params && !own_records {
         return;
     }
     doc.section(
@@ -59,6 +63,94 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
         fail_safe_values(doc, ir, lang);
     }
     choices(doc, ir, lang);
+    if own_records {
+        own_records_tables(doc, ir, lang);
+    }
+}
+
+/// The records of the access point and the ports: each value's place,
+/// type, default and what it holds.
+fn own_records_tables(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = &ir.profinet else {
+        return;
+    };
+    doc.subsection("own-records", lang.t(w::OWN_RECORDS));
+    doc.para(text(lang.t(w::OWN_RECORDS_INTRO)));
+    for (whose, records) in [
+        (w::ACCESS_POINT_RECORD, &p.access_point_records),
+        (w::PORT_RECORD, &p.port_records),
+    ] {
+        for record in records {
+            let rows = record
+                .values
+                .iter()
+                .map(|v| own_value_row(lang, v))
+                .collect();
+            let head = [
+                lang.t(w::BYTES),
+                lang.t(w::NAME),
+                lang.t(w::TYPE),
+                lang.t(w::DEFAULT),
+                lang.t(w::RANGE_OR_CHOICES),
+            ];
+            let name = lang.text(&record.name.text);
+            let size = record_size(lang, record.length);
+            let caption = w::own_record_caption(lang, lang.t(whose), record.index, name, &size);
+            doc.table(caption, &head, rows);
+        }
+    }
+}
+
+/// `8 bytes`, `1 byte`.
+fn record_size(lang: Lang, length: u16) -> String {
+    match length {
+        1 => lang.t(w::ONE_BYTE).to_string(),
+        n => w::bytes_count(lang, n),
+    }
+}
+
+/// Bytes (and bits), name, type, default, range or choices.
+fn own_value_row(lang: Lang, v: &RecordValue) -> Vec<Cell> {
+    let last = v.offset + v.data_type.bytes() - 1;
+    let place = bytes(lang, v.offset, last);
+    let place = match v.data_type {
+        RecordValueType::Bits { first, last } if first == last => {
+            w::byte_bits(lang, &place, &w::bit(lang, first))
+        }
+        RecordValueType::Bits { first, last } => {
+            w::byte_bits(lang, &place, &w::bits(lang, first, last))
+        }
+        _ => place,
+    };
+    let choice_text = |value: i64| {
+        let item = v.choices.as_ref()?;
+        let (_, text) = item.assignments.iter().find(|(c, _)| *c == value)?;
+        Some(lang.text(&text.text))
+    };
+    let default = match choice_text(v.default.into()) {
+        Some(t) => format!("{}: {t}", v.default),
+        None => v.default.to_string(),
+    };
+    let default = match v.changeable {
+        true => default,
+        false => w::fixed_value(lang, &default),
+    };
+    let holds = match &v.choices {
+        Some(item) => item
+            .assignments
+            .iter()
+            .map(|(value, t)| format!("{value}: {}", lang.text(&t.text)))
+            .collect::<Vec<_>>()
+            .join(lang.t(w::LIST_SEPARATOR)),
+        None => w::range(lang, v.min, v.max),
+    };
+    vec![
+        text(place),
+        text(lang.text(&v.text.text)),
+        text(v.data_type.gsdml_name()),
+        text(default),
+        text(holds),
+    ]
 }
 
 /// Where each set's drive parameters are set, and what carries them: the
@@ -370,7 +462,7 @@ fn record_table(doc: &mut Builder, ir: &Ir, lang: Lang, record: &ParameterRecord
     }
     let name = lang.text(&record.name.text);
     doc.table(
-        w::record_caption(lang, record.index, name, record.length),
+        w::record_caption(lang, record.index, name, &record_size(lang, record.length)),
         &head,
         rows,
     );

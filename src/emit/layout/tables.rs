@@ -53,6 +53,7 @@ pub(crate) enum Elem {
     Bool,
     Byte,
     Word,
+    Long,
     /// A place in a list.
     Index,
     /// A record of the support type of this name.
@@ -469,8 +470,63 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ),
             ("pzd_out", pn_pzds(ir, p, MappingKind::PzdOut)),
             ("pzd_in", pn_pzds(ir, p, MappingKind::PzdIn)),
+            (
+                "access_point_records",
+                pn_submodule_records(&p.access_point_records),
+            ),
+            ("port_records", pn_submodule_records(&p.port_records)),
         ],
     )
+}
+
+fn pn_submodule_records(records: &[profinet::SubmoduleRecord]) -> Value {
+    let records = records.iter().map(|r| {
+        Value::Record(record(
+            "pn submodule record",
+            vec![
+                ("index", number(r.index)),
+                ("len", number(r.length)),
+                (
+                    "values",
+                    Value::List(
+                        Elem::Record("pn record value"),
+                        r.values.iter().map(pn_record_value).collect(),
+                    ),
+                ),
+            ],
+        ))
+    });
+    Value::List(Elem::Record("pn submodule record"), records.collect())
+}
+
+fn pn_record_value(v: &profinet::RecordValue) -> Value {
+    let (bytes, (first_bit, last_bit)) = match v.data_type {
+        profinet::RecordValueType::Bits { first, last } => (0, (first, last)),
+        whole => (whole.bytes(), (0, 7)),
+    };
+    let listed = v.choices.iter().flat_map(|c| &c.assignments);
+    Value::Record(record(
+        "pn record value",
+        vec![
+            ("name", text(&v.text.text.en)),
+            ("offset", number(v.offset)),
+            ("bytes", number(bytes)),
+            ("first_bit", number(first_bit)),
+            ("last_bit", number(last_bit)),
+            ("default_value", number(v.default)),
+            ("min", number(v.min)),
+            ("max", number(v.max)),
+            (
+                "values",
+                // Within 0..=u32::MAX: lowering checks each choice.
+                Value::List(
+                    Elem::Long,
+                    listed.map(|(value, _)| number(*value as u64)).collect(),
+                ),
+            ),
+            ("changeable", Value::Bool(v.changeable)),
+        ],
+    ))
 }
 
 /// The PZD words of `kind` a record entry maps, each with the record's

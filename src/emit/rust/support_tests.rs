@@ -137,7 +137,7 @@ fn length(expected: usize, found: usize) -> PrmError {
     PrmError::Length { expected, found }
 }
 
-fn not_allowed(offset: usize, value: u16) -> PrmError {
+fn not_allowed(offset: usize, value: u32) -> PrmError {
     PrmError::NotAllowed { offset, value }
 }
 
@@ -292,6 +292,81 @@ fn a_device_record_ends_with_its_fail_safe_values() {
         [0x047E, 100_000, 0xABCD],
         "nothing is written when refused"
     );
+}
+
+/// SEW MOVI-C's records of a port and of its access point: record 9001's
+/// two Unsigned32 thresholds, high byte first; record 8200's alarm bit
+/// (0 or 1) in bit 0, beside a bit area of bits 4 to 6 that holds 1 to 5
+/// and a byte nobody may change from its default 1.
+#[test]
+fn an_access_point_record_reads_whole_values_and_bits() {
+    use device::{PnRecordValue, PnSubmoduleRecord};
+    const THRESHOLDS: [PnRecordValue; 2] = [record_value(0, 4, (0, 7)), record_value(4, 4, (0, 7))];
+    let thresholds = PnSubmoduleRecord {
+        index: 9001,
+        len: 8,
+        values: &THRESHOLDS,
+    };
+    let mut out = [9; 2];
+    let bytes = [0, 0, 0, 10, 0x00, 0x01, 0x86, 0xA0];
+    assert_eq!(thresholds.decode(&bytes, &mut out), Ok(()));
+    assert_eq!(out, [10, 100_000]);
+    assert_eq!(thresholds.decode(&bytes[..7], &mut out), Err(length(8, 7)));
+    const ALARMS: [PnRecordValue; 3] = [
+        PnRecordValue {
+            max: 1,
+            values: &[0, 1],
+            ..record_value(0, 0, (0, 0))
+        },
+        PnRecordValue {
+            min: 1,
+            max: 5,
+            default_value: 2,
+            ..record_value(0, 0, (4, 6))
+        },
+        PnRecordValue {
+            default_value: 1,
+            changeable: false,
+            ..record_value(1, 1, (0, 7))
+        },
+    ];
+    let alarms = PnSubmoduleRecord {
+        index: 8200,
+        len: 2,
+        values: &ALARMS,
+    };
+    let mut out = [9; 3];
+    // Bit 0 set, bits 4 to 6 = 5, bit 7 and bits 1 to 3 no value's.
+    assert_eq!(alarms.decode(&[0b0101_0001, 1], &mut out), Ok(()));
+    assert_eq!(out, [1, 5, 1]);
+    assert_eq!(
+        alarms.decode(&[0b0110_0000, 1], &mut out),
+        Err(not_allowed(0, 6)),
+        "bits 4 to 6 hold 6, above 5"
+    );
+    assert_eq!(
+        alarms.decode(&[0b0001_0000, 2], &mut out),
+        Err(not_allowed(1, 2)),
+        "the fixed byte changed"
+    );
+    assert_eq!(out, [1, 5, 1], "nothing is written when refused");
+}
+
+/// A value of a record of the access point or a port: whole bytes, or
+/// bits of one byte when `bytes` is 0; any value, changeable.
+const fn record_value(offset: usize, bytes: usize, bits: (u8, u8)) -> device::PnRecordValue {
+    device::PnRecordValue {
+        name: "value",
+        offset,
+        bytes,
+        first_bit: bits.0,
+        last_bit: bits.1,
+        default_value: 0,
+        min: 0,
+        max: u32::MAX,
+        values: &[],
+        changeable: true,
+    }
 }
 
 mod md810 {

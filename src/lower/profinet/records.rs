@@ -468,11 +468,7 @@ pub fn value_items(mappings: &Mappings, modules: &[Module]) -> Vec<ValueItem> {
                     (c.value, text)
                 })
                 .collect();
-            Some(ValueItem {
-                id,
-                set: set.key,
-                assignments,
-            })
+            Some(ValueItem { id, assignments })
         })
         .collect()
 }

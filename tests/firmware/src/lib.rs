@@ -1,5 +1,6 @@
-//! The firmware layouts of the shipped descriptions (and of a PROFIdrive
-//! card, a test fixture), as firmware includes them: no_std, and any
+//! The firmware layouts of the shipped descriptions (and of two test
+//! fixtures: a PROFIdrive card, and one whose ident numbers and records are
+//! its own), as firmware includes them: no_std, and any
 //! warning an error.
 
 #![no_std]
@@ -26,4 +27,8 @@ pub mod md810_gateway {
 
 pub mod profidrive {
     include!(concat!(env!("OUT_DIR"), "/profidrive_layout.rs"));
+}
+
+pub mod own_idents {
+    include!(concat!(env!("OUT_DIR"), "/own_idents_layout.rs"));
 }

@@ -8,9 +8,12 @@ mod device_files;
 
 use device_files::{allowed_text, hex};
 use gsdc_firmware_check::gsdc_support::{
-    DpDevice, DpDiagnosis, DpParam, PnDevice, PnRecord, PrmDataType, PrmError, RecordReading,
+    DpDevice, DpDiagnosis, DpParam, PnDevice, PnRecord, PnSubmoduleRecord, PrmDataType, PrmError,
+    RecordReading,
 };
-use gsdc_firmware_check::{md810_gateway, md810dp, mv810_pnet02, powtran_9kdp1, profidrive};
+use gsdc_firmware_check::{
+    md810_gateway, md810dp, mv810_pnet02, own_idents, powtran_9kdp1, profidrive,
+};
 use std::path::PathBuf;
 
 const DP_DEVICES: [(&str, &DpDevice); 4] = [
@@ -20,10 +23,11 @@ const DP_DEVICES: [(&str, &DpDevice); 4] = [
     ("profidrive", &profidrive::DP_DEVICE),
 ];
 
-const PN_DEVICES: [(&str, &PnDevice); 3] = [
+const PN_DEVICES: [(&str, &PnDevice); 4] = [
     ("md810dp", &md810dp::PN_DEVICE),
     ("mv810-pnet02", &mv810_pnet02::PN_DEVICE),
     ("profidrive", &profidrive::PN_DEVICE),
+    ("own_idents", &own_idents::PN_DEVICE),
 ];
 
 /// The files the build script wrote whose name ends in `suffix`.
@@ -102,6 +106,27 @@ fn dp_diag_lines(d: &DpDiagnosis) -> Vec<String> {
         .collect()
 }
 
+/// A record of the access point or a port as `device_files` reads it from
+/// the GSDML.
+fn own_record_line(what: &str, r: &PnSubmoduleRecord) -> String {
+    let mut line = format!("{what} {} len {}", r.index, r.len);
+    for v in r.values {
+        let values: String = v.values.iter().map(|x| format!(" {x}")).collect();
+        line += &format!(
+            " | {} {} {}-{} default {} range {}..{} values{values} changeable {}",
+            v.offset,
+            v.bytes,
+            v.first_bit,
+            v.last_bit,
+            v.default_value,
+            v.min,
+            v.max,
+            u8::from(v.changeable)
+        );
+    }
+    line
+}
+
 fn pn_lines(d: &PnDevice) -> Vec<String> {
     let mut lines = vec![
         format!("vendor {} device {}", d.vendor_id, d.device_id),
@@ -132,6 +157,12 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             line += &format!(" {}", d.modules[m].ident);
         }
         lines.push(line);
+    }
+    for (what, records) in [
+        ("dap_record", d.access_point_records),
+        ("port_record", d.port_records),
+    ] {
+        lines.extend(records.iter().map(|r| own_record_line(what, r)));
     }
     for m in d.modules {
         let slots: Vec<String> = m.slots.iter().map(u16::to_string).collect();
@@ -301,7 +332,7 @@ fn user_prm_is_decoded_by_the_gsds_names_and_refused_where_the_gsd_refuses() {
                 put_raw(p, &mut refused, value);
                 let error = PrmError::NotAllowed {
                     offset: p.offset,
-                    value,
+                    value: value.into(),
                 };
                 assert_eq!(prm.check(&refused), Err(error), "{name} {}", p.name);
             }
@@ -421,7 +452,10 @@ fn a_record_is_refused_as_the_layouts_group_decoder_refuses_it() {
                     let mut refused = bytes.clone();
                     refused[offset..offset + entry.bytes]
                         .copy_from_slice(&value.to_be_bytes()[2 - entry.bytes..]);
-                    let error = PrmError::NotAllowed { offset, value };
+                    let error = PrmError::NotAllowed {
+                        offset,
+                        value: value.into(),
+                    };
                     assert_eq!(r.decode(&refused, &mut values), Err(error), "{name}");
                 }
             }

@@ -585,5 +585,7 @@ fn every_example_of_the_manuals_round_trips() {
     );
     // Without a PKW channel there is nothing an example could be read by.
     assert!(examples::EXAMPLES_9KDP1.is_empty());
+    // A fixture of no manual: no example to print.
+    assert!(examples::EXAMPLES_OWN_IDENTS.is_empty());
     assert!(examples::EXAMPLES_MD810_GATEWAY.is_empty());
 }

@@ -9,7 +9,8 @@ has no reader for them). For one module in one slot it:
 
 1. finds the device by its name of station (DCP Identify) and connects with
    the module the GSDML describes (ExpectedSubmodule block and IOCRs);
-2. writes every parameter record of the module's submodules, each record
+2. writes every parameter record of the device access point's own submodule
+   and its ports (slot 0), then of the module's submodules, each record
    alone, with values other than the GSDML's defaults where the record may be
    changed, and checks that the device decoded exactly those values through
    its layout (the device's own account, its JSON events file);
@@ -100,6 +101,9 @@ class Ref:
     allowed: list[tuple[int, int]]
     changeable: bool
     name: str
+    # A Bit's or BitArea's first bit and bits; 0 bits for whole bytes.
+    bit_offset: int = 0
+    bit_length: int = 0
 
 
 @dataclass
@@ -192,19 +196,44 @@ class Gsdml:
             offset += size
         return items
 
+    def own_submodules(self, dap: ET.Element) -> list[Submodule]:
+        """The submodules of slot 0 with parameter records: the DAP's own
+        (in its FixedInSubslots, else 1) and its ports."""
+        subs = []
+        for item in dap.findall("{*}VirtualSubmoduleList/{*}VirtualSubmoduleItem"):
+            fixed = item.get("FixedInSubslots")
+            subs.append(self._own_submodule(item, int(fixed.split()[0]) if fixed else 1))
+        for item in dap.findall("{*}SystemDefinedSubmoduleList/{*}PortSubmoduleItem"):
+            subs.append(self._own_submodule(item, int(item.get("SubslotNumber"))))
+        return [s for s in subs if s.records]
+
+    def _own_submodule(self, item, subslot: int) -> Submodule:
+        return Submodule(
+            subslot=subslot,
+            ident=int(item.get("SubmoduleIdentNumber"), 0),
+            api=0,
+            inputs=[],
+            outputs=[],
+            records=[self._record(r) for r in item.findall(".//{*}ParameterRecordDataItem")],
+        )
+
     def _record(self, item) -> RecordItem:
         name = item.find("{*}Name")
         refs = []
         for ref in item.findall("{*}Ref"):
-            if ref.get("BitOffset") is not None:
-                raise CannotRun("a record Ref with BitOffset: this program writes whole values only")
+            data_type = ref.get("DataType")
+            bit_length = {"Bit": 1, "BitArea": int(ref.get("BitLength", "1"))}.get(data_type, 0)
+            allowed = ref.get("AllowedValues")
             refs.append(Ref(
-                data_type=ref.get("DataType"),
+                data_type=data_type,
                 byte_offset=int(ref.get("ByteOffset")),
                 default=int(ref.get("DefaultValue", "0"), 0),
-                allowed=_ranges(ref.get("AllowedValues")),
+                # Without AllowedValues, every value of its type.
+                allowed=_ranges(allowed) if allowed else [(0, _type_max(data_type, bit_length))],
                 changeable=ref.get("Changeable", "true") == "true",
                 name=self.texts.get(ref.get("TextId"), ref.get("TextId")),
+                bit_offset=int(ref.get("BitOffset", "0")),
+                bit_length=bit_length,
             ))
         return RecordItem(
             index=int(item.get("Index"), 0),
@@ -212,6 +241,15 @@ class Gsdml:
             name=self.texts.get(name.get("TextId")) if name is not None else "",
             refs=refs,
         )
+
+
+def _type_max(data_type: str, bit_length: int) -> int:
+    """The most an unsigned value of the type holds."""
+    if bit_length:
+        return (1 << bit_length) - 1
+    if not data_type.startswith("Unsigned"):
+        raise CannotRun(f"a record Ref of {data_type} without AllowedValues: this program writes unsigned values only there")
+    return (1 << (8 * TYPE_SIZES[data_type])) - 1
 
 
 def _ranges(text: str | None) -> list[tuple[int, int]]:
@@ -254,19 +292,24 @@ def other_value(ref: Ref, ordinal: int) -> int:
     # A 32-bit value uses its high word too, so that a decoder that reads
     # two bytes of it shows.
     wide = value + 0x10000
-    if TYPE_SIZES[ref.data_type] == 4 and any(low <= wide <= high for low, high in ref.allowed):
+    if TYPE_SIZES.get(ref.data_type) == 4 and any(low <= wide <= high for low, high in ref.allowed):
         return wide
     return value
 
 
 def encode_record(record: RecordItem) -> tuple[bytes, list[int]]:
+    """The record's bytes and its values, in the GSDML's order of its Refs
+    (the order the layout decodes them in)."""
     data = bytearray(record.length)
     values = []
-    for ordinal, ref in enumerate(sorted(record.refs, key=lambda r: r.byte_offset)):
+    for ordinal, ref in enumerate(record.refs):
         value = other_value(ref, ordinal)
-        size = TYPE_SIZES[ref.data_type]
-        signed = ref.data_type.startswith("Integer")
-        data[ref.byte_offset:ref.byte_offset + size] = value.to_bytes(size, "big", signed=signed)
+        if ref.bit_length:
+            data[ref.byte_offset] |= value << ref.bit_offset
+        else:
+            size = TYPE_SIZES[ref.data_type]
+            signed = ref.data_type.startswith("Integer")
+            data[ref.byte_offset:ref.byte_offset + size] = value.to_bytes(size, "big", signed=signed)
         values.append(value)
     return bytes(data), values
 
@@ -404,7 +447,7 @@ def check_decoded(record, data, values, seen, slot, subslot) -> None:
     decoded = [e["value"] for e in entries]
     for ordinal, (want, got) in enumerate(zip(values, decoded)):
         if want != got:
-            ref = sorted(record.refs, key=lambda r: r.byte_offset)[ordinal]
+            ref = record.refs[ordinal]
             raise Failed(f"{where}, byte {ref.byte_offset} ({ref.name}): the layout decoded {got} "
                          f"as {entries[ordinal]['entry']!r}, the controller wrote {want}")
     if len(decoded) < len(values):
@@ -600,6 +643,7 @@ def run(args) -> None:
     apis = sorted({s.api for s in subs})
     cyclic = None
     try:
+        own = write_records(rpc, events, 0, gsdml.own_submodules(dap))
         written = write_records(rpc, events, args.slot, subs)
         input_cr, output_cr = build_iocr_configs(slots, result.input_frame_id, result.output_frame_id,
                                                  cycle[0], cycle[1], WATCHDOG_FACTOR)
@@ -622,7 +666,8 @@ def run(args) -> None:
             say(f"  API 0x{apis[-1]:X}: the device checked it against its layout before pnio saw the Connect"
                 f"{' and merged the IOCRs to one API for pnio' if merged else ''}; pnio itself cannot check an API")
         say(f"PASS {case(args)}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks"
-            + (f", {followed} 32-bit values read by the layout" if followed else ""))
+            + (f", {followed} 32-bit values read by the layout" if followed else "")
+            + (f", {len(own)} records of the access point and its ports decoded" if own else ""))
     finally:
         if cyclic is not None:
             cyclic.stop()

@@ -7,17 +7,17 @@ use pnio::rt::IoImage;
 use wire_firmware::card::Card;
 use wire_firmware::cyclic::{exchange, PzdTargets, Shape};
 use wire_firmware::drive::Drive;
-use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
+use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord, PnSubmoduleRecord};
 
 /// The entries of a record the controller wrote, each with its value.
 pub type Decoded = Vec<(&'static Mapping, u16)>;
 
-/// A record the controller wrote, as the layout decoded it: its entries,
-/// the fail-safe values it ends with, and the names of the entries whose
-/// values the drive refused.
+/// A record the controller wrote, as the layout decoded it: each value in
+/// record order with its name (a module's entries, then the fail-safe
+/// values it ends with; the values of a record of the access point or a
+/// port), and the names of the entries whose values the drive refused.
 pub struct Written {
-    pub entries: Decoded,
-    pub fail_safe: Vec<u32>,
+    pub values: Vec<(String, u32)>,
     pub refused: Vec<&'static str>,
 }
 
@@ -67,10 +67,11 @@ impl Application {
     }
 
     /// The record a Write carried, decoded by the layout (the plugged
-    /// module's record of that index, on its data submodule), or `None` when
-    /// the layout has no such record. Its values go to the drive parameters
-    /// its entries name, where the drive holds them; the names of those the
-    /// drive refuses are returned with the values.
+    /// module's record of that index, on its data submodule; in slot 0 the
+    /// card's own record of the access point or a port), or `None` when
+    /// the layout has no such record. A module's values go to the drive
+    /// parameters its entries name, where the drive holds them; the names
+    /// of those the drive refuses are returned with the values.
     pub fn write(
         &mut self,
         slot: u16,
@@ -78,6 +79,9 @@ impl Application {
         index: u16,
         bytes: &[u8],
     ) -> Option<Result<Written, String>> {
+        if slot == 0 {
+            return self.write_own(subslot, index, bytes);
+        }
         let (_, module) = self.plugged.iter().find(|(s, _)| *s == slot)?;
         let record = module
             .records
@@ -109,10 +113,45 @@ impl Application {
         {
             held.1 = decoded.clone();
         }
+        let named = decoded
+            .iter()
+            .map(|(e, v)| (e.name.to_string(), u32::from(*v)));
+        let fail_safe = fail_safe
+            .into_iter()
+            .enumerate()
+            .map(|(i, v)| (format!("fail-safe value {}", i + 1), v));
         Some(Ok(Written {
-            entries: decoded,
-            fail_safe,
+            values: named.chain(fail_safe).collect(),
             refused,
+        }))
+    }
+
+    /// A record of the access point's own submodule or of a port, decoded
+    /// by the layout's `access_point_records` or `port_records`. These are
+    /// the card's settings, not the drive's: the card keeps none of them.
+    fn write_own(&self, subslot: u16, index: u16, bytes: &[u8]) -> Option<Result<Written, String>> {
+        let pn = self.card.pn?;
+        let records: &[PnSubmoduleRecord] = if subslot == pn.dap_submodule.subslot {
+            pn.access_point_records
+        } else if pn
+            .ports
+            .iter()
+            .chain(pn.later_daps.iter().flat_map(|d| d.ports))
+            .any(|p| p.subslot == subslot)
+        {
+            pn.port_records
+        } else {
+            return None;
+        };
+        let record = records.iter().find(|r| r.index == index)?;
+        let mut values = vec![0; record.values.len()];
+        if let Err(e) = record.decode(bytes, &mut values) {
+            return Some(Err(format!("{e:?}")));
+        }
+        let names = record.values.iter().map(|v| v.name.to_string());
+        Some(Ok(Written {
+            values: names.zip(values).collect(),
+            refused: Vec::new(),
         }))
     }
 

@@ -76,7 +76,6 @@ impl Events {
     /// A written record, with what the layout's decoder made of it (or why it
     /// refused it, or that the layout has no record at that place), and the
     /// entries whose value the drive refused.
-    /// Its fail-safe values follow its entries, in record order.
     pub fn record(&self, record: &Record, decoded: Option<&Result<Written, String>>) {
         let bytes: String = record.data.iter().map(|b| format!("{b:02x}")).collect();
         let decoded = match decoded {
@@ -84,13 +83,9 @@ impl Events {
             Some(Ok(written)) => format!(
                 r#""layout":[{}],"drive_refused":[{}]"#,
                 written
-                    .entries
+                    .values
                     .iter()
-                    .map(|(entry, value)| (quote(entry.name), u32::from(*value)))
-                    .chain(written.fail_safe.iter().enumerate().map(|(i, value)| {
-                        (quote(&format!("fail-safe value {}", i + 1)), *value)
-                    }))
-                    .map(|(entry, value)| format!(r#"{{"entry":{entry},"value":{value}}}"#))
+                    .map(|(name, value)| format!(r#"{{"entry":{},"value":{value}}}"#, quote(name)))
                     .collect::<Vec<_>>()
                     .join(","),
                 written

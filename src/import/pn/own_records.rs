@@ -1,0 +1,239 @@
+//! `[[profinet.access_point_records]]` and `[[profinet.port_records]]`: the
+//! parameter records of a GSDML file's device access point's own submodule
+//! and of its ports (SEW's MOVI-C's record 8200, and 9000 to 9002 of each
+//! port). The description gives one list of each for every access point
+//! and every port: the records are imported where every imported access
+//! point, and every port, has the same; else, and each record the
+//! description cannot say (an index PROFINET keeps, a value of another
+//! type, a constant that is not 0), left out (W600) with why.
+
+use super::{fits, text};
+use crate::device::pn::{Dap, Record, Submodule, SubmoduleKind};
+use crate::device::{Allowed, Field, Value};
+use crate::import::toml_out::{list, TomlOut};
+use crate::import::Notes;
+
+/// A record as its description table says it: its keys, then each
+/// value's. Two records that say the same are the same to the description.
+#[derive(PartialEq)]
+struct Said {
+    keys: Vec<(&'static str, String)>,
+    values: Vec<Vec<(&'static str, String)>>,
+}
+
+/// The records the description gives the access points and the ports.
+pub(super) struct OwnRecords {
+    access_point: Vec<Said>,
+    ports: Vec<Said>,
+}
+
+impl OwnRecords {
+    pub fn write(&self, out: &mut TomlOut) {
+        for (table, records) in [
+            ("profinet.access_point_records", &self.access_point),
+            ("profinet.port_records", &self.ports),
+        ] {
+            for record in records {
+                out.array_item(table);
+                for (key, value) in &record.keys {
+                    out.key(key, value);
+                }
+                for value in &record.values {
+                    out.array_item(&format!("{table}.values"));
+                    for (key, v) in value {
+                        out.key(key, v);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The records of the access points' own submodules and of their ports,
+/// where all say the same.
+pub(super) fn own_records(daps: &[&Dap], notes: &mut Notes) -> OwnRecords {
+    let of_kind = |kind: SubmoduleKind| -> Vec<&Submodule> {
+        let submodules = daps.iter().flat_map(|dap| &dap.item.submodules);
+        submodules.filter(|s| s.kind == kind).collect()
+    };
+    // A device access point's own submodule is its one virtual submodule.
+    OwnRecords {
+        access_point: shared(
+            &of_kind(SubmoduleKind::Virtual),
+            "device access point",
+            notes,
+        ),
+        ports: shared(&of_kind(SubmoduleKind::Port), "port", notes),
+    }
+}
+
+/// The records each of `submodules` has, when each has the same records
+/// and the description can say them all; else none, each record of the
+/// first left out (W600).
+fn shared(submodules: &[&Submodule], whose: &str, notes: &mut Notes) -> Vec<Said> {
+    let Some(first) = submodules.first() else {
+        return Vec::new();
+    };
+    let said: Vec<Result<Said, &str>> = first.records.iter().map(said).collect();
+    let same = submodules[1..].iter().all(|s| {
+        s.records.len() == said.len()
+            && s.records
+                .iter()
+                .zip(&said)
+                .all(|(r, first)| match (self::said(r), first) {
+                    (Ok(r), Ok(first)) => r == *first,
+                    _ => false,
+                })
+    });
+    let mut imported = Vec::new();
+    for (record, said) in first.records.iter().zip(said) {
+        let subject = format!("record {} of the {whose}", record.index);
+        match (said, same) {
+            (Ok(said), true) => imported.push(said),
+            (Err(why), _) => notes.unsaid(&subject, &record.place, why),
+            (Ok(_), false) => notes.unsaid(
+                &subject,
+                &record.place,
+                &format!("not every {whose} has the same records, which the description gives each {whose} alike"),
+            ),
+        }
+    }
+    imported
+}
+
+/// The record as the description says it, or why it cannot.
+fn said(record: &Record) -> Result<Said, &'static str> {
+    if record.index > 0x7FFF {
+        return Err("its index is PROFINET's own (0x8000 and up), not a user-specific one");
+    }
+    if !record.attributes.iter().all(|a| fits(a, &[])) {
+        return Err("it has an attribute the description has no key for");
+    }
+    if record
+        .data
+        .consts
+        .iter()
+        .any(|c| c.bytes.iter().any(|&b| b != 0))
+    {
+        return Err("it has a constant other than 0, which the description's records do not hold");
+    }
+    let name = record
+        .name
+        .as_ref()
+        .filter(|n| !n.primary.is_empty())
+        .ok_or("it has no name")?;
+    let mut values = Vec::new();
+    let mut extent = 0;
+    for field in &record.data.fields {
+        let (keys, bytes) = value(field)?;
+        extent = extent.max(field.byte_offset + bytes);
+        values.push(keys);
+    }
+    if values.is_empty() || record.data.length != Some(extent) {
+        return Err("its Length is not as far as its values reach, which the description's records are long");
+    }
+    Ok(Said {
+        keys: vec![("index", record.index.to_string()), ("name", text(name))],
+        values,
+    })
+}
+
+/// A value's keys, and the bytes it reaches from its offset.
+fn value(field: &Field) -> Result<(Vec<(&'static str, String)>, u32), &'static str> {
+    let known = [
+        "DataType",
+        "ByteOffset",
+        "BitOffset",
+        "BitLength",
+        "TextId",
+        "DefaultValue",
+        "AllowedValues",
+        "ValueItemTarget",
+        "Changeable",
+        "Visible",
+    ];
+    if !field
+        .attributes
+        .iter()
+        .all(|a| known.contains(&&*a.name) || fits(a, &[]))
+    {
+        return Err("a value of it has an attribute the description has no key for");
+    }
+    let (kind, most, bytes) = match (&*field.data_type, field.bits) {
+        ("Bit", Some(b)) => (("bits", b.offset.to_string()), 1, 1),
+        ("BitArea", Some(b)) if b.length >= 1 && b.offset + b.length <= 8 => {
+            let last = b.offset + b.length - 1;
+            let most = (1 << b.length) - 1;
+            (("bits", format!("[{}, {last}]", b.offset)), most, 1)
+        }
+        ("Unsigned8", None) => (("type", "\"Unsigned8\"".into()), 0xFF, 1),
+        ("Unsigned16", None) => (("type", "\"Unsigned16\"".into()), 0xFFFF, 2),
+        ("Unsigned32", None) => (("type", "\"Unsigned32\"".into()), 0xFFFF_FFFF, 4),
+        _ => return Err("a value of it is not a Bit, a BitArea or an Unsigned8, 16 or 32, the description's record values"),
+    };
+    if field.name.primary.is_empty() {
+        return Err("a value of it has no name");
+    }
+    let Some(Value::Int(default)) = field.default else {
+        return Err("a value of it has no whole number for its default");
+    };
+    let mut keys = vec![
+        ("name", text(&field.name)),
+        ("offset", field.byte_offset.to_string()),
+        kind,
+        ("default", default.to_string()),
+    ];
+    keys.extend(holds(field, most)?);
+    if !field.changeable {
+        keys.push(("changeable", "false".into()));
+    }
+    if !field.visible {
+        keys.push(("visible", "false".into()));
+    }
+    Ok((keys, bytes))
+}
+
+/// What a value holds, as the description says it: its choices, whose
+/// values must be exactly those it allows; else its range, when less than
+/// its type's values.
+fn holds(field: &Field, most: i128) -> Result<Option<(&'static str, String)>, &'static str> {
+    let allowed = match &field.allowed {
+        Allowed::Any => vec![(0, most)],
+        Allowed::Ranges(ranges) => {
+            let ints = ranges.iter().map(|(low, high)| match (low, high) {
+                (Value::Int(low), Value::Int(high)) => Ok((*low, *high)),
+                _ => Err("a value of it allows values that are not whole numbers"),
+            });
+            ints.collect::<Result<Vec<_>, _>>()?
+        }
+    };
+    if field.choices.is_empty() {
+        return match allowed[..] {
+            [(0, high)] if high == most => Ok(None),
+            [(low, high)] if 0 <= low && low <= high && high <= most => {
+                Ok(Some(("range", format!("[{low}, {high}]"))))
+            }
+            _ => Err("a value of it allows more than one range of values without a text for each, which the description cannot say"),
+        };
+    }
+    let mut choices = Vec::new();
+    let mut values = Vec::new();
+    for choice in &field.choices {
+        let Value::Int(value) = choice.value else {
+            return Err("a choice of a value of it is not a whole number");
+        };
+        values.push(value);
+        choices.push(format!(
+            "{{ value = {value}, text = {} }}",
+            text(&choice.text)
+        ));
+    }
+    let allows = |v: i128| allowed.iter().any(|&(low, high)| (low..=high).contains(&v));
+    let count: i128 = allowed.iter().map(|(low, high)| high - low + 1).sum();
+    values.sort_unstable();
+    values.dedup();
+    if !values.iter().all(|&v| allows(v)) || i128::try_from(values.len()) != Ok(count) {
+        return Err("a value of it allows other values than its choices, which the description's choices are");
+    }
+    Ok(Some(("choices", list(choices))))
+}

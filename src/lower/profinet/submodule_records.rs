@@ -1,0 +1,185 @@
+//! `[[profinet.access_point_records]]` and `[[profinet.port_records]]`: the
+//! card's own parameter records of the device access point's submodule and
+//! of each port (SEW's MOVI-C: an alarm setting in record 8200 of the
+//! access point, port statistics in records 9000 to 9002 of each port).
+//! Their values are parameters as `[[profibus.parameters]]` are, with
+//! texts in every language and up to 32 bits.
+
+use crate::description as raw;
+use crate::diag::Diagnostic;
+use crate::ir::profinet::{RecordValue, RecordValueType, SubmoduleRecord, TextRef, ValueItem};
+use crate::lower::checks::Checker;
+use crate::lower::param_values::{self, Holds, Taken};
+use std::collections::BTreeSet;
+use toml::Spanned;
+
+/// Whose records: where the description gives them, and the tag of their
+/// GSDML IDs.
+#[derive(Clone, Copy)]
+pub enum Whose {
+    AccessPoint,
+    Port,
+}
+
+impl Whose {
+    fn key(self) -> &'static str {
+        match self {
+            Whose::AccessPoint => "profinet.access_point_records",
+            Whose::Port => "profinet.port_records",
+        }
+    }
+
+    fn tag(self) -> &'static str {
+        match self {
+            Whose::AccessPoint => "DAP_RECORD",
+            Whose::Port => "PORT_RECORD",
+        }
+    }
+}
+
+/// The most a user-specific record index is: PROFINET keeps 0x8000 and up
+/// for its own records (IEC 61158-6-10, the I&M records at 0xAFF0 among
+/// them).
+const LAST_USER_INDEX: u16 = 0x7FFF;
+
+/// The record's index, a user-specific one (E101).
+fn user_specific(cx: &mut Checker, index: &Spanned<u16>) -> Option<u16> {
+    let value = *index.get_ref();
+    if value <= LAST_USER_INDEX {
+        return Some(value);
+    }
+    cx.push(
+        Diagnostic::error("E101", format!("record index 0x{value:04X} is one of PROFINET's own"))
+            .at(index.span())
+            .label("not a user-specific index")
+            .help("a card's own records have user-specific indexes, 0 to 0x7FFF; PROFINET keeps 0x8000 and up for its own records (the I&M records at 0xAFF0 among them)"),
+    );
+    None
+}
+
+/// Each record: E101 for an index outside the user-specific ones, E105
+/// for one given twice, and its values checked.
+pub fn lower(
+    cx: &mut Checker,
+    given: &[Spanned<raw::SubmoduleRecord>],
+    whose: Whose,
+) -> Option<Vec<SubmoduleRecord>> {
+    let mut seen = BTreeSet::new();
+    let mut records = Vec::new();
+    for (place, record) in given.iter().enumerate() {
+        let at = format!("{}[{place}]", whose.key());
+        let record = record.get_ref();
+        let index = user_specific(cx, &record.index);
+        if let Some(index) = index.filter(|i| !seen.insert(*i)) {
+            cx.duplicate(format!("record {index}"), record.index.span());
+        }
+        records.extend(index.and_then(|index| one(cx, record, index, (whose, &at))));
+    }
+    (records.len() == given.len()).then_some(records)
+}
+
+fn one(
+    cx: &mut Checker,
+    record: &raw::SubmoduleRecord,
+    index: u16,
+    (whose, at): (Whose, &str),
+) -> Option<SubmoduleRecord> {
+    let id = format!("{}_{index}", whose.tag());
+    let name = TextRef::new(
+        format!("IDT_{id}"),
+        cx.text(&record.name, None, &format!("{at}.name")),
+    );
+    let given = record.values.get_ref();
+    if given.is_empty() {
+        cx.non_empty("", record.values.span(), "record's values");
+        return None;
+    }
+    let mut taken = Taken::default();
+    let mut values = Vec::new();
+    for (place, value) in given.iter().enumerate() {
+        let value_id = format!("{id}_VALUE_{}", place + 1);
+        let Some(lowered) = record_value(cx, value.get_ref(), &value_id) else {
+            continue;
+        };
+        let offset = usize::from(lowered.offset);
+        let masks = lowered.data_type.masks();
+        let span = value.get_ref().offset.span();
+        taken.take(cx, &lowered.text.text.en, (offset, &masks), span);
+        values.push(lowered);
+    }
+    let length = values
+        .iter()
+        .map(|v| v.offset + v.data_type.bytes())
+        .max()
+        .unwrap_or(0);
+    (values.len() == given.len()).then_some(SubmoduleRecord {
+        index,
+        name,
+        length,
+        values,
+    })
+}
+
+/// One value: its type or its bits (E175 for both), what it holds, its
+/// default; `id` the tag of its TextId (`IDT_<id>`), its ValueItem's ID
+/// and its choices' TextIds.
+fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<RecordValue> {
+    let text = cx.text(&v.name, None, "record value's name");
+    let name = text.en.clone();
+    let data_type = match (&v.data_type, &v.bits) {
+        (Some(t), Some(_)) => {
+            param_values::both_type_and_bits(cx, &name, t.span());
+            return None;
+        }
+        (_, Some(bits)) => {
+            let (first, last) = param_values::bits_of_a_byte(cx, bits)?;
+            RecordValueType::Bits { first, last }
+        }
+        (Some(t), None) => match t.get_ref() {
+            raw::RecordValueType::Unsigned8 => RecordValueType::Unsigned8,
+            raw::RecordValueType::Unsigned16 => RecordValueType::Unsigned16,
+            raw::RecordValueType::Unsigned32 => RecordValueType::Unsigned32,
+        },
+        (None, None) => RecordValueType::Unsigned16,
+    };
+    // Its bytes within a record of at most 65535, the most a Length holds
+    // here (the IR's, and the layouts', u16).
+    let last_offset = i64::from(u16::MAX - (data_type.bytes() - 1));
+    let offset: u16 = cx.spanned_in_range(&v.offset, 0, last_offset, "the value's offset")?;
+    let most = i64::from(data_type.max());
+    let choices = (v.range.as_ref(), v.choices.as_ref());
+    let holds = param_values::holds(cx, &name, choices, most, None)?;
+    let default = param_values::default(cx, &name, &v.default, (most, &holds))?;
+    // Each within 0..=most, a u32's values: checked by `holds` and `default`.
+    let (min, max, choices) = match holds {
+        Holds::Range(min, max) => (min as u32, max as u32, None),
+        Holds::Choices(set) => {
+            let values = set.choices.iter().map(|c| c.value);
+            let (min, max) = (values.clone().min()?, values.max()?);
+            let assignments = set
+                .choices
+                .into_iter()
+                .map(|c| {
+                    let text = TextRef::new(format!("IDT_{id}_CHOICE_{}", c.value), c.text);
+                    (c.value, text)
+                })
+                .collect();
+            let item = ValueItem {
+                id: format!("IDV_{id}"),
+                assignments,
+            };
+            (min as u32, max as u32, Some(item))
+        }
+    };
+    Some(RecordValue {
+        text: TextRef::new(format!("IDT_{id}"), text),
+        offset,
+        data_type,
+        default: default as u32,
+        min,
+        max,
+        choices,
+        changeable: v.changeable.as_ref().is_none_or(|c| *c.get_ref()),
+        visible: v.visible.as_ref().is_none_or(|c| *c.get_ref()),
+    })
+}
