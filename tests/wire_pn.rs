@@ -138,6 +138,30 @@ fn every_profinet_description_every_module() {
     );
     settings_of_a_byte_and_per_module_defaults(&text);
     fail_safe_values_after_the_settings(&text);
+    records_of_the_access_point_and_its_ports(&text);
+}
+
+/// own_idents.toml's records of the access point and its ports, as SEW's
+/// MOVI-C has them: the controller writes each to slot 0, the access
+/// point's to its subslot 1 and the ports' to every port (device access
+/// point 3 has two), each changeable value other than its default; the
+/// device's layout decodes every value at its bits and bytes: record 8200's
+/// bit 0 and bits 4 to 6 (0x11: 1 and 1), record 9001's two Unsigned32
+/// (the first with its high word set, 65547 = 0x0001_000B), record 9002's
+/// byte nobody may change, at its default 1.
+fn records_of_the_access_point_and_its_ports(text: &str) {
+    assert_lines(
+        text,
+        &[
+            "  record 8200 (Alarm settings) to slot 0 subslot 1: 11 = [1, 1]",
+            "    decoded by the layout: Diagnostic alarms = 1, Alarm delay = 1",
+            "  record 9001 (Maintenance required thresholds) to slot 0 subslot 32769: 00 01 00 0b 00 01 11 74 = [65547, 70004]",
+            "    decoded by the layout: Receive errors = 65547, Transmit errors = 70004",
+            "  record 9002 (Port statistics) to slot 0 subslot 32770: 01 = [1]",
+            "    decoded by the layout: Statistics version = 1",
+            "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed, 0 scenario checks, 5 records of the access point and its ports decoded",
+        ],
+    );
 }
 
 /// profidrive.toml's record 1 ends with a fail-safe value per output item
@@ -358,6 +382,33 @@ fn a_gsdml_that_moves_telegram_2s_speed_fails_and_says_what_the_layout_read() {
             "PASS IDM_STD_TEL_1",
             "FAIL IDM_STD_TEL_2: slot 1 subslot 2, byte 0 (NSOLL_B (speed setpoint B)): the layout read [0, 2258632704], the controller wrote 100000",
             "PROFINET profidrive: 7 passed, 1 failed",
+        ],
+    );
+}
+
+/// A GSDML that lets record 9001's second threshold of every port reach
+/// 200000, where the layout's stops at 100000: the controller writes
+/// 135540 there (70004 with its high word set, which the GSDML now allows),
+/// and the device's layout refuses the record, naming the value's byte.
+#[test]
+fn a_port_record_value_the_layout_does_not_allow_is_refused() {
+    if !can_run() {
+        return;
+    }
+    let description = "tests/fixtures/valid/own_idents.toml";
+    let dir = edited_gsdml(description, "port-record-range", |t| {
+        t.replace(
+            r#"AllowedValues="1..100000""#,
+            r#"AllowedValues="1..200000""#,
+        )
+    });
+    let (status, text) = exchange(&[description], Some(&dir));
+    assert_eq!(status, 1, "{text}");
+    assert_lines(
+        &text,
+        &[
+            "  record 9001 (Maintenance required thresholds) to slot 0 subslot 32769: 00 01 00 0b 00 02 11 74 = [65547, 135540]",
+            "FAIL IDM_STD_TEL_1: record 9001 of slot 0 subslot 32769: the layout's decoder refused it: NotAllowed { offset: 4, value: 135540 }",
         ],
     );
 }

@@ -61,16 +61,16 @@ impl Holds {
     }
 }
 
+/// A parameter's `range = [min, max]`, as the description gives it.
+pub(super) type GivenRange = Spanned<Exactly<Spanned<i64>, 2>>;
+
 /// A parameter's `range` or `choices` (E119 for both), each within `0..=most`
 /// (E101, E109 reversed); every value to `most` when it gives neither.
 /// Choice texts are at most `gsd_limit` characters when given.
 pub(super) fn holds(
     cx: &mut Checker,
     name: &str,
-    (range, choices): (
-        Option<&Spanned<Exactly<Spanned<i64>, 2>>>,
-        Option<&Spanned<Vec<Choice>>>,
-    ),
+    (range, choices): (Option<&GivenRange>, Option<&Spanned<Vec<Choice>>>),
     most: i64,
     gsd_limit: Option<usize>,
 ) -> Option<Holds> {

@@ -13,12 +13,15 @@ use crate::device::{Allowed, Field, Value};
 use crate::import::toml_out::{list, TomlOut};
 use crate::import::Notes;
 
+/// Keys of a description table, each with its value written already.
+type Keys = Vec<(&'static str, String)>;
+
 /// A record as its description table says it: its keys, then each
 /// value's. Two records that say the same are the same to the description.
 #[derive(PartialEq)]
 struct Said {
-    keys: Vec<(&'static str, String)>,
-    values: Vec<Vec<(&'static str, String)>>,
+    keys: Keys,
+    values: Vec<Keys>,
 }
 
 /// The records the description gives the access points and the ports.
@@ -139,7 +142,7 @@ fn said(record: &Record) -> Result<Said, &'static str> {
 }
 
 /// A value's keys, and the bytes it reaches from its offset.
-fn value(field: &Field) -> Result<(Vec<(&'static str, String)>, u32), &'static str> {
+fn value(field: &Field) -> Result<(Keys, u32), &'static str> {
     let known = [
         "DataType",
         "ByteOffset",
