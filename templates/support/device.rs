@@ -425,8 +425,9 @@ impl PnRecordValue {
             found: record.len(),
         })?;
         let number = bytes.iter().fold(0, |n, &b| n << 8 | u32::from(b));
+        let bits = self.last_bit - self.first_bit + 1;
         Ok(match self.bytes {
-            0 => (number >> self.first_bit) & ((1 << (self.last_bit - self.first_bit + 1)) - 1),
+            0 => (number >> self.first_bit) & ((1 << bits) - 1),
             _ => number,
         })
     }

@@ -144,7 +144,7 @@ fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<Reco
     };
     // Its bytes within a record of at most 65535, the most a Length holds
     // here (the IR's, and the layouts', u16).
-    let last_offset = i64::from(u16::MAX - (data_type.bytes() - 1));
+    let last_offset = i64::from(u16::MAX - data_type.bytes());
     let offset: u16 = cx.spanned_in_range(&v.offset, 0, last_offset, "the value's offset")?;
     let most = i64::from(data_type.max());
     let choices = (v.range.as_ref(), v.choices.as_ref());
