@@ -700,6 +700,8 @@ pub struct RecordValue {
     pub range: Option<Spanned<Exactly<Spanned<i64>, 2>>>,
     /// Or one of these, each with the text the engineering tool shows.
     pub choices: Option<Spanned<Vec<Choice>>>,
+    /// What the engineering tool shows as its help (its ValueItem's).
+    pub help: Option<Spanned<Text>>,
     /// False: the tool shows the value and lets nobody change it.
     pub changeable: Option<Spanned<bool>>,
     /// False: the tool does not show it.

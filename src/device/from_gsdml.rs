@@ -81,7 +81,8 @@ const ITEM_PARTS: &[&str] = &[
 struct Reader<'a> {
     lines: Lines,
     texts: HashMap<&'a str, Text>,
-    value_lists: HashMap<&'a str, Vec<Choice>>,
+    /// Each ValueItem's choices and help.
+    value_lists: HashMap<&'a str, (Vec<Choice>, Option<Text>)>,
     categories: HashMap<&'a str, &'a str>,
     graphics: HashMap<&'a str, &'a str>,
     /// Module, submodule and DAP IDs with their ident numbers.
@@ -180,7 +181,8 @@ impl<'a> Reader<'a> {
                         })
                     })
                     .collect();
-                self.value_lists.insert(id, choices);
+                let help = self.child_text(item, "Help");
+                self.value_lists.insert(id, (choices, help));
             }
         }
     }
@@ -535,6 +537,18 @@ impl<'a> Reader<'a> {
             true => Value::Str(text.to_string()),
             false => Value::parse(text),
         };
+        let value_item = node
+            .attribute("ValueItemTarget")
+            .and_then(|t| self.value_lists.get(t));
+        // Its ValueItem's help, a text the engineering tool shows with it.
+        let mut attributes = self.flatten(node, FIELD_ATTRIBUTES, &[]);
+        if let Some(help) = value_item.and_then(|(_, help)| help.clone()) {
+            attributes.push(Attribute {
+                name: self.intern(VALUE_ITEM_HELP),
+                value: AttributeValue::Text(help),
+                place: self.place(node),
+            });
+        }
         // Of a string, the numbers its tools read as lengths; kept as written.
         let allowed = node
             .attribute("AllowedValues")
@@ -550,14 +564,10 @@ impl<'a> Reader<'a> {
                 .unwrap_or_default(),
             default: node.attribute("DefaultValue").map(value),
             allowed,
-            choices: node
-                .attribute("ValueItemTarget")
-                .and_then(|t| self.value_lists.get(t))
-                .cloned()
-                .unwrap_or_default(),
+            choices: value_item.map(|(c, _)| c.clone()).unwrap_or_default(),
             changeable: node.attribute("Changeable") != Some("false"),
             visible: node.attribute("Visible") != Some("false"),
-            attributes: self.flatten(node, FIELD_ATTRIBUTES, &[]),
+            attributes,
             place: self.place(node),
             data_type,
         })
@@ -773,6 +783,10 @@ struct Walk<'w> {
 }
 
 /// The attributes of a `Ref` that [`Field`] holds.
+/// A record field's ValueItem's `Help`, among its attributes: a text, as a
+/// TextId is.
+pub const VALUE_ITEM_HELP: &str = "ValueItem/Help@TextId";
+
 const FIELD_ATTRIBUTES: &[&str] = &[
     "DataType",
     "ByteOffset",

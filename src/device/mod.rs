@@ -27,6 +27,7 @@ use std::sync::{Arc, OnceLock};
 
 pub use dp::DpDevice;
 pub use from_gsd::read as read_gsd;
+pub use from_gsdml::VALUE_ITEM_HELP;
 pub use pn::PnDevice;
 
 /// The device of a GSD or of a GSDML file.

@@ -740,9 +740,9 @@ fn record_value(doc: &mut Doc, value: &RecordValue) {
     doc.text(&value.text);
     let offset = value.offset.to_string();
     let default = value.default.to_string();
-    let allowed = match &value.choices {
-        Some(item) => runs(item.assignments.iter().map(|(v, _)| *v)),
-        None => vec![(value.min.into(), value.max.into())],
+    let allowed = match value.choices() {
+        [] => vec![(value.min.into(), value.max.into())],
+        choices => runs(choices.iter().map(|(v, _)| *v)),
     };
     let every_value = allowed == [(0, value.data_type.max().into())];
     let allowed = (!every_value).then(|| runs_text(&allowed));
@@ -762,12 +762,8 @@ fn record_value(doc: &mut Doc, value: &RecordValue) {
     attributes.extend(bit_length.as_deref().map(|b| ("BitLength", b)));
     attributes.push(("DefaultValue", default.as_str()));
     attributes.extend(allowed.as_deref().map(|a| ("AllowedValues", a)));
-    attributes.extend(
-        value
-            .choices
-            .as_ref()
-            .map(|c| ("ValueItemTarget", c.id.as_str())),
-    );
+    let item = value.value_item.as_ref();
+    attributes.extend(item.map(|c| ("ValueItemTarget", c.id.as_str())));
     attributes.extend([
         (
             "Changeable",
@@ -974,14 +970,15 @@ fn ext_channel_diag_list(doc: &mut Doc, extended: &[ExtendedDiagnosis]) {
 }
 
 /// One ValueItem per set of choices a module's record refers to, then one
-/// per record value of the access point and the ports with choices.
+/// per record value of the access point and the ports with choices or a
+/// help.
 fn value_list(doc: &mut Doc, p: &Profinet) {
     let records = p.access_point_records.iter().chain(&p.port_records);
     let values = records.flat_map(|r| &r.values);
     let items: Vec<&ValueItem> = p
         .value_items
         .iter()
-        .chain(values.filter_map(|v| v.choices.as_ref()))
+        .chain(values.filter_map(|v| v.value_item.as_ref()))
         .collect();
     if items.is_empty() {
         return;
@@ -989,15 +986,20 @@ fn value_list(doc: &mut Doc, p: &Profinet) {
     doc.open("ValueList", &[]);
     for item in items {
         doc.open("ValueItem", &[("ID", &item.id)]);
-        doc.open("Assignments", &[]);
-        for (value, text) in &item.assignments {
-            doc.text(text);
-            doc.leaf(
-                "Assign",
-                &[("Content", &value.to_string()), ("TextId", &text.id)],
-            );
+        if let Some(help) = &item.help {
+            doc.text_ref("Help", help);
         }
-        doc.close("Assignments");
+        if !item.assignments.is_empty() {
+            doc.open("Assignments", &[]);
+            for (value, text) in &item.assignments {
+                doc.text(text);
+                doc.leaf(
+                    "Assign",
+                    &[("Content", &value.to_string()), ("TextId", &text.id)],
+                );
+            }
+            doc.close("Assignments");
+        }
         doc.close("ValueItem");
     }
     doc.close("ValueList");

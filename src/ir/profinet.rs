@@ -202,6 +202,10 @@ impl Profinet {
         for record in self.access_point_records.iter().chain(&self.port_records) {
             refs.push(&record.name);
             refs.extend(record.values.iter().map(|v| &v.text));
+            let items = record.values.iter().filter_map(|v| v.value_item.as_ref());
+            refs.extend(
+                items.flat_map(|v| v.help.iter().chain(v.assignments.iter().map(|(_, t)| t))),
+            );
         }
         refs.extend(
             self.value_items
@@ -749,11 +753,12 @@ pub struct RecordRef {
 }
 
 /// The choices of a mapping's set or of a record value, with their
-/// TextIds.
+/// TextIds; a record value's help.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct ValueItem {
     pub id: String,
+    pub help: Option<TextRef>,
     pub assignments: Vec<(i64, TextRef)>,
 }
 
@@ -784,8 +789,9 @@ pub struct RecordValue {
     /// value when it has choices.
     pub min: u32,
     pub max: u32,
-    /// Its ValueItem, when it has choices: only their values are allowed.
-    pub choices: Option<ValueItem>,
+    /// Its ValueItem, when it has choices (only their values are allowed)
+    /// or a help.
+    pub value_item: Option<ValueItem>,
     pub changeable: bool,
     pub visible: bool,
 }
@@ -793,10 +799,16 @@ pub struct RecordValue {
 impl RecordValue {
     /// Whether it may hold `value`.
     pub fn allows(&self, value: u32) -> bool {
-        match &self.choices {
-            Some(item) => item.assignments.iter().any(|(v, _)| *v == i64::from(value)),
-            None => (self.min..=self.max).contains(&value),
+        match self.choices() {
+            [] => (self.min..=self.max).contains(&value),
+            choices => choices.iter().any(|(v, _)| *v == i64::from(value)),
         }
+    }
+
+    /// Its choices with their texts; none when any value of its range is
+    /// allowed.
+    pub fn choices(&self) -> &[(i64, TextRef)] {
+        self.value_item.as_ref().map_or(&[], |v| &v.assignments)
     }
 }
 

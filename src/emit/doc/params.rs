@@ -123,8 +123,7 @@ fn own_value_row(lang: Lang, v: &RecordValue) -> Vec<Cell> {
         _ => place,
     };
     let choice_text = |value: i64| {
-        let item = v.choices.as_ref()?;
-        let (_, text) = item.assignments.iter().find(|(c, _)| *c == value)?;
+        let (_, text) = v.choices().iter().find(|(c, _)| *c == value)?;
         Some(lang.text(&text.text))
     };
     let default = match choice_text(v.default.into()) {
@@ -135,14 +134,13 @@ fn own_value_row(lang: Lang, v: &RecordValue) -> Vec<Cell> {
         true => default,
         false => w::fixed_value(lang, &default),
     };
-    let holds = match &v.choices {
-        Some(item) => item
-            .assignments
+    let holds = match v.choices() {
+        [] => w::range(lang, v.min, v.max),
+        choices => choices
             .iter()
             .map(|(value, t)| format!("{value}: {}", lang.text(&t.text)))
             .collect::<Vec<_>>()
             .join(lang.t(w::LIST_SEPARATOR)),
-        None => w::range(lang, v.min, v.max),
     };
     vec![
         text(place),

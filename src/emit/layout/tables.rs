@@ -504,7 +504,7 @@ fn pn_record_value(v: &profinet::RecordValue) -> Value {
         profinet::RecordValueType::Bits { first, last } => (0, (first, last)),
         whole => (whole.bytes(), (0, 7)),
     };
-    let listed = v.choices.iter().flat_map(|c| &c.assignments);
+    let listed = v.choices().iter();
     Value::Record(record(
         "pn record value",
         vec![

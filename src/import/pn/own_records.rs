@@ -9,7 +9,7 @@
 
 use super::{fits, text};
 use crate::device::pn::{Dap, Record, Submodule, SubmoduleKind};
-use crate::device::{Allowed, Field, Value};
+use crate::device::{Allowed, AttributeValue, Field, Value, VALUE_ITEM_HELP};
 use crate::import::toml_out::{list, TomlOut};
 use crate::import::Notes;
 
@@ -154,6 +154,7 @@ fn value(field: &Field) -> Result<(Keys, u32), &'static str> {
         "ValueItemTarget",
         "Changeable",
         "Visible",
+        VALUE_ITEM_HELP,
     ];
     if !field
         .attributes
@@ -187,6 +188,16 @@ fn value(field: &Field) -> Result<(Keys, u32), &'static str> {
         ("default", default.to_string()),
     ];
     keys.extend(holds(field, most)?);
+    let help = field
+        .attributes
+        .iter()
+        .find(|a| &*a.name == VALUE_ITEM_HELP);
+    if let Some(help) = help {
+        let AttributeValue::Text(help) = &help.value else {
+            return Err("a value of it has a help that is not a text");
+        };
+        keys.push(("help", text(help)));
+    }
     if !field.changeable {
         keys.push(("changeable", "false".into()));
     }

@@ -468,7 +468,11 @@ pub fn value_items(mappings: &Mappings, modules: &[Module]) -> Vec<ValueItem> {
                     (c.value, text)
                 })
                 .collect();
-            Some(ValueItem { id, assignments })
+            Some(ValueItem {
+                id,
+                help: None,
+                assignments,
+            })
         })
         .collect()
 }

@@ -121,8 +121,8 @@ fn one(
 }
 
 /// One value: its type or its bits (E175 for both), what it holds, its
-/// default; `id` the tag of its TextId (`IDT_<id>`), its ValueItem's ID
-/// and its choices' TextIds.
+/// default, its help; `id` the tag of its TextId (`IDT_<id>`), its
+/// ValueItem's ID and its choices' and help's TextIds.
 fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<RecordValue> {
     let text = cx.text(&v.name, None, "record value's name");
     let name = text.en.clone();
@@ -151,8 +151,8 @@ fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<Reco
     let holds = param_values::holds(cx, &name, choices, most, None)?;
     let default = param_values::default(cx, &name, &v.default, (most, &holds))?;
     // Each within 0..=most, a u32's values: checked by `holds` and `default`.
-    let (min, max, choices) = match holds {
-        Holds::Range(min, max) => (min as u32, max as u32, None),
+    let (min, max, assignments) = match holds {
+        Holds::Range(min, max) => (min as u32, max as u32, Vec::new()),
         Holds::Choices(set) => {
             let values = set.choices.iter().map(|c| c.value);
             let (min, max) = (values.clone().min()?, values.max()?);
@@ -164,13 +164,18 @@ fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<Reco
                     (c.value, text)
                 })
                 .collect();
-            let item = ValueItem {
-                id: format!("IDV_{id}"),
-                assignments,
-            };
-            (min as u32, max as u32, Some(item))
+            (min as u32, max as u32, assignments)
         }
     };
+    let help = v.help.as_ref().map(|h| {
+        let text = cx.text_of_lines_allowed(h, "record value's help");
+        TextRef::new(format!("IDT_{id}_HELP"), text)
+    });
+    let value_item = (help.is_some() || !assignments.is_empty()).then(|| ValueItem {
+        id: format!("IDV_{id}"),
+        help,
+        assignments,
+    });
     Some(RecordValue {
         text: TextRef::new(format!("IDT_{id}"), text),
         offset,
@@ -178,7 +183,7 @@ fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<Reco
         default: default as u32,
         min,
         max,
-        choices,
+        value_item,
         changeable: v.changeable.as_ref().is_none_or(|c| *c.get_ref()),
         visible: v.visible.as_ref().is_none_or(|c| *c.get_ref()),
     })
