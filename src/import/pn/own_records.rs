@@ -12,6 +12,7 @@ use crate::device::pn::{Dap, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, AttributeValue, Field, Value, VALUE_ITEM_HELP};
 use crate::import::toml_out::{list, TomlOut};
 use crate::import::Notes;
+use std::collections::BTreeSet;
 
 /// Keys of a description table, each with its value written already.
 type Keys = Vec<(&'static str, String)>;
@@ -71,34 +72,45 @@ pub(super) fn own_records(daps: &[&Dap], notes: &mut Notes) -> OwnRecords {
 }
 
 /// The records each of `submodules` has, when each has the same records
-/// and the description can say them all; else none, each record of the
-/// first left out (W600).
+/// and the description can say them all; else none: each record the
+/// description cannot say left out (W600) with why, and where the
+/// submodules differ, every record of every one of them, each index once.
 fn shared(submodules: &[&Submodule], whose: &str, notes: &mut Notes) -> Vec<Said> {
     let Some(first) = submodules.first() else {
         return Vec::new();
     };
     let said: Vec<Result<Said, &str>> = first.records.iter().map(said).collect();
+    // Alike where the description says them alike; two it cannot say,
+    // where they have one index (each is left out below).
+    let alike =
+        |r: &Record, (first, said): (&Record, &Result<Said, &str>)| match (self::said(r), said) {
+            (Ok(r), Ok(said)) => r == *said,
+            (Err(_), Err(_)) => r.index == first.index,
+            _ => false,
+        };
     let same = submodules[1..].iter().all(|s| {
         s.records.len() == said.len()
             && s.records
                 .iter()
-                .zip(&said)
-                .all(|(r, first)| match (self::said(r), first) {
-                    (Ok(r), Ok(first)) => r == *first,
-                    _ => false,
-                })
+                .zip(first.records.iter().zip(&said))
+                .all(|(r, first)| alike(r, first))
     });
+    let subject = |record: &Record| format!("record {} of the {whose}", record.index);
+    if !same {
+        let why = format!("not every {whose} has the same records, which the description gives each {whose} alike");
+        let mut told = BTreeSet::new();
+        for record in submodules.iter().flat_map(|s| &s.records) {
+            if told.insert(record.index) {
+                notes.unsaid(&subject(record), &record.place, &why);
+            }
+        }
+        return Vec::new();
+    }
     let mut imported = Vec::new();
     for (record, said) in first.records.iter().zip(said) {
-        let subject = format!("record {} of the {whose}", record.index);
-        match (said, same) {
-            (Ok(said), true) => imported.push(said),
-            (Err(why), _) => notes.unsaid(&subject, &record.place, why),
-            (Ok(_), false) => notes.unsaid(
-                &subject,
-                &record.place,
-                &format!("not every {whose} has the same records, which the description gives each {whose} alike"),
-            ),
+        match said {
+            Ok(said) => imported.push(said),
+            Err(why) => notes.unsaid(&subject(record), &record.place, why),
         }
     }
     imported
