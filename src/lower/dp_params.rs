@@ -3,7 +3,7 @@
 //! them, and the fixed bytes under them.
 
 use super::checks::{Checker, GSD_NAME_LEN};
-use super::param_values::{self, Holds, Taken};
+use super::param_values::{self, Holds, Stored, Taken};
 use crate::description::dp as raw;
 use crate::ir::profibus::{CardParam, PrmParam, PrmType, PrmValue};
 use crate::ir::Allowed;
@@ -63,21 +63,12 @@ fn bit_mask(data_type: PrmType) -> Vec<u8> {
 
 fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam)> {
     let name = cx.gsd_name(&p.name, GSD_NAME_LEN, "parameter name");
-    let data_type = match (&p.data_type, &p.bits) {
-        (Some(t), Some(_)) => {
-            param_values::both_type_and_bits(cx, &name, t.span());
-            return None;
-        }
-        (_, Some(bits)) => {
-            let (first, last) = param_values::bits_of_a_byte(cx, bits)?;
-            PrmType::Bits { first, last }
-        }
-        (Some(t), None) => match t.get_ref() {
-            raw::PrmType::Unsigned8 => PrmType::Unsigned8,
-            raw::PrmType::Unsigned16 => PrmType::Unsigned16,
-            raw::PrmType::Signed8 => PrmType::Signed8,
-        },
-        (None, None) => PrmType::Unsigned16,
+    let given = (p.data_type.as_ref(), p.bits.as_ref());
+    let data_type = match param_values::stored(cx, &name, given)? {
+        Stored::Bits { first, last } => PrmType::Bits { first, last },
+        Stored::Type(raw::PrmType::Unsigned8) => PrmType::Unsigned8,
+        Stored::Type(raw::PrmType::Signed8) => PrmType::Signed8,
+        Stored::Type(raw::PrmType::Unsigned16) | Stored::Unsaid => PrmType::Unsigned16,
     };
     let most = i64::from(data_type.max());
     let choices = (p.range.as_ref(), p.choices.as_ref());

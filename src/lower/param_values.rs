@@ -11,18 +11,44 @@ use crate::ir::{Ident, ValueSet};
 use std::ops::Range;
 use toml::Spanned;
 
-/// E175: a parameter given both a type and bits.
-pub(super) fn both_type_and_bits(cx: &mut Checker, name: &str, type_span: Range<usize>) {
-    cx.push(
-        Diagnostic::error("E175", format!("parameter \"{name}\" has both `type` and `bits`"))
-            .at(type_span)
-            .label("remove this or `bits`")
-            .help("`bits` stores the parameter in some bits of one byte (a Bit or BitArea); `type` in whole bytes"),
-    );
+/// How a parameter is stored, as the description says it.
+pub(super) enum Stored<T> {
+    /// Whole bytes, of its `type`.
+    Type(T),
+    /// Bits `first` to `last` of one byte.
+    Bits { first: u8, last: u8 },
+    /// Neither: the format's default type.
+    Unsaid,
+}
+
+/// A parameter's `type` or `bits`, not both (E175), its bits those of one
+/// byte (E101).
+pub(super) fn stored<T: Copy>(
+    cx: &mut Checker,
+    name: &str,
+    (data_type, bits): (Option<&Spanned<T>>, Option<&Spanned<BitRange>>),
+) -> Option<Stored<T>> {
+    match (data_type, bits) {
+        (Some(t), Some(_)) => {
+            cx.push(
+                Diagnostic::error("E175", format!("parameter \"{name}\" has both `type` and `bits`"))
+                    .at(t.span())
+                    .label("remove this or `bits`")
+                    .help("`bits` stores the parameter in some bits of one byte (a Bit or BitArea); `type` in whole bytes"),
+            );
+            None
+        }
+        (_, Some(bits)) => {
+            let (first, last) = bits_of_a_byte(cx, bits)?;
+            Some(Stored::Bits { first, last })
+        }
+        (Some(t), None) => Some(Stored::Type(*t.get_ref())),
+        (None, None) => Some(Stored::Unsaid),
+    }
 }
 
 /// The first and last bit of `bits`, bits of one byte (E101).
-pub(super) fn bits_of_a_byte(cx: &mut Checker, bits: &Spanned<BitRange>) -> Option<(u8, u8)> {
+fn bits_of_a_byte(cx: &mut Checker, bits: &Spanned<BitRange>) -> Option<(u8, u8)> {
     let range = bits.get_ref();
     if !(0..=7).contains(&range.first) || !(range.first..=7).contains(&range.last) {
         cx.push(

@@ -155,23 +155,12 @@ fn said(record: &Record) -> Result<Said, &'static str> {
 
 /// A value's keys, and the bytes it reaches from its offset.
 fn value(field: &Field) -> Result<(Keys, u32), &'static str> {
-    let known = [
-        "DataType",
-        "ByteOffset",
-        "BitOffset",
-        "BitLength",
-        "TextId",
-        "DefaultValue",
-        "AllowedValues",
-        "ValueItemTarget",
-        "Changeable",
-        "Visible",
-        VALUE_ITEM_HELP,
-    ];
+    // Its attributes the description has keys for are the Field's own;
+    // its ValueItem's help is its `help`.
     if !field
         .attributes
         .iter()
-        .all(|a| known.contains(&&*a.name) || fits(a, &[]))
+        .all(|a| &*a.name == VALUE_ITEM_HELP || fits(a, &[]))
     {
         return Err("a value of it has an attribute the description has no key for");
     }

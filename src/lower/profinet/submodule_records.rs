@@ -9,7 +9,7 @@ use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{RecordValue, RecordValueType, SubmoduleRecord, TextRef, ValueItem};
 use crate::lower::checks::Checker;
-use crate::lower::param_values::{self, Holds, Taken};
+use crate::lower::param_values::{self, Holds, Stored, Taken};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
@@ -126,21 +126,14 @@ fn one(
 fn record_value(cx: &mut Checker, v: &raw::RecordValue, id: &str) -> Option<RecordValue> {
     let text = cx.text(&v.name, None, "record value's name");
     let name = text.en.clone();
-    let data_type = match (&v.data_type, &v.bits) {
-        (Some(t), Some(_)) => {
-            param_values::both_type_and_bits(cx, &name, t.span());
-            return None;
+    let given = (v.data_type.as_ref(), v.bits.as_ref());
+    let data_type = match param_values::stored(cx, &name, given)? {
+        Stored::Bits { first, last } => RecordValueType::Bits { first, last },
+        Stored::Type(raw::RecordValueType::Unsigned8) => RecordValueType::Unsigned8,
+        Stored::Type(raw::RecordValueType::Unsigned32) => RecordValueType::Unsigned32,
+        Stored::Type(raw::RecordValueType::Unsigned16) | Stored::Unsaid => {
+            RecordValueType::Unsigned16
         }
-        (_, Some(bits)) => {
-            let (first, last) = param_values::bits_of_a_byte(cx, bits)?;
-            RecordValueType::Bits { first, last }
-        }
-        (Some(t), None) => match t.get_ref() {
-            raw::RecordValueType::Unsigned8 => RecordValueType::Unsigned8,
-            raw::RecordValueType::Unsigned16 => RecordValueType::Unsigned16,
-            raw::RecordValueType::Unsigned32 => RecordValueType::Unsigned32,
-        },
-        (None, None) => RecordValueType::Unsigned16,
     };
     // Its bytes within a record of at most 65535, the most a Length holds
     // here (the IR's, and the layouts', u16).
