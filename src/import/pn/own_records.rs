@@ -71,10 +71,10 @@ pub(super) fn own_records(daps: &[&Dap], notes: &mut Notes) -> OwnRecords {
     }
 }
 
-/// The records each of `submodules` has, when each has the same records
-/// and the description can say them all; else none: each record the
-/// description cannot say left out (W600) with why, and where the
-/// submodules differ, every record of every one of them, each index once.
+/// The records each of `submodules` has, when each has the same ones:
+/// those the description can say, each other left out (W600) with why.
+/// Where the submodules differ, none: every record of every one of them
+/// left out, each index once.
 fn shared(submodules: &[&Submodule], whose: &str, notes: &mut Notes) -> Vec<Said> {
     let Some(first) = submodules.first() else {
         return Vec::new();
@@ -144,7 +144,10 @@ fn said(record: &Record) -> Result<Said, &'static str> {
         extent = extent.max(field.byte_offset + bytes);
         values.push(keys);
     }
-    if values.is_empty() || record.data.length != Some(extent) {
+    if values.is_empty() {
+        return Err("it has no value, which a description's record has");
+    }
+    if record.data.length != Some(extent) {
         return Err("its Length is not as far as its values reach, which the description's records are long");
     }
     Ok(Said {
