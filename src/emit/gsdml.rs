@@ -440,9 +440,9 @@ fn stated_port_attributes(stack: &Stack) -> Vec<(&'static str, &'static str)> {
     attributes
 }
 
-/// The DAP's own submodule: no IO data, the card's records of it. A device that lets
-/// the controller write no I&M record has no Writeable_IM_Records (an
-/// empty list is not a value of it).
+/// The DAP's own submodule: no IO data, and the card's own records of it.
+/// A device that lets the controller write no I&M record has no
+/// Writeable_IM_Records (an empty list is not a value of it).
 fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.open("VirtualSubmoduleList", &[]);
     let ident = hex32(dap.submodule_ident);
