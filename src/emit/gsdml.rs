@@ -630,15 +630,20 @@ fn borrowed<'a>(attributes: &'a [(&'a str, String)]) -> Vec<(&'a str, &'a str)> 
         .collect()
 }
 
-fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
+/// A `ParameterRecordDataItem`'s start and its name; its Refs follow.
+fn open_record(doc: &mut Doc, index: u16, length: u16, name: &TextRef) {
     doc.open(
         "ParameterRecordDataItem",
         &[
-            ("Index", &record.index.to_string()),
-            ("Length", &record.length.to_string()),
+            ("Index", &index.to_string()),
+            ("Length", &length.to_string()),
         ],
     );
-    doc.text_ref("Name", &record.name);
+    doc.text_ref("Name", name);
+}
+
+fn parameter_record(doc: &mut Doc, ir: &Ir, record: &ParameterRecord) {
+    open_record(doc, record.index, record.length, &record.name);
     for r in &record.refs {
         let (set, _) = ir.mappings.entry(r.entry);
         doc.text(&r.text);
@@ -718,14 +723,7 @@ fn submodule_records(doc: &mut Doc, records: &[SubmoduleRecord]) {
     }
     doc.open("RecordDataList", &[]);
     for record in records {
-        doc.open(
-            "ParameterRecordDataItem",
-            &[
-                ("Index", &record.index.to_string()),
-                ("Length", &record.length.to_string()),
-            ],
-        );
-        doc.text_ref("Name", &record.name);
+        open_record(doc, record.index, record.length, &record.name);
         for value in &record.values {
             record_value(doc, value);
         }

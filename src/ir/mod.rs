@@ -29,6 +29,12 @@ pub use profibus::Profibus;
 pub use profinet::Profinet;
 pub use telegram::{BitField, Choice, Direction, Layout, PkwKind, Telegram, ValueSet, Word};
 
+/// Bits `first` to `last` (within 0..=7) of a byte, as a mask: a GSD
+/// parameter's or a GSDML record value's `Bit` or `BitArea`.
+pub fn bits_of_byte(first: u8, last: u8) -> u8 {
+    (0xFF >> (7 - last)) & (0xFF << first)
+}
+
 use crate::i18n::{self, Phrase};
 
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -861,7 +861,7 @@ impl RecordValueType {
     /// The bits it takes of each of its bytes, from its offset.
     pub fn masks(self) -> Vec<u8> {
         match self {
-            Self::Bits { first, last } => vec![(0xFF >> (7 - last)) & (0xFF << first)],
+            Self::Bits { first, last } => vec![super::bits_of_byte(first, last)],
             whole => vec![0xFF; usize::from(whole.bytes())],
         }
     }

@@ -57,7 +57,7 @@ fn bit_mask(data_type: PrmType) -> Vec<u8> {
     match data_type {
         PrmType::Unsigned8 | PrmType::Signed8 => vec![0xFF],
         PrmType::Unsigned16 => vec![0xFF, 0xFF],
-        PrmType::Bits { first, last } => vec![(0xFF >> (7 - last)) & (0xFF << first)],
+        PrmType::Bits { first, last } => vec![crate::ir::bits_of_byte(first, last)],
     }
 }
 
