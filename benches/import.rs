@@ -6,7 +6,7 @@
 //! - the largest corpus file, SEW's MOVI-C GSDML (1.1 MB): its import builds
 //!   another device (E601, README's table), so `gsdc import` writes nothing
 //!   and exits 1 after the same work, and the build measured is of the
-//!   description it made ([`gsdc::import::Imported::another_device`]),
+//!   description it made ([`gsdc::import::Imported::draft`]),
 //!   whose GSDML file is 982 kB: the import reads the whole file, the
 //!   build writes the part the format can say;
 //! - the largest GSDML file whose import is written (its round trip clean)
@@ -142,7 +142,7 @@ fn largest(files: Vec<PathBuf>, counted: Import) -> (PathBuf, Vec<u8>, String) {
             let name = path.file_name()?.to_string_lossy().into_owned();
             let imported = gsdc::import::import(&name, &bytes);
             let description = match counted {
-                Import::Builds => imported.description.or(imported.another_device),
+                Import::Builds => imported.description.or(imported.draft),
                 Import::Written => imported.description,
             }?;
             Some((path, bytes, description))

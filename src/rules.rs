@@ -239,5 +239,6 @@ pub const RULES: &[Rule] = &[
     rule("E602", "a file gsdc cannot import"),
     rule("E603", "a GSD and a GSDML file that disagree"),
     rule("W603", "the imported device symbol builds another bitmap"),
+    rule("W604", "a draft import, whose build is another device"),
     rule("E900", "generated file breaks a rule"),
 ];

@@ -832,7 +832,7 @@ fn outcome(imported: &Imported) -> String {
         );
     }
     let r = imported.round_trip;
-    if imported.another_device.is_some() && r.breaking + r.compatible > MANY_CHANGES {
+    if imported.draft.is_some() && r.breaking + r.compatible > MANY_CHANGES {
         let constructs = changed_constructs(&messages(imported, "E601"));
         let mut cell = format!(
             "E601 {} breaking and {} compatible changes in {constructs}",
@@ -960,11 +960,11 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
             "{}: written exactly when the round trip is clean",
             row.file
         );
-        assert!(imported.description.is_none() || imported.another_device.is_none());
+        assert!(imported.description.is_none() || imported.draft.is_none());
         // The round trip writes only the GSD or GSDML file: the whole
         // build, layouts and the check of every file, must pass too, also
         // of a description whose build is another device.
-        for toml in imported.description.iter().chain(&imported.another_device) {
+        for toml in imported.description.iter().chain(&imported.draft) {
             let (ir, diagnostics) = descriptions::load_text("imported.toml", toml);
             let ir = ir.unwrap_or_else(|| panic!("{}: {diagnostics:#?}", row.file));
             gsdc::compile(&ir).unwrap_or_else(|e| panic!("{}: {e:#?}", row.file));
@@ -974,7 +974,7 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
     // family with `-`, conformance class C imported as B).
     for file in ["-ABB-FENA-", "-SEW-MOVI-C-"] {
         let row = gsdml.iter().find(|r| r.file.contains(file)).unwrap();
-        assert!(row.imported.another_device.is_some(), "{}", row.file);
+        assert!(row.imported.draft.is_some(), "{}", row.file);
     }
     // A GSDML file not imported says why: refused at its device access
     // point (E602, no module the format can say), or its import does not
@@ -1202,7 +1202,7 @@ fn fenas_three_device_access_points_import() {
 #[test]
 fn fenas_standard_telegram_2_imports_as_the_profiles() {
     let imported = corpus_import(FENA);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     assert_says(
         toml,
         &["standard_telegram_2 = true", "telegram2 = 0x00000012"],
@@ -1315,7 +1315,7 @@ fn assert_imported_and_kept(files: &[(&str, &str)], kept: impl Fn(&str) -> bool)
         .iter()
         .map(|&(name, says)| {
             let imported = corpus_import(name);
-            assert_says(another_device(&imported), &[says]);
+            assert_says(draft(&imported), &[says]);
             let changed: Vec<String> = round_trip_changes(name, &imported)
                 .into_iter()
                 .filter(|c| kept(c))
@@ -1331,11 +1331,7 @@ fn assert_imported_and_kept(files: &[(&str, &str)], kept: impl Fn(&str) -> bool)
 /// made, whose round trip was not clean: cosmetic changes too, which are
 /// never E601.
 fn round_trip_changes(name: &str, imported: &Imported) -> Vec<String> {
-    let (_, gsdml) = built(
-        "imported.toml",
-        another_device(imported),
-        ArtifactKind::Gsdml,
-    );
+    let (_, gsdml) = built("imported.toml", draft(imported), ArtifactKind::Gsdml);
     let old =
         gsdc::device::read(&support::corpus_file(&format!("gsdml/{name}")), Some(name)).unwrap();
     let new = gsdc::device::read(gsdml.as_bytes(), Some(name)).unwrap();
@@ -1367,10 +1363,10 @@ fn built(name: &str, text: &str, kind: ArtifactKind) -> (String, String) {
     descriptions::one(gsdc::compile(&ir).unwrap(), kind)
 }
 
-/// The description an import made whose round trip is not clean.
-fn another_device(imported: &Imported) -> &str {
+/// The draft of an import whose round trip is not clean.
+fn draft(imported: &Imported) -> &str {
     imported
-        .another_device
+        .draft
         .as_deref()
         .expect("the import builds another device")
 }
@@ -1481,7 +1477,7 @@ fn an_attribute_at_its_schema_default_or_spelt_otherwise_is_not_left_out() {
 #[test]
 fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
     let imported = corpus_import(MOVI_C);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     let (ir, _) = descriptions::load_text("movi-c.toml", toml);
     let ir = ir.expect("builds");
     for (path, value, why) in [
@@ -1525,7 +1521,7 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
 fn movi_cs_stack_attributes_import() {
     let imported = corpus_import(MOVI_C);
     assert_says(
-        another_device(&imported),
+        draft(&imported),
         &[
             "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
             "gsdml_version = \"2.32\"\nrequired_schema_version = \"2.32\"\n",
@@ -1573,7 +1569,7 @@ fn movi_cs_stack_attributes_import() {
 fn isochronous_real_time_and_mode_import_with_the_files_values() {
     let imported = corpus_import(MOVI_C);
     assert_says(
-        another_device(&imported),
+        draft(&imported),
         &[
             "conformance_class = \"C\"",
             "[profinet.irt]\nmax_bridge_delay = 5500\nmax_number_ir_frame_data = 256\nforwarding_mode = [\"Relative\"]\nstartup_mode = [\"Advanced\", \"Legacy\"]\nsend_clock = [32, 64, 128]\nreduction_ratio = [1, 2, 4, 8, 16]\npreferred_send_clock = 32\nmax_local_jitter = 50\nt_pll_max = 1000\nport_tx_delay = 92\nport_rx_delay = 340\n",
@@ -1611,7 +1607,7 @@ fn class_c_without_its_rt_class_3_properties_is_imported_as_b_saying_why() {
     let properties = "<RT_Class3Properties ForwardingMode=\"Relative\" MaxBridgeDelay=\"5500\" MaxNumberIR_FrameData=\"256\" StartupMode=\"Advanced;Legacy\"/>";
     assert_eq!(text.matches(properties).count(), 3, "one per DAP");
     let imported = import(MOVI_C, text.replace(properties, "").as_bytes());
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     assert!(
         !toml.contains("\n[profinet.irt]\n") && !toml.contains("\n[profinet.isochronous]\n"),
         "{toml}"
@@ -1668,7 +1664,7 @@ fn a_file_names_vendor_and_family_are_split_as_the_file_names_them() {
         let toml = imported
             .description
             .as_deref()
-            .or(imported.another_device.as_deref())
+            .or(imported.draft.as_deref())
             .unwrap_or_else(|| panic!("{name}: {:#?}", imported.diagnostics));
         assert!(
             toml.contains(&format!("file_vendor = \"{vendor}\"")),
@@ -1692,7 +1688,7 @@ fn a_gsd_file_name_that_is_not_8_3_is_marked_with_why() {
     let toml = imported
         .description
         .as_deref()
-        .or(imported.another_device.as_deref())
+        .or(imported.draft.as_deref())
         .expect("its import builds");
     let mark = toml
         .lines()
@@ -1747,7 +1743,7 @@ fn a_release_only_the_gsd_has_is_said_when_both_are_imported() {
 #[test]
 fn fenas_stack_imports_per_device_access_point() {
     let imported = corpus_import(FENA);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     assert_says(
         toml,
         &[
@@ -1885,7 +1881,7 @@ fn a_device_access_points_stack_imports_as_what_it_changes_or_is_left_out_at_its
 #[test]
 fn channel_diagnosis_imports_with_its_texts() {
     let imported = corpus_import(FENA);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     assert_eq!(toml.matches("[[profinet.channel_diagnosis]]").count(), 28);
     assert_says(
         toml,
@@ -1901,7 +1897,7 @@ fn channel_diagnosis_imports_with_its_texts() {
     assert!(diagnosis_changes.is_empty(), "{diagnosis_changes:#?}");
 
     let imported = corpus_import(MOVI_C);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     assert_eq!(toml.matches("[[profinet.channel_diagnosis]]\n").count(), 70);
     assert_eq!(
         toml.matches("[[profinet.channel_diagnosis.extended]]\n")
@@ -2036,7 +2032,7 @@ fn a_later_access_points_max_data_length_is_the_firsts_or_it_is_left_out() {
 fn fenas_byte_settings_with_per_module_defaults_round_trip() {
     let imported = corpus_import(FENA);
     assert_says(
-        another_device(&imported),
+        draft(&imported),
         &[
             "name = \"Stop Mode Action selection\"\ntype = \"Integer8\"\ndefault = 1\n",
             "per_module = { user_defined = 1, standard_telegram_1 = 0, standard_telegram_2 = 0, changeable = true }",
@@ -2061,7 +2057,7 @@ fn fenas_byte_settings_with_per_module_defaults_round_trip() {
 #[test]
 fn fenas_fail_safe_values_round_trip() {
     let imported = corpus_import(FENA);
-    let toml = another_device(&imported);
+    let toml = draft(&imported);
     let pzd: Vec<String> = ["Control Word", "Reference"]
         .map(|n| format!("\"Fail safe {n}\""))
         .into_iter()
@@ -2233,7 +2229,7 @@ fn labels_only_some_access_points_give_are_left_out() {
     let toml = imported
         .description
         .as_deref()
-        .or(imported.another_device.as_deref())
+        .or(imported.draft.as_deref())
         .unwrap();
     assert!(!toml.contains("subslot_labels"), "{toml}");
 }
@@ -2252,7 +2248,7 @@ fn modules_repeating_the_cards_releases_import() {
         )],
         |change| change.contains("Release"),
     );
-    assert_says(another_device(&imported[0]), &["module_releases = true\n"]);
+    assert_says(draft(&imported[0]), &["module_releases = true\n"]);
     assert!(!messages(&imported[0], "W600")
         .iter()
         .any(|m| m.contains("Release")));
@@ -2275,7 +2271,7 @@ fn modules_own_names_and_info_texts_import() {
         },
     );
     assert_says(
-        another_device(&imported[0]),
+        draft(&imported[0]),
         &["[profinet.module_texts.telegram1]\nname = \"Standard Telegram 1\"\ninfo = \"Standard Telegram 1\"\nsubmodule_info = \"Control/Reference and Status/Actual values\"\n"],
     );
     assert!(!messages(&imported[0], "W600")
@@ -2366,7 +2362,7 @@ fn the_profile_words_names_import() {
         left_out.iter().any(|m| m.starts_with("the name of STW1 ")),
         "{left_out:#?}"
     );
-    let description = another_device(&imported);
+    let description = draft(&imported);
     assert!(!description.contains("\nSTW1 = "), "{description}");
     assert_says(description, &["NSOLL_A = \"Output\"\n"]);
 }
@@ -2409,7 +2405,7 @@ fn the_ports_names_import() {
     let description = imported
         .description
         .as_deref()
-        .unwrap_or_else(|| another_device(&imported));
+        .unwrap_or_else(|| draft(&imported));
     assert!(!description.contains("port_names"), "{description}");
 }
 
@@ -2466,7 +2462,7 @@ fn the_access_points_and_ports_records_import() {
         let expected = format!("record {index} of the port is not imported: not every port has the same records, which the description gives each port alike");
         assert!(left_out.contains(&expected.as_str()), "{left_out:#?}");
     }
-    let description = another_device(&imported);
+    let description = draft(&imported);
     assert!(!description.contains("port_records"), "{description}");
     assert!(description.contains("[[profinet.access_point_records]]"));
 }
@@ -2479,4 +2475,246 @@ fn the_interfaces_name_imports() {
     assert_imported_and_kept(&[(FENA, "interface_name = \"Interface\"\n")], |change| {
         change.starts_with("interface") && change.contains(" name: ")
     });
+}
+
+/// The strings of the draft's `[draft]` list `key`.
+fn draft_list(toml: &str, key: &str) -> Vec<String> {
+    let table: toml::Table = toml::from_str(toml).unwrap();
+    table["draft"][key]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap().to_string())
+        .collect()
+}
+
+/// The line (from 1) of a byte offset of `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset].matches('\n').count() + 1
+}
+
+/// A draft lists exactly what `gsdc diff` finds breaking or compatible
+/// between the file and the draft's build, each at the file's line, and
+/// each part left out (the W600s, at theirs); loaded, it warns (W604) at
+/// `[draft]` with how many; without the table the warning is gone and the
+/// build is the same.
+#[test]
+fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
+    let imported = corpus_import(MOVI_C);
+    let toml = draft(&imported);
+    assert!(toml.starts_with(&format!(
+        "# A DRAFT (gsdc import --draft) of {MOVI_C}: its build is another device.\n"
+    )));
+    let changes = draft_list(toml, "changes");
+    let old = gsdc::device::read(
+        &support::corpus_file(&format!("gsdml/{MOVI_C}")),
+        Some(MOVI_C),
+    )
+    .unwrap();
+    let (_, gsdml) = built("imported.toml", toml, ArtifactKind::Gsdml);
+    let new = gsdc::device::read(gsdml.as_bytes(), Some(MOVI_C)).unwrap();
+    let found: Vec<String> = gsdc::diff::compare(&old, &new)
+        .unwrap()
+        .iter()
+        .filter(|c| c.class != gsdc::diff::Class::Cosmetic)
+        .map(|c| {
+            let at = c
+                .old
+                .as_ref()
+                .map_or(String::new(), |p| format!(":{}", p.line));
+            format!("{MOVI_C}{at}: {} ({}): {}", c.subject, c.class, c.change)
+        })
+        .collect();
+    assert_eq!(changes, found);
+    let r = imported.round_trip;
+    assert_eq!(changes.len(), r.breaking + r.compatible);
+    // Lines 41 and 389 of the file, read by hand: the first process data
+    // module's reference, allowed in slots 2 to 5, and the empty module.
+    for line in [
+        r#":41: DAP "DFC2xA V1.0" (0x00007532) module "Module I/O (01 word)" (0x00000002) AllowedInSlots (breaking): "2..5" → "1""#,
+        r#":389: module "Empty" (0x00007531) (breaking): removed"#,
+        r#": schema version (compatible): "V2.34" → "V2.32""#,
+    ] {
+        assert!(changes.contains(&format!("{MOVI_C}{line}")), "{line}");
+    }
+    let source = &imported.text;
+    let w600: Vec<String> = imported
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "W600")
+        .map(|d| {
+            let at = d
+                .span
+                .as_ref()
+                .map_or(String::new(), |s| format!(":{}", line_of(source, s.start)));
+            format!("{MOVI_C}{at}: {}", d.message)
+        })
+        .collect();
+    let left_out = draft_list(toml, "left_out");
+    assert_eq!(left_out, w600);
+    assert_eq!(left_out.len(), imported.unsaid);
+    let (ir, diagnostics) = descriptions::load_text("imported.toml", toml);
+    assert!(ir.is_some(), "{diagnostics:#?}");
+    let w604: Vec<&gsdc::Diagnostic> = diagnostics.iter().filter(|d| d.code == "W604").collect();
+    assert_eq!(w604.len(), 1);
+    assert!(w604[0].message.contains(&format!(
+        "({} change(s) and {} part(s) left out, listed in [draft])",
+        changes.len(),
+        left_out.len()
+    )));
+    let at = w604[0].span.clone().unwrap();
+    assert_eq!(&toml[at.start..at.start + 8], "[draft]\n");
+    let confirmed = &toml[..toml.find("\n[draft]\n").unwrap() + 1];
+    let (_, diagnostics) = descriptions::load_text("imported.toml", confirmed);
+    assert!(diagnostics.iter().all(|d| d.code != "W604"));
+    let rebuilt = built("imported.toml", confirmed, ArtifactKind::Gsdml).1;
+    assert!(
+        gsdml_body(&rebuilt) == gsdml_body(&gsdml),
+        "[draft] changes the build"
+    );
+}
+
+/// A GSD and a GSDML file imported together whose build is another device
+/// than the GSDML file: the draft names both files and lists the GSDML
+/// file's changes, at its lines.
+#[test]
+fn a_draft_of_two_files_names_the_file_of_each_change() {
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+    let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    // An attribute gsdc has no key for, on each port.
+    let other = gsdml.replace(
+        "<PortSubmoduleItem ",
+        r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
+    );
+    let no_files = |name: &str| Err(format!("{name}: not given"));
+    let both = import_both(
+        (&gsd_name, gsd.as_bytes()),
+        (&gsdml_name, other.as_bytes()),
+        &no_files,
+    );
+    assert_eq!(both.description, None);
+    let toml = both.draft.as_deref().expect("a draft");
+    assert!(toml.starts_with(&format!(
+        "# A DRAFT (gsdc import --draft) of {gsd_name} and {gsdml_name}: its build is another device.\n"
+    )));
+    let port_lines: Vec<usize> = other
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| l.contains("<PortSubmoduleItem "))
+        .map(|(i, _)| i + 1)
+        .collect();
+    let changes = draft_list(toml, "changes");
+    assert_eq!(changes.len(), 2, "{changes:#?}");
+    for (change, line) in changes.iter().zip(&port_lines) {
+        let at = format!("{gsdml_name}:{line}: port ");
+        assert!(change.starts_with(&at), "{change}");
+        assert!(
+            change.ends_with(r#"CheckMAUTypeDifferenceSupported (breaking): "true" removed"#),
+            "{change}"
+        );
+    }
+    let left_out = draft_list(toml, "left_out");
+    let files = [&gsd_name, &gsdml_name];
+    assert!(left_out
+        .iter()
+        .all(|l| files.iter().any(|f| l.starts_with(f.as_str()))));
+    for line in &port_lines {
+        let at = format!(
+            "{gsdml_name}:{line}: PortSubmoduleItem CheckMAUTypeDifferenceSupported is not imported"
+        );
+        assert!(left_out.iter().any(|l| l.starts_with(&at)), "{left_out:#?}");
+    }
+}
+
+/// `--draft`: a file whose import builds another device (ABB's FENA) is
+/// written as a draft (with its symbol's PNG, MD810's), and the command
+/// still exits 1;
+/// without `--draft` the refusal says the option is there. A build of the
+/// draft warns (W604) and `--deny-warnings` refuses it. An import whose
+/// round trip is clean is written as without the option.
+#[test]
+fn the_draft_option_writes_what_would_be_refused_as_a_draft() {
+    let dir = support::scratch("draft");
+    let fena = support::shared(&format!("corpus/gsdml/{FENA}"));
+    let out = dir.join("fena.toml");
+    let refused = run_import(&fena, &out);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(support::stderr(&refused).contains("with `--draft` it is written as a draft"));
+    assert!(!out.exists());
+    let import = |file: &std::path::Path, out: &std::path::Path| {
+        support::gsdc([
+            "import".as_ref(),
+            file.as_os_str(),
+            "--draft".as_ref(),
+            "--out".as_ref(),
+            out.as_os_str(),
+        ])
+    };
+    let drafted = import(&fena, &out);
+    assert_eq!(drafted.status.code(), Some(1));
+    assert!(support::stderr(&drafted).contains("fena.toml is a draft: its build is another device"));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.starts_with(&format!("# A DRAFT (gsdc import --draft) of {FENA}: ")));
+    let library = corpus_import(FENA);
+    assert_eq!(
+        draft_list(&text, "changes"),
+        draft_list(draft(&library), "changes")
+    );
+    let dist = dir.join("dist");
+    let build = |deny: bool| {
+        let mut args = vec![
+            "build".as_ref(),
+            out.as_os_str(),
+            "--out".as_ref(),
+            dist.as_os_str(),
+        ];
+        if deny {
+            args.push("--deny-warnings".as_ref());
+        }
+        support::gsdc(args)
+    };
+    let warned = build(false);
+    assert_eq!(
+        warned.status.code(),
+        Some(0),
+        "{}",
+        support::stderr(&warned)
+    );
+    assert!(support::stderr(&warned).contains("warning[W604]: a draft import"));
+    let denied = build(true);
+    assert_eq!(denied.status.code(), Some(1));
+    assert!(support::stderr(&denied).contains("warning[W604]"));
+    // MD810's GSDML file with an attribute gsdc has no key for, its
+    // bitmap beside it: the draft comes with the symbol's PNG. As it is,
+    // its round trip is clean: the description, no draft.
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    for f in &files {
+        std::fs::write(dir.join(&f.file_name), &f.contents).unwrap();
+    }
+    let (name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    let changed_dir = dir.join("changed");
+    std::fs::create_dir(&changed_dir).unwrap();
+    for f in ["GSDML-0A11-0810-MD810.bmp", name.as_str()] {
+        std::fs::copy(dir.join(f), changed_dir.join(f)).unwrap();
+    }
+    let changed = gsdml.replace(
+        "<PortSubmoduleItem ",
+        r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
+    );
+    std::fs::write(changed_dir.join(&name), changed).unwrap();
+    let md810_draft = changed_dir.join("out").join("md810.toml");
+    let run = import(&changed_dir.join(&name), &md810_draft);
+    assert_eq!(run.status.code(), Some(1), "{}", support::stderr(&run));
+    assert!(std::fs::read_to_string(&md810_draft)
+        .unwrap()
+        .contains("\n[draft]\n"));
+    let png = md810_draft.with_file_name("GSDML-0A11-0810-MD810.png");
+    assert!(png.exists(), "{}", support::stderr(&run));
+    let clean_out = dir.join("md810.toml");
+    let clean = import(&dir.join(&name), &clean_out);
+    assert_eq!(clean.status.code(), Some(0), "{}", support::stderr(&clean));
+    let written = std::fs::read_to_string(&clean_out).unwrap();
+    assert!(written.starts_with(&format!("# Imported by gsdc import from {name}.")));
+    assert!(!written.contains("[draft]"));
 }

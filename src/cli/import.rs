@@ -15,9 +15,11 @@ pub const EXAMPLES: &str = "Examples:
   gsdc import vendor/GSDML-V2.32-MEGMEET-MV800-20230830.xml --out descriptions/mv810.toml
   gsdc import vendor/MD810DP.GSD vendor/GSDML-V2.32-INOVANCE-MD810-20261122.xml --out md810.toml
   gsdc build descriptions/md810dp.toml --out dist && gsdc diff vendor/MD810DP.GSD dist/MD810DP.GSD
+  gsdc import vendor/GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml --draft --out movi-c.toml
 
 Exit codes: 0 written; 1 the file cannot be imported, or its import would build
-another device (nothing written); 2 usage or I/O error (DESC.toml exists already).";
+another device (nothing written; with --draft, the draft written); 2 usage or I/O
+error (DESC.toml exists already).";
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -28,6 +30,11 @@ pub struct Args {
     /// The description to write; it must not exist.
     #[arg(long, short, value_name = "DESC.toml")]
     out: PathBuf,
+    /// When the import's build would be another device, write it all the
+    /// same as a draft: its [draft] table lists each change and each part
+    /// left out, and every build warns (W604) until it is deleted.
+    #[arg(long)]
+    draft: bool,
 }
 
 pub fn run(args: &Args) -> Status {
@@ -38,12 +45,12 @@ pub fn run(args: &Args) -> Status {
             Err(status) => return status,
         }
     }
-    let (description, symbol) = match files.as_slice() {
+    let (written, symbol) = match files.as_slice() {
         [(path, bytes)] => {
             let beside = |name: &str| read_beside(path, name);
             let imported = crate::import::import_with(file_name(path), bytes, &beside);
             report(&display_name(path), &imported);
-            (imported.description, imported.symbol)
+            ((imported.description, imported.draft), imported.symbol)
         }
         [a, b] => match gsd_first(a, b) {
             Some(((gsd, gsd_bytes), (gsdml, gsdml_bytes))) => {
@@ -55,7 +62,7 @@ pub fn run(args: &Args) -> Status {
                 );
                 report(&display_name(gsd), &both.gsd);
                 report(&display_name(gsdml), &both.gsdml);
-                (both.description, both.symbol)
+                ((both.description, both.draft), both.symbol)
             }
             None => {
                 warn("error: two files are a card's GSD and its GSDML file");
@@ -64,16 +71,27 @@ pub fn run(args: &Args) -> Status {
         },
         _ => return Status::UsageOrIo,
     };
-    let Some(description) = description else {
-        return Status::InputErrors;
-    };
-    match write_outputs(&args.out, &description, symbol.as_ref()) {
-        Ok(()) => Status::Ok,
-        Err((written, e)) => {
-            warn(&format!("error: {}: {e}", display_name(&written)));
-            Status::UsageOrIo
+    let (text, is_draft) = match written {
+        (Some(description), _) => (description, false),
+        (None, Some(draft)) if args.draft => (draft, true),
+        (None, Some(_)) => {
+            warn("nothing written: the import's build is another device (E601 above); with `--draft` it is written as a draft that lists each change");
+            return Status::InputErrors;
         }
+        (None, None) => return Status::InputErrors,
+    };
+    if let Err((written, e)) = write_outputs(&args.out, &text, symbol.as_ref()) {
+        warn(&format!("error: {}: {e}", display_name(&written)));
+        return Status::UsageOrIo;
     }
+    if !is_draft {
+        return Status::Ok;
+    }
+    warn(&format!(
+        "{} is a draft: its build is another device; [draft] lists each change and each part left out, and every build warns (W604) until it is deleted",
+        display_name(&args.out)
+    ));
+    Status::InputErrors
 }
 
 /// A file beside the device file `beside` by its name, or by the same

@@ -50,6 +50,20 @@ pub struct Description {
     /// The manual's worked examples of telegrams, byte by byte.
     #[serde(default)]
     pub examples: Vec<Example>,
+    /// What `gsdc import --draft` found between the imported file and the
+    /// draft's build: a description with it is still a draft (W604).
+    pub draft: Option<Spanned<Draft>>,
+}
+
+/// The round trip of a draft import: each breaking or compatible change it
+/// found and each part of the file it left out, as `FILE:LINE: what`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Draft {
+    #[serde(default)]
+    pub changes: Vec<String>,
+    #[serde(default)]
+    pub left_out: Vec<String>,
 }
 
 /// A group of set-up steps: one table of the manual, or one of the ways

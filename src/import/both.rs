@@ -17,8 +17,12 @@ use crate::diag::Diagnostic;
 #[non_exhaustive]
 pub struct Both {
     pub description: Option<String>,
+    /// The description when it builds but its build is another device than
+    /// either file, as a draft listing both files' changes (see
+    /// [`Imported::draft`]).
+    pub draft: Option<String>,
     /// The device symbol the GSD's `Bitmap_Device` names, to write beside
-    /// the description; none without a description.
+    /// the description; none without a description or a draft.
     pub symbol: Option<ImportedSymbol>,
     pub gsd: Imported,
     pub gsdml: Imported,
@@ -54,15 +58,23 @@ pub fn import_both(gsd: (&str, &[u8]), gsdml: (&str, &[u8]), files: Files<'_>) -
         }
     };
     let mut trips = (RoundTrip::default(), RoundTrip::default());
-    let description = described.and_then(|toml| {
+    let built = described.and_then(|toml| {
         let symbol = symbol.as_ref();
         trips.0 = judge(gsd.0, &toml, symbol, dp_device.as_ref()?, &mut dp_notes)?;
         trips.1 = judge(gsdml.0, &toml, symbol, pn_device.as_ref()?, &mut pn_notes)?;
-        (trips.0.is_clean() && trips.1.is_clean()).then_some(toml)
+        Some(toml)
     });
+    let (description, draft) = match built {
+        Some(toml) if trips.0.is_clean() && trips.1.is_clean() => (Some(toml), None),
+        built => {
+            let files = [(gsd.0, &dp_notes), (gsdml.0, &pn_notes)];
+            (None, built.map(|toml| super::draft(&toml, &files)))
+        }
+    };
     Both {
-        symbol: symbol.filter(|_| description.is_some()),
+        symbol: symbol.filter(|_| description.is_some() || draft.is_some()),
         description,
+        draft,
         gsd: dp_notes.imported((None, None), None, trips.0),
         gsdml: pn_notes.imported((None, None), None, trips.1),
     }

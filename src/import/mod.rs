@@ -37,14 +37,15 @@ pub struct Imported {
     /// import` writes.
     pub description: Option<String>,
     /// The description when it builds but its build is another device
-    /// (E601): never written by `gsdc import`; what the import would start
-    /// from, for a benchmark or a look at how far the format goes.
-    pub another_device: Option<String>,
+    /// (E601), as a draft: its `[draft]` table lists each change the round
+    /// trip found and each part of the file left out (W604 at every build
+    /// until deleted). `gsdc import --draft` writes it.
+    pub draft: Option<String>,
     /// The file's text as gsdc reads it, for the diagnostics' spans.
     pub text: String,
     pub diagnostics: Diagnostics,
     /// The device symbol to write beside the description, under the name
-    /// its `[device] symbol` gives; none without a description.
+    /// its `[device] symbol` gives; none without a description or a draft.
     pub symbol: Option<ImportedSymbol>,
     /// How many keywords and elements have no place in the description.
     pub unsaid: usize,
@@ -112,12 +113,12 @@ pub fn import_with(file_name: &str, bytes: &[u8], files: Files<'_>) -> Imported 
         )?;
         Some(toml)
     });
-    let (description, another_device) = match built {
+    let (description, draft) = match built {
         Some(toml) if round_trip.is_clean() => (Some(toml), None),
-        built => (None, built),
+        built => (None, built.map(|toml| draft(&toml, &[(file_name, &notes)]))),
     };
-    let symbol = symbol.filter(|_| description.is_some());
-    notes.imported((description, another_device), symbol, round_trip)
+    let symbol = symbol.filter(|_| description.is_some() || draft.is_some());
+    notes.imported((description, draft), symbol, round_trip)
 }
 
 /// The [`Files`] of an import without any.
@@ -131,6 +132,30 @@ fn no_files(name: &str) -> Result<Vec<u8>, String> {
 fn read(file_name: &str, bytes: &[u8]) -> (Option<Device>, String) {
     let (device, text) = crate::device::read_with_text(bytes, Some(file_name));
     (device, text.into_owned())
+}
+
+/// A description whose build is another device than the files it was
+/// imported from (each file's name and notes), as a draft: a header that
+/// says so, and a `[draft]` table listing each change the round trip found
+/// and each part of a file left out, as `FILE:LINE: what`.
+fn draft(toml: &str, files: &[(&str, &Notes)]) -> String {
+    let names: Vec<&str> = files.iter().map(|(name, _)| *name).collect();
+    let listed = |pick: fn(&Notes) -> &[Listed]| {
+        let items = files
+            .iter()
+            .flat_map(|(name, notes)| pick(notes).iter().map(move |item| quote(&item.shown(name))));
+        let lines: Vec<String> = items.map(|item| format!("  {item},\n")).collect();
+        format!("[\n{}]", lines.concat())
+    };
+    format!(
+        "# A DRAFT (gsdc import --draft) of {}: its build is another device.\n\
+         # [draft] at the end lists each change the round trip found and each part left out.\n\
+         # Mend or accept each, then delete [draft]: until then every build warns (W604).\n\
+         {toml}\n[draft]\nchanges = {}\nleft_out = {}\n",
+        names.join(" and "),
+        listed(|n| &n.changes),
+        listed(|n| &n.left_out),
+    )
 }
 
 /// The round trip of `toml` against the file's device `old`: each breaking
@@ -208,18 +233,38 @@ struct Notes {
     /// The keys whose value the import chose, with why: each is marked
     /// under `[choices]` with it.
     chosen: Vec<(String, String)>,
+    /// Each breaking or compatible change the round trip found, and each
+    /// part of the file left out: what a draft lists.
+    changes: Vec<Listed>,
+    left_out: Vec<Listed>,
+}
+
+/// A finding a draft lists, at its line of the file where it has one.
+struct Listed {
+    line: Option<u32>,
+    what: String,
+}
+
+impl Listed {
+    /// `FILE:LINE: what`, or `FILE: what` without a line.
+    fn shown(&self, file: &str) -> String {
+        match self.line {
+            Some(line) => format!("{file}:{line}: {}", self.what),
+            None => format!("{file}: {}", self.what),
+        }
+    }
 }
 
 impl Notes {
     fn imported(
         self,
-        (description, another_device): (Option<String>, Option<String>),
+        (description, draft): (Option<String>, Option<String>),
         symbol: Option<ImportedSymbol>,
         round_trip: RoundTrip,
     ) -> Imported {
         Imported {
             description,
-            another_device,
+            draft,
             symbol,
             text: self.text,
             unsaid: self.unsaid,
@@ -236,6 +281,8 @@ impl Notes {
             diagnostics: Diagnostics::default(),
             unsaid: 0,
             chosen: Vec::new(),
+            changes: Vec::new(),
+            left_out: Vec::new(),
         }
     }
 
@@ -268,7 +315,12 @@ impl Notes {
     /// W600: a keyword or element the description has no place for.
     fn unsaid(&mut self, what: &str, place: &Place, why: &str) {
         self.unsaid += 1;
-        let d = Diagnostic::warning("W600", format!("{what} is not imported: {why}"))
+        let message = format!("{what} is not imported: {why}");
+        self.left_out.push(Listed {
+            line: Some(place.line).filter(|&l| l > 0),
+            what: message.clone(),
+        });
+        let d = Diagnostic::warning("W600", message)
             .at_opt(self.span(place))
             .label("left out")
             .help("the round trip judges whether leaving it out changes the device (E601 if so); say it in the device file's manual chapter or extend the description");
@@ -284,6 +336,10 @@ impl Notes {
     /// W600 without a place: a decision the import took for the file.
     fn note(&mut self, message: String) {
         self.unsaid += 1;
+        self.left_out.push(Listed {
+            line: None,
+            what: message.clone(),
+        });
         self.diagnostics.push(
             Diagnostic::warning("W600", message)
                 .help("check it under [choices] before the release"),
@@ -330,20 +386,19 @@ impl Notes {
     }
 
     /// E601: a breaking or compatible change between the file and the
-    /// import's build.
+    /// import's build, at the file's place of it (a change's `new` place
+    /// is a line of the build, which the import does not write).
     fn different(&mut self, change: &Change) {
-        let place = change.old.as_ref().or(change.new.as_ref());
+        let what = format!("{} ({}): {}", change.subject, change.class, change.change);
+        self.changes.push(Listed {
+            line: change.old.as_ref().map(|p| p.line).filter(|&l| l > 0),
+            what: what.clone(),
+        });
         self.diagnostics.push(
-            Diagnostic::error(
-                "E601",
-                format!(
-                    "the import builds another device: {} ({}): {}",
-                    change.subject, change.class, change.change
-                ),
-            )
-            .at_opt(place.and_then(|p| self.span(p)))
-            .label(change.class.as_str())
-            .help(change.why.clone()),
+            Diagnostic::error("E601", format!("the import builds another device: {what}"))
+                .at_opt(change.old.as_ref().and_then(|p| self.span(p)))
+                .label(change.class.as_str())
+                .help(change.why.clone()),
         );
     }
 
@@ -358,5 +413,46 @@ impl Notes {
                 .help("the description cannot say this file as it is"),
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diff::Kind;
+
+    fn change(old: Option<u32>, new: Option<u32>) -> Change {
+        let at = |line| Place { line, path: None };
+        Change {
+            class: Class::Breaking,
+            kind: Kind::Module,
+            judged: true,
+            subject: "module \"M\"".into(),
+            change: "added".into(),
+            why: String::new(),
+            old: old.map(at),
+            new: new.map(at),
+            more: 0,
+        }
+    }
+
+    /// A change is at the file's line, never at the build's: a module the
+    /// build adds has no line in the file, and the draft lists it without
+    /// one.
+    #[test]
+    fn a_change_is_at_the_files_line_or_at_none() {
+        let mut notes = Notes::new("first\nsecond\nthird\n".into());
+        notes.different(&change(Some(3), Some(1)));
+        notes.different(&change(None, Some(2)));
+        let spans: Vec<_> = notes.diagnostics.iter().map(|d| d.span.clone()).collect();
+        assert_eq!(spans, [Some(13..18), None]);
+        let listed: Vec<String> = notes.changes.iter().map(|c| c.shown("F.GSD")).collect();
+        assert_eq!(
+            listed,
+            [
+                "F.GSD:3: module \"M\" (breaking): added",
+                "F.GSD: module \"M\" (breaking): added"
+            ]
+        );
     }
 }

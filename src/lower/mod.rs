@@ -127,6 +127,9 @@ pub fn lower(
     let given = cx.take_given();
     let mut decisions = cx.take_decisions();
     decisions.extend(choices::lower(&mut cx, &desc.choices, &desc.choice_targets));
+    if let Some(draft) = &desc.draft {
+        still_a_draft(&mut cx, draft);
+    }
     decisions.sort_by(|a, b| (a.kind, &a.path).cmp(&(b.kind, &b.path)));
     cx.languages_without_words();
     let languages = cx.languages();
@@ -276,6 +279,25 @@ fn lower_device(cx: &mut Checker, d: &raw::Device, files: Option<Files<'_>>) -> 
             .as_ref()
             .map(|i| cx.text(i, Some(crate::gsd::keyword_max_len("Info_Text")), "info")),
     }
+}
+
+/// W604: a draft import's description, whose build is another device
+/// than the file it was imported from until each change is mended or
+/// accepted.
+fn still_a_draft(cx: &mut Checker, draft: &Spanned<raw::Draft>) {
+    let (changes, left_out) = (
+        draft.get_ref().changes.len(),
+        draft.get_ref().left_out.len(),
+    );
+    cx.push(
+        Diagnostic::warning(
+            "W604",
+            format!("a draft import: its build is another device than the file it was imported from ({changes} change(s) and {left_out} part(s) left out, listed in [draft])"),
+        )
+        .at(draft.span())
+        .label("still a draft")
+        .help("mend each change in the description or accept it (`gsdc diff` the imported file against the build), then delete [draft]; `gsdc build --deny-warnings` refuses a build while it remains"),
+    );
 }
 
 /// The manual's languages: ISO 639-1 codes, each once.
