@@ -2718,3 +2718,38 @@ fn the_draft_option_writes_what_would_be_refused_as_a_draft() {
     assert!(written.starts_with(&format!("# Imported by gsdc import from {name}.")));
     assert!(!written.contains("[draft]"));
 }
+
+/// Siemens' IM174 states I&M in a revision-4 GSD, which no description
+/// can say (E124): the import writes revision 5, marked with why, and the
+/// round trip names the change (line 243 of the file, read by hand), so
+/// the file gives a draft and no description. DPV1 in an older revision
+/// than 3 likewise.
+#[test]
+fn im_in_a_revision_4_gsd_imports_as_revision_5_saying_why() {
+    let name = "ivangre4__SI018133.GSE";
+    let imported = corpus_gsd_import(name);
+    assert_eq!(imported.description, None);
+    let toml = draft(&imported);
+    assert_says(
+        toml,
+        &[
+            "gsd_revision = 5\n",
+            "\"profibus.gsd_revision\" = \"GSD_Revision 4 is imported as 5: the file states Ident_Maintenance_supp, which came with revision 5 (E124); the round trip judges the change\"\n",
+        ],
+    );
+    let changes = draft_list(toml, "changes");
+    let revision = format!("{name}:243: GSD_Revision (compatible): \"4\" → \"5\"");
+    assert!(changes.contains(&revision), "{changes:#?}");
+    // DPV1 in a revision-2 file (MD810's GSD, changed): revision 3.
+    let (name, gsd, _) = md810dp_gsd_and_bitmap();
+    let old = "GSD_Revision                = 5\r\n";
+    assert!(gsd.contains(old));
+    let imported = import(
+        &name,
+        gsd.replacen(old, "GSD_Revision = 2\r\n", 1).as_bytes(),
+    );
+    assert_says(
+        draft(&imported),
+        &["gsd_revision = 3\n", "GSD_Revision 2 is imported as 3: the file states DPV1_Slave, which came with revision 3 (E124)"],
+    );
+}

@@ -12,6 +12,7 @@ use crate::device::dp::{DpDevice, DpModule, Keyword};
 use crate::device::{Allowed, Field, ParameterData, Value};
 use crate::gsd::config::{identifiers, Direction, Identifier, Length};
 use crate::gsd::Value as GsdValue;
+use crate::spec::{DPV1_GSD_REVISION, IM_GSD_REVISION};
 
 /// Keywords the description states, by their schema key.
 const IMPORTED: &[&str] = &[
@@ -332,10 +333,10 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, card: &Card, notes
     // A file without GSD_Revision is of the specification's first edition,
     // which the description states as revision 0.
     match device.keyword("GSD_Revision") {
-        None => out.key("gsd_revision", 0),
+        None => out.key("gsd_revision", revision_written(device, 0, notes)),
         Some(k) => {
             if let Some(r) = k.value.as_number() {
-                out.key("gsd_revision", r);
+                out.key("gsd_revision", revision_written(device, r, notes));
             }
         }
     }
@@ -453,6 +454,28 @@ fn gsd_file_name(file: &str, notes: &mut Notes) -> String {
         format!("`{file}` is not a GSD file name (8.3): the description names it `{name}`"),
     );
     name
+}
+
+/// The file's GSD revision, or the least its DPV1 keywords need where the
+/// file is older (Siemens' SI018133 states I&M in a revision-4 file), which
+/// the description cannot say otherwise (E124): marked with why; the round
+/// trip judges the change.
+fn revision_written(device: &DpDevice, revision: i64, notes: &mut Notes) -> i64 {
+    let stated = |keyword| number_of(device, keyword) == Some(1);
+    let (needed, keyword) = match (stated("DPV1_Slave"), stated("Ident_Maintenance_supp")) {
+        (true, true) => (IM_GSD_REVISION, "Ident_Maintenance_supp"),
+        (true, false) => (DPV1_GSD_REVISION, "DPV1_Slave"),
+        (false, _) => return revision,
+    };
+    let needed = i64::from(needed);
+    if revision >= needed {
+        return revision;
+    }
+    notes.chosen(
+        "profibus.gsd_revision",
+        format!("GSD_Revision {revision} is imported as {needed}: the file states {keyword}, which came with revision {needed} (E124); the round trip judges the change"),
+    );
+    needed
 }
 
 fn family(k: &Keyword) -> String {

@@ -15,16 +15,13 @@ use crate::ir::profibus::{
     Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{EntryType, Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
+use crate::spec::{DPV1_GSD_REVISION, IM_GSD_REVISION};
 use crate::spec::{GSD_KEY_WIDTH as KEY_WIDTH, GSD_LINE_WIDTH as MAX_LINE};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
 
 const DEFAULT_GSD_REVISION: u8 = 5;
-/// The DPV1 keywords came with GSD revision 3, Ident_Maintenance_supp with
-/// revision 5 (comments of Siemens' own GSD files, SI028158, SI018133).
-const DPV1_GSD_REVISION: u8 = 3;
-const IM_GSD_REVISION: u8 = 5;
 /// The PPO types as the description names them: PPO1 to PPO5, no other
 /// spelling (FIELDBUS-NOTES §1).
 const PPO_NAMES: [&str; 5] = ["PPO1", "PPO2", "PPO3", "PPO4", "PPO5"];

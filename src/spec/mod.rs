@@ -29,6 +29,11 @@ pub const GSD_LINE_WIDTH: usize = 80;
 /// gsdc's GSD writes each value after its key padded to this many columns.
 pub const GSD_KEY_WIDTH: usize = 28;
 
+/// The DPV1 keywords came with GSD revision 3, Ident_Maintenance_supp with
+/// revision 5 (comments of Siemens' own GSD files, SI028158, SI018133).
+pub const DPV1_GSD_REVISION: u8 = 3;
+pub const IM_GSD_REVISION: u8 = 5;
+
 /// The characters that reorder text on screen (Unicode's Bidi_Control):
 /// a name with one could read differently from what a compiler or a
 /// terminal sees.
