@@ -434,6 +434,8 @@ pub struct Profibus {
     pub freeze_mode: Option<Spanned<bool>>,
     pub sync_mode: Option<Spanned<bool>>,
     pub fail_safe: Option<Spanned<bool>>,
+    /// Fail_Safe_required: the card takes no master without fail-safe mode.
+    pub fail_safe_required: Option<Spanned<bool>>,
     /// Set_Slave_Add_supp: a master may set the station address.
     pub set_slave_address: Option<Spanned<bool>>,
     /// Redundancy: the card has redundant transmission.

@@ -313,6 +313,7 @@ fn features(p: &Profibus) -> Features {
     Features {
         set_slave_address: f.set_slave_address.unwrap_or(false).into(),
         stated: stated(&[
+            ("Fail_Safe_required", flag(f.fail_safe_required)),
             ("Redundancy", flag(f.redundancy)),
             ("Repeater_Ctrl_Sig", f.repeater_ctrl_sig),
             ("24V_Pins", f.pins_24v),

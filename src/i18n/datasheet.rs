@@ -1153,6 +1153,11 @@ phrases! {
         zh: "Fail_Safe（Clear 时无输出数据）",
         de: "Fail_Safe (keine Ausgangsdaten im Zustand Clear)",
     };
+    FAIL_SAFE_REQUIRED = {
+        en: "Fail_Safe_required (the master must use Fail_Safe)",
+        zh: "Fail_Safe_required（主站必须使用 Fail_Safe）",
+        de: "Fail_Safe_required (der Master muss Fail_Safe nutzen)",
+    };
     WHERE_SET_HEADING = {
         en: "Where each mapping is set",
         zh: "各映射在何处设置",

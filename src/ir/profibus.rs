@@ -200,6 +200,7 @@ pub struct Features {
     pub wd_base_1ms: Option<bool>,
     pub publisher: Option<bool>,
     pub modul_offset: Option<u8>,
+    pub fail_safe_required: Option<bool>,
 }
 
 /// Words one general identifier byte can carry.

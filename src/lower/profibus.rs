@@ -121,6 +121,7 @@ pub fn lower(
     });
     let limits = limits(cx, p, &modules, gateway);
     let features = features(cx, p, gsd_revision);
+    fail_safe_required_supported(cx, p, fail_safe);
     let isochronous = p
         .isochronous
         .as_ref()
@@ -182,6 +183,20 @@ pub fn lower(
         ),
         diagnosis,
     })
+}
+
+/// E195: Fail_Safe_required for a card that does not say Fail_Safe.
+fn fail_safe_required_supported(cx: &mut Checker, p: &raw::Profibus, fail_safe: bool) {
+    if let Some(required) = p.fail_safe_required.as_ref().filter(|r| *r.get_ref()) {
+        if !fail_safe {
+            cx.push(
+                Diagnostic::error("E195", "fail-safe mode required but not supported")
+                    .at(required.span())
+                    .label("Fail_Safe_required without Fail_Safe")
+                    .help("set fail_safe = true: a master can only meet what the card supports"),
+            );
+        }
+    }
 }
 
 /// Max_Module and the data lengths: what the modules need, or what the
@@ -269,6 +284,7 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
     let redundancy = flag(&p.redundancy, "Redundancy");
     let wd_base_1ms = flag(&p.wd_base_1ms, "WD_Base_1ms_supp");
     let publisher = flag(&p.publisher, "Publisher_supp");
+    let fail_safe_required = flag(&p.fail_safe_required, "Fail_Safe_required");
     let mut number = |v: &Option<Spanned<u8>>, keyword: &str| {
         let v = v.as_ref()?;
         cx.since_revision(keyword, v.span(), gsd_revision);
@@ -282,6 +298,7 @@ fn features(cx: &mut Checker, p: &raw::Profibus, gsd_revision: u8) -> Features {
         wd_base_1ms,
         publisher,
         modul_offset: number(&p.modul_offset, "Modul_Offset"),
+        fail_safe_required,
     }
 }
 

@@ -159,15 +159,18 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
         (lang.t(w::FREEZE_MODE), yes_no(lang, p.freeze_mode)),
         (lang.t(w::SYNC_MODE), yes_no(lang, p.sync_mode)),
         (lang.t(w::FAIL_SAFE), yes_no(lang, p.fail_safe)),
-        (
-            lang.t(w::MAX_IO_BYTES),
-            text(format!("{}, {}", p.max_input_len, p.max_output_len)),
-        ),
-        (
-            lang.t(w::MAX_DIAG_DATA_LEN),
-            text(p.max_diag_data_len.to_string()),
-        ),
     ];
+    if let Some(required) = p.features.fail_safe_required {
+        rows.push((lang.t(w::FAIL_SAFE_REQUIRED), yes_no(lang, required)));
+    }
+    rows.push((
+        lang.t(w::MAX_IO_BYTES),
+        text(format!("{}, {}", p.max_input_len, p.max_output_len)),
+    ));
+    rows.push((
+        lang.t(w::MAX_DIAG_DATA_LEN),
+        text(p.max_diag_data_len.to_string()),
+    ));
     if let Some(d) = &p.dpv1 {
         rows.push((lang.t(w::DPV1_C1_READ_WRITE), yes_no(lang, d.c1_read_write)));
         rows.push((
