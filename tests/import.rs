@@ -305,26 +305,37 @@ fn a_gsd_and_a_gsdml_file_import_as_one_description_of_both_buses() {
     );
 }
 
+/// MD810's GSD and its GSDML file as `change` changes it, imported
+/// together (without the files beside them); each file's name and text.
+fn md810_both_with_gsdml_changed(
+    change: impl Fn(&str) -> String,
+) -> (gsdc::import::Both, (String, String), (String, String)) {
+    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
+    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
+    let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
+    let changed = change(&gsdml);
+    assert_ne!(changed, gsdml, "the case changes the file");
+    let no_files = |name: &str| Err(format!("{name}: not given"));
+    let both = import_both(
+        (&gsd_name, gsd.as_bytes()),
+        (&gsdml_name, changed.as_bytes()),
+        &no_files,
+    );
+    (both, (gsd_name, gsd), (gsdml_name, changed))
+}
+
 /// Identity both files carry must agree: a GSDML file of another vendor
 /// is an error at the GSD's line naming the GSDML's element, and nothing
 /// is imported.
 #[test]
 fn a_gsd_and_a_gsdml_file_that_disagree_are_refused_naming_both_places() {
-    let ir = descriptions::load("md810dp.toml");
-    let files = gsdc::compile(&ir).unwrap();
-    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
-    let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
-    let other = gsdml.replacen(
-        r#"<VendorName Value="Inovance"/>"#,
-        r#"<VendorName Value="Acme"/>"#,
-        1,
-    );
-    let no_files = |name: &str| Err(format!("{name}: not given"));
-    let both = import_both(
-        (&gsd_name, gsd.as_bytes()),
-        (&gsdml_name, other.as_bytes()),
-        &no_files,
-    );
+    let (both, (_, gsd), (gsdml_name, _)) = md810_both_with_gsdml_changed(|gsdml| {
+        gsdml.replacen(
+            r#"<VendorName Value="Inovance"/>"#,
+            r#"<VendorName Value="Acme"/>"#,
+            1,
+        )
+    });
     assert_eq!(both.description, None);
     let e603: Vec<&gsdc::Diagnostic> = both
         .gsd
@@ -2579,20 +2590,13 @@ fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
 /// file's changes, at its lines.
 #[test]
 fn a_draft_of_two_files_names_the_file_of_each_change() {
-    let files = gsdc::compile(&descriptions::load("md810dp.toml")).unwrap();
-    let (gsd_name, gsd) = descriptions::one(files.clone(), ArtifactKind::Gsd);
-    let (gsdml_name, gsdml) = descriptions::one(files, ArtifactKind::Gsdml);
     // An attribute gsdc has no key for, on each port.
-    let other = gsdml.replace(
-        "<PortSubmoduleItem ",
-        r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
-    );
-    let no_files = |name: &str| Err(format!("{name}: not given"));
-    let both = import_both(
-        (&gsd_name, gsd.as_bytes()),
-        (&gsdml_name, other.as_bytes()),
-        &no_files,
-    );
+    let (both, (gsd_name, _), (gsdml_name, other)) = md810_both_with_gsdml_changed(|gsdml| {
+        gsdml.replace(
+            "<PortSubmoduleItem ",
+            r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
+        )
+    });
     assert_eq!(both.description, None);
     let toml = both.draft.as_deref().expect("a draft");
     assert!(toml.starts_with(&format!(
