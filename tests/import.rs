@@ -2757,3 +2757,19 @@ fn im_in_a_revision_4_gsd_imports_as_revision_5_saying_why() {
         &["gsd_revision = 3\n", "GSD_Revision 2 is imported as 3: the file states DPV1_Slave, which came with revision 3 (E124)"],
     );
 }
+
+/// A GSD that gives no device block's bits or areas does not say what its
+/// longer diagnosis carries: the import states its Max_Diag_Data_Len as it
+/// is, and no device block (SEW's MOVIDRIVE: 16). One that gives them
+/// (ABB's ACS880: a Unit_Diag_Area) has its device block take the rest.
+#[test]
+fn a_diagnosis_length_without_a_device_block_imports_as_the_files() {
+    let sew = corpus_gsd_import("siamect__sew_movidrive_pb_slave.gsd");
+    let toml = sew.description.as_deref().expect("a clean round trip");
+    assert_says(toml, &["\nmax_diag_data_len = 16\n"]);
+    assert!(!toml.contains("[profibus.diagnosis]"));
+    let abb = corpus_gsd_import("siamect__abb_acs880_pb_slave.gsd");
+    let toml = abb.description.as_deref().expect("a clean round trip");
+    assert_says(toml, &["[profibus.diagnosis]\nlength = 10\n"]);
+    assert!(!toml.contains("max_diag_data_len"));
+}

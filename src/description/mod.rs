@@ -436,6 +436,9 @@ pub struct Profibus {
     pub fail_safe: Option<Spanned<bool>>,
     /// Fail_Safe_required: the card takes no master without fail-safe mode.
     pub fail_safe_required: Option<Spanned<bool>>,
+    /// Max_Diag_Data_Len, when the firmware's diagnosis may be longer than
+    /// the standard bytes and the device block the description states.
+    pub max_diag_data_len: Option<Spanned<u8>>,
     /// Set_Slave_Add_supp: a master may set the station address.
     pub set_slave_address: Option<Spanned<bool>>,
     /// Redundancy: the card has redundant transmission.

@@ -391,6 +391,12 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, card: &Card, notes
         );
     }
     numbers(out, device, &[("max_data_len", "Max_Data_Len")]);
+    if is_drive && !has_device_block(device) {
+        let longer = number_of(device, "Max_Diag_Data_Len").filter(|&n| n > 6);
+        if let Some(n) = longer {
+            out.key("max_diag_data_len", n);
+        }
+    }
     // A gateway's modules, parameters and diagnosis are its `[gateway]`'s.
     if is_drive {
         if let Some(words) = ppo5_pzd_words(device) {
@@ -850,12 +856,41 @@ fn alarms(out: &mut TomlOut, device: &DpDevice) {
     numbers(out, device, &[("sequence_mode_count", count)]);
 }
 
+/// Whether the file gives the device-related block's bits or areas: only
+/// then does the import state a device block (`[profibus.diagnosis]`);
+/// otherwise its Max_Diag_Data_Len is stated as it is, since the file does
+/// not say what a longer diagnosis carries.
+fn has_device_block(device: &DpDevice) -> bool {
+    !device.diagnosis.areas.is_empty() || !device.diagnosis.bits.is_empty()
+}
+
+/// `[profibus.diagnosis]`, the device block, where the file gives one,
+/// taking all of the diagnosis after the standard bytes; what the
+/// description has no place for, a W600 each.
 fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+    if has_device_block(device) {
+        device_block(out, device, notes);
+    }
+    let d = &device.diagnosis;
+    for t in &d.types {
+        notes.unsaid(
+            &format!("UnitDiagType = {}", t.id),
+            &t.place,
+            "the description has no diagnosis types",
+        );
+    }
+    for c in &d.channel {
+        notes.unsaid(
+            &format!("Channel_Diag({})", c.value),
+            &c.place,
+            "the description has no channel diagnosis",
+        );
+    }
+}
+
+fn device_block(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     let d = &device.diagnosis;
     let length = number_of(device, "Max_Diag_Data_Len").map_or(0, |n| n - 6);
-    if length <= 0 && d.areas.is_empty() && d.bits.is_empty() {
-        return;
-    }
     out.table("profibus.diagnosis");
     out.key("length", length);
     let bits: Vec<String> = d
@@ -896,20 +931,6 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
             )
         });
         out.key("values", list(values));
-    }
-    for t in &d.types {
-        notes.unsaid(
-            &format!("UnitDiagType = {}", t.id),
-            &t.place,
-            "the description has no diagnosis types",
-        );
-    }
-    for c in &d.channel {
-        notes.unsaid(
-            &format!("Channel_Diag({})", c.value),
-            &c.place,
-            "the description has no channel diagnosis",
-        );
     }
 }
 

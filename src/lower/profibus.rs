@@ -171,7 +171,7 @@ pub fn lower(
         isochronous,
         prm_block_structure,
         user_prm,
-        max_diag_data_len: STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0),
+        max_diag_data_len: max_diag_data_len(cx, p, device_diag_len),
         bitmap_device: device
             .symbol
             .is_some()
@@ -183,6 +183,27 @@ pub fn lower(
         ),
         diagnosis,
     })
+}
+
+/// Max_Diag_Data_Len: the standard diagnosis and the device block, or what
+/// the description states, never less (E174).
+fn max_diag_data_len(cx: &mut Checker, p: &raw::Profibus, device_diag_len: Option<u8>) -> u8 {
+    let needed = STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0);
+    let Some(stated) = &p.max_diag_data_len else {
+        return needed;
+    };
+    let value = *stated.get_ref();
+    let what = "the standard diagnosis and the device block";
+    at_least(
+        cx,
+        ("max_diag_data_len", value.into(), stated.span()),
+        needed.into(),
+        what,
+    );
+    let (min, max) = crate::gsd::keyword_range("Max_Diag_Data_Len");
+    let span = stated.span();
+    cx.in_range::<u8>(value.into(), min, max, span, "max_diag_data_len");
+    value.max(needed)
 }
 
 /// E195: Fail_Safe_required for a card that does not say Fail_Safe.
