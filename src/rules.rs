@@ -146,6 +146,10 @@ pub const RULES: &[Rule] = &[
         "a name for a profile word no telegram offered carries",
     ),
     rule("E195", "fail-safe mode required but not supported"),
+    rule(
+        "E196",
+        "channel diagnosis without a diagnosis length for its blocks",
+    ),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

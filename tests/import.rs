@@ -357,15 +357,20 @@ fn a_gsd_and_a_gsdml_file_that_disagree_are_refused_naming_both_places() {
 
 /// The GSD of `vendor_dp.toml`, the valid fixture that uses every key of
 /// a vendor's own DP layout (modules, parameters, DPV1 alarms, isochronous
-/// mode, block-structured parameters, a Unit_Diag_Not_Bit), imports and
-/// rebuilds byte for byte below the header.
+/// mode, block-structured parameters, a Unit_Diag_Not_Bit, channel
+/// diagnosis), imports and rebuilds byte for byte below the header. The
+/// one finding: the device block's length, which no GSD keyword says,
+/// is the least its bits need (3: bit 9 is in the second byte after the
+/// header), the rest of Max_Diag_Data_Len left to the channels' blocks.
 #[test]
 fn every_key_of_a_vendors_own_layout_round_trips_byte_for_byte() {
     let ir = descriptions::load_from("tests/fixtures/valid", "vendor_dp.toml");
     let (name, gsd) = descriptions::one(gsdc::compile(&ir).unwrap(), ArtifactKind::Gsd);
     let imported = import(&name, gsd.as_bytes());
     let toml = written(&imported, "");
-    assert!(codes(&imported).is_empty(), "{:?}", imported.diagnostics);
+    let block = "the file does not say how long its device block is: 3, the least its bits and areas need, the rest of its Max_Diag_Data_Len left to the channels' blocks";
+    assert_eq!(messages(&imported, "W600"), [block]);
+    assert_eq!(codes(&imported), ["W600"]);
     assert_says(
         toml,
         &[
@@ -374,6 +379,10 @@ fn every_key_of_a_vendors_own_layout_round_trips_byte_for_byte() {
             "block_structure = \"required\"",
             "clear = true",
             "c1_read_write_required = true",
+            "max_diag_data_len = 20\n",
+            "[profibus.diagnosis]\nlength = 3\n",
+            "[[profibus.channel_diagnosis]]\nerror_type = 26\nname = \"Drive ready signal missing (24V)\"\n",
+            "fail_safe_required = true\n",
         ],
     );
     let (rebuilt, diagnostics) = gsdc::load("imported.toml", toml);

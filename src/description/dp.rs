@@ -100,6 +100,14 @@ pub enum PrmType {
     Signed8,
 }
 
+/// `[[profibus.channel_diagnosis]]`: `Channel_Diag(error_type) = "name"`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ChannelDiagnosis {
+    pub error_type: Spanned<u8>,
+    pub name: Spanned<Text>,
+}
+
 /// `Unit_Diag_Bit(n) = "text"`: a bit of the device-related block with the
 /// text the tool shows while it is set; with `clear = true`,
 /// `Unit_Diag_Not_Bit(n)`, shown while it is clear.

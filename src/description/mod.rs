@@ -472,6 +472,10 @@ pub struct Profibus {
     pub dpv1: Option<Spanned<Dpv1>>,
     pub isochronous: Option<Spanned<dp::Isochronous>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
+    /// The error types the card reports in a channel's diagnosis, each with
+    /// the text the engineering tool shows (`Channel_Diag`).
+    #[serde(default)]
+    pub channel_diagnosis: Vec<Spanned<dp::ChannelDiagnosis>>,
     /// Keywords of the vendor's own, which the GSD specification does not
     /// have, written as they are (Siemens' `ETERDelay`).
     #[serde(default)]

@@ -48,6 +48,8 @@ struct Context<'a> {
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
     diag_bits: Vec<DiagBit<'a>>,
+    /// `Channel_Diag(n)`: each error type and its text.
+    channel_diagnosis: Vec<Value<'a>>,
     dpv1: Option<Dpv1>,
     /// Prm_Block_Structure and isochronous mode (GSD revision 4), as stated.
     dp_v2: Vec<(&'static str, u32)>,
@@ -233,6 +235,14 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 },
                 bit: b.bit,
                 text: b.text.for_gsd(),
+            })
+            .collect(),
+        channel_diagnosis: p
+            .channel_diagnosis
+            .iter()
+            .map(|c| Value {
+                value: c.error_type.into(),
+                text: c.name.for_gsd(),
             })
             .collect(),
         dpv1: p.dpv1.map(|d| Dpv1 {

@@ -90,6 +90,12 @@ phrases! {
         de: "Die Fehlertypen, die die Karte als Kanaldiagnose meldet, und was das Engineering-Tool zu jedem anzeigt; die Fehlertypen eines Profils (ab 0x9000) liegen in der API des Profils.",
     };
     ERROR_TYPE = { en: "Error type", zh: "错误类型", de: "Fehlertyp" };
+    DP_CHANNEL_DIAGNOSIS = { en: "PROFIBUS channel diagnosis", zh: "PROFIBUS 通道诊断", de: "PROFIBUS-Kanaldiagnose" };
+    DP_CHANNEL_DIAGNOSIS_INTRO = {
+        en: "The error types the card reports in a channel's diagnosis (bits 0 to 4 of its third byte), and the text the engineering tool shows for each.",
+        zh: "扩展卡在通道诊断中报告的错误类型（其第三个字节的位 0 至 4），以及工程工具为每种错误显示的文本。",
+        de: "Die Fehlertypen, die die Karte in der Diagnose eines Kanals meldet (Bits 0 bis 4 ihres dritten Bytes), und der Text, den das Engineering-Tool zu jedem anzeigt.",
+    };
     EXTENDED_DIAGNOSIS = {
         en: "PROFINET extended channel diagnosis",
         zh: "PROFINET 扩展通道诊断",

@@ -34,6 +34,7 @@ const IMPORTED: &[&str] = &[
     "set_slave_add_supp",
     "fail_safe",
     "fail_safe_required",
+    "channel_diag",
     "redundancy",
     "repeater_ctrl_sig",
     "24v_pins",
@@ -391,9 +392,8 @@ fn profibus(out: &mut TomlOut, device: &DpDevice, file: &str, card: &Card, notes
         );
     }
     numbers(out, device, &[("max_data_len", "Max_Data_Len")]);
-    if is_drive && !has_device_block(device) {
-        let longer = number_of(device, "Max_Diag_Data_Len").filter(|&n| n > 6);
-        if let Some(n) = longer {
+    if is_drive {
+        if let Some(n) = DiagnosisPlan::of(device).max_diag_data_len {
             out.key("max_diag_data_len", n);
         }
     }
@@ -856,20 +856,88 @@ fn alarms(out: &mut TomlOut, device: &DpDevice) {
     numbers(out, device, &[("sequence_mode_count", count)]);
 }
 
-/// Whether the file gives the device-related block's bits or areas: only
-/// then does the import state a device block (`[profibus.diagnosis]`);
-/// otherwise its Max_Diag_Data_Len is stated as it is, since the file does
-/// not say what a longer diagnosis carries.
-fn has_device_block(device: &DpDevice) -> bool {
-    !device.diagnosis.areas.is_empty() || !device.diagnosis.bits.is_empty()
+/// The standard diagnosis' bytes, before the device block.
+const STANDARD_DIAG: i64 = 6;
+/// A channel's diagnosis block (`lower::dp_channel`).
+const CHANNEL_BLOCK: i64 = 3;
+
+/// How the import states a file's Max_Diag_Data_Len, which says how long
+/// the diagnosis may be and not what it carries. A file that gives the
+/// device block's bits or areas gets a device block (`[profibus.diagnosis]`)
+/// of all the rest, or, with channel diagnosis, of the least its bits need
+/// (its choice, marked), the length stated, the rest left to the channels'
+/// blocks. A file without them has its length stated as it is, and no
+/// device block made up.
+struct DiagnosisPlan {
+    device_block: Option<i64>,
+    /// The device block's length is the import's choice.
+    device_block_chosen: bool,
+    max_diag_data_len: Option<i64>,
+    /// Why the channels' error types cannot be said, if they cannot.
+    channels_unsaid: Option<&'static str>,
 }
 
-/// `[profibus.diagnosis]`, the device block, where the file gives one,
-/// taking all of the diagnosis after the standard bytes; what the
+impl DiagnosisPlan {
+    fn of(device: &DpDevice) -> DiagnosisPlan {
+        let d = &device.diagnosis;
+        let total = number_of(device, "Max_Diag_Data_Len").unwrap_or(STANDARD_DIAG);
+        let after_standard = total - STANDARD_DIAG;
+        let has_block = !d.areas.is_empty() || !d.bits.is_empty();
+        let no_room = Some("Max_Diag_Data_Len leaves no room for a channel's block of 3 bytes");
+        if !has_block {
+            return DiagnosisPlan {
+                device_block: None,
+                device_block_chosen: false,
+                max_diag_data_len: (after_standard > 0).then_some(total),
+                channels_unsaid: if after_standard < CHANNEL_BLOCK {
+                    no_room
+                } else {
+                    None
+                },
+            };
+        }
+        let least = least_device_block(device);
+        if d.channel.is_empty() || after_standard - least < CHANNEL_BLOCK {
+            return DiagnosisPlan {
+                device_block: Some(after_standard),
+                device_block_chosen: false,
+                max_diag_data_len: None,
+                channels_unsaid: no_room,
+            };
+        }
+        DiagnosisPlan {
+            device_block: Some(least),
+            device_block_chosen: true,
+            max_diag_data_len: Some(total),
+            channels_unsaid: None,
+        }
+    }
+}
+
+/// The header byte and the bytes the file's device bits and areas reach.
+fn least_device_block(device: &DpDevice) -> i64 {
+    let d = &device.diagnosis;
+    let bits = d.bits.iter().map(|b| b.bit);
+    let last = bits
+        .chain(d.areas.iter().map(|a| a.last))
+        .max()
+        .unwrap_or(0);
+    1 + last / 8 + 1
+}
+
+/// `[profibus.diagnosis]`, the device block, and
+/// `[[profibus.channel_diagnosis]]`, as [`DiagnosisPlan`] says; what the
 /// description has no place for, a W600 each.
 fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
-    if has_device_block(device) {
-        device_block(out, device, notes);
+    let plan = DiagnosisPlan::of(device);
+    if let Some(length) = plan.device_block {
+        if plan.device_block_chosen {
+            notes.chosen(
+                "profibus.diagnosis.length",
+                format!("the file does not say how long its device block is: {length}, the least its bits and areas need, the rest of its Max_Diag_Data_Len left to the channels' blocks"),
+            );
+        }
+        device_block(out, device, length, notes);
     }
     let d = &device.diagnosis;
     for t in &d.types {
@@ -880,17 +948,19 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
         );
     }
     for c in &d.channel {
-        notes.unsaid(
-            &format!("Channel_Diag({})", c.value),
-            &c.place,
-            "the description has no channel diagnosis",
-        );
+        match plan.channels_unsaid {
+            Some(why) => notes.unsaid(&format!("Channel_Diag({})", c.value), &c.place, why),
+            None => {
+                out.array_item("profibus.channel_diagnosis");
+                out.key("error_type", c.value);
+                out.string("name", &c.text.primary);
+            }
+        }
     }
 }
 
-fn device_block(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
+fn device_block(out: &mut TomlOut, device: &DpDevice, length: i64, notes: &mut Notes) {
     let d = &device.diagnosis;
-    let length = number_of(device, "Max_Diag_Data_Len").map_or(0, |n| n - 6);
     out.table("profibus.diagnosis");
     out.key("length", length);
     let bits: Vec<String> = d

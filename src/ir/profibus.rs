@@ -83,6 +83,9 @@ pub struct Profibus {
     pub prm_block_structure: Option<BlockStructure>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
+    /// `Channel_Diag`: the error types of a channel's diagnosis the card
+    /// reports, by error type.
+    pub channel_diagnosis: Vec<ChannelDiagnosis>,
     /// Max_Diag_Data_Len: the standard diagnosis and the device's block.
     pub max_diag_data_len: u8,
     /// Bitmap_Device, when the device has a symbol: the bitmap's name
@@ -519,6 +522,18 @@ impl Diagnosis {
     pub fn byte(&self, at: u8) -> Option<&Text> {
         self.bytes.iter().find(|(b, _)| *b == at).map(|(_, t)| t)
     }
+}
+
+/// An error type of a channel's diagnosis and the text the engineering tool
+/// shows for it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ChannelDiagnosis {
+    /// The 5-bit error type of the block's third byte.
+    pub error_type: u8,
+    pub name: Text,
+    /// Its constant in the layouts: `dp_channel_diagnosis_drive_ready`.
+    pub ident: Ident,
 }
 
 /// `Unit_Diag_Bit`: a bit's text, shown while it is set; `clear`:

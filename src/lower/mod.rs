@@ -6,6 +6,7 @@
 
 mod checks;
 mod choices;
+mod dp_channel;
 mod dp_modules;
 mod dp_params;
 mod dp_timing;

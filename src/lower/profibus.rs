@@ -122,6 +122,7 @@ pub fn lower(
     let limits = limits(cx, p, &modules, gateway);
     let features = features(cx, p, gsd_revision);
     fail_safe_required_supported(cx, p, fail_safe);
+    let channel_diagnosis = super::dp_channel::lower(cx, &p.channel_diagnosis);
     let isochronous = p
         .isochronous
         .as_ref()
@@ -182,18 +183,34 @@ pub fn lower(
             ident.placeholder,
         ),
         diagnosis,
+        channel_diagnosis: channel_diagnosis?,
     })
 }
 
 /// Max_Diag_Data_Len: the standard diagnosis and the device block, or what
-/// the description states, never less (E174).
+/// the description states, never less (E174). A card with channel
+/// diagnosis states it (E196): how many channels' blocks one diagnosis
+/// carries is the firmware's to say; it holds one at least.
 fn max_diag_data_len(cx: &mut Checker, p: &raw::Profibus, device_diag_len: Option<u8>) -> u8 {
-    let needed = STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0);
+    let mut needed = STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0);
+    let mut what = "the standard diagnosis and the device block";
+    if let Some(first) = p.channel_diagnosis.first() {
+        needed += super::dp_channel::BLOCK_BYTES;
+        what = "the standard diagnosis, the device block and one channel's block";
+        if p.max_diag_data_len.is_none() {
+            cx.push(
+                Diagnostic::error("E196", "channel diagnosis without a diagnosis length for its blocks")
+                    .at(first.span())
+                    .label("3 bytes for each channel's block")
+                    .help(format!("state max_diag_data_len in [profibus]: {needed} for one channel's block, and 3 more for each further block one diagnosis carries at most (the firmware's number)")),
+            );
+            return needed;
+        }
+    }
     let Some(stated) = &p.max_diag_data_len else {
         return needed;
     };
     let value = *stated.get_ref();
-    let what = "the standard diagnosis and the device block";
     at_least(
         cx,
         ("max_diag_data_len", value.into(), stated.span()),

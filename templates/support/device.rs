@@ -43,8 +43,9 @@ pub struct DpDevice {
     /// `None` for a card whose configuration is one module.
     pub node_totals: Option<NodeTotals>,
     pub user_prm: UserPrm,
-    /// The most bytes of the device-related diagnosis block, its header
-    /// included (Max_Diag_Data_Len less the standard 6); 0 without one.
+    /// The most bytes a diagnosis carries after the standard 6
+    /// (Max_Diag_Data_Len less 6): the device-related block, its header
+    /// included, and the channels' blocks of 3 bytes; 0 without either.
     pub diagnosis_len: usize,
     /// A drive's card's device-related diagnosis block: its bytes and the
     /// areas the GSD's `Unit_Diag_Area`s read.

@@ -580,6 +580,29 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     }
 }
 
+/// The error types the card reports in a PROFIBUS channel's diagnosis.
+pub(crate) fn dp_channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = ir
+        .profibus
+        .as_ref()
+        .filter(|p| !p.channel_diagnosis.is_empty())
+    else {
+        return;
+    };
+    doc.section("dp-channel-diagnosis", lang.t(w::DP_CHANNEL_DIAGNOSIS));
+    doc.para(text(lang.t(w::DP_CHANNEL_DIAGNOSIS_INTRO)));
+    let rows = p
+        .channel_diagnosis
+        .iter()
+        .map(|d| vec![code(d.error_type.to_string()), text(lang.text(&d.name))])
+        .collect();
+    doc.table(
+        lang.t(w::DP_CHANNEL_DIAGNOSIS),
+        &[lang.t(w::ERROR_TYPE), lang.t(w::NAME)],
+        rows,
+    );
+}
+
 /// The error types the card reports as PROFINET channel diagnosis.
 pub(crate) fn channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let Some(p) = ir

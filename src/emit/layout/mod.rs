@@ -373,6 +373,8 @@ pub(crate) struct Profibus {
     pub dpv1_status: Option<Bytes>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
+    /// The error types of a channel's diagnosis, one constant each.
+    pub channel_diagnosis: Option<Consts>,
 }
 
 /// User_Prm_Data decoded: what it holds.
@@ -438,7 +440,27 @@ fn profibus(ir: &Ir, p: &IrProfibus) -> Profibus {
         }),
         user_prm: user_prm(ir, p),
         diagnosis: p.diagnosis.as_ref().map(|d| diagnosis(&p.file_name, d)),
+        channel_diagnosis: dp_channel_diagnosis(p),
     }
+}
+
+/// The error types the card reports in a channel's diagnosis (bits 0-4 of
+/// its third byte), one constant each, named after its text.
+fn dp_channel_diagnosis(p: &IrProfibus) -> Option<Consts> {
+    let items: Vec<Const> = p
+        .channel_diagnosis
+        .iter()
+        .map(|d| Const {
+            name: d.ident.clone(),
+            ty: Ty::U8,
+            value: Val::Dec(d.error_type.into()),
+        })
+        .collect();
+    let doc = Doc::plain(format!(
+        "The error types of a channel's diagnosis, as {}'s Channel_Diag names them.",
+        p.file_name
+    ));
+    (!items.is_empty()).then_some(Consts { doc, items })
 }
 
 fn user_prm(ir: &Ir, p: &IrProfibus) -> UserPrm {
