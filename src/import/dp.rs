@@ -12,7 +12,8 @@ use crate::device::dp::{DpDevice, DpModule, Keyword};
 use crate::device::{Allowed, Field, ParameterData, Value};
 use crate::gsd::config::{identifiers, Direction, Identifier, Length};
 use crate::gsd::Value as GsdValue;
-use crate::spec::{DPV1_GSD_REVISION, IM_GSD_REVISION};
+use crate::ir::profibus::STANDARD_DIAG_BYTES;
+use crate::spec::{DPV1_GSD_REVISION, DP_CHANNEL_DIAG_BYTES, IM_GSD_REVISION};
 
 /// Keywords the description states, by their schema key.
 const IMPORTED: &[&str] = &[
@@ -856,11 +857,6 @@ fn alarms(out: &mut TomlOut, device: &DpDevice) {
     numbers(out, device, &[("sequence_mode_count", count)]);
 }
 
-/// The standard diagnosis' bytes, before the device block.
-const STANDARD_DIAG: i64 = 6;
-/// A channel's diagnosis block (`lower::dp_channel`).
-const CHANNEL_BLOCK: i64 = 3;
-
 /// How the import states a file's Max_Diag_Data_Len, which says how long
 /// the diagnosis may be and not what it carries. A file that gives the
 /// device block's bits or areas gets a device block (`[profibus.diagnosis]`)
@@ -880,8 +876,10 @@ struct DiagnosisPlan {
 impl DiagnosisPlan {
     fn of(device: &DpDevice) -> DiagnosisPlan {
         let d = &device.diagnosis;
-        let total = number_of(device, "Max_Diag_Data_Len").unwrap_or(STANDARD_DIAG);
-        let after_standard = total - STANDARD_DIAG;
+        let standard = i64::from(STANDARD_DIAG_BYTES);
+        let channel_block = i64::from(DP_CHANNEL_DIAG_BYTES);
+        let total = number_of(device, "Max_Diag_Data_Len").unwrap_or(standard);
+        let after_standard = total - standard;
         let has_block = !d.areas.is_empty() || !d.bits.is_empty();
         let no_room = Some("Max_Diag_Data_Len leaves no room for a channel's block of 3 bytes");
         if !has_block {
@@ -889,7 +887,7 @@ impl DiagnosisPlan {
                 device_block: None,
                 device_block_chosen: false,
                 max_diag_data_len: (after_standard > 0).then_some(total),
-                channels_unsaid: if after_standard < CHANNEL_BLOCK {
+                channels_unsaid: if after_standard < channel_block {
                     no_room
                 } else {
                     None
@@ -897,7 +895,7 @@ impl DiagnosisPlan {
             };
         }
         let least = least_device_block(device);
-        if d.channel.is_empty() || after_standard - least < CHANNEL_BLOCK {
+        if d.channel.is_empty() || after_standard - least < channel_block {
             return DiagnosisPlan {
                 device_block: Some(after_standard),
                 device_block_chosen: false,

@@ -1,7 +1,7 @@
 //! `[[profibus.channel_diagnosis]]`: the error types the card reports in a
-//! channel's diagnosis (`Channel_Diag`). A channel's diagnosis is a block of
-//! three bytes, the error type in bits 0 to 4 of the third (VIPA's IM 353
-//! manual, "Channel-related diagnostic"): 0 to 31.
+//! channel's diagnosis (`Channel_Diag`), a block of
+//! [`crate::spec::DP_CHANNEL_DIAG_BYTES`] whose third carries the error type
+//! in bits 0 to 4: 0 to 31.
 
 use super::checks::Checker;
 use crate::description::dp::ChannelDiagnosis as Given;
@@ -11,9 +11,6 @@ use std::collections::BTreeSet;
 use toml::Spanned;
 
 const MAX_ERROR_TYPE: i64 = 31;
-
-/// The bytes of one channel's diagnosis block.
-pub const BLOCK_BYTES: u8 = 3;
 
 /// Each entry in error type order; E101 for an error type beyond 5 bits,
 /// E105 for one given twice; `None` when one is wrong.

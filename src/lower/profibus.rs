@@ -195,7 +195,7 @@ fn max_diag_data_len(cx: &mut Checker, p: &raw::Profibus, device_diag_len: Optio
     let mut needed = STANDARD_DIAG_BYTES + device_diag_len.unwrap_or(0);
     let mut what = "the standard diagnosis and the device block";
     if let Some(first) = p.channel_diagnosis.first() {
-        needed += super::dp_channel::BLOCK_BYTES;
+        needed += crate::spec::DP_CHANNEL_DIAG_BYTES;
         what = "the standard diagnosis, the device block and one channel's block";
         if p.max_diag_data_len.is_none() {
             cx.push(

@@ -34,6 +34,11 @@ pub const GSD_KEY_WIDTH: usize = 28;
 pub const DPV1_GSD_REVISION: u8 = 3;
 pub const IM_GSD_REVISION: u8 = 5;
 
+/// The bytes of a channel's block in a DP slave's diagnosis: the module,
+/// the channel, the error type in bits 0 to 4 of the third (VIPA's IM 353
+/// manual, "Channel-related diagnostic").
+pub const DP_CHANNEL_DIAG_BYTES: u8 = 3;
+
 /// The characters that reorder text on screen (Unicode's Bidi_Control):
 /// a name with one could read differently from what a compiler or a
 /// terminal sees.
