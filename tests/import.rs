@@ -1370,6 +1370,11 @@ fn corpus_import(name: &str) -> Imported {
     import(name, &support::corpus_file(&format!("gsdml/{name}")))
 }
 
+/// A corpus GSDML file's text, for a test to change before importing it.
+fn corpus_gsdml_text(name: &str) -> String {
+    String::from_utf8(support::corpus_file(&format!("gsdml/{name}"))).unwrap()
+}
+
 /// The import of a corpus GSD file.
 fn corpus_gsd_import(name: &str) -> Imported {
     import(name, &support::corpus_file(&format!("gsd/{name}")))
@@ -1623,7 +1628,7 @@ fn isochronous_real_time_and_mode_import_with_the_files_values() {
 /// with why, and without isochronous mode, which needs RT_CLASS_3 (E188).
 #[test]
 fn class_c_without_its_rt_class_3_properties_is_imported_as_b_saying_why() {
-    let text = String::from_utf8(support::corpus_file(&format!("gsdml/{MOVI_C}"))).unwrap();
+    let text = corpus_gsdml_text(MOVI_C);
     let properties = "<RT_Class3Properties ForwardingMode=\"Relative\" MaxBridgeDelay=\"5500\" MaxNumberIR_FrameData=\"256\" StartupMode=\"Advanced;Legacy\"/>";
     assert_eq!(text.matches(properties).count(), 3, "one per DAP");
     let imported = import(MOVI_C, text.replace(properties, "").as_bytes());
@@ -2368,7 +2373,7 @@ fn the_profile_words_names_import() {
     assert_imported_and_kept(&[(FENA, says)], |change| {
         change.starts_with("item ") && change.contains(" data of submodule ")
     });
-    let fena = String::from_utf8(support::corpus_file(&format!("gsdml/{FENA}"))).unwrap();
+    let fena = corpus_gsdml_text(FENA);
     let telegram_2 = fena.find("ID=\"ID_MODULE_STD_TGM2\"").unwrap();
     let first_output = telegram_2 + fena[telegram_2..].find("TGM1_OUTPUT").unwrap();
     let renamed = format!(
@@ -2465,7 +2470,7 @@ fn the_access_points_and_ports_records_import() {
         .iter()
         .any(|m| m.starts_with("record ")));
     // MOVI-C with its first port's record 9002 taken out.
-    let text = String::from_utf8(support::corpus_file(&format!("gsdml/{MOVI_C}"))).unwrap();
+    let text = corpus_gsdml_text(MOVI_C);
     let start = text
         .find("<ParameterRecordDataItem Index=\"9002\"")
         .unwrap();
