@@ -150,6 +150,7 @@ pub const RULES: &[Rule] = &[
         "E196",
         "channel diagnosis without a diagnosis length for its blocks",
     ),
+    rule("E197", "a PNIO_Version later than the file's"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

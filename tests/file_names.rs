@@ -84,7 +84,7 @@ fn a_gsdml_file_names_vendor_and_family_may_hold_dashes_and_spaces() {
     let files = gsdc::compile(&ir).unwrap_or_else(|e| panic!("{e:#?}"));
     let (name, _) = descriptions::one(files, gsdc::ArtifactKind::Gsdml);
     assert!(
-        name.starts_with("GSDML-V2.32-Acme Drives-X4-Drive Interface-"),
+        name.starts_with("GSDML-V2.34-Acme Drives-X4-Drive Interface-"),
         "{name}"
     );
     for (vendor, family) in [

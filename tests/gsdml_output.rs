@@ -392,6 +392,26 @@ fn check_records(ir: &Ir, planned: &[ParameterRecord], records: &[Node], name: &
     }
 }
 
+/// A description of GSDML V2.34 whose access points are certified against
+/// PROFINET V2.33 (own_idents.toml, as SEW's MOVI-C's first): the version is
+/// in the file's name and schema location, each access point's PNIO_Version
+/// is the stated one, and gsdc's own check finds nothing in it (the PI
+/// schema's verdict is xsd.rs's).
+#[test]
+fn a_later_gsdml_version_names_the_file_and_its_access_points_their_own() {
+    let ir = fixture("own_idents.toml");
+    let (text, profinet) = gsdml_of(&ir);
+    assert_eq!(profinet.file_name, "GSDML-V2.34-Acme-X4-20260228.xml");
+    assert!(text.contains("..\\xsd\\GSDML-DeviceProfile-V2.34.xsd\""));
+    let doc = Document::parse(&text).unwrap();
+    let versions: Vec<&str> = elements(&doc, "DeviceAccessPointItem")
+        .map(|dap| attribute(dap, "PNIO_Version"))
+        .collect();
+    assert_eq!(versions, ["V2.33", "V2.33", "V2.33"]);
+    let found = gsdc::gsdml::check(&text, Some(&profinet.file_name));
+    assert!(found.is_empty(), "{found:#?}");
+}
+
 /// What the DAP must and must not say, beyond the schema.
 #[test]
 fn the_dap_keeps_the_rules_beyond_the_schema() {
@@ -401,7 +421,7 @@ fn the_dap_keeps_the_rules_beyond_the_schema() {
         let dap = elements(&doc, "DeviceAccessPointItem").next().unwrap();
         assert_eq!(
             attribute(dap, "PNIO_Version"),
-            profinet.gsdml_version.to_string(),
+            profinet.pnio_version.to_string(),
             "{name}"
         );
         assert_eq!(attribute(dap, "PhysicalSlots"), "0..1", "{name}");

@@ -583,6 +583,10 @@ pub struct Profinet {
     pub file_vendor: Option<Spanned<String>>,
     /// GSDML schema version, "2.32" by default.
     pub gsdml_version: Option<Spanned<String>>,
+    /// Every device access point's `PNIO_Version`, where not the file's
+    /// GSDML version: the PROFINET specification version the device is
+    /// certified against.
+    pub pnio_version: Option<Spanned<String>>,
     /// Every device access point's `RequiredSchemaVersion`: the oldest
     /// GSDML version an engineering tool must know to offer it.
     pub required_schema_version: Option<Spanned<String>>,

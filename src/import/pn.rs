@@ -496,7 +496,8 @@ fn vendor_and_family<'n>(
 
 /// The parts of a GSDML file name gsdc writes: vendor, family, date.
 struct FileName {
-    version: String,
+    /// The GSDML version the description's file declares.
+    version: Version,
     vendor: String,
     family: String,
     date: String,
@@ -534,7 +535,7 @@ fn file_name(file: &str, device: &PnDevice, notes: &mut Notes) -> Option<FileNam
         }
     };
     Some(FileName {
-        version: version.to_string().trim_start_matches('V').to_string(),
+        version,
         vendor: vendor.to_string(),
         family: family.to_string(),
         date: match parts.time {
@@ -1058,10 +1059,14 @@ fn profinet(
     out.key("vendor_id", id(device.vendor_id));
     out.key("device_id", id(device.device_id));
     out.string("file_vendor", &name.vendor);
-    out.string("gsdml_version", &name.version);
+    let without_v = |version: Version| version.to_string()[1..].to_string();
+    out.string("gsdml_version", &without_v(name.version));
     let attributes = &dap.item.attributes;
-    if let Some(version) = required_schema_version(attributes, notes) {
-        out.string("required_schema_version", &version.to_string()[1..]);
+    if let Some(version) = pnio_version(attributes, name.version, notes) {
+        out.string("pnio_version", &without_v(version));
+    }
+    if let Some(version) = required_schema_version(attributes, name.version, notes) {
+        out.string("required_schema_version", &without_v(version));
     }
     if let Some(basis) = implementation_type(attributes, notes) {
         out.string("implementation_type", basis);
@@ -1243,15 +1248,39 @@ fn one_line<'a>(a: &Attribute, value: &'a str, key: &str, notes: &mut Notes) -> 
 }
 
 /// The access point's RequiredSchemaVersion, where gsdc can write it: a
-/// version up to the one gsdc writes (E190); a later one is left out, which
-/// the round trip judges.
-fn required_schema_version(attributes: &[Attribute], notes: &mut Notes) -> Option<Version> {
-    let (a, text) = found(attributes, "RequiredSchemaVersion")?;
-    let written = crate::lower::DEFAULT_GSDML_VERSION;
-    let version = Version::parse(text).filter(|&v| v >= Version::new(1, 0) && v <= written);
+/// version up to the file's (E190); a later one is left out, which the
+/// round trip judges.
+fn required_schema_version(
+    attributes: &[Attribute],
+    file: Version,
+    notes: &mut Notes,
+) -> Option<Version> {
+    let why = format!("the description's required_schema_version is a GSDML version up to the file's, {file} (E190)");
+    dap_version(attributes, "RequiredSchemaVersion", file, notes, &why)
+}
+
+/// The access point's PNIO_Version where it is not the file's version
+/// (which the description's file declares by default): a version up to the
+/// file's (E197); a later one is left out, which the round trip judges.
+fn pnio_version(attributes: &[Attribute], file: Version, notes: &mut Notes) -> Option<Version> {
+    let why =
+        format!("the description's pnio_version is a version up to the file's, {file} (E197)");
+    dap_version(attributes, "PNIO_Version", file, notes, &why).filter(|&version| version != file)
+}
+
+/// A version an access point's attribute declares, from V1.0 to the
+/// file's; left out with `why` otherwise.
+fn dap_version(
+    attributes: &[Attribute],
+    name: &str,
+    file: Version,
+    notes: &mut Notes,
+    why: &str,
+) -> Option<Version> {
+    let (a, text) = found(attributes, name)?;
+    let version = Version::parse(text).filter(|&v| v >= Version::new(1, 0) && v <= file);
     if version.is_none() {
-        let why = format!("the description's required_schema_version is a GSDML version up to the file's, {written} (E190)");
-        notes.unsaid(&format!("RequiredSchemaVersion `{text}`"), &a.place, &why);
+        notes.unsaid(&format!("{name} `{text}`"), &a.place, why);
     }
     version
 }

@@ -10,6 +10,10 @@ pub use crate::spec::GsdmlVersion as Version;
 #[non_exhaustive]
 pub struct Profinet {
     pub gsdml_version: Version,
+    /// Every device access point's `PNIO_Version`: the PROFINET
+    /// specification version the device is certified against, at most the
+    /// file's (`gsdml_version` unless stated).
+    pub pnio_version: Version,
     /// Every device access point's `RequiredSchemaVersion`, when stated:
     /// the oldest GSDML version a tool must know to offer it.
     pub required_schema_version: Option<Version>,

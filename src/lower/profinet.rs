@@ -64,8 +64,16 @@ fn draft(
     })
 }
 
-/// The GSDML versions gsdc writes: it emits nothing a version lacks.
-pub(crate) const SUPPORTED_VERSIONS: [Version; 1] = [Version::new(2, 32)];
+/// The GSDML versions gsdc writes: it emits nothing a version lacks. What
+/// it writes in V2.32 the V2.44 schema accepts, and the corpus's V2.33 and
+/// V2.34 files (ABB's FENA, Hilscher's, rt-labs', SEW's MOVI-C) have each
+/// element and attribute of it; they are the drive files' versions that
+/// `gsdc import` reads.
+pub(crate) const SUPPORTED_VERSIONS: [Version; 3] = [
+    Version::new(2, 32),
+    Version::new(2, 33),
+    Version::new(2, 34),
+];
 pub(crate) const DEFAULT_VERSION: Version = Version::new(2, 32);
 /// gsdc's name of the interface submodule, where the description gives
 /// none.
@@ -85,6 +93,7 @@ pub fn lower(
     let gsdml_version = version(cx, p.gsdml_version.as_ref())?;
     let required_schema_version =
         required_schema_version(cx, p.required_schema_version.as_ref(), gsdml_version)?;
+    let pnio_version = pnio_version(cx, p.pnio_version.as_ref(), gsdml_version)?;
     let implementation_type = p
         .implementation_type
         .as_ref()
@@ -214,6 +223,7 @@ pub fn lower(
             date.compact()
         ),
         gsdml_version,
+        pnio_version,
         required_schema_version,
         implementation_type,
         product_family,
@@ -549,8 +559,8 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
     version
 }
 
-/// `RequiredSchemaVersion`: a GSDML version from the first, V1.0, to the
-/// file's own; an access point cannot require a version later than the
+/// `RequiredSchemaVersion`: the oldest GSDML version an engineering tool
+/// must know to offer the access point, which cannot be later than the
 /// file that describes it (E190). `Some(None)` when the description states
 /// none.
 fn required_schema_version(
@@ -561,6 +571,53 @@ fn required_schema_version(
     let Some(given) = given else {
         return Some(None);
     };
+    let refusal = |text: &str| {
+        Diagnostic::error(
+            "E190",
+            format!("no device access point of a GSDML {file} file can require GSDML {text}"),
+        )
+        .help(format!(
+            "write the oldest version whose elements the access point needs, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V",
+            &file.to_string()[1..]
+        ))
+    };
+    up_to_file(cx, given, file, refusal).map(Some)
+}
+
+/// `PNIO_Version`: the PROFINET specification version the device is
+/// certified against (p-net's `creating_gsdml_files.rst`), the file's own
+/// unless stated. A file of one version cannot describe what a later one
+/// added, and every access point of the corpus's files declares at most its
+/// file's version (E197).
+fn pnio_version(
+    cx: &mut Checker,
+    given: Option<&Spanned<String>>,
+    file: Version,
+) -> Option<Version> {
+    let Some(given) = given else {
+        return Some(file);
+    };
+    let refusal = |text: &str| {
+        Diagnostic::error(
+            "E197",
+            format!("no device access point of a GSDML {file} file can declare PNIO_Version {text}"),
+        )
+        .help(format!(
+            "write the PROFINET version the card is certified against, as the manual states it, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V; or raise `gsdml_version`",
+            &file.to_string()[1..]
+        ))
+    };
+    up_to_file(cx, given, file, refusal)
+}
+
+/// A version the description states for its access points, from the
+/// first, V1.0, to the file's own; `refusal`'s error at it otherwise.
+fn up_to_file(
+    cx: &mut Checker,
+    given: &Spanned<String>,
+    file: Version,
+    refusal: impl Fn(&str) -> Diagnostic,
+) -> Option<Version> {
     let text = given.get_ref();
     let first = Version::new(1, 0);
     let version = (!text.starts_with(['V', 'v']))
@@ -569,19 +626,12 @@ fn required_schema_version(
         .filter(|v| (first..=file).contains(v));
     if version.is_none() {
         cx.push(
-            Diagnostic::error(
-                "E190",
-                format!("no device access point of a GSDML {file} file can require GSDML {text}"),
-            )
-            .at(given.span())
-            .label("not a version from 1.0 to the file's")
-            .help(format!(
-                "write the oldest version whose elements the access point needs, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V",
-                &file.to_string()[1..]
-            )),
+            refusal(text)
+                .at(given.span())
+                .label("not a version from 1.0 to the file's"),
         );
     }
-    version.map(Some)
+    version
 }
 
 /// The GSDML file name's date: a TOML local date, or a local date-time in

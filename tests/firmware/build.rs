@@ -29,6 +29,7 @@ fn main() {
         .map(|name| descriptions.join(name))
         .chain(FIXTURES.iter().map(|name| fixtures.join(name)))
         .collect();
+    remove_device_files(Path::new(&out_dir));
     let mut examples = String::from(EXAMPLE_TYPE);
     for path in &paths {
         gsdc::build::generate(path, &out_dir).unwrap_or_else(|e| panic!("{e}"));
@@ -43,6 +44,22 @@ fn main() {
         }
     }
     std::fs::write(Path::new(&out_dir).join("examples.rs"), examples).expect("OUT_DIR is writable");
+}
+
+/// The GSD and GSDML files of an earlier build: a device file's name holds
+/// the description's version and date, so a changed one would leave the old
+/// file beside the new in OUT_DIR, which cargo keeps between builds, and
+/// tests/device_tables.rs reads every device file there.
+fn remove_device_files(out_dir: &Path) {
+    let Ok(entries) = std::fs::read_dir(out_dir) else {
+        return;
+    };
+    for path in entries.map(|e| e.expect("OUT_DIR is readable").path()) {
+        let extension = path.extension().map(|e| e.to_ascii_lowercase());
+        if matches!(extension.as_ref().and_then(|e| e.to_str()), Some("xml" | "gsd")) {
+            std::fs::remove_file(&path).expect("OUT_DIR is writable");
+        }
+    }
 }
 
 /// Names that are not of most numberings: tests/numbering.rs reads each
