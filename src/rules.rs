@@ -151,6 +151,10 @@ pub const RULES: &[Rule] = &[
         "channel diagnosis without a diagnosis length for its blocks",
     ),
     rule("E197", "a PNIO_Version later than the file's"),
+    rule(
+        "E198",
+        "an attribute the file's GSDML version is not known to have",
+    ),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -1538,17 +1538,17 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
 }
 
 /// MOVI-C's stack beyond FENA's (its line 26: `PNIO_Version="V2.33"` in a
-/// V2.34 file, `PowerOnToCommReady="5000"`, `RequiredSchemaVersion="V2.32"`;
+/// V2.34 file, `PowerOnToCommReady="5000"`, `RequiredSchemaVersion="V2.32"`,
+/// `AdaptsRealIdentification="true"`;
 /// line 38: `IOConfigData MaxInputLength="100" MaxOutputLength="100"
 /// MaxDataLength="200"`; line 82, the interface:
 /// `NetworkComponentDiagnosisSupported="true"`; line 86: `TimingProperties
 /// SendClock="32 64 128" ... PreferredSendClock="32"`; lines 92 and 116,
-/// both ports: `PortDeactivationSupported` and `CheckMAUTypeSupported`
-/// true, `LinkStateDiagnosisCapability="Up+Down"`) imports into `[profinet]`
+/// both ports: `PortDeactivationSupported`, `CheckMAUTypeSupported` and
+/// `CheckMAUTypeDifferenceSupported` true,
+/// `LinkStateDiagnosisCapability="Up+Down"`) imports into `[profinet]`
 /// and `[profinet.stack]`, and the round trip finds none of these
-/// attributes changed. `AdaptsRealIdentification` and
-/// `CheckMAUTypeDifferenceSupported`, which the description has no keys
-/// for, are left out, each a warning, and the round trip names them.
+/// attributes changed.
 #[test]
 fn movi_cs_stack_attributes_import() {
     let imported = corpus_import(MOVI_C);
@@ -1557,7 +1557,7 @@ fn movi_cs_stack_attributes_import() {
         &[
             "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
             "gsdml_version = \"2.34\"\npnio_version = \"2.33\"\nrequired_schema_version = \"2.32\"\n",
-            "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\nlink_state_diagnosis = \"Up+Down\"\n",
+            "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\ncheck_mau_type_difference = true\nadapts_real_identification = true\nlink_state_diagnosis = \"Up+Down\"\n",
             "max_input_length = 100\nmax_output_length = 100\nmax_data_length = 200\n",
         ],
     );
@@ -1570,6 +1570,8 @@ fn movi_cs_stack_attributes_import() {
         "NetworkComponentDiagnosisSupported",
         "PortDeactivationSupported",
         "CheckMAUTypeSupported",
+        "CheckMAUTypeDifferenceSupported",
+        "AdaptsRealIdentification",
         "LinkStateDiagnosisCapability",
     ];
     for code in ["E601", "W600"] {
@@ -1580,17 +1582,46 @@ fn movi_cs_stack_attributes_import() {
             );
         }
     }
-    for left_out in [
-        "AdaptsRealIdentification",
-        "CheckMAUTypeDifferenceSupported",
-    ] {
-        let named = |code| {
-            messages(&imported, code)
-                .iter()
-                .any(|m| m.contains(left_out))
-        };
-        assert!(named("W600") && named("E601"), "{left_out}");
-    }
+}
+
+/// An attribute of a later GSDML version than the file gsdc writes is left
+/// out, a warning that names E198, and the round trip names the change:
+/// MOVI-C's text under a V2.33 name keeps `CheckMAUTypeDifferenceSupported`
+/// (V2.33 has it: Hilscher's file) and leaves out `AdaptsRealIdentification`
+/// (its line 26), which no file at hand shows before V2.34.
+#[test]
+fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
+    let name = MOVI_C.replace("V2.34", "V2.33");
+    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let toml = draft(&imported);
+    assert!(toml.contains("check_mau_type_difference = true\n"));
+    assert!(!toml.contains("adapts_real_identification"));
+    let w600 = messages(&imported, "W600");
+    let left_out: Vec<&&str> = w600
+        .iter()
+        .filter(|m| m.starts_with("AdaptsRealIdentification"))
+        .collect();
+    assert_eq!(left_out.len(), 1, "{w600:#?}");
+    assert!(left_out[0].contains("GSDML 2.34 and later (E198)"));
+    assert!(left_out[0].ends_with("the description's file is V2.33"));
+    let changed = messages(&imported, "E601");
+    assert!(changed.iter().any(|m| m.contains(
+        r#"DAP "DFC2xA V1.0" (0x00007532) AdaptsRealIdentification (breaking): "true" removed"#
+    )));
+    assert!(!changed
+        .iter()
+        .any(|m| m.contains("CheckMAUTypeDifferenceSupported")));
+    // Under a V2.32 name, each port's (lines 92 and 116) is left out too.
+    let name = MOVI_C.replace("V2.34", "V2.32");
+    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let lines: Vec<usize> = imported
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "W600")
+        .filter(|d| d.message.starts_with("CheckMAUTypeDifferenceSupported"))
+        .map(|d| gsdc::line_col(&imported.text, d.span.clone().unwrap().start).0)
+        .collect();
+    assert_eq!(lines, [92, 116]);
 }
 
 /// MOVI-C's isochronous real time and isochronous mode import with the
@@ -2617,7 +2648,7 @@ fn a_draft_of_two_files_names_the_file_of_each_change() {
     let (both, (gsd_name, _), (gsdml_name, other)) = md810_both_with_gsdml_changed(|gsdml| {
         gsdml.replace(
             "<PortSubmoduleItem ",
-            r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
+            r#"<PortSubmoduleItem SupportsRingportConfig="true" "#,
         )
     });
     assert_eq!(both.description, None);
@@ -2637,7 +2668,7 @@ fn a_draft_of_two_files_names_the_file_of_each_change() {
         let at = format!("{gsdml_name}:{line}: port ");
         assert!(change.starts_with(&at), "{change}");
         assert!(
-            change.ends_with(r#"CheckMAUTypeDifferenceSupported (breaking): "true" removed"#),
+            change.ends_with(r#"SupportsRingportConfig (breaking): "true" removed"#),
             "{change}"
         );
     }
@@ -2648,7 +2679,7 @@ fn a_draft_of_two_files_names_the_file_of_each_change() {
         .all(|l| files.iter().any(|f| l.starts_with(f.as_str()))));
     for line in &port_lines {
         let at = format!(
-            "{gsdml_name}:{line}: PortSubmoduleItem CheckMAUTypeDifferenceSupported is not imported"
+            "{gsdml_name}:{line}: PortSubmoduleItem SupportsRingportConfig is not imported"
         );
         assert!(left_out.iter().any(|l| l.starts_with(&at)), "{left_out:#?}");
     }
@@ -2727,7 +2758,7 @@ fn the_draft_option_writes_what_would_be_refused_as_a_draft() {
     }
     let changed = gsdml.replace(
         "<PortSubmoduleItem ",
-        r#"<PortSubmoduleItem CheckMAUTypeDifferenceSupported="true" "#,
+        r#"<PortSubmoduleItem SupportsRingportConfig="true" "#,
     );
     std::fs::write(changed_dir.join(&name), changed).unwrap();
     let md810_draft = changed_dir.join("out").join("md810.toml");

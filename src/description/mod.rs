@@ -880,6 +880,11 @@ pub struct Stack {
     pub port_deactivation: Option<Spanned<bool>>,
     pub check_mau_type: Option<Spanned<bool>>,
     pub link_state_diagnosis: Option<Spanned<LinkStateDiagnosis>>,
+    /// Each port's `CheckMAUTypeDifferenceSupported` (GSDML V2.33 and
+    /// later).
+    pub check_mau_type_difference: Option<Spanned<bool>>,
+    /// `AdaptsRealIdentification` (GSDML V2.34 and later).
+    pub adapts_real_identification: Option<Spanned<bool>>,
 }
 
 /// The link changes a port reports as diagnosis, as GSDML names them.

@@ -418,6 +418,9 @@ fn stated_stack_attributes(stack: &Stack) -> Vec<(&'static str, String)> {
     if let Some(ms) = stack.power_on_to_comm_ready {
         attributes.push(("PowerOnToCommReady", ms.to_string()));
     }
+    if stack.adapts_real_identification {
+        attributes.push(("AdaptsRealIdentification", "true".to_string()));
+    }
     attributes
 }
 
@@ -426,6 +429,10 @@ fn stated_port_attributes(stack: &Stack) -> Vec<(&'static str, &'static str)> {
     let flags = [
         ("PortDeactivationSupported", stack.port_deactivation),
         ("CheckMAUTypeSupported", stack.check_mau_type),
+        (
+            "CheckMAUTypeDifferenceSupported",
+            stack.check_mau_type_difference,
+        ),
     ];
     let mut attributes: Vec<_> = flags
         .into_iter()

@@ -57,6 +57,7 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IOConfigData@MaxOutputLength", None),
     ("IOConfigData@MaxDataLength", None),
     ("PowerOnToCommReady", None),
+    ("AdaptsRealIdentification", None),
     // Read by `subslot_labels`, or left out there with its reason.
     ("SubslotList/SubslotItem@SubslotNumber", None),
     ("SubslotList/SubslotItem@TextId", None),
@@ -94,6 +95,7 @@ const PORT_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IsDefaultRingport", Some("true")),
     ("PortDeactivationSupported", None),
     ("CheckMAUTypeSupported", None),
+    ("CheckMAUTypeDifferenceSupported", None),
     ("LinkStateDiagnosisCapability", None),
 ];
 
@@ -175,8 +177,14 @@ pub(super) fn describe(
     }
     let name = file_name(file, device, notes)?;
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
-    let first_stack = stack::Declared::of(dap, &modules, notes);
-    let later = daps::later_daps((dap, others), &first_stack, device_info, &modules, notes);
+    let first_stack = stack::Declared::of(dap, &modules, name.version, notes);
+    let later = daps::later_daps(
+        (dap, others),
+        (&first_stack, name.version),
+        device_info,
+        &modules,
+        notes,
+    );
     let timing = irt::Declared::of(dap, &modules, notes);
     unsaid_extras(device, (dap, &later), &modules, &timing, notes);
     let mut out = TomlOut::default();

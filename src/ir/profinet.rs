@@ -449,6 +449,11 @@ pub struct Stack {
     pub port_deactivation: bool,
     pub check_mau_type: bool,
     pub link_state_diagnosis: Option<&'static str>,
+    /// Each port's `CheckMAUTypeDifferenceSupported`, written when true.
+    pub check_mau_type_difference: bool,
+    /// The device access point's `AdaptsRealIdentification`, written when
+    /// true.
+    pub adapts_real_identification: bool,
 }
 
 /// A way the device may get its IP address.

@@ -10,7 +10,9 @@ use crate::ir::profinet::{
     TimeOfDay, Version, FIRST_PORT_SUBSLOT,
 };
 use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
+use crate::spec::Introduced;
 use std::collections::{BTreeMap, BTreeSet};
+use std::ops::Range;
 use submodule_records::Whose;
 use toml::Spanned;
 
@@ -204,6 +206,7 @@ pub fn lower(
         ports,
         media_redundancy,
         device,
+        version: gsdml_version,
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
@@ -557,6 +560,36 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
         );
     }
     version
+}
+
+/// E198 at `span` when the file's GSDML version is older than the one a
+/// file at hand first shows `introduced` in: gsdc writes nothing a version
+/// lacks, and no source at hand says that an older one has it.
+pub(crate) fn written_in(
+    cx: &mut Checker,
+    span: Range<usize>,
+    file: Version,
+    introduced: Introduced,
+) {
+    if file >= introduced.version {
+        return;
+    }
+    let since = &introduced.version.to_string()[1..];
+    cx.push(
+        Diagnostic::error(
+            "E198",
+            format!(
+                "{} is not written in a GSDML {file} file: gsdc writes it in {since} and later",
+                introduced.name
+            ),
+        )
+        .at(span)
+        .label(format!("needs gsdml_version = \"{since}\" or later"))
+        .help(format!(
+            "set `gsdml_version = \"{since}\"` (or later) in [profinet], or leave this out: the first file at hand that has it is {}, and no source at hand shows it in an older version",
+            introduced.shown_by
+        )),
+    );
 }
 
 /// `RequiredSchemaVersion`: the oldest GSDML version an engineering tool

@@ -46,3 +46,30 @@ impl fmt::Display for Version {
         }
     }
 }
+
+/// A GSDML attribute or element gsdc writes only in files of the version
+/// that a file at hand first shows it in, and later: no schema older than
+/// V2.44 is at hand to say when it came, and gsdc writes nothing a version
+/// lacks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Introduced {
+    /// The attribute or element, as GSDML names it.
+    pub name: &'static str,
+    pub version: Version,
+    /// The file that shows it in that version.
+    pub shown_by: &'static str,
+}
+
+/// Each port's `CheckMAUTypeDifferenceSupported`.
+pub const CHECK_MAU_TYPE_DIFFERENCE: Introduced = Introduced {
+    name: "CheckMAUTypeDifferenceSupported",
+    version: Version::new(2, 33),
+    shown_by: "Hilscher's GSDML-V2.33-HILSCHER-NETX_51-RE_PNS-20170216.xml",
+};
+
+/// The device access point's `AdaptsRealIdentification`.
+pub const ADAPTS_REAL_IDENTIFICATION: Introduced = Introduced {
+    name: "AdaptsRealIdentification",
+    version: Version::new(2, 34),
+    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+};

@@ -8,6 +8,7 @@ use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
+use crate::ir::profinet::Version;
 
 /// What the description's device access points share: the first's value
 /// stands for every one (`[profinet]` states it once).
@@ -49,7 +50,7 @@ impl DapEntry<'_> {
 /// DeviceIdentity's info text: what an entry without `info` gets.
 pub(super) fn later_daps<'a>(
     (first, others): (&Dap, &'a [Dap]),
-    first_stack: &Declared,
+    (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
     modules: &[Recognised],
     notes: &mut Notes,
@@ -59,7 +60,7 @@ pub(super) fn later_daps<'a>(
     let mut later = Vec::new();
     for dap in others {
         let keys = entry_keys((first, dap), device_info, modules, &taken).and_then(|mut keys| {
-            let stack = Declared::of(dap, modules, notes).over_first(first_stack)?;
+            let stack = Declared::of(dap, modules, file, notes).over_first(first_stack)?;
             if !stack.is_empty() {
                 let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
                 keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));

@@ -7,7 +7,8 @@ use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::gsdml::values::ValueList;
 use crate::import::Notes;
-use crate::ir::profinet::{AddressAssignment, MODULE_SLOT};
+use crate::ir::profinet::{AddressAssignment, Version, MODULE_SLOT};
+use crate::spec::{Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE};
 use std::ops::RangeInclusive;
 
 /// One device access point's stack, as its file declares it; a value
@@ -31,15 +32,17 @@ pub(super) struct Declared {
     network_component_diagnosis: bool,
     /// Each port's flags, in [`PORT_FLAGS`]' order, and link state
     /// diagnosis.
-    port_flags: [bool; 2],
+    port_flags: [bool; 3],
     link_state_diagnosis: Option<String>,
+    adapts_real_identification: bool,
 }
 
 /// The ports' flags: each port's attribute, and the key that says it for
 /// every port.
-const PORT_FLAGS: [(&str, &str); 2] = [
+const PORT_FLAGS: [(&str, &str); 3] = [
     ("PortDeactivationSupported", "port_deactivation"),
     ("CheckMAUTypeSupported", "check_mau_type"),
+    (CHECK_MAU_TYPE_DIFFERENCE.name, "check_mau_type_difference"),
 ];
 const LINK_STATES: [&str; 3] = ["Up", "Down", "Up+Down"];
 
@@ -60,7 +63,9 @@ impl IoLimit {
 
 impl Declared {
     /// `modules` are those the import takes; the DAP's own offer counts.
-    pub fn of(dap: &Dap, modules: &[Recognised], notes: &mut Notes) -> Declared {
+    /// `file` is the GSDML version the description's file declares: an
+    /// attribute gsdc writes only from a later version is left out.
+    pub fn of(dap: &Dap, modules: &[Recognised], file: Version, notes: &mut Notes) -> Declared {
         let attributes = &dap.item.attributes;
         let interface = submodules_of(dap, SubmoduleKind::Interface).next();
         let flag = |name: &str| attribute(attributes, name).is_some_and(is_true);
@@ -110,8 +115,12 @@ impl Declared {
             power_on_to_comm_ready: power_on_to_comm_ready(attributes, notes),
             network_component_diagnosis: interface_flag("NetworkComponentDiagnosisSupported"),
             port_flags: PORT_FLAGS.map(|(name, key)| {
-                every_port(dap, name, key, notes, |value| value.is_some_and(is_true))
+                let on = every_port(dap, name, key, notes, |value| value.is_some_and(is_true));
+                on && (name != CHECK_MAU_TYPE_DIFFERENCE.name
+                    || written_in(CHECK_MAU_TYPE_DIFFERENCE, file, dap, notes))
             }),
+            adapts_real_identification: flag(ADAPTS_REAL_IDENTIFICATION.name)
+                && written_in(ADAPTS_REAL_IDENTIFICATION, file, dap, notes),
             link_state_diagnosis: link_state_diagnosis(dap, notes),
             address_assignment: address_assignment(dap, notes),
             device_access,
@@ -159,8 +168,9 @@ impl Declared {
             last_slot: None,
             power_on_to_comm_ready: None,
             network_component_diagnosis: false,
-            port_flags: [false; 2],
+            port_flags: [false; 3],
             link_state_diagnosis: None,
+            adapts_real_identification: false,
         }
     }
 
@@ -223,6 +233,12 @@ impl Declared {
         {
             flag(&mut keys, key, mine, theirs);
         }
+        flag(
+            &mut keys,
+            "adapts_real_identification",
+            self.adapts_real_identification,
+            base.adapts_real_identification,
+        );
         if self.link_state_diagnosis != base.link_state_diagnosis {
             keys.extend(
                 self.link_state_diagnosis
@@ -395,6 +411,29 @@ fn every_port<T: PartialEq + Default>(
         );
     }
     first_value
+}
+
+/// Whether the description's file, of GSDML version `file`, can say the
+/// attribute the access point (or its ports) declares true: gsdc writes it
+/// only from the version a file at hand first shows it in (E198); left out
+/// at each place that declares it otherwise.
+fn written_in(introduced: Introduced, file: Version, dap: &Dap, notes: &mut Notes) -> bool {
+    if file >= introduced.version {
+        return true;
+    }
+    let name = introduced.name;
+    let why = format!(
+        "gsdc writes it in GSDML {} and later (E198), the first version a file at hand shows it in ({}), and the description's file is {file}",
+        &introduced.version.to_string()[1..],
+        introduced.shown_by
+    );
+    let ports = submodules_of(dap, SubmoduleKind::Port).map(|p| &p.attributes[..]);
+    for attributes in std::iter::once(&dap.item.attributes[..]).chain(ports) {
+        if let Some((a, value)) = found(attributes, name).filter(|(_, v)| is_true(v)) {
+            notes.unsaid(&format!("{name}=\"{value}\""), &a.place, &why);
+        }
+    }
+    false
 }
 
 /// AddressAssignment's ways, when each is one the description names, once.

@@ -6,7 +6,7 @@
 use super::{idents::DapIdents, interface, io, port, stack, Checker};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Dap, Module, Port, Stack, TextRef};
+use crate::ir::profinet::{Dap, Module, Port, Stack, TextRef, Version};
 use crate::ir::{Device, Text};
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -19,6 +19,9 @@ pub struct First<'a> {
     pub ports: Vec<Port>,
     pub media_redundancy: bool,
     pub device: &'a Device,
+    /// The file's GSDML version, which bounds what every DAP's stack
+    /// writes.
+    pub version: Version,
 }
 
 /// Every DAP, the first first; E176 when two of them, or a DAP and a
@@ -31,10 +34,10 @@ pub fn lower(
 ) -> Option<Vec<Dap>> {
     let all_modules: Vec<usize> = (0..modules.len()).collect();
     let needed = io::max_lengths(modules.iter(), first.ports.len());
-    let device = first.device;
+    let (device, version) = (first.device, first.version);
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
-    let first_stack = stack::lower(cx, &p.stack, &Stack::default(), "profinet.stack")?;
+    let first_stack = stack::lower(cx, (&p.stack, &Stack::default()), "profinet.stack", version)?;
     let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
@@ -57,7 +60,7 @@ pub fn lower(
     }];
     let mut complete = true;
     for (index, given) in p.daps.iter().enumerate() {
-        match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules) {
+        match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules, version) {
             Some(dap) => daps.push(dap),
             None => complete = false,
         }
@@ -73,6 +76,7 @@ fn lower_entry(
     p: &raw::Profinet,
     first: &Dap,
     modules: &[Module],
+    version: Version,
 ) -> Option<Dap> {
     let number = index + 2;
     let what = |key: &str| format!("profinet.daps[{index}].{key}");
@@ -130,7 +134,7 @@ fn lower_entry(
     let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
     let needed = io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
-    let stack = stack::lower(cx, &given.stack, &first.stack, &what("stack"))?;
+    let stack = stack::lower(cx, (&given.stack, &first.stack), &what("stack"), version)?;
     let io = stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
     Some(Dap {

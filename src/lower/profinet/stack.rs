@@ -4,14 +4,20 @@
 
 use crate::description::{self as raw, AddressAssignment as RawAssignment, LinkStateDiagnosis};
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{AddressAssignment, Stack, MODULE_SLOT};
+use crate::ir::profinet::{AddressAssignment, Stack, Version, MODULE_SLOT};
 use crate::lower::checks::Checker;
+use crate::spec::{ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE};
 use toml::Spanned;
 
 /// The stack `given` states over `inherited` (gsdc's defaults for the
 /// first DAP); `at` is the table's path. E101 for a number out of its
 /// range, E184 for device access ARs without device access.
-pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) -> Option<Stack> {
+pub fn lower(
+    cx: &mut Checker,
+    (given, inherited): (&raw::Stack, &Stack),
+    at: &str,
+    file: Version,
+) -> Option<Stack> {
     let flag = |key: &Option<Spanned<bool>>, inherited: bool| {
         key.as_ref().map_or(inherited, |k| *k.get_ref())
     };
@@ -79,8 +85,29 @@ pub fn lower(cx: &mut Checker, given: &raw::Stack, inherited: &Stack, at: &str) 
             .as_ref()
             .map(|l| link_state_token(*l.get_ref()))
             .or(inherited.link_state_diagnosis),
+        check_mau_type_difference: flag(
+            &given.check_mau_type_difference,
+            inherited.check_mau_type_difference,
+        ),
+        adapts_real_identification: flag(
+            &given.adapts_real_identification,
+            inherited.adapts_real_identification,
+        ),
     };
     check_device_access(cx, given, &stack)?;
+    let later = [
+        (&given.check_mau_type_difference, CHECK_MAU_TYPE_DIFFERENCE),
+        (
+            &given.adapts_real_identification,
+            ADAPTS_REAL_IDENTIFICATION,
+        ),
+    ];
+    for (key, introduced) in later {
+        let stated_true = key.as_ref().filter(|k| *k.get_ref());
+        if let Some(key) = stated_true {
+            super::written_in(cx, key.span(), file, introduced);
+        }
+    }
     Some(stack)
 }
 
