@@ -151,10 +151,8 @@ pub const RULES: &[Rule] = &[
         "channel diagnosis without a diagnosis length for its blocks",
     ),
     rule("E197", "a PNIO_Version later than the file's"),
-    rule(
-        "E198",
-        "an attribute the file's GSDML version is not known to have",
-    ),
+    rule("E198", "what the file's GSDML version is not known to have"),
+    rule("E199", "not a version"),
     rule("W101", "PROFIBUS ident number is a placeholder"),
     rule("W103", "a value of the description's own choice"),
     rule("W104", "a value gsdc chose"),

@@ -550,6 +550,31 @@ fn gsd_diagnosis_texts_values_and_areas() {
     );
 }
 
+/// A PROFIenergy energy saving mode's ID is the number the controller asks
+/// for, not a name in the file: SEW's MOVI-C with its mode 2 renumbered 3
+/// (in each of its three access points' own submodules, line 75 the first)
+/// is one breaking change each.
+#[test]
+fn an_energy_saving_modes_number_breaks() {
+    let name = "GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
+    let text = String::from_utf8(support::corpus_file(&format!("gsdml/{name}"))).unwrap();
+    let (from, to) = (
+        r#"EnergySavingModeItem ID="2""#,
+        r#"EnergySavingModeItem ID="3""#,
+    );
+    assert_eq!(text.matches(from).count(), 3);
+    let found = diff(text.as_bytes(), text.replace(from, to).as_bytes());
+    assert_eq!(found.len(), 3, "{found:#?}");
+    for change in &found {
+        assert_eq!(
+            (change.class, change.kind, change.change.as_str()),
+            (Breaking, Kind::Feature, r#""2 255" → "3 255""#)
+        );
+        assert!(change.subject.ends_with("EnergySavingModeItem@ID"));
+    }
+    assert_eq!(found[0].old.as_ref().map(|p| p.line), Some(75));
+}
+
 /// What no shipped description builds, in a real GSD (profirust's mock
 /// slave): choice texts and choices, bit areas, slots.
 #[test]

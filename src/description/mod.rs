@@ -694,6 +694,45 @@ pub struct Profinet {
     /// The parameter records of every port.
     #[serde(default)]
     pub port_records: Vec<Spanned<SubmoduleRecord>>,
+    /// The card's PROFIenergy, as every device access point's own
+    /// submodule declares it.
+    pub profienergy: Option<Spanned<ProfiEnergy>>,
+}
+
+/// `[profinet.profienergy]`: the PROFIenergy profile the card implements,
+/// each key the attribute of the schema's `PROFIenergy` element (and the
+/// device access point's `PROFIenergyASE_Supported`) it writes.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProfiEnergy {
+    /// `ProfileVersion`, without its V: `"1.2"`.
+    pub profile_version: Spanned<String>,
+    /// `EntityClass` 1 to 3 and `EntitySubclass` 1 to 2; unwritten when
+    /// left out.
+    pub entity_class: Option<Spanned<u8>>,
+    pub entity_subclass: Option<Spanned<u8>>,
+    /// The device access point's `PROFIenergyASE_Supported`.
+    pub ase: Option<Spanned<bool>>,
+    /// `PESAP_uses_PROFIenergyASE`.
+    pub pesap_uses_ase: Option<Spanned<bool>>,
+    /// `EnergySavingModeList`: the card's energy saving modes.
+    #[serde(default)]
+    pub modes: Vec<Spanned<EnergySavingMode>>,
+}
+
+/// `[[profinet.profienergy.modes]]`: an `EnergySavingModeItem`, its times
+/// in ms.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EnergySavingMode {
+    /// `ID`: the mode's number, which the controller and the card use.
+    pub id: Spanned<u8>,
+    /// `TimeToPause`: the most time the card takes to enter the mode.
+    pub time_to_pause: Spanned<u32>,
+    /// `RTTO`: the time it takes from the mode back to ready to operate.
+    pub regular_time_to_operate: Spanned<u32>,
+    /// `TimeMinLengthOfStay`: the least time it stays in the mode.
+    pub min_length_of_stay: Spanned<u32>,
 }
 
 /// `[[profinet.access_point_records]]`, `[[profinet.port_records]]`: a

@@ -64,6 +64,11 @@ const RESOLVED_LISTS: &[&str] = &[
     "ExternalTextList",
 ];
 
+/// Elements whose `ID` is a number of their profile, not a name in the
+/// file (the schema's Unsigned8T and Unsigned16T): a PROFIenergy energy
+/// saving mode's and a measurement value's ID, which a controller sends.
+const NUMBERED_BY_ID: &[&str] = &["EnergySavingModeItem", "MeasurementValue"];
+
 /// Where the typed parts of a DAP, module or submodule are, which
 /// [`Reader::flatten`] leaves out.
 const ITEM_PARTS: &[&str] = &[
@@ -650,7 +655,7 @@ impl<'a> Reader<'a> {
     /// [`Reader::flatten`] below the relative path `rel`, into `out`. An
     /// attribute met again (of a repeated element) joins its values with a
     /// blank. Element IDs below `node` are left out: they name, they do
-    /// not mean.
+    /// not mean; but those of [`NUMBERED_BY_ID`].
     fn flatten_into(
         &self,
         node: El<'_, '_>,
@@ -686,7 +691,7 @@ impl<'a> Reader<'a> {
             let name = attribute.name();
             if attribute.namespace().is_some()
                 || (own && walk.own_skipped.contains(&name))
-                || (!own && name == "ID")
+                || (!own && name == "ID" && !NUMBERED_BY_ID.contains(&element.tag_name().name()))
             {
                 continue;
             }

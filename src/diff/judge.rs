@@ -278,6 +278,8 @@ pub const GSDML: &[Rule] = &[
     rule("ApplicationLengthIncludesIOxS", Setting, IoData).or("false"),
     rule("PROFIenergy@EntityClass", Setting, Feature),
     rule("PROFIenergy@EntitySubclass", Setting, Feature),
+    rule("EnergySavingModeItem@ID", Setting, Feature),
+    rule("MeasurementValue@ID", Setting, Feature),
     rule("RemoteApplicationTimeout", Setting, Timing).or("300"),
     rule("Consistency", Ordered(CONSISTENCY), IoData).or("Item consistency").because(
         "a PLC program written for the old file may rely on all items being consistent",

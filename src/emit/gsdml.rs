@@ -9,9 +9,9 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, InterfaceProperties, Irt, Isochronous,
-    Module, NetloadClass, ParameterRecord, Profinet, RecordValue, RecordValueType, Stack,
-    SubmoduleRecord, TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, Irt, Isochronous, Module, NetloadClass,
+    ParameterRecord, ProfiEnergy, Profinet, RecordValue, RecordValueType, Stack, SubmoduleRecord,
+    TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
     PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
@@ -266,6 +266,9 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     );
     let stated = stated_stack_attributes(stack);
     attributes.extend(stated.iter().map(|(name, value)| (*name, value.as_str())));
+    if p.profienergy.as_ref().is_some_and(|e| e.ase) {
+        attributes.push(("PROFIenergyASE_Supported", "true"));
+    }
     doc.open("DeviceAccessPointItem", &attributes);
     let mut values = vec![("VendorName", ir.device.vendor.as_str())];
     values.extend(stated_values(&[
@@ -274,7 +277,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         ("SoftwareRelease", &dap.software_release),
     ]));
     module_info(doc, &dap.name, &dap.info, &values);
-    certification_info(doc, &p.interface_properties);
+    certification_info(doc, p);
     subslot_list(doc, p, dap);
     let mut io = vec![
         ("MaxInputLength", dap.max_input_length.to_string()),
@@ -329,11 +332,24 @@ fn subslot_list(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.close("SubslotList");
 }
 
-/// The conformance class, the isochronous application class when the
-/// modules have isochronous mode (ApplicationClass is in GSDML since V2.3,
-/// as PI's V2.3 stylesheet shows; SEW's MOVI-C, whose modules have
-/// IsochroneMode, declares `Isochronous`), and the netload class.
-fn certification_info(doc: &mut Doc, properties: &InterfaceProperties) {
+/// The conformance class, the application classes (ApplicationClass is in
+/// GSDML since V2.3, as PI's V2.3 stylesheet shows): the isochronous one
+/// when the modules have isochronous mode and the energy saving one with
+/// PROFIenergy (SEW's MOVI-C, whose modules have IsochroneMode and whose
+/// access points PROFIenergy, declares `Isochronous;EnergySaving`), and the
+/// netload class.
+fn certification_info(doc: &mut Doc, p: &Profinet) {
+    let properties = &p.interface_properties;
+    let classes = [
+        ("Isochronous", properties.isochronous.is_some()),
+        ("EnergySaving", p.profienergy.is_some()),
+    ];
+    let application_class: Vec<&str> = classes
+        .iter()
+        .filter(|(_, declared)| *declared)
+        .map(|(class, _)| *class)
+        .collect();
+    let application_class = application_class.join(";");
     let mut attributes = vec![(
         "ConformanceClass",
         match properties.conformance_class {
@@ -342,8 +358,8 @@ fn certification_info(doc: &mut Doc, properties: &InterfaceProperties) {
             ConformanceClass::C => "C",
         },
     )];
-    if properties.isochronous.is_some() {
-        attributes.push(("ApplicationClass", "Isochronous"));
+    if !application_class.is_empty() {
+        attributes.push(("ApplicationClass", &application_class));
     }
     attributes.push((
         "NetloadClass",
@@ -466,8 +482,46 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     doc.leaf("IOData", &[]);
     submodule_records(doc, &p.access_point_records);
     module_info(doc, &dap.name, &dap.info, &[]);
+    if let Some(energy) = &p.profienergy {
+        profienergy(doc, energy);
+    }
     doc.close("VirtualSubmoduleItem");
     doc.close("VirtualSubmoduleList");
+}
+
+/// The `PROFIenergy` element of the access point's own submodule.
+fn profienergy(doc: &mut Doc, energy: &ProfiEnergy) {
+    let version = energy.profile_version.to_string();
+    let class = energy.entity_class.map(|c| format!("Class{c}"));
+    let subclass = energy.entity_subclass.map(|c| format!("Subclass{c}"));
+    let mut attributes = vec![("ProfileVersion", version.as_str())];
+    attributes.extend(class.as_deref().map(|c| ("EntityClass", c)));
+    attributes.extend(subclass.as_deref().map(|c| ("EntitySubclass", c)));
+    if energy.pesap_uses_ase {
+        attributes.push(("PESAP_uses_PROFIenergyASE", "true"));
+    }
+    if energy.modes.is_empty() {
+        doc.leaf("PROFIenergy", &attributes);
+        return;
+    }
+    doc.open("PROFIenergy", &attributes);
+    doc.open("EnergySavingModeList", &[]);
+    for mode in &energy.modes {
+        let numbers = [
+            mode.id.to_string(),
+            mode.time_to_pause.to_string(),
+            mode.regular_time_to_operate.to_string(),
+            mode.min_length_of_stay.to_string(),
+        ];
+        let names = ["ID", "TimeToPause", "RTTO", "TimeMinLengthOfStay"];
+        let attributes: Vec<(&str, &str)> = names
+            .into_iter()
+            .zip(numbers.iter().map(String::as_str))
+            .collect();
+        doc.leaf("EnergySavingModeItem", &attributes);
+    }
+    doc.close("EnergySavingModeList");
+    doc.close("PROFIenergy");
 }
 
 /// The interface and its ports. In gsdc's numbering their submodule ident

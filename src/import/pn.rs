@@ -14,6 +14,7 @@ mod diagnosis;
 mod fail_safe;
 mod irt;
 mod own_records;
+mod profienergy;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -186,7 +187,14 @@ pub(super) fn describe(
         notes,
     );
     let timing = irt::Declared::of(dap, &modules, notes);
-    unsaid_extras(device, (dap, &later), &modules, &timing, notes);
+    let energy = profienergy::Declared::of(dap, name.version, notes);
+    unsaid_extras(
+        device,
+        (dap, &later),
+        &modules,
+        (&timing, energy.is_some()),
+        notes,
+    );
     let mut out = TomlOut::default();
     out.comment(&format!(
         "Imported by gsdc import from {file}. Every value below is the file's,"
@@ -215,6 +223,9 @@ pub(super) fn describe(
         for (key, value) in stack {
             out.key(key, value);
         }
+    }
+    if let Some(energy) = &energy {
+        energy.write(&mut out);
     }
     timing.write(&mut out);
     records.write_indexes(&mut out);
@@ -1773,13 +1784,28 @@ fn fits(a: &Attribute, known: &[(&str, Option<&str>)]) -> bool {
     }
 }
 
+/// The device access point's `ApplicationClass` gsdc writes: `Isochronous`
+/// with the modules' isochronous mode, `EnergySaving` with PROFIenergy.
+fn application_class(
+    isochronous: bool,
+    energy: bool,
+) -> Option<(&'static str, Option<&'static str>)> {
+    let classes = match (isochronous, energy) {
+        (false, false) => return None,
+        (true, false) => "Isochronous",
+        (false, true) => "EnergySaving",
+        (true, true) => "Isochronous;EnergySaving",
+    };
+    Some(("CertificationInfo@ApplicationClass", Some(classes)))
+}
+
 /// W600 for each attribute and element the description has no place for,
 /// or whose value gsdc writes another way.
 fn unsaid_extras(
     device: &PnDevice,
     (first, later): (&Dap, &[daps::DapEntry]),
     modules: &[Recognised],
-    timing: &irt::Declared,
+    (timing, has_energy): (&irt::Declared, bool),
     notes: &mut Notes,
 ) {
     let with = |always: &'static [(&'static str, Option<&'static str>)], when: bool, extra| {
@@ -1787,11 +1813,17 @@ fn unsaid_extras(
         [always, extra].concat()
     };
     let (has_irt, has_isochronous) = (timing.irt.is_some(), timing.isochronous.is_some());
-    let dap_known = with(
+    let mut dap_known = with(
         DAP_ATTRIBUTES,
-        has_isochronous,
-        irt::ISOCHRONOUS_DAP_ATTRIBUTES,
+        has_energy,
+        &[(profienergy::ASE_SUPPORTED, None)],
     );
+    dap_known.extend(application_class(has_isochronous, has_energy));
+    let own_known: Vec<_> = SUBMODULE_ATTRIBUTES
+        .iter()
+        .copied()
+        .chain(profienergy::SUBMODULE_ATTRIBUTES.map(|name| (name, None)))
+        .collect();
     let interface_known = [
         with(INTERFACE_ATTRIBUTES, has_irt, irt::IRT_INTERFACE_ATTRIBUTES),
         with(&[], has_isochronous, irt::ISOCHRONOUS_INTERFACE_ATTRIBUTES),
@@ -1820,7 +1852,7 @@ fn unsaid_extras(
             let known = match s.kind {
                 SubmoduleKind::Interface => &interface_known,
                 SubmoduleKind::Port => &port_known,
-                _ => SUBMODULE_ATTRIBUTES,
+                _ => &own_known,
             };
             check(&s.attributes, known, s.kind.element());
         }

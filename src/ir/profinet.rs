@@ -72,6 +72,8 @@ pub struct Profinet {
     /// and of every port, in the description's order.
     pub access_point_records: Vec<SubmoduleRecord>,
     pub port_records: Vec<SubmoduleRecord>,
+    /// The card's PROFIenergy, when stated.
+    pub profienergy: Option<ProfiEnergy>,
 }
 
 /// An error type the card reports as channel diagnosis: a
@@ -318,6 +320,33 @@ pub const INTERFACE_SUBSLOT: u16 = 0x8000;
 pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
 /// The slot modules are plugged into; the DAP is in slot 0.
 pub const MODULE_SLOT: u16 = 1;
+
+/// The PROFIenergy profile the card implements, as every device access
+/// point's own submodule declares it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ProfiEnergy {
+    /// `ProfileVersion`.
+    pub profile_version: Version,
+    /// `EntityClass` (1 to 3) and `EntitySubclass` (1 to 2), when stated.
+    pub entity_class: Option<u8>,
+    pub entity_subclass: Option<u8>,
+    /// The device access point's `PROFIenergyASE_Supported`.
+    pub ase: bool,
+    pub pesap_uses_ase: bool,
+    /// The energy saving modes, in the description's order.
+    pub modes: Vec<EnergySavingMode>,
+}
+
+/// An energy saving mode: its number and its times in ms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct EnergySavingMode {
+    pub id: u8,
+    pub time_to_pause: u32,
+    pub regular_time_to_operate: u32,
+    pub min_length_of_stay: u32,
+}
 
 /// What the device access point and its interface declare of what the
 /// firmware does.

@@ -24,6 +24,7 @@ mod ids;
 mod interface;
 mod io;
 mod irt;
+mod profienergy;
 mod profile_words;
 mod pzd_names;
 mod records;
@@ -213,6 +214,7 @@ pub fn lower(
     let access_point_records =
         submodule_records::lower(cx, &p.access_point_records, Whose::AccessPoint);
     let port_records = submodule_records::lower(cx, &p.port_records, Whose::Port);
+    let profienergy = profienergy::lower(cx, p.profienergy.as_ref(), gsdml_version);
     let mut daps = daps?;
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
     let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports);
@@ -272,6 +274,7 @@ pub fn lower(
         channel_diagnosis: channel_diagnosis?,
         access_point_records: access_point_records?,
         port_records: port_records?,
+        profienergy: profienergy?,
     })
 }
 

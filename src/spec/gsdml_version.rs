@@ -73,3 +73,12 @@ pub const ADAPTS_REAL_IDENTIFICATION: Introduced = Introduced {
     version: Version::new(2, 34),
     shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
 };
+
+/// The `PROFIenergy` element of a submodule, and with it the device access
+/// point's `PROFIenergyASE_Supported` and the `EnergySaving` application
+/// class, which MOVI-C's access points declare with it.
+pub const PROFIENERGY: Introduced = Introduced {
+    name: "PROFIenergy",
+    version: Version::new(2, 34),
+    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+};

@@ -9,7 +9,9 @@ mod gsdml_version;
 
 pub use baud::Baud;
 pub use gsdml_version::Version as GsdmlVersion;
-pub use gsdml_version::{Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE};
+pub use gsdml_version::{
+    Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE, PROFIENERGY,
+};
 
 /// The bytes a PROFIBUS-DP telegram carries at most: a slave's input, its
 /// output, its parameter telegram, its diagnosis (IEC 61158-6-3).

@@ -24,6 +24,7 @@ const SHARED: &[&str] = &[
     "ModuleInfo/VendorName@Value",
     "CertificationInfo@ConformanceClass",
     "CertificationInfo@NetloadClass",
+    super::profienergy::ASE_SUPPORTED,
 ];
 const SHARED_INTERFACE: &[&str] = &[
     "ApplicationRelations/TimingProperties@SendClock",
@@ -134,11 +135,14 @@ fn entry_keys(
 /// Err when `dap` differs from the first in what the description's
 /// device access points share.
 fn shared_as_first(first: &Dap, dap: &Dap) -> Result<(), String> {
-    let interface = |d: &Dap| -> Vec<Attribute> {
-        submodules(d, SubmoduleKind::Interface)
+    let of_kind = |d: &Dap, kind| -> Vec<Attribute> {
+        submodules(d, kind)
             .flat_map(|s| s.attributes.clone())
             .collect()
     };
+    let interface = |d: &Dap| of_kind(d, SubmoduleKind::Interface);
+    // Its own submodule's PROFIenergy: the description's is every one's.
+    let own = |d: &Dap| of_kind(d, SubmoduleKind::Virtual);
     let pairs = [
         (
             SHARED,
@@ -146,6 +150,11 @@ fn shared_as_first(first: &Dap, dap: &Dap) -> Result<(), String> {
             dap.item.attributes.clone(),
         ),
         (SHARED_INTERFACE, interface(first), interface(dap)),
+        (
+            &super::profienergy::SUBMODULE_ATTRIBUTES,
+            own(first),
+            own(dap),
+        ),
     ];
     for (names, a, b) in &pairs {
         for name in names.iter() {

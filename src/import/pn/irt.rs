@@ -126,14 +126,13 @@ pub(super) const IRT_INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
 ];
 pub(super) const IRT_PORT_ATTRIBUTES: &[(&str, Option<&str>)] =
     &[("MaxPortTxDelay", None), ("MaxPortRxDelay", None)];
-/// What gsdc writes with isochronous mode: of the interface, of the device
-/// access point, of each data submodule.
+/// What gsdc writes with isochronous mode: of the interface, of each data
+/// submodule (and the device access point's application class,
+/// `application_class`).
 pub(super) const ISOCHRONOUS_INTERFACE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IsochroneModeSupported", Some("true")),
     ("IsochroneModeInRT_Classes", Some("RT_CLASS_3")),
 ];
-pub(super) const ISOCHRONOUS_DAP_ATTRIBUTES: &[(&str, Option<&str>)] =
-    &[("CertificationInfo@ApplicationClass", Some("Isochronous"))];
 pub(super) const ISOCHRONOUS_SUBMODULE_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IsochroneMode@T_DC_Base", None),
     ("IsochroneMode@T_DC_Min", None),

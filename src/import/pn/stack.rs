@@ -293,7 +293,7 @@ fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes
 }
 
 /// An `xsd:boolean` that is true.
-fn is_true(value: &str) -> bool {
+pub(super) fn is_true(value: &str) -> bool {
     matches!(value, "true" | "1")
 }
 
