@@ -5,7 +5,7 @@ use super::page::{code, text, Builder, Cell, Run};
 use super::{decision_kind, with_placeholder, Lang};
 use crate::i18n::{sheet as w, Phrase};
 use crate::ir::profibus::Profibus;
-use crate::ir::profinet::{Dap, Irt, Isochronous, Profinet};
+use crate::ir::profinet::{Dap, Irt, Isochronous, ProfiEnergy, Profinet};
 use crate::ir::{Decision, Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -188,10 +188,17 @@ fn profibus_table(doc: &mut Builder, p: &Profibus, lang: Lang) {
     );
 }
 
-/// The file's GSDML version, and the oldest an engineering tool must know
-/// to offer the device access points, where the description states one.
+/// The file's GSDML version, the PROFINET version its access points are
+/// certified against where it is another, and the oldest an engineering
+/// tool must know to offer them, where the description states one.
 fn gsdml_version(p: &Profinet, lang: Lang) -> Cell {
     let mut cell = code(p.gsdml_version.to_string());
+    if p.pnio_version != p.gsdml_version {
+        cell.extend([
+            Run::Text("; PNIO_Version ".into()),
+            Run::Code(p.pnio_version.to_string()),
+        ]);
+    }
     if let Some(required) = p.required_schema_version {
         let needs = format!("; {} ", lang.t(w::REQUIRED_SCHEMA_VERSION));
         cell.extend([Run::Text(needs), Run::Code(required.to_string())]);
@@ -247,6 +254,9 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
             text(isochronous_summary(iso, lang)),
         ));
     }
+    if let Some(energy) = &p.profienergy {
+        rows.push(("PROFIenergy", text(profienergy_summary(energy))));
+    }
     doc.table(
         lang.t(w::PROFINET_DEVICE),
         &[lang.t(w::PARAMETER), lang.t(w::VALUE)],
@@ -296,6 +306,38 @@ fn isochronous_summary(iso: &Isochronous, lang: Lang) -> String {
         true => format!("{summary}; {}", lang.t(w::ISOCHRONOUS_REQUIRED)),
         false => summary,
     }
+}
+
+/// The PROFIenergy profile and each energy saving mode as the GSDML names
+/// them: what the controller's energy management plans pauses with.
+fn profienergy_summary(energy: &ProfiEnergy) -> String {
+    let mut profile = vec![format!("ProfileVersion {}", energy.profile_version)];
+    profile.extend(energy.entity_class.map(|c| format!("EntityClass Class{c}")));
+    profile.extend(
+        energy
+            .entity_subclass
+            .map(|c| format!("EntitySubclass Subclass{c}")),
+    );
+    let flags = [
+        ("PROFIenergyASE_Supported", energy.ase),
+        ("PESAP_uses_PROFIenergyASE", energy.pesap_uses_ase),
+    ];
+    profile.extend(
+        flags
+            .iter()
+            .filter(|(_, on)| *on)
+            .map(|(name, _)| name.to_string()),
+    );
+    let modes = energy.modes.iter().map(|m| {
+        format!(
+            "ID {}: TimeToPause {} ms, RTTO {} ms, TimeMinLengthOfStay {} ms",
+            m.id, m.time_to_pause, m.regular_time_to_operate, m.min_length_of_stay
+        )
+    });
+    std::iter::once(profile.join(", "))
+        .chain(modes)
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 fn max_io_data(dap: &Dap, lang: Lang) -> Vec<Run> {

@@ -791,7 +791,40 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
     }
     consts.extend(channel_diagnosis(p));
     consts.extend(p.channel_diagnosis.iter().filter_map(extended_diagnosis));
+    consts.extend(p.profienergy.as_ref().map(profienergy_modes));
     consts
+}
+
+/// The card's PROFIenergy energy saving modes, as the GSDML declares them:
+/// each one's number and times, which the firmware answers PROFIenergy's
+/// commands with.
+fn profienergy_modes(energy: &profinet::ProfiEnergy) -> Consts {
+    let mut items = vec![Const::new(
+        &["profienergy", "modes"],
+        Ty::U8,
+        Val::Dec(energy.modes.len() as u64),
+    )];
+    for mode in &energy.modes {
+        let id = mode.id.to_string();
+        let mode_id = ["profienergy", "mode", id.as_str(), "id"];
+        items.push(Const::new(&mode_id, Ty::U8, Val::Dec(mode.id.into())));
+        for (what, ms) in [
+            ("time_to_pause", mode.time_to_pause),
+            ("regular_time_to_operate", mode.regular_time_to_operate),
+            ("min_length_of_stay", mode.min_length_of_stay),
+        ] {
+            let name = ["profienergy", "mode", id.as_str(), what, "ms"];
+            items.push(Const::new(&name, Ty::U32, Val::Dec(ms.into())));
+        }
+    }
+    Consts {
+        doc: Doc::plain(
+            "The PROFIenergy energy saving modes every device access point declares: each \
+             mode's number (EnergySavingModeItem ID) and its TimeToPause, RTTO and \
+             TimeMinLengthOfStay in ms, which the card answers PROFIenergy's commands with.",
+        ),
+        items,
+    }
 }
 
 /// The error types the card reports as channel diagnosis, one constant

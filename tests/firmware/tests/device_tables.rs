@@ -462,3 +462,46 @@ fn a_record_is_refused_as_the_layouts_group_decoder_refuses_it() {
         }
     }
 }
+
+/// own_idents' PROFIenergy constants are the energy saving modes its
+/// GSDML declares in each of its three device access points' own
+/// submodules, read with roxmltree: each mode's ID and its TimeToPause,
+/// RTTO and TimeMinLengthOfStay.
+#[test]
+fn profienergy_constants_are_the_gsdmls_modes() {
+    use own_idents as o;
+    let constants: [[u32; 4]; 2] = [
+        [
+            o::PROFIENERGY_MODE_2_ID.into(),
+            o::PROFIENERGY_MODE_2_TIME_TO_PAUSE_MS,
+            o::PROFIENERGY_MODE_2_REGULAR_TIME_TO_OPERATE_MS,
+            o::PROFIENERGY_MODE_2_MIN_LENGTH_OF_STAY_MS,
+        ],
+        [
+            o::PROFIENERGY_MODE_255_ID.into(),
+            o::PROFIENERGY_MODE_255_TIME_TO_PAUSE_MS,
+            o::PROFIENERGY_MODE_255_REGULAR_TIME_TO_OPERATE_MS,
+            o::PROFIENERGY_MODE_255_MIN_LENGTH_OF_STAY_MS,
+        ],
+    ];
+    assert_eq!(usize::from(o::PROFIENERGY_MODES), constants.len());
+    let first = pn_lines(&o::PN_DEVICE).remove(0);
+    let path = generated(".xml")
+        .into_iter()
+        .find(|p| device_files::pn_lines(p)[0] == first)
+        .unwrap();
+    let text = std::fs::read_to_string(path).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let lists: Vec<Vec<[u32; 4]>> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("EnergySavingModeList"))
+        .map(|list| {
+            let items = list.children().filter(|n| n.is_element());
+            let attributes = ["ID", "TimeToPause", "RTTO", "TimeMinLengthOfStay"];
+            items
+                .map(|m| attributes.map(|a| m.attribute(a).unwrap().parse().unwrap()))
+                .collect()
+        })
+        .collect();
+    assert_eq!(lists, vec![constants.to_vec(); 3]);
+}
