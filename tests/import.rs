@@ -1375,6 +1375,13 @@ fn corpus_gsdml_text(name: &str) -> String {
     String::from_utf8(support::corpus_file(&format!("gsdml/{name}"))).unwrap()
 }
 
+/// The import of MOVI-C's text under the name of a file of GSDML `version`
+/// (the import takes the version from the name).
+fn movi_c_named(version: &str) -> Imported {
+    let name = MOVI_C.replace("V2.34", version);
+    import(&name, corpus_gsdml_text(MOVI_C).as_bytes())
+}
+
 /// The import of a corpus GSD file.
 fn corpus_gsd_import(name: &str) -> Imported {
     import(name, &support::corpus_file(&format!("gsd/{name}")))
@@ -1504,8 +1511,7 @@ fn an_attribute_at_its_schema_default_or_spelt_otherwise_is_not_left_out() {
 /// and left out.
 #[test]
 fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
-    let name = MOVI_C.replace("V2.34", "V2.35");
-    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let imported = movi_c_named("V2.35");
     let toml = draft(&imported);
     let (ir, _) = descriptions::load_text("movi-c.toml", toml);
     let ir = ir.expect("builds");
@@ -1616,8 +1622,7 @@ fn movi_cs_profienergy_imports() {
 /// class are left out with it, and the round trip names each change.
 #[test]
 fn profienergy_of_an_older_file_is_left_out_with_why() {
-    let name = MOVI_C.replace("V2.34", "V2.33");
-    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let imported = movi_c_named("V2.33");
     assert!(!draft(&imported).contains("profienergy"));
     let w600 = messages(&imported, "W600");
     let energy: Vec<&&str> = w600
@@ -1649,8 +1654,7 @@ fn profienergy_of_an_older_file_is_left_out_with_why() {
 /// (its line 26), which no file at hand shows before V2.34.
 #[test]
 fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
-    let name = MOVI_C.replace("V2.34", "V2.33");
-    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let imported = movi_c_named("V2.33");
     let toml = draft(&imported);
     assert!(toml.contains("check_mau_type_difference = true\n"));
     assert!(!toml.contains("adapts_real_identification"));
@@ -1670,8 +1674,7 @@ fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
         .iter()
         .any(|m| m.contains("CheckMAUTypeDifferenceSupported")));
     // Under a V2.32 name, each port's (lines 92 and 116) is left out too.
-    let name = MOVI_C.replace("V2.34", "V2.32");
-    let imported = import(&name, corpus_gsdml_text(MOVI_C).as_bytes());
+    let imported = movi_c_named("V2.32");
     let lines: Vec<usize> = imported
         .diagnostics
         .iter()

@@ -491,10 +491,9 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 
 /// The `PROFIenergy` element of the access point's own submodule.
 fn profienergy(doc: &mut Doc, energy: &ProfiEnergy) {
-    let version = energy.profile_version.to_string();
     let class = energy.entity_class.map(|c| format!("Class{c}"));
     let subclass = energy.entity_subclass.map(|c| format!("Subclass{c}"));
-    let mut attributes = vec![("ProfileVersion", version.as_str())];
+    let mut attributes = vec![("ProfileVersion", energy.profile_version.as_str())];
     attributes.extend(class.as_deref().map(|c| ("EntityClass", c)));
     attributes.extend(subclass.as_deref().map(|c| ("EntitySubclass", c)));
     if energy.pesap_uses_ase {

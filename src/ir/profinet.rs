@@ -326,8 +326,8 @@ pub const MODULE_SLOT: u16 = 1;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct ProfiEnergy {
-    /// `ProfileVersion`.
-    pub profile_version: Version,
+    /// `ProfileVersion`, as the file writes it: `V1.2`.
+    pub profile_version: String,
     /// `EntityClass` (1 to 3) and `EntitySubclass` (1 to 2), when stated.
     pub entity_class: Option<u8>,
     pub entity_subclass: Option<u8>,

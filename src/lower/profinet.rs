@@ -25,6 +25,7 @@ mod interface;
 mod io;
 mod irt;
 mod profienergy;
+pub(crate) use profienergy::is_version as is_profile_version;
 mod profile_words;
 mod pzd_names;
 mod records;

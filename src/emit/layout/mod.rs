@@ -801,7 +801,8 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
 fn profienergy_modes(energy: &profinet::ProfiEnergy) -> Consts {
     let mut items = vec![Const::new(
         &["profienergy", "modes"],
-        Ty::U8,
+        // Up to 256: every number of a mode, 0 to 255, once.
+        Ty::U16,
         Val::Dec(energy.modes.len() as u64),
     )];
     for mode in &energy.modes {

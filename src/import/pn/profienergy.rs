@@ -9,6 +9,7 @@ use crate::device::Attribute;
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
 use crate::ir::profinet::Version;
+use crate::lower::is_profile_version as is_version;
 use crate::spec::PROFIENERGY;
 
 const PROFILE_VERSION: &str = "PROFIenergy@ProfileVersion";
@@ -83,7 +84,8 @@ impl Declared {
             );
             return left_out(notes, &why);
         }
-        let Some(profile_version) = Version::parse(text).filter(|_| text.starts_with('V')) else {
+        let without_v = text.strip_prefix('V').filter(|v| is_version(v));
+        let Some(profile_version) = without_v else {
             return left_out(
                 notes,
                 &format!("its ProfileVersion `{text}` is not a version (V1.2)"),
@@ -105,7 +107,7 @@ impl Declared {
             );
         };
         Some(Declared {
-            profile_version: profile_version.to_string()[1..].to_string(),
+            profile_version: profile_version.to_string(),
             entity_class,
             entity_subclass,
             ase: attribute(&dap.item.attributes, ASE_SUPPORTED).is_some_and(is_true),

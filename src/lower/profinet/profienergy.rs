@@ -51,21 +51,27 @@ pub fn lower(
 }
 
 /// `ProfileVersion`: the schema's VersionStringT (`V1.2`), written without
-/// its V as the description's other versions are.
-fn profile_version(cx: &mut Checker, given: &Spanned<String>) -> Option<Version> {
+/// its V as the description's other versions are, and kept as written
+/// (`1.10` is not `1.1`).
+fn profile_version(cx: &mut Checker, given: &Spanned<String>) -> Option<String> {
     let text = given.get_ref();
-    let version = (!text.starts_with(['V', 'v']))
-        .then(|| Version::parse(text))
-        .flatten();
-    if version.is_none() {
-        cx.push(
-            Diagnostic::error("E199", format!("`{text}` is not a version"))
-                .at(given.span())
-                .label("not digits, a dot and digits")
-                .help("write the PROFIenergy profile version the card implements, as its manual states it, without the V: \"1.2\""),
-        );
+    if is_version(text) {
+        return Some(format!("V{text}"));
     }
-    version
+    cx.push(
+        Diagnostic::error("E199", format!("`{text}` is not a version"))
+            .at(given.span())
+            .label("not digits, a dot and digits")
+            .help("write the PROFIenergy profile version the card implements, as its manual states it, without the V: \"1.2\""),
+    );
+    None
+}
+
+/// Digits, a dot and digits: the schema's VersionStringT without its V.
+pub(crate) fn is_version(text: &str) -> bool {
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    text.split_once('.')
+        .is_some_and(|(major, minor)| digits(major) && digits(minor))
 }
 
 /// Each energy saving mode, in the description's order; a mode whose
@@ -87,4 +93,21 @@ fn modes(cx: &mut Checker, given: &[Spanned<raw::EnergySavingMode>]) -> Vec<Ener
         });
     }
     modes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::is_version;
+
+    /// The schema's `V[0-9]+\.[0-9]+` without its V, kept as written: a
+    /// minor `10` is not `1`.
+    #[test]
+    fn a_version_is_digits_a_dot_and_digits() {
+        for version in ["1.2", "1.10", "12.03"] {
+            assert!(is_version(version), "{version}");
+        }
+        for not in ["V1.2", "1", "1.", ".2", "1.2.3", "1,2", "", "1.2 "] {
+            assert!(!is_version(not), "{not}");
+        }
+    }
 }
