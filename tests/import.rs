@@ -1545,7 +1545,7 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
 
 /// MOVI-C's stack beyond FENA's (its line 26: `PNIO_Version="V2.33"` in a
 /// V2.34 file, `PowerOnToCommReady="5000"`, `RequiredSchemaVersion="V2.32"`,
-/// `AdaptsRealIdentification="true"`;
+/// `AdaptsRealIdentification="true"`, `WebServer="http://:80/"`;
 /// line 38: `IOConfigData MaxInputLength="100" MaxOutputLength="100"
 /// MaxDataLength="200"`; line 82, the interface:
 /// `NetworkComponentDiagnosisSupported="true"`; line 86: `TimingProperties
@@ -1563,7 +1563,7 @@ fn movi_cs_stack_attributes_import() {
         &[
             "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
             "gsdml_version = \"2.34\"\npnio_version = \"2.33\"\nrequired_schema_version = \"2.32\"\n",
-            "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\ncheck_mau_type_difference = true\nadapts_real_identification = true\nlink_state_diagnosis = \"Up+Down\"\n",
+            "power_on_to_comm_ready = 5000\nnetwork_component_diagnosis = true\nport_deactivation = true\ncheck_mau_type = true\ncheck_mau_type_difference = true\nadapts_real_identification = true\nweb_server = \"http://:80/\"\nlink_state_diagnosis = \"Up+Down\"\n",
             "max_input_length = 100\nmax_output_length = 100\nmax_data_length = 200\n",
         ],
     );
@@ -1578,6 +1578,7 @@ fn movi_cs_stack_attributes_import() {
         "CheckMAUTypeSupported",
         "CheckMAUTypeDifferenceSupported",
         "AdaptsRealIdentification",
+        "WebServer",
         "LinkStateDiagnosisCapability",
     ];
     for code in ["E601", "W600"] {
@@ -1651,7 +1652,7 @@ fn profienergy_of_an_older_file_is_left_out_with_why() {
 /// out, a warning that names E198, and the round trip names the change:
 /// MOVI-C's text under a V2.33 name keeps `CheckMAUTypeDifferenceSupported`
 /// (V2.33 has it: Hilscher's file) and leaves out `AdaptsRealIdentification`
-/// (its line 26), which no file at hand shows before V2.34.
+/// and `WebServer` (its line 26), which no file at hand shows before V2.34.
 #[test]
 fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
     let imported = movi_c_named("V2.33");
@@ -1666,6 +1667,9 @@ fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
     assert_eq!(left_out.len(), 1, "{w600:#?}");
     assert!(left_out[0].contains("GSDML 2.34 and later (E198)"));
     assert!(left_out[0].ends_with("the description's file is V2.33"));
+    assert!(!toml.contains("web_server"));
+    assert!(w600.iter().any(|m| m
+        .starts_with(r#"WebServer="http://:80/" is not imported: gsdc writes it in GSDML 2.34"#)));
     let changed = messages(&imported, "E601");
     assert!(changed.iter().any(|m| m.contains(
         r#"DAP "DFC2xA V1.0" (0x00007532) AdaptsRealIdentification (breaking): "true" removed"#

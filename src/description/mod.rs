@@ -924,6 +924,9 @@ pub struct Stack {
     pub check_mau_type_difference: Option<Spanned<bool>>,
     /// `AdaptsRealIdentification` (GSDML V2.34 and later).
     pub adapts_real_identification: Option<Spanned<bool>>,
+    /// `WebServer`: the scheme, port and path of the card's web server
+    /// (GSDML V2.34 and later).
+    pub web_server: Option<Spanned<String>>,
 }
 
 /// The link changes a port reports as diagnosis, as GSDML names them.

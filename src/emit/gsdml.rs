@@ -437,6 +437,9 @@ fn stated_stack_attributes(stack: &Stack) -> Vec<(&'static str, String)> {
     if stack.adapts_real_identification {
         attributes.push(("AdaptsRealIdentification", "true".to_string()));
     }
+    if let Some(url) = &stack.web_server {
+        attributes.push(("WebServer", url.clone()));
+    }
     attributes
 }
 

@@ -59,6 +59,7 @@ const DAP_ATTRIBUTES: &[(&str, Option<&str>)] = &[
     ("IOConfigData@MaxDataLength", None),
     ("PowerOnToCommReady", None),
     ("AdaptsRealIdentification", None),
+    ("WebServer", None),
     // Read by `subslot_labels`, or left out there with its reason.
     ("SubslotList/SubslotItem@SubslotNumber", None),
     ("SubslotList/SubslotItem@TextId", None),

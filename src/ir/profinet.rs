@@ -483,6 +483,8 @@ pub struct Stack {
     /// The device access point's `AdaptsRealIdentification`, written when
     /// true.
     pub adapts_real_identification: bool,
+    /// The device access point's `WebServer`, when stated.
+    pub web_server: Option<String>,
 }
 
 /// A way the device may get its IP address.

@@ -82,3 +82,10 @@ pub const PROFIENERGY: Introduced = Introduced {
     version: Version::new(2, 34),
     shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
 };
+
+/// The device access point's `WebServer`.
+pub const WEB_SERVER: Introduced = Introduced {
+    name: "WebServer",
+    version: Version::new(2, 34),
+    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+};

@@ -10,7 +10,7 @@ mod gsdml_version;
 pub use baud::Baud;
 pub use gsdml_version::Version as GsdmlVersion;
 pub use gsdml_version::{
-    Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE, PROFIENERGY,
+    Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE, PROFIENERGY, WEB_SERVER,
 };
 
 /// The bytes a PROFIBUS-DP telegram carries at most: a slave's input, its
@@ -52,6 +52,41 @@ pub fn is_bidi_control(c: char) -> bool {
     )
 }
 
+/// A device access point's `WebServer` as the PI schema's pattern allows
+/// it, `https?://(:[0-9]+)?(/[a-zA-Z0-9\-._~:?#@%!$&'()*+,;=]+)*/?`: the
+/// scheme and port of the device's web server and a path, without a host
+/// (the engineering tool puts the device's address there; SEW's MOVI-C:
+/// `http://:80/`).
+pub fn is_gsdml_web_server(url: &str) -> bool {
+    let Some(rest) = url
+        .strip_prefix("https://")
+        .or_else(|| url.strip_prefix("http://"))
+    else {
+        return false;
+    };
+    let path = match rest.strip_prefix(':') {
+        Some(port) => {
+            let digits = port.bytes().take_while(u8::is_ascii_digit).count();
+            if digits == 0 {
+                return false;
+            }
+            &port[digits..]
+        }
+        None => rest,
+    };
+    let Some(segments) = path.strip_prefix('/') else {
+        return path.is_empty();
+    };
+    let path_char = |c: char| c.is_ascii_alphanumeric() || "-._~:?#@%!$&'()*+,;=".contains(c);
+    let segments: Vec<&str> = segments.split('/').collect();
+    // A trailing `/` leaves one empty segment at the end; no other may be.
+    let (last, before) = segments.split_last().expect("split gives one at least");
+    before
+        .iter()
+        .all(|s| !s.is_empty() && s.chars().all(path_char))
+        && last.chars().all(path_char)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -77,5 +112,32 @@ mod tests {
         assert_eq!(all.len(), 12);
         assert!(all.contains(&'\u{061C}'));
         assert!(!is_bidi_control('\u{2028}'));
+    }
+
+    /// The schema's pattern: scheme, an optional port, a path without a
+    /// host; MOVI-C's and Leuze's values are among them.
+    #[test]
+    fn a_web_server_is_the_schemas_pattern() {
+        for url in [
+            "http://:80/",
+            "http://",
+            "https://:8443",
+            "http://:80/index.html",
+            "http://:80/a/b/",
+        ] {
+            assert!(is_gsdml_web_server(url), "{url}");
+        }
+        for url in [
+            "ftp://:21/",
+            "http://a/b/",
+            "http:/",
+            "http://:/",
+            "http://host:80/",
+            "http://:80//x",
+            "http://:80/a b",
+            "HTTP://",
+        ] {
+            assert!(!is_gsdml_web_server(url), "{url}");
+        }
     }
 }

@@ -8,7 +8,10 @@ use crate::device::Attribute;
 use crate::gsdml::values::ValueList;
 use crate::import::Notes;
 use crate::ir::profinet::{AddressAssignment, Version, MODULE_SLOT};
-use crate::spec::{Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE};
+use crate::spec::{
+    is_gsdml_web_server, Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE,
+    WEB_SERVER,
+};
 use std::ops::RangeInclusive;
 
 /// One device access point's stack, as its file declares it; a value
@@ -35,6 +38,7 @@ pub(super) struct Declared {
     port_flags: [bool; 3],
     link_state_diagnosis: Option<String>,
     adapts_real_identification: bool,
+    web_server: Option<String>,
 }
 
 /// The ports' flags: each port's attribute, and the key that says it for
@@ -121,6 +125,7 @@ impl Declared {
             }),
             adapts_real_identification: flag(ADAPTS_REAL_IDENTIFICATION.name)
                 && written_in(ADAPTS_REAL_IDENTIFICATION, file, dap, notes),
+            web_server: web_server(dap, file, notes),
             link_state_diagnosis: link_state_diagnosis(dap, notes),
             address_assignment: address_assignment(dap, notes),
             device_access,
@@ -143,6 +148,9 @@ impl Declared {
     pub fn over_first(&self, first: &Declared) -> Result<Vec<(&'static str, String)>, String> {
         if self.device_access_ars.is_none() && first.device_access_ars.is_some() {
             return Err("it has no NumberOfDeviceAccessAR, which the first has: the description's later device access points take the first's".into());
+        }
+        if self.web_server.is_none() && first.web_server.is_some() {
+            return Err("it has no WebServer, which the first has: the description's later device access points take the first's".into());
         }
         if self.data.file.is_none() && first.data.file.is_some() {
             return Err("it has no IOConfigData@MaxDataLength, which the first has: the description's later device access points take the first's".into());
@@ -171,6 +179,7 @@ impl Declared {
             port_flags: [false; 3],
             link_state_diagnosis: None,
             adapts_real_identification: false,
+            web_server: None,
         }
     }
 
@@ -239,6 +248,13 @@ impl Declared {
             self.adapts_real_identification,
             base.adapts_real_identification,
         );
+        if self.web_server != base.web_server {
+            keys.extend(
+                self.web_server
+                    .as_deref()
+                    .map(|url| ("web_server", quote(url))),
+            );
+        }
         if self.link_state_diagnosis != base.link_state_diagnosis {
             keys.extend(
                 self.link_state_diagnosis
@@ -413,10 +429,23 @@ fn every_port<T: PartialEq + Default>(
     first_value
 }
 
+/// The access point's `WebServer`, where the description can say it: the
+/// schema's pattern, in a file of a version gsdc writes it in.
+fn web_server(dap: &Dap, file: Version, notes: &mut Notes) -> Option<String> {
+    let (a, url) = found(&dap.item.attributes, WEB_SERVER.name)?;
+    if !is_gsdml_web_server(url) {
+        let why = "the description's web_server is the PI schema's pattern: http:// or https://, a port, a path (E003)";
+        notes.unsaid(&format!("WebServer `{url}`"), &a.place, why);
+        return None;
+    }
+    written_in(WEB_SERVER, file, dap, notes).then(|| url.to_string())
+}
+
 /// Whether the description's file, of GSDML version `file`, can say the
-/// attribute the access point (or its ports) declares true: gsdc writes it
-/// only from the version a file at hand first shows it in (E198); left out
-/// at each place that declares it otherwise.
+/// attribute the access point (or its ports) declares: gsdc writes it only
+/// from the version a file at hand first shows it in (E198); left out at
+/// each place that declares it (but false, which gsdc's silence says)
+/// otherwise.
 fn written_in(introduced: Introduced, file: Version, dap: &Dap, notes: &mut Notes) -> bool {
     if file >= introduced.version {
         return true;
@@ -429,7 +458,8 @@ fn written_in(introduced: Introduced, file: Version, dap: &Dap, notes: &mut Note
     );
     let ports = submodules_of(dap, SubmoduleKind::Port).map(|p| &p.attributes[..]);
     for attributes in std::iter::once(&dap.item.attributes[..]).chain(ports) {
-        if let Some((a, value)) = found(attributes, name).filter(|(_, v)| is_true(v)) {
+        let declared = found(attributes, name).filter(|(_, v)| !matches!(*v, "false" | "0"));
+        if let Some((a, value)) = declared {
             notes.unsaid(&format!("{name}=\"{value}\""), &a.place, &why);
         }
     }

@@ -6,7 +6,9 @@ use crate::description::{self as raw, AddressAssignment as RawAssignment, LinkSt
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{AddressAssignment, Stack, Version, MODULE_SLOT};
 use crate::lower::checks::Checker;
-use crate::spec::{ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE};
+use crate::spec::{
+    is_gsdml_web_server, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE, WEB_SERVER,
+};
 use toml::Spanned;
 
 /// The stack `given` states over `inherited` (gsdc's defaults for the
@@ -93,6 +95,10 @@ pub fn lower(
             &given.adapts_real_identification,
             inherited.adapts_real_identification,
         ),
+        web_server: match &given.web_server {
+            Some(url) => Some(web_server(cx, url, file)?),
+            None => inherited.web_server.clone(),
+        },
     };
     check_device_access(cx, given, &stack)?;
     let later = [
@@ -109,6 +115,23 @@ pub fn lower(
         }
     }
     Some(stack)
+}
+
+/// `WebServer`: the schema's pattern (E003 otherwise), in a file of a
+/// version a file at hand shows it in (E198).
+fn web_server(cx: &mut Checker, url: &Spanned<String>, file: Version) -> Option<String> {
+    super::written_in(cx, url.span(), file, WEB_SERVER);
+    let text = url.get_ref();
+    if is_gsdml_web_server(text) {
+        return Some(text.clone());
+    }
+    cx.push(
+        Diagnostic::error("E003", format!("`{text}` is not a GSDML web server address"))
+            .at(url.span())
+            .label("not http:// or https://, a port, a path")
+            .help("write the scheme, the port and the path of the card's web server without a host, which the engineering tool fills in: \"http://:80/\" (SEW's MOVI-C)"),
+    );
+    None
 }
 
 fn link_state_token(link: LinkStateDiagnosis) -> &'static str {
