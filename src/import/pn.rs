@@ -1079,14 +1079,13 @@ fn profinet(
     out.key("vendor_id", id(device.vendor_id));
     out.key("device_id", id(device.device_id));
     out.string("file_vendor", &name.vendor);
-    let without_v = |version: Version| version.to_string()[1..].to_string();
-    out.string("gsdml_version", &without_v(name.version));
+    out.string("gsdml_version", &name.version.number());
     let attributes = &dap.item.attributes;
     if let Some(version) = pnio_version(attributes, name.version, notes) {
-        out.string("pnio_version", &without_v(version));
+        out.string("pnio_version", &version.number());
     }
     if let Some(version) = required_schema_version(attributes, name.version, notes) {
-        out.string("required_schema_version", &without_v(version));
+        out.string("required_schema_version", &version.number());
     }
     if let Some(basis) = implementation_type(attributes, notes) {
         out.string("implementation_type", basis);

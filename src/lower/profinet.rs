@@ -552,10 +552,7 @@ fn version(cx: &mut Checker, v: Option<&Spanned<String>>) -> Option<Version> {
         .flatten()
         .filter(|version| SUPPORTED_VERSIONS.contains(version));
     if version.is_none() {
-        let supported: Vec<String> = SUPPORTED_VERSIONS
-            .iter()
-            .map(|v| v.to_string()[1..].to_string())
-            .collect();
+        let supported: Vec<String> = SUPPORTED_VERSIONS.iter().map(|v| v.number()).collect();
         cx.push(
             Diagnostic::error("E130", format!("gsdc does not write GSDML {text}"))
                 .at(v.span())
@@ -578,7 +575,7 @@ pub(crate) fn written_in(
     if file >= introduced.version {
         return;
     }
-    let since = &introduced.version.to_string()[1..];
+    let since = introduced.version.number();
     cx.push(
         Diagnostic::error(
             "E198",
@@ -615,7 +612,7 @@ fn required_schema_version(
         )
         .help(format!(
             "write the oldest version whose elements the access point needs, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V",
-            &file.to_string()[1..]
+            file.number()
         ))
     };
     up_to_file(cx, given, file, refusal).map(Some)
@@ -641,7 +638,7 @@ fn pnio_version(
         )
         .help(format!(
             "write the PROFINET version the card is certified against, as the manual states it, from \"1.0\" to \"{}\" (the file's, `gsdml_version`), without the V; or raise `gsdml_version`",
-            &file.to_string()[1..]
+            file.number()
         ))
     };
     up_to_file(cx, given, file, refusal)

@@ -36,6 +36,13 @@ impl Version {
     }
 }
 
+impl Version {
+    /// The version without its V, as a description writes it: `2.32`.
+    pub fn number(self) -> String {
+        self.to_string()[1..].to_string()
+    }
+}
+
 impl fmt::Display for Version {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let Version { major, hundredths } = *self;
@@ -60,6 +67,9 @@ pub struct Introduced {
     pub shown_by: &'static str,
 }
 
+/// SEW's MOVI-C file, the first at hand of GSDML V2.34.
+const MOVI_C: &str = "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml";
+
 /// Each port's `CheckMAUTypeDifferenceSupported`.
 pub const CHECK_MAU_TYPE_DIFFERENCE: Introduced = Introduced {
     name: "CheckMAUTypeDifferenceSupported",
@@ -71,7 +81,7 @@ pub const CHECK_MAU_TYPE_DIFFERENCE: Introduced = Introduced {
 pub const ADAPTS_REAL_IDENTIFICATION: Introduced = Introduced {
     name: "AdaptsRealIdentification",
     version: Version::new(2, 34),
-    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+    shown_by: MOVI_C,
 };
 
 /// The `PROFIenergy` element of a submodule, and with it the device access
@@ -80,12 +90,12 @@ pub const ADAPTS_REAL_IDENTIFICATION: Introduced = Introduced {
 pub const PROFIENERGY: Introduced = Introduced {
     name: "PROFIenergy",
     version: Version::new(2, 34),
-    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+    shown_by: MOVI_C,
 };
 
 /// The device access point's `WebServer`.
 pub const WEB_SERVER: Introduced = Introduced {
     name: "WebServer",
     version: Version::new(2, 34),
-    shown_by: "SEW's GSDML-V2.34-SEW-MOVI-C-Decentralized-Electronics-20200731-071447.xml",
+    shown_by: MOVI_C,
 };

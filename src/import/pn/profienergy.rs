@@ -2,7 +2,7 @@
 //! access point's own submodule, with the access point's
 //! `PROFIenergyASE_Supported`, in a file of a version gsdc writes them in.
 
-use super::stack::is_true;
+use super::stack::{is_true, later_than};
 use super::{attribute, found, submodules_of};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
@@ -77,12 +77,7 @@ impl Declared {
             None
         };
         if file < PROFIENERGY.version {
-            let why = format!(
-                "gsdc writes it in GSDML {} and later (E198), the first version a file at hand shows it in ({}), and the description's file is {file}",
-                &PROFIENERGY.version.to_string()[1..],
-                PROFIENERGY.shown_by
-            );
-            return left_out(notes, &why);
+            return left_out(notes, &later_than(PROFIENERGY, file));
         }
         let without_v = text.strip_prefix('V').filter(|v| is_version(v));
         let Some(profile_version) = without_v else {

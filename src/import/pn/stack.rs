@@ -451,11 +451,7 @@ fn written_in(introduced: Introduced, file: Version, dap: &Dap, notes: &mut Note
         return true;
     }
     let name = introduced.name;
-    let why = format!(
-        "gsdc writes it in GSDML {} and later (E198), the first version a file at hand shows it in ({}), and the description's file is {file}",
-        &introduced.version.to_string()[1..],
-        introduced.shown_by
-    );
+    let why = later_than(introduced, file);
     let ports = submodules_of(dap, SubmoduleKind::Port).map(|p| &p.attributes[..]);
     for attributes in std::iter::once(&dap.item.attributes[..]).chain(ports) {
         let declared = found(attributes, name).filter(|(_, v)| !matches!(*v, "false" | "0"));
@@ -464,6 +460,16 @@ fn written_in(introduced: Introduced, file: Version, dap: &Dap, notes: &mut Note
         }
     }
     false
+}
+
+/// Why what a file of GSDML `file` declares is left out: gsdc writes it
+/// only from the version a file at hand first shows it in (E198).
+pub(super) fn later_than(introduced: Introduced, file: Version) -> String {
+    format!(
+        "gsdc writes it in GSDML {} and later (E198), the first version a file at hand shows it in ({}), and the description's file is {file}",
+        introduced.version.number(),
+        introduced.shown_by
+    )
 }
 
 /// AddressAssignment's ways, when each is one the description names, once.
