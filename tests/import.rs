@@ -1617,6 +1617,68 @@ fn movi_cs_profienergy_imports() {
     }
 }
 
+/// MOVI-C's process data modules, each allowed in slots 2 to 5 (lines 41
+/// to 56: `AllowedInSlots="2..5"`), import as `module_slots`, and its
+/// "Leermodul" (line 389: ModuleIdentNumber 0x7531, one submodule 0x1
+/// with an empty `IOData`, "Empty" and "Leerplatz", allowed in slots 1 to
+/// 5 at line 40) as `[profinet.empty_module]`; the round trip finds neither
+/// changed and nothing of them is left out.
+#[test]
+fn movi_cs_slots_and_empty_module_import() {
+    let imported = corpus_import(MOVI_C);
+    let toml = draft(&imported);
+    assert_says(
+        toml,
+        &[
+            "module_slots = [2, 5]\n",
+            "[profinet.empty_module]\nname = { en = \"Empty\", de = \"Leerplatz\" }\ninfo = { en = \"Empty, no module plugged in\", de = \"Leerplatz, kein Modul gesteckt\" }\nslots = [1, 5]\nident = 0x00007531\nsubmodule_ident = 0x00000001\n",
+        ],
+    );
+    for code in ["E601", "W600"] {
+        for message in messages(&imported, code) {
+            assert!(
+                ![
+                    "AllowedInSlots",
+                    "Leermodul",
+                    "Empty",
+                    "PhysicalSlots",
+                    "IOConfigData"
+                ]
+                .iter()
+                .any(|a| message.contains(a)),
+                "{message}"
+            );
+        }
+    }
+}
+
+/// A process data module allowed other slots than the others (MOVI-C's
+/// first, line 41, made `2..4`) leaves the description's slots the first
+/// module's: its own are left out at its reference, and the round trip
+/// names the change there.
+#[test]
+fn a_module_in_other_slots_than_the_others_is_left_out_there() {
+    let text = corpus_gsdml_text(MOVI_C).replacen(
+        r#"ModuleItemTarget="1PD_InOut" AllowedInSlots="2..5""#,
+        r#"ModuleItemTarget="1PD_InOut" AllowedInSlots="2..4""#,
+        1,
+    );
+    let imported = import(MOVI_C, text.as_bytes());
+    assert_says(draft(&imported), &["module_slots = [2, 4]\n"]);
+    let w600 = messages(&imported, "W600");
+    let slots: Vec<&&str> = w600
+        .iter()
+        .filter(|m| m.contains("AllowedInSlots"))
+        .collect();
+    assert_eq!(slots.len(), 15, "{w600:#?}");
+    assert!(slots[0].starts_with("ModuleItemRef `2PD_InOut` AllowedInSlots is not imported: its slots 2..5 are not the first module's, 2..4"));
+    let e601 = messages(&imported, "E601");
+    assert_eq!(
+        e601.iter().filter(|m| m.contains("AllowedInSlots")).count(),
+        15
+    );
+}
+
 /// PROFIenergy in a file of a version gsdc does not write it in (MOVI-C's
 /// text under a V2.33 name) is left out once, at its element, with why;
 /// the access point's `PROFIenergyASE_Supported` and its `EnergySaving`
@@ -2659,12 +2721,11 @@ fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
     assert_eq!(changes, found);
     let r = imported.round_trip;
     assert_eq!(changes.len(), r.breaking + r.compatible);
-    // Lines 41, 389 and 262 of the file, read by hand: the first process
-    // data module's reference, allowed in slots 2 to 5, the empty module,
-    // and the third access point, whose ident number is the first's.
+    // Lines 406 and 262 of the file, read by hand: the first safety
+    // module, and the third access point, whose ident number is the
+    // first's.
     for line in [
-        r#":41: DAP "DFC2xA V1.0" (0x00007532) module "Module I/O (01 word)" (0x00000002) AllowedInSlots (breaking): "2..5" → "1""#,
-        r#":389: module "Empty" (0x00007531) (breaking): removed"#,
+        r#":406: module "F-Modul I/O (4/3 Byte)" (0x00002716) (breaking): removed"#,
         r#":262: DAP "DFC2xA V4.0" (0x00007532) (breaking): removed"#,
     ] {
         assert!(changes.contains(&format!("{MOVI_C}{line}")), "{line}");

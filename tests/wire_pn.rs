@@ -62,11 +62,11 @@ fn assert_lines(text: &str, lines: &[&str]) {
 
 /// Every shipped description and valid fixture with [profinet], as
 /// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
-/// pass: each of its modules, the soft card (found by its name of station,
-/// stopped by SIGINT and by SIGTERM), two negative cases (another module
-/// ident, another input length), one for each module in an API other than 0
-/// (a layout that says API 0), and one for each device access point after
-/// the first.
+/// pass: each of its modules (its empty module too, plugged alone), the
+/// soft card (found by its name of station, stopped by SIGINT and by
+/// SIGTERM), two negative cases (another module ident, another input
+/// length), one for each module in an API other than 0 (a layout that says
+/// API 0), and one for each device access point after the first.
 fn with_profinet() -> Vec<(String, String, usize)> {
     let mut found = Vec::new();
     for folder in ["descriptions", "tests/fixtures/valid"] {
@@ -80,7 +80,8 @@ fn with_profinet() -> Vec<(String, String, usize)> {
             };
             let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
             let later_daps = profinet.daps.len() - 1;
-            let exchanges = profinet.modules.len() + 1 + 2 + other_apis + later_daps;
+            let empty = usize::from(profinet.empty_module.is_some());
+            let exchanges = profinet.modules.len() + empty + 1 + 2 + other_apis + later_daps;
             found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
         }
     }
@@ -130,7 +131,7 @@ fn every_profinet_description_every_module() {
     assert_lines(
         &text,
         &[
-            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 2: 1 records decoded, 1 inputs observed",
             "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 1",
             "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
@@ -435,9 +436,9 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
         &[
             "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
             "PASS IDM_STD_TEL_1 under device access point 2:",
-            "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 1",
+            "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 2",
             "FAIL IDM_STD_TEL_1 under device access point 3: Connect failed: PNIO status DB 81 03 04",
-            "PROFINET own_idents: 7 passed, 1 failed",
+            "PROFINET own_idents: 8 passed, 1 failed",
         ],
     );
 }

@@ -697,6 +697,26 @@ pub struct Profinet {
     /// The card's PROFIenergy, as every device access point's own
     /// submodule declares it.
     pub profienergy: Option<Spanned<ProfiEnergy>>,
+    /// The slots that each take one module, its own telegram: `[first,
+    /// last]`; slot 1 alone when left out.
+    pub module_slots: Option<Spanned<Exactly<Spanned<u16>, 2>>>,
+    /// The module without data the card takes in a slot without a data
+    /// module.
+    pub empty_module: Option<Spanned<EmptyModule>>,
+}
+
+/// `[profinet.empty_module]`: a module without IO data or records (SEW's
+/// MOVI-C: "Empty, no module plugged in").
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EmptyModule {
+    pub name: Spanned<Text>,
+    pub info: Option<Spanned<Text>>,
+    /// The slots it may go into, `[first, last]`.
+    pub slots: Spanned<Exactly<Spanned<u16>, 2>>,
+    /// Its ModuleIdentNumber, and its submodule's where not the same.
+    pub ident: Option<Spanned<u32>>,
+    pub submodule_ident: Option<Spanned<u32>>,
 }
 
 /// `[profinet.profienergy]`: the PROFIenergy profile the card implements,

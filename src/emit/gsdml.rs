@@ -9,9 +9,9 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, ExtendedDiagnosis, Irt, Isochronous, Module, NetloadClass,
-    ParameterRecord, ProfiEnergy, Profinet, RecordValue, RecordValueType, Stack, SubmoduleRecord,
-    TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT, MODULE_SLOT,
+    ConformanceClass, Dap, DataItem, EmptyModule, ExtendedDiagnosis, Irt, Isochronous, Module,
+    NetloadClass, ParameterRecord, ProfiEnergy, Profinet, RecordValue, RecordValueType, Stack,
+    SubmoduleRecord, TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT,
     PROFIDRIVE_DATA_SUBSLOT,
 };
 use crate::ir::{Allowed, Ir, Text};
@@ -231,7 +231,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     let stack = &dap.stack;
     let flag = |on: bool| if on { "true" } else { "false" };
-    let physical_slots = format!("0..{}", stack.last_slot.unwrap_or(MODULE_SLOT));
+    let physical_slots = format!("0..{}", stack.last_slot.unwrap_or(p.last_used_slot()));
     let ident = hex32(dap.ident);
     let interval = p.min_device_interval.to_string();
     let version = p.pnio_version.to_string();
@@ -289,11 +289,20 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     );
     doc.leaf("IOConfigData", &borrowed(&io));
     doc.open("UseableModules", &[]);
-    let slot = MODULE_SLOT.to_string();
+    let slots = p.module_slots.to_string();
     for m in dap.modules.iter().map(|&i| &p.modules[i]) {
         doc.leaf(
             "ModuleItemRef",
-            &[("ModuleItemTarget", &m.id), ("AllowedInSlots", &slot)],
+            &[("ModuleItemTarget", &m.id), ("AllowedInSlots", &slots)],
+        );
+    }
+    if let Some(empty) = &p.empty_module {
+        doc.leaf(
+            "ModuleItemRef",
+            &[
+                ("ModuleItemTarget", EmptyModule::ID),
+                ("AllowedInSlots", &empty.slots.to_string()),
+            ],
         );
     }
     doc.close("UseableModules");
@@ -841,7 +850,48 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     for m in &p.modules {
         module(doc, ir, p, m);
     }
+    if let Some(empty) = &p.empty_module {
+        empty_module(doc, p, empty);
+    }
     doc.close("ModuleList");
+}
+
+/// The module without data: one submodule with an empty `IOData`, as SEW's
+/// MOVI-C writes its "Empty" module.
+fn empty_module(doc: &mut Doc, p: &Profinet, empty: &EmptyModule) {
+    let ident = hex32(empty.ident);
+    doc.open(
+        "ModuleItem",
+        &[("ID", EmptyModule::ID), ("ModuleIdentNumber", &ident)],
+    );
+    module_info(doc, &empty.name, &empty.info, &[]);
+    doc.open("VirtualSubmoduleList", &[]);
+    let submodule_ident = hex32(empty.submodule_ident);
+    let im_records = module_im_records(p);
+    let mut attributes = vec![
+        ("ID", EmptyModule::SUBMODULE_ID),
+        ("SubmoduleIdentNumber", &submodule_ident),
+    ];
+    attributes.extend(writeable_im(&im_records));
+    attributes.push(("MayIssueProcessAlarm", "false"));
+    doc.open("VirtualSubmoduleItem", &attributes);
+    doc.leaf("IOData", &[]);
+    module_info(doc, &empty.name, &empty.info, &[]);
+    doc.close("VirtualSubmoduleItem");
+    doc.close("VirtualSubmoduleList");
+    doc.close("ModuleItem");
+}
+
+/// The I&M records the controller may write to a module's submodules, as
+/// `Writeable_IM_Records` lists them.
+fn module_im_records(p: &Profinet) -> String {
+    blank_separated(&p.interface_properties.module_writeable_im_records)
+}
+
+/// The submodule attribute of [`module_im_records`]: an empty list is not
+/// a value of `Writeable_IM_Records`.
+fn writeable_im(records: &str) -> Option<(&'static str, &str)> {
+    (!records.is_empty()).then_some(("Writeable_IM_Records", records))
 }
 
 /// A module with its data submodule; a PROFIdrive
@@ -849,10 +899,8 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 /// API and fixed in their subslots, as ABB's FENA has them.
 fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
     let ident = hex32(m.ident_number);
-    let im_records = blank_separated(&p.interface_properties.module_writeable_im_records);
-    // An empty list is not a value of Writeable_IM_Records.
-    let writeable_im =
-        (!im_records.is_empty()).then_some(("Writeable_IM_Records", im_records.as_str()));
+    let im_records = module_im_records(p);
+    let writeable_im = writeable_im(&im_records);
     doc.open(
         "ModuleItem",
         &[("ID", &m.id), ("ModuleIdentNumber", &ident)],

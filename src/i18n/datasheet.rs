@@ -242,6 +242,11 @@ phrases! {
         de: "IO-Datenbytes höchstens, Eingänge und Ausgänge (mit IOPS und IOCS)",
     };
     IO_DATA_TOGETHER = { en: "together", zh: "合计", de: "zusammen" };
+    MODULE_SLOTS = {
+        en: "Slots of the modules (each slot takes one, its own telegram)",
+        zh: "模块插槽（每个插槽插一个模块，各有自己的报文）",
+        de: "Steckplätze der Module (jeder Steckplatz nimmt eines, mit eigenem Telegramm)",
+    };
     PROFINET_DEVICE = { en: "PROFINET device", zh: "PROFINET 设备", de: "PROFINET-Gerät" };
     IRT = {
         en: "Isochronous real time (RT_CLASS_3)",

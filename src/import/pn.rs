@@ -15,6 +15,7 @@ mod fail_safe;
 mod irt;
 mod own_records;
 mod profienergy;
+mod slots;
 mod stack;
 
 use super::numbered::{pattern, Pattern};
@@ -23,7 +24,7 @@ use super::Notes;
 use crate::device::pn::{Dap, DataItem, PnDevice, PnModule, Record, Submodule, SubmoduleKind};
 use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
 use crate::i18n::{files, Phrase};
-use crate::ir::profinet::{ModuleKind, Version, PROFIDRIVE_API};
+use crate::ir::profinet::{ModuleKind, Slots, Version, PROFIDRIVE_API};
 use crate::ir::{Direction, Layout, PkwKind};
 use crate::lower::STANDARD_TELEGRAM_2_WORDS;
 use std::fmt::Write as _;
@@ -163,10 +164,9 @@ pub(super) fn describe(
             "the description's modules each carry one submodule of data",
         );
     }
-    let recognised: Vec<Recognised> = dap
-        .useable_modules
-        .iter()
-        .filter_map(|r| device.modules.iter().find(|m| m.id == r.target))
+    let recognised: Vec<Recognised> = slots::offered(device, dap)
+        .map(|(_, m)| m)
+        .filter(|m| !slots::is_empty_module(m))
         .filter_map(|m| recognise(m, notes))
         .collect();
     let (modules, pkw) = one_pkw_kind(recognised, notes);
@@ -179,12 +179,18 @@ pub(super) fn describe(
     }
     let name = file_name(file, device, notes)?;
     let device_info = attribute_text(&device.identity, "DeviceIdentity/InfoText@TextId");
-    let first_stack = stack::Declared::of(dap, &modules, name.version, notes);
+    let mut taken: Vec<u32> = dap.item.ident.into_iter().collect();
+    taken.extend(modules.iter().filter_map(|m| m.module.ident));
+    let empty = slots::empty_module(device, dap, &taken, notes);
+    taken.extend(empty.as_ref().and_then(|e| e.module.ident));
+    let module_slots = slots::module_slots(dap, &modules, notes);
+    let placed = (module_slots, empty.as_ref().map(|e| e.slots));
+    let first_stack = stack::Declared::of(dap, (&modules, placed), name.version, notes);
     let later = daps::later_daps(
         (dap, others),
         (&first_stack, name.version),
         device_info,
-        &modules,
+        (&modules, placed, taken),
         notes,
     );
     let timing = irt::Declared::of(dap, &modules, notes);
@@ -192,7 +198,7 @@ pub(super) fn describe(
     unsaid_extras(
         device,
         (dap, &later),
-        &modules,
+        (&modules, empty.as_ref()),
         (&timing, energy.is_some()),
         notes,
     );
@@ -214,7 +220,7 @@ pub(super) fn describe(
         device,
         &imported_daps,
         &name,
-        &modules,
+        (&modules, module_slots),
         notes,
         timing.irt.is_some(),
     );
@@ -227,6 +233,9 @@ pub(super) fn describe(
     }
     if let Some(energy) = &energy {
         energy.write(&mut out);
+    }
+    if let Some(empty) = &empty {
+        empty.write(&mut out);
     }
     timing.write(&mut out);
     records.write_indexes(&mut out);
@@ -1069,7 +1078,7 @@ fn profinet(
     device: &PnDevice,
     daps: &[&Dap],
     name: &FileName,
-    modules: &[Recognised],
+    (modules, module_slots): (&[Recognised], Slots),
     notes: &mut Notes,
     has_irt: bool,
 ) {
@@ -1128,6 +1137,9 @@ fn profinet(
     let offered = if with.is_empty() { &without } else { &with };
     out.key("pzd_lengths", list(offered));
     out.string("module_pkw", module_pkw);
+    if module_slots != Slots::ONE {
+        out.key("module_slots", slots::slot_list(module_slots));
+    }
     for (key, kind) in &MODULE_KIND_KEYS[1..] {
         if modules.iter().any(|m| m.kind == *kind) {
             out.key(key, true);
@@ -1799,12 +1811,25 @@ fn application_class(
     Some(("CertificationInfo@ApplicationClass", Some(classes)))
 }
 
+/// W600 for each of `attributes` of element `of` that is not `known`.
+fn unsaid_attributes(
+    notes: &mut Notes,
+    attributes: &[Attribute],
+    known: &[(&str, Option<&str>)],
+    of: &str,
+) {
+    for a in attributes.iter().filter(|a| !fits(a, known)) {
+        let why = "the description has no key for it, or gsdc writes another value";
+        notes.unsaid(&format!("{of} {}", a.name), &a.place, why);
+    }
+}
+
 /// W600 for each attribute and element the description has no place for,
 /// or whose value gsdc writes another way.
 fn unsaid_extras(
     device: &PnDevice,
     (first, later): (&Dap, &[daps::DapEntry]),
-    modules: &[Recognised],
+    (modules, empty): (&[Recognised], Option<&slots::Empty>),
     (timing, has_energy): (&irt::Declared, bool),
     notes: &mut Notes,
 ) {
@@ -1838,23 +1863,20 @@ fn unsaid_extras(
     if submodules_repeat_categories(modules) {
         data_known.push((CATEGORY, None));
     }
-    let mut check = |attributes: &[Attribute], known: &[(&str, Option<&str>)], of: &str| {
-        for a in attributes {
-            if !fits(a, known) {
-                let why = "the description has no key for it, or gsdc writes another value";
-                notes.unsaid(&format!("{of} {}", a.name), &a.place, why);
-            }
-        }
-    };
     for dap in [first].into_iter().chain(later.iter().map(|l| l.dap)) {
-        check(&dap.item.attributes, &dap_known, "DeviceAccessPointItem");
+        unsaid_attributes(
+            notes,
+            &dap.item.attributes,
+            &dap_known,
+            "DeviceAccessPointItem",
+        );
         for s in &dap.item.submodules {
             let known = match s.kind {
                 SubmoduleKind::Interface => &interface_known,
                 SubmoduleKind::Port => &port_known,
                 _ => &own_known,
             };
-            check(&s.attributes, known, s.kind.element());
+            unsaid_attributes(notes, &s.attributes, known, s.kind.element());
         }
     }
     let mut module_known = vec![(CATEGORY, None)];
@@ -1862,11 +1884,33 @@ fn unsaid_extras(
         module_known.extend(MODULE_RELEASES.map(|name| (name, None)));
     }
     for m in modules {
-        check(&m.module.attributes, &module_known, "ModuleItem");
+        unsaid_attributes(notes, &m.module.attributes, &module_known, "ModuleItem");
         if let Some(s) = m.access_point {
-            check(&s.attributes, SUBMODULE_ATTRIBUTES, "VirtualSubmoduleItem");
+            unsaid_attributes(
+                notes,
+                &s.attributes,
+                SUBMODULE_ATTRIBUTES,
+                "VirtualSubmoduleItem",
+            );
         }
-        check(&m.data.attributes, &data_known, "VirtualSubmoduleItem");
+        unsaid_attributes(
+            notes,
+            &m.data.attributes,
+            &data_known,
+            "VirtualSubmoduleItem",
+        );
+    }
+    if let Some(empty) = empty {
+        unsaid_attributes(notes, &empty.module.attributes, &[], "ModuleItem");
+        let submodules = &empty.module.submodules;
+        for s in submodules {
+            unsaid_attributes(
+                notes,
+                &s.attributes,
+                SUBMODULE_ATTRIBUTES,
+                "VirtualSubmoduleItem",
+            );
+        }
     }
     for a in device.identity.iter().filter(|a| {
         ![

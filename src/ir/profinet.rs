@@ -54,6 +54,12 @@ pub struct Profinet {
     /// A PROFIdrive module's access point submodule's ident number.
     pub access_point_ident: u32,
     pub modules: Vec<Module>,
+    /// The slots each of which takes one of the modules, each plugged
+    /// module its own telegram (`AllowedInSlots`).
+    pub module_slots: Slots,
+    /// The module without data the card takes where a slot has no data
+    /// module, when stated (SEW's MOVI-C: "Empty").
+    pub empty_module: Option<EmptyModule>,
     /// The hardware catalog's groups of modules, in the order first used.
     pub categories: Vec<Category>,
     /// One per set of choices the records refer to.
@@ -162,6 +168,15 @@ impl Profinet {
         &self.daps[0]
     }
 
+    /// The last slot anything is plugged into: `PhysicalSlots` reaches at
+    /// least to it.
+    pub fn last_used_slot(&self) -> u16 {
+        last_used_slot(
+            self.module_slots,
+            self.empty_module.as_ref().map(|e| e.slots),
+        )
+    }
+
     /// The record of a kind of mapping, when a module carries it.
     pub fn record(&self, kind: MappingKind) -> Option<&RecordPlan> {
         self.records.iter().find(|r| r.kind == kind)
@@ -204,6 +219,9 @@ impl Profinet {
                 refs.extend(record.refs.iter().map(|r| &r.text));
                 refs.extend(record.fail_safe.iter().map(|v| &v.text));
             }
+        }
+        if let Some(empty) = &self.empty_module {
+            refs.extend([&empty.name, &empty.info]);
         }
         for record in self.access_point_records.iter().chain(&self.port_records) {
             refs.push(&record.name);
@@ -318,8 +336,68 @@ pub const DEFAULT_SUBSLOT: u16 = 1;
 /// interface and the ports, as p-net does it.
 pub const INTERFACE_SUBSLOT: u16 = 0x8000;
 pub const FIRST_PORT_SUBSLOT: u16 = 0x8001;
-/// The slot modules are plugged into; the DAP is in slot 0.
+/// The slot modules are plugged into unless the description says others;
+/// the DAP is in slot 0.
 pub const MODULE_SLOT: u16 = 1;
+
+/// Slots `first` to `last`, as `AllowedInSlots` lists them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Slots {
+    pub first: u16,
+    pub last: u16,
+}
+
+impl Slots {
+    /// gsdc's default: the one [`MODULE_SLOT`].
+    pub const ONE: Slots = Slots {
+        first: MODULE_SLOT,
+        last: MODULE_SLOT,
+    };
+
+    pub fn count(self) -> u16 {
+        self.last - self.first + 1
+    }
+
+    pub fn iter(self) -> std::ops::RangeInclusive<u16> {
+        self.first..=self.last
+    }
+}
+
+/// A GSDML slot list: `1`, or `2..5`.
+impl std::fmt::Display for Slots {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.first == self.last {
+            true => write!(f, "{}", self.first),
+            false => write!(f, "{}..{}", self.first, self.last),
+        }
+    }
+}
+
+/// The last slot a data module (in `module_slots`) or the empty module
+/// (in its `empty` slots) goes into.
+pub fn last_used_slot(module_slots: Slots, empty: Option<Slots>) -> u16 {
+    module_slots.last.max(empty.map_or(0, |e| e.last))
+}
+
+/// A module without IO data or records, which the controller plugs into a
+/// slot that takes no data module: its one submodule only says the slot is
+/// in use as planned.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct EmptyModule {
+    /// ModuleIdentNumber and its submodule's SubmoduleIdentNumber.
+    pub ident: u32,
+    pub submodule_ident: u32,
+    pub name: TextRef,
+    pub info: TextRef,
+    pub slots: Slots,
+}
+
+impl EmptyModule {
+    /// Its ModuleItem's ID and its submodule's.
+    pub const ID: &'static str = "IDM_EMPTY";
+    pub const SUBMODULE_ID: &'static str = "IDS_EMPTY";
+}
 
 /// The PROFIenergy profile the card implements, as every device access
 /// point's own submodule declares it.
@@ -437,6 +515,10 @@ pub struct Dap {
     /// submodules need in and out together where more; unwritten when the
     /// stack states none.
     pub max_data_length: Option<u16>,
+    /// Whether the lengths hold every slot with its largest module: else
+    /// the engineering tool refuses some combinations (`gsdc check`'s
+    /// W302), as the description's stated limit wants.
+    pub io_full: bool,
     pub stack: Stack,
 }
 

@@ -28,17 +28,20 @@ mod profienergy;
 pub(crate) use profienergy::is_version as is_profile_version;
 mod profile_words;
 mod pzd_names;
+mod slots;
+pub(crate) use slots::EMPTY_MODULE_IDENT;
 mod records;
 mod stack;
 mod submodule_records;
-pub(crate) use stack::{MAX_IO_LENGTH, MAX_SLOT};
+pub(crate) use stack::MAX_SLOT;
 
 pub(crate) use diagnosis::{
     ADD_VALUE_BYTES, CHANNEL_ERROR_TYPES, EXTENDED_ERROR_TYPES, PROFILE_ERROR_TYPES,
 };
 pub(crate) use io::{
     category as module_category, description as module_description, gsdc_name as module_name,
-    info_prefix, io_length, pkw_words, profidrive_telegram_1_name, STANDARD_TELEGRAM_2_WORDS,
+    info_prefix, io_length, pkw_words, profidrive_telegram_1_name, IoNeed, MAX_IO_LENGTH,
+    STANDARD_TELEGRAM_2_WORDS,
 };
 pub(crate) use profile_words::profile_words;
 
@@ -198,6 +201,9 @@ pub fn lower(
             (&p.vendor_id, &p.device_id),
         ),
     );
+    let module_slots = slots::module_slots(cx, p.module_slots.as_ref());
+    let empty_module = slots::empty_module(cx, p.empty_module.as_ref());
+    let (module_slots, empty_module) = (module_slots?, empty_module?);
     let first = daps::First {
         idents: &idents,
         name: p.name.as_ref().map_or_else(
@@ -209,6 +215,7 @@ pub fn lower(
         media_redundancy,
         device,
         version: gsdml_version,
+        slots: (module_slots, empty_module.as_ref()),
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
@@ -269,6 +276,8 @@ pub fn lower(
             ),
         }),
         modules,
+        module_slots,
+        empty_module,
         value_items,
         records: reading_plans,
         module_values,

@@ -246,7 +246,7 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         let slots = dap
             .descendants()
             .find(|n| n.has_tag_name("ModuleItemRef") && attr(*n, "ModuleItemTarget") == id)
-            .map(|r| attr(r, "AllowedInSlots").to_string())
+            .map(|r| slot_list(attr(r, "AllowedInSlots")))
             .unwrap();
         let name = module
             .children()
@@ -479,4 +479,13 @@ fn data_type_len(data_type: &str) -> usize {
         "Unsigned32" | "Integer32" | "Float32" => 4,
         other => panic!("gsdc writes no {other}"),
     }
+}
+
+/// Every slot of an `AllowedInSlots` of one slot or one range: `2..4` is
+/// `2 3 4`.
+fn slot_list(allowed: &str) -> String {
+    let (first, last) = allowed.split_once("..").unwrap_or((allowed, allowed));
+    let [first, last]: [u16; 2] = [first, last].map(|n| n.parse().expect("a slot number"));
+    let slots: Vec<String> = (first..=last).map(|s| s.to_string()).collect();
+    slots.join(" ")
 }

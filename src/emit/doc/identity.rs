@@ -5,7 +5,7 @@ use super::page::{code, text, Builder, Cell, Run};
 use super::{decision_kind, with_placeholder, Lang};
 use crate::i18n::{sheet as w, Phrase};
 use crate::ir::profibus::Profibus;
-use crate::ir::profinet::{Dap, Irt, Isochronous, ProfiEnergy, Profinet};
+use crate::ir::profinet::{Dap, Irt, Isochronous, ProfiEnergy, Profinet, Slots};
 use crate::ir::{Decision, Ir, MappingKind, PkwKind};
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
@@ -254,6 +254,9 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
             text(isochronous_summary(iso, lang)),
         ));
     }
+    if p.module_slots != Slots::ONE || p.empty_module.is_some() {
+        rows.push((lang.t(w::MODULE_SLOTS), text(slots_summary(p, lang))));
+    }
     if let Some(energy) = &p.profienergy {
         rows.push(("PROFIenergy", text(profienergy_summary(energy))));
     }
@@ -305,6 +308,21 @@ fn isochronous_summary(iso: &Isochronous, lang: Lang) -> String {
     match iso.required {
         true => format!("{summary}; {}", lang.t(w::ISOCHRONOUS_REQUIRED)),
         false => summary,
+    }
+}
+
+/// The data modules' slots and the empty module's, as AllowedInSlots
+/// lists them: `2..5; Empty (0x00007531): 1..5`.
+fn slots_summary(p: &Profinet, lang: Lang) -> String {
+    let data = p.module_slots.to_string();
+    match &p.empty_module {
+        None => data,
+        Some(e) => format!(
+            "{data}; {} (0x{:08X}): {}",
+            lang.text(&e.name.text),
+            e.ident,
+            e.slots
+        ),
     }
 }
 

@@ -644,6 +644,48 @@ fn dap_idents(p: &IrProfinet) -> Consts {
     }
 }
 
+/// The slot the modules go into, or the first and the last of their
+/// slots, each taking one module.
+fn module_slots(slots: profinet::Slots) -> Consts {
+    if slots.first == slots.last {
+        return Consts::one(
+            Doc::plain("The slot the I/O module is plugged into."),
+            &["module", "slot"],
+            Ty::U16,
+            Val::Dec(slots.first.into()),
+        );
+    }
+    Consts {
+        doc: Doc::plain(
+            "The first and the last slot of the I/O modules: each slot between takes one, its own telegram.",
+        ),
+        items: vec![
+            Const::new(&["first", "module", "slot"], Ty::U16, Val::Dec(slots.first.into())),
+            Const::new(&["last", "module", "slot"], Ty::U16, Val::Dec(slots.last.into())),
+        ],
+    }
+}
+
+/// The empty module's ident numbers and slots.
+fn empty_module(e: &profinet::EmptyModule) -> Consts {
+    Consts {
+        doc: Doc::plain(format!(
+            "The empty module \"{}\", without data, which the controller plugs into a slot that has no I/O module: its ident number, its submodule's, and the first and the last slot it may go into.",
+            e.name.text.en
+        )),
+        items: vec![
+            Const::new(&["empty", "module", "ident"], Ty::U32, Val::hex_u32(e.ident)),
+            Const::new(
+                &["empty", "submodule", "ident"],
+                Ty::U32,
+                Val::hex_u32(e.submodule_ident),
+            ),
+            Const::new(&["empty", "module", "first", "slot"], Ty::U16, Val::Dec(e.slots.first.into())),
+            Const::new(&["empty", "module", "last", "slot"], Ty::U16, Val::Dec(e.slots.last.into())),
+        ],
+    }
+}
+
 /// The submodule ident numbers of the interface and the ports, where they
 /// are not their subslots (gsdc's numbering, which the subslots say).
 fn interface_idents(p: &IrProfinet) -> Option<Consts> {
@@ -723,12 +765,8 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
         },
     ];
     consts.extend(interface_idents(p));
-    consts.extend([Consts::one(
-        Doc::plain("The slot the I/O module is plugged into."),
-        &["module", "slot"],
-        Ty::U16,
-        Val::Dec(profinet::MODULE_SLOT.into()),
-    )]);
+    consts.push(module_slots(p.module_slots));
+    consts.extend(p.empty_module.as_ref().map(empty_module));
     for m in &p.modules {
         let name = &m.name.text.en;
         let constant = |what: &str, ty, value| Const {

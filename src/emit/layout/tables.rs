@@ -449,14 +449,18 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                 "later_daps",
                 Value::List(
                     Elem::Record("pn dap"),
-                    p.daps[1..].iter().map(pn_dap).collect(),
+                    p.daps[1..].iter().map(|d| pn_dap(p, d)).collect(),
                 ),
             ),
             (
                 "modules",
                 Value::List(
                     Elem::Record("pn module"),
-                    p.modules.iter().map(|m| pn_module(ir, p, m)).collect(),
+                    p.modules
+                        .iter()
+                        .map(|m| pn_module(ir, p, m))
+                        .chain(p.empty_module.iter().map(pn_empty_module))
+                        .collect(),
                 ),
             ),
             ("pkw", pkw_codec(ir.telegram.pkw)),
@@ -562,7 +566,10 @@ fn pn_ports(dap: &profinet::Dap) -> Vec<Value> {
     ports.map(|p| fixed_submodule(p.subslot, p.ident)).collect()
 }
 
-fn pn_dap(dap: &profinet::Dap) -> Value {
+/// A later DAP; it offers the empty module, which follows the data
+/// modules in `modules`, as every DAP does.
+fn pn_dap(p: &Profinet, dap: &profinet::Dap) -> Value {
+    let empty = p.empty_module.as_ref().map(|_| p.modules.len());
     Value::Record(record(
         "pn dap",
         vec![
@@ -577,7 +584,10 @@ fn pn_dap(dap: &profinet::Dap) -> Value {
             ),
             (
                 "modules",
-                Value::List(Elem::Index, dap.modules.iter().map(|&i| size(i)).collect()),
+                Value::List(
+                    Elem::Index,
+                    dap.modules.iter().copied().chain(empty).map(size).collect(),
+                ),
             ),
         ],
     ))
@@ -611,16 +621,9 @@ fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
     // The same both ways; a 32-bit item is two words (telegram 2's NSOLL_B).
     let bytes = usize::from(m.layout.bytes());
     let io = (bytes, bytes);
-    let records = m.records.iter().map(|r| pn_record(ir, r)).collect();
-    Value::Record(record(
-        "pn module",
+    module_record(
+        (&m.name.text.en, m.ident_number, p.module_slots),
         vec![
-            ("name", text(&m.name.text.en)),
-            ("ident", hex(m.ident_number, 8)),
-            (
-                "slots",
-                Value::List(Elem::Word, vec![number(profinet::MODULE_SLOT)]),
-            ),
             ("api", hex(m.api, 8)),
             ("pkw", Value::Bool(m.layout.pkw)),
             ("pzd_words", number(m.layout.pzd_words)),
@@ -639,9 +642,52 @@ fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
                 "data",
                 submodule(m.data_subslot(), m.submodule_ident_number, io),
             ),
-            ("records", Value::List(Elem::Record("pn record"), records)),
         ],
-    ))
+        m.records.iter().map(|r| pn_record(ir, r)).collect(),
+    )
+}
+
+/// The empty module as a module of no words, whose one submodule carries
+/// no data.
+fn pn_empty_module(e: &profinet::EmptyModule) -> Value {
+    module_record(
+        (&e.name.text.en, e.ident, e.slots),
+        vec![
+            ("api", hex(0u32, 8)),
+            ("pkw", Value::Bool(false)),
+            ("pzd_words", number(0u8)),
+            ("double_words", Value::List(Elem::Index, Vec::new())),
+            (
+                "access_point",
+                Value::Optional(Elem::Record("pn submodule"), None),
+            ),
+            (
+                "data",
+                fixed_submodule(profinet::DEFAULT_SUBSLOT, e.submodule_ident),
+            ),
+        ],
+        Vec::new(),
+    )
+}
+
+/// A `pn module` record: its name, ident number and every slot it may go
+/// into, then `fields`, then its records.
+fn module_record(
+    (name, ident, slots): (&str, u32, profinet::Slots),
+    fields: Vec<(&'static str, Value)>,
+    records: Vec<Value>,
+) -> Value {
+    let mut all = vec![
+        ("name", text(name)),
+        ("ident", hex(ident, 8)),
+        (
+            "slots",
+            Value::List(Elem::Word, slots.iter().map(number).collect()),
+        ),
+    ];
+    all.extend(fields);
+    all.push(("records", Value::List(Elem::Record("pn record"), records)));
+    Value::Record(record("pn module", all))
 }
 
 fn pn_record(ir: &Ir, r: &profinet::ParameterRecord) -> Value {

@@ -8,7 +8,7 @@ use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
-use crate::ir::profinet::Version;
+use crate::ir::profinet::{Slots, Version};
 
 /// What the description's device access points share: the first's value
 /// stands for every one (`[profinet]` states it once).
@@ -48,20 +48,19 @@ impl DapEntry<'_> {
 
 /// Each device access point after the first that the format can say;
 /// the others are left out (W600) with the reason. `device_info` is
-/// DeviceIdentity's info text: what an entry without `info` gets.
+/// DeviceIdentity's info text: what an entry without `info` gets; `taken`
+/// the ident numbers of the first and of the modules imported.
 pub(super) fn later_daps<'a>(
     (first, others): (&Dap, &'a [Dap]),
     (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
-    modules: &[Recognised],
+    (modules, slots, mut taken): (&[Recognised], (Slots, Option<Slots>), Vec<u32>),
     notes: &mut Notes,
 ) -> Vec<DapEntry<'a>> {
-    let mut taken: Vec<u32> = first.item.ident.into_iter().collect();
-    taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let mut later = Vec::new();
     for dap in others {
         let keys = entry_keys((first, dap), device_info, modules, &taken).and_then(|mut keys| {
-            let stack = Declared::of(dap, modules, file, notes).over_first(first_stack)?;
+            let stack = Declared::of(dap, (modules, slots), file, notes).over_first(first_stack)?;
             if !stack.is_empty() {
                 let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
                 keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));

@@ -7,7 +7,8 @@ use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::Attribute;
 use crate::gsdml::values::ValueList;
 use crate::import::Notes;
-use crate::ir::profinet::{AddressAssignment, Version, MODULE_SLOT};
+use crate::ir::profinet::{last_used_slot, AddressAssignment, Slots, Version, MODULE_SLOT};
+use crate::lower::IoNeed;
 use crate::spec::{
     is_gsdml_web_server, Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE,
     WEB_SERVER,
@@ -24,8 +25,10 @@ pub(super) struct Declared {
     shared_device: bool,
     application_relations: Option<u16>,
     mau_type_adjustable: bool,
-    /// PhysicalSlots' last, where more than the module's slot.
+    /// PhysicalSlots' last, where more than the last a module goes into,
+    /// which gsdc writes without it.
     last_slot: Option<u16>,
+    last_used_slot: u16,
     /// IOConfigData's MaxInputLength and MaxOutputLength, and its
     /// MaxDataLength (both ways together: written only when the file has
     /// it).
@@ -51,25 +54,33 @@ const PORT_FLAGS: [(&str, &str); 3] = [
 const LINK_STATES: [&str; 3] = ["Up", "Down", "Up+Down"];
 
 /// One of IOConfigData's lengths: the file's, and what the access point's
-/// modules need as gsdc counts it (what gsdc writes unless stated).
+/// modules need as gsdc counts it (gsdc writes the full need unless
+/// stated).
 #[derive(Clone, Copy)]
 struct IoLimit {
     file: Option<u16>,
-    needed: u16,
+    need: IoNeed,
 }
 
 impl IoLimit {
-    /// What the description states: the file's length, where more.
+    /// What the description states: the file's length, where not the
+    /// full need.
     fn stated(self) -> Option<u16> {
-        self.file.filter(|&f| f > self.needed)
+        self.file.filter(|&f| f != self.need.full)
     }
 }
 
 impl Declared {
-    /// `modules` are those the import takes; the DAP's own offer counts.
-    /// `file` is the GSDML version the description's file declares: an
-    /// attribute gsdc writes only from a later version is left out.
-    pub fn of(dap: &Dap, modules: &[Recognised], file: Version, notes: &mut Notes) -> Declared {
+    /// `modules` are those the import takes, in `slots` (with the empty
+    /// module's); the DAP's own offer counts. `file` is the GSDML version
+    /// the description's file declares: an attribute gsdc writes only from
+    /// a later version is left out.
+    pub fn of(
+        dap: &Dap,
+        (modules, slots): (&[Recognised], (Slots, Option<Slots>)),
+        file: Version,
+        notes: &mut Notes,
+    ) -> Declared {
         let attributes = &dap.item.attributes;
         let interface = submodules_of(dap, SubmoduleKind::Interface).next();
         let flag = |name: &str| attribute(attributes, name).is_some_and(is_true);
@@ -103,18 +114,26 @@ impl Declared {
             .filter(|m| dap.useable_modules.iter().any(|r| r.target == m.module.id))
             .map(|m| (m.layout, m.access_point.is_some()));
         let ports = submodules_of(dap, SubmoduleKind::Port).count();
-        let needed = crate::lower::io_length(offered, ports);
+        let last_used_slot = last_used_slot(slots.0, slots.1);
+        let need = crate::lower::io_length(offered, ports, slots);
         // The same each way: the modules' words are as many in as out.
         let io = ["MaxInputLength", "MaxOutputLength"]
-            .map(|name| io_limit(attributes, name, needed, notes));
-        let data = io_limit(attributes, "MaxDataLength", 2 * needed, notes);
+            .map(|name| io_limit(attributes, name, need, notes));
+        // Written where stated, at least both ways' least.
+        let both = 2 * need.least;
+        let need = IoNeed {
+            least: both,
+            full: both,
+        };
+        let data = io_limit(attributes, "MaxDataLength", need, notes);
         let interface_flag = |name: &str| {
             interface.is_some_and(|s| attribute(&s.attributes, name).is_some_and(is_true))
         };
         Declared {
             io,
             data,
-            last_slot: last_slot(notes, attributes).filter(|&last| last > MODULE_SLOT),
+            last_slot: last_slot(notes, attributes).filter(|&last| last > last_used_slot),
+            last_used_slot,
             mau_type_adjustable: mau_type_adjustable(dap, notes),
             power_on_to_comm_ready: power_on_to_comm_ready(attributes, notes),
             network_component_diagnosis: interface_flag("NetworkComponentDiagnosisSupported"),
@@ -174,6 +193,7 @@ impl Declared {
             application_relations: None,
             mau_type_adjustable: false,
             last_slot: None,
+            last_used_slot: self.last_used_slot,
             power_on_to_comm_ready: None,
             network_component_diagnosis: false,
             port_flags: [false; 3],
@@ -268,7 +288,7 @@ impl Declared {
                 self.application_relations.unwrap_or(1).to_string(),
             ));
         }
-        let slots = |d: &Declared| d.last_slot.unwrap_or(MODULE_SLOT);
+        let slots = |d: &Declared| d.last_slot.unwrap_or(d.last_used_slot);
         if slots(self) != slots(base) {
             keys.push(("last_slot", slots(self).to_string()));
         }
@@ -278,15 +298,17 @@ impl Declared {
             .into_iter()
             .zip(self.io.iter().zip(&base.io))
         {
-            let wanted = mine.stated().unwrap_or(mine.needed);
-            let inherited = base.stated().map_or(mine.needed, |b| b.max(mine.needed));
+            let wanted = mine.stated().unwrap_or(mine.need.full);
+            let inherited = base
+                .stated()
+                .map_or(mine.need.full, |b| b.max(mine.need.least));
             if wanted != inherited {
                 keys.push((key, wanted.to_string()));
             }
         }
         // Only where the file writes one: `over_first` refuses a later DAP
         // without one under the first's.
-        let inherited = base.data.file.map(|b| b.max(self.data.needed));
+        let inherited = base.data.file.map(|b| b.max(self.data.need.least));
         if let Some(data) = self.data.file.filter(|&d| Some(d) != inherited) {
             keys.push(("max_data_length", data.to_string()));
         }
@@ -294,18 +316,19 @@ impl Declared {
     }
 }
 
-/// An IOConfigData length, `needed` what the modules need as gsdc counts
-/// it; one less than that, or more than the description takes, is left
-/// out, and the round trip judges it.
-fn io_limit(attributes: &[Attribute], name: &str, needed: u16, notes: &mut Notes) -> IoLimit {
+/// An IOConfigData length, `need` what the modules need as gsdc counts
+/// it; one less than the largest module needs, or more than the
+/// description takes, is left out, and the round trip judges it.
+fn io_limit(attributes: &[Attribute], name: &str, need: IoNeed, notes: &mut Notes) -> IoLimit {
     let max = match name {
         "MaxDataLength" => 2 * crate::lower::MAX_IO_LENGTH,
         _ => crate::lower::MAX_IO_LENGTH,
     };
-    let why = format!("the description's IO lengths are from what the modules need as gsdc counts them ({needed}) to {max}");
+    let least = need.least;
+    let why = format!("the description's IO lengths are from what the largest module needs as gsdc counts it ({least}) to {max}");
     let name = format!("IOConfigData@{name}");
-    let file = number(notes, attributes, &name, needed..=max, &why);
-    IoLimit { file, needed }
+    let file = number(notes, attributes, &name, least..=max, &why);
+    IoLimit { file, need }
 }
 
 /// An `xsd:boolean` that is true.

@@ -3,10 +3,13 @@
 //! in the same file. A later DAP states what differs from the first (its
 //! ident number and name above all); what it leaves out is the first's.
 
+use super::slots::EMPTY_MODULE_IDENT;
 use super::{idents::DapIdents, interface, io, port, stack, Checker};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{Dap, Module, Port, Stack, TextRef, Version};
+use crate::ir::profinet::{
+    last_used_slot, Dap, EmptyModule, Module, Port, Slots, Stack, TextRef, Version,
+};
 use crate::ir::{Device, Text};
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -22,6 +25,8 @@ pub struct First<'a> {
     /// The file's GSDML version, which bounds what every DAP's stack
     /// writes.
     pub version: Version,
+    /// Where the modules go: the data modules' slots and the empty module.
+    pub slots: (Slots, Option<&'a EmptyModule>),
 }
 
 /// Every DAP, the first first; E176 when two of them, or a DAP and a
@@ -33,11 +38,17 @@ pub fn lower(
     modules: &[Module],
 ) -> Option<Vec<Dap>> {
     let all_modules: Vec<usize> = (0..modules.len()).collect();
-    let needed = io::max_lengths(modules.iter(), first.ports.len());
+    let needed = io::io_need(modules.iter(), first.ports.len(), first.slots);
     let (device, version) = (first.device, first.version);
+    let last_used = last_used_slot(first.slots.0, first.slots.1.map(|e| e.slots));
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
-    let first_stack = stack::lower(cx, (&p.stack, &Stack::default()), "profinet.stack", version)?;
+    let first_stack = stack::lower(
+        cx,
+        (&p.stack, &Stack::default()),
+        "profinet.stack",
+        (version, last_used),
+    )?;
     let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
         id: "IDD_DAP".into(),
@@ -56,11 +67,13 @@ pub fn lower(
         max_input_length: io.input,
         max_output_length: io.output,
         max_data_length: io.data,
+        io_full: io.full,
         stack: first_stack,
     }];
     let mut complete = true;
     for (index, given) in p.daps.iter().enumerate() {
-        match lower_entry(cx, (index, given.get_ref()), p, &daps[0], modules, version) {
+        let at = (index, given.get_ref());
+        match lower_entry(cx, at, p, (&daps[0], first.slots), modules, version) {
             Some(dap) => daps.push(dap),
             None => complete = false,
         }
@@ -74,7 +87,7 @@ fn lower_entry(
     cx: &mut Checker,
     (index, given): (usize, &raw::Dap),
     p: &raw::Profinet,
-    first: &Dap,
+    (first, slots): (&Dap, (Slots, Option<&EmptyModule>)),
     modules: &[Module],
     version: Version,
 ) -> Option<Dap> {
@@ -133,8 +146,13 @@ fn lower_entry(
     interface::check_ring_ports(cx, client, port_count);
     let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
     let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
-    let needed = io::max_lengths(offered.iter().map(|&i| &modules[i]), ports.len());
-    let stack = stack::lower(cx, (&given.stack, &first.stack), &what("stack"), version)?;
+    let needed = io::io_need(offered.iter().map(|&i| &modules[i]), ports.len(), slots);
+    let stack = stack::lower(
+        cx,
+        (&given.stack, &first.stack),
+        &what("stack"),
+        (version, last_used_slot(slots.0, slots.1.map(|e| e.slots))),
+    )?;
     let io = stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
     Some(Dap {
@@ -157,6 +175,7 @@ fn lower_entry(
         max_input_length: io.input,
         max_output_length: io.output,
         max_data_length: io.data,
+        io_full: io.full,
         stack,
     })
 }
@@ -254,8 +273,9 @@ fn offered_modules(
 /// E176: a controller tells the device access points and the modules
 /// apart by their ModuleIdentNumber. Checked in the order the description
 /// states them (the first DAP's and the modules' under
-/// `[profinet.ident_numbers]`, then each `[[profinet.daps]]` entry's, even
-/// one that did not lower), each reported at the later of the two.
+/// `[profinet.ident_numbers]`, the empty module's, then each
+/// `[[profinet.daps]]` entry's, even one that did not lower), each reported
+/// at the later of the two.
 fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules: &[Module]) {
     let given = &p.ident_numbers;
     let module_span = |name: &str| {
@@ -277,6 +297,14 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
                 m.ident_number,
                 format!("module `{name}`"),
                 module_span(&name),
+            )
+        }))
+        .chain(p.empty_module.iter().map(|e| {
+            let ident = &e.get_ref().ident;
+            (
+                ident.as_ref().map_or(EMPTY_MODULE_IDENT, |i| *i.get_ref()),
+                "the empty module".to_string(),
+                ident.as_ref().map(Spanned::span),
             )
         }))
         .chain(p.daps.iter().enumerate().map(|(index, d)| {

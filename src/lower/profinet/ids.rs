@@ -13,6 +13,9 @@ pub const INTERFACE_TEXT: &str = "IDT_INTERFACE";
 /// (this and its number).
 pub const INTERFACE_LABEL_TEXT: &str = "IDT_LABEL_INTERFACE";
 pub const PORT_LABEL_TEXT: &str = "IDT_LABEL_PORT_";
+/// TextIds of the empty module's name and info.
+pub const EMPTY_MODULE_NAME: &str = "IDT_EMPTY_NAME";
+pub const EMPTY_MODULE_INFO: &str = "IDT_EMPTY_INFO";
 /// The device symbol's GraphicItem.
 pub const DEVICE_SYMBOL: &str = "IDG_DEVICE_SYMBOL";
 

@@ -8,10 +8,15 @@ use super::pzd_names::PzdNames;
 use super::records::{self, RecordPlan};
 use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{
-    AccessPoint, BitItem, Category, DataItem, Module, ModuleKind, TextRef, PROFIDRIVE_API,
+    AccessPoint, BitItem, Category, DataItem, EmptyModule, Module, ModuleKind, Slots, TextRef,
+    PROFIDRIVE_API,
 };
 use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeMap;
+
+/// IOConfigData's bound on each length (p-net's GSDML guide: "valid
+/// 0..1440"; the reference notes' checks beyond the schema).
+pub(crate) const MAX_IO_LENGTH: u16 = 1440;
 
 /// Standard telegram 1 has two words each way.
 pub const STANDARD_TELEGRAM_1_WORDS: u8 = 2;
@@ -352,27 +357,57 @@ fn bit_text(field: &BitField, index: Option<u8>) -> Text {
 
 /// IOConfigData's MaxInputLength and MaxOutputLength bound what the input
 /// and the output CR carry: IO data and status bytes, as the checker reads
-/// them (E310, `gsdml::io`; docs/rules.md gives the sources). Each
+/// them (E310, W302, `gsdml::io`; docs/rules.md gives the sources). Each
 /// submodule without data (the DAP's, the interface, the ports, a module
-/// access point) has its IOPS in the input CR and its IOCS in the output
-/// CR: one byte each way; a submodule with data both ways adds its IOPS and
-/// the IOCS of the other direction to each. The module with the most of
-/// these is exactly what the checker needs (`tests/gsdml_reader.rs` holds
-/// the two to it); with at most 20 words in a module and 16 ports it stays
-/// far below the limit of 1440.
-pub fn max_lengths<'a>(modules: impl Iterator<Item = &'a Module>, ports: usize) -> (u16, u16) {
-    let length = io_length(modules.map(|m| (m.layout, m.access_point.is_some())), ports);
-    (length, length)
+/// access point, the empty module's) has its IOPS in the input CR and its
+/// IOCS in the output CR: one byte each way; a submodule with data both
+/// ways adds its IOPS and the IOCS of the other direction to each.
+/// `tests/gsdml_reader.rs` holds these to the checker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IoNeed {
+    /// The module with the most alone: what a limit may not be less than
+    /// (E310 otherwise: the module never fits).
+    pub least: u16,
+    /// Every slot with the largest module it takes: what gsdc writes when
+    /// the stack states no limit (W302 otherwise), at most the
+    /// [`MAX_IO_LENGTH`] a CR carries.
+    pub full: u16,
 }
 
-/// [`max_lengths`] of modules given by their layout and whether they have
-/// a module access point (the same each way): what `gsdc import` compares
-/// a file's IOConfigData with.
-pub(crate) fn io_length(modules: impl Iterator<Item = (Layout, bool)>, ports: usize) -> u16 {
+pub fn io_need<'a>(
+    modules: impl Iterator<Item = &'a Module>,
+    ports: usize,
+    (slots, empty): (Slots, Option<&EmptyModule>),
+) -> IoNeed {
+    let modules = modules.map(|m| (m.layout, m.access_point.is_some()));
+    io_length(modules, ports, (slots, empty.map(|e| e.slots)))
+}
+
+/// [`io_need`] of modules given by their layout and whether they have a
+/// module access point (the same each way), in `slots`, with an empty
+/// module in its slots: what `gsdc import` compares a file's IOConfigData
+/// with. With at most 20 words in a module and 16 ports, one module stays
+/// far below the limit of 1440.
+pub(crate) fn io_length(
+    modules: impl Iterator<Item = (Layout, bool)>,
+    ports: usize,
+    (slots, empty): (Slots, Option<Slots>),
+) -> IoNeed {
     let module =
         |(layout, access_point): (Layout, bool)| layout.bytes() + 2 + u16::from(access_point);
     let largest = modules.map(module).max().unwrap_or(0);
-    largest + 2 + u16::try_from(ports).unwrap_or(u16::MAX)
+    let device = 2 + u16::try_from(ports).unwrap_or(u16::MAX);
+    // The empty module's slots that take no data module: its IOPS and IOCS.
+    let only_empty = empty.map_or(0, |e| {
+        e.iter().filter(|s| !slots.iter().contains(s)).count()
+    });
+    let full = u32::from(device)
+        + u32::from(slots.count()) * u32::from(largest)
+        + u32::try_from(only_empty).unwrap_or(u32::MAX);
+    IoNeed {
+        least: largest + device,
+        full: u16::try_from(full).map_or(MAX_IO_LENGTH, |f| f.min(MAX_IO_LENGTH)),
+    }
 }
 
 #[cfg(test)]

@@ -2,9 +2,10 @@
 //! controllers through a device access point. A later DAP's `stack` states
 //! what differs from the first's; each key it leaves out is the first's.
 
+use super::io::{IoNeed, MAX_IO_LENGTH};
 use crate::description::{self as raw, AddressAssignment as RawAssignment, LinkStateDiagnosis};
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{AddressAssignment, Stack, Version, MODULE_SLOT};
+use crate::ir::profinet::{AddressAssignment, Stack, Version};
 use crate::lower::checks::Checker;
 use crate::spec::{
     is_gsdml_web_server, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE, WEB_SERVER,
@@ -13,12 +14,13 @@ use toml::Spanned;
 
 /// The stack `given` states over `inherited` (gsdc's defaults for the
 /// first DAP); `at` is the table's path. E101 for a number out of its
-/// range, E184 for device access ARs without device access.
+/// range (`last_slot` below the last slot a module goes into among them),
+/// E184 for device access ARs without device access.
 pub fn lower(
     cx: &mut Checker,
     (given, inherited): (&raw::Stack, &Stack),
     at: &str,
-    file: Version,
+    (file, last_used_slot): (Version, u16),
 ) -> Option<Stack> {
     let flag = |key: &Option<Spanned<bool>>, inherited: bool| {
         key.as_ref().map_or(inherited, |k| *k.get_ref())
@@ -55,7 +57,7 @@ pub fn lower(
         "max_data_length",
         (1, 2 * MAX_IO_LENGTH),
     );
-    let last_slot = number(&given.last_slot, "last_slot", (MODULE_SLOT, MAX_SLOT));
+    let last_slot = number(&given.last_slot, "last_slot", (last_used_slot, MAX_SLOT));
     let stack = Stack {
         address_assignment,
         device_access: flag(&given.device_access, inherited.device_access),
@@ -156,70 +158,75 @@ fn stated_or<T>(stated: Option<Option<T>>, inherited: Option<T>) -> Option<Optio
 /// PROFINET numbers (record indexes, vendor error types) end.
 pub(crate) const MAX_SLOT: u16 = 0x7FFF;
 
-/// IOConfigData's bound on each length (p-net's GSDML guide: "valid
-/// 0..1440"; the reference notes' checks beyond the schema).
-pub(crate) const MAX_IO_LENGTH: u16 = 1440;
-
-/// IOConfigData's lengths of a DAP whose modules need `needed` bytes each
-/// way: the stack's limits where stated, else the need, and MaxDataLength
-/// (in and out together) where stated. E174 where the DAP's own `stack`
-/// (`given`) states a limit less than its need; a later DAP that takes the
-/// first's limit and needs more (more ports) writes its need, as `gsdc
-/// import` expects.
+/// IOConfigData's lengths of a DAP whose modules need `need` bytes each
+/// way: the stack's limits where stated, else every slot full, and
+/// MaxDataLength (in and out together) where stated. E174 where the DAP's
+/// own `stack` (`given`) states a limit less than its largest module needs;
+/// a later DAP that takes the first's limit and needs more (more ports)
+/// writes what its largest module needs, as `gsdc import` expects.
 pub fn io_lengths(
     cx: &mut Checker,
-    needed: (u16, u16),
+    need: IoNeed,
     stack: &Stack,
     given: &raw::Stack,
     at: &str,
 ) -> IoLengths {
     // `stated`: the key where this DAP's own stack states the limit, and
     // what gsdc writes without it.
-    let mut length =
-        |value: Option<u16>, needed: u16, stated: (&Option<Spanned<u16>>, &str, &str)| {
-            let (key, name, without) = stated;
-            let Some(value) = value else {
-                return needed;
-            };
-            if let (true, Some(key)) = (value < needed, key) {
-                cx.push(
-                    Diagnostic::error(
-                        "E174",
-                        format!("{at}.{name} = {value} is less than the modules need ({needed})"),
-                    )
-                    .at(key.span())
-                    .label("too small")
-                    .help(format!(
-                        "state at least {needed}, or leave it out: {without}"
-                    )),
-                );
-            }
-            value.max(needed)
+    let mut length = |value: Option<u16>,
+                      (least, full): (u16, u16),
+                      stated: (&Option<Spanned<u16>>, &str, &str)| {
+        let (key, name, without) = stated;
+        let Some(value) = value else {
+            return full;
         };
-    let need = "gsdc writes what the modules need";
+        if let (true, Some(key)) = (value < least, key) {
+            cx.push(
+                Diagnostic::error(
+                    "E174",
+                    format!(
+                        "{at}.{name} = {value} is less than the largest module needs ({least})"
+                    ),
+                )
+                .at(key.span())
+                .label("too small")
+                .help(format!(
+                    "state at least {least}, or leave it out: {without}"
+                )),
+            );
+        }
+        value.max(least)
+    };
+    let without = "gsdc writes what every slot with its largest module needs";
+    let each_way = (need.least, need.full);
+    let input = length(
+        stack.max_input_length,
+        each_way,
+        (&given.max_input_length, "max_input_length", without),
+    );
+    let output = length(
+        stack.max_output_length,
+        each_way,
+        (&given.max_output_length, "max_output_length", without),
+    );
+    // In and out together.
+    let both = 2 * need.least;
+    let data = stack.max_data_length.map(|data| {
+        length(
+            Some(data),
+            (both, both),
+            (
+                &given.max_data_length,
+                "max_data_length",
+                "MaxDataLength is unwritten",
+            ),
+        )
+    });
     IoLengths {
-        input: length(
-            stack.max_input_length,
-            needed.0,
-            (&given.max_input_length, "max_input_length", need),
-        ),
-        output: length(
-            stack.max_output_length,
-            needed.1,
-            (&given.max_output_length, "max_output_length", need),
-        ),
-        // In and out together.
-        data: stack.max_data_length.map(|data| {
-            length(
-                Some(data),
-                needed.0 + needed.1,
-                (
-                    &given.max_data_length,
-                    "max_data_length",
-                    "MaxDataLength is unwritten",
-                ),
-            )
-        }),
+        input,
+        output,
+        data,
+        full: input >= need.full && output >= need.full,
     }
 }
 
@@ -228,6 +235,8 @@ pub struct IoLengths {
     pub input: u16,
     pub output: u16,
     pub data: Option<u16>,
+    /// Whether the lengths hold every slot with its largest module.
+    pub full: bool,
 }
 
 /// The ways of address assignment, each once, at least one.

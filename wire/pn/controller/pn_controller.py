@@ -682,10 +682,11 @@ def case(args) -> str:
 
 def list_modules(path: Path, number: int) -> int:
     """What the wire test plugs: every module DAP `number` may take, in its
-    first allowed slot, with the highest API of its submodules and its name
-    (the GSDML's, in its primary language, which the device finds the module
-    by); the name of station (the DAP's DNS_CompatibleName); and how many
-    DAPs the GSDML has."""
+    first allowed slot, with the highest API of its submodules, whether they
+    carry data (1) or not (0: an empty module) and its name (the GSDML's, in
+    its primary language, which the device finds the module by); the name of
+    station (the DAP's DNS_CompatibleName); and how many DAPs the GSDML
+    has."""
     gsdml = Gsdml(path)
     dap = gsdml.dap(number)
     print(f"daps {len(gsdml.root.findall('.//{*}DeviceAccessPointItem'))}")
@@ -694,9 +695,11 @@ def list_modules(path: Path, number: int) -> int:
         slots = ref.get("FixedInSlots") or ref.get("AllowedInSlots")
         first = int(slots.split()[0].split("..")[0])
         module = ref.get("ModuleItemTarget")
-        api = max(s.api for s in gsdml.submodules(module))
+        subs = gsdml.submodules(module)
+        api = max(s.api for s in subs)
+        data = int(any(s.inputs or s.outputs for s in subs))
         name = gsdml.module(module).find("{*}ModuleInfo/{*}Name")
-        print(f"module {module} {first} {api} {gsdml.texts.get(name.get('TextId'), '')}")
+        print(f"module {module} {first} {api} {data} {gsdml.texts.get(name.get('TextId'), '')}")
     return 0
 
 
