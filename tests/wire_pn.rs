@@ -133,8 +133,19 @@ fn every_profinet_description_every_module() {
         &[
             "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 2: 1 records decoded, 1 inputs observed",
-            "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 1",
+            "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
+        ],
+    );
+    // own_idents.toml's modules go into slots 2 and 3: each is plugged
+    // into slot 2, and its empty module, without data, alone into slot 1.
+    assert_lines(
+        &text,
+        &[
+            "--- IDM_PZD_1 (Drive telegram) in slot 2",
+            "--- IDM_EMPTY (Empty) in slot 1",
+            "device access point 1 (IDD_DAP, ident 0x00000100), IDM_EMPTY in slot 1: subslot 1 ident 0x1 API 0x0 in 0 out 0",
+            "PASS IDM_EMPTY: 0 records decoded, 0 inputs observed",
         ],
     );
     settings_of_a_byte_and_per_module_defaults(&text);
@@ -188,7 +199,8 @@ fn fail_safe_values_after_the_settings(text: &str) {
 /// own_idents.toml's stop mode is an Integer8, each module's default,
 /// which the user may change (`per_module` with `changeable`): standard
 /// telegram 1's record holds its one byte alone (default 0), the PZD
-/// module's after the fault reaction's two (default 1). The controller
+/// module's after the fault reaction's two (default 1), each in slot 2, the
+/// first of the card's module slots. The controller
 /// writes the value after each default, which the device takes only because
 /// the GSDML and the layout let it change. AX200's ramp-down time is an
 /// Unsigned8 after two words.
@@ -196,9 +208,9 @@ fn settings_of_a_byte_and_per_module_defaults(text: &str) {
     assert_lines(
         text,
         &[
-            "  record 1 (Drive settings) to slot 1 subslot 2: 01 = [1]",
+            "  record 1 (Drive settings) to slot 2 subslot 2: 01 = [1]",
             "    decoded by the layout: Stop mode (P10.06) = 1",
-            "  record 1 (Drive settings) to slot 1 subslot 1: 00 01 02 = [1, 2]",
+            "  record 1 (Drive settings) to slot 2 subslot 1: 00 01 02 = [1, 2]",
             "    decoded by the layout: Fault reaction (P10.05) = 1, Stop mode (P10.06) = 2",
             "  record 3 (Drive settings) to slot 1 subslot 1: 03 e7 00 01 11 = [999, 1, 17]",
             "    decoded by the layout: Telegram selection (P0922) = 999, Fault reaction (P1900) = 1, Ramp-down time in s (P1121) = 17",
@@ -434,7 +446,7 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
     assert_lines(
         &text,
         &[
-            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 1",
+            "device access point 2 (IDD_DAP_2, ident 0x00000200), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 2:",
             "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 2",
             "FAIL IDM_STD_TEL_1 under device access point 3: Connect failed: PNIO status DB 81 03 04",
