@@ -62,7 +62,8 @@ fn assert_lines(text: &str, lines: &[&str]) {
 
 /// Every shipped description and valid fixture with [profinet], as
 /// `descriptions/mv810-pnet02.toml`, with its name and the exchanges it must
-/// pass: each of its modules (its empty module too, plugged alone), the
+/// pass: each of its modules (its empty module too, plugged alone), two
+/// modules in two slots at once where its modules go into several, the
 /// soft card (found by its name of station, stopped by SIGINT and by
 /// SIGTERM), two negative cases (another module ident, another input
 /// length), one for each module in an API other than 0 (a layout that says
@@ -81,7 +82,9 @@ fn with_profinet() -> Vec<(String, String, usize)> {
             let other_apis = profinet.modules.iter().filter(|m| m.api != 0).count();
             let later_daps = profinet.daps.len() - 1;
             let empty = usize::from(profinet.empty_module.is_some());
-            let exchanges = profinet.modules.len() + empty + 1 + 2 + other_apis + later_daps;
+            let at_once = usize::from(profinet.module_slots.count() > 1);
+            let exchanges =
+                profinet.modules.len() + empty + at_once + 1 + 2 + other_apis + later_daps;
             found.push((format!("{folder}/{name}"), stem.to_string(), exchanges));
         }
     }
@@ -138,11 +141,17 @@ fn every_profinet_description_every_module() {
         ],
     );
     // own_idents.toml's modules go into slots 2 and 3: each is plugged
-    // into slot 2, and its empty module, without data, alone into slot 1.
+    // into slot 2, both at once into slots 2 and 3 (each slot's record
+    // decoded by the layout, each slot's inputs valid), and its empty
+    // module, without data, alone into slot 1.
     assert_lines(
         &text,
         &[
             "--- IDM_PZD_1 (Drive telegram) in slot 2",
+            "--- two modules at once: IDM_STD_TEL_1 (Standard telegram 1) in slot 2, IDM_PZD_1 (Drive telegram) in slot 3",
+            "  record 1 (Drive settings) to slot 3 subslot 1: 00 01 02 = [1, 2]",
+            "  inputs of slot 3 subslot 1: 00 00",
+            "PASS IDM_STD_TEL_1 with IDM_PZD_1 in slot 3: 2 records decoded, 2 inputs observed",
             "--- IDM_EMPTY (Empty) in slot 1",
             "device access point 1 (IDD_DAP, ident 0x00000100), IDM_EMPTY in slot 1: subslot 1 ident 0x1 API 0x0 in 0 out 0",
             "PASS IDM_EMPTY: 0 records decoded, 0 inputs observed",
@@ -450,7 +459,7 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
             "PASS IDM_STD_TEL_1 under device access point 2:",
             "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 2",
             "FAIL IDM_STD_TEL_1 under device access point 3: Connect failed: PNIO status DB 81 03 04",
-            "PROFINET own_idents: 8 passed, 1 failed",
+            "PROFINET own_idents: 9 passed, 1 failed",
         ],
     );
 }

@@ -96,11 +96,11 @@ list_modules() { # DAP
     exit 2
   }
   modules=()
-  while read -r kind a b c d e; do
+  while read -r kind a b c d e f; do
     case "$kind" in
       daps) daps=$a ;;
       station) station=$a ;;
-      module) modules+=("$a $b $c $d $e") ;;
+      module) modules+=("$a $b $c $d $e $f") ;;
     esac
   done <<<"$listing"
   if [ ${#modules[@]} -eq 0 ]; then
@@ -125,26 +125,36 @@ run_case() {
 }
 
 for entry in "${modules[@]}"; do
-  read -r module slot api data module_name <<<"$entry"
+  read -r module slot last api data module_name <<<"$entry"
   run_case "$module ($module_name) in slot $slot" "$slot" "$module" "$module_name" "$scenario"
 done
+# Where the modules may go into more than one slot, each its own telegram:
+# the first module with data in its first slot and the last in its last,
+# at the same time.
+first_with_data=""
+for entry in "${modules[@]}"; do
+  read -r module slot last api data module_name <<<"$entry"
+  [ "$data" -eq 1 ] && { [ -n "$first_with_data" ] || first_with_data=$entry; last_with_data=$entry; }
+done
+read -r module slot last api data module_name <<<"$first_with_data"
+read -r other _ other_last _ _ other_name <<<"$last_with_data"
+if [ "$other_last" -gt "$slot" ]; then
+  run_case "two modules at once: $module ($module_name) in slot $slot, $other ($other_name) in slot $other_last" \
+    "$slot" "$module" "$module_name" "$scenario" --also "$other_last" "$other" "$other_name"
+fi
 # The soft card (gsdc's README), with the GSDML's first module: found by
 # its name of station, stopped by Ctrl-C and by SIGTERM.
-read -r module slot api data module_name <<<"${modules[0]}"
+read -r module slot last api data module_name <<<"${modules[0]}"
 run_case "soft card: $module ($module_name), DCP Identify by name of station, SIGINT, SIGTERM" \
   "$slot" "$module" "$module_name" soft-card
 # The negative cases, on the GSDML's last module with data (an empty
 # module has no length to get wrong): the device departs from the layout,
 # and the controller's Connect must fail with the status that says how.
-for entry in "${modules[@]}"; do
-  read -r module slot api data module_name <<<"$entry"
-  [ "$data" -eq 1 ] && last_with_data=$entry
-done
-read -r module slot api data module_name <<<"$last_with_data"
+read -r module slot last api data module_name <<<"$last_with_data"
 run_case "negative: $module, the device presents another module ident" "$slot" "$module" "$module_name" - --mismatch module-ident
 run_case "negative: $module, the device presents another input length" "$slot" "$module" "$module_name" - --mismatch input-length
 for entry in "${modules[@]}"; do
-  read -r module slot api data module_name <<<"$entry"
+  read -r module slot last api data module_name <<<"$entry"
   if [ "$api" -ne 0 ]; then
     run_case "negative: $module, the device's layout places it in API 0, the GSDML in API $api" "$slot" "$module" "$module_name" - --mismatch api
   fi
@@ -154,7 +164,7 @@ done
 # ports from the layout's later_daps), the controller connects with it.
 for ((dap = 2; dap <= daps; dap++)); do
   list_modules "$dap"
-  read -r module slot api data module_name <<<"${modules[0]}"
+  read -r module slot last api data module_name <<<"${modules[0]}"
   run_case "device access point $dap: $module ($module_name) in slot $slot" "$slot" "$module" "$module_name" - --dap "$dap"
 done
 

@@ -6,12 +6,13 @@
 # other interface: both ends are created inside the namespaces, and deleting
 # a namespace deletes its end. Needs root.
 #
-#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML STATION SLOT MODULE NAME SCENARIO|- [DEVICE_FLAGS...]
+#   wire/pn/netns-exchange.sh DEVICE PYTHON CARD GSDML STATION SLOT MODULE NAME SCENARIO|- [--also SLOT MODULE NAME]... [DEVICE_FLAGS...]
 #
 # DEVICE: the pn-device binary; PYTHON: the venv's python with profinet-py;
 # CARD: the description's name in the firmware; STATION: the name of
 # station both ends use; MODULE: the GSDML's ModuleItem ID, plugged in SLOT,
-# and NAME its name, by which the device finds it in its layout; SCENARIO:
+# and NAME its name, by which the device finds it in its layout (each
+# --also plugs another module in another slot at the same time); SCENARIO:
 # the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
 # (--mismatch KIND makes it a negative case, and the controller then expects
 # the Connect refused; --dap N makes it present device access point N in
@@ -32,6 +33,16 @@ set -euo pipefail
 [ $# -ge 9 ] || { echo "usage: $0 DEVICE PYTHON CARD GSDML STATION SLOT MODULE NAME SCENARIO|- [DEVICE_FLAGS...]" >&2; exit 2; }
 device=$1 python=$2 card=$3 gsdml=$4 station=$5 slot=$6 module=$7 name=$8 scenario=$9
 shift 9
+# Each --also: the device plugs the module by its name, the controller by
+# its ID.
+plugs=(--plug "$slot=$name")
+also=()
+while [ "${1:-}" = --also ]; do
+  [ $# -ge 4 ] || { echo "$0: --also takes SLOT MODULE NAME" >&2; exit 2; }
+  plugs+=(--plug "$2=$4")
+  also+=(--also "$2=$3")
+  shift 4
+done
 here=$(cd "$(dirname "$0")" && pwd)
 
 ns_ctl="gsdc-pn-$$-ctl"
@@ -76,7 +87,7 @@ events="$work/device-events.jsonl"
 start_device() { # FLAGS...
   : >"$events"
   ip netns exec "$ns_dev" "$device" --card "$card" --iface pn0 --ip "$ip_dev" \
-    --plug "$slot=$name" "$@" >"$events" 2>"$work/device.err" &
+    "${plugs[@]}" "$@" >"$events" 2>"$work/device.err" &
   device_pid=$!
   for _ in $(seq 50); do
     [ -s "$events" ] && break
@@ -150,7 +161,7 @@ done
 status=0
 timeout 30 ip netns exec "$ns_ctl" "$python" "$here/controller/pn_controller.py" \
   --iface pn0 --station "$station" --gsdml "$gsdml" --slot "$slot" --module "$module" \
-  --device-events "$events" "${controller_flags[@]}" || status=$?
+  --device-events "$events" "${also[@]}" "${controller_flags[@]}" || status=$?
 case "$status" in
   0 | 1) ;;
   124) echo "FAIL $module: the controller did not finish in 30 s"; status=1 ;;

@@ -5,7 +5,9 @@ It knows the device only from the GSDML file: profinet-py (GPL-3.0, run here
 as a separate process and never linked into gsdc) reads the module catalogue
 and drives DCP, the AR and the cyclic exchange; this program reads the
 GSDML's parameter records and the names of its data items itself (profinet-py
-has no reader for them). For one module in one slot it:
+has no reader for them). For one module in one slot (with --also, other
+modules in other slots at the same time, each its own telegram, whose
+records it writes and whose inputs it observes too) it:
 
 1. finds the device by its name of station (DCP Identify) and connects with
    the module the GSDML describes (ExpectedSubmodule block and IOCRs);
@@ -376,18 +378,22 @@ def say(text: str) -> None:
     print(text, flush=True)
 
 
-def io_slots(path: Path, dap_id: str, module_id: str, slot: int, subs: list[Submodule]):
+def io_slots(path: Path, dap_id: str, plugged: list[tuple[int, str, list[Submodule]]]):
+    """profinet-py's IO slots for the modules plugged, each (slot, ModuleItem
+    ID, its submodules)."""
     device = pgsdml.load_gsdml(path)
-    slots = device.build_io_slots(slot_assignment={slot: module_id}, dap_id=dap_id)
+    assignment = {slot: module_id for slot, module_id, _ in plugged}
+    slots = device.build_io_slots(slot_assignment=assignment, dap_id=dap_id)
     # profinet-py numbers a module's submodules 1, 2, ... in their order;
     # the GSDML's FixedInSubslots is what counts.
-    mine = [s for s in slots if s.slot == slot]
-    if len(mine) != len(subs):
-        raise CannotRun(f"profinet-py found {len(mine)} submodules in {module_id}, the GSDML {len(subs)}")
-    for io_slot, sub in zip(mine, subs):
-        if io_slot.submodule_ident != sub.ident:
-            raise CannotRun(f"{module_id}: profinet-py and this program read different submodules")
-        io_slot.subslot = sub.subslot
+    for slot, module_id, subs in plugged:
+        mine = [s for s in slots if s.slot == slot]
+        if len(mine) != len(subs):
+            raise CannotRun(f"profinet-py found {len(mine)} submodules in {module_id}, the GSDML {len(subs)}")
+        for io_slot, sub in zip(mine, subs):
+            if io_slot.submodule_ident != sub.ident:
+                raise CannotRun(f"{module_id}: profinet-py and this program read different submodules")
+            io_slot.subslot = sub.subslot
     return slots
 
 
@@ -615,13 +621,16 @@ def run(args) -> None:
     gsdml = Gsdml(args.gsdml)
     subs = gsdml.submodules(args.module)
     dap = gsdml.dap(args.dap)
-    slots = io_slots(args.gsdml, dap.get("ID"), args.module, args.slot, subs)
+    # The other modules plugged at the same time, each in its own slot.
+    also = [(slot, module, gsdml.submodules(module)) for slot, module in args.also]
+    slots = io_slots(args.gsdml, dap.get("ID"), [(args.slot, args.module, subs)] + also)
     events = DeviceEvents(args.device_events)
     scenario = json.loads(args.scenario.read_text()) if args.scenario else {}
     say(f"device access point {args.dap} ({dap.get('ID')}, ident {dap.get('ModuleIdentNumber')}), "
         f"{args.module} in slot {args.slot}: " + ", ".join(
         f"subslot {s.subslot} ident 0x{s.ident:X} API 0x{s.api:X} in {sum(i.size for i in s.inputs)} "
-        f"out {sum(i.size for i in s.outputs)}" for s in subs))
+        f"out {sum(i.size for i in s.outputs)}" for s in subs)
+        + "".join(f"; {module} in slot {slot} at the same time" for slot, module, _ in also))
     cycle = gsdml.cycle()
     rpc, info, src, setup, t0 = connect(args, slots, cycle)
     check_identity(gsdml, info)
@@ -645,6 +654,7 @@ def run(args) -> None:
     try:
         own = write_records(rpc, events, 0, gsdml.own_submodules(dap))
         written = write_records(rpc, events, args.slot, subs)
+        beside = sum(len(write_records(rpc, events, slot, other)) for slot, _, other in also)
         input_cr, output_cr = build_iocr_configs(slots, result.input_frame_id, result.output_frame_id,
                                                  cycle[0], cycle[1], WATCHDOG_FACTOR)
         mac = info.mac if isinstance(info.mac, bytes) else bytes.fromhex(info.mac.replace(":", ""))
@@ -656,6 +666,7 @@ def run(args) -> None:
             raise Failed("PrmEnd refused: " + (status_text(RAW_STATUS[-1]) if RAW_STATUS else str(e)))
         rpc.application_ready(timeout=5)
         first = observe_inputs(cyclic, args.slot, subs)
+        first += sum(observe_inputs(cyclic, slot, other) for slot, _, other in also)
         say(f"first data {(time.monotonic() - t0) * 1000:.0f} ms after DCP identify")
         checks = run_scenario(cyclic, args.slot, subs, scenario, written)
         followed = follow_32_bit_values(cyclic, events, args.slot, subs)
@@ -665,7 +676,7 @@ def run(args) -> None:
         if any(api != 0 for api in apis):
             say(f"  API 0x{apis[-1]:X}: the device checked it against its layout before pnio saw the Connect"
                 f"{' and merged the IOCRs to one API for pnio' if merged else ''}; pnio itself cannot check an API")
-        say(f"PASS {case(args)}: {len(written)} records decoded, {first} inputs observed, {checks} scenario checks"
+        say(f"PASS {case(args)}: {len(written) + beside} records decoded, {first} inputs observed, {checks} scenario checks"
             + (f", {followed} 32-bit values read by the layout" if followed else "")
             + (f", {len(own)} records of the access point and its ports decoded" if own else ""))
     finally:
@@ -675,14 +686,16 @@ def run(args) -> None:
 
 
 def case(args) -> str:
-    """The exchange's name in its PASS and FAIL lines: the module, and the
-    device access point after the first it is plugged under."""
-    return args.module if args.dap == 1 else f"{args.module} under device access point {args.dap}"
+    """The exchange's name in its PASS and FAIL lines: the module, the
+    modules plugged beside it, and the device access point after the first
+    it is plugged under."""
+    name = args.module + "".join(f" with {module} in slot {slot}" for slot, module in args.also)
+    return name if args.dap == 1 else f"{name} under device access point {args.dap}"
 
 
 def list_modules(path: Path, number: int) -> int:
-    """What the wire test plugs: every module DAP `number` may take, in its
-    first allowed slot, with the highest API of its submodules, whether they
+    """What the wire test plugs: every module DAP `number` may take, with its
+    first and last allowed slot, the highest API of its submodules, whether they
     carry data (1) or not (0: an empty module) and its name (the GSDML's, in
     its primary language, which the device finds the module by); the name of
     station (the DAP's DNS_CompatibleName); and how many DAPs the GSDML
@@ -694,12 +707,13 @@ def list_modules(path: Path, number: int) -> int:
     for ref in dap.findall("{*}UseableModules/{*}ModuleItemRef"):
         slots = ref.get("FixedInSlots") or ref.get("AllowedInSlots")
         first = int(slots.split()[0].split("..")[0])
+        last = int(slots.split()[-1].split("..")[-1])
         module = ref.get("ModuleItemTarget")
         subs = gsdml.submodules(module)
         api = max(s.api for s in subs)
         data = int(any(s.inputs or s.outputs for s in subs))
         name = gsdml.module(module).find("{*}ModuleInfo/{*}Name")
-        print(f"module {module} {first} {api} {data} {gsdml.texts.get(name.get('TextId'), '')}")
+        print(f"module {module} {first} {last} {api} {data} {gsdml.texts.get(name.get('TextId'), '')}")
     return 0
 
 
@@ -707,13 +721,16 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--gsdml", required=True, type=Path)
     parser.add_argument("--list-modules", action="store_true",
-                        help="print each ModuleItem ID with its first allowed slot, and the station name")
+                        help="print each ModuleItem ID with its first and last allowed slot, and the station name")
     parser.add_argument("--identify", action="store_true",
                         help="only DCP Identify the device by the GSDML's name of station, and check its identity")
     parser.add_argument("--iface")
     parser.add_argument("--station")
     parser.add_argument("--module", help="the GSDML's ModuleItem ID")
     parser.add_argument("--slot", type=int, default=1)
+    parser.add_argument("--also", action="append", default=[], metavar="SLOT=MODULE",
+                        type=lambda v: (int(v.split("=", 1)[0]), v.split("=", 1)[1]),
+                        help="another ModuleItem ID plugged in another slot at the same time")
     parser.add_argument("--dap", type=int, default=1,
                         help="the DeviceAccessPointItem to connect with: its number in the GSDML, from 1")
     parser.add_argument("--device-events", type=Path)
