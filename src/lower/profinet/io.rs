@@ -415,6 +415,52 @@ mod tests {
     use super::*;
     use crate::ir::{Choice, ValueSet};
 
+    /// MOVI-C's first access point by hand: 16 words each way in its
+    /// largest module (32 bytes, its IOPS and the other way's IOCS: 34),
+    /// the DAP's own submodule, interface and two ports (4), four slots
+    /// (2..5) and the empty module's slot 1 alone (1): 4 + 4 x 34 + 1 = 141,
+    /// what `gsdc check` reports as its largest configuration (W302 on
+    /// MaxInputLength 100). One module alone needs 38.
+    #[test]
+    fn every_slot_full_is_what_the_largest_configuration_needs() {
+        let modules = (1..=16).map(|words| (Layout::new(false, words), false));
+        let slots = Slots { first: 2, last: 5 };
+        let need = io_length(modules, 2, (slots, Some(Slots { first: 1, last: 5 })));
+        assert_eq!(
+            need,
+            IoNeed {
+                least: 38,
+                full: 141
+            }
+        );
+        // One slot: both the same, as before module slots.
+        let one = io_length(
+            [(Layout::new(false, 16), false)].into_iter(),
+            2,
+            (Slots::ONE, None),
+        );
+        assert_eq!(
+            one,
+            IoNeed {
+                least: 38,
+                full: 38
+            }
+        );
+        // Never beyond what a CR carries.
+        let many = io_length(
+            [(Layout::new(false, 16), false)].into_iter(),
+            2,
+            (
+                Slots {
+                    first: 1,
+                    last: 100,
+                },
+                None,
+            ),
+        );
+        assert_eq!(many.full, MAX_IO_LENGTH);
+    }
+
     #[test]
     fn bits_of_a_field_name_their_place_and_values() {
         let field = BitField {
