@@ -613,6 +613,31 @@ mod tests {
         );
     }
 
+    /// own_idents' modules go into slots 2 and 3: gsdc writes every slot
+    /// full, and one byte less is a largest configuration that does not
+    /// fit (W302), an error in gsdc's own output unless the description
+    /// stated the smaller limit (`io_full` false).
+    #[test]
+    fn a_largest_configuration_beyond_the_limit_is_forgiven_only_when_stated() {
+        let text = include_str!("../../tests/fixtures/valid/own_idents.toml");
+        let ir = crate::testing::load("own_idents.toml", text).0.unwrap();
+        let profinet = ir.profinet.as_ref().unwrap();
+        assert!(profinet.daps.iter().all(|d| d.io_full));
+        let gsdml = gsdml::emit(&ir, profinet);
+        assert_eq!(verify_gsdml(&profinet.file_name, &gsdml, true), []);
+        let lowered = gsdml.replacen("MaxInputLength=\"19\"", "MaxInputLength=\"18\"", 1);
+        assert_ne!(lowered, gsdml);
+        let problems = verify_gsdml(&profinet.file_name, &lowered, true);
+        assert!(
+            !problems.is_empty()
+                && problems
+                    .iter()
+                    .all(|d| d.code == "E900" && d.message.contains("W302")),
+            "{problems:?}"
+        );
+        assert_eq!(verify_gsdml(&profinet.file_name, &lowered, false), []);
+    }
+
     #[test]
     fn a_gsd_with_a_long_line_is_refused() {
         let broken = md810_gsd().replace(

@@ -40,14 +40,13 @@ pub fn lower(
     let all_modules: Vec<usize> = (0..modules.len()).collect();
     let needed = io::io_need(modules.iter(), first.ports.len(), first.slots);
     let (device, version) = (first.device, first.version);
-    let last_used = last_used_slot(first.slots.0, first.slots.1.map(|e| e.slots));
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
     let first_stack = stack::lower(
         cx,
         (&p.stack, &Stack::default()),
         "profinet.stack",
-        (version, last_used),
+        (version, last_used(first.slots)),
     )?;
     let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
@@ -151,7 +150,7 @@ fn lower_entry(
         cx,
         (&given.stack, &first.stack),
         &what("stack"),
-        (version, last_used_slot(slots.0, slots.1.map(|e| e.slots))),
+        (version, last_used(slots)),
     )?;
     let io = stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
@@ -178,6 +177,12 @@ fn lower_entry(
         io_full: io.full,
         stack,
     })
+}
+
+/// The last slot the data modules or the empty module go into, which
+/// every DAP's `PhysicalSlots` reaches.
+fn last_used((slots, empty): (Slots, Option<&EmptyModule>)) -> u16 {
+    last_used_slot(slots, empty.map(|e| e.slots))
 }
 
 /// The ports of DAP `number`, with their ident numbers: those `port_idents`
