@@ -8,6 +8,7 @@ pub mod choices;
 pub mod dp;
 pub mod gateway;
 pub mod irt;
+pub mod safety;
 mod values;
 pub use values::digits;
 
@@ -703,6 +704,9 @@ pub struct Profinet {
     /// The module without data the card takes in a slot without a data
     /// module.
     pub empty_module: Option<Spanned<EmptyModule>>,
+    /// The card's PROFIsafe modules.
+    #[serde(default)]
+    pub safety_modules: Vec<Spanned<safety::SafetyModule>>,
 }
 
 /// `[profinet.empty_module]`: a module without IO data or records (SEW's

@@ -9,11 +9,12 @@
 use super::{hex16, hex32};
 use crate::gsdml::NAMESPACE;
 use crate::ir::profinet::{
-    ConformanceClass, Dap, DataItem, EmptyModule, ExtendedDiagnosis, Irt, Isochronous, Module,
-    NetloadClass, ParameterRecord, ProfiEnergy, Profinet, RecordValue, RecordValueType, Stack,
-    SubmoduleRecord, TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT,
+    BitItem, ConformanceClass, Dap, DataItem, EmptyModule, ExtendedDiagnosis, Irt, Isochronous,
+    Module, NetloadClass, ParameterRecord, ProfiEnergy, Profinet, RecordValue, RecordValueType,
+    Stack, SubmoduleRecord, TextRef, ValueItem, ACCESS_POINT_SUBSLOT, INTERFACE_SUBSLOT,
     PROFIDRIVE_DATA_SUBSLOT,
 };
+use crate::ir::safety::SafetyModule;
 use crate::ir::{Allowed, Ir, Text};
 use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, BytesText, Event};
@@ -231,7 +232,7 @@ fn device_identity(doc: &mut Doc, ir: &Ir, p: &Profinet) {
 fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     let stack = &dap.stack;
     let flag = |on: bool| if on { "true" } else { "false" };
-    let physical_slots = format!("0..{}", stack.last_slot.unwrap_or(p.last_used_slot()));
+    let physical_slots = format!("0..{}", dap.last_slot);
     let ident = hex32(dap.ident);
     let interval = p.min_device_interval.to_string();
     let version = p.pnio_version.to_string();
@@ -277,7 +278,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
         ("SoftwareRelease", &dap.software_release),
     ]));
     module_info(doc, &dap.name, &dap.info, &values);
-    certification_info(doc, p);
+    certification_info(doc, p, dap);
     subslot_list(doc, p, dap);
     let mut io = vec![
         ("MaxInputLength", dap.max_input_length.to_string()),
@@ -302,6 +303,15 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
             &[
                 ("ModuleItemTarget", EmptyModule::ID),
                 ("AllowedInSlots", &empty.slots.to_string()),
+            ],
+        );
+    }
+    for m in dap.safety_modules.iter().map(|&i| &p.safety_modules[i]) {
+        doc.leaf(
+            "ModuleItemRef",
+            &[
+                ("ModuleItemTarget", &m.id),
+                ("AllowedInSlots", &m.slots.to_string()),
             ],
         );
     }
@@ -347,11 +357,12 @@ fn subslot_list(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 /// PROFIenergy (SEW's MOVI-C, whose modules have IsochroneMode and whose
 /// access points PROFIenergy, declares `Isochronous;EnergySaving`), and the
 /// netload class.
-fn certification_info(doc: &mut Doc, p: &Profinet) {
+fn certification_info(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     let properties = &p.interface_properties;
     let classes = [
         ("Isochronous", properties.isochronous.is_some()),
         ("EnergySaving", p.profienergy.is_some()),
+        ("FunctionalSafety", !dap.safety_modules.is_empty()),
     ];
     let application_class: Vec<&str> = classes
         .iter()
@@ -853,6 +864,9 @@ fn module_list(doc: &mut Doc, ir: &Ir, p: &Profinet) {
     if let Some(empty) = &p.empty_module {
         empty_module(doc, p, empty);
     }
+    for m in &p.safety_modules {
+        safety_module(doc, p, m);
+    }
     doc.close("ModuleList");
 }
 
@@ -966,24 +980,106 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
     doc.close("ModuleItem");
 }
 
+/// A PROFIsafe module: its one submodule with the safety IO data, the
+/// CRC of its structure, and the F-parameter record with its CRC, as PI's
+/// checker gave them (or placeholders, which the header names).
+fn safety_module(doc: &mut Doc, p: &Profinet, m: &SafetyModule) {
+    let ident = hex32(m.ident_number);
+    doc.open(
+        "ModuleItem",
+        &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
+    );
+    let releases = module_releases(p);
+    match &m.category {
+        Some(category) => doc.open("ModuleInfo", &[("CategoryRef", category)]),
+        None => doc.open("ModuleInfo", &[]),
+    }
+    module_info_body(doc, &m.name, &m.info, &releases);
+    doc.open("VirtualSubmoduleList", &[]);
+    let submodule_ident = hex32(m.submodule_ident_number);
+    // No writable I&M records: neither FENA's nor MOVI-C's safety
+    // submodules have them, whatever their data modules'.
+    let attributes = [
+        ("ID", m.submodule_id.as_str()),
+        ("SubmoduleIdentNumber", &submodule_ident),
+        ("PROFIsafeSupported", "true"),
+        ("MayIssueProcessAlarm", "false"),
+    ];
+    doc.open("VirtualSubmoduleItem", &attributes);
+    let version = m.io_structure_desc_version.map(|v| v.to_string());
+    let io_crc = m.crcs.f_io_structure_desc.to_string();
+    let mut io = Vec::new();
+    io.extend(version.as_deref().map(|v| ("F_IO_StructureDescVersion", v)));
+    io.push(("F_IO_StructureDescCRC", io_crc.as_str()));
+    doc.open("IOData", &io);
+    for (element, items) in [("Input", &m.input), ("Output", &m.output)] {
+        doc.open(element, &[("Consistency", CONSISTENCY)]);
+        for item in items {
+            io_item(
+                doc,
+                (item.data_type.name(), item.use_as_bits),
+                &item.text,
+                &item.bits,
+            );
+        }
+        doc.close(element);
+    }
+    doc.close("IOData");
+    doc.open("RecordDataList", &[]);
+    let index = m.f_parameter_index.to_string();
+    let crc = m.crcs.f_param_desc.to_string();
+    doc.open(
+        "F_ParameterRecordDataItem",
+        &[("Index", &index), ("F_ParamDescCRC", &crc)],
+    );
+    for parameter in &m.f_parameters {
+        let attributes: Vec<(&str, &str)> = parameter
+            .attributes
+            .iter()
+            .map(|(n, v)| (*n, v.as_str()))
+            .collect();
+        doc.leaf(parameter.element, &attributes);
+    }
+    doc.close("F_ParameterRecordDataItem");
+    doc.close("RecordDataList");
+    match (&m.category, p.submodule_categories) {
+        (Some(category), true) => doc.open("ModuleInfo", &[("CategoryRef", category)]),
+        _ => doc.open("ModuleInfo", &[]),
+    }
+    module_info_body(doc, &m.submodule_name, &m.submodule_info, &[]);
+    if let Some(iso) = &p.interface_properties.isochronous {
+        isochrone_mode(doc, iso);
+    }
+    doc.close("VirtualSubmoduleItem");
+    doc.close("VirtualSubmoduleList");
+    doc.close("ModuleItem");
+}
+
 fn data_item(doc: &mut Doc, item: &DataItem) {
-    doc.text(&item.text);
-    if item.bits.is_empty() {
-        doc.leaf(
-            "DataItem",
-            &[("DataType", item.data_type()), ("TextId", &item.text.id)],
-        );
+    let use_as_bits = !item.bits.is_empty();
+    io_item(doc, (item.data_type(), use_as_bits), &item.text, &item.bits);
+}
+
+/// A `DataItem` of `data_type`, shown bit by bit with `use_as_bits`,
+/// with its `BitDataItem`s.
+fn io_item(
+    doc: &mut Doc,
+    (data_type, use_as_bits): (&str, bool),
+    text: &TextRef,
+    bits: &[BitItem],
+) {
+    doc.text(text);
+    let mut attributes = vec![("DataType", data_type)];
+    if use_as_bits {
+        attributes.push(("UseAsBits", "true"));
+    }
+    attributes.push(("TextId", &text.id));
+    if bits.is_empty() {
+        doc.leaf("DataItem", &attributes);
         return;
     }
-    doc.open(
-        "DataItem",
-        &[
-            ("DataType", item.data_type()),
-            ("UseAsBits", "true"),
-            ("TextId", &item.text.id),
-        ],
-    );
-    for bit in &item.bits {
+    doc.open("DataItem", &attributes);
+    for bit in bits {
         doc.text(&bit.text);
         doc.leaf(
             "BitDataItem",

@@ -15,6 +15,7 @@ mod fail_safe;
 mod irt;
 mod own_records;
 mod profienergy;
+mod safety;
 mod slots;
 mod stack;
 
@@ -26,7 +27,7 @@ use crate::device::{Allowed, Attribute, AttributeValue, Field, Text, Value};
 use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{ModuleKind, Slots, Version, PROFIDRIVE_API};
 use crate::ir::{Direction, Layout, PkwKind};
-use crate::lower::STANDARD_TELEGRAM_2_WORDS;
+use crate::lower::{Offer, STANDARD_TELEGRAM_2_WORDS};
 use std::fmt::Write as _;
 
 /// Attributes of the device access point gsdc writes, with the value it
@@ -166,7 +167,7 @@ pub(super) fn describe(
     }
     let recognised: Vec<Recognised> = slots::offered(device, dap)
         .map(|(_, m)| m)
-        .filter(|m| !slots::is_empty_module(m))
+        .filter(|m| !slots::is_empty_module(m) && !safety::is_safety_module(m))
         .filter_map(|m| recognise(m, notes))
         .collect();
     let (modules, pkw) = one_pkw_kind(recognised, notes);
@@ -183,14 +184,22 @@ pub(super) fn describe(
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let empty = slots::empty_module(device, dap, &taken, notes);
     taken.extend(empty.as_ref().and_then(|e| e.module.ident));
+    let safety = safety::safety_modules(device, dap, &mut taken, notes);
     let module_slots = slots::module_slots(dap, &modules, notes);
-    let placed = (module_slots, empty.as_ref().map(|e| e.slots));
-    let first_stack = stack::Declared::of(dap, (&modules, placed), name.version, notes);
+    let placed = stack::Placed {
+        module_slots,
+        empty: empty.as_ref().map(|e| Offer::empty(e.slots)),
+        safety: safety
+            .iter()
+            .map(|s| (s.id().to_string(), s.offer()))
+            .collect(),
+    };
+    let first_stack = stack::Declared::of(dap, (&modules, &placed), name.version, notes);
     let later = daps::later_daps(
         (dap, others),
         (&first_stack, name.version),
         device_info,
-        (&modules, placed, taken),
+        (&modules, &placed, taken),
         notes,
     );
     let timing = irt::Declared::of(dap, &modules, notes);
@@ -199,7 +208,7 @@ pub(super) fn describe(
         device,
         (dap, &later),
         (&modules, empty.as_ref()),
-        (&timing, energy.is_some()),
+        (&timing, energy.is_some(), !safety.is_empty()),
         notes,
     );
     let mut out = TomlOut::default();
@@ -236,6 +245,9 @@ pub(super) fn describe(
     }
     if let Some(empty) = &empty {
         empty.write(&mut out);
+    }
+    for s in &safety {
+        s.write(&mut out);
     }
     timing.write(&mut out);
     records.write_indexes(&mut out);
@@ -1797,18 +1809,18 @@ fn fits(a: &Attribute, known: &[(&str, Option<&str>)]) -> bool {
 }
 
 /// The device access point's `ApplicationClass` gsdc writes: `Isochronous`
-/// with the modules' isochronous mode, `EnergySaving` with PROFIenergy.
-fn application_class(
-    isochronous: bool,
-    energy: bool,
-) -> Option<(&'static str, Option<&'static str>)> {
-    let classes = match (isochronous, energy) {
-        (false, false) => return None,
-        (true, false) => "Isochronous",
-        (false, true) => "EnergySaving",
-        (true, true) => "Isochronous;EnergySaving",
-    };
-    Some(("CertificationInfo@ApplicationClass", Some(classes)))
+/// with the modules' isochronous mode, `EnergySaving` with PROFIenergy,
+/// `FunctionalSafety` with safety modules.
+fn application_class((isochronous, energy, safety): (bool, bool, bool)) -> Option<String> {
+    let classes: Vec<&str> = [
+        ("Isochronous", isochronous),
+        ("EnergySaving", energy),
+        ("FunctionalSafety", safety),
+    ]
+    .into_iter()
+    .filter_map(|(class, declared)| declared.then_some(class))
+    .collect();
+    (!classes.is_empty()).then(|| classes.join(";"))
 }
 
 /// W600 for each of `attributes` of element `of` that is not `known`.
@@ -1830,7 +1842,7 @@ fn unsaid_extras(
     device: &PnDevice,
     (first, later): (&Dap, &[daps::DapEntry]),
     (modules, empty): (&[Recognised], Option<&slots::Empty>),
-    (timing, has_energy): (&irt::Declared, bool),
+    (timing, has_energy, has_safety): (&irt::Declared, bool, bool),
     notes: &mut Notes,
 ) {
     let with = |always: &'static [(&'static str, Option<&'static str>)], when: bool, extra| {
@@ -1843,7 +1855,10 @@ fn unsaid_extras(
         has_energy,
         &[(profienergy::ASE_SUPPORTED, None)],
     );
-    dap_known.extend(application_class(has_isochronous, has_energy));
+    let class = application_class((has_isochronous, has_energy, has_safety));
+    if let Some(class) = &class {
+        dap_known.push(("CertificationInfo@ApplicationClass", Some(class)));
+    }
     let own_known: Vec<_> = SUBMODULE_ATTRIBUTES
         .iter()
         .copied()

@@ -13,6 +13,7 @@ mod names;
 pub mod numbering;
 pub mod profibus;
 pub mod profinet;
+pub mod safety;
 pub mod telegram;
 
 pub use cyclic::{Bus, CyclicModule, ModuleId};

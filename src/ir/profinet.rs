@@ -60,6 +60,8 @@ pub struct Profinet {
     /// The module without data the card takes where a slot has no data
     /// module, when stated (SEW's MOVI-C: "Empty").
     pub empty_module: Option<EmptyModule>,
+    /// The PROFIsafe modules, in the description's order.
+    pub safety_modules: Vec<super::safety::SafetyModule>,
     /// The hardware catalog's groups of modules, in the order first used.
     pub categories: Vec<Category>,
     /// One per set of choices the records refer to.
@@ -168,15 +170,6 @@ impl Profinet {
         &self.daps[0]
     }
 
-    /// The last slot anything is plugged into: `PhysicalSlots` reaches at
-    /// least to it.
-    pub fn last_used_slot(&self) -> u16 {
-        last_used_slot(
-            self.module_slots,
-            self.empty_module.as_ref().map(|e| e.slots),
-        )
-    }
-
     /// The record of a kind of mapping, when a module carries it.
     pub fn record(&self, kind: MappingKind) -> Option<&RecordPlan> {
         self.records.iter().find(|r| r.kind == kind)
@@ -222,6 +215,13 @@ impl Profinet {
         }
         if let Some(empty) = &self.empty_module {
             refs.extend([&empty.name, &empty.info]);
+        }
+        for m in &self.safety_modules {
+            refs.extend([&m.name, &m.info, &m.submodule_name, &m.submodule_info]);
+            for item in m.input.iter().chain(&m.output) {
+                refs.push(&item.text);
+                refs.extend(item.bits.iter().map(|b| &b.text));
+            }
         }
         for record in self.access_point_records.iter().chain(&self.port_records) {
             refs.push(&record.name);
@@ -373,10 +373,10 @@ impl std::fmt::Display for Slots {
     }
 }
 
-/// The last slot a data module (in `module_slots`) or the empty module
-/// (in its `empty` slots) goes into.
-pub fn last_used_slot(module_slots: Slots, empty: Option<Slots>) -> u16 {
-    module_slots.last.max(empty.map_or(0, |e| e.last))
+/// The last slot a data module (in `module_slots`) or another module (the
+/// empty module, a safety module: in its `others` slots) goes into.
+pub fn last_used_slot(module_slots: Slots, others: impl Iterator<Item = Slots>) -> u16 {
+    others.map(|s| s.last).fold(module_slots.last, u16::max)
 }
 
 /// A module without IO data or records, which the controller plugs into a
@@ -508,6 +508,12 @@ pub struct Dap {
     pub media_redundancy: bool,
     /// The modules it offers: indexes into `Profinet::modules`, ascending.
     pub modules: Vec<usize>,
+    /// The safety modules it offers: indexes into
+    /// `Profinet::safety_modules`, ascending.
+    pub safety_modules: Vec<usize>,
+    /// `PhysicalSlots`' last: the stack's, else the last slot its modules
+    /// go into.
+    pub last_slot: u16,
     /// IOConfigData: the most bytes the plugged submodules exchange.
     pub max_input_length: u16,
     pub max_output_length: u16,

@@ -32,7 +32,7 @@ pub(crate) use ppo::{config_bytes as ppo_config_bytes, ppo_layout};
 pub(crate) use profibus::{vendor_keyword_problem, DEFAULT_PPO5_PZD_WORDS};
 pub(crate) use profinet::{
     info_prefix, io_length, is_profile_version, module_category, module_description, module_name,
-    pkw_words, profidrive_telegram_1_name, profile_words, IoNeed, ADD_VALUE_BYTES,
+    pkw_words, profidrive_telegram_1_name, profile_words, IoNeed, Offer, ADD_VALUE_BYTES,
     CHANNEL_ERROR_TYPES, DEFAULT_VERSION as DEFAULT_GSDML_VERSION, EMPTY_MODULE_IDENT,
     EXTENDED_ERROR_TYPES, INTERFACE_NAME, MAX_IO_LENGTH, MAX_SLOT, PROFILE_ERROR_TYPES,
     STANDARD_TELEGRAM_2_WORDS, SUPPORTED_VERSIONS as SUPPORTED_GSDML_VERSIONS,

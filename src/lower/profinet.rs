@@ -28,6 +28,7 @@ mod profienergy;
 pub(crate) use profienergy::is_version as is_profile_version;
 mod profile_words;
 mod pzd_names;
+mod safety;
 mod slots;
 pub(crate) use slots::EMPTY_MODULE_IDENT;
 mod records;
@@ -40,7 +41,7 @@ pub(crate) use diagnosis::{
 };
 pub(crate) use io::{
     category as module_category, description as module_description, gsdc_name as module_name,
-    info_prefix, io_length, pkw_words, profidrive_telegram_1_name, IoNeed, MAX_IO_LENGTH,
+    info_prefix, io_length, pkw_words, profidrive_telegram_1_name, IoNeed, Offer, MAX_IO_LENGTH,
     STANDARD_TELEGRAM_2_WORDS,
 };
 pub(crate) use profile_words::profile_words;
@@ -203,7 +204,9 @@ pub fn lower(
     );
     let module_slots = slots::module_slots(cx, p.module_slots.as_ref());
     let empty_module = slots::empty_module(cx, p.empty_module.as_ref());
-    let (module_slots, empty_module) = (module_slots?, empty_module?);
+    let safety_modules = safety::lower(cx, &p.safety_modules, &mut categories);
+    let (module_slots, empty_module, safety_modules) =
+        (module_slots?, empty_module?, safety_modules?);
     let first = daps::First {
         idents: &idents,
         name: p.name.as_ref().map_or_else(
@@ -215,7 +218,11 @@ pub fn lower(
         media_redundancy,
         device,
         version: gsdml_version,
-        slots: (module_slots, empty_module.as_ref()),
+        placement: io::Placement {
+            module_slots,
+            empty: empty_module.as_ref(),
+            safety: &safety_modules,
+        },
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
@@ -278,6 +285,7 @@ pub fn lower(
         modules,
         module_slots,
         empty_module,
+        safety_modules,
         value_items,
         records: reading_plans,
         module_values,

@@ -22,6 +22,7 @@ pub(crate) use mappings::Group;
 use super::bit_range;
 use crate::ir::profibus::{self, Profibus as IrProfibus};
 use crate::ir::profinet::{self, Profinet as IrProfinet};
+use crate::ir::safety::SafetyModule;
 use crate::ir::{Bus, CyclicModule, Direction, Ident, Ir, ValueSet as IrValueSet, Word as IrWord};
 use serde::Serialize;
 
@@ -686,6 +687,31 @@ fn empty_module(e: &profinet::EmptyModule) -> Consts {
     }
 }
 
+/// A safety module's ident numbers, slots, IO bytes and F-parameter
+/// record: what the firmware plugs and hands its PROFIsafe layer.
+fn safety_module(m: &SafetyModule) -> Consts {
+    let constant = |what: &[&str], ty, value| Const {
+        name: what.iter().fold(m.ident.clone(), |name, w| name.tagged(w)),
+        ty,
+        value,
+    };
+    Consts {
+        doc: Doc::plain(format!(
+            "Safety module \"{}\" (PROFIsafe): its ident number and its submodule's, the first and the last slot it may go into, the bytes of its safety data each way with the message trailer its PROFIsafe layer fills and checks, and the index of its F-parameter record.",
+            m.name.text.en
+        )),
+        items: vec![
+            constant(&["ident"], Ty::U32, Val::hex_u32(m.ident_number)),
+            constant(&["submodule", "ident"], Ty::U32, Val::hex_u32(m.submodule_ident_number)),
+            constant(&["first", "slot"], Ty::U16, Val::Dec(m.slots.first.into())),
+            constant(&["last", "slot"], Ty::U16, Val::Dec(m.slots.last.into())),
+            constant(&["input", "bytes"], Ty::U16, Val::Dec(m.input_bytes().into())),
+            constant(&["output", "bytes"], Ty::U16, Val::Dec(m.output_bytes().into())),
+            constant(&["f", "parameter", "index"], Ty::U16, Val::Dec(m.f_parameter_index.into())),
+        ],
+    }
+}
+
 /// The submodule ident numbers of the interface and the ports, where they
 /// are not their subslots (gsdc's numbering, which the subslots say).
 fn interface_idents(p: &IrProfinet) -> Option<Consts> {
@@ -767,6 +793,7 @@ fn profinet(p: &IrProfinet) -> Vec<Consts> {
     consts.extend(interface_idents(p));
     consts.push(module_slots(p.module_slots));
     consts.extend(p.empty_module.as_ref().map(empty_module));
+    consts.extend(p.safety_modules.iter().map(safety_module));
     for m in &p.modules {
         let name = &m.name.text.en;
         let constant = |what: &str, ty, value| Const {

@@ -2,13 +2,13 @@
 //! each says that differs from the first, in the keys the description has
 //! for it. One that the format cannot say is left out (W600), with why.
 
-use super::stack::Declared;
+use super::stack::{Declared, Placed};
 use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
 use crate::device::pn::{Dap, SubmoduleKind};
 use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
-use crate::ir::profinet::{Slots, Version};
+use crate::ir::profinet::Version;
 
 /// What the description's device access points share: the first's value
 /// stands for every one (`[profinet]` states it once).
@@ -54,13 +54,16 @@ pub(super) fn later_daps<'a>(
     (first, others): (&Dap, &'a [Dap]),
     (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
-    (modules, slots, mut taken): (&[Recognised], (Slots, Option<Slots>), Vec<u32>),
+    (modules, placed, mut taken): (&[Recognised], &Placed, Vec<u32>),
     notes: &mut Notes,
 ) -> Vec<DapEntry<'a>> {
     let mut later = Vec::new();
     for dap in others {
-        let keys = entry_keys((first, dap), device_info, modules, &taken).and_then(|mut keys| {
-            let stack = Declared::of(dap, (modules, slots), file, notes).over_first(first_stack)?;
+        let safety: Vec<String> = placed.safety.iter().map(|(id, _)| id.clone()).collect();
+        let offer = (modules, &safety[..]);
+        let keys = entry_keys((first, dap), device_info, offer, &taken).and_then(|mut keys| {
+            let stack =
+                Declared::of(dap, (modules, placed), file, notes).over_first(first_stack)?;
             if !stack.is_empty() {
                 let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
                 keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));
@@ -86,7 +89,7 @@ pub(super) fn later_daps<'a>(
 fn entry_keys(
     (first, dap): (&Dap, &Dap),
     device_info: Option<&Text>,
-    modules: &[Recognised],
+    modules: (&[Recognised], &[String]),
     taken: &[u32],
 ) -> Result<Vec<(&'static str, String)>, String> {
     let ident = dap
@@ -205,19 +208,27 @@ fn ports(first: &Dap, dap: &Dap) -> Vec<(&'static str, String)> {
     keys
 }
 
-/// `modules`, when the DAP offers fewer than the first; Err when it
+/// `modules`, when the DAP offers fewer than the first (of the data
+/// modules and of the safety modules, given by their IDs); Err when it
 /// offers one the first does not. A module the first offers but the
 /// import leaves out is left out with its reason, here too.
 fn offered(
     first: &Dap,
     dap: &Dap,
-    modules: &[Recognised],
+    (modules, safety): (&[Recognised], &[String]),
 ) -> Result<Option<(&'static str, String)>, String> {
     let mut names = Vec::new();
+    let mut data_modules = 0;
     for r in &dap.useable_modules {
-        match modules.iter().find(|m| m.module.id == r.target) {
-            Some(m) => {
-                let name = super::quote(&m.code_name());
+        let data = modules.iter().find(|m| m.module.id == r.target);
+        data_modules += usize::from(data.is_some());
+        let safety_number = safety.iter().position(|id| *id == r.target);
+        let name = data
+            .map(|m| m.code_name())
+            .or_else(|| safety_number.map(|n| crate::ir::safety::code_name(n + 1)));
+        match name {
+            Some(name) => {
+                let name = super::quote(&name);
                 if !names.contains(&name) {
                     names.push(name);
                 }
@@ -231,8 +242,9 @@ fn offered(
             }
         }
     }
-    if names.is_empty() {
-        return Err("it offers none of the modules the import takes".into());
+    if data_modules == 0 {
+        return Err("it offers none of the data modules the import takes".into());
     }
-    Ok((names.len() != modules.len()).then(|| ("modules", list(names))))
+    let every = modules.len() + safety.len();
+    Ok((names.len() != every).then(|| ("modules", list(names))))
 }

@@ -127,7 +127,7 @@ pub(super) fn module_slots(dap: &Dap, modules: &[Recognised], notes: &mut Notes)
 }
 
 /// A reference's `AllowedInSlots` as one range of slots, or why not.
-fn one_range(reference: &ItemRef) -> Result<Slots, String> {
+pub(super) fn one_range(reference: &ItemRef) -> Result<Slots, String> {
     for fixed in ["FixedInSlots", "UsedInSlots"] {
         if attribute(&reference.attributes, fixed).is_some() {
             return Err(format!("it has {fixed}, which the description cannot say"));

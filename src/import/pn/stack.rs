@@ -8,7 +8,7 @@ use crate::device::Attribute;
 use crate::gsdml::values::ValueList;
 use crate::import::Notes;
 use crate::ir::profinet::{last_used_slot, AddressAssignment, Slots, Version, MODULE_SLOT};
-use crate::lower::IoNeed;
+use crate::lower::{IoNeed, Offer};
 use crate::spec::{
     is_gsdml_web_server, Introduced, ADAPTS_REAL_IDENTIFICATION, CHECK_MAU_TYPE_DIFFERENCE,
     WEB_SERVER,
@@ -62,6 +62,16 @@ struct IoLimit {
     need: IoNeed,
 }
 
+/// Where the modules go, as the import takes them: the data modules'
+/// slots, and the other modules (the empty module) in theirs.
+pub struct Placed {
+    pub module_slots: Slots,
+    /// The empty module's, which every access point offers.
+    pub empty: Option<Offer>,
+    /// The safety modules imported, by their IDs, in order.
+    pub safety: Vec<(String, Offer)>,
+}
+
 impl IoLimit {
     /// What the description states: the file's length, where not the
     /// full need.
@@ -77,7 +87,7 @@ impl Declared {
     /// a later version is left out.
     pub fn of(
         dap: &Dap,
-        (modules, slots): (&[Recognised], (Slots, Option<Slots>)),
+        (modules, placed): (&[Recognised], &Placed),
         file: Version,
         notes: &mut Notes,
     ) -> Declared {
@@ -112,15 +122,26 @@ impl Declared {
         let offered = modules
             .iter()
             .filter(|m| dap.useable_modules.iter().any(|r| r.target == m.module.id))
-            .map(|m| (m.layout, m.access_point.is_some()));
+            .map(|m| Offer::data_module(m.layout, m.access_point.is_some(), placed.module_slots));
         let ports = submodules_of(dap, SubmoduleKind::Port).count();
-        let last_used_slot = last_used_slot(slots.0, slots.1);
-        let need = crate::lower::io_length(offered, ports, slots);
-        // The same each way: the modules' words are as many in as out.
-        let io = ["MaxInputLength", "MaxOutputLength"]
-            .map(|name| io_limit(attributes, name, need, notes));
+        let safety = placed
+            .safety
+            .iter()
+            .filter(|(id, _)| dap.useable_modules.iter().any(|r| r.target == *id));
+        let others: Vec<Offer> = placed
+            .empty
+            .into_iter()
+            .chain(safety.map(|(_, o)| *o))
+            .collect();
+        let last_used_slot = last_used_slot(placed.module_slots, others.iter().map(|o| o.slots));
+        let need = crate::lower::io_length(offered.chain(others), ports);
+        let io = [
+            ("MaxInputLength", need.input),
+            ("MaxOutputLength", need.output),
+        ]
+        .map(|(name, need)| io_limit(attributes, name, need, notes));
         // Written where stated, at least both ways' least.
-        let both = 2 * need.least;
+        let both = need.input.least + need.output.least;
         let need = IoNeed {
             least: both,
             full: both,

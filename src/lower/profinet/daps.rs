@@ -3,13 +3,13 @@
 //! in the same file. A later DAP states what differs from the first (its
 //! ident number and name above all); what it leaves out is the first's.
 
+use super::io::Placement;
 use super::slots::EMPTY_MODULE_IDENT;
 use super::{idents::DapIdents, interface, io, port, stack, Checker};
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{
-    last_used_slot, Dap, EmptyModule, Module, Port, Slots, Stack, TextRef, Version,
-};
+use crate::ir::profinet::{Dap, Module, Port, Stack, TextRef, Version};
+use crate::ir::safety::SafetyModule;
 use crate::ir::{Device, Text};
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -25,8 +25,8 @@ pub struct First<'a> {
     /// The file's GSDML version, which bounds what every DAP's stack
     /// writes.
     pub version: Version,
-    /// Where the modules go: the data modules' slots and the empty module.
-    pub slots: (Slots, Option<&'a EmptyModule>),
+    /// Where the modules go.
+    pub placement: Placement<'a>,
 }
 
 /// Every DAP, the first first; E176 when two of them, or a DAP and a
@@ -38,7 +38,8 @@ pub fn lower(
     modules: &[Module],
 ) -> Option<Vec<Dap>> {
     let all_modules: Vec<usize> = (0..modules.len()).collect();
-    let needed = io::io_need(modules.iter(), first.ports.len(), first.slots);
+    let all_safety: Vec<usize> = (0..first.placement.safety.len()).collect();
+    let needed = io::io_need(modules.iter(), first.ports.len(), first.placement);
     let (device, version) = (first.device, first.version);
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
@@ -46,7 +47,7 @@ pub fn lower(
         cx,
         (&p.stack, &Stack::default()),
         "profinet.stack",
-        (version, last_used(first.slots)),
+        (version, first.placement.last_used_slot()),
     )?;
     let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
@@ -63,6 +64,10 @@ pub fn lower(
         ports: first.ports,
         media_redundancy: first.media_redundancy,
         modules: all_modules,
+        safety_modules: all_safety,
+        last_slot: first_stack
+            .last_slot
+            .unwrap_or(first.placement.last_used_slot()),
         max_input_length: io.input,
         max_output_length: io.output,
         max_data_length: io.data,
@@ -72,7 +77,7 @@ pub fn lower(
     let mut complete = true;
     for (index, given) in p.daps.iter().enumerate() {
         let at = (index, given.get_ref());
-        match lower_entry(cx, at, p, (&daps[0], first.slots), modules, version) {
+        match lower_entry(cx, at, p, (&daps[0], first.placement), modules, version) {
             Some(dap) => daps.push(dap),
             None => complete = false,
         }
@@ -86,7 +91,7 @@ fn lower_entry(
     cx: &mut Checker,
     (index, given): (usize, &raw::Dap),
     p: &raw::Profinet,
-    (first, slots): (&Dap, (Slots, Option<&EmptyModule>)),
+    (first, placement): (&Dap, Placement),
     modules: &[Module],
     version: Version,
 ) -> Option<Dap> {
@@ -144,13 +149,22 @@ fn lower_entry(
     };
     interface::check_ring_ports(cx, client, port_count);
     let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
-    let offered = offered_modules(cx, given.modules.as_ref(), modules)?;
-    let needed = io::io_need(offered.iter().map(|&i| &modules[i]), ports.len(), slots);
+    let (offered, safety) =
+        offered_modules(cx, given.modules.as_ref(), (modules, placement.safety))?;
+    let own_safety: Vec<SafetyModule> = safety
+        .iter()
+        .map(|&i| placement.safety[i].clone())
+        .collect();
+    let own = Placement {
+        safety: &own_safety,
+        ..placement
+    };
+    let needed = io::io_need(offered.iter().map(|&i| &modules[i]), ports.len(), own);
     let stack = stack::lower(
         cx,
         (&given.stack, &first.stack),
         &what("stack"),
-        (version, last_used(slots)),
+        (version, own.last_used_slot()),
     )?;
     let io = stack::io_lengths(cx, needed, &stack, &given.stack, &what("stack"));
     let ident = ident?;
@@ -171,18 +185,14 @@ fn lower_entry(
         ports,
         media_redundancy,
         modules: offered,
+        safety_modules: safety,
+        last_slot: stack.last_slot.unwrap_or(own.last_used_slot()),
         max_input_length: io.input,
         max_output_length: io.output,
         max_data_length: io.data,
         io_full: io.full,
         stack,
     })
-}
-
-/// The last slot the data modules or the empty module go into, which
-/// every DAP's `PhysicalSlots` reaches.
-fn last_used((slots, empty): (Slots, Option<&EmptyModule>)) -> u16 {
-    last_used_slot(slots, empty.map(|e| e.slots))
 }
 
 /// The ports of DAP `number`, with their ident numbers: those `port_idents`
@@ -235,12 +245,16 @@ fn ports(
 fn offered_modules(
     cx: &mut Checker,
     given: Option<&Spanned<Vec<Spanned<String>>>>,
-    modules: &[Module],
-) -> Option<Vec<usize>> {
+    (modules, safety): (&[Module], &[SafetyModule]),
+) -> Option<(Vec<usize>, Vec<usize>)> {
     let Some(list) = given else {
-        return Some((0..modules.len()).collect());
+        return Some(((0..modules.len()).collect(), (0..safety.len()).collect()));
     };
-    let names: Vec<String> = modules.iter().map(|m| m.ident.snake()).collect();
+    let names: Vec<String> = modules
+        .iter()
+        .map(|m| m.ident.snake())
+        .chain(safety.iter().map(|m| m.ident.snake()))
+        .collect();
     let mut offered = Vec::new();
     for name in list.get_ref() {
         let problem = match names.iter().position(|n| n == name.get_ref()) {
@@ -262,17 +276,21 @@ fn offered_modules(
         );
         return None;
     }
-    if offered.is_empty() {
+    if offered.iter().all(|&i| i >= modules.len()) {
         cx.push(
-            Diagnostic::error("E183", "a device access point that offers no module")
+            Diagnostic::error("E183", "a device access point that offers no data module")
                 .at(list.span())
-                .label("empty")
+                .label("no data module")
                 .help("name the modules it offers, or leave `modules` out for all of them"),
         );
         return None;
     }
     offered.sort_unstable();
-    Some(offered)
+    let (data, safety) = offered
+        .iter()
+        .partition::<Vec<usize>, _>(|&&i| i < modules.len());
+    let safety = safety.into_iter().map(|i| i - modules.len()).collect();
+    Some((data, safety))
 }
 
 /// E176: a controller tells the device access points and the modules
@@ -310,6 +328,17 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
                 ident.as_ref().map_or(EMPTY_MODULE_IDENT, |i| *i.get_ref()),
                 "the empty module".to_string(),
                 ident.as_ref().map(Spanned::span),
+            )
+        }))
+        .chain(p.safety_modules.iter().enumerate().map(|(index, m)| {
+            let ident = &m.get_ref().ident;
+            (
+                *ident.get_ref(),
+                format!(
+                    "safety module {} (profinet.safety_modules[{index}])",
+                    index + 1
+                ),
+                Some(ident.span()),
             )
         }))
         .chain(p.daps.iter().enumerate().map(|(index, d)| {

@@ -8,9 +8,10 @@ use super::pzd_names::PzdNames;
 use super::records::{self, RecordPlan};
 use crate::i18n::{files, Phrase};
 use crate::ir::profinet::{
-    AccessPoint, BitItem, Category, DataItem, EmptyModule, Module, ModuleKind, Slots, TextRef,
-    PROFIDRIVE_API,
+    last_used_slot, AccessPoint, BitItem, Category, DataItem, EmptyModule, Module, ModuleKind,
+    Slots, TextRef, PROFIDRIVE_API,
 };
+use crate::ir::safety::SafetyModule;
 use crate::ir::{BitField, Direction, Ident, Layout, Mappings, PkwKind, Telegram, Text};
 use std::collections::BTreeMap;
 
@@ -374,39 +375,113 @@ pub struct IoNeed {
     pub full: u16,
 }
 
+/// [`IoNeed`] of the input CR and of the output CR.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IoNeeds {
+    pub input: IoNeed,
+    pub output: IoNeed,
+}
+
+/// A module the slots `slots` take, with the bytes it adds to the input
+/// and to the output CR.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Offer {
+    pub slots: Slots,
+    pub input: u16,
+    pub output: u16,
+}
+
+impl Offer {
+    /// A data module of `layout`, with or without a module access point
+    /// (the same each way), in the data modules' slots.
+    pub fn data_module(layout: Layout, access_point: bool, slots: Slots) -> Offer {
+        let bytes = layout.bytes() + 2 + u16::from(access_point);
+        Offer {
+            slots,
+            input: bytes,
+            output: bytes,
+        }
+    }
+
+    /// The empty module: its IOPS and IOCS.
+    pub fn empty(slots: Slots) -> Offer {
+        Offer {
+            slots,
+            input: 1,
+            output: 1,
+        }
+    }
+
+    /// A safety module, whose data differs each way.
+    pub fn safety(m: &SafetyModule) -> Offer {
+        Offer {
+            slots: m.slots,
+            input: m.input_bytes() + 2,
+            output: m.output_bytes() + 2,
+        }
+    }
+}
+
+/// Where the modules go: the data modules' slots, the empty module and
+/// the safety modules.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement<'a> {
+    pub module_slots: Slots,
+    pub empty: Option<&'a EmptyModule>,
+    pub safety: &'a [SafetyModule],
+}
+
+impl Placement<'_> {
+    /// The last slot anything goes into.
+    pub fn last_used_slot(&self) -> u16 {
+        let others = self.empty.iter().map(|e| e.slots);
+        last_used_slot(
+            self.module_slots,
+            others.chain(self.safety.iter().map(|m| m.slots)),
+        )
+    }
+}
+
+/// What the data `modules`, placed as `placement` says, and a DAP of
+/// `ports` ports need in each CR.
 pub fn io_need<'a>(
     modules: impl Iterator<Item = &'a Module>,
     ports: usize,
-    (slots, empty): (Slots, Option<&EmptyModule>),
-) -> IoNeed {
-    let modules = modules.map(|m| (m.layout, m.access_point.is_some()));
-    io_length(modules, ports, (slots, empty.map(|e| e.slots)))
+    placement: Placement,
+) -> IoNeeds {
+    let slots = placement.module_slots;
+    let offers = modules
+        .map(|m| Offer::data_module(m.layout, m.access_point.is_some(), slots))
+        .chain(placement.empty.map(|e| Offer::empty(e.slots)))
+        .chain(placement.safety.iter().map(Offer::safety));
+    io_length(offers, ports)
 }
 
-/// [`io_need`] of modules given by their layout and whether they have a
-/// module access point (the same each way), in `slots`, with an empty
-/// module in its slots: what `gsdc import` compares a file's IOConfigData
-/// with. With at most 20 words in a module and 16 ports, one module stays
-/// far below the limit of 1440.
-pub(crate) fn io_length(
-    modules: impl Iterator<Item = (Layout, bool)>,
-    ports: usize,
-    (slots, empty): (Slots, Option<Slots>),
-) -> IoNeed {
-    let module =
-        |(layout, access_point): (Layout, bool)| layout.bytes() + 2 + u16::from(access_point);
-    let largest = modules.map(module).max().unwrap_or(0);
+/// [`io_need`] of the modules `offers` gives: what `gsdc import` compares
+/// a file's IOConfigData with. With at most 20 words in a data module and
+/// 16 ports, one module stays far below the limit of 1440.
+pub(crate) fn io_length(offers: impl Iterator<Item = Offer>, ports: usize) -> IoNeeds {
+    let offers: Vec<Offer> = offers.collect();
     let device = 2 + u16::try_from(ports).unwrap_or(u16::MAX);
-    // The empty module's slots that take no data module: its IOPS and IOCS.
-    let only_empty = empty.map_or(0, |e| {
-        e.iter().filter(|s| !slots.iter().contains(s)).count()
-    });
-    let full = u32::from(device)
-        + u32::from(slots.count()) * u32::from(largest)
-        + u32::try_from(only_empty).unwrap_or(u32::MAX);
-    IoNeed {
-        least: largest + device,
-        full: u16::try_from(full).map_or(MAX_IO_LENGTH, |f| f.min(MAX_IO_LENGTH)),
+    let need = |bytes: fn(&Offer) -> u16| {
+        let largest = offers.iter().map(bytes).max().unwrap_or(0);
+        // Each slot anything goes into, with the most it may take.
+        let mut slots: Vec<u16> = offers.iter().flat_map(|o| o.slots.iter()).collect();
+        slots.sort_unstable();
+        slots.dedup();
+        let in_slot = |slot: u16| {
+            let here = offers.iter().filter(|o| o.slots.iter().contains(&slot));
+            u32::from(here.map(bytes).max().unwrap_or(0))
+        };
+        let full = u32::from(device) + slots.into_iter().map(in_slot).sum::<u32>();
+        IoNeed {
+            least: largest + device,
+            full: u16::try_from(full).map_or(MAX_IO_LENGTH, |f| f.min(MAX_IO_LENGTH)),
+        }
+    };
+    IoNeeds {
+        input: need(|o| o.input),
+        output: need(|o| o.output),
     }
 }
 
@@ -423,42 +498,83 @@ mod tests {
     /// MaxInputLength 100). One module alone needs 38.
     #[test]
     fn every_slot_full_is_what_the_largest_configuration_needs() {
-        let modules = (1..=16).map(|words| (Layout::new(false, words), false));
         let slots = Slots { first: 2, last: 5 };
-        let need = io_length(modules, 2, (slots, Some(Slots { first: 1, last: 5 })));
+        let modules =
+            (1..=16).map(|words| Offer::data_module(Layout::new(false, words), false, slots));
+        let empty = Offer::empty(Slots { first: 1, last: 5 });
+        let need = io_length(modules.chain([empty]), 2);
+        let each_way = IoNeed {
+            least: 38,
+            full: 141,
+        };
         assert_eq!(
             need,
-            IoNeed {
-                least: 38,
-                full: 141
+            IoNeeds {
+                input: each_way,
+                output: each_way
             }
         );
         // One slot: both the same, as before module slots.
         let one = io_length(
-            [(Layout::new(false, 16), false)].into_iter(),
+            [Offer::data_module(
+                Layout::new(false, 16),
+                false,
+                Slots::ONE,
+            )]
+            .into_iter(),
             2,
-            (Slots::ONE, None),
         );
         assert_eq!(
-            one,
+            one.input,
             IoNeed {
                 least: 38,
                 full: 38
             }
         );
         // Never beyond what a CR carries.
+        let many = Slots {
+            first: 1,
+            last: 100,
+        };
         let many = io_length(
-            [(Layout::new(false, 16), false)].into_iter(),
+            [Offer::data_module(Layout::new(false, 16), false, many)].into_iter(),
             2,
-            (
-                Slots {
-                    first: 1,
-                    last: 100,
-                },
-                None,
-            ),
         );
-        assert_eq!(many.full, MAX_IO_LENGTH);
+        assert_eq!(many.output.full, MAX_IO_LENGTH);
+    }
+
+    /// ABB's FENA-11 (its first access point) by hand: its largest data
+    /// module, 12 PZD words (24 bytes, its IOPS and the other way's IOCS:
+    /// 26), in slot 1, and in slot 2 a safety module, PS2 the larger: 14
+    /// bytes in (three words of bits, two Integer16, the 4-byte trailer)
+    /// and 10 out (two words of bits, an Integer16, the trailer), each with
+    /// its IOPS and the other way's IOCS. With the DAP's own submodule, the
+    /// interface and one port (3): in 3 + 26 + 16 = 45, the largest
+    /// configuration `gsdc check` reports for FENA's file (W302 on its
+    /// MaxInputLength 44); out 3 + 26 + 12 = 41. The data module alone: 29.
+    #[test]
+    fn a_safety_module_needs_its_own_bytes_each_way() {
+        let pzd12 = Offer::data_module(Layout::new(false, 12), false, Slots::ONE);
+        let ps2 = Offer {
+            slots: Slots { first: 2, last: 2 },
+            input: 14 + 2,
+            output: 10 + 2,
+        };
+        let need = io_length([pzd12, ps2].into_iter(), 1);
+        assert_eq!(
+            need.input,
+            IoNeed {
+                least: 29,
+                full: 45
+            }
+        );
+        assert_eq!(
+            need.output,
+            IoNeed {
+                least: 29,
+                full: 41
+            }
+        );
     }
 
     #[test]

@@ -56,7 +56,11 @@ pub fn empty_module(
 
 /// `[first, last]`, each a slot a module may go into (1 to the last
 /// `PhysicalSlots` may name: E101), first not above last (E109).
-fn slots(cx: &mut Checker, range: &Spanned<Exactly<Spanned<u16>, 2>>, what: &str) -> Option<Slots> {
+pub(super) fn slots(
+    cx: &mut Checker,
+    range: &Spanned<Exactly<Spanned<u16>, 2>>,
+    what: &str,
+) -> Option<Slots> {
     let Exactly([first, last]) = range.get_ref();
     let first: Option<u16> = cx.spanned_in_range(first, 1, MAX_SLOT.into(), what);
     let last: Option<u16> = cx.spanned_in_range(last, 1, MAX_SLOT.into(), what);

@@ -2,7 +2,7 @@
 //! controllers through a device access point. A later DAP's `stack` states
 //! what differs from the first's; each key it leaves out is the first's.
 
-use super::io::{IoNeed, MAX_IO_LENGTH};
+use super::io::{IoNeeds, MAX_IO_LENGTH};
 use crate::description::{self as raw, AddressAssignment as RawAssignment, LinkStateDiagnosis};
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{AddressAssignment, Stack, Version};
@@ -166,7 +166,7 @@ pub(crate) const MAX_SLOT: u16 = 0x7FFF;
 /// writes what its largest module needs, as `gsdc import` expects.
 pub fn io_lengths(
     cx: &mut Checker,
-    need: IoNeed,
+    need: IoNeeds,
     stack: &Stack,
     given: &raw::Stack,
     at: &str,
@@ -198,19 +198,18 @@ pub fn io_lengths(
         value.max(least)
     };
     let without = "gsdc writes what every slot with its largest module needs";
-    let each_way = (need.least, need.full);
     let input = length(
         stack.max_input_length,
-        each_way,
+        (need.input.least, need.input.full),
         (&given.max_input_length, "max_input_length", without),
     );
     let output = length(
         stack.max_output_length,
-        each_way,
+        (need.output.least, need.output.full),
         (&given.max_output_length, "max_output_length", without),
     );
     // In and out together.
-    let both = 2 * need.least;
+    let both = need.input.least + need.output.least;
     let data = stack.max_data_length.map(|data| {
         length(
             Some(data),
@@ -226,7 +225,7 @@ pub fn io_lengths(
         input,
         output,
         data,
-        full: input >= need.full && output >= need.full,
+        full: input >= need.input.full && output >= need.output.full,
     }
 }
 

@@ -1,0 +1,468 @@
+//! `[[profinet.safety_modules]]`: PROFIsafe modules. Their IO data ends
+//! each way with the message trailer (E126); their F-parameters keep to
+//! the schema's values (E127); their description CRCs are PI's checker's,
+//! pinned to the F-parameters and IO data they were given for (E128 when
+//! those changed since; W109 while they are placeholders).
+
+use super::slots::slots;
+use crate::description::safety::{self as raw, FValue};
+use crate::description::Text as RawText;
+use crate::diag::Diagnostic;
+use crate::ir::profinet::{BitItem, Category, TextRef};
+use crate::ir::safety::{ident_of, DescriptionCrcs, FParameter, SafetyItem, SafetyModule};
+use crate::ir::Text;
+use crate::lower::checks::Checker;
+use toml::Spanned;
+
+/// Every safety module, in the description's order; `None` when one has
+/// an error. A module's category joins `categories`, or takes the one of
+/// the same text.
+pub fn lower(
+    cx: &mut Checker,
+    given: &[Spanned<raw::SafetyModule>],
+    categories: &mut Vec<Category>,
+) -> Option<Vec<SafetyModule>> {
+    let lowered: Vec<Option<SafetyModule>> = given
+        .iter()
+        .enumerate()
+        .map(|(index, m)| module(cx, (index, m.get_ref()), categories))
+        .collect();
+    lowered.into_iter().collect()
+}
+
+fn module(
+    cx: &mut Checker,
+    (index, m): (usize, &raw::SafetyModule),
+    categories: &mut Vec<Category>,
+) -> Option<SafetyModule> {
+    let number = index + 1;
+    let what = |key: &str| format!("profinet.safety_modules[{index}].{key}");
+    let tag = format!("SAFETY_{number}");
+    let text = |cx: &mut Checker, t: &Spanned<RawText>, key: &str, id: &str| {
+        TextRef::new(format!("IDT_{tag}_{id}"), cx.text(t, None, &what(key)))
+    };
+    let name = text(cx, &m.name, "name", "NAME");
+    let info = m.info.as_ref().map_or_else(
+        || TextRef::new(format!("IDT_{tag}_INFO"), name.text.clone()),
+        |i| text(cx, i, "info", "INFO"),
+    );
+    let submodule_name = m.submodule_name.as_ref().map_or_else(
+        || name.clone(),
+        |t| text(cx, t, "submodule_name", "SUBMODULE_NAME"),
+    );
+    let submodule_info = m.submodule_info.as_ref().map_or_else(
+        || info.clone(),
+        |t| text(cx, t, "submodule_info", "SUBMODULE_INFO"),
+    );
+    let category = m
+        .category
+        .as_ref()
+        .map(|c| category(cx.text(c, None, &what("category")), number, categories));
+    let ident = cx.spanned_in_range(&m.ident, 1, u32::MAX.into(), &what("ident"));
+    let slots = slots(cx, &m.slots, &what("slots"));
+    let input = items(cx, &m.input, (&tag, "IN"), &what("input"));
+    let output = items(cx, &m.output, (&tag, "OUT"), &what("output"));
+    let f_parameters = f_parameters(cx, m.f_parameters.get_ref(), &what("f_parameters"));
+    let (ident, slots, input, output, f_parameters) =
+        (ident?, slots?, input?, output?, f_parameters?);
+    let module = SafetyModule {
+        id: format!("IDM_{tag}"),
+        submodule_id: format!("IDS_{tag}"),
+        ident_number: ident,
+        submodule_ident_number: m.submodule_ident.as_ref().map_or(ident, |s| *s.get_ref()),
+        ident: ident_of(number),
+        name,
+        info,
+        submodule_name,
+        submodule_info,
+        category,
+        slots,
+        input,
+        output,
+        io_structure_desc_version: m.io_structure_desc_version.as_ref().map(|v| *v.get_ref()),
+        f_parameter_index: *m.f_parameters.get_ref().index.get_ref(),
+        f_parameters,
+        crcs: DescriptionCrcs {
+            f_param_desc: *m.crcs.get_ref().f_param_desc.get_ref(),
+            f_io_structure_desc: *m.crcs.get_ref().f_io_structure_desc.get_ref(),
+            placeholder: m.crcs.get_ref().placeholder,
+        },
+    };
+    pinned(cx, &m.crcs, &module, &what("crcs"))?;
+    Some(module)
+}
+
+/// The category of `text`: an existing one of the same text, else a new
+/// one of this module's.
+fn category(text: Text, number: usize, categories: &mut Vec<Category>) -> String {
+    if let Some(same) = categories.iter().find(|c| c.text.text == text) {
+        return same.id.clone();
+    }
+    let category = Category {
+        id: format!("IDC_SAFETY_{number}"),
+        text: TextRef::new(format!("IDT_CATEGORY_SAFETY_{number}"), text),
+    };
+    categories.push(category.clone());
+    category.id
+}
+
+/// One way's items: at least one before the message trailer, which ends
+/// them and is the only one (E126); each bit within its item (E101).
+fn items(
+    cx: &mut Checker,
+    given: &Spanned<Vec<Spanned<raw::SafetyItem>>>,
+    (tag, way): (&str, &str),
+    what: &str,
+) -> Option<Vec<SafetyItem>> {
+    let list = given.get_ref();
+    let trailers = list.iter().filter(|i| is_trailer(i)).count();
+    let ends_with_trailer = list.last().is_some_and(|i| is_trailer(i));
+    if trailers != 1 || !ends_with_trailer || list.len() < 2 {
+        cx.push(
+            Diagnostic::error(
+                "E126",
+                format!("{what} does not end with its one PROFIsafe message trailer after the safety data"),
+            )
+            .at(given.span())
+            .label("safety IO data")
+            .help("list the safety data items, then one item of type \"F_MessageTrailer4Byte\" (a 3-byte CRC) or \"F_MessageTrailer5Byte\" (a 4-byte CRC) last, as the F-device sends and takes it"),
+        );
+        return None;
+    }
+    let mut complete = true;
+    let mut lowered = Vec::with_capacity(list.len());
+    for (i, item) in list.iter().enumerate() {
+        let item = item.get_ref();
+        let data_type = *item.data_type.get_ref();
+        let item_what = format!("{what}[{i}]");
+        let bits_in_item = u32::from(data_type.bytes()) * 8 - 1;
+        let mut bits = Vec::with_capacity(item.bits.len());
+        for (b, bit) in item.bits.iter().enumerate() {
+            let bit = bit.get_ref();
+            let offset = cx.spanned_in_range(
+                &bit.bit,
+                0,
+                bits_in_item.into(),
+                &format!("{item_what}.bits"),
+            );
+            let text = cx.text(&bit.name, None, &format!("{item_what}.bits[{b}].name"));
+            match offset {
+                Some(offset) => bits.push(BitItem {
+                    offset,
+                    text: TextRef::new(format!("IDT_{tag}_{way}_{i}_BIT_{offset}"), text),
+                }),
+                None => complete = false,
+            }
+        }
+        lowered.push(SafetyItem {
+            data_type,
+            use_as_bits: item
+                .use_as_bits
+                .as_ref()
+                .map_or(!bits.is_empty(), |u| *u.get_ref()),
+            text: TextRef::new(
+                format!("IDT_{tag}_{way}_{i}"),
+                cx.text(&item.name, None, &format!("{item_what}.name")),
+            ),
+            bits,
+        });
+    }
+    complete.then_some(lowered)
+}
+
+fn is_trailer(item: &Spanned<raw::SafetyItem>) -> bool {
+    item.get_ref().data_type.get_ref().is_trailer()
+}
+
+/// What the schema lets an F-parameter element hold: tokens, or numbers
+/// of a range; and the attributes it fixes.
+struct Schema {
+    element: &'static str,
+    required: bool,
+    values: Values,
+    /// AllowedValues names one value only (F_CRC_Length, F_Passivation).
+    one_allowed: bool,
+    fixed_default: Option<&'static str>,
+    fixed_allowed: Option<&'static str>,
+    fixed_changeable: Option<bool>,
+    fixed_visible: Option<bool>,
+}
+
+enum Values {
+    Tokens(&'static [&'static str]),
+    Numbers(u32, u32),
+}
+
+const fn element(element: &'static str, required: bool, values: Values) -> Schema {
+    Schema {
+        element,
+        required,
+        values,
+        one_allowed: false,
+        fixed_default: None,
+        fixed_allowed: None,
+        fixed_changeable: None,
+        fixed_visible: None,
+    }
+}
+
+/// Settable by the user: both attributes fixed to true.
+const fn user_set(mut s: Schema) -> Schema {
+    s.fixed_changeable = Some(true);
+    s.fixed_visible = Some(true);
+    s
+}
+
+/// The schema's `F_ParameterRecordDataT`, element by element in its order
+/// (GSDML-DeviceProfile-v2.44.xsd).
+const SCHEMA: [Schema; 13] = [
+    element("F_Check_iPar", true, Values::Tokens(&["Check", "NoCheck"])),
+    Schema {
+        fixed_visible: Some(true),
+        ..element(
+            "F_SIL",
+            true,
+            Values::Tokens(&["SIL1", "SIL2", "SIL3", "NoSIL"]),
+        )
+    },
+    Schema {
+        one_allowed: true,
+        fixed_changeable: Some(false),
+        ..element(
+            "F_CRC_Length",
+            true,
+            Values::Tokens(&["3-Byte-CRC", "4-Byte-CRC"]),
+        )
+    },
+    Schema {
+        fixed_default: Some("CRC-Seed24/32"),
+        fixed_allowed: Some("CRC-Seed24/32"),
+        fixed_changeable: Some(false),
+        fixed_visible: Some(true),
+        ..element("F_CRC_Seed", false, Values::Tokens(&["CRC-Seed24/32"]))
+    },
+    Schema {
+        one_allowed: true,
+        fixed_changeable: Some(false),
+        fixed_visible: Some(true),
+        ..element(
+            "F_Passivation",
+            false,
+            Values::Tokens(&["Device/Module", "Channel"]),
+        )
+    },
+    element("F_Block_ID", true, Values::Numbers(0, 7)),
+    Schema {
+        fixed_default: Some("1"),
+        fixed_allowed: Some("1"),
+        fixed_changeable: Some(false),
+        fixed_visible: Some(true),
+        ..element("F_Par_Version", true, Values::Numbers(0, 3))
+    },
+    user_set(element("F_Source_Add", true, Values::Numbers(1, 65534))),
+    user_set(element("F_Dest_Add", true, Values::Numbers(1, 65534))),
+    user_set(element("F_WD_Time", true, Values::Numbers(1, 65535))),
+    user_set(element("F_WD_Time_2", false, Values::Numbers(1, 65535))),
+    Schema {
+        fixed_allowed: Some("0..65535"),
+        ..user_set(element("F_Par_CRC", true, Values::Numbers(0, 65535)))
+    },
+    Schema {
+        fixed_allowed: Some("0..4294967295"),
+        ..user_set(element("F_iPar_CRC", false, Values::Numbers(0, u32::MAX)))
+    },
+];
+
+/// The record's elements: each required one, and each optional one
+/// stated, with its attributes as GSDML writes them.
+fn f_parameters(cx: &mut Checker, given: &raw::FParameters, what: &str) -> Option<Vec<FParameter>> {
+    let mut complete = true;
+    let mut elements = Vec::new();
+    for ((name, stated), schema) in given.elements().into_iter().zip(&SCHEMA) {
+        debug_assert_eq!(name, schema.element);
+        if stated.is_none() && !schema.required {
+            continue;
+        }
+        let at = format!("{what}.{name}");
+        let attributes = match stated {
+            Some(p) => f_parameter(cx, p.get_ref(), schema, &at),
+            None => Some(Vec::new()),
+        };
+        match attributes {
+            Some(attributes) => elements.push(FParameter {
+                element: schema.element,
+                attributes,
+            }),
+            None => complete = false,
+        }
+    }
+    complete.then_some(elements)
+}
+
+fn f_parameter(
+    cx: &mut Checker,
+    p: &raw::FParameter,
+    schema: &Schema,
+    at: &str,
+) -> Option<Vec<(&'static str, String)>> {
+    let mut attributes = Vec::new();
+    let mut complete = true;
+    if let Some(default) = &p.default {
+        let value = match default.get_ref() {
+            FValue::Number(n) => n.to_string(),
+            FValue::Token(t) => t.clone(),
+        };
+        let fits = schema.fixed_default.map_or_else(
+            || allows(&schema.values, default.get_ref()),
+            |fixed| value == fixed,
+        );
+        complete &= fits
+            || not_allowed(
+                cx,
+                default.span(),
+                &format!("{at}.default = {value}"),
+                schema,
+            );
+        attributes.push(("DefaultValue", value));
+    }
+    if let Some(allowed) = &p.allowed {
+        let value = allowed.get_ref();
+        let fits = schema.fixed_allowed.map_or_else(
+            || allowed_values(&schema.values, value, schema.one_allowed),
+            |fixed| value == fixed,
+        );
+        complete &= fits
+            || not_allowed(
+                cx,
+                allowed.span(),
+                &format!("{at}.allowed = \"{value}\""),
+                schema,
+            );
+        attributes.push(("AllowedValues", value.clone()));
+    }
+    for (name, key, stated, fixed) in [
+        ("Visible", "visible", &p.visible, schema.fixed_visible),
+        (
+            "Changeable",
+            "changeable",
+            &p.changeable,
+            schema.fixed_changeable,
+        ),
+    ] {
+        let Some(stated) = stated else { continue };
+        let value = *stated.get_ref();
+        let fits = fixed.is_none_or(|f| f == value);
+        complete &=
+            fits || not_allowed(cx, stated.span(), &format!("{at}.{key} = {value}"), schema);
+        attributes.push((name, value.to_string()));
+    }
+    complete.then_some(attributes)
+}
+
+fn allows(values: &Values, value: &FValue) -> bool {
+    match (values, value) {
+        (Values::Tokens(tokens), FValue::Token(t)) => tokens.contains(&t.as_str()),
+        (Values::Numbers(min, max), FValue::Number(n)) => (min..=max).contains(&n),
+        _ => false,
+    }
+}
+
+/// An `AllowedValues` of the element: its tokens separated by spaces (one
+/// only where the schema says so), or a value list (`1..65534`, `0 2 4`)
+/// within its range.
+fn allowed_values(values: &Values, text: &str, one_allowed: bool) -> bool {
+    let parts: Vec<&str> = text.split(' ').collect();
+    if parts.is_empty() || (one_allowed && parts.len() > 1) {
+        return false;
+    }
+    parts.iter().all(|part| match values {
+        Values::Tokens(tokens) => tokens.contains(part),
+        Values::Numbers(min, max) => {
+            let (first, last) = part.split_once("..").unwrap_or((part, part));
+            let bound = |s: &str| s.parse::<u32>().ok().filter(|n| (min..=max).contains(&n));
+            matches!((bound(first), bound(last)), (Some(a), Some(b)) if a <= b)
+        }
+    })
+}
+
+/// E127; false, for the caller's `complete`.
+fn not_allowed(
+    cx: &mut Checker,
+    span: std::ops::Range<usize>,
+    stated: &str,
+    schema: &Schema,
+) -> bool {
+    let takes = match schema.values {
+        Values::Tokens(tokens) => tokens.join(", "),
+        Values::Numbers(min, max) => format!("{min} to {max}"),
+    };
+    let fixed: Vec<String> = [
+        schema.fixed_default.map(|v| format!("default {v}")),
+        schema.fixed_allowed.map(|v| format!("allowed \"{v}\"")),
+        schema.fixed_visible.map(|v| format!("visible {v}")),
+        schema.fixed_changeable.map(|v| format!("changeable {v}")),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    let fixed = match fixed.is_empty() {
+        true => String::new(),
+        false => format!("; the schema fixes {}", fixed.join(", ")),
+    };
+    cx.push(
+        Diagnostic::error(
+            "E127",
+            format!(
+                "{stated} is not what PROFIsafe's {} may hold",
+                schema.element
+            ),
+        )
+        .at(span)
+        .label("not in the schema's values")
+        .help(format!("{} takes {takes}{fixed}", schema.element)),
+    );
+    false
+}
+
+/// The stated CRCs, when PI's checker gave them for what the module now
+/// is: E128 when the fingerprint they were given for (`of`) is another or
+/// missing; W109 while they are placeholders.
+fn pinned(
+    cx: &mut Checker,
+    given: &Spanned<raw::DescriptionCrcs>,
+    module: &SafetyModule,
+    what: &str,
+) -> Option<()> {
+    let crcs = given.get_ref();
+    let now = module.crc_fingerprint();
+    if crcs.placeholder {
+        cx.push(
+            Diagnostic::warning(
+                "W109",
+                format!("{what} are placeholders: the GSDML's F_ParamDescCRC and F_IO_StructureDescCRC are not PI's checker's"),
+            )
+            .at(given.span())
+            .label("placeholder")
+            .help(format!("run PI's GSDML checker on the built file, then state the CRCs it reports with of = \"{now}\" and without placeholder")),
+        );
+        return Some(());
+    }
+    let stated = crcs.of.as_ref();
+    if stated.is_some_and(|of| *of.get_ref() == now) {
+        return Some(());
+    }
+    let was = stated.map_or_else(
+        || "not stated".to_string(),
+        |of| format!("\"{}\"", of.get_ref()),
+    );
+    cx.push(
+        Diagnostic::error(
+            "E128",
+            format!("{what} were not given for these F-parameters and IO data: their fingerprint is \"{now}\", the CRCs' {was}"),
+        )
+        .at(stated.map_or_else(|| given.span(), Spanned::span))
+        .label("stale or unpinned CRCs")
+        .help(format!("gsdc cannot compute PROFIsafe's description CRCs: build with `placeholder = true`, run PI's GSDML checker on the file, and state the CRCs it reports with of = \"{now}\"")),
+    );
+    None
+}
