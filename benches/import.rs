@@ -10,8 +10,9 @@
 //!   whose GSDML file is 982 kB: the import reads the whole file, the
 //!   build writes the part the format can say;
 //! - the largest GSDML file whose import is written (its round trip clean)
-//!   among the corpus's and those the shipped descriptions build (MV810's;
-//!   no corpus GSDML imports clean), where the two handle the same device.
+//!   among the corpus's and those the shipped descriptions build (ABB's
+//!   FENA, 91 kB, since its PROFIsafe modules import), where the two handle
+//!   the same device.
 //!
 //! Each as processes, as users run them (`gsdc import FILE --out DESC.toml`,
 //! a new file each turn, against `gsdc build DESC.toml --out DIR`), and in

@@ -989,16 +989,16 @@ fn safety_module(doc: &mut Doc, p: &Profinet, m: &SafetyModule) {
         "ModuleItem",
         &[("ID", &m.id), ("ModuleIdentNumber", &ident)],
     );
-    let releases = module_releases(p);
+    // No releases: neither FENA's nor MOVI-C's safety modules repeat them.
     match &m.category {
         Some(category) => doc.open("ModuleInfo", &[("CategoryRef", category)]),
         None => doc.open("ModuleInfo", &[]),
     }
-    module_info_body(doc, &m.name, &m.info, &releases);
+    module_info_body(doc, &m.name, &m.info, &[]);
     doc.open("VirtualSubmoduleList", &[]);
     let submodule_ident = hex32(m.submodule_ident_number);
     // No writable I&M records: neither FENA's nor MOVI-C's safety
-    // submodules have them, whatever their data modules'.
+    // submodules have them, whatever their data modules have.
     let attributes = [
         ("ID", m.submodule_id.as_str()),
         ("SubmoduleIdentNumber", &submodule_ident),

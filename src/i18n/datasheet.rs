@@ -247,6 +247,11 @@ phrases! {
         zh: "模块插槽（每个插槽插一个模块，各有自己的报文）",
         de: "Steckplätze der Module (jeder Steckplatz nimmt eines, mit eigenem Telegramm)",
     };
+    SAFETY_MODULES = {
+        en: "PROFIsafe modules (slots; safety data bytes in/out, message trailer included)",
+        zh: "PROFIsafe 模块（插槽；安全数据输入/输出字节数，含报文尾）",
+        de: "PROFIsafe-Module (Steckplätze; Bytes der Sicherheitsdaten ein/aus, mit Telegrammabschluss)",
+    };
     PROFINET_DEVICE = { en: "PROFINET device", zh: "PROFINET 设备", de: "PROFINET-Gerät" };
     IRT = {
         en: "Isochronous real time (RT_CLASS_3)",

@@ -125,6 +125,11 @@ phrases! {
     // list it in English, the datasheet's checklist in the page's language.
 
     NOT_ASSIGNED_BY_PI = { en: "not assigned by PI", zh: "非 PI 分配", de: "nicht von PI vergeben" };
+    NOT_COMPUTED_BY_PI_CHECKER = {
+        en: "not what PI's GSDML checker computes",
+        zh: "非 PI GSDML 检查器计算的值",
+        de: "nicht vom GSDML-Checker der PI berechnet",
+    };
     NOT_STATED = {
         en: "the description does not state it",
         zh: "设备描述未说明",

@@ -208,7 +208,7 @@ pub(super) fn describe(
         device,
         (dap, &later),
         (&modules, empty.as_ref()),
-        (&timing, energy.is_some(), !safety.is_empty()),
+        (&timing, energy.is_some(), &placed.safety),
         notes,
     );
     let mut out = TomlOut::default();
@@ -1842,7 +1842,7 @@ fn unsaid_extras(
     device: &PnDevice,
     (first, later): (&Dap, &[daps::DapEntry]),
     (modules, empty): (&[Recognised], Option<&slots::Empty>),
-    (timing, has_energy, has_safety): (&irt::Declared, bool, bool),
+    (timing, has_energy, safety): (&irt::Declared, bool, &[(String, Offer)]),
     notes: &mut Notes,
 ) {
     let with = |always: &'static [(&'static str, Option<&'static str>)], when: bool, extra| {
@@ -1850,15 +1850,11 @@ fn unsaid_extras(
         [always, extra].concat()
     };
     let (has_irt, has_isochronous) = (timing.irt.is_some(), timing.isochronous.is_some());
-    let mut dap_known = with(
+    let dap_known = with(
         DAP_ATTRIBUTES,
         has_energy,
         &[(profienergy::ASE_SUPPORTED, None)],
     );
-    let class = application_class((has_isochronous, has_energy, has_safety));
-    if let Some(class) = &class {
-        dap_known.push(("CertificationInfo@ApplicationClass", Some(class)));
-    }
     let own_known: Vec<_> = SUBMODULE_ATTRIBUTES
         .iter()
         .copied()
@@ -1879,12 +1875,16 @@ fn unsaid_extras(
         data_known.push((CATEGORY, None));
     }
     for dap in [first].into_iter().chain(later.iter().map(|l| l.dap)) {
-        unsaid_attributes(
-            notes,
-            &dap.item.attributes,
-            &dap_known,
-            "DeviceAccessPointItem",
-        );
+        let offers_safety = dap
+            .useable_modules
+            .iter()
+            .any(|r| safety.iter().any(|(id, _)| *id == r.target));
+        let class = application_class((has_isochronous, has_energy, offers_safety));
+        let mut known = dap_known.clone();
+        if let Some(class) = &class {
+            known.push(("CertificationInfo@ApplicationClass", Some(class)));
+        }
+        unsaid_attributes(notes, &dap.item.attributes, &known, "DeviceAccessPointItem");
         for s in &dap.item.submodules {
             let known = match s.kind {
                 SubmoduleKind::Interface => &interface_known,

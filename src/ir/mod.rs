@@ -13,7 +13,6 @@ mod names;
 pub mod numbering;
 pub mod profibus;
 pub mod profinet;
-pub mod safety;
 pub mod telegram;
 
 pub use cyclic::{Bus, CyclicModule, ModuleId};
@@ -27,7 +26,7 @@ pub use names::Ident;
 pub(crate) use names::Scope;
 pub use numbering::{AddressScheme, Numbering};
 pub use profibus::Profibus;
-pub use profinet::Profinet;
+pub use profinet::{safety, Profinet};
 pub use telegram::{BitField, Choice, Direction, Layout, PkwKind, Telegram, ValueSet, Word};
 
 /// Bits `first` to `last` (within 0..=7) of a byte, as a mask: a GSD

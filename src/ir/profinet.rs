@@ -3,6 +3,8 @@
 //! GSDML IDs and TextIds of everything, decided here so that the emitter
 //! only writes them down.
 
+pub mod safety;
+
 use super::{Direction, EntryKey, Ident, Layout, MappingKind, SetKey, Text};
 pub use crate::spec::GsdmlVersion as Version;
 
@@ -61,7 +63,7 @@ pub struct Profinet {
     /// module, when stated (SEW's MOVI-C: "Empty").
     pub empty_module: Option<EmptyModule>,
     /// The PROFIsafe modules, in the description's order.
-    pub safety_modules: Vec<super::safety::SafetyModule>,
+    pub safety_modules: Vec<safety::SafetyModule>,
     /// The hardware catalog's groups of modules, in the order first used.
     pub categories: Vec<Category>,
     /// One per set of choices the records refer to.

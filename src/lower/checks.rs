@@ -77,18 +77,19 @@ impl Checker {
     }
 
     /// A placeholder, said where it is written (the warning's code and text
-    /// are the caller's): listed in every generated file.
-    pub fn placeholder(&mut self, warning: Diagnostic, path: &str, value: String) {
+    /// are the caller's, `why` what it is not): listed in every generated
+    /// file.
+    pub fn placeholder(&mut self, warning: Diagnostic, (path, value): (&str, String), why: Phrase) {
         self.push(warning);
         self.decisions.push(Decision {
             kind: DecisionKind::Placeholder,
             path: path.to_string(),
             value,
-            reason: files::NOT_ASSIGNED_BY_PI.get(Lang::En).to_string(),
+            reason: why.get(Lang::En).to_string(),
             words: Some(DecisionWords {
                 path: None,
                 value: None,
-                reason: files::NOT_ASSIGNED_BY_PI,
+                reason: why,
             }),
         });
     }

@@ -103,8 +103,8 @@ pub fn lower(
             .at(p.ident_number.span())
             .label("placeholder")
             .help("apply to PI for an ident number before shipping the GSD"),
-            "profibus.ident_number",
-            value,
+            ("profibus.ident_number", value),
+            crate::i18n::files::NOT_ASSIGNED_BY_PI,
         );
     }
     let modules = modules(cx, p, telegram);

@@ -772,8 +772,8 @@ fn placeholder_warning(
                 .at(id.span())
                 .label("placeholder")
                 .help("use the vendor ID PI assigned and the device ID the vendor assigned before shipping"),
-            &format!("profinet.{key}"),
-            value,
+            (&format!("profinet.{key}"), value),
+            crate::i18n::files::NOT_ASSIGNED_BY_PI,
         );
     }
 }

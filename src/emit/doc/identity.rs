@@ -257,6 +257,9 @@ fn profinet_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
     if p.module_slots != Slots::ONE || p.empty_module.is_some() {
         rows.push((lang.t(w::MODULE_SLOTS), text(slots_summary(p, lang))));
     }
+    if !p.safety_modules.is_empty() {
+        rows.push((lang.t(w::SAFETY_MODULES), text(safety_summary(p, lang))));
+    }
     if let Some(energy) = &p.profienergy {
         rows.push(("PROFIenergy", text(profienergy_summary(energy))));
     }
@@ -324,6 +327,26 @@ fn slots_summary(p: &Profinet, lang: Lang) -> String {
             e.slots
         ),
     }
+}
+
+/// Each safety module with its ident number, slots and bytes each way:
+/// `F-Modul (0x00002716): 1; 8/7`.
+fn safety_summary(p: &Profinet, lang: Lang) -> String {
+    let modules: Vec<String> = p
+        .safety_modules
+        .iter()
+        .map(|m| {
+            format!(
+                "{} (0x{:08X}): {}; {}/{}",
+                lang.text(&m.name.text),
+                m.ident_number,
+                m.slots,
+                m.input_bytes(),
+                m.output_bytes()
+            )
+        })
+        .collect();
+    modules.join(", ")
 }
 
 /// The PROFIenergy profile and each energy saving mode as the GSDML names

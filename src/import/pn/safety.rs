@@ -277,6 +277,9 @@ fn known(a: &Attribute) -> bool {
                 })
     });
     fixed || parameter || matches!(name, "PROFIsafeSupported" | IO_CRC | IO_VERSION)
+        // The module's category, which the build repeats with
+        // `submodule_categories`; the round trip judges it.
+        || name == super::CATEGORY
 }
 
 /// Items the description's types say, with names, no `Length` or

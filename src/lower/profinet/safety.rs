@@ -116,7 +116,7 @@ fn items(
 ) -> Option<Vec<SafetyItem>> {
     let list = given.get_ref();
     let trailers = list.iter().filter(|i| is_trailer(i)).count();
-    let ends_with_trailer = list.last().is_some_and(|i| is_trailer(i));
+    let ends_with_trailer = list.last().is_some_and(is_trailer);
     if trailers != 1 || !ends_with_trailer || list.len() < 2 {
         cx.push(
             Diagnostic::error(
@@ -436,7 +436,11 @@ fn pinned(
     let crcs = given.get_ref();
     let now = module.crc_fingerprint();
     if crcs.placeholder {
-        cx.push(
+        let value = format!(
+            "F_ParamDescCRC {}, F_IO_StructureDescCRC {}",
+            module.crcs.f_param_desc, module.crcs.f_io_structure_desc
+        );
+        cx.placeholder(
             Diagnostic::warning(
                 "W109",
                 format!("{what} are placeholders: the GSDML's F_ParamDescCRC and F_IO_StructureDescCRC are not PI's checker's"),
@@ -444,6 +448,8 @@ fn pinned(
             .at(given.span())
             .label("placeholder")
             .help(format!("run PI's GSDML checker on the built file, then state the CRCs it reports with of = \"{now}\" and without placeholder")),
+            (what, value),
+            crate::i18n::files::NOT_COMPUTED_BY_PI_CHECKER,
         );
         return Some(());
     }
@@ -452,13 +458,13 @@ fn pinned(
         return Some(());
     }
     let was = stated.map_or_else(
-        || "not stated".to_string(),
-        |of| format!("\"{}\"", of.get_ref()),
+        || "for no stated fingerprint (`of`)".to_string(),
+        |of| format!("for \"{}\"", of.get_ref()),
     );
     cx.push(
         Diagnostic::error(
             "E128",
-            format!("{what} were not given for these F-parameters and IO data: their fingerprint is \"{now}\", the CRCs' {was}"),
+            format!("{what} were given {was}, but the F-parameters and IO data are now \"{now}\""),
         )
         .at(stated.map_or_else(|| given.span(), Spanned::span))
         .label("stale or unpinned CRCs")

@@ -699,7 +699,8 @@ def list_modules(path: Path, number: int) -> int:
     carry data (1) or not (0: an empty module) and its name (the GSDML's, in
     its primary language, which the device finds the module by); the name of
     station (the DAP's DNS_CompatibleName); and how many DAPs the GSDML
-    has."""
+    has. A PROFIsafe module is left out: its data is a safety layer's (an
+    F-host's CRC2 over the F-parameters), which neither end here has."""
     gsdml = Gsdml(path)
     dap = gsdml.dap(number)
     print(f"daps {len(gsdml.root.findall('.//{*}DeviceAccessPointItem'))}")
@@ -709,6 +710,8 @@ def list_modules(path: Path, number: int) -> int:
         first = int(slots.split()[0].split("..")[0])
         last = int(slots.split()[-1].split("..")[-1])
         module = ref.get("ModuleItemTarget")
+        if gsdml.module(module).find(".//{*}VirtualSubmoduleItem[@PROFIsafeSupported='true']") is not None:
+            continue
         subs = gsdml.submodules(module)
         api = max(s.api for s in subs)
         data = int(any(s.inputs or s.outputs for s in subs))

@@ -3,9 +3,9 @@
 //! as PI's GSDML checker gave them (it cannot compute them: PI's
 //! algorithm is for its members) and pins to what they were given for.
 
-use super::profinet::{BitItem, Slots, TextRef};
-use super::{Fingerprint, Ident};
+use super::{BitItem, Slots, TextRef};
 pub use crate::description::safety::{SafetyDataType, F_PARAMETER_ELEMENTS};
+use crate::ir::{Fingerprint, Ident};
 
 /// A PROFIsafe module with its one submodule.
 #[derive(Debug, Clone, PartialEq, Eq)]
