@@ -127,7 +127,12 @@ fn generated_gsdml_with_limits() -> Vec<(String, String, [bool; 2], bool)> {
         };
         let stack = &profinet.daps[0].stack;
         let stated = [stack.max_input_length, stack.max_output_length].map(|l| l.is_some());
-        let several_slots = profinet.module_slots.count() > 1;
+        // The data modules' slots, or a slot of a safety module besides.
+        let several_slots = profinet.module_slots.count() > 1
+            || profinet
+                .safety_modules
+                .iter()
+                .any(|m| m.slots != profinet.module_slots);
         for file in gsdc::compile(&ir).unwrap() {
             if file.file_name.ends_with(".xml") {
                 let text = String::from_utf8(file.contents).unwrap();
@@ -142,7 +147,8 @@ fn generated_gsdml_with_limits() -> Vec<(String, String, [bool; 2], bool)> {
 /// MaxOutputLength gsdc writes are exactly what the checker needs for the
 /// largest configuration, status bytes included: the largest module, or
 /// with several slots each slot with its largest module and the empty
-/// module's slots. One byte less and the checker finds a module that never
+/// module's and the safety modules' slots (profisafe.toml: its safety
+/// modules' slot 1 beside its data modules' slot 2, each way its own). One byte less and the checker finds a module that never
 /// fits (E310), or with several slots a configuration that does not
 /// (W302). Should the emitter stop counting IOPS/IOCS, or the checker, or
 /// either count something the other does not, one of the two assertions
@@ -153,7 +159,7 @@ fn emitted_io_config_data_is_exactly_what_the_checker_needs() {
     let files = generated_gsdml_with_limits();
     assert_eq!(
         files.len(),
-        7,
+        8,
         "the shipped PROFINET descriptions and fixtures"
     );
     let mut lowered_limits = 0;

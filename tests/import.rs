@@ -168,8 +168,9 @@ fn without_symbol(text: &str) -> String {
 
 /// The valid fixtures' GSDML files (PROFIdrive's telegram 1 behind its
 /// access point, a settings record, a setting each kind of module fixes, a
-/// date with a time, French texts, ident numbers of its own everywhere)
-/// import and rebuild byte-identical below the header.
+/// date with a time, French texts, ident numbers of its own everywhere,
+/// PROFIsafe modules, whose placeholder CRCs the import states as the file
+/// has them, pinned) import and rebuild byte-identical below the header.
 #[test]
 fn fixture_gsdml_files_import_and_rebuild_byte_identical() {
     let mut imported_files = 0;
@@ -193,8 +194,8 @@ fn fixture_gsdml_files_import_and_rebuild_byte_identical() {
         imported_files += 1;
     }
     assert_eq!(
-        imported_files, 5,
-        "ax200, french, no_warnings, own_idents, profidrive"
+        imported_files, 6,
+        "ax200, french, no_warnings, own_idents, profidrive, profisafe"
     );
 }
 

@@ -109,6 +109,7 @@ fn generated_gsdml_validates_against_the_pi_schema() {
             "GSDML-V2.32-Acme-X1-20260131.xml",
             "GSDML-V2.34-Acme-X4-20260228.xml",
             "GSDML-V2.32-Acme-X2-20260228.xml",
+            "GSDML-V2.32-Acme-X5-20260214.xml",
         ],
         "the shipped descriptions md810dp and mv810-pnet02, and the fixtures"
     );

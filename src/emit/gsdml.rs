@@ -967,11 +967,24 @@ fn module(doc: &mut Doc, ir: &Ir, p: &Profinet, m: &Module) {
         }
         doc.close("RecordDataList");
     }
-    match p.submodule_categories {
-        true => doc.open("ModuleInfo", &[("CategoryRef", &m.category)]),
-        false => doc.open("ModuleInfo", &[]),
+    let texts = (&m.submodule_name, &m.submodule_info);
+    close_data_submodule(doc, p, Some(&m.category), texts);
+}
+
+/// A module's data submodule's ModuleInfo (naming the module's category
+/// with `submodule_categories`) and isochronous mode, and the end of the
+/// module.
+fn close_data_submodule(
+    doc: &mut Doc,
+    p: &Profinet,
+    category: Option<&str>,
+    (name, info): (&TextRef, &TextRef),
+) {
+    match category.filter(|_| p.submodule_categories) {
+        Some(category) => doc.open("ModuleInfo", &[("CategoryRef", category)]),
+        None => doc.open("ModuleInfo", &[]),
     }
-    module_info_body(doc, &m.submodule_name, &m.submodule_info, &[]);
+    module_info_body(doc, name, info, &[]);
     if let Some(iso) = &p.interface_properties.isochronous {
         isochrone_mode(doc, iso);
     }
@@ -1042,17 +1055,8 @@ fn safety_module(doc: &mut Doc, p: &Profinet, m: &SafetyModule) {
     }
     doc.close("F_ParameterRecordDataItem");
     doc.close("RecordDataList");
-    match (&m.category, p.submodule_categories) {
-        (Some(category), true) => doc.open("ModuleInfo", &[("CategoryRef", category)]),
-        _ => doc.open("ModuleInfo", &[]),
-    }
-    module_info_body(doc, &m.submodule_name, &m.submodule_info, &[]);
-    if let Some(iso) = &p.interface_properties.isochronous {
-        isochrone_mode(doc, iso);
-    }
-    doc.close("VirtualSubmoduleItem");
-    doc.close("VirtualSubmoduleList");
-    doc.close("ModuleItem");
+    let texts = (&m.submodule_name, &m.submodule_info);
+    close_data_submodule(doc, p, m.category.as_deref(), texts);
 }
 
 fn data_item(doc: &mut Doc, item: &DataItem) {

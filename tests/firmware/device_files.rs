@@ -241,7 +241,12 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
             .map(|t| attr(t, "Value").to_string())
             .unwrap_or_else(|| panic!("no text {id}"))
     };
-    for module in doc.descendants().filter(|n| n.has_tag_name("ModuleItem")) {
+    // A PROFIsafe module is not in the device tables: the layouts give its
+    // constants, and its data is the firmware's PROFIsafe layer's.
+    for module in doc
+        .descendants()
+        .filter(|n| n.has_tag_name("ModuleItem") && !is_safety_module(*n))
+    {
         let id = attr(module, "ID");
         let slots = dap
             .descendants()
@@ -435,9 +440,19 @@ fn later_dap_line(doc: &roxmltree::Document, dap: roxmltree::Node) -> String {
             .descendants()
             .find(|n| n.has_tag_name("ModuleItem") && n.attribute("ID") == Some(target))
             .unwrap();
+        if is_safety_module(module) {
+            continue;
+        }
         line += &format!(" {}", number(attr(module, "ModuleIdentNumber")));
     }
     line
+}
+
+/// A module whose submodule supports PROFIsafe.
+fn is_safety_module(module: roxmltree::Node) -> bool {
+    module
+        .descendants()
+        .any(|n| n.attribute("PROFIsafeSupported") == Some("true"))
 }
 
 fn attr<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> &'a str {

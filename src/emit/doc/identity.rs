@@ -396,13 +396,21 @@ fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
         .daps
         .iter()
         .map(|dap| {
-            let modules = if dap.modules.len() == p.modules.len() {
+            let every = dap.modules.len() == p.modules.len()
+                && dap.safety_modules.len() == p.safety_modules.len();
+            let modules = if every {
                 lang.t(w::ALL_MODULES).to_string()
             } else {
+                let safety = dap
+                    .safety_modules
+                    .iter()
+                    .map(|&i| &p.safety_modules[i].name);
                 let names: Vec<&str> = dap
                     .modules
                     .iter()
-                    .map(|&i| lang.text(&p.modules[i].name.text))
+                    .map(|&i| &p.modules[i].name)
+                    .chain(safety)
+                    .map(|name| lang.text(&name.text))
                     .collect();
                 names.join(", ")
             };

@@ -76,7 +76,7 @@ impl IoLimit {
     /// What the description states: the file's length, where not the
     /// full need.
     fn stated(self) -> Option<u16> {
-        self.file.filter(|&f| f != self.need.full)
+        self.file.filter(|&f| f != self.need.written())
     }
 }
 
@@ -144,7 +144,7 @@ impl Declared {
         let both = need.input.least + need.output.least;
         let need = IoNeed {
             least: both,
-            full: both,
+            full: both.into(),
         };
         let data = io_limit(attributes, "MaxDataLength", need, notes);
         let interface_flag = |name: &str| {
@@ -319,10 +319,10 @@ impl Declared {
             .into_iter()
             .zip(self.io.iter().zip(&base.io))
         {
-            let wanted = mine.stated().unwrap_or(mine.need.full);
+            let wanted = mine.stated().unwrap_or(mine.need.written());
             let inherited = base
                 .stated()
-                .map_or(mine.need.full, |b| b.max(mine.need.least));
+                .map_or(mine.need.written(), |b| b.max(mine.need.least));
             if wanted != inherited {
                 keys.push((key, wanted.to_string()));
             }

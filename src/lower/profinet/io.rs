@@ -370,9 +370,18 @@ pub struct IoNeed {
     /// (E310 otherwise: the module never fits).
     pub least: u16,
     /// Every slot with the largest module it takes: what gsdc writes when
-    /// the stack states no limit (W302 otherwise), at most the
-    /// [`MAX_IO_LENGTH`] a CR carries.
-    pub full: u16,
+    /// the stack states no limit (W302 otherwise), as far as the
+    /// [`MAX_IO_LENGTH`] a CR carries ([`IoNeed::written`]).
+    pub full: u32,
+}
+
+impl IoNeed {
+    /// What gsdc writes without a stated limit: every slot full, at most
+    /// what a CR carries. Where that is less, the engineering tool refuses
+    /// some configurations (W302), as with a stated smaller limit.
+    pub fn written(self) -> u16 {
+        u16::try_from(self.full).map_or(MAX_IO_LENGTH, |f| f.min(MAX_IO_LENGTH))
+    }
 }
 
 /// [`IoNeed`] of the input CR and of the output CR.
@@ -473,10 +482,9 @@ pub(crate) fn io_length(offers: impl Iterator<Item = Offer>, ports: usize) -> Io
             let here = offers.iter().filter(|o| o.slots.iter().contains(&slot));
             u32::from(here.map(bytes).max().unwrap_or(0))
         };
-        let full = u32::from(device) + slots.into_iter().map(in_slot).sum::<u32>();
         IoNeed {
             least: largest + device,
-            full: u16::try_from(full).map_or(MAX_IO_LENGTH, |f| f.min(MAX_IO_LENGTH)),
+            full: u32::from(device) + slots.into_iter().map(in_slot).sum::<u32>(),
         }
     };
     IoNeeds {
@@ -540,7 +548,8 @@ mod tests {
             [Offer::data_module(Layout::new(false, 16), false, many)].into_iter(),
             2,
         );
-        assert_eq!(many.output.full, MAX_IO_LENGTH);
+        assert_eq!(many.output.full, 4 + 100 * 34);
+        assert_eq!(many.output.written(), MAX_IO_LENGTH);
     }
 
     /// ABB's FENA-11 (its first access point) by hand: its largest data

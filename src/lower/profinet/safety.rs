@@ -5,7 +5,7 @@
 //! those changed since; W109 while they are placeholders).
 
 use super::slots::slots;
-use crate::description::safety::{self as raw, FValue};
+use crate::description::safety::{self as raw, FValue, SafetyDataType};
 use crate::description::Text as RawText;
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{BitItem, Category, TextRef};
@@ -65,6 +65,12 @@ fn module(
     let f_parameters = f_parameters(cx, m.f_parameters.get_ref(), &what("f_parameters"));
     let (ident, slots, input, output, f_parameters) =
         (ident?, slots?, input?, output?, f_parameters?);
+    trailers_fit_the_crc(
+        cx,
+        (&input, &output),
+        &f_parameters,
+        (m, &what("f_parameters")),
+    )?;
     let module = SafetyModule {
         id: format!("IDM_{tag}"),
         submodule_id: format!("IDS_{tag}"),
@@ -168,6 +174,44 @@ fn items(
         });
     }
     complete.then_some(lowered)
+}
+
+/// E126 unless both ways end with the trailer of the CRC `F_CRC_Length`
+/// says (its default, else the schema's 3-Byte-CRC): 4 bytes for a 3-byte
+/// CRC, 5 for a 4-byte one, as MOVI-C's V2.6 module has them.
+fn trailers_fit_the_crc(
+    cx: &mut Checker,
+    (input, output): (&[SafetyItem], &[SafetyItem]),
+    f_parameters: &[FParameter],
+    (m, what): (&raw::SafetyModule, &str),
+) -> Option<()> {
+    let crc_length = f_parameters
+        .iter()
+        .find(|p| p.element == "F_CRC_Length")
+        .and_then(|p| {
+            p.attributes
+                .iter()
+                .find(|(name, _)| *name == "DefaultValue")
+        })
+        .map_or("3-Byte-CRC", |(_, value)| value.as_str());
+    let trailer = match crc_length {
+        "4-Byte-CRC" => SafetyDataType::Trailer5Byte,
+        _ => SafetyDataType::Trailer4Byte,
+    };
+    let fits = |items: &[SafetyItem]| items.last().is_some_and(|i| i.data_type == trailer);
+    if fits(input) && fits(output) {
+        return Some(());
+    }
+    cx.push(
+        Diagnostic::error(
+            "E126",
+            format!("the safety data does not end with the {} a {crc_length} takes", trailer.name()),
+        )
+        .at(m.f_parameters.span())
+        .label(format!("{what}: {crc_length}"))
+        .help("a 3-byte CRC ends each way with F_MessageTrailer4Byte, a 4-byte CRC with F_MessageTrailer5Byte: change the trailers or F_CRC_Length"),
+    );
+    None
 }
 
 fn is_trailer(item: &Spanned<raw::SafetyItem>) -> bool {

@@ -200,12 +200,12 @@ pub fn io_lengths(
     let without = "gsdc writes what every slot with its largest module needs";
     let input = length(
         stack.max_input_length,
-        (need.input.least, need.input.full),
+        (need.input.least, need.input.written()),
         (&given.max_input_length, "max_input_length", without),
     );
     let output = length(
         stack.max_output_length,
-        (need.output.least, need.output.full),
+        (need.output.least, need.output.written()),
         (&given.max_output_length, "max_output_length", without),
     );
     // In and out together.
@@ -225,7 +225,7 @@ pub fn io_lengths(
         input,
         output,
         data,
-        full: input >= need.input.full && output >= need.output.full,
+        full: u32::from(input) >= need.input.full && u32::from(output) >= need.output.full,
     }
 }
 
