@@ -63,8 +63,12 @@ fn module(
     let input = items(cx, &m.input, (&tag, "IN"), &what("input"));
     let output = items(cx, &m.output, (&tag, "OUT"), &what("output"));
     let f_parameters = f_parameters(cx, m.f_parameters.get_ref(), &what("f_parameters"));
-    let (ident, slots, input, output, f_parameters) =
-        (ident?, slots?, input?, output?, f_parameters?);
+    // A vendor's record index (the schema's IndexT also has the profile's
+    // 0xB000 to 0xBFFF, which no F-parameter record of the corpus uses).
+    let index = &m.f_parameters.get_ref().index;
+    let index = cx.spanned_in_range(index, 0, 0x7FFF, &what("f_parameters.index"));
+    let (ident, slots, input, output, f_parameters, index) =
+        (ident?, slots?, input?, output?, f_parameters?, index?);
     trailers_fit_the_crc(
         cx,
         (&input, &output),
@@ -86,7 +90,7 @@ fn module(
         input,
         output,
         io_structure_desc_version: m.io_structure_desc_version.as_ref().map(|v| *v.get_ref()),
-        f_parameter_index: *m.f_parameters.get_ref().index.get_ref(),
+        f_parameter_index: index,
         f_parameters,
         crcs: DescriptionCrcs {
             f_param_desc: *m.crcs.get_ref().f_param_desc.get_ref(),
@@ -145,6 +149,17 @@ fn items(
         let mut bits = Vec::with_capacity(item.bits.len());
         for (b, bit) in item.bits.iter().enumerate() {
             let bit = bit.get_ref();
+            if item.bits[..b]
+                .iter()
+                .any(|o| *o.get_ref().bit.get_ref() == *bit.bit.get_ref())
+            {
+                cx.duplicate(
+                    format!("{item_what}.bits: bit {}", bit.bit.get_ref()),
+                    bit.bit.span(),
+                );
+                complete = false;
+                continue;
+            }
             let offset = cx.spanned_in_range(
                 &bit.bit,
                 0,
