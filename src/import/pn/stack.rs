@@ -63,7 +63,8 @@ struct IoLimit {
 }
 
 /// Where the modules go, as the import takes them: the data modules'
-/// slots, and the other modules (the empty module) in theirs.
+/// slots, the empty module's and the safety modules'; an access point's
+/// IO need counts the safety modules it offers.
 pub struct Placed {
     pub module_slots: Slots,
     /// The empty module's, which every access point offers.
