@@ -228,6 +228,7 @@ pub const RULES: &[Rule] = &[
     rule("E318", "ident number not in hex"),
     rule("E319", "required attribute missing"),
     rule("E320", "attribute value malformed"),
+    rule("E321", "PROFIsafe data not as its F-parameters say"),
     rule("E399", "not valid against the PI schema"),
     rule("E400", "neither a GSD nor a GSDML file"),
     rule("E401", "a device symbol that is not a whole bitmap"),

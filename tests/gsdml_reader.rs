@@ -787,3 +787,53 @@ fn huge_numbers_are_findings_not_overflows() {
     // Only the physical slots 0..1 count for the IO data.
     assert_eq!(findings(&text), [("E312", "0..4294967295")]);
 }
+
+/// E321 on a PROFIsafe submodule whose data does not fit its F-parameters,
+/// shown on ABB's FENA (its PS1 module, lines 494 to 610), which keeps to
+/// the rule as every PROFIsafe submodule of the corpus does: its output's
+/// trailer replaced by an Unsigned8, its F_CRC_Length made a 4-Byte-CRC
+/// (which takes the 5-byte trailer), and its F-parameter record left out.
+#[test]
+fn profisafe_data_must_end_with_the_trailer_its_crc_takes() {
+    let name = "GSDML-V2.33-ABB-FENA-20170914.xml";
+    let fena = String::from_utf8(support::corpus_file(&format!("gsdml/{name}"))).unwrap();
+    let e321 = |text: &str| -> Vec<String> {
+        check(text, Some(name))
+            .iter()
+            .filter(|d| d.code == "E321")
+            .map(|d| d.message.clone())
+            .collect()
+    };
+    assert_eq!(e321(&fena), Vec::<String>::new());
+    let trailer = "<DataItem DataType=\"F_MessageTrailer4Byte\" TextId=\"T_ID_SAFETY_DATA_TRAILER\"/>\n                                </Output>";
+    assert!(fena.contains(trailer));
+    let no_trailer = fena.replacen(
+        trailer,
+        "<DataItem DataType=\"Unsigned8\" TextId=\"T_ID_SAFETY_DATA_TRAILER\"/>\n                                </Output>",
+        1,
+    );
+    assert_eq!(
+        e321(&no_trailer),
+        ["VirtualSubmoduleItem \"ID_SUBMOD_SAFETY_ABB_PS1\" supports PROFIsafe, but its Output does not end with the one F_MessageTrailer4Byte its F_CRC_Length 3-Byte-CRC takes"]
+    );
+    let crc_4 = fena.replacen(
+        "<F_CRC_Length DefaultValue=\"3-Byte-CRC\"",
+        "<F_CRC_Length DefaultValue=\"4-Byte-CRC\"",
+        1,
+    );
+    assert_eq!(
+        e321(&crc_4),
+        ["VirtualSubmoduleItem \"ID_SUBMOD_SAFETY_ABB_PS1\" supports PROFIsafe, but its Input does not end with the one F_MessageTrailer5Byte its F_CRC_Length 4-Byte-CRC takes"]
+    );
+    let record_at = fena.find("<F_ParameterRecordDataItem").unwrap();
+    let record_end = fena[record_at..]
+        .find("</F_ParameterRecordDataItem>")
+        .unwrap()
+        + record_at
+        + "</F_ParameterRecordDataItem>".len();
+    let without = format!("{}{}", &fena[..record_at], &fena[record_end..]);
+    assert_eq!(
+        e321(&without),
+        ["VirtualSubmoduleItem \"ID_SUBMOD_SAFETY_ABB_PS1\" supports PROFIsafe, but has no F_ParameterRecordDataItem"]
+    );
+}

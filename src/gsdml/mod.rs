@@ -19,6 +19,7 @@ mod keys;
 mod network;
 mod reader;
 mod records;
+mod safety;
 mod shape;
 mod slots;
 pub(crate) mod tree;
@@ -88,6 +89,7 @@ fn check_document(
     slots::check(&ctx, out);
     network::check(&ctx, out);
     records::check(&ctx, out);
+    safety::check(&ctx, out);
 }
 
 /// What every rule gets: the indexed document and the schema version the

@@ -280,6 +280,9 @@ mod tests {
              F_MessageTrailer4Byte UseAsBits=false Bits=\n"
         );
         let text = canonical_description(&described);
-        assert_eq!(crc_fingerprint(&described), Fingerprint::of(&text).to_string());
+        assert_eq!(
+            crc_fingerprint(&described),
+            Fingerprint::of(&text).to_string()
+        );
     }
 }
