@@ -90,6 +90,11 @@ pub const F_PARAMETER_ELEMENTS: [&str; 13] = [
     "F_iPar_CRC",
 ];
 
+/// The F-parameter elements the schema lets a record leave out; the others
+/// it requires.
+pub const OPTIONAL_F_PARAMETERS: [&str; 4] =
+    ["F_CRC_Seed", "F_Passivation", "F_WD_Time_2", "F_iPar_CRC"];
+
 /// `F_ParameterRecordDataItem`: its record index and the schema's
 /// F-parameter elements, by their element names. A required one left out
 /// is written without attributes (the schema's defaults), an optional one

@@ -5,6 +5,7 @@
 use super::slots::{offered, one_range, slot_list};
 use super::stack::is_true;
 use super::{attribute, hex32, text, Notes, SUBMODULE_ATTRIBUTES};
+use crate::description::safety::OPTIONAL_F_PARAMETERS;
 use crate::device::pn::{Dap, DataItem, IoPart, PnDevice, PnModule, Submodule};
 use crate::device::Attribute;
 use crate::import::toml_out::{quote, TomlOut};
@@ -317,7 +318,6 @@ fn io_part(part: Option<&IoPart>) -> Result<(), String> {
 /// the required ones the file leaves out without attributes, as the build
 /// writes them.
 fn f_parameters(attributes: &[Attribute]) -> Vec<FParameter> {
-    const OPTIONAL: [&str; 4] = ["F_CRC_Seed", "F_Passivation", "F_WD_Time_2", "F_iPar_CRC"];
     let mut elements = Vec::new();
     for element in F_PARAMETER_ELEMENTS {
         let of = format!("{F_RECORD}/{element}@");
@@ -335,7 +335,7 @@ fn f_parameters(attributes: &[Attribute]) -> Vec<FParameter> {
                 Some((*name, value))
             })
             .collect();
-        if stated.is_empty() && OPTIONAL.contains(&element) {
+        if stated.is_empty() && OPTIONAL_F_PARAMETERS.contains(&element) {
             continue;
         }
         elements.push(FParameter {

@@ -5,7 +5,7 @@
 //! those changed since; W109 while they are placeholders).
 
 use super::slots::slots;
-use crate::description::safety::{self as raw, FValue, SafetyDataType};
+use crate::description::safety::{self as raw, FValue, SafetyDataType, OPTIONAL_F_PARAMETERS};
 use crate::description::Text as RawText;
 use crate::diag::Diagnostic;
 use crate::ir::profinet::{BitItem, Category, TextRef};
@@ -237,7 +237,6 @@ fn is_trailer(item: &Spanned<raw::SafetyItem>) -> bool {
 /// of a range; and the attributes it fixes.
 struct Schema {
     element: &'static str,
-    required: bool,
     values: Values,
     /// AllowedValues names one value only (F_CRC_Length, F_Passivation).
     one_allowed: bool,
@@ -252,10 +251,9 @@ enum Values {
     Numbers(u32, u32),
 }
 
-const fn element(element: &'static str, required: bool, values: Values) -> Schema {
+const fn element(element: &'static str, values: Values) -> Schema {
     Schema {
         element,
-        required,
         values,
         one_allowed: false,
         fixed_default: None,
@@ -275,21 +273,16 @@ const fn user_set(mut s: Schema) -> Schema {
 /// The schema's `F_ParameterRecordDataT`, element by element in its order
 /// (GSDML-DeviceProfile-v2.44.xsd).
 const SCHEMA: [Schema; 13] = [
-    element("F_Check_iPar", true, Values::Tokens(&["Check", "NoCheck"])),
+    element("F_Check_iPar", Values::Tokens(&["Check", "NoCheck"])),
     Schema {
         fixed_visible: Some(true),
-        ..element(
-            "F_SIL",
-            true,
-            Values::Tokens(&["SIL1", "SIL2", "SIL3", "NoSIL"]),
-        )
+        ..element("F_SIL", Values::Tokens(&["SIL1", "SIL2", "SIL3", "NoSIL"]))
     },
     Schema {
         one_allowed: true,
         fixed_changeable: Some(false),
         ..element(
             "F_CRC_Length",
-            true,
             Values::Tokens(&["3-Byte-CRC", "4-Byte-CRC"]),
         )
     },
@@ -298,7 +291,7 @@ const SCHEMA: [Schema; 13] = [
         fixed_allowed: Some("CRC-Seed24/32"),
         fixed_changeable: Some(false),
         fixed_visible: Some(true),
-        ..element("F_CRC_Seed", false, Values::Tokens(&["CRC-Seed24/32"]))
+        ..element("F_CRC_Seed", Values::Tokens(&["CRC-Seed24/32"]))
     },
     Schema {
         one_allowed: true,
@@ -306,29 +299,28 @@ const SCHEMA: [Schema; 13] = [
         fixed_visible: Some(true),
         ..element(
             "F_Passivation",
-            false,
             Values::Tokens(&["Device/Module", "Channel"]),
         )
     },
-    element("F_Block_ID", true, Values::Numbers(0, 7)),
+    element("F_Block_ID", Values::Numbers(0, 7)),
     Schema {
         fixed_default: Some("1"),
         fixed_allowed: Some("1"),
         fixed_changeable: Some(false),
         fixed_visible: Some(true),
-        ..element("F_Par_Version", true, Values::Numbers(0, 3))
+        ..element("F_Par_Version", Values::Numbers(0, 3))
     },
-    user_set(element("F_Source_Add", true, Values::Numbers(1, 65534))),
-    user_set(element("F_Dest_Add", true, Values::Numbers(1, 65534))),
-    user_set(element("F_WD_Time", true, Values::Numbers(1, 65535))),
-    user_set(element("F_WD_Time_2", false, Values::Numbers(1, 65535))),
+    user_set(element("F_Source_Add", Values::Numbers(1, 65534))),
+    user_set(element("F_Dest_Add", Values::Numbers(1, 65534))),
+    user_set(element("F_WD_Time", Values::Numbers(1, 65535))),
+    user_set(element("F_WD_Time_2", Values::Numbers(1, 65535))),
     Schema {
         fixed_allowed: Some("0..65535"),
-        ..user_set(element("F_Par_CRC", true, Values::Numbers(0, 65535)))
+        ..user_set(element("F_Par_CRC", Values::Numbers(0, 65535)))
     },
     Schema {
         fixed_allowed: Some("0..4294967295"),
-        ..user_set(element("F_iPar_CRC", false, Values::Numbers(0, u32::MAX)))
+        ..user_set(element("F_iPar_CRC", Values::Numbers(0, u32::MAX)))
     },
 ];
 
@@ -339,7 +331,7 @@ fn f_parameters(cx: &mut Checker, given: &raw::FParameters, what: &str) -> Optio
     let mut elements = Vec::new();
     for ((name, stated), schema) in given.elements().into_iter().zip(&SCHEMA) {
         debug_assert_eq!(name, schema.element);
-        if stated.is_none() && !schema.required {
+        if stated.is_none() && OPTIONAL_F_PARAMETERS.contains(&schema.element) {
             continue;
         }
         let at = format!("{what}.{name}");
