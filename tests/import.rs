@@ -3052,3 +3052,60 @@ fn fenas_safety_modules_import_with_their_crcs_pinned() {
     assert!(ir.is_some(), "{diagnostics:#?}");
     assert!(diagnostics.iter().any(|d| d.code == "W109"));
 }
+
+/// SINAMICS G120 F's GSD: its PROFIsafe module imports with its
+/// F-parameters and the file's two CRCs, pinned to the fingerprint of what
+/// the file describes, and its UnitDiagType 129 as a diagnosis type; the
+/// built GSD carries both CRCs, a changed F-parameter is E128, and a
+/// placeholder builds with W109.
+#[test]
+fn sinamics_g120_fs_profisafe_module_imports_with_its_crcs_pinned() {
+    let name = "siamect__SI028158.gsd";
+    let imported = corpus_gsd_import(name);
+    assert!(
+        imported.round_trip.is_clean(),
+        "{:#?}",
+        imported.diagnostics
+    );
+    let toml = written(&imported, name);
+    assert_says(
+        toml,
+        &[
+            "[profibus.modules.safety]\nconstant = [0x0E, 0x05, 0x00, 0x00, 0x00, 0x00]\ncrcs = { f_param_desc = 0xA01D, f_io_structure_desc = 5639, of = \"",
+            "[[profibus.modules.safety.parameters]]\nname = \"F_SIL\"\noffset = 4\nbits = [2, 3]\ndefault = 1\nchoices = [{ value = 1, text = \"SIL 2\" }]\n",
+            "[[profibus.modules.safety.parameters]]\nname = \"F_WD_Time\"\noffset = 10\ntype = \"Unsigned16\"\ndefault = 100\nrange = [10, 65535]\n",
+            "[[profibus.diagnosis_types]]\nid = 129\n\n[[profibus.diagnosis_types.areas]]\nbit = [24, 31]\nvalues = [{ value = 64, text = \"F add. does not match F_Dest_Add\" },",
+        ],
+    );
+    let (_, gsd) = built("si028158.toml", toml, ArtifactKind::Gsd);
+    let gsd = gsd.replace('\r', "");
+    for line in [
+        "F_Ext_Module_Prm_Data_Len   = 14\n",
+        "F_Ext_User_Prm_Data_Const(0) = 0x0E,0x05,0x00,0x00,0x00,0x00\n",
+        "F_ParamDescCRC              = 0xA01D\n",
+        "F_IO_StructureDescCRC       = 5639\n",
+        "UnitDiagType = 129\nX_Unit_Diag_Area = 24-31\nX_Value(64) = \"F add. does not match F_Dest_Add\"\n",
+    ] {
+        assert!(gsd.contains(line), "{line}\n{gsd}");
+    }
+    let watchdog = "default = 100\nrange = [10, 65535]";
+    let changed = toml.replacen(watchdog, "default = 200\nrange = [10, 65535]", 1);
+    let (ir, diagnostics) = descriptions::load_text("si028158.toml", &changed);
+    assert!(ir.is_none());
+    let stale: Vec<_> = diagnostics.iter().filter(|d| d.code == "E128").collect();
+    assert_eq!(stale.len(), 1, "{diagnostics:#?}");
+    assert!(stale[0]
+        .message
+        .contains("module \"PROFIsafe v1.x Module\"'s CRCs were given for \""));
+    let of_at = changed.find("of = \"").unwrap();
+    let value_at = of_at + "of = \"".len();
+    let of_end = value_at + changed[value_at..].find('"').unwrap() + 1;
+    let placeholder = format!(
+        "{}placeholder = true{}",
+        &changed[..of_at],
+        &changed[of_end..]
+    );
+    let (ir, diagnostics) = descriptions::load_text("si028158.toml", &placeholder);
+    assert!(ir.is_some(), "{diagnostics:#?}");
+    assert!(diagnostics.iter().any(|d| d.code == "W109"));
+}

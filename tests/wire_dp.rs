@@ -58,14 +58,17 @@ fn with_profibus() -> Vec<(String, usize)> {
             let Some(profibus) = &ir.profibus else {
                 continue;
             };
+            // A PROFIsafe module is not exchanged: no F-host at either end.
+            let modules = profibus.modules.iter().filter(|m| m.safety.is_none());
+            let modules = modules.count();
             let exchanges = match name.as_str() {
                 // MD810 1.4.2, 1.6 step 5, 1.8.
-                "md810dp.toml" => 2 * profibus.modules.len() + 3,
+                "md810dp.toml" => 2 * modules + 3,
                 // PI9000 I-3: the command word and mappings, the fault.
-                "9kdp1.toml" => 2 * profibus.modules.len() + 2,
+                "9kdp1.toml" => 2 * modules + 2,
                 // Five sizes of module, and the manual's 2.4 example.
                 "md810-gateway.toml" => 5 + 1,
-                _ => 2 * profibus.modules.len(),
+                _ => 2 * modules,
             };
             found.push((format!("{folder}/{name}"), exchanges + 3));
         }

@@ -4,6 +4,7 @@
 //! writes them for a card whose GSD exists already; a new card may use them
 //! too.
 
+use super::safety::DescriptionCrcs;
 use super::{BitRange, Choice, Exactly, Text};
 use serde::Deserialize;
 use toml::Spanned;
@@ -24,6 +25,26 @@ pub struct DpModule {
     pub ppo: Option<Spanned<String>>,
     /// Its config identifiers in order, each what one identifier carries.
     pub data: Option<Spanned<Vec<Spanned<Identifier>>>>,
+    /// A PROFIsafe module's F-parameters and description CRCs.
+    pub safety: Option<Spanned<DpSafety>>,
+}
+
+/// `[profibus.modules.safety]`: a PROFIsafe module's block of
+/// F-parameters, which the master sends after the device's User_Prm_Data
+/// (`F_Ext_Module_Prm_Data_Len`, `F_Ext_User_Prm_Data_Const` and `_Ref`),
+/// and the two description CRCs (`F_ParamDescCRC`,
+/// `F_IO_StructureDescCRC`), pinned as a PROFINET safety module's are.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DpSafety {
+    /// The block's fixed bytes from its byte 0; parameters may lie over them.
+    #[serde(default)]
+    pub constant: Vec<Spanned<u8>>,
+    /// Its parameters, at their bytes in the block, as
+    /// `[[profibus.parameters]]` gives the card's.
+    #[serde(default)]
+    pub parameters: Vec<Parameter>,
+    pub crcs: Spanned<DescriptionCrcs>,
 }
 
 /// One config identifier: the PKW channel, words or bytes each way or one

@@ -473,6 +473,10 @@ pub struct Profibus {
     pub dpv1: Option<Spanned<Dpv1>>,
     pub isochronous: Option<Spanned<dp::Isochronous>>,
     pub diagnosis: Option<Spanned<Diagnosis>>,
+    /// `UnitDiagType` blocks: the areas and bits of a device-related
+    /// diagnosis of a type.
+    #[serde(default)]
+    pub diagnosis_types: Vec<DiagnosisType>,
     /// The error types the card reports in a channel's diagnosis, each with
     /// the text the engineering tool shows (`Channel_Diag`).
     #[serde(default)]
@@ -551,6 +555,19 @@ pub struct Diagnosis {
     /// (the 6 standard bytes, then the header at byte 6).
     #[serde(default)]
     pub bytes: Vec<DiagnosisByte>,
+}
+
+/// `[[profibus.diagnosis_types]]`: `UnitDiagType = id`, the areas and
+/// bits of a device-related diagnosis whose type is `id` (GSD revision 5),
+/// as `[profibus.diagnosis]` gives its own.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiagnosisType {
+    pub id: Spanned<u8>,
+    #[serde(default)]
+    pub areas: Vec<DiagnosisArea>,
+    #[serde(default)]
+    pub bits: Vec<dp::DiagnosisBit>,
 }
 
 /// One byte of the device-related block, as the manual names it.

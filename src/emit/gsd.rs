@@ -2,7 +2,7 @@
 //! wrapped to 80 columns with `\` continuations and given CRLF line ends.
 
 use crate::ir::gateway::Gateway;
-use crate::ir::profibus::{PrmHolds, PrmTextOf, Profibus};
+use crate::ir::profibus::{DpSafety, PrmHolds, PrmParam, PrmTextOf, Profibus};
 use crate::ir::{Allowed, Choice, Ir};
 use serde::Serialize;
 
@@ -48,6 +48,8 @@ struct Context<'a> {
     max_diag_data_len: u8,
     diag_areas: Vec<DiagArea<'a>>,
     diag_bits: Vec<DiagBit<'a>>,
+    /// `UnitDiagType = n` blocks.
+    diag_types: Vec<DiagType<'a>>,
     /// `Channel_Diag(n)`: each error type and its text.
     channel_diagnosis: Vec<Value<'a>>,
     dpv1: Option<Dpv1>,
@@ -62,7 +64,10 @@ struct Context<'a> {
     /// The constant bytes are exactly the DPV1 status bytes.
     prm_const_is_status: bool,
     prm_texts: Vec<PrmText<'a>>,
+    /// The device's parameters, whose `Ext_User_Prm_Data_Ref` lines it has.
     params: Vec<Param<'a>>,
+    /// Every `ExtUserPrmData`: the device's, then the PROFIsafe modules'.
+    definitions: Vec<Param<'a>>,
     /// What the modules are, for the comment above them.
     modules_note: &'static str,
     modules: Vec<Module<'a>>,
@@ -99,7 +104,7 @@ struct Value<'a> {
 /// `Unit_Diag_Bit(n)` or `Unit_Diag_Not_Bit(n)` and its text.
 #[derive(Serialize)]
 struct DiagBit<'a> {
-    keyword: &'static str,
+    keyword: String,
     bit: u16,
     text: &'a str,
 }
@@ -111,6 +116,13 @@ struct DiagArea<'a> {
     /// Comment lines saying what the area shows, when the IR says it.
     notes: Vec<String>,
     values: Vec<Value<'a>>,
+}
+
+#[derive(Serialize)]
+struct DiagType<'a> {
+    id: u8,
+    areas: Vec<DiagArea<'a>>,
+    bits: Vec<DiagBit<'a>>,
 }
 
 #[derive(Serialize)]
@@ -138,7 +150,7 @@ struct PrmText<'a> {
     values: Vec<Value<'a>>,
 }
 
-#[derive(Serialize)]
+#[derive(Serialize, Clone)]
 struct Param<'a> {
     id: u16,
     name: &'a str,
@@ -158,6 +170,18 @@ struct Module<'a> {
     config: String,
     reference: Option<u16>,
     info: Option<&'a str>,
+    safety: Option<ModuleSafety>,
+}
+
+/// A PROFIsafe module's F-parameter block and CRCs, as its lines say them.
+#[derive(Serialize)]
+struct ModuleSafety {
+    len: u16,
+    constant: Option<String>,
+    /// `(offset, ExtUserPrmData number)` of each parameter.
+    refs: Vec<(u16, u16)>,
+    f_param_desc: String,
+    f_io_structure_desc: u32,
 }
 
 /// The GSD text of a description with a PROFIBUS part.
@@ -223,18 +247,14 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
         slave_family: &p.slave_family,
         max_diag_data_len: p.max_diag_data_len,
         diag_areas: diag_areas(ir, p),
-        diag_bits: p
-            .diagnosis
+        diag_bits: diag_bits(p.diagnosis.iter().flat_map(|d| &d.bits), ""),
+        diag_types: p
+            .diagnosis_types
             .iter()
-            .flat_map(|d| &d.bits)
-            .map(|b| DiagBit {
-                keyword: if b.clear {
-                    "Unit_Diag_Not_Bit"
-                } else {
-                    "Unit_Diag_Bit"
-                },
-                bit: b.bit,
-                text: b.text.for_gsd(),
+            .map(|t| DiagType {
+                id: t.id,
+                areas: t.areas.iter().map(plain_area).collect(),
+                bits: diag_bits(t.bits.iter(), "X_"),
             })
             .collect(),
         channel_diagnosis: p
@@ -295,7 +315,15 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 }
             })
             .collect(),
-        params: params(ir, p),
+        params: params(ir, p.user_prm.params()),
+        definitions: params(
+            ir,
+            p.user_prm.params().chain(
+                p.modules
+                    .iter()
+                    .flat_map(|m| m.safety.iter().flat_map(|s| &s.params)),
+            ),
+        ),
         modules_note: match ir.gateway {
             Some(_) => "word blocks; plug them until INPUT and OUTPUT equal the nodes' words",
             None if p.modules.iter().all(|m| m.ppo.is_some()) => "one PPO type at a time",
@@ -311,6 +339,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                     config: hex_list(&m.config),
                     reference: m.reference,
                     info: m.info.as_deref(),
+                    safety: m.safety.as_ref().map(module_safety),
                 })
                 .collect(),
         },
@@ -404,19 +433,55 @@ fn gateway_modules(g: &Gateway) -> Vec<Module<'_>> {
             config: hex_list(&[m.config]),
             reference: Some(m.reference.into()),
             info: None,
+            safety: None,
         })
         .collect()
+}
+
+fn module_safety(s: &DpSafety) -> ModuleSafety {
+    ModuleSafety {
+        len: s.len,
+        constant: (!s.constant.is_empty()).then(|| hex_list(&s.constant)),
+        refs: s.params.iter().map(|p| (p.offset, p.id)).collect(),
+        f_param_desc: super::hex16(s.crcs.f_param_desc),
+        f_io_structure_desc: s.crcs.f_io_structure_desc,
+    }
+}
+
+/// `Unit_Diag_Bit` and `Unit_Diag_Not_Bit` lines, with `prefix` `X_` in a
+/// `UnitDiagType`.
+fn diag_bits<'a>(
+    bits: impl Iterator<Item = &'a crate::ir::profibus::DiagnosisBit>,
+    prefix: &str,
+) -> Vec<DiagBit<'a>> {
+    bits.map(|b| DiagBit {
+        keyword: format!(
+            "{prefix}{}",
+            if b.clear {
+                "Unit_Diag_Not_Bit"
+            } else {
+                "Unit_Diag_Bit"
+            }
+        ),
+        bit: b.bit,
+        text: b.text.for_gsd(),
+    })
+    .collect()
+}
+
+fn plain_area(a: &crate::ir::profibus::DiagnosisArea) -> DiagArea<'_> {
+    DiagArea {
+        first: a.first_bit,
+        last: a.last_bit,
+        notes: Vec::new(),
+        values: values(&a.values.choices),
+    }
 }
 
 /// The PROFIBUS diagnosis' areas, or a gateway's, with their notes as
 /// comment lines.
 fn diag_areas<'a>(ir: &'a Ir, p: &'a Profibus) -> Vec<DiagArea<'a>> {
-    let plain = p.diagnosis.iter().flat_map(|d| &d.areas).map(|a| DiagArea {
-        first: a.first_bit,
-        last: a.last_bit,
-        notes: Vec::new(),
-        values: values(&a.values.choices),
-    });
+    let plain = p.diagnosis.iter().flat_map(|d| &d.areas).map(plain_area);
     let gateway = ir
         .gateway
         .iter()
@@ -464,9 +529,8 @@ fn values(choices: &[Choice]) -> Vec<Value<'_>> {
         .collect()
 }
 
-fn params<'a>(ir: &'a Ir, p: &Profibus) -> Vec<Param<'a>> {
-    p.user_prm
-        .params()
+fn params<'a>(ir: &'a Ir, params: impl Iterator<Item = &'a PrmParam>) -> Vec<Param<'a>> {
+    params
         .map(|param| {
             let facts = ir.prm_facts(param);
             Param {

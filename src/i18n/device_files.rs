@@ -130,6 +130,11 @@ phrases! {
         zh: "非 PI GSDML 检查器计算的值",
         de: "nicht vom GSDML-Checker der PI berechnet",
     };
+    NOT_COMPUTED_FOR_THE_MODULE = {
+        en: "not the CRCs computed for the module",
+        zh: "非为该模块计算的 CRC",
+        de: "nicht die für das Modul berechneten CRCs",
+    };
     NOT_STATED = {
         en: "the description does not state it",
         zh: "设备描述未说明",

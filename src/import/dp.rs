@@ -6,9 +6,11 @@
 //! another device is the round trip's to judge (`super::round_trip`).
 
 use super::gateway;
+
+mod safety;
 use super::toml_out::{hex, list, quote, Line, TomlOut};
 use super::Notes;
-use crate::device::dp::{DpDevice, DpModule, Keyword};
+use crate::device::dp::{DiagArea, DiagBit, DiagType, DpDevice, DpModule, Keyword};
 use crate::device::{Allowed, Field, ParameterData, Value};
 use crate::gsd::config::{identifiers, Direction, Identifier, Length};
 use crate::gsd::Value as GsdValue;
@@ -507,9 +509,11 @@ fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
         if let Some(r) = m.reference {
             out.key("reference", r);
         }
+        let safety = safety::block(m);
         for k in &m.keywords {
             match (k.key.as_str(), k.value.as_str()) {
                 ("info_text", Some(info)) => out.string("info", info),
+                (key, _) if safety.is_some() && safety::CRC_KEYWORDS.contains(&key) => {}
                 _ => notes.unsaid(
                     &k.name,
                     &k.place,
@@ -521,10 +525,16 @@ fn modules(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
             }
         }
         module_data(out, m, ppo5_words, notes);
-        for (what, data) in [
-            ("User_Prm_Data part", &m.user_prm_data),
-            ("PROFIsafe parameters", &m.safety_prm_data),
-        ] {
+        if let Some(block) = &safety {
+            safety::write(out, m, block, notes);
+        }
+        let safety_unsaid = safety
+            .is_none()
+            .then_some(("PROFIsafe parameters", &m.safety_prm_data));
+        for (what, data) in [("User_Prm_Data part", &m.user_prm_data)]
+            .into_iter()
+            .chain(safety_unsaid)
+        {
             if !data.is_empty() {
                 let place = data.fields.first().map(|f| &f.place).unwrap_or(&m.place);
                 notes.unsaid(
@@ -657,7 +667,7 @@ fn user_prm(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
         }
     }
     for field in &prm.fields {
-        parameter(out, field, notes);
+        parameter(out, "profibus.parameters", field, notes);
     }
 }
 
@@ -681,7 +691,9 @@ fn constant_bytes(prm: &ParameterData, dpv1: bool) -> Vec<u8> {
     bytes
 }
 
-fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
+/// A parameter as an item of the array `array`
+/// (`profibus.parameters`), or W600 where a card parameter cannot be it.
+fn parameter(out: &mut TomlOut, array: &str, f: &Field, notes: &mut Notes) {
     let name = f.name.primary.to_string();
     let Some((stored_key, stored)) = super::prm::stored_as(f).or_else(|| signed8(f)) else {
         let what = format!("parameter \"{name}\" of type {}", f.data_type);
@@ -692,7 +704,7 @@ fn parameter(out: &mut TomlOut, f: &Field, notes: &mut Notes) {
         );
         return;
     };
-    out.array_item("profibus.parameters");
+    out.array_item(array);
     out.string("name", &name);
     out.key("offset", f.byte_offset);
     out.key(stored_key, stored);
@@ -939,11 +951,7 @@ fn diagnosis(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
     }
     let d = &device.diagnosis;
     for t in &d.types {
-        notes.unsaid(
-            &format!("UnitDiagType = {}", t.id),
-            &t.place,
-            "the description has no diagnosis types",
-        );
+        diagnosis_type(out, t, notes);
     }
     for c in &d.channel {
         match plan.channels_unsaid {
@@ -961,8 +969,29 @@ fn device_block(out: &mut TomlOut, device: &DpDevice, length: i64, notes: &mut N
     let d = &device.diagnosis;
     out.table("profibus.diagnosis");
     out.key("length", length);
-    let bits: Vec<String> = d
-        .bits
+    write_bits(out, &d.bits, notes);
+    write_areas(out, "profibus.diagnosis.areas", &d.areas);
+}
+
+/// `[[profibus.diagnosis_types]]`: a `UnitDiagType`'s areas and bits.
+fn diagnosis_type(out: &mut TomlOut, t: &DiagType, notes: &mut Notes) {
+    let Ok(id) = u8::try_from(t.id) else {
+        notes.unsaid(
+            &format!("UnitDiagType = {}", t.id),
+            &t.place,
+            "a diagnosis type is 0 to 255",
+        );
+        return;
+    };
+    out.array_item("profibus.diagnosis_types");
+    out.key("id", id);
+    write_bits(out, &t.bits, notes);
+    write_areas(out, "profibus.diagnosis_types.areas", &t.areas);
+}
+
+/// `bits = [...]`, each bit's help text a W600.
+fn write_bits(out: &mut TomlOut, bits: &[DiagBit], notes: &mut Notes) {
+    let bits: Vec<String> = bits
         .iter()
         .map(|b| {
             if b.help.is_some() {
@@ -988,8 +1017,12 @@ fn device_block(out: &mut TomlOut, device: &DpDevice, length: i64, notes: &mut N
     if !bits.is_empty() {
         out.key("bits", format!("[\n    {},\n]", bits.join(",\n    ")));
     }
-    for a in &d.areas {
-        out.array_item("profibus.diagnosis.areas");
+}
+
+/// Each area as an item of `array`, with its values' texts.
+fn write_areas(out: &mut TomlOut, array: &str, areas: &[DiagArea]) {
+    for a in areas {
+        out.array_item(array);
         out.key("bit", format!("[{}, {}]", a.first, a.last));
         let values = a.values.iter().map(|v| {
             format!(

@@ -83,6 +83,8 @@ pub struct Profibus {
     pub prm_block_structure: Option<BlockStructure>,
     pub user_prm: UserPrm,
     pub diagnosis: Option<Diagnosis>,
+    /// `UnitDiagType` blocks, in the description's order.
+    pub diagnosis_types: Vec<DiagnosisType>,
     /// `Channel_Diag`: the error types of a channel's diagnosis the card
     /// reports, by error type.
     pub channel_diagnosis: Vec<ChannelDiagnosis>,
@@ -178,6 +180,107 @@ pub struct DpModule {
     pub output_len: u16,
     /// Its name in generated code: `ppo1`.
     pub ident: Ident,
+    /// Its F-parameters and description CRCs, when it is a PROFIsafe module.
+    pub safety: Option<DpSafety>,
+}
+
+/// A PROFIsafe module's block of F-parameters, which the master sends
+/// after the device's User_Prm_Data when the module is plugged
+/// (`F_Ext_Module_Prm_Data_Len`, `F_Ext_User_Prm_Data_Const(0)` and
+/// `_Ref`), and its two description CRCs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DpSafety {
+    /// The block's fixed bytes from its byte 0.
+    pub constant: Vec<u8>,
+    /// Its parameters at their bytes in the block; what each holds is in
+    /// `UserPrm::card_params`, its texts among `UserPrm::texts`.
+    pub params: Vec<PrmParam>,
+    /// Bytes of the block.
+    pub len: u16,
+    pub crcs: super::safety::DescriptionCrcs,
+}
+
+impl DpSafety {
+    /// Its parameters as its CRCs describe them; `card_params` is
+    /// `UserPrm::card_params`, which holds what each holds.
+    pub fn shapes(&self, card_params: &[CardParam]) -> Vec<SafetyPrmShape> {
+        self.params
+            .iter()
+            .filter_map(|param| {
+                let PrmValue::Card(index) = param.value else {
+                    return None;
+                };
+                let p = card_params.get(index)?;
+                let allowed = match &p.allowed {
+                    Allowed::Range { min, max } => format!("{min}-{max}"),
+                    Allowed::Choices(set) => {
+                        let values: Vec<String> =
+                            set.choices.iter().map(|c| c.value.to_string()).collect();
+                        values.join(",")
+                    }
+                };
+                Some(SafetyPrmShape {
+                    offset: param.offset,
+                    data_type: param.data_type.to_string(),
+                    default: p.default.into(),
+                    allowed,
+                    changeable: p.changeable,
+                    visible: p.visible,
+                })
+            })
+            .collect()
+    }
+}
+
+/// A parameter of a PROFIsafe module's block as far as its CRCs describe
+/// it, in GSD's words: its byte, type (`Unsigned16`, `BitArea(2-3)`),
+/// default, values (`1-254`, or the choices' `0,1`) and flags; no text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SafetyPrmShape {
+    pub offset: u16,
+    pub data_type: String,
+    pub default: i128,
+    pub allowed: String,
+    pub changeable: bool,
+    pub visible: bool,
+}
+
+/// gsdc's fingerprint of what a GSD's PROFIsafe module's two CRCs
+/// describe, as far as gsdc can tell: the module's config bytes (its IO
+/// data) and its F-parameter block, without any text. A description's
+/// CRCs state it as `of`.
+pub fn dp_safety_fingerprint(
+    config: &[u8],
+    (len, constant): (u16, &[u8]),
+    params: &[SafetyPrmShape],
+) -> String {
+    super::Fingerprint::of(&dp_safety_canonical(config, (len, constant), params)).to_string()
+}
+
+/// One line for the module, the block's length and fixed bytes, then one
+/// per parameter.
+fn dp_safety_canonical(
+    config: &[u8],
+    (len, constant): (u16, &[u8]),
+    params: &[SafetyPrmShape],
+) -> String {
+    let hex = |bytes: &[u8]| -> String {
+        let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+        hex.join(",")
+    };
+    let mut text = format!(
+        "Module {}\nF_Ext_Module_Prm_Data_Len={len}\nF_Ext_User_Prm_Data_Const(0)={}\n",
+        hex(config),
+        hex(constant)
+    );
+    for p in params {
+        text.push_str(&format!(
+            "Ref({}) {} {} {} Changeable={} Visible={}\n",
+            p.offset, p.data_type, p.default, p.allowed, p.changeable, p.visible
+        ));
+    }
+    text
 }
 
 /// Which of the length keywords the GSD writes.
@@ -556,6 +659,17 @@ pub struct DiagnosisArea {
     pub values: ValueSet,
 }
 
+/// `UnitDiagType = id`: the areas and bits of a device-related diagnosis
+/// whose type is `id` (GSD revision 5; SINAMICS G120's PROFIsafe faults,
+/// type 129).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DiagnosisType {
+    pub id: u8,
+    pub areas: Vec<DiagnosisArea>,
+    pub bits: Vec<DiagnosisBit>,
+}
+
 /// Bytes of the standard diagnosis before the device-related block.
 pub const STANDARD_DIAG_BYTES: u8 = 6;
 
@@ -589,6 +703,38 @@ mod tests {
             };
             assert_eq!(user_prm.placed(PrmValue::Entry(setting)), None, "{name}");
         }
+    }
+
+    /// The text the fingerprint is taken of, written out by hand: a
+    /// description's `of` depends on it, so changing it makes every stated
+    /// `of` stale, a decision to take in sight.
+    #[test]
+    fn a_dp_safety_modules_fingerprint_is_of_its_bytes_and_parameters_without_texts() {
+        let sil = SafetyPrmShape {
+            offset: 4,
+            data_type: PrmType::Bits { first: 2, last: 3 }.to_string(),
+            default: 1,
+            allowed: "1".into(),
+            changeable: true,
+            visible: true,
+        };
+        let crc = SafetyPrmShape {
+            offset: 12,
+            data_type: "Unsigned16".into(),
+            default: 0x783E,
+            allowed: "0-65535".into(),
+            changeable: false,
+            visible: true,
+        };
+        let text = dp_safety_canonical(&[0xC6, 0x85], (14, &[0x0E, 0x05]), &[sil, crc]);
+        assert_eq!(
+            text,
+            "Module C6,85\n\
+             F_Ext_Module_Prm_Data_Len=14\n\
+             F_Ext_User_Prm_Data_Const(0)=0E,05\n\
+             Ref(4) BitArea(2-3) 1 1 Changeable=true Visible=true\n\
+             Ref(12) Unsigned16 30782 0-65535 Changeable=false Visible=true\n"
+        );
     }
 
     #[test]

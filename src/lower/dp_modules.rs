@@ -137,6 +137,8 @@ fn module(
         input_len: u16::try_from(io.input).unwrap_or(u16::MAX),
         output_len: u16::try_from(io.output).unwrap_or(u16::MAX),
         ident,
+        // `dp_safety::lower` gives a PROFIsafe module its block.
+        safety: None,
     })
 }
 

@@ -5,13 +5,15 @@
 use super::checks::{Checker, GSD_NAME_LEN};
 use super::param_values::{self, Holds, Stored, Taken};
 use crate::description::dp as raw;
-use crate::ir::profibus::{CardParam, PrmParam, PrmType, PrmValue};
+use crate::ir::profibus::{CardParam, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue};
 use crate::ir::Allowed;
 use std::ops::Range;
 use toml::Spanned;
 
-/// The card's parameters, placed, each with where it is written; numbered
-/// from `ids`, and `text_ids` for those with choices.
+/// The card's parameters (or a PROFIsafe module's), placed, each with
+/// where it is written; numbered from `ids`, and `text_ids` for those with
+/// choices; what each holds is `facts`, which `UserPrm::card_params` keeps
+/// after the `facts_before` there already.
 pub(super) struct Placed {
     pub params: Vec<PrmParam>,
     pub facts: Vec<CardParam>,
@@ -22,8 +24,11 @@ pub(super) struct Placed {
 pub(super) fn lower(
     cx: &mut Checker,
     params: &[raw::Parameter],
-    ids: &mut impl Iterator<Item = u16>,
-    text_ids: &mut impl Iterator<Item = u16>,
+    (ids, text_ids): (
+        &mut impl Iterator<Item = u16>,
+        &mut impl Iterator<Item = u16>,
+    ),
+    facts_before: usize,
 ) -> Placed {
     let mut placed = Placed {
         params: Vec::new(),
@@ -43,13 +48,28 @@ pub(super) fn lower(
         placed.params.push(PrmParam {
             id: ids.next().unwrap_or(u16::MAX),
             offset: u16::from(*p.offset.get_ref()),
-            value: PrmValue::Card(placed.facts.len()),
+            value: PrmValue::Card(facts_before + placed.facts.len()),
             data_type,
             text,
         });
         placed.facts.push(fact);
     }
     placed
+}
+
+impl Placed {
+    /// The value texts of those parameters that have choices.
+    pub fn texts(&self) -> impl Iterator<Item = PrmText> + '_ {
+        self.params
+            .iter()
+            .filter_map(|param| match (param.text, param.value) {
+                (Some(id), PrmValue::Card(index)) => Some(PrmText {
+                    id,
+                    of: PrmTextOf::Card(index),
+                }),
+                _ => None,
+            })
+    }
 }
 
 /// The bits a parameter takes of each of its bytes, from its offset.
@@ -92,6 +112,13 @@ fn parameter(cx: &mut Checker, p: &raw::Parameter) -> Option<(PrmType, CardParam
             visible: p.visible.as_ref().is_none_or(|v| *v.get_ref()),
         },
     ))
+}
+
+/// The most bytes User_Prm_Data holds: what its length keyword
+/// (Max_User_Prm_Data_Len) takes.
+pub(super) fn max_user_prm_len() -> usize {
+    let (_, max) = crate::gsd::keyword_range("Max_User_Prm_Data_Len");
+    usize::try_from(max).expect("the schema gives Max_User_Prm_Data_Len an Unsigned8 range")
 }
 
 /// The stated constant bytes of User_Prm_Data and their span.

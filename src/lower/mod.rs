@@ -9,6 +9,7 @@ mod choices;
 mod dp_channel;
 mod dp_modules;
 mod dp_params;
+mod dp_safety;
 mod dp_timing;
 mod gateway;
 mod manual;
@@ -18,6 +19,7 @@ mod param_values;
 mod ppo;
 mod profibus;
 mod profinet;
+mod safety_crcs;
 mod telegram;
 mod wording;
 

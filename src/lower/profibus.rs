@@ -10,9 +10,9 @@ use crate::description as raw;
 use crate::diag::Diagnostic;
 use crate::i18n::files;
 use crate::ir::profibus::{
-    Baud, Diagnosis, DiagnosisArea, DiagnosisBit, DpModule, Dpv1, Dpv1Class2, Features,
-    GsdReleases, LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType, PrmValue,
-    Profibus, UserPrm, STANDARD_DIAG_BYTES,
+    Baud, Diagnosis, DiagnosisArea, DiagnosisBit, DiagnosisType, DpModule, Dpv1, Dpv1Class2,
+    Features, GsdReleases, LimitsWritten, PrmBlock, PrmParam, PrmText, PrmTextOf, PrmType,
+    PrmValue, Profibus, UserPrm, STANDARD_DIAG_BYTES,
 };
 use crate::ir::{EntryType, Ident, MappingSet, Mappings, PkwKind, Scope, Telegram, Text};
 use crate::spec::{DPV1_GSD_REVISION, IM_GSD_REVISION};
@@ -107,7 +107,11 @@ pub fn lower(
             crate::i18n::files::NOT_ASSIGNED_BY_PI,
         );
     }
-    let modules = modules(cx, p, telegram);
+    let mut user_prm = user_prm;
+    let mut modules = modules(cx, p, telegram);
+    if let Some(given) = &p.modules {
+        super::dp_safety::lower(cx, given.get_ref(), &mut modules, &mut user_prm);
+    }
     layout_decisions(
         cx,
         (&modules, p.max_module.is_some()),
@@ -115,10 +119,15 @@ pub fn lower(
         gateway.is_some(),
     );
     let diagnosis = p.diagnosis.as_ref().and_then(|d| diagnosis(cx, d));
-    let device_diag_len = diagnosis.as_ref().map(|d| d.length).or_else(|| {
-        let d = gateway?.gateway.diagnosis.as_ref()?;
-        Some(d.max_len)
-    });
+    let diagnosis_types = diagnosis_types(cx, &p.diagnosis_types);
+    let device_diag_len = diagnosis
+        .as_ref()
+        .map(|d| d.length)
+        .or_else(|| {
+            let d = gateway?.gateway.diagnosis.as_ref()?;
+            Some(d.max_len)
+        })
+        .max(types_diag_len(&diagnosis_types));
     let limits = limits(cx, p, &modules, gateway);
     let features = features(cx, p, gsd_revision);
     fail_safe_required_supported(cx, p, fail_safe);
@@ -172,6 +181,7 @@ pub fn lower(
         isochronous,
         prm_block_structure,
         user_prm,
+        diagnosis_types,
         max_diag_data_len: max_diag_data_len(cx, p, device_diag_len),
         bitmap_device: device
             .symbol
@@ -599,6 +609,7 @@ fn ppo_module(
         input_len: layout.bytes(),
         output_len: layout.bytes(),
         ident: Ident::of(&[&format!("ppo{ppo}")]),
+        safety: None,
     })
 }
 
@@ -803,13 +814,6 @@ fn identification_and_maintenance(cx: &mut Checker, d: &raw::Dpv1, near: Range<u
     }
 }
 
-/// The most bytes User_Prm_Data holds: what its length keyword
-/// (Max_User_Prm_Data_Len) takes.
-fn max_user_prm_len() -> usize {
-    let (_, max) = crate::gsd::keyword_range("Max_User_Prm_Data_Len");
-    usize::try_from(max).expect("the schema gives Max_User_Prm_Data_Len an Unsigned8 range")
-}
-
 /// The DPV1 status bytes first (a DPV1 slave's User_Prm_Data starts with
 /// them), then one block per group of mappings in telegram order: one
 /// parameter per entry of its set's type, numbered from 1; then a
@@ -828,18 +832,8 @@ fn user_prm(
     };
     let mut ids = 1..=u16::MAX;
     let mut text_ids = 1..=u16::MAX;
-    let card = super::dp_params::lower(cx, &p.parameters, &mut ids, &mut text_ids);
-    let mut texts: Vec<PrmText> = card
-        .params
-        .iter()
-        .filter_map(|param| match (param.text, param.value) {
-            (Some(id), PrmValue::Card(index)) => Some(PrmText {
-                id,
-                of: PrmTextOf::Card(index),
-            }),
-            _ => None,
-        })
-        .collect();
+    let card = super::dp_params::lower(cx, &p.parameters, (&mut ids, &mut text_ids), 0);
+    let mut texts: Vec<PrmText> = card.texts().collect();
     let sets: Vec<PrmText> = mappings
         .sets()
         .filter(|s| s.allowed.choices().is_some() && in_user_prm(s))
@@ -869,7 +863,7 @@ fn user_prm(
                     let data_type = prm_type(set.entry_type);
                     let offset = end;
                     end += usize::from(data_type.bytes());
-                    if end > max_user_prm_len() {
+                    if end > super::dp_params::max_user_prm_len() {
                         overflowing.get_or_insert(set.key);
                     }
                     PrmParam {
@@ -898,7 +892,7 @@ fn user_prm(
         None => (Vec::new(), end),
     };
     texts.extend(sets);
-    if end > max_user_prm_len() && card.end == end {
+    if end > super::dp_params::max_user_prm_len() && card.end == end {
         let span = p.parameters.last().map(|p| p.offset.span());
         let too_long = telegram_too_long(end, span, "a parameter runs past the limit");
         cx.push(too_long.help("User_Prm_Data holds at most 237 bytes"));
@@ -928,7 +922,7 @@ fn max_length(cx: &mut Checker, p: &raw::Profibus, len: usize) -> Option<u8> {
 
 /// E116: a parameter telegram of `end` bytes, longer than GSD allows.
 fn telegram_too_long(end: usize, span: Option<Range<usize>>, label: &str) -> Diagnostic {
-    let most = max_user_prm_len();
+    let most = super::dp_params::max_user_prm_len();
     Diagnostic::error(
         "E116",
         format!("the parameter telegram would be {end} bytes; GSD allows {most}"),
@@ -985,14 +979,14 @@ fn gateway_params(
 ) -> (Vec<PrmParam>, usize) {
     let (params, end) = gateway::place(&g.prm_types, start, ids);
     gateway_prm_decision(cx, &params, end);
-    let most = max_user_prm_len();
+    let most = super::dp_params::max_user_prm_len();
     if end > most && start <= most {
         cx.push(
             Diagnostic::error(
                 "E116",
                 format!(
                     "the parameter telegram would be {end} bytes; GSD allows {}",
-                    max_user_prm_len()
+                    super::dp_params::max_user_prm_len()
                 ),
             )
             .at(g.span.clone())
@@ -1080,6 +1074,48 @@ fn diagnosis(cx: &mut Checker, d: &Spanned<raw::Diagnosis>) -> Option<Diagnosis>
         info,
         bytes,
     })
+}
+
+/// `[[profibus.diagnosis_types]]`: each type once (E105), its areas and
+/// bits within the longest device-related block.
+fn diagnosis_types(cx: &mut Checker, given: &[raw::DiagnosisType]) -> Vec<DiagnosisType> {
+    let bits = (MAX_DEVICE_DIAG_BLOCK - 1) * 8;
+    let mut seen = std::collections::BTreeSet::new();
+    let mut lowered = Vec::new();
+    for t in given {
+        let id = *t.id.get_ref();
+        if !seen.insert(id) {
+            cx.duplicate(format!("diagnosis type {id}"), t.id.span());
+            continue;
+        }
+        let (mut constants, mut types) = (Scope::default(), Scope::default());
+        lowered.push(DiagnosisType {
+            id,
+            areas: t
+                .areas
+                .iter()
+                .filter_map(|a| diagnosis_area(cx, a, bits, (&mut constants, &mut types)))
+                .collect(),
+            bits: t
+                .bits
+                .iter()
+                .filter_map(|b| diagnosis_bit(cx, b, bits))
+                .collect(),
+        });
+    }
+    lowered
+}
+
+/// The device-related block the types' areas and bits need: the header
+/// and every byte up to their last bit.
+fn types_diag_len(types: &[DiagnosisType]) -> Option<u8> {
+    let areas = types
+        .iter()
+        .flat_map(|t| t.areas.iter().map(|a| a.last_bit));
+    let bits = types.iter().flat_map(|t| t.bits.iter().map(|b| b.bit));
+    let last = areas.chain(bits).max()?;
+    // Within the longest block, which lowering checked.
+    Some((last / 8 + 2) as u8)
 }
 
 /// `Unit_Diag_Bit`: a bit within the block, its text for the GSD.

@@ -1671,8 +1671,11 @@ typedef enum {
 
 /* A `Module` of the GSD: its name as the GSD writes it, its config bytes as
  * Chk_Cfg carries them, its bytes of input (the slave sends them) and of
- * output, whether its telegrams start with the PKW channel, and its PZD
- * words each way (0 for a gateway's module, whose words are the nodes'). */
+ * output, whether its telegrams start with the PKW channel, its PZD words
+ * each way (0 for a gateway's module, whose words are the nodes'), and the
+ * bytes of F-parameters a PROFIsafe module's master sends after the
+ * device's User_Prm_Data when it is plugged (F_Ext_Module_Prm_Data_Len; 0
+ * for any other module), which the F-device's PROFIsafe layer reads. */
 typedef struct {
     const char *name;
     const uint8_t *config;
@@ -1681,6 +1684,7 @@ typedef struct {
     size_t output_len;
     bool pkw;
     size_t pzd_words;
+    size_t f_parameter_len;
 } gsdc_dp_module_t;
 
 /* How a parameter is stored, as the GSD names it. */

@@ -173,6 +173,11 @@ pub struct DpModule {
     /// Its PZD words each way; 0 for a gateway's module, whose words are
     /// the nodes'.
     pub pzd_words: usize,
+    /// A PROFIsafe module's bytes of F-parameters, which the master sends
+    /// after the device's User_Prm_Data when it is plugged
+    /// (`F_Ext_Module_Prm_Data_Len`) and the F-device's PROFIsafe layer
+    /// reads; 0 for any other module.
+    pub f_parameter_len: usize,
 }
 
 /// User_Prm_Data: its length, the DPV1 status bytes at its start, and

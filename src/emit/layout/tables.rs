@@ -320,8 +320,11 @@ fn dp_modules(ir: &Ir, p: &Profibus) -> Vec<Value> {
             &m.name,
             &m.config,
             (m.input_len.into(), m.output_len.into()),
-            m.layout.is_some_and(|l| l.pkw),
-            m.layout.map_or(0, |l| l.pzd_words),
+            (
+                m.layout.is_some_and(|l| l.pkw),
+                m.layout.map_or(0, |l| l.pzd_words),
+            ),
+            m.safety.as_ref().map_or(0, |s| s.len.into()),
         )
     });
     let words = ir.gateway.iter().flat_map(|g| &g.modules).map(|m| {
@@ -330,7 +333,7 @@ fn dp_modules(ir: &Ir, p: &Profibus) -> Vec<Value> {
             crate::ir::Direction::In => (bytes, 0),
             crate::ir::Direction::Out => (0, bytes),
         };
-        dp_module(&m.name, &[m.config], lengths, false, 0)
+        dp_module(&m.name, &[m.config], lengths, (false, 0), 0)
     });
     ppos.chain(words).collect()
 }
@@ -339,8 +342,8 @@ fn dp_module(
     name: &str,
     config: &[u8],
     (input_len, output_len): (usize, usize),
-    pkw: bool,
-    pzd_words: u8,
+    (pkw, pzd_words): (bool, u8),
+    f_parameter_len: usize,
 ) -> Value {
     Value::Record(record(
         "dp module",
@@ -351,6 +354,7 @@ fn dp_module(
             ("output_len", size(output_len)),
             ("pkw", Value::Bool(pkw)),
             ("pzd_words", number(pzd_words)),
+            ("f_parameter_len", size(f_parameter_len)),
         ],
     ))
 }

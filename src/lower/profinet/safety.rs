@@ -12,6 +12,7 @@ use crate::ir::profinet::{BitItem, Category, TextRef};
 use crate::ir::safety::{ident_of, DescriptionCrcs, FParameter, SafetyItem, SafetyModule};
 use crate::ir::Text;
 use crate::lower::checks::Checker;
+use crate::lower::safety_crcs::{pinned, CrcFile};
 use toml::Spanned;
 
 /// Every safety module, in the description's order; `None` when one has
@@ -98,7 +99,8 @@ fn module(
             placeholder: m.crcs.get_ref().placeholder,
         },
     };
-    pinned(cx, &m.crcs, &module, &what("crcs"))?;
+    let now = module.crc_fingerprint();
+    pinned(cx, &m.crcs, &now, (&what("crcs"), CrcFile::Gsdml))?;
     Some(module)
 }
 
@@ -473,53 +475,4 @@ fn not_allowed(
         .help(format!("{} takes {takes}{fixed}", schema.element)),
     );
     false
-}
-
-/// The stated CRCs, when PI's checker gave them for what the module now
-/// is: E128 when the fingerprint they were given for (`of`) is another or
-/// missing; W109 while they are placeholders.
-fn pinned(
-    cx: &mut Checker,
-    given: &Spanned<raw::DescriptionCrcs>,
-    module: &SafetyModule,
-    what: &str,
-) -> Option<()> {
-    let crcs = given.get_ref();
-    let now = module.crc_fingerprint();
-    if crcs.placeholder {
-        let value = format!(
-            "F_ParamDescCRC {}, F_IO_StructureDescCRC {}",
-            module.crcs.f_param_desc, module.crcs.f_io_structure_desc
-        );
-        cx.placeholder(
-            Diagnostic::warning(
-                "W109",
-                format!("{what} are placeholders: the GSDML's F_ParamDescCRC and F_IO_StructureDescCRC are not PI's checker's"),
-            )
-            .at(given.span())
-            .label("placeholder")
-            .help(format!("run PI's GSDML checker on the built file, then state the CRCs it reports with of = \"{now}\" and without placeholder")),
-            (what, value),
-            crate::i18n::files::NOT_COMPUTED_BY_PI_CHECKER,
-        );
-        return Some(());
-    }
-    let stated = crcs.of.as_ref();
-    if stated.is_some_and(|of| *of.get_ref() == now) {
-        return Some(());
-    }
-    let was = stated.map_or_else(
-        || "for no stated fingerprint (`of`)".to_string(),
-        |of| format!("for \"{}\"", of.get_ref()),
-    );
-    cx.push(
-        Diagnostic::error(
-            "E128",
-            format!("{what} were given {was}, but the F-parameters and IO data are now \"{now}\""),
-        )
-        .at(stated.map_or_else(|| given.span(), Spanned::span))
-        .label("stale or unpinned CRCs")
-        .help(format!("gsdc cannot compute PROFIsafe's description CRCs: build with `placeholder = true`, run PI's GSDML checker on the file, and state the CRCs it reports with of = \"{now}\"")),
-    );
-    None
 }

@@ -90,11 +90,11 @@ impl Target {
             }
             self.gateway_base(names)
         } else {
-            for module in self.gsd.modules() {
+            for module in self.exchanged_modules() {
                 record(self.every_parameter(module, baudrate, false));
                 record(self.every_parameter(module, baudrate, true));
             }
-            let first: Vec<&Module> = self.gsd.modules().take(1).collect();
+            let first: Vec<&Module> = self.exchanged_modules().take(1).collect();
             self.startup(String::new(), &first, &[])
         };
         for exchange in manuals::exchanges(&self.name) {
@@ -336,6 +336,20 @@ impl Target {
 
     /// Whether the layout has each module the GSD names, with the same
     /// config bytes; prints the byte offset and both values where not.
+    /// The GSD's modules but PROFIsafe ones: their F-parameters follow
+    /// User_Prm_Data, which only an F-host sends (the master's GSD reader,
+    /// gsd-parser, reads no F_ keyword) and only an F-device's PROFIsafe
+    /// layer reads; neither end is one.
+    fn exchanged_modules(&self) -> impl Iterator<Item = &Module> {
+        let layouts = self.card.dp.map_or(&[][..], |dp| dp.modules);
+        self.gsd.modules().filter(|m| {
+            layouts
+                .iter()
+                .find(|l| l.name == m.name)
+                .is_none_or(|l| l.f_parameter_len == 0)
+        })
+    }
+
     fn same_modules(&self, startup: &Startup) -> bool {
         let modules = self.card.dp.map_or(&[][..], |dp| dp.modules);
         let mut offset = 0;
