@@ -675,12 +675,18 @@ fn user_prm(out: &mut TomlOut, device: &DpDevice, notes: &mut Notes) {
 /// with zeros (what the master sends there), and a DPV1 slave's three
 /// status bytes at least.
 fn constant_bytes(prm: &ParameterData, dpv1: bool) -> Vec<u8> {
+    let at_least = prm.length.map(|l| l as usize).into_iter();
+    fixed_bytes(prm, at_least.chain(dpv1.then_some(3)))
+}
+
+/// The bytes the constants give from byte 0, gaps zero, as far as they
+/// reach and at least to each of `ends`.
+fn fixed_bytes(prm: &ParameterData, ends: impl Iterator<Item = usize>) -> Vec<u8> {
     let end = prm
         .consts
         .iter()
         .map(|c| c.byte_offset as usize + c.bytes.len())
-        .chain(prm.length.map(|l| l as usize))
-        .chain(dpv1.then_some(3))
+        .chain(ends)
         .max()
         .unwrap_or(0);
     let mut bytes = vec![0u8; end];

@@ -59,9 +59,10 @@ pub(super) fn lower(
         else {
             continue;
         };
+        user_prm.texts.extend(placed.texts());
         let block = DpSafety {
             constant,
-            params: placed.params.clone(),
+            params: placed.params,
             len: u16::try_from(len).unwrap_or(u16::MAX),
             crcs: DescriptionCrcs {
                 f_param_desc,
@@ -69,7 +70,6 @@ pub(super) fn lower(
                 placeholder: crcs.placeholder,
             },
         };
-        user_prm.texts.extend(placed.texts());
         user_prm.card_params.extend(placed.facts);
         let now = dp_safety_fingerprint(
             &module.config,

@@ -85,7 +85,7 @@ pub fn lower(
             );
         }
     }
-    let user_prm = user_prm(
+    let mut user_prm = user_prm(
         cx,
         p,
         (dpv1.as_ref(), constant),
@@ -107,7 +107,6 @@ pub fn lower(
             crate::i18n::files::NOT_ASSIGNED_BY_PI,
         );
     }
-    let mut user_prm = user_prm;
     let mut modules = modules(cx, p, telegram);
     if let Some(given) = &p.modules {
         super::dp_safety::lower(cx, given.get_ref(), &mut modules, &mut user_prm);

@@ -52,10 +52,6 @@ pub(super) fn block(m: &DpModule) -> Option<Block> {
 /// there), as far as its constants reach, or its declared length where its
 /// parameters do not reach that.
 fn constant(prm: &crate::device::ParameterData) -> Vec<u8> {
-    let consts_end = prm
-        .consts
-        .iter()
-        .map(|c| c.byte_offset as usize + c.bytes.len());
     let fields_end = prm
         .fields
         .iter()
@@ -63,16 +59,7 @@ fn constant(prm: &crate::device::ParameterData) -> Vec<u8> {
         .max()
         .unwrap_or(0);
     let declared = prm.length.map_or(0, |l| l as usize);
-    let end = consts_end
-        .chain((declared > fields_end).then_some(declared))
-        .max()
-        .unwrap_or(0);
-    let mut bytes = vec![0u8; end];
-    for c in &prm.consts {
-        let at = c.byte_offset as usize;
-        bytes[at..at + c.bytes.len()].copy_from_slice(&c.bytes);
-    }
-    bytes
+    super::fixed_bytes(prm, (declared > fields_end).then_some(declared).into_iter())
 }
 
 /// A parameter as lowering will make it of what the import writes, for
