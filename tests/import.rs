@@ -1058,6 +1058,27 @@ fn run_import(file: &std::path::Path, out: &std::path::Path) -> std::process::Ou
     ])
 }
 
+/// A file the import refuses (E602, no drive or gateway in it) was never
+/// built, so its summary gives no count of round-trip changes, which would
+/// read as a clean round trip: it says there was none.
+#[test]
+fn a_refused_import_says_it_ran_no_round_trip() {
+    let dir = support::scratch("refused");
+    let gsd = dir.join("CP24V1.GSD");
+    std::fs::write(&gsd, support::corpus_file("gsd/morgoth380__CP24V1.gsd")).unwrap();
+    let out = dir.join("cp24v1.toml");
+    let run = run_import(&gsd, &out);
+    assert_eq!(run.status.code(), Some(1), "{}", support::stderr(&run));
+    let stderr = support::stderr(&run);
+    assert!(stderr.contains("error[E602]"), "{stderr}");
+    assert!(
+        stderr.contains("no round trip: the import was refused"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("round trip: 0 breaking"), "{stderr}");
+    assert!(!out.exists());
+}
+
 /// The command: writes the description and the symbol's PNG beside it
 /// (the bitmap found beside the GSD in other letter case), in a folder it
 /// makes when missing, never over a file; a GSDML file whose import builds

@@ -218,9 +218,18 @@ fn report(name: &str, imported: &Imported) {
         warn(&format!("{name}: {hidden} more finding(s) not shown"));
     }
     let r = imported.round_trip;
+    // Without a description or a draft nothing was built to compare: a
+    // count of no changes would read as a clean round trip.
+    let round_trip = match imported.description.is_some() || imported.draft.is_some() {
+        true => format!(
+            "round trip: {} breaking, {} compatible, {} cosmetic",
+            r.breaking, r.compatible, r.cosmetic
+        ),
+        false => "no round trip: the import was refused (see the errors above)".to_string(),
+    };
     warn(&format!(
-        "{name}: {} not imported (W600); round trip: {} breaking, {} compatible, {} cosmetic",
-        imported.unsaid, r.breaking, r.compatible, r.cosmetic
+        "{name}: {} not imported (W600); {round_trip}",
+        imported.unsaid
     ));
 }
 

@@ -143,6 +143,7 @@ fn document(ir: &Ir, lang: Lang, wire: Option<&[(String, Option<Exchanged>)]>) -
     pkw::section(&mut doc, ir, lang);
     params::section(&mut doc, ir, lang);
     params::diagnosis_section(&mut doc, ir, lang);
+    params::dp_diagnosis_types_section(&mut doc, ir, lang);
     params::dp_channel_diagnosis_section(&mut doc, ir, lang);
     params::channel_diagnosis_section(&mut doc, ir, lang);
     gateway::diagnosis_section(&mut doc, ir, lang);

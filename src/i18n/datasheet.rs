@@ -91,6 +91,17 @@ phrases! {
     };
     ERROR_TYPE = { en: "Error type", zh: "错误类型", de: "Fehlertyp" };
     DP_CHANNEL_DIAGNOSIS = { en: "PROFIBUS channel diagnosis", zh: "PROFIBUS 通道诊断", de: "PROFIBUS-Kanaldiagnose" };
+    F_PARAMETERS_INTRO = {
+        en: "When a PROFIsafe module is plugged, its F-parameters follow User_Prm_Data: the F-host sends them, and the card's PROFIsafe layer checks them. The GSD states the module's two description CRCs with them.",
+        zh: "插入 PROFIsafe 模块时，其 F 参数紧随 User_Prm_Data 之后：由 F 主站发送，由扩展卡的 PROFIsafe 层检查。GSD 随之给出该模块的两个描述 CRC。",
+        de: "Ist ein PROFIsafe-Modul gesteckt, folgen seine F-Parameter auf User_Prm_Data: Der F-Host sendet sie, die PROFIsafe-Schicht der Karte prüft sie. Die GSD nennt mit ihnen die beiden Beschreibungs-CRCs des Moduls.",
+    };
+    DP_DIAGNOSIS_TYPES = { en: "PROFIBUS diagnosis types", zh: "PROFIBUS 诊断类型", de: "PROFIBUS-Diagnosetypen" };
+    DP_DIAGNOSIS_TYPES_INTRO = {
+        en: "The texts the engineering tool shows for a device-related diagnosis of each type the GSD names (UnitDiagType), bits counted from the first byte after the header.",
+        zh: "工程工具为 GSD 所列各类型（UnitDiagType）的设备相关诊断显示的文本，位从头字节后的第一个字节起计数。",
+        de: "Die Texte, die das Engineering-Tool zu einer gerätebezogenen Diagnose jedes Typs zeigt, den die GSD nennt (UnitDiagType); Bits gezählt ab dem ersten Byte nach dem Header.",
+    };
     DP_CHANNEL_DIAGNOSIS_INTRO = {
         en: "The error types the card reports in a channel's diagnosis (bits 0 to 4 of its third byte), and the text the engineering tool shows for each.",
         zh: "扩展卡在通道诊断中报告的错误类型（其第三个字节的位 0 至 4），以及工程工具为每种错误显示的文本。",
@@ -913,6 +924,21 @@ phrases! {
         en: "Ident_Number, high byte then low: {high:02X} {low:02X}",
         zh: "Ident_Number，高字节、低字节：{high:02X} {low:02X}",
         de: "Ident_Number, höherwertiges, dann niederwertiges Byte: {high:02X} {low:02X}",
+    };
+    f_parameters_caption(module: &str, size: &str, param_crc: &str, io_crc: u32) = {
+        en: "F-parameters of module \"{module}\": {size} (F_ParamDescCRC {param_crc}, F_IO_StructureDescCRC {io_crc})",
+        zh: "模块“{module}”的 F 参数：{size}（F_ParamDescCRC {param_crc}，F_IO_StructureDescCRC {io_crc}）",
+        de: "F-Parameter des Moduls „{module}“: {size} (F_ParamDescCRC {param_crc}, F_IO_StructureDescCRC {io_crc})",
+    };
+    diagnosis_type_values(id: u8, bits: &str) = {
+        en: "UnitDiagType {id}, X_Unit_Diag_Area {bits}: values",
+        zh: "UnitDiagType {id}，X_Unit_Diag_Area {bits}：取值",
+        de: "UnitDiagType {id}, X_Unit_Diag_Area {bits}: Werte",
+    };
+    diagnosis_type_bits(id: u8) = {
+        en: "UnitDiagType {id}: bits",
+        zh: "UnitDiagType {id}：位",
+        de: "UnitDiagType {id}: Bits",
     };
     area_values(bits: &str) = {
         en: "Unit_Diag_Area {bits}: values",

@@ -15,10 +15,11 @@ use crate::pkw::DiagArea;
 
 pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     // Parameters that map nothing: a gateway's, the card's own.
-    let other_params = ir
-        .profibus
-        .as_ref()
-        .is_some_and(|p| !p.user_prm.gateway.is_empty() || !p.user_prm.card.is_empty());
+    let other_params = ir.profibus.as_ref().is_some_and(|p| {
+        !p.user_prm.gateway.is_empty()
+            || !p.user_prm.card.is_empty()
+            || p.modules.iter().any(|m| m.safety.is_some())
+    });
     let own_records = ir
         .profinet
         .as_ref()
@@ -37,6 +38,9 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     where_set(doc, ir, lang);
     if let Some(p) = ir.profibus.as_ref().filter(|p| p.user_prm.len > 0) {
         user_prm(doc, ir, p, lang);
+    }
+    if let Some(p) = &ir.profibus {
+        f_parameters(doc, ir, p, lang);
     }
     dpv1_indexes(doc, ir, lang);
     let records = longest_records(ir);
@@ -253,6 +257,54 @@ fn longest_records(ir: &Ir) -> Vec<&ParameterRecord> {
     }
     longest.sort_by_key(|r| r.index);
     longest
+}
+
+/// Each PROFIsafe module's F-parameters: the block's fixed bytes and each
+/// parameter, with the module's description CRCs.
+fn f_parameters(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
+    let safety_modules: Vec<_> = p
+        .modules
+        .iter()
+        .filter_map(|m| Some((m, m.safety.as_ref()?)))
+        .collect();
+    if safety_modules.is_empty() {
+        return;
+    }
+    doc.para(text(lang.t(w::F_PARAMETERS_INTRO)));
+    for (module, safety) in safety_modules {
+        let mut rows: Vec<Vec<Cell>> = Vec::new();
+        if !safety.constant.is_empty() {
+            let last = safety.constant.len() as u16 - 1;
+            rows.push(vec![
+                text(bytes(lang, 0, last)),
+                text(lang.t(w::CONSTANT)),
+                text(lang.t(w::CONSTANT)),
+                code(hex_bytes(&safety.constant)),
+                text("—"),
+            ]);
+        }
+        for param in &safety.params {
+            let mut row = param_row(ir, lang, param);
+            // No drive parameter holds an F-parameter.
+            row.pop();
+            rows.push(row);
+        }
+        let caption = w::f_parameters_caption(
+            lang,
+            &module.name,
+            &record_size(lang, safety.len),
+            &format!("0x{:04X}", safety.crcs.f_param_desc),
+            safety.crcs.f_io_structure_desc,
+        );
+        let head = [
+            lang.t(w::BYTES),
+            lang.t(w::NAME),
+            lang.t(w::TYPE),
+            lang.t(w::DEFAULT),
+            lang.t(w::RANGE_OR_CHOICES),
+        ];
+        doc.table(caption, &head, rows);
+    }
 }
 
 fn user_prm(doc: &mut Builder, ir: &Ir, p: &Profibus, lang: Lang) {
@@ -577,6 +629,62 @@ pub(crate) fn diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     );
     for area in &d.areas {
         area_table(doc, d, area, lang);
+    }
+}
+
+/// The texts of each `UnitDiagType`: its areas' values and its bits.
+pub(crate) fn dp_diagnosis_types_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
+    let Some(p) = ir
+        .profibus
+        .as_ref()
+        .filter(|p| !p.diagnosis_types.is_empty())
+    else {
+        return;
+    };
+    doc.section("dp-diagnosis-types", lang.t(w::DP_DIAGNOSIS_TYPES));
+    doc.para(text(lang.t(w::DP_DIAGNOSIS_TYPES_INTRO)));
+    for t in &p.diagnosis_types {
+        for area in &t.areas {
+            let rows = area
+                .values
+                .choices
+                .iter()
+                .map(|c| {
+                    vec![
+                        text(c.value.to_string()),
+                        code(format!("0x{:02X}", c.value)),
+                        text(lang.text(&c.text)),
+                    ]
+                })
+                .collect();
+            doc.table(
+                w::diagnosis_type_values(lang, t.id, &bits(lang, area.first_bit, area.last_bit)),
+                &[lang.t(w::VALUE), lang.t(w::HEX), lang.t(w::MEANING)],
+                rows,
+            );
+        }
+        if !t.bits.is_empty() {
+            let rows = t
+                .bits
+                .iter()
+                .map(|b| {
+                    let keyword = if b.clear {
+                        "X_Unit_Diag_Not_Bit"
+                    } else {
+                        "X_Unit_Diag_Bit"
+                    };
+                    vec![
+                        code(format!("{keyword}({})", b.bit)),
+                        text(lang.text(&b.text)),
+                    ]
+                })
+                .collect();
+            doc.table(
+                w::diagnosis_type_bits(lang, t.id),
+                &[lang.t(w::BITS), lang.t(w::MEANING)],
+                rows,
+            );
+        }
     }
 }
 

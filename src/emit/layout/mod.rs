@@ -376,6 +376,8 @@ pub(crate) struct Profibus {
     pub diagnosis: Option<Diagnosis>,
     /// The error types of a channel's diagnosis, one constant each.
     pub channel_diagnosis: Option<Consts>,
+    /// The values of each diagnosis type's areas, one constant each.
+    pub diagnosis_types: Vec<Consts>,
 }
 
 /// User_Prm_Data decoded: what it holds.
@@ -442,6 +444,7 @@ fn profibus(ir: &Ir, p: &IrProfibus) -> Profibus {
         user_prm: user_prm(ir, p),
         diagnosis: p.diagnosis.as_ref().map(|d| diagnosis(&p.file_name, d)),
         channel_diagnosis: dp_channel_diagnosis(p),
+        diagnosis_types: dp_diagnosis_types(p),
     }
 }
 
@@ -462,6 +465,50 @@ fn dp_channel_diagnosis(p: &IrProfibus) -> Option<Consts> {
         p.file_name
     ));
     (!items.is_empty()).then_some(Consts { doc, items })
+}
+
+/// The values of each `UnitDiagType`'s areas, one constant each, named
+/// after the type, the area's bits and the value's text
+/// (`DP_DIAGNOSIS_TYPE_129_BITS_24_31_WRONG_F_CRC_LENGTH`): what the
+/// firmware writes into those bits of the device-related block.
+fn dp_diagnosis_types(p: &IrProfibus) -> Vec<Consts> {
+    p.diagnosis_types
+        .iter()
+        .flat_map(|t| {
+            t.areas.iter().map(move |a| {
+                let id = t.id.to_string();
+                let ty = if a.last_bit - a.first_bit < 8 {
+                    Ty::U8
+                } else {
+                    Ty::U16
+                };
+                let items = a
+                    .values
+                    .choices
+                    .iter()
+                    .map(|c| {
+                        let words: Vec<&str> = ["dp", "diagnosis", "type", &id]
+                            .into_iter()
+                            .chain(a.ident.words().iter().map(String::as_str))
+                            .chain(c.ident.words().iter().map(String::as_str))
+                            .collect();
+                        Const {
+                            name: Ident::of(&words),
+                            ty,
+                            // Lowering keeps an area's values within its bits.
+                            value: Val::Dec(c.value as u64),
+                        }
+                    })
+                    .collect();
+                let doc = Doc::plain(format!(
+                    "UnitDiagType {id}, {} of the device-related diagnosis: the values {}'s X_Value names.",
+                    bit_range(a.first_bit, a.last_bit),
+                    p.file_name
+                ));
+                Consts { doc, items }
+            })
+        })
+        .collect()
 }
 
 fn user_prm(ir: &Ir, p: &IrProfibus) -> UserPrm {
