@@ -3130,3 +3130,39 @@ fn sinamics_g120_fs_profisafe_module_imports_with_its_crcs_pinned() {
     assert!(ir.is_some(), "{diagnostics:#?}");
     assert!(diagnostics.iter().any(|d| d.code == "W109"));
 }
+
+/// A later access point that declares another PNIO_Version than the first
+/// (SEW's MOVI-C: V2.33, then V2.34) imports with its own `pnio_version`,
+/// which its build declares; one past the file's version is left out with
+/// why (E197).
+#[test]
+fn a_later_access_points_own_pnio_version_imports() {
+    let second = "<DeviceAccessPointItem ID=\"FENA_DAP_V4\"";
+    let text = corpus_gsdml_text(FENA);
+    let at = text.find(second).unwrap();
+    let end = at + text[at..].find('>').unwrap();
+    let with = |version: &str| {
+        let item = text[at..end].replace("PNIO_Version=\"V2.32\"", version);
+        format!("{}{item}{}", &text[..at], &text[end..])
+    };
+    let imported = import(FENA, with("PNIO_Version=\"V2.31\"").as_bytes());
+    assert!(
+        imported.round_trip.is_clean(),
+        "{:#?}",
+        imported.diagnostics
+    );
+    let toml = written(&imported, FENA);
+    assert_eq!(toml.matches("pnio_version = \"2.31\"").count(), 1, "{toml}");
+    let (_, gsdml) = built("fena.toml", toml, ArtifactKind::Gsdml);
+    assert_eq!(gsdml.matches("PNIO_Version=\"V2.31\"").count(), 1);
+    assert_eq!(gsdml.matches("PNIO_Version=\"V2.32\"").count(), 2);
+    let later = import(FENA, with("PNIO_Version=\"V2.35\"").as_bytes());
+    let left_out = messages(&later, "W600");
+    assert!(
+        left_out
+            .iter()
+            .any(|m| m.starts_with("device access point `FENA_DAP_V4`")
+                && m.contains("its PNIO_Version is not the first device access point's")),
+        "{left_out:#?}"
+    );
+}

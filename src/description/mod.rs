@@ -886,6 +886,9 @@ pub struct Dap {
     pub hardware_release: Option<Spanned<String>>,
     pub software_release: Option<Spanned<String>>,
     pub ports: Option<Spanned<u8>>,
+    /// Its `PNIO_Version`, where not the first DAP's (SEW's MOVI-C: V2.33
+    /// first, V2.34 later).
+    pub pnio_version: Option<Spanned<String>>,
     /// One SubmoduleIdentNumber per port, where not the first DAP's.
     pub port_idents: Option<Spanned<Vec<Spanned<u32>>>>,
     pub media_redundancy: Option<Spanned<bool>>,

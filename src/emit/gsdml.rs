@@ -235,7 +235,7 @@ fn device_access_point(doc: &mut Doc, ir: &Ir, p: &Profinet, dap: &Dap) {
     let physical_slots = format!("0..{}", dap.last_slot);
     let ident = hex32(dap.ident);
     let interval = p.min_device_interval.to_string();
-    let version = p.pnio_version.to_string();
+    let version = dap.pnio_version.to_string();
     let mut attributes = vec![
         ("ID", dap.id.as_str()),
         ("PNIO_Version", &version),

@@ -505,6 +505,8 @@ pub struct Dap {
     pub order_number: Option<String>,
     pub hardware_release: Option<String>,
     pub software_release: Option<String>,
+    /// `PNIO_Version`: the first DAP's is `Profinet::pnio_version`.
+    pub pnio_version: Version,
     pub ports: Vec<Port>,
     /// An MRP client: `MediaRedundancy`, the default ring ports.
     pub media_redundancy: bool,

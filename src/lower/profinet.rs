@@ -218,6 +218,7 @@ pub fn lower(
         media_redundancy,
         device,
         version: gsdml_version,
+        pnio_version,
         placement: io::Placement {
             module_slots,
             empty: empty_module.as_ref(),

@@ -16,7 +16,6 @@ const SHARED: &[&str] = &[
     // The device symbol: the description has one, for every DAP.
     crate::import::symbol::GSDML_SYMBOL_TYPE,
     crate::import::symbol::GSDML_SYMBOL_TARGET,
-    "PNIO_Version",
     "RequiredSchemaVersion",
     "ImplementationType",
     "MinDeviceInterval",
@@ -61,15 +60,17 @@ pub(super) fn later_daps<'a>(
     for dap in others {
         let safety: Vec<String> = placed.safety.iter().map(|(id, _)| id.clone()).collect();
         let offer = (modules, &safety[..]);
-        let keys = entry_keys((first, dap), device_info, offer, &taken).and_then(|mut keys| {
-            let stack =
-                Declared::of(dap, (modules, placed), file, notes).over_first(first_stack)?;
-            if !stack.is_empty() {
-                let pairs: Vec<String> = stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
-                keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));
-            }
-            Ok(keys)
-        });
+        let keys =
+            entry_keys((first, dap), device_info, offer, &taken, file).and_then(|mut keys| {
+                let stack =
+                    Declared::of(dap, (modules, placed), file, notes).over_first(first_stack)?;
+                if !stack.is_empty() {
+                    let pairs: Vec<String> =
+                        stack.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+                    keys.push(("stack", format!("{{ {} }}", pairs.join(", "))));
+                }
+                Ok(keys)
+            });
         match keys {
             Ok(keys) => {
                 taken.extend(dap.item.ident);
@@ -91,6 +92,7 @@ fn entry_keys(
     device_info: Option<&Text>,
     modules: (&[Recognised], &[String]),
     taken: &[u32],
+    file: Version,
 ) -> Result<Vec<(&'static str, String)>, String> {
     let ident = dap
         .item
@@ -126,12 +128,35 @@ fn entry_keys(
             keys.push((key, super::quote(value)));
         }
     }
+    if let Some(version) = pnio_version(first, dap, file)? {
+        keys.push(("pnio_version", super::quote(&version.number())));
+    }
     keys.extend(ports(first, dap));
     if mrp_client(dap) != mrp_client(first) {
         keys.push(("media_redundancy", mrp_client(dap).to_string()));
     }
     keys.extend(offered(first, dap, modules)?);
     Ok(keys)
+}
+
+/// `dap`'s PNIO_Version where it is not the first's (SEW's MOVI-C: V2.33,
+/// then V2.34): a version from V1.0 to the file's, which a description
+/// can state (E197).
+fn pnio_version(first: &Dap, dap: &Dap, file: Version) -> Result<Option<Version>, String> {
+    const NAME: &str = "PNIO_Version";
+    let (mine, firsts) = (
+        attribute(&dap.item.attributes, NAME),
+        attribute(&first.item.attributes, NAME),
+    );
+    if mine == firsts {
+        return Ok(None);
+    }
+    mine.and_then(Version::parse)
+        .filter(|&v| v >= Version::new(1, 0) && v <= file)
+        .map(Some)
+        .ok_or(format!(
+            "its PNIO_Version is not the first device access point's, and no version from V1.0 to the file's, {file}, which a description can state (E197)"
+        ))
 }
 
 /// Err when `dap` differs from the first in what the description's

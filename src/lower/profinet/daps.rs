@@ -25,6 +25,8 @@ pub struct First<'a> {
     /// The file's GSDML version, which bounds what every DAP's stack
     /// writes.
     pub version: Version,
+    /// Its `PNIO_Version`.
+    pub pnio_version: Version,
     /// Where the modules go.
     pub placement: Placement<'a>,
 }
@@ -61,6 +63,7 @@ pub fn lower(
         order_number: device.order_number.clone(),
         hardware_release: device.hardware_release.clone(),
         software_release: device.software_release.clone(),
+        pnio_version: first.pnio_version,
         ports: first.ports,
         media_redundancy: first.media_redundancy,
         modules: all_modules,
@@ -131,6 +134,10 @@ fn lower_entry(
         &first.software_release,
     );
     let order_number = own(cx, &given.order_number, "order_number", &first.order_number);
+    let pnio_version = match &given.pnio_version {
+        Some(v) => super::pnio_version(cx, Some(v), version)?,
+        None => first.pnio_version,
+    };
     let port_count = match &given.ports {
         Some(n) => cx.spanned_in_range(n, 1, 16, &what("ports"))?,
         None => u8::try_from(first.ports.len()).ok()?,
@@ -182,6 +189,7 @@ fn lower_entry(
         order_number,
         hardware_release,
         software_release,
+        pnio_version,
         ports,
         media_redundancy,
         modules: offered,
