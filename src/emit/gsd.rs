@@ -455,14 +455,7 @@ fn diag_bits<'a>(
     prefix: &str,
 ) -> Vec<DiagBit<'a>> {
     bits.map(|b| DiagBit {
-        keyword: format!(
-            "{prefix}{}",
-            if b.clear {
-                "Unit_Diag_Not_Bit"
-            } else {
-                "Unit_Diag_Bit"
-            }
-        ),
+        keyword: format!("{prefix}{}", b.keyword()),
         bit: b.bit,
         text: b.text.for_gsd(),
     })

@@ -649,6 +649,18 @@ pub struct DiagnosisBit {
     pub clear: bool,
 }
 
+impl DiagnosisBit {
+    /// Its GSD keyword: `Unit_Diag_Bit`, or `Unit_Diag_Not_Bit` for a text
+    /// shown while the bit is clear (`X_` before it in a `UnitDiagType`).
+    pub fn keyword(&self) -> &'static str {
+        if self.clear {
+            "Unit_Diag_Not_Bit"
+        } else {
+            "Unit_Diag_Bit"
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct DiagnosisArea {

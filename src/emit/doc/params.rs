@@ -668,13 +668,8 @@ pub(crate) fn dp_diagnosis_types_section(doc: &mut Builder, ir: &Ir, lang: Lang)
                 .bits
                 .iter()
                 .map(|b| {
-                    let keyword = if b.clear {
-                        "X_Unit_Diag_Not_Bit"
-                    } else {
-                        "X_Unit_Diag_Bit"
-                    };
                     vec![
-                        code(format!("{keyword}({})", b.bit)),
+                        code(format!("X_{}({})", b.keyword(), b.bit)),
                         text(lang.text(&b.text)),
                     ]
                 })
@@ -805,14 +800,7 @@ fn diagnosis_rows(p: &Profibus, d: &Diagnosis, lang: Lang) -> Vec<Vec<Cell>> {
                 d.bits
                     .iter()
                     .filter(|b| (bit_of_byte..bit_of_byte + 8).contains(&b.bit))
-                    .map(|b| {
-                        let keyword = if b.clear {
-                            "Unit_Diag_Not_Bit"
-                        } else {
-                            "Unit_Diag_Bit"
-                        };
-                        format!("{keyword}({}): {}", b.bit, lang.text(&b.text))
-                    }),
+                    .map(|b| format!("{}({}): {}", b.keyword(), b.bit, lang.text(&b.text))),
             )
             .collect();
         let at = header + byte;
