@@ -64,10 +64,11 @@ struct Context<'a> {
     /// The constant bytes are exactly the DPV1 status bytes.
     prm_const_is_status: bool,
     prm_texts: Vec<PrmText<'a>>,
-    /// The device's parameters, whose `Ext_User_Prm_Data_Ref` lines it has.
-    params: Vec<Param<'a>>,
     /// Every `ExtUserPrmData`: the device's, then the PROFIsafe modules'.
     definitions: Vec<Param<'a>>,
+    /// `(offset, ExtUserPrmData number)` of the device's parameters: its
+    /// `Ext_User_Prm_Data_Ref` lines.
+    refs: Vec<(u16, u16)>,
     /// What the modules are, for the comment above them.
     modules_note: &'static str,
     modules: Vec<Module<'a>>,
@@ -150,7 +151,7 @@ struct PrmText<'a> {
     values: Vec<Value<'a>>,
 }
 
-#[derive(Serialize, Clone)]
+#[derive(Serialize)]
 struct Param<'a> {
     id: u16,
     name: &'a str,
@@ -315,7 +316,7 @@ fn context<'a>(ir: &'a Ir, p: &'a Profibus) -> Context<'a> {
                 }
             })
             .collect(),
-        params: params(ir, p.user_prm.params()),
+        refs: p.user_prm.params().map(|p| (p.offset, p.id)).collect(),
         definitions: params(
             ir,
             p.user_prm.params().chain(

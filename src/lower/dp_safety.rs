@@ -12,10 +12,11 @@ use crate::ir::profibus::{dp_safety_fingerprint, DpModule, DpSafety, UserPrm};
 use crate::ir::safety::DescriptionCrcs;
 
 /// Gives each PROFIsafe module of `given` its block, its parameters
-/// numbered after User_Prm_Data's and their facts and texts kept in it.
+/// numbered after User_Prm_Data's and their facts and texts kept in it;
+/// E172 in a GSD older than the `F_` keywords.
 pub(super) fn lower(
     cx: &mut Checker,
-    given: &[raw::DpModule],
+    (given, gsd_revision): (&[raw::DpModule], u8),
     modules: &mut [DpModule],
     user_prm: &mut UserPrm,
 ) {
@@ -24,6 +25,8 @@ pub(super) fn lower(
     let mut text_ids = next(&mut user_prm.texts.iter().map(|t| t.id))..=u16::MAX;
     for m in given {
         let Some(safety) = &m.safety else { continue };
+        // Every F_ keyword came with one revision: one error says it.
+        cx.since_revision("F_Ext_Module_Prm_Data_Len", safety.span(), gsd_revision);
         // A module with an error has no lowered module to take its block.
         let Some(module) = modules.iter_mut().find(|l| l.name == *m.name.get_ref()) else {
             continue;

@@ -109,7 +109,8 @@ pub fn lower(
     }
     let mut modules = modules(cx, p, telegram);
     if let Some(given) = &p.modules {
-        super::dp_safety::lower(cx, given.get_ref(), &mut modules, &mut user_prm);
+        let given = (&given.get_ref()[..], gsd_revision);
+        super::dp_safety::lower(cx, given, &mut modules, &mut user_prm);
     }
     layout_decisions(
         cx,
