@@ -117,6 +117,10 @@ pub const RULES: &[Rule] = &[
     rule("E159", "a set-up step disagrees with a mapping"),
     rule("E160", "an example the telegrams cannot carry"),
     rule("E161", "standard telegram 2 without PROFIdrive"),
+    rule(
+        "E162",
+        "device access points of one ident number with another slot 0",
+    ),
     rule("E170", "a module's data not said once"),
     rule("E171", "not a config identifier"),
     rule("E172", "a keyword newer than the GSD revision"),

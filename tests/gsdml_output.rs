@@ -407,7 +407,7 @@ fn a_later_gsdml_version_names_the_file_and_its_access_points_their_own() {
     let versions: Vec<&str> = elements(&doc, "DeviceAccessPointItem")
         .map(|dap| attribute(dap, "PNIO_Version"))
         .collect();
-    assert_eq!(versions, ["V2.33", "V2.33", "V2.33"]);
+    assert_eq!(versions, ["V2.33"; 4]);
     let found = gsdc::gsdml::check(&text, Some(&profinet.file_name));
     assert!(found.is_empty(), "{found:#?}");
 }

@@ -485,16 +485,73 @@ fn a_second_device_access_point_imports_as_what_it_changes() {
     );
 }
 
+/// A first device access point that offers no safety module, under a
+/// later one that does (SEW's MOVI-C's V1.0 and V2.0): the import states
+/// the first's modules (`dap_modules`), and its build is the same device.
+#[test]
+fn a_first_access_point_offering_fewer_modules_imports() {
+    let fixture =
+        std::fs::read_to_string(support::checkout("tests/fixtures/valid/profisafe.toml")).unwrap();
+    let text = fixture
+        .replacen(
+            "[profinet]\n",
+            "[profinet]\ndap_modules = [\"pzd2\", \"pzd4\"]\n",
+            1,
+        )
+        .replacen(
+            "\"safety_module_1\"]",
+            "\"safety_module_1\", \"safety_module_2\"]",
+            1,
+        );
+    assert_eq!(text.matches("safety_module_2").count(), 1);
+    let (file_name, gsdml) = built("profisafe.toml", &text, ArtifactKind::Gsdml);
+    let imported = import(&file_name, gsdml.as_bytes());
+    assert!(
+        imported.round_trip.is_clean(),
+        "{:#?}",
+        imported.diagnostics
+    );
+    let toml = written(&imported, "profisafe with dap_modules");
+    assert_says(toml, &["dap_modules = [\"pzd2\", \"pzd4\"]\n"]);
+}
+
+/// A second device access point of the first's ident number and slot 0
+/// (MD810's first, copied with another ID) is one catalogue version more of
+/// one head module, as SEW's MOVI-C's three: imported as an entry of that
+/// ident, and its build is the same device.
+#[test]
+fn a_second_device_access_point_of_the_firsts_ident_imports() {
+    let imported = md810_with_second_dap(|dap| dap);
+    assert!(
+        imported.round_trip.is_clean(),
+        "{:#?}",
+        imported.diagnostics
+    );
+    let description = imported.description.expect("written");
+    let entry = &description[description.find("[[profinet.daps]]").expect("an entry")..];
+    assert!(entry.contains("ident = 0x00000001\n"), "{entry}");
+}
+
 /// A GSDML file with more than the format can say is imported as far as
 /// it goes and judged: a second device access point whose ident number is
-/// the first's, whose update time is not the first's (the description's
+/// the first's with another slot 0, whose update time is not the first's (the description's
 /// share it), which lacks a release the first has, or which offers a
 /// module the first does not; or a module whose data is not 16-bit words:
 /// each is left out (W600 at its element), and the round trip finds the
 /// device changed (E601, breaking); nothing is written.
 #[test]
 fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
-    let same_ident = md810_with_second_dap(|dap| dap);
+    // Its ident number, and another own submodule: another slot 0.
+    let same_ident = md810_with_second_dap(|dap| {
+        let own = dap.find("<VirtualSubmoduleItem ").unwrap();
+        let number = own + dap[own..].find("SubmoduleIdentNumber=\"").unwrap();
+        let end = number + dap[number..].find("\" ").unwrap();
+        format!(
+            "{}SubmoduleIdentNumber=\"0x00000077{}",
+            &dap[..number],
+            &dap[end..]
+        )
+    });
     let other_interval = md810_with_second_dap(|dap| {
         renumbered(dap).replace("MinDeviceInterval=\"32\"", "MinDeviceInterval=\"64\"")
     });
@@ -522,10 +579,10 @@ fn what_a_gsdml_import_leaves_out_the_round_trip_finds_changed() {
         )
     });
     for (imported, left_out, changed) in [
-        (&same_ident, "device access point `V2_IDD_DAP` is not imported: its ModuleIdentNumber 0x00000001 is another device access point's or module's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000001) (breaking): removed"),
+        (&same_ident, "device access point `V2_IDD_DAP` is not imported: its ModuleIdentNumber is device access point `IDD_DAP`'s, whose own submodule or ports have other ident numbers: the device could not tell which slot 0 a project expects (E162)", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000001) (breaking): removed"),
         (&other_interval, "device access point `V2_IDD_DAP` is not imported: its MinDeviceInterval is not the first device access point's", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
         (&no_release, "device access point `V2_IDD_DAP` is not imported: it has no hardware_release, which the first has", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
-        (&only_second_offers, "device access point `V2_IDD_DAP` is not imported: it offers module `IDM_PZD_12`, which the first device access point does not", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
+        (&only_second_offers, "device access point `V2_IDD_DAP` is not imported: it offers module `IDM_PZD_12`, which the first device access point does not (the import takes the data modules the first offers)", "DAP \"MD810 PROFINET example (no such card in the manual)\" (0x00000009) (breaking): removed"),
         (&bytes_module, "module `IDM_PZD_12` is not imported: its IO data is not 16-bit words as many each way", "input data of submodule \"12 PZD\" (0x0000010C) of module \"12 PZD\" (0x0000010C) (breaking): 26 bytes"),
     ] {
         assert_eq!(imported.description, None);
@@ -2206,15 +2263,14 @@ fn a_later_access_point_needing_more_than_the_firsts_io_limit_round_trips() {
             "application_relations = 2\nmax_input_length = 12\nmax_output_length = 12\n",
             1,
         )
-        .replacen(
-            "modules = [\"telegram1\"]",
-            "modules = [\"telegram1\"]\nports = 4\nport_idents = [0x00000103, 0x00000103, 0x00000103, 0x00000103]",
-            1,
+        .replace(
+            "modules = [\"",
+            "ports = 4\nport_idents = [0x00000103, 0x00000103, 0x00000103, 0x00000103]\nmodules = [\"",
         );
     let text = descriptions::own_idents_port_texts(&text, 4);
     assert_ne!(text, fixture);
     let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
-    assert_eq!(gsdml.matches("MaxInputLength=\"").count(), 3);
+    assert_eq!(gsdml.matches("MaxInputLength=\"").count(), 4);
     assert!(gsdml.contains("MaxInputLength=\"12\" MaxOutputLength=\"12\""));
     assert!(gsdml.contains("MaxInputLength=\"13\" MaxOutputLength=\"13\""));
     let imported = import(&file_name, gsdml.as_bytes());
@@ -2242,7 +2298,7 @@ fn a_later_access_points_max_data_length_is_the_firsts_or_it_is_left_out() {
     assert_ne!(text, fixture);
     let (file_name, gsdml) = built("own_idents.toml", &text, ArtifactKind::Gsdml);
     let stated = " MaxDataLength=\"22\"";
-    assert_eq!(gsdml.matches(stated).count(), 3);
+    assert_eq!(gsdml.matches(stated).count(), 4);
     let imported = import(&file_name, gsdml.as_bytes());
     let toml = written(&imported, "own_idents with MaxDataLength");
     assert_eq!(toml.matches("max_data_length = 22\n").count(), 1, "{toml}");
@@ -2453,7 +2509,7 @@ fn labels_only_some_access_points_give_are_left_out() {
         std::fs::read_to_string(support::checkout("tests/fixtures/valid/own_idents.toml")).unwrap();
     let (file_name, gsdml) = built("own_idents.toml", &fixture, ArtifactKind::Gsdml);
     let lists: Vec<(usize, &str)> = gsdml.match_indices("<SubslotList>").collect();
-    assert_eq!(lists.len(), 3);
+    assert_eq!(lists.len(), 4);
     let second = lists[1].0;
     let end = second + gsdml[second..].find("</SubslotList>").unwrap() + "</SubslotList>".len();
     let without = format!("{}{}", &gsdml[..second], &gsdml[end..]);

@@ -1,6 +1,6 @@
 //! Device access points after the first (`[[profinet.daps]]`): what each
 //! states, what it takes from the first, and what the rules refuse, each at
-//! its line and column. The fixture own_idents.toml has two; its GSDML,
+//! its line and column. The fixture own_idents.toml has three; its GSDML,
 //! layouts and datasheet are reviewed snapshots (tests/outputs.rs), its
 //! GSDML is validated against PI's schema (tests/xsd.rs) and imported back
 //! (tests/import.rs).
@@ -42,8 +42,8 @@ fn place(text: &str, needle: &str) -> (usize, usize) {
 fn a_later_dap_states_what_differs_and_takes_the_rest_from_the_first() {
     let ir = descriptions::load_from(FIXTURES, NAME);
     let p = ir.profinet.as_ref().unwrap();
-    let [first, one_port, third] = p.daps.as_slice() else {
-        panic!("three device access points: {:?}", p.daps.len());
+    let [first, one_port, third, fourth] = p.daps.as_slice() else {
+        panic!("four device access points: {:?}", p.daps.len());
     };
     assert_eq!(
         (first.id.as_str(), first.ident, first.submodule_ident),
@@ -98,14 +98,60 @@ fn a_later_dap_states_what_differs_and_takes_the_rest_from_the_first() {
         .collect();
     assert_eq!(names, ["telegram1"]);
     assert!(third.media_redundancy && third.ports.iter().all(|port| port.default_ringport));
+    // The fourth is the third's ident number and slot 0, offering PZD1
+    // alone.
+    assert_eq!(
+        (fourth.ident, fourth.submodule_ident, fourth.ports.len()),
+        (0x300, 0x301, 2)
+    );
+    assert_eq!(fourth.modules, [1]);
 }
 
 #[test]
-fn a_dap_sharing_an_ident_number_is_refused_at_it() {
+fn a_dap_sharing_a_modules_ident_number_is_refused_at_it() {
     let shared = "[[profinet.daps]]\nname = \"V2\"\nident = 0x00001001\n";
     assert_refused_at(shared, "0x00001001", "E176");
-    let twice = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\n";
-    assert_refused_at(twice, "0x200", "E176");
+}
+
+/// Device access points of one ident number are one slot 0 to the
+/// controller: their own submodules and ports must be alike.
+#[test]
+fn daps_of_one_ident_number_present_one_slot_zero() {
+    let alike = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\nmodules = [\"pzd1\"]\n";
+    let (ir, diagnostics) = descriptions::load_text(NAME, &with_daps(alike));
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let daps = &ir.profinet.unwrap().daps;
+    assert_eq!((daps[1].ident, daps[2].ident), (0x200, 0x200));
+    // The first's ident number, with its own submodule's other number.
+    let first = "[[profinet.daps]]\nname = \"V2\"\nident = 0x100\n";
+    assert_refused_at(first, "0x100", "E162");
+    for other in [
+        "ports = 1\nmedia_redundancy = false\n",
+        "submodule_ident = 0x201\n",
+        "port_idents = [1, 2]\n",
+    ] {
+        let daps = format!("{alike}{other}");
+        assert_refused_at(&daps, "0x200", "E162");
+    }
+}
+
+/// `[profinet] dap_modules`: the modules the first offers.
+#[test]
+fn the_first_dap_may_offer_some_modules() {
+    let text = text().replacen(
+        "[profinet]\n",
+        "[profinet]\ndap_modules = [\"telegram1\"]\n",
+        1,
+    );
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    let p = ir.profinet.unwrap();
+    assert_eq!(p.daps[0].modules, [0]);
+    // The second offers every module still.
+    assert_eq!(p.daps[1].modules, [0, 1]);
+    let none = text.replacen("dap_modules = [\"telegram1\"]", "dap_modules = []", 1);
+    let at = place(&none, "[]");
+    assert_eq!(errors(&none), [("E183", at.0, at.1)]);
 }
 
 /// The first DAP's ports have ident numbers of their own: a third port's
@@ -226,7 +272,12 @@ fn a_description_without_a_gsd_may_leave_the_releases_out() {
         .collect();
     assert_eq!(
         releases,
-        [(None, None), (Some("V2"), None), (None, Some("V3"))]
+        [
+            (None, None),
+            (Some("V2"), None),
+            (None, Some("V3")),
+            (None, Some("V3.1"))
+        ]
     );
     let files = gsdc::compile(&ir).unwrap_or_else(|e| panic!("{e:#?}"));
     let (_, gsdml) = descriptions::one(files, gsdc::ArtifactKind::Gsdml);
@@ -236,5 +287,9 @@ fn a_description_without_a_gsd_may_leave_the_releases_out() {
         "{gsdml}"
     );
     assert_eq!(gsdml.matches("<SoftwareRelease Value=\"V3\"/>").count(), 1);
-    assert_eq!(gsdml.matches("Release Value=").count(), 2);
+    assert_eq!(
+        gsdml.matches("<SoftwareRelease Value=\"V3.1\"/>").count(),
+        1
+    );
+    assert_eq!(gsdml.matches("Release Value=").count(), 3);
 }

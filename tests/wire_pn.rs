@@ -138,6 +138,11 @@ fn every_profinet_description_every_module() {
             "PASS IDM_STD_TEL_1 under device access point 2: 1 records decoded, 1 inputs observed",
             "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
+            // The fourth is the third's ident number: the device presents
+            // the third, which does not offer PZD1, and takes it as the
+            // fourth's.
+            "--- device access point 4, the device presenting 3 of its ident number: IDM_PZD_1 (Drive telegram) in slot 2",
+            "PASS IDM_PZD_1 under device access point 4:",
         ],
     );
     // own_idents.toml's modules go into slots 2 and 3: each is plugged
@@ -436,10 +441,11 @@ fn a_port_record_value_the_layout_does_not_allow_is_refused() {
 }
 
 /// The device presents the layout's third device access point; a GSDML
-/// whose DAP 3 has another ident number is refused at slot 0 (pnio's
-/// ExpectedSubmoduleBlockReq module ident), while the first two still pass.
+/// whose DAPs 3 and 4 (of one ident number) have another is refused at
+/// slot 0 (pnio's ExpectedSubmoduleBlockReq module ident) under each,
+/// while the first two still pass.
 #[test]
-fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
+fn a_gsdml_with_another_dap_ident_fails_for_the_daps_of_that_ident_only() {
     if !can_run() {
         return;
     }
@@ -459,7 +465,10 @@ fn a_gsdml_with_another_dap_ident_fails_for_that_dap_only() {
             "PASS IDM_STD_TEL_1 under device access point 2:",
             "device access point 3 (IDD_DAP_3, ident 0x00000399), IDM_STD_TEL_1 in slot 2",
             "FAIL IDM_STD_TEL_1 under device access point 3: Connect failed: PNIO status DB 81 03 04",
-            "PROFINET own_idents: 9 passed, 1 failed",
+            // The fourth shares the third's ident number, changed with it.
+            "device access point 4 (IDD_DAP_4, ident 0x00000399), IDM_PZD_1 in slot 2",
+            "FAIL IDM_PZD_1 under device access point 4: Connect failed: PNIO status DB 81 03 04",
+            "PROFINET own_idents: 9 passed, 2 failed",
         ],
     );
 }

@@ -699,6 +699,10 @@ pub struct Profinet {
     /// not gsdc's numbering (an imported file's own).
     #[serde(default)]
     pub ident_numbers: IdentNumbers,
+    /// The modules the first device access point offers, by their names in
+    /// generated code; all of them when left out (as a later DAP's
+    /// `modules`).
+    pub dap_modules: Option<Spanned<Vec<Spanned<String>>>>,
     /// The device access points after the first (`[profinet]`'s): other
     /// hardware or firmware versions of the card, in one file.
     #[serde(default)]

@@ -154,7 +154,7 @@ pub(super) fn describe(
     symbol: Option<&str>,
     notes: &mut Notes,
 ) -> Option<TomlOut> {
-    let (dap, others) = device.daps.split_first().or_else(|| {
+    let dap = device.daps.first().or_else(|| {
         notes.refuse_at("no DeviceAccessPointItem", &device.place);
         None
     })?;
@@ -184,7 +184,7 @@ pub(super) fn describe(
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let empty = slots::empty_module(device, dap, &taken, notes);
     taken.extend(empty.as_ref().and_then(|e| e.module.ident));
-    let safety = safety::safety_modules(device, dap, &mut taken, notes);
+    let safety = safety::safety_modules(device, &mut taken, notes);
     let module_slots = slots::module_slots(dap, &modules, notes);
     let placed = stack::Placed {
         module_slots,
@@ -195,13 +195,22 @@ pub(super) fn describe(
             .collect(),
     };
     let first_stack = stack::Declared::of(dap, (&modules, &placed), name.version, notes);
+    let safety_ids: Vec<String> = placed.safety.iter().map(|(id, _)| id.clone()).collect();
+    let offer = daps::Offered {
+        device,
+        modules: &modules,
+        safety: &safety_ids,
+    };
     let later = daps::later_daps(
-        (dap, others),
+        &offer,
         (&first_stack, name.version),
         device_info,
-        (&modules, &placed, taken),
+        (&placed, taken),
         notes,
     );
+    // The first offers every data module the import takes; not every
+    // safety module, where a later one offers those (SEW's MOVI-C).
+    let first_offers = daps::offered(dap, dap, &offer).ok().flatten();
     let timing = irt::Declared::of(dap, &modules, notes);
     let energy = profienergy::Declared::of(dap, name.version, notes);
     unsaid_extras(
@@ -227,7 +236,7 @@ pub(super) fn describe(
     profinet(
         &mut out,
         device,
-        &imported_daps,
+        (&imported_daps, first_offers),
         &name,
         (&modules, module_slots),
         notes,
@@ -1088,7 +1097,7 @@ fn defaults_and_values(out: &mut TomlOut, fields: &[Field]) {
 fn profinet(
     out: &mut TomlOut,
     device: &PnDevice,
-    daps: &[&Dap],
+    (daps, first_offers): (&[&Dap], Option<String>),
     name: &FileName,
     (modules, module_slots): (&[Recognised], Slots),
     notes: &mut Notes,
@@ -1151,6 +1160,9 @@ fn profinet(
     out.string("module_pkw", module_pkw);
     if module_slots != Slots::ONE {
         out.key("module_slots", slots::slot_list(module_slots));
+    }
+    if let Some(offered) = first_offers {
+        out.key("dap_modules", offered);
     }
     for (key, kind) in &MODULE_KIND_KEYS[1..] {
         if modules.iter().any(|m| m.kind == *kind) {

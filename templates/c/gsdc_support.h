@@ -2064,11 +2064,10 @@ typedef struct {
     size_t entry;
 } gsdc_pn_pzd_t;
 
-/* A device access point after the first: its module ident number, its own
- * submodule, its ports (the interface is the first's) and the modules it
- * offers, by their places in the device's modules. The firmware of another
- * hardware or firmware version of the card presents it in slot 0 in place
- * of the first. */
+/* A device access point: its module ident number, its own submodule, its
+ * ports (the interface is the device's) and the modules it offers, by their
+ * places in the device's modules. The firmware of each hardware or firmware
+ * version of the card presents its own in slot 0. */
 typedef struct {
     uint32_t ident;
     gsdc_pn_submodule_t submodule;
@@ -2110,9 +2109,10 @@ typedef struct {
 } gsdc_pn_submodule_record_t;
 
 /* A PROFINET IO device: its identity and DNS_CompatibleName (the
- * NameOfStation an engineering tool proposes), the device access point in
- * slot 0 (its module ident number and its own submodule), the interface
- * submodule and its ports, the device access points after the first, every
+ * NameOfStation an engineering tool proposes), the GSDML's device access
+ * points in its order (those of one ident number present the same slot 0:
+ * the device cannot tell which one a project used, and takes what any of
+ * them offers, gsdc_pn_device_offers), the interface submodule, every
  * module of the GSDML, its PKW codec,
  * whether PZD1 from the controller is the control word and PZD1 to the
  * controller the status word, the PZD words the records map each
@@ -2122,13 +2122,9 @@ typedef struct {
     uint16_t vendor_id;
     uint16_t device_id;
     const char *dns_name;
-    uint32_t dap_ident;
-    gsdc_pn_submodule_t dap_submodule;
+    const gsdc_pn_dap_t *daps;
+    size_t daps_count;
     gsdc_pn_submodule_t interface_submodule;
-    const gsdc_pn_submodule_t *ports;
-    size_t ports_count;
-    const gsdc_pn_dap_t *later_daps;
-    size_t later_daps_count;
     const gsdc_pn_module_t *modules;
     size_t modules_count;
     gsdc_pkw_codec_t pkw;
@@ -2143,6 +2139,28 @@ typedef struct {
     const gsdc_pn_submodule_record_t *port_records;
     size_t port_records_count;
 } gsdc_pn_device_t;
+
+/* Whether a device presenting device access point ident `dap_ident` in slot
+ * 0 takes the module at `place` in d->modules: whether a device access point
+ * of that ident number offers it. */
+static inline bool gsdc_pn_device_offers(const gsdc_pn_device_t *d, uint32_t dap_ident,
+                                         size_t place)
+{
+    size_t i;
+    size_t j;
+    for (i = 0U; i < d->daps_count; i++) {
+        const gsdc_pn_dap_t *dap = &d->daps[i];
+        if (dap->ident != dap_ident) {
+            continue;
+        }
+        for (j = 0U; j < dap->modules_count; j++) {
+            if (dap->modules[j] == place) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
 
 /* The value `v` holds in a record of `len` bytes at `bytes`: GSDC_PRM_LENGTH
  * when its bytes are not all in it. */

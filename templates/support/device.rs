@@ -352,16 +352,15 @@ pub struct PnDevice {
     /// The device access point's DNS_CompatibleName: the NameOfStation an
     /// engineering tool proposes.
     pub dns_name: &'static str,
-    /// The device access point, in slot 0: its module ident number and its
-    /// own submodule.
-    pub dap_ident: u32,
-    pub dap_submodule: PnSubmodule,
+    /// The GSDML's device access points, in its order: hardware or firmware
+    /// versions of the card, each of which its firmware presents in slot 0.
+    /// Those of one ident number present the same slot 0 (SEW's MOVI-C
+    /// offers three catalogue versions of its head so): the device cannot
+    /// tell which one a project used, and takes what any of them offers
+    /// ([`PnDevice::offers`]).
+    pub daps: &'static [PnDap],
+    /// The interface submodule, every device access point's.
     pub interface_submodule: PnSubmodule,
-    pub ports: &'static [PnSubmodule],
-    /// The GSDML's device access points after the first: other hardware or
-    /// firmware versions of the card, in the GSDML's order. The firmware of
-    /// one presents it in slot 0 in place of the first.
-    pub later_daps: &'static [PnDap],
     /// Every module of the GSDML, in its order.
     pub modules: &'static [PnModule],
     pub pkw: PkwCodec,
@@ -468,15 +467,26 @@ impl PnSubmoduleRecord {
     }
 }
 
-/// A device access point after the first: its module ident number, its own
-/// submodule, its ports (the interface is the first's) and the modules it
-/// offers, by their places in [`PnDevice::modules`].
+/// A device access point: its module ident number, its own submodule, its
+/// ports (the interface is the device's) and the modules it offers, by
+/// their places in [`PnDevice::modules`].
 #[derive(Clone, Copy, Debug)]
 pub struct PnDap {
     pub ident: u32,
     pub submodule: PnSubmodule,
     pub ports: &'static [PnSubmodule],
     pub modules: &'static [usize],
+}
+
+impl PnDevice {
+    /// Whether a device presenting device access point ident `dap_ident`
+    /// in slot 0 takes the module at `place` in [`PnDevice::modules`]:
+    /// whether a device access point of that ident number offers it.
+    pub fn offers(&self, dap_ident: u32, place: usize) -> bool {
+        self.daps
+            .iter()
+            .any(|d| d.ident == dap_ident && d.modules.contains(&place))
+    }
 }
 
 /// A PZD word and the record entry whose value is the drive parameter it

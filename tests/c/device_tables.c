@@ -297,28 +297,28 @@ static void dump_pn(const gsdc_pn_device_t *d)
     size_t j;
     printf("vendor %u device %u\n", (unsigned int)d->vendor_id, (unsigned int)d->device_id);
     printf("name %s\n", d->dns_name);
-    printf("dap %lu submodule %u %lu\n", (unsigned long)d->dap_ident,
-           (unsigned int)d->dap_submodule.subslot, (unsigned long)d->dap_submodule.ident);
-    printf("interface %u %lu\n", (unsigned int)d->interface_submodule.subslot,
-           (unsigned long)d->interface_submodule.ident);
-    for (i = 0U; i < d->ports_count; i++) {
-        printf("port %u %lu\n", (unsigned int)d->ports[i].subslot,
-               (unsigned long)d->ports[i].ident);
-    }
-    for (i = 0U; i < d->later_daps_count; i++) {
-        const gsdc_pn_dap_t *later = &d->later_daps[i];
-        printf("later_dap %lu submodule %u %lu", (unsigned long)later->ident,
-               (unsigned int)later->submodule.subslot, (unsigned long)later->submodule.ident);
-        for (j = 0U; j < later->ports_count; j++) {
-            printf(" port %u %lu", (unsigned int)later->ports[j].subslot,
-                   (unsigned long)later->ports[j].ident);
+    for (i = 0U; i < d->daps_count; i++) {
+        const gsdc_pn_dap_t *dap = &d->daps[i];
+        printf("dap %lu submodule %u %lu", (unsigned long)dap->ident,
+               (unsigned int)dap->submodule.subslot, (unsigned long)dap->submodule.ident);
+        for (j = 0U; j < dap->ports_count; j++) {
+            printf(" port %u %lu", (unsigned int)dap->ports[j].subslot,
+                   (unsigned long)dap->ports[j].ident);
         }
         printf(" modules");
-        for (j = 0U; j < later->modules_count; j++) {
-            printf(" %lu", (unsigned long)d->modules[later->modules[j]].ident);
+        for (j = 0U; j < dap->modules_count; j++) {
+            printf(" %lu", (unsigned long)d->modules[dap->modules[j]].ident);
+        }
+        printf(" takes");
+        for (j = 0U; j < d->modules_count; j++) {
+            if (gsdc_pn_device_offers(d, dap->ident, j)) {
+                printf(" %lu", (unsigned long)d->modules[j].ident);
+            }
         }
         printf("\n");
     }
+    printf("interface %u %lu\n", (unsigned int)d->interface_submodule.subslot,
+           (unsigned long)d->interface_submodule.ident);
     for (i = 0U; i < d->access_point_records_count; i++) {
         dump_own_record("dap_record", &d->access_point_records[i]);
     }

@@ -199,30 +199,20 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         .descendants()
         .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
         .unwrap();
+    let daps: Vec<roxmltree::Node> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("DeviceAccessPointItem"))
+        .collect();
+    lines.extend(daps.iter().map(|&d| dap_line(&doc, d, &daps)));
+    let interface = dap
+        .descendants()
+        .find(|n| n.has_tag_name("InterfaceSubmoduleItem"))
+        .unwrap();
     lines.push(format!(
-        "dap {} submodule {} {}",
-        number(attr(dap, "ModuleIdentNumber")),
-        number(dap_submodule.attribute("FixedInSubslots").unwrap_or("1")),
-        number(attr(dap_submodule, "SubmoduleIdentNumber"))
+        "interface {} {}",
+        number(attr(interface, "SubslotNumber")),
+        number(attr(interface, "SubmoduleIdentNumber"))
     ));
-    for (tag, what) in [
-        ("InterfaceSubmoduleItem", "interface"),
-        ("PortSubmoduleItem", "port"),
-    ] {
-        for n in dap.descendants().filter(|n| n.has_tag_name(tag)) {
-            lines.push(format!(
-                "{what} {} {}",
-                number(attr(n, "SubslotNumber")),
-                number(attr(n, "SubmoduleIdentNumber"))
-            ));
-        }
-    }
-    lines.extend(
-        doc.descendants()
-            .filter(|n| n.has_tag_name("DeviceAccessPointItem"))
-            .skip(1)
-            .map(|later| later_dap_line(&doc, later)),
-    );
     lines.extend(own_record_lines(&doc, "dap_record", dap_submodule));
     // Every port of every access point carries the records the first
     // port does, which the table lists once.
@@ -248,7 +238,9 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         .filter(|n| n.has_tag_name("ModuleItem") && !is_safety_module(*n))
     {
         let id = attr(module, "ID");
-        let slots = dap
+        // The first access point's reference that offers it: the
+        // description's modules go in the same slots under every one.
+        let slots = doc
             .descendants()
             .find(|n| n.has_tag_name("ModuleItemRef") && attr(*n, "ModuleItemTarget") == id)
             .map(|r| slot_list(attr(r, "AllowedInSlots")))
@@ -409,14 +401,18 @@ fn own_record_value(doc: &roxmltree::Document, r: roxmltree::Node) -> String {
 
 /// A device access point after the first: its ident number, its own
 /// submodule, each port, and the ident number of each module it offers.
-fn later_dap_line(doc: &roxmltree::Document, dap: roxmltree::Node) -> String {
+/// A device access point's line: its ident number, own submodule, ports,
+/// the data modules it offers, and those a device presenting it takes, the
+/// modules any access point of its ident number offers (in module order).
+fn dap_line(doc: &roxmltree::Document, dap: roxmltree::Node, daps: &[roxmltree::Node]) -> String {
     let own = dap
         .descendants()
         .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
         .unwrap();
+    let ident = attr(dap, "ModuleIdentNumber");
     let mut line = format!(
-        "later_dap {} submodule {} {}",
-        number(attr(dap, "ModuleIdentNumber")),
+        "dap {} submodule {} {}",
+        number(ident),
         number(own.attribute("FixedInSubslots").unwrap_or("1")),
         number(attr(own, "SubmoduleIdentNumber"))
     );
@@ -431,21 +427,41 @@ fn later_dap_line(doc: &roxmltree::Document, dap: roxmltree::Node) -> String {
         );
     }
     line += " modules";
-    for reference in dap
-        .descendants()
-        .filter(|n| n.has_tag_name("ModuleItemRef"))
-    {
-        let target = attr(reference, "ModuleItemTarget");
-        let module = doc
-            .descendants()
-            .find(|n| n.has_tag_name("ModuleItem") && n.attribute("ID") == Some(target))
-            .unwrap();
-        if is_safety_module(module) {
-            continue;
-        }
+    for module in data_modules_offered(doc, dap) {
+        line += &format!(" {}", number(attr(module, "ModuleIdentNumber")));
+    }
+    line += " takes";
+    let same_ident = daps
+        .iter()
+        .filter(|d| number(attr(**d, "ModuleIdentNumber")) == number(ident));
+    let taken: Vec<String> = same_ident
+        .flat_map(|&d| data_modules_offered(doc, d))
+        .map(|m| attr(m, "ID").to_string())
+        .collect();
+    for module in doc.descendants().filter(|n| {
+        n.has_tag_name("ModuleItem")
+            && !is_safety_module(*n)
+            && taken.contains(&attr(*n, "ID").to_string())
+    }) {
         line += &format!(" {}", number(attr(module, "ModuleIdentNumber")));
     }
     line
+}
+
+/// The modules other than PROFIsafe ones `dap` offers, in its order.
+fn data_modules_offered<'a, 'input>(
+    doc: &'a roxmltree::Document<'input>,
+    dap: roxmltree::Node<'a, 'input>,
+) -> impl Iterator<Item = roxmltree::Node<'a, 'input>> {
+    dap.descendants()
+        .filter(|n| n.has_tag_name("ModuleItemRef"))
+        .map(move |reference| {
+            let target = attr(reference, "ModuleItemTarget");
+            doc.descendants()
+                .find(|n| n.has_tag_name("ModuleItem") && n.attribute("ID") == Some(target))
+                .unwrap()
+        })
+        .filter(|m| !is_safety_module(*m))
 }
 
 /// A module whose submodule supports PROFIsafe.

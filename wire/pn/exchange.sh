@@ -86,8 +86,9 @@ echo "  controller compares); pnio cannot refuse a record, so the layout's refus
 [ "$scenario" = - ] && echo "  (no scenario of the manual for $name: records and data only)"
 station=""
 daps=1
-# The modules DAP $1 offers, into `modules`; the name of station and how
-# many DAPs the GSDML has into `station` and `daps`. Exit 2 (could not run)
+# The modules DAP $1 offers, into `modules`; the name of station, how
+# many DAPs the GSDML has, and the first DAP of DAP $1's ident number into
+# `station`, `daps` and `presented_by`. Exit 2 (could not run)
 # when the controller cannot list them, or the DAP offers none.
 list_modules() { # DAP
   local listing
@@ -99,6 +100,7 @@ list_modules() { # DAP
   while read -r kind a b c d e f; do
     case "$kind" in
       daps) daps=$a ;;
+      presented_by) presented_by=$a ;;
       station) station=$a ;;
       module) modules+=("$a $b $c $d $e $f") ;;
     esac
@@ -161,11 +163,19 @@ for entry in "${modules[@]}"; do
 done
 # Each device access point after the first, with the first module it
 # offers: the device presents that DAP in slot 0 (its ident numbers and
-# ports from the layout's later_daps), the controller connects with it.
+# ports from the layout's daps), the controller connects with it. A DAP of
+# an earlier one's ident number presents the same slot 0, and the device
+# cannot tell them apart: the device presents the earlier one, and takes
+# the module the controller's DAP offers.
 for ((dap = 2; dap <= daps; dap++)); do
   list_modules "$dap"
   read -r module slot last api data module_name <<<"${modules[0]}"
-  run_case "device access point $dap: $module ($module_name) in slot $slot" "$slot" "$module" "$module_name" - --dap "$dap"
+  if [ "$presented_by" -eq "$dap" ]; then
+    run_case "device access point $dap: $module ($module_name) in slot $slot" "$slot" "$module" "$module_name" - --dap "$dap"
+  else
+    run_case "device access point $dap, the device presenting $presented_by of its ident number: $module ($module_name) in slot $slot" \
+      "$slot" "$module" "$module_name" - --dap "$presented_by" --controller-dap "$dap"
+  fi
 done
 
 echo "PROFINET $name: $passed passed, $failed failed$([ "$unrun" -gt 0 ] && echo ", $unrun could not run")"

@@ -16,7 +16,9 @@
 # the manual's checks (JSON) or -. DEVICE_FLAGS go to the device
 # (--mismatch KIND makes it a negative case, and the controller then expects
 # the Connect refused; --dap N makes it present device access point N in
-# slot 0, and the controller connects with the GSDML's Nth). The device takes its name of station from its
+# slot 0, and the controller connects with the GSDML's Nth, or with
+# --controller-dap M, which is the controller's alone, its Mth: one of N's
+# ident number). The device takes its name of station from its
 # layout; the controller finds it by the GSDML's (STATION), so the two must
 # agree.
 #
@@ -137,6 +139,18 @@ if [ "$scenario" = soft-card ]; then
   exit "$status"
 fi
 
+controller_dap=""
+device_flags=()
+while [ $# -gt 0 ]; do
+  if [ "$1" = --controller-dap ]; then
+    controller_dap=$2
+    shift 2
+  else
+    device_flags+=("$1")
+    shift
+  fi
+done
+set -- "${device_flags[@]}"
 # The device stops by itself after 60 s if nothing else stops it.
 start_device --seconds 60 "$@"
 
@@ -154,8 +168,9 @@ for flag in "$@"; do
       api) controller_flags+=(--expect-refusal DB810305) ;;
     esac
   fi
-  # The device access point the device presents is the one to connect with.
-  [ "$previous" = "--dap" ] && controller_flags+=(--dap "$flag")
+  # The device access point the device presents is the one to connect
+  # with, unless --controller-dap names another of its ident number.
+  [ "$previous" = "--dap" ] && controller_flags+=(--dap "${controller_dap:-$flag}")
   previous=$flag
 done
 status=0

@@ -436,25 +436,16 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ("vendor_id", hex(p.vendor_id, 4)),
             ("device_id", hex(p.device_id, 4)),
             ("dns_name", text(&p.dns_name)),
-            ("dap_ident", hex(p.first_dap().ident, 8)),
             (
-                "dap_submodule",
-                fixed_submodule(profinet::DAP_SUBSLOT, p.first_dap().submodule_ident),
+                "daps",
+                Value::List(
+                    Elem::Record("pn dap"),
+                    p.daps.iter().map(|d| pn_dap(p, d)).collect(),
+                ),
             ),
             (
                 "interface_submodule",
                 fixed_submodule(profinet::INTERFACE_SUBSLOT, p.interface_ident),
-            ),
-            (
-                "ports",
-                Value::List(Elem::Record("pn submodule"), pn_ports(p.first_dap())),
-            ),
-            (
-                "later_daps",
-                Value::List(
-                    Elem::Record("pn dap"),
-                    p.daps[1..].iter().map(|d| pn_dap(p, d)).collect(),
-                ),
             ),
             (
                 "modules",
@@ -570,8 +561,8 @@ fn pn_ports(dap: &profinet::Dap) -> Vec<Value> {
     ports.map(|p| fixed_submodule(p.subslot, p.ident)).collect()
 }
 
-/// A later DAP; it offers the empty module, which follows the data
-/// modules in `modules`, as every DAP does.
+/// A DAP; it offers the empty module, which follows the data modules in
+/// `modules`, as every DAP does.
 fn pn_dap(p: &Profinet, dap: &profinet::Dap) -> Value {
     let empty = p.empty_module.as_ref().map(|_| p.modules.len());
     Value::Record(record(

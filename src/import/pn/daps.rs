@@ -4,7 +4,7 @@
 
 use super::stack::{Declared, Placed};
 use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
-use crate::device::pn::{Dap, SubmoduleKind};
+use crate::device::pn::{Dap, PnDevice, SubmoduleKind};
 use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
@@ -45,23 +45,27 @@ impl DapEntry<'_> {
     }
 }
 
-/// Each device access point after the first that the format can say;
-/// the others are left out (W600) with the reason. `device_info` is
-/// DeviceIdentity's info text: what an entry without `info` gets; `taken`
-/// the ident numbers of the first and of the modules imported.
+/// Each device access point of `device` after the first that the format
+/// can say; the others are left out (W600) with the reason. `device_info`
+/// is DeviceIdentity's info text: what an entry without `info` gets;
+/// `taken` the ident numbers of the first and of the modules imported.
 pub(super) fn later_daps<'a>(
-    (first, others): (&Dap, &'a [Dap]),
+    offer: &Offered<'a>,
     (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
-    (modules, placed, mut taken): (&[Recognised], &Placed, Vec<u32>),
+    (placed, taken): (&Placed, Vec<u32>),
     notes: &mut Notes,
 ) -> Vec<DapEntry<'a>> {
-    let mut later = Vec::new();
+    let (first, others) = (&offer.device.daps[0], &offer.device.daps[1..]);
+    let modules = offer.modules;
+    let mut later: Vec<DapEntry> = Vec::new();
     for dap in others {
-        let safety: Vec<String> = placed.safety.iter().map(|(id, _)| id.clone()).collect();
-        let offer = (modules, &safety[..]);
+        let imported: Vec<&Dap> = std::iter::once(first)
+            .chain(later.iter().map(|l| l.dap))
+            .collect();
+        let idents = (&taken[..], &imported[..]);
         let keys =
-            entry_keys((first, dap), device_info, offer, &taken, file).and_then(|mut keys| {
+            entry_keys((first, dap), device_info, offer, idents, file).and_then(|mut keys| {
                 let stack =
                     Declared::of(dap, (modules, placed), file, notes).over_first(first_stack)?;
                 if !stack.is_empty() {
@@ -72,10 +76,7 @@ pub(super) fn later_daps<'a>(
                 Ok(keys)
             });
         match keys {
-            Ok(keys) => {
-                taken.extend(dap.item.ident);
-                later.push(DapEntry { dap, keys });
-            }
+            Ok(keys) => later.push(DapEntry { dap, keys }),
             Err(why) => notes.unsaid(
                 &format!("device access point `{}`", dap.item.id),
                 &dap.item.place,
@@ -86,12 +87,22 @@ pub(super) fn later_daps<'a>(
     later
 }
 
+/// The modules the import takes, for the device access points to offer.
+pub(super) struct Offered<'a> {
+    pub device: &'a PnDevice,
+    pub modules: &'a [Recognised<'a>],
+    /// The IDs of the safety modules imported.
+    pub safety: &'a [String],
+}
+
 /// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.
+/// `taken` are the ident numbers of the modules and of the first DAP,
+/// `imported` the DAPs imported before it.
 fn entry_keys(
     (first, dap): (&Dap, &Dap),
     device_info: Option<&Text>,
-    modules: (&[Recognised], &[String]),
-    taken: &[u32],
+    offer: &Offered,
+    (taken, imported): (&[u32], &[&Dap]),
     file: Version,
 ) -> Result<Vec<(&'static str, String)>, String> {
     let ident = dap
@@ -99,10 +110,14 @@ fn entry_keys(
         .ident
         .filter(|&i| i != 0)
         .ok_or("it has no ModuleIdentNumber the description can state")?;
-    if taken.contains(&ident) {
-        return Err(format!(
-            "its ModuleIdentNumber 0x{ident:08X} is another device access point's or module's, which the description's cannot share (E176)"
-        ));
+    match imported.iter().find(|d| d.item.ident == Some(ident)) {
+        Some(same) => same_slot_zero(same, dap)?,
+        None if taken.contains(&ident) => {
+            return Err(format!(
+                "its ModuleIdentNumber 0x{ident:08X} is a module's, which the description's cannot share (E176)"
+            ))
+        }
+        None => {}
     }
     shared_as_first(first, dap)?;
     let mut keys = vec![
@@ -135,8 +150,31 @@ fn entry_keys(
     if mrp_client(dap) != mrp_client(first) {
         keys.push(("media_redundancy", mrp_client(dap).to_string()));
     }
-    keys.extend(offered(first, dap, modules)?);
+    if let Some(names) = offered(first, dap, offer)? {
+        keys.push(("modules", names));
+    }
     Ok(keys)
+}
+
+/// Err when `dap` shares `same`'s ident number but not its slot 0: its
+/// own submodule's and its ports' ident numbers (E162).
+fn same_slot_zero(same: &Dap, dap: &Dap) -> Result<(), String> {
+    let slot_zero = |d: &Dap| {
+        let own = submodules(d, SubmoduleKind::Virtual)
+            .next()
+            .map(|s| s.ident);
+        let ports: Vec<Option<u32>> = submodules(d, SubmoduleKind::Port)
+            .map(|s| s.ident)
+            .collect();
+        (own, ports)
+    };
+    if slot_zero(same) == slot_zero(dap) {
+        return Ok(());
+    }
+    Err(format!(
+        "its ModuleIdentNumber is device access point `{}`'s, whose own submodule or ports have other ident numbers: the device could not tell which slot 0 a project expects (E162)",
+        same.item.id
+    ))
 }
 
 /// `dap`'s PNIO_Version where it is not the first's (SEW's MOVI-C: V2.33,
@@ -211,6 +249,9 @@ fn shared_as_first(first: &Dap, dap: &Dap) -> Result<(), String> {
     if im(first) != im(dap) {
         return Err("its Writeable_IM_Records are not the first device access point's, and the description's share them".into());
     }
+    if !super::own_records::records_as_first(first, dap) {
+        return Err("its own submodule's or its ports' parameter records are not the first device access point's, and the description gives every access point the same".into());
+    }
     Ok(())
 }
 
@@ -233,15 +274,24 @@ fn ports(first: &Dap, dap: &Dap) -> Vec<(&'static str, String)> {
     keys
 }
 
-/// `modules`, when the DAP offers fewer than the first (of the data
-/// modules and of the safety modules, given by their IDs); Err when it
-/// offers one the first does not. A module the first offers but the
-/// import leaves out is left out with its reason, here too.
-fn offered(
-    first: &Dap,
-    dap: &Dap,
-    (modules, safety): (&[Recognised], &[String]),
-) -> Result<Option<(&'static str, String)>, String> {
+/// The modules the DAP offers (its `modules`, the first's `dap_modules`),
+/// when fewer than the modules imported (of the
+/// data modules and of the safety modules); Err when it offers a data
+/// module the first does not, which the import does not read. A module the
+/// first offers, or a safety module, that the import leaves out is left
+/// out with its reason, here too.
+pub(super) fn offered(first: &Dap, dap: &Dap, offer: &Offered) -> Result<Option<String>, String> {
+    let Offered {
+        device,
+        modules,
+        safety,
+    } = *offer;
+    let safety_module = |id: &str| {
+        device
+            .modules
+            .iter()
+            .any(|m| m.id == id && super::safety::is_safety_module(m))
+    };
     let mut names = Vec::new();
     let mut data_modules = 0;
     for r in &dap.useable_modules {
@@ -259,9 +309,10 @@ fn offered(
                 }
             }
             None if first.useable_modules.iter().any(|f| f.target == r.target) => {}
+            None if safety_module(&r.target) => {}
             None => {
                 return Err(format!(
-                    "it offers module `{}`, which the first device access point does not (the description's first offers every module)",
+                    "it offers module `{}`, which the first device access point does not (the import takes the data modules the first offers)",
                     r.target
                 ))
             }
@@ -271,5 +322,5 @@ fn offered(
         return Err("it offers none of the data modules the import takes".into());
     }
     let every = modules.len() + safety.len();
-    Ok((names.len() != every).then(|| ("modules", list(names))))
+    Ok((names.len() != every).then(|| list(names)))
 }

@@ -71,6 +71,26 @@ pub(super) fn own_records(daps: &[&Dap], notes: &mut Notes) -> OwnRecords {
     }
 }
 
+/// Whether `dap`'s own submodule and each of its ports have the records
+/// `first`'s own submodule and first port have, as the description says
+/// them: it gives every access point, and every port, the same.
+pub(super) fn records_as_first(first: &Dap, dap: &Dap) -> bool {
+    let records = |s: &Submodule| -> Vec<Result<Said, u32>> {
+        s.records
+            .iter()
+            .map(|r| said(r).map_err(|_| r.index))
+            .collect()
+    };
+    [SubmoduleKind::Virtual, SubmoduleKind::Port]
+        .into_iter()
+        .all(|kind| {
+            let reference = first.item.submodules.iter().find(|s| s.kind == kind);
+            let reference = reference.map(records).unwrap_or_default();
+            let mut own = dap.item.submodules.iter().filter(|s| s.kind == kind);
+            own.all(|s| records(s) == reference)
+        })
+}
+
 /// The records each of `submodules` has, when each has the same ones:
 /// those the description can say, each other left out (W600) with why.
 /// Where the submodules differ, none: every record of every one of them

@@ -6,7 +6,7 @@ use super::slots::{offered, one_range, slot_list};
 use super::stack::is_true;
 use super::{attribute, hex32, text, Notes, SUBMODULE_ATTRIBUTES};
 use crate::description::safety::OPTIONAL_F_PARAMETERS;
-use crate::device::pn::{Dap, DataItem, IoPart, PnDevice, PnModule, Submodule};
+use crate::device::pn::{DataItem, IoPart, PnDevice, PnModule, Submodule};
 use crate::device::Attribute;
 use crate::import::toml_out::{quote, TomlOut};
 use crate::ir::profinet::Slots;
@@ -15,6 +15,7 @@ use crate::ir::safety::{
     F_PARAMETER_ELEMENTS,
 };
 use crate::lower::Offer;
+use std::collections::BTreeSet;
 
 const F_RECORD: &str = "RecordDataList/F_ParameterRecordDataItem";
 const IO_CRC: &str = "IOData@F_IO_StructureDescCRC";
@@ -177,18 +178,24 @@ fn parameter_table(p: &FParameter) -> String {
     format!("{{ {} }}", keys.join(", "))
 }
 
-/// The safety modules `dap` offers that the description can say; each
-/// other is left out with why. `taken` are the ident numbers of the
-/// modules and access points imported so far, which a safety module's may
-/// not be (E176); each imported one's joins them.
+/// The safety modules the device access points offer that the
+/// description can say, in the order the first to offer each offers them
+/// (its slots are that one's); each other is left out with why. `taken`
+/// are the ident numbers of the modules and access points imported so far,
+/// which a safety module's may not be (E176); each imported one's joins
+/// them.
 pub(super) fn safety_modules<'a>(
     device: &'a PnDevice,
-    dap: &'a Dap,
     taken: &mut Vec<u32>,
     notes: &mut Notes,
 ) -> Vec<Safety<'a>> {
     let mut found = Vec::new();
-    for (reference, module) in offered(device, dap).filter(|(_, m)| is_safety_module(m)) {
+    let mut seen = BTreeSet::new();
+    let offers = device.daps.iter().flat_map(|dap| offered(device, dap));
+    for (reference, module) in offers.filter(|(_, m)| is_safety_module(m)) {
+        if !seen.insert(&module.id) {
+            continue;
+        }
         let read = one_range(reference).and_then(|slots| read(module, slots, taken));
         match read {
             Ok(safety) => {

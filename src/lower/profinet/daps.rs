@@ -39,9 +39,14 @@ pub fn lower(
     first: First,
     modules: &[Module],
 ) -> Option<Vec<Dap>> {
-    let all_modules: Vec<usize> = (0..modules.len()).collect();
-    let all_safety: Vec<usize> = (0..first.placement.safety.len()).collect();
-    let needed = io::io_need(modules.iter(), first.ports.len(), first.placement);
+    let (offered, safety) = offered_modules(
+        cx,
+        p.dap_modules.as_ref(),
+        (modules, first.placement.safety),
+    )?;
+    let own_safety = offered_safety(&safety, first.placement);
+    let own = first.placement.offering(&own_safety);
+    let needed = io::io_need(offered.iter().map(|&i| &modules[i]), first.ports.len(), own);
     let (device, version) = (first.device, first.version);
     // A later DAP's stack is the first's with changes: none is checked
     // against a stack that was refused.
@@ -49,7 +54,7 @@ pub fn lower(
         cx,
         (&p.stack, &Stack::default()),
         "profinet.stack",
-        (version, first.placement.last_used_slot()),
+        (version, own.last_used_slot()),
     )?;
     let io = stack::io_lengths(cx, needed, &first_stack, &p.stack, "profinet.stack");
     let mut daps = vec![Dap {
@@ -66,11 +71,9 @@ pub fn lower(
         pnio_version: first.pnio_version,
         ports: first.ports,
         media_redundancy: first.media_redundancy,
-        modules: all_modules,
-        safety_modules: all_safety,
-        last_slot: first_stack
-            .last_slot
-            .unwrap_or(first.placement.last_used_slot()),
+        modules: offered,
+        safety_modules: safety,
+        last_slot: first_stack.last_slot.unwrap_or(own.last_used_slot()),
         max_input_length: io.input,
         max_output_length: io.output,
         max_data_length: io.data,
@@ -86,7 +89,44 @@ pub fn lower(
         }
     }
     unique_idents(cx, p, daps[0].ident, modules);
+    if complete {
+        one_slot_zero_per_ident(cx, p, &daps);
+    }
     complete.then_some(daps)
+}
+
+/// E162: device access points of one ident number are one head module to
+/// the controller, which names slot 0 by that number alone (SEW's MOVI-C
+/// offers three catalogue versions of its head so). The device cannot tell
+/// which the project used: each must present the same slot 0, its own
+/// submodule and its ports with their ident numbers.
+fn one_slot_zero_per_ident(cx: &mut Checker, p: &raw::Profinet, daps: &[Dap]) {
+    let slot_zero = |d: &Dap| {
+        let ports: Vec<u32> = d.ports.iter().map(|port| port.ident).collect();
+        (d.submodule_ident, ports)
+    };
+    for (index, (dap, given)) in daps[1..].iter().zip(&p.daps).enumerate() {
+        let Some(same) = daps[..=index].iter().position(|d| d.ident == dap.ident) else {
+            continue;
+        };
+        if slot_zero(&daps[same]) == slot_zero(dap) {
+            continue;
+        }
+        cx.push(
+            Diagnostic::error(
+                "E162",
+                format!(
+                    "device access point {} (profinet.daps[{index}]) and device access point {} have ident number 0x{:08X} and another slot 0",
+                    index + 2,
+                    same + 1,
+                    dap.ident
+                ),
+            )
+            .at(given.get_ref().ident.span())
+            .label("another slot 0 under one ident number")
+            .help("the device cannot tell device access points of one ident number apart: give both the same submodule_ident, ports and port_idents, or this one an ident number of its own"),
+        );
+    }
 }
 
 /// The DAP of `profinet.daps[index]`, number `index + 2` in the file.
@@ -158,14 +198,8 @@ fn lower_entry(
     let ports = ports(cx, (index, port_count, media_redundancy), given, first)?;
     let (offered, safety) =
         offered_modules(cx, given.modules.as_ref(), (modules, placement.safety))?;
-    let own_safety: Vec<SafetyModule> = safety
-        .iter()
-        .map(|&i| placement.safety[i].clone())
-        .collect();
-    let own = Placement {
-        safety: &own_safety,
-        ..placement
-    };
+    let own_safety = offered_safety(&safety, placement);
+    let own = placement.offering(&own_safety);
     let needed = io::io_need(offered.iter().map(|&i| &modules[i]), ports.len(), own);
     let stack = stack::lower(
         cx,
@@ -247,7 +281,15 @@ fn ports(
     Some(ports)
 }
 
-/// The modules a later DAP offers, as indexes in module order: all of
+/// The safety modules a DAP offers, from their places in `placement`.
+fn offered_safety(offered: &[usize], placement: Placement) -> Vec<SafetyModule> {
+    offered
+        .iter()
+        .map(|&i| placement.safety[i].clone())
+        .collect()
+}
+
+/// The modules a DAP offers, as indexes in module order: all of
 /// them when it does not say. E183 for a name that is no module's, a
 /// module named twice, or an empty list.
 fn offered_modules(
@@ -301,8 +343,9 @@ fn offered_modules(
     Some((data, safety))
 }
 
-/// E176: a controller tells the device access points and the modules
-/// apart by their ModuleIdentNumber. Checked in the order the description
+/// E176: a controller tells the modules apart, and the device access
+/// points from the modules, by their ModuleIdentNumber (device access
+/// points may share one: [`one_slot_zero_per_ident`]). Checked in the order the description
 /// states them (the first DAP's and the modules' under
 /// `[profinet.ident_numbers]`, the empty module's, then each
 /// `[[profinet.daps]]` entry's, even one that did not lower), each reported
@@ -316,15 +359,16 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
             .find(|(k, _)| *k.get_ref() == name)
             .map(|(_, v)| v.span())
     };
-    let first = (
-        first_ident,
-        "the device access point".to_string(),
-        given.dap.as_ref().map(Spanned::span),
-    );
+    let first = Numbered {
+        ident: first_ident,
+        name: "the device access point".to_string(),
+        at: given.dap.as_ref().map(Spanned::span),
+        dap: true,
+    };
     let numbered = std::iter::once(first)
         .chain(modules.iter().map(|m| {
             let name = m.ident.snake();
-            (
+            Numbered::module(
                 m.ident_number,
                 format!("module `{name}`"),
                 module_span(&name),
@@ -332,7 +376,7 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
         }))
         .chain(p.empty_module.iter().map(|e| {
             let ident = &e.get_ref().ident;
-            (
+            Numbered::module(
                 ident.as_ref().map_or(EMPTY_MODULE_IDENT, |i| *i.get_ref()),
                 "the empty module".to_string(),
                 ident.as_ref().map(Spanned::span),
@@ -340,7 +384,7 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
         }))
         .chain(p.safety_modules.iter().enumerate().map(|(index, m)| {
             let ident = &m.get_ref().ident;
-            (
+            Numbered::module(
                 *ident.get_ref(),
                 format!(
                     "safety module {} (profinet.safety_modules[{index}])",
@@ -351,26 +395,54 @@ fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules:
         }))
         .chain(p.daps.iter().enumerate().map(|(index, d)| {
             let ident = &d.get_ref().ident;
-            (
-                *ident.get_ref(),
-                format!("device access point {} (profinet.daps[{index}])", index + 2),
-                Some(ident.span()),
-            )
+            Numbered {
+                ident: *ident.get_ref(),
+                name: format!("device access point {} (profinet.daps[{index}])", index + 2),
+                at: Some(ident.span()),
+                dap: true,
+            }
         }));
-    let mut seen: BTreeMap<u32, (String, Option<std::ops::Range<usize>>)> = BTreeMap::new();
-    for (ident, name, at) in numbered {
-        let Some((first, first_at)) = seen.get(&ident) else {
-            seen.insert(ident, (name, at));
+    let mut seen: BTreeMap<u32, Numbered> = BTreeMap::new();
+    for this in numbered {
+        let Some(first) = seen.get(&this.ident) else {
+            seen.insert(this.ident, this);
             continue;
         };
+        // Device access points may share one: E162 judges their slot 0.
+        if this.dap && first.dap {
+            continue;
+        }
         cx.push(
             Diagnostic::error(
                 "E176",
-                format!("{name} and {first} have ident number 0x{ident:08X}"),
+                format!(
+                    "{} and {} have ident number 0x{:08X}",
+                    this.name, first.name, this.ident
+                ),
             )
-            .at_opt(at.or_else(|| first_at.clone()))
+            .at_opt(this.at.or_else(|| first.at.clone()))
             .label("ident number given twice")
-            .help("a controller tells modules apart by their ModuleIdentNumber: give each module, and each device access point, its own"),
+            .help("a controller tells modules apart by their ModuleIdentNumber: give each module its own, and each device access point one no module has"),
         );
+    }
+}
+
+/// A ModuleIdentNumber the description gives, what it numbers and where.
+struct Numbered {
+    ident: u32,
+    name: String,
+    at: Option<std::ops::Range<usize>>,
+    /// Whether it numbers a device access point.
+    dap: bool,
+}
+
+impl Numbered {
+    fn module(ident: u32, name: String, at: Option<std::ops::Range<usize>>) -> Self {
+        Numbered {
+            ident,
+            name,
+            at,
+            dap: false,
+        }
     }
 }

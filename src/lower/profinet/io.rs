@@ -440,7 +440,12 @@ pub struct Placement<'a> {
     pub safety: &'a [SafetyModule],
 }
 
-impl Placement<'_> {
+impl<'a> Placement<'a> {
+    /// This placement with only the safety modules a DAP offers.
+    pub fn offering(self, safety: &'a [SafetyModule]) -> Self {
+        Placement { safety, ..self }
+    }
+
     /// The last slot anything goes into.
     pub fn last_used_slot(&self) -> u16 {
         let others = self.empty.iter().map(|e| e.slots);

@@ -131,33 +131,27 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
     let mut lines = vec![
         format!("vendor {} device {}", d.vendor_id, d.device_id),
         format!("name {}", d.dns_name),
-        format!(
-            "dap {} submodule {} {}",
-            d.dap_ident, d.dap_submodule.subslot, d.dap_submodule.ident
-        ),
     ];
-    let s = &d.interface_submodule;
-    lines.push(format!("interface {} {}", s.subslot, s.ident));
-    lines.extend(
-        d.ports
-            .iter()
-            .map(|p| format!("port {} {}", p.subslot, p.ident)),
-    );
-    for later in d.later_daps {
-        let s = &later.submodule;
-        let mut line = format!(
-            "later_dap {} submodule {} {}",
-            later.ident, s.subslot, s.ident
-        );
-        for p in later.ports {
+    for dap in d.daps {
+        let s = &dap.submodule;
+        let mut line = format!("dap {} submodule {} {}", dap.ident, s.subslot, s.ident);
+        for p in dap.ports {
             line += &format!(" port {} {}", p.subslot, p.ident);
         }
         line += " modules";
-        for &m in later.modules {
+        for &m in dap.modules {
             line += &format!(" {}", d.modules[m].ident);
+        }
+        line += " takes";
+        for (place, m) in d.modules.iter().enumerate() {
+            if d.offers(dap.ident, place) {
+                line += &format!(" {}", m.ident);
+            }
         }
         lines.push(line);
     }
+    let s = &d.interface_submodule;
+    lines.push(format!("interface {} {}", s.subslot, s.ident));
     for (what, records) in [
         ("dap_record", d.access_point_records),
         ("port_record", d.port_records),
@@ -503,5 +497,6 @@ fn profienergy_constants_are_the_gsdmls_modes() {
                 .collect()
         })
         .collect();
-    assert_eq!(lists, vec![constants.to_vec(); 3]);
+    // Every device access point's own submodule declares them.
+    assert_eq!(lists, vec![constants.to_vec(); o::PN_DEVICE.daps.len()]);
 }

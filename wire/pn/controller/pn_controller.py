@@ -698,12 +698,17 @@ def list_modules(path: Path, number: int) -> int:
     first and last allowed slot, the highest API of its submodules, whether they
     carry data (1) or not (0: an empty module) and its name (the GSDML's, in
     its primary language, which the device finds the module by); the name of
-    station (the DAP's DNS_CompatibleName); and how many DAPs the GSDML
-    has. A PROFIsafe module is left out: its data is a safety layer's (an
+    station (the DAP's DNS_CompatibleName); how many DAPs the GSDML has;
+    and the first DAP of DAP `number`'s ModuleIdentNumber (a device presenting
+    it cannot tell the two apart). A PROFIsafe module is left out: its data is a safety layer's (an
     F-host's CRC2 over the F-parameters), which neither end here has."""
     gsdml = Gsdml(path)
     dap = gsdml.dap(number)
-    print(f"daps {len(gsdml.root.findall('.//{*}DeviceAccessPointItem'))}")
+    daps = gsdml.root.findall(".//{*}DeviceAccessPointItem")
+    print(f"daps {len(daps)}")
+    ident = int(dap.get("ModuleIdentNumber"), 0)
+    same = next(n for n, d in enumerate(daps, 1) if int(d.get("ModuleIdentNumber"), 0) == ident)
+    print(f"presented_by {same}")
     print(f"station {dap.get('DNS_CompatibleName')}")
     for ref in dap.findall("{*}UseableModules/{*}ModuleItemRef"):
         slots = ref.get("FixedInSlots") or ref.get("AllowedInSlots")

@@ -131,18 +131,19 @@ impl Application {
     /// the card's settings, not the drive's: the card keeps none of them.
     fn write_own(&self, subslot: u16, index: u16, bytes: &[u8]) -> Option<Result<Written, String>> {
         let pn = self.card.pn?;
-        let records: &[PnSubmoduleRecord] = if subslot == pn.dap_submodule.subslot {
-            pn.access_point_records
-        } else if pn
-            .ports
-            .iter()
-            .chain(pn.later_daps.iter().flat_map(|d| d.ports))
-            .any(|p| p.subslot == subslot)
-        {
-            pn.port_records
-        } else {
-            return None;
-        };
+        let records: &[PnSubmoduleRecord] =
+            if pn.daps.iter().any(|d| d.submodule.subslot == subslot) {
+                pn.access_point_records
+            } else if pn
+                .daps
+                .iter()
+                .flat_map(|d| d.ports)
+                .any(|p| p.subslot == subslot)
+            {
+                pn.port_records
+            } else {
+                return None;
+            };
         let record = records.iter().find(|r| r.index == index)?;
         let mut values = vec![0; record.values.len()];
         if let Err(e) = record.decode(bytes, &mut values) {

@@ -10,7 +10,9 @@
 //! Its name of station is the layout's (`PN_DEVICE.dns_name`, the GSDML's
 //! DNS_CompatibleName) unless `--station` gives another. In slot 0 it
 //! presents the GSDML's first device access point, or with `--dap N` its
-//! Nth (the layout's `later_daps`), and takes only modules that one offers. Every event goes to
+//! Nth (the layout's `daps`), and takes only modules that one offers, or
+//! another of its ident number (which presents the same slot 0, so that the
+//! device cannot tell them apart). Every event goes to
 //! stdout as one JSON object a line, for the controller side of the wire
 //! test (and a person) to read. Without `--seconds` it runs until SIGINT
 //! (Ctrl-C) or SIGTERM, then stops its device loop, says so and exits 0.
@@ -135,7 +137,7 @@ fn run(args: &Args) -> Result<(), String> {
         "{} has no device access point {} (it has {})",
         card.name,
         args.dap,
-        1 + device.later_daps.len()
+        device.daps.len()
     ))?;
     let plugged = plugged_modules(card, (device, &dap), &args.plug)?;
     let mac = mac_of(&args.iface)?;
@@ -258,10 +260,12 @@ fn plugged_modules(
                         .collect::<Vec<_>>()
                         .join(", ")
                 ))?;
-            if !dap.offers(place) {
+            // The device cannot tell its access point from another of its
+            // ident number, and takes what any of them offers.
+            if !device.offers(dap.dap.ident, place) {
                 return Err(format!(
-                    "device access point {} does not offer {name:?}",
-                    dap.number
+                    "device access point {} does not offer {name:?}, nor does another of ident number 0x{:08X}",
+                    dap.number, dap.dap.ident
                 ));
             }
             if !module.slots.contains(slot) {

@@ -5,54 +5,29 @@
 
 use pnio::cm::{DeviceModel, SlotModel, SubmoduleModel};
 use pnio::eth::MacAddr;
-use wire_firmware::gsdc_support::{PnDevice, PnModule, PnSubmodule};
+use wire_firmware::gsdc_support::{PnDap, PnDevice, PnModule, PnSubmodule};
 
 /// The device access point the device presents in slot 0, as the layout
-/// gives it: the first (`PnDevice`'s own) or a later one (`later_daps`).
+/// gives it (`PnDevice::daps`).
 #[derive(Debug, Clone, Copy)]
 pub struct AccessPoint {
     /// Its number in the GSDML, from 1.
     pub number: usize,
-    pub ident: u32,
-    pub submodule: PnSubmodule,
-    pub ports: &'static [PnSubmodule],
-    /// The modules it offers, by their places in `PnDevice::modules`; all
-    /// of them for the first.
-    pub modules: Option<&'static [usize]>,
+    pub dap: &'static PnDap,
 }
 
 impl AccessPoint {
     /// DAP `number` (1 the first) of the layout's device, if it has one.
     pub fn of(device: &'static PnDevice, number: usize) -> Option<AccessPoint> {
-        if number == 1 {
-            return Some(AccessPoint {
-                number,
-                ident: device.dap_ident,
-                submodule: device.dap_submodule,
-                ports: device.ports,
-                modules: None,
-            });
-        }
-        let later = device.later_daps.get(number.checked_sub(2)?)?;
-        Some(AccessPoint {
-            number,
-            ident: later.ident,
-            submodule: later.submodule,
-            ports: later.ports,
-            modules: Some(later.modules),
-        })
-    }
-
-    /// Whether it offers the module at `place` in `PnDevice::modules`.
-    pub fn offers(&self, place: usize) -> bool {
-        self.modules.is_none_or(|m| m.contains(&place))
+        let dap = device.daps.get(number.checked_sub(1)?)?;
+        Some(AccessPoint { number, dap })
     }
 
     /// Its own submodule, the interface (the device's) and its ports.
     fn submodules(&self, device: &PnDevice) -> impl Iterator<Item = PnSubmodule> + '_ {
-        [self.submodule, device.interface_submodule]
+        [self.dap.submodule, device.interface_submodule]
             .into_iter()
-            .chain(self.ports.iter().copied())
+            .chain(self.dap.ports.iter().copied())
     }
 }
 
@@ -82,7 +57,7 @@ pub fn device_model(
 ) -> DeviceModel {
     let mut slots = vec![SlotModel {
         slot: 0,
-        module_ident: dap.ident,
+        module_ident: dap.dap.ident,
         submodules: dap
             .submodules(device)
             .map(|s| submodule_model(&s))
