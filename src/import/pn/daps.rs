@@ -275,11 +275,10 @@ fn ports(first: &Dap, dap: &Dap) -> Vec<(&'static str, String)> {
 }
 
 /// The modules the DAP offers (its `modules`, the first's `dap_modules`),
-/// when fewer than the modules imported (of the
-/// data modules and of the safety modules); Err when it offers a data
-/// module the first does not, which the import does not read. A module the
-/// first offers, or a safety module, that the import leaves out is left
-/// out with its reason, here too.
+/// when fewer than the data and safety modules imported; Err when it
+/// offers a data module the first does not, which the import does not
+/// read. A module the first offers, or a safety module, that the import
+/// leaves out is left out with its reason, here too.
 pub(super) fn offered(first: &Dap, dap: &Dap, offer: &Offered) -> Result<Option<String>, String> {
     let Offered {
         device,

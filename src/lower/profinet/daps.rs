@@ -345,11 +345,11 @@ fn offered_modules(
 
 /// E176: a controller tells the modules apart, and the device access
 /// points from the modules, by their ModuleIdentNumber (device access
-/// points may share one: [`one_slot_zero_per_ident`]). Checked in the order the description
-/// states them (the first DAP's and the modules' under
-/// `[profinet.ident_numbers]`, the empty module's, then each
-/// `[[profinet.daps]]` entry's, even one that did not lower), each reported
-/// at the later of the two.
+/// points may share one: [`one_slot_zero_per_ident`]). Checked in the
+/// order the description states them (the first DAP's and the modules'
+/// under `[profinet.ident_numbers]`, the empty module's, the safety
+/// modules', then each `[[profinet.daps]]` entry's, even one that did not
+/// lower), each reported at the later of the two.
 fn unique_idents(cx: &mut Checker, p: &raw::Profinet, first_ident: u32, modules: &[Module]) {
     let given = &p.ident_numbers;
     let module_span = |name: &str| {
