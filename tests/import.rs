@@ -1196,7 +1196,9 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
         stderr.starts_with("error[E601]: the import builds another device: "),
         "{stderr}"
     );
-    assert!(stderr.contains("warning[W600]: device access point `DFC2xA V2.0` is not imported"));
+    assert!(
+        stderr.contains("warning[W600]: record 8201 of the device access point is not imported")
+    );
     assert!(stderr.contains(
         "warning[W600]: DNS_CompatibleName `SEW-EURODRIVE-DFC2xX` is imported as `sew-eurodrive-dfc2xx`: a name of station has lower-case labels only (E132)"
     ));
@@ -1756,8 +1758,10 @@ fn movi_cs_slots_and_empty_module_import() {
 
 /// A process data module allowed other slots than the others (MOVI-C's
 /// first, line 41, made `2..4`) leaves the description's slots the first
-/// module's: its own are left out at its reference, and the round trip
-/// names the change there.
+/// module's: the others' are left out at the first access point's
+/// references, and the round trip names the change at each access point's:
+/// 15 of the first, and 16 of each of the two later ones, whose 1PD_InOut
+/// is still allowed 2..5.
 #[test]
 fn a_module_in_other_slots_than_the_others_is_left_out_there() {
     let text = corpus_gsdml_text(MOVI_C).replacen(
@@ -1775,9 +1779,14 @@ fn a_module_in_other_slots_than_the_others_is_left_out_there() {
     assert_eq!(slots.len(), 15, "{w600:#?}");
     assert!(slots[0].starts_with("ModuleItemRef `2PD_InOut` AllowedInSlots is not imported: its slots 2..5 are not the first module's, 2..4"));
     let e601 = messages(&imported, "E601");
+    let changed = |dap: &str| {
+        e601.iter()
+            .filter(|m| m.contains(dap) && m.contains("AllowedInSlots"))
+            .count()
+    };
     assert_eq!(
-        e601.iter().filter(|m| m.contains("AllowedInSlots")).count(),
-        15
+        ["DFC2xA V1.0", "DFC2xA V2.0", "DFC2xA V4.0"].map(changed),
+        [15, 16, 16]
     );
 }
 
@@ -2731,13 +2740,27 @@ fn the_submodules_categories_import() {
 fn the_access_points_and_ports_records_import() {
     let access_point = "[[profinet.access_point_records]]\nindex = 8200\nname = { en = \"Alarm settings (head)\", de = \"Alarmeinstellungen (Kopf)\" }\n\n[[profinet.access_point_records.values]]\nname = { en = \"Enable diagnosis alarms\", de = \"Diagnose - Alarme aktivieren\" }\noffset = 0\nbits = 0\ndefault = 0\nchoices = [{ value = 0, text = { en = \"Off\", de = \"Aus\" } }, { value = 1, text = { en = \"On\", de = \"An\" } }]\n";
     let port = "[[profinet.port_records]]\nindex = 9001\nname = { en = \"Maintenance Required Alarms\", de = \"Maintenance Required Alarme\" }\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad rcvd packets' / min\", de = \"Schwellwert 'bad rcvd packets'/min\" }\noffset = 0\ntype = \"Unsigned32\"\ndefault = 10\nhelp = { en = \"Threshold to monitor 'bad received packets' within last minute\", de = \"Schwellwert zur Überwachung von 'bad received packets' innerhalb der letzten Minute\" }\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad sent packets' / min\", de = \"Schwellwert 'bad sent packets'/min\" }\noffset = 4\ntype = \"Unsigned32\"\ndefault = 10\nhelp = { en = \"Threshold to monitor 'bad sent packets' within last minute\", de = \"Schwellwert zur Überwachung von 'bad sent packets' innerhalb der letzten Minute\" }\n";
-    // A record's change, or a change of one of its parameters (its help).
+    // A record's change, or a change of one of its parameters (its help),
+    // but for V4.0's record 8201, left out: its value allows 0 to 255 and
+    // names two of them.
     let imported = assert_imported_and_kept(&[(MOVI_C, access_point), (MOVI_C, port)], |change| {
-        change.starts_with("record ") || change.contains(" of record ")
+        (change.starts_with("record ") || change.contains(" of record "))
+            && !change.starts_with("record 8201 ")
     });
-    assert!(!messages(&imported[0], "W600")
-        .iter()
-        .any(|m| m.starts_with("record ")));
+    let left_out: Vec<&str> = messages(&imported[0], "W600")
+        .into_iter()
+        .filter(|m| m.starts_with("record "))
+        .collect();
+    assert_eq!(left_out, ["record 8201 of the device access point is not imported: a value of it allows other values than its choices, which the description's choices are"]);
+    // V2.0's own submodule's records 9000 to 9005 and its ports' none, as
+    // V4.0's with its 8201 left out: the entries state them.
+    let toml = as_imported(MOVI_C, &imported[0]);
+    assert_eq!(
+        toml.matches("[[profinet.daps.access_point_records]]\nindex = 9005\n")
+            .count(),
+        2
+    );
+    assert_eq!(toml.matches("port_records = []\n").count(), 2);
     // MOVI-C with its first port's record 9002 taken out.
     let text = corpus_gsdml_text(MOVI_C);
     let start = text
@@ -2822,12 +2845,12 @@ fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
     assert_eq!(changes, found);
     let r = imported.round_trip;
     assert_eq!(changes.len(), r.breaking + r.compatible);
-    // Lines 406 and 262 of the file, read by hand: the first safety
-    // module, and the third access point, whose ident number is the
-    // first's.
+    // Lines 406 and 307 of the file, read by hand: the first safety
+    // module, and the record 8201 of the third access point's own
+    // submodule, whose value allows 0 to 255 and names two of them.
     for line in [
         r#":406: module "F-Modul I/O (4/3 Byte)" (0x00002716) (breaking): removed"#,
-        r#":262: DAP "DFC2xA V4.0" (0x00007532) (breaking): removed"#,
+        r#":307: record 8201 "Webserver" of submodule "DFC2xA V4.0" (0x00000001) of DAP "DFC2xA V4.0" (0x00007532) (breaking): removed"#,
     ] {
         assert!(changes.contains(&format!("{MOVI_C}{line}")), "{line}");
     }

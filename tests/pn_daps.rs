@@ -135,6 +135,33 @@ fn daps_of_one_ident_number_present_one_slot_zero() {
     }
 }
 
+/// Device access points of one ident number give each record index
+/// alike: the device reads a record the controller of any of them writes.
+#[test]
+fn daps_of_one_ident_number_give_each_record_alike() {
+    let text = text();
+    let fourth = text.rfind("index = 8200").unwrap();
+    let other = format!(
+        "{}{}",
+        &text[..fourth],
+        text[fourth..].replacen("default = 2", "default = 3", 1)
+    );
+    assert_ne!(other, text);
+    let at = place(&other, "0x00000300");
+    assert_eq!(errors(&other), [("E162", at.0, at.1)]);
+    // Its own record of another index is its own.
+    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
+    let p = ir
+        .unwrap_or_else(|| panic!("{diagnostics:?}"))
+        .profinet
+        .unwrap();
+    let (own, ports) = p.own_records(&p.daps[3]);
+    let indexes: Vec<u16> = own.iter().map(|r| r.index).collect();
+    assert_eq!(indexes, [8200, 8201]);
+    assert_eq!(ports, p.own_records(&p.daps[0]).1);
+    assert!(p.own_records(&p.daps[1]).1.is_empty());
+}
+
 /// `[profinet] dap_modules`: the modules the first offers.
 #[test]
 fn the_first_dap_may_offer_some_modules() {
@@ -150,7 +177,8 @@ fn the_first_dap_may_offer_some_modules() {
     // The second offers every module still.
     assert_eq!(p.daps[1].modules, [0, 1]);
     let none = text.replacen("dap_modules = [\"telegram1\"]", "dap_modules = []", 1);
-    let at = place(&none, "[]");
+    let key = "dap_modules = ";
+    let at = gsdc::line_col(&none, none.find(key).unwrap() + key.len());
     assert_eq!(errors(&none), [("E183", at.0, at.1)]);
 }
 

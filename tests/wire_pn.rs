@@ -139,10 +139,13 @@ fn every_profinet_description_every_module() {
             "device access point 3 (IDD_DAP_3, ident 0x00000300), IDM_STD_TEL_1 in slot 2",
             "PASS IDM_STD_TEL_1 under device access point 3: 1 records decoded, 1 inputs observed",
             // The fourth is the third's ident number: the device presents
-            // the third, which does not offer PZD1, and takes it as the
-            // fourth's.
+            // the third, which does not offer PZD1 nor have record 8201,
+            // and takes both as the fourth's (the controller fails a
+            // record the device's layout has none of). The second's port
+            // has no records: 8200 alone.
             "--- device access point 4, the device presenting 3 of its ident number: IDM_PZD_1 (Drive telegram) in slot 2",
-            "PASS IDM_PZD_1 under device access point 4:",
+            "PASS IDM_PZD_1 under device access point 4: 1 records decoded, 1 inputs observed, 0 scenario checks, 6 records of the access point and its ports decoded",
+            "PASS IDM_STD_TEL_1 under device access point 2: 1 records decoded, 1 inputs observed, 0 scenario checks, 1 records of the access point and its ports decoded",
         ],
     );
     // own_idents.toml's modules go into slots 2 and 3: each is plugged

@@ -903,6 +903,11 @@ pub struct Dap {
     /// The modules it offers, by their names in generated code; all of
     /// them when left out.
     pub modules: Option<Spanned<Vec<Spanned<String>>>>,
+    /// The parameter records of its own submodule and of its ports, where
+    /// not the first's (SEW's MOVI-C's V2.0 moves its ports' records to
+    /// its own submodule); `[]` for none.
+    pub access_point_records: Option<Vec<Spanned<SubmoduleRecord>>>,
+    pub port_records: Option<Vec<Spanned<SubmoduleRecord>>>,
 }
 
 /// `[profinet.ident_numbers]`: each key left out keeps gsdc's numbering.

@@ -503,7 +503,7 @@ fn dap_submodule(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     attributes.push(("MayIssueProcessAlarm", "false"));
     doc.open("VirtualSubmoduleItem", &attributes);
     doc.leaf("IOData", &[]);
-    submodule_records(doc, &p.access_point_records);
+    submodule_records(doc, p.own_records(dap).0);
     module_info(doc, &dap.name, &dap.info, &[]);
     if let Some(energy) = &p.profienergy {
         profienergy(doc, energy);
@@ -648,7 +648,7 @@ fn interface_and_ports(doc: &mut Doc, p: &Profinet, dap: &Dap) {
             attributes.push(("IsDefaultRingport", "true"));
         }
         doc.open("PortSubmoduleItem", &attributes);
-        submodule_records(doc, &p.port_records);
+        submodule_records(doc, p.own_records(dap).1);
         doc.open("MAUTypeList", &[]);
         let mut mau = vec![("Value", MAU_100BASE_TX)];
         if dap.stack.mau_type_adjustable {
@@ -1182,7 +1182,7 @@ fn ext_channel_diag_list(doc: &mut Doc, extended: &[ExtendedDiagnosis]) {
 /// per record value of the access point and the ports with choices or a
 /// help.
 fn value_list(doc: &mut Doc, p: &Profinet) {
-    let records = p.access_point_records.iter().chain(&p.port_records);
+    let records = p.record_lists.iter().flatten();
     let values = records.flat_map(|r| &r.values);
     let items: Vec<&ValueItem> = p
         .value_items

@@ -898,6 +898,13 @@ phrases! {
     };
     ACCESS_POINT_RECORD = { en: "Device access point", zh: "设备接入点", de: "Gerätezugangspunkt" };
     PORT_RECORD = { en: "Every port", zh: "每个端口", de: "Jeder Port" };
+    /// Whose records, and the device access points that have them where
+    /// not every one has: `Every port (V1, V3)`.
+    records_of(whose: &str, daps: &str) = {
+        en: "{whose} ({daps})",
+        zh: "{whose}（{daps}）",
+        de: same,
+    };
     /// A value the controller may not change: `1, fixed`.
     fixed_value(value: &str) = {
         en: "{value}, fixed",

@@ -201,11 +201,12 @@ pub(super) fn describe(
         modules: &modules,
         safety: &safety_ids,
     };
+    let first_records = own_records::own_records(dap, notes);
     let later = daps::later_daps(
         &offer,
         (&first_stack, name.version),
         device_info,
-        (&placed, taken),
+        (&placed, taken, &first_records),
         notes,
     );
     // The first offers every data module the import takes; not every
@@ -275,10 +276,7 @@ pub(super) fn describe(
     for diagnosis in diagnosis::entries(device, notes) {
         diagnosis.write(&mut out);
     }
-    let daps: Vec<&Dap> = std::iter::once(dap)
-        .chain(later.iter().map(|l| l.dap))
-        .collect();
-    own_records::own_records(&daps, notes).write(&mut out);
+    first_records.write(&mut out);
     super::dp::manual(&mut out);
     choices(&mut out, file, &records, software_release(dap).is_some());
     notes.chosen_marks(&mut out);

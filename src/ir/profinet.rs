@@ -78,10 +78,11 @@ pub struct Profinet {
     pub module_values: Vec<ModuleValues>,
     /// The channel diagnoses the card reports, in the description's order.
     pub channel_diagnosis: Vec<ChannelDiagnosis>,
-    /// The parameter records of every device access point's own submodule,
-    /// and of every port, in the description's order.
-    pub access_point_records: Vec<SubmoduleRecord>,
-    pub port_records: Vec<SubmoduleRecord>,
+    /// The lists of parameter records of device access points' own
+    /// submodules and of ports, each in the description's order: the first
+    /// DAP's own submodule's, its ports', then each list a later DAP gives
+    /// of its own. A DAP names its two ([`Dap::access_point_records`]).
+    pub record_lists: Vec<Vec<SubmoduleRecord>>,
     /// The card's PROFIenergy, when stated.
     pub profienergy: Option<ProfiEnergy>,
 }
@@ -172,6 +173,14 @@ impl Profinet {
         &self.daps[0]
     }
 
+    /// The records of `dap`'s own submodule, and of each of its ports.
+    pub fn own_records(&self, dap: &Dap) -> (&[SubmoduleRecord], &[SubmoduleRecord]) {
+        (
+            &self.record_lists[dap.access_point_records],
+            &self.record_lists[dap.port_records],
+        )
+    }
+
     /// The record of a kind of mapping, when a module carries it.
     pub fn record(&self, kind: MappingKind) -> Option<&RecordPlan> {
         self.records.iter().find(|r| r.kind == kind)
@@ -225,7 +234,7 @@ impl Profinet {
                 refs.extend(item.bits.iter().map(|b| &b.text));
             }
         }
-        for record in self.access_point_records.iter().chain(&self.port_records) {
+        for record in self.record_lists.iter().flatten() {
             refs.push(&record.name);
             refs.extend(record.values.iter().map(|v| &v.text));
             let items = record.values.iter().filter_map(|v| v.value_item.as_ref());
@@ -515,6 +524,10 @@ pub struct Dap {
     /// The safety modules it offers: indexes into
     /// `Profinet::safety_modules`, ascending.
     pub safety_modules: Vec<usize>,
+    /// The records of its own submodule and of each of its ports: indexes
+    /// into `Profinet::record_lists`.
+    pub access_point_records: usize,
+    pub port_records: usize,
     /// `PhysicalSlots`' last: the stack's, else the last slot its modules
     /// go into.
     pub last_slot: u16,
@@ -926,6 +939,23 @@ pub struct RecordValue {
     pub value_item: Option<ValueItem>,
     pub changeable: bool,
     pub visible: bool,
+}
+
+impl SubmoduleRecord {
+    /// What the device reads from it, texts aside: its index, length, and
+    /// each value's place, type, default and what it may hold. Device
+    /// access points of one ident number give each index so alike (E162).
+    pub fn decoded_alike(&self, other: &SubmoduleRecord) -> bool {
+        let shape = |r: &SubmoduleRecord| {
+            let values = r.values.iter().map(|v| {
+                let choices: Vec<i64> = v.choices().iter().map(|(value, _)| *value).collect();
+                let place = (v.offset, v.data_type, v.default);
+                (place, (v.min, v.max), choices, v.changeable)
+            });
+            (r.index, r.length, values.collect::<Vec<_>>())
+        };
+        shape(self) == shape(other)
+    }
 }
 
 impl RecordValue {

@@ -13,7 +13,6 @@ use crate::ir::{Device, Layout, Mappings, PkwKind, Telegram, Text};
 use crate::spec::Introduced;
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
-use submodule_records::Whose;
 use toml::Spanned;
 
 mod daps;
@@ -227,11 +226,9 @@ pub fn lower(
     };
     let daps = daps::lower(cx, p, first, &modules);
     let channel_diagnosis = diagnosis::lower(cx, &p.channel_diagnosis);
-    let access_point_records =
-        submodule_records::lower(cx, &p.access_point_records, Whose::AccessPoint);
-    let port_records = submodule_records::lower(cx, &p.port_records, Whose::Port);
     let profienergy = profienergy::lower(cx, p.profienergy.as_ref(), gsdml_version);
     let mut daps = daps?;
+    let record_lists = submodule_records::lower_lists(cx, p, &mut daps);
     let most_ports = daps.iter().map(|d| d.ports.len()).max().unwrap_or(0);
     let subslot_labels = subslot_labels(cx, p.subslot_labels.as_ref(), most_ports);
     let named_ports = name_ports(cx, p.port_names.as_ref(), &mut daps, most_ports);
@@ -291,8 +288,7 @@ pub fn lower(
         records: reading_plans,
         module_values,
         channel_diagnosis: channel_diagnosis?,
-        access_point_records: access_point_records?,
-        port_records: port_records?,
+        record_lists: record_lists?,
         profienergy: profienergy?,
     })
 }

@@ -2064,18 +2064,6 @@ typedef struct {
     size_t entry;
 } gsdc_pn_pzd_t;
 
-/* A device access point: its module ident number, its own submodule, its
- * ports (the interface is the device's) and the modules it offers, by their
- * places in the device's modules. The firmware of each hardware or firmware
- * version of the card presents its own in slot 0. */
-typedef struct {
-    uint32_t ident;
-    gsdc_pn_submodule_t submodule;
-    const gsdc_pn_submodule_t *ports;
-    size_t ports_count;
-    const size_t *modules;
-    size_t modules_count;
-} gsdc_pn_dap_t;
 
 /* A value of a record of the card's own: its English name, its first byte
  * in the record, its bytes (1, 2 or 4, high byte first; 0 for bits of the
@@ -2108,6 +2096,24 @@ typedef struct {
     size_t values_count;
 } gsdc_pn_submodule_record_t;
 
+/* A device access point: its module ident number, its own submodule, its
+ * ports (the interface is the device's), the modules it offers, by their
+ * places in the device's modules, and the card's own records of its
+ * submodule and of each of its ports. The firmware of each hardware or
+ * firmware version of the card presents its own in slot 0. */
+typedef struct {
+    uint32_t ident;
+    gsdc_pn_submodule_t submodule;
+    const gsdc_pn_submodule_t *ports;
+    size_t ports_count;
+    const size_t *modules;
+    size_t modules_count;
+    const gsdc_pn_submodule_record_t *access_point_records;
+    size_t access_point_records_count;
+    const gsdc_pn_submodule_record_t *port_records;
+    size_t port_records_count;
+} gsdc_pn_dap_t;
+
 /* A PROFINET IO device: its identity and DNS_CompatibleName (the
  * NameOfStation an engineering tool proposes), the GSDML's device access
  * points in its order (those of one ident number present the same slot 0:
@@ -2115,9 +2121,8 @@ typedef struct {
  * them offers, gsdc_pn_device_offers), the interface submodule, every
  * module of the GSDML, its PKW codec,
  * whether PZD1 from the controller is the control word and PZD1 to the
- * controller the status word, the PZD words the records map each
- * way, and the card's own records of every device access point's
- * submodule and of every port. */
+ * controller the status word, and the PZD words the records map each
+ * way. */
 typedef struct {
     uint16_t vendor_id;
     uint16_t device_id;
@@ -2134,10 +2139,6 @@ typedef struct {
     size_t pzd_out_count;
     const gsdc_pn_pzd_t *pzd_in;
     size_t pzd_in_count;
-    const gsdc_pn_submodule_record_t *access_point_records;
-    size_t access_point_records_count;
-    const gsdc_pn_submodule_record_t *port_records;
-    size_t port_records_count;
 } gsdc_pn_device_t;
 
 /* Whether a device presenting device access point ident `dap_ident` in slot
@@ -2160,6 +2161,35 @@ static inline bool gsdc_pn_device_offers(const gsdc_pn_device_t *d, uint32_t dap
         }
     }
     return false;
+}
+
+/* The record `index` a device presenting device access point ident
+ * `dap_ident` takes at its own submodule (`port` false) or at a port: the
+ * first device access point of that ident number that has one (those of
+ * one ident number give each index alike, gsdc's E162); NULL for none. */
+static inline const gsdc_pn_submodule_record_t *gsdc_pn_device_own_record(
+    const gsdc_pn_device_t *d, uint32_t dap_ident, bool port, uint16_t index)
+{
+    size_t i;
+    size_t j;
+    for (i = 0U; i < d->daps_count; i++) {
+        const gsdc_pn_dap_t *dap = &d->daps[i];
+        const gsdc_pn_submodule_record_t *records = dap->access_point_records;
+        size_t count = dap->access_point_records_count;
+        if (dap->ident != dap_ident) {
+            continue;
+        }
+        if (port) {
+            records = dap->port_records;
+            count = dap->port_records_count;
+        }
+        for (j = 0U; j < count; j++) {
+            if (records[j].index == index) {
+                return &records[j];
+            }
+        }
+    }
+    return NULL;
 }
 
 /* The value `v` holds in a record of `len` bytes at `bytes`: GSDC_PRM_LENGTH

@@ -372,10 +372,6 @@ pub struct PnDevice {
     /// record maps to a drive parameter, and those to the controller.
     pub pzd_out: &'static [PnPzd],
     pub pzd_in: &'static [PnPzd],
-    /// The card's own records of every device access point's submodule,
-    /// and of every port.
-    pub access_point_records: &'static [PnSubmoduleRecord],
-    pub port_records: &'static [PnSubmoduleRecord],
 }
 
 /// A parameter record of the card's own, of a device access point's
@@ -468,14 +464,17 @@ impl PnSubmoduleRecord {
 }
 
 /// A device access point: its module ident number, its own submodule, its
-/// ports (the interface is the device's) and the modules it offers, by
-/// their places in [`PnDevice::modules`].
+/// ports (the interface is the device's), the modules it offers, by their
+/// places in [`PnDevice::modules`], and the card's own records of its
+/// submodule and of each of its ports.
 #[derive(Clone, Copy, Debug)]
 pub struct PnDap {
     pub ident: u32,
     pub submodule: PnSubmodule,
     pub ports: &'static [PnSubmodule],
     pub modules: &'static [usize],
+    pub access_point_records: &'static [PnSubmoduleRecord],
+    pub port_records: &'static [PnSubmoduleRecord],
 }
 
 impl PnDevice {
@@ -486,6 +485,27 @@ impl PnDevice {
         self.daps
             .iter()
             .any(|d| d.ident == dap_ident && d.modules.contains(&place))
+    }
+
+    /// The record `index` a device presenting device access point ident
+    /// `dap_ident` takes at its own submodule (`port` false) or at a port:
+    /// the first device access point of that ident number that has one
+    /// (those of one ident number give each index alike, gsdc's E162).
+    pub fn own_record(
+        &self,
+        dap_ident: u32,
+        port: bool,
+        index: u16,
+    ) -> Option<&'static PnSubmoduleRecord> {
+        let daps = self.daps.iter().filter(|d| d.ident == dap_ident);
+        daps.flat_map(|d| {
+            if port {
+                d.port_records
+            } else {
+                d.access_point_records
+            }
+        })
+        .find(|r| r.index == index)
     }
 }
 

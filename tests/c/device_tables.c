@@ -291,6 +291,46 @@ static void dump_own_record(const char *what, const gsdc_pn_submodule_record_t *
     }
 }
 
+/* The record of each index of `records` a device presenting DAP ident
+ * `ident` takes: `takes dap_record 8200 len 1`. */
+static void dump_taken_records(const gsdc_pn_device_t *d, uint32_t ident, bool port,
+                               const gsdc_pn_submodule_record_t *records, size_t count)
+{
+    size_t i;
+    for (i = 0U; i < count; i++) {
+        const gsdc_pn_submodule_record_t *taken =
+            gsdc_pn_device_own_record(d, ident, port, records[i].index);
+        if (taken == NULL) {
+            fail("a record of a DAP of the ident number is not taken");
+        }
+        printf("takes %s %u len %lu\n", port ? "port_record" : "dap_record",
+               (unsigned int)taken->index, (unsigned long)taken->len);
+    }
+}
+
+/* A DAP's records of its own submodule and of its ports, then the record of
+ * each index a DAP of its ident number has that a device presenting it
+ * takes. */
+static void dump_own_records(const gsdc_pn_device_t *d, const gsdc_pn_dap_t *dap)
+{
+    size_t i;
+    for (i = 0U; i < dap->access_point_records_count; i++) {
+        dump_own_record("dap_record", &dap->access_point_records[i]);
+    }
+    for (i = 0U; i < dap->port_records_count; i++) {
+        dump_own_record("port_record", &dap->port_records[i]);
+    }
+    for (i = 0U; i < d->daps_count; i++) {
+        const gsdc_pn_dap_t *other = &d->daps[i];
+        if (other->ident != dap->ident) {
+            continue;
+        }
+        dump_taken_records(d, dap->ident, false, other->access_point_records,
+                           other->access_point_records_count);
+        dump_taken_records(d, dap->ident, true, other->port_records, other->port_records_count);
+    }
+}
+
 static void dump_pn(const gsdc_pn_device_t *d)
 {
     size_t i;
@@ -316,15 +356,10 @@ static void dump_pn(const gsdc_pn_device_t *d)
             }
         }
         printf("\n");
+        dump_own_records(d, dap);
     }
     printf("interface %u %lu\n", (unsigned int)d->interface_submodule.subslot,
            (unsigned long)d->interface_submodule.ident);
-    for (i = 0U; i < d->access_point_records_count; i++) {
-        dump_own_record("dap_record", &d->access_point_records[i]);
-    }
-    for (i = 0U; i < d->port_records_count; i++) {
-        dump_own_record("port_record", &d->port_records[i]);
-    }
     for (i = 0U; i < d->modules_count; i++) {
         const gsdc_pn_module_t *m = &d->modules[i];
         printf("module ");

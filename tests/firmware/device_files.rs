@@ -195,15 +195,14 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
     )];
     let dap = find("DeviceAccessPointItem");
     lines.push(format!("name {}", attr(dap, "DNS_CompatibleName")));
-    let dap_submodule = dap
-        .descendants()
-        .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
-        .unwrap();
     let daps: Vec<roxmltree::Node> = doc
         .descendants()
         .filter(|n| n.has_tag_name("DeviceAccessPointItem"))
         .collect();
-    lines.extend(daps.iter().map(|&d| dap_line(&doc, d, &daps)));
+    for &d in &daps {
+        lines.push(dap_line(&doc, d, &daps));
+        lines.extend(own_records_lines(&doc, d, &daps));
+    }
     let interface = dap
         .descendants()
         .find(|n| n.has_tag_name("InterfaceSubmoduleItem"))
@@ -213,16 +212,6 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
         number(attr(interface, "SubslotNumber")),
         number(attr(interface, "SubmoduleIdentNumber"))
     ));
-    lines.extend(own_record_lines(&doc, "dap_record", dap_submodule));
-    // Every port of every access point carries the records the first
-    // port does, which the table lists once.
-    let ports: Vec<Vec<String>> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("PortSubmoduleItem"))
-        .map(|port| own_record_lines(&doc, "port_record", port))
-        .collect();
-    assert!(ports.windows(2).all(|w| w[0] == w[1]), "{ports:?}");
-    lines.extend(ports.into_iter().next().unwrap_or_default());
     let text_of = |id: &str| {
         doc.descendants()
             .filter(|n| n.has_tag_name("PrimaryLanguage"))
@@ -401,14 +390,66 @@ fn own_record_value(doc: &roxmltree::Document, r: roxmltree::Node) -> String {
 
 /// A device access point after the first: its ident number, its own
 /// submodule, each port, and the ident number of each module it offers.
+/// A device access point's records of its own submodule and of its ports
+/// (every port of it carries the records its first does, which the table
+/// lists once), then, for each record a DAP of its ident number has, the
+/// record of that index a device presenting it takes: the first such DAP's
+/// (`takes dap_record 8200 len 1`).
+fn own_records_lines(
+    doc: &roxmltree::Document,
+    dap: roxmltree::Node,
+    daps: &[roxmltree::Node],
+) -> Vec<String> {
+    let own = own_submodule;
+    let ports = |d: roxmltree::Node| -> Vec<Vec<String>> {
+        d.descendants()
+            .filter(|n| n.has_tag_name("PortSubmoduleItem"))
+            .map(|port| own_record_lines(doc, "port_record", port))
+            .collect()
+    };
+    let mut lines = own_record_lines(doc, "dap_record", own(dap));
+    let its_ports = ports(dap);
+    assert!(its_ports.windows(2).all(|w| w[0] == w[1]), "{its_ports:?}");
+    lines.extend(its_ports.into_iter().next().unwrap_or_default());
+    let ident = number(attr(dap, "ModuleIdentNumber"));
+    let same: Vec<roxmltree::Node> = daps
+        .iter()
+        .copied()
+        .filter(|d| number(attr(*d, "ModuleIdentNumber")) == ident)
+        .collect();
+    // Index and length of each record line: `dap_record 8200 len 1 | ...`.
+    let index_len = |line: &str| -> (String, String) {
+        let words: Vec<&str> = line.split(' ').collect();
+        (words[1].to_string(), words[3].to_string())
+    };
+    let records_of = |d: roxmltree::Node, what: &str| -> Vec<(String, String)> {
+        let lines = if what == "dap_record" {
+            own_record_lines(doc, what, own(d))
+        } else {
+            ports(d).into_iter().next().unwrap_or_default()
+        };
+        lines.iter().map(|l| index_len(l)).collect()
+    };
+    for &other in &same {
+        for what in ["dap_record", "port_record"] {
+            for (index, _) in records_of(other, what) {
+                let len = same
+                    .iter()
+                    .find_map(|&d| records_of(d, what).into_iter().find(|(i, _)| *i == index))
+                    .unwrap()
+                    .1;
+                lines.push(format!("takes {what} {index} len {len}"));
+            }
+        }
+    }
+    lines
+}
+
 /// A device access point's line: its ident number, own submodule, ports,
 /// the data modules it offers, and those a device presenting it takes, the
 /// modules any access point of its ident number offers (in module order).
 fn dap_line(doc: &roxmltree::Document, dap: roxmltree::Node, daps: &[roxmltree::Node]) -> String {
-    let own = dap
-        .descendants()
-        .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
-        .unwrap();
+    let own = own_submodule(dap);
     let ident = attr(dap, "ModuleIdentNumber");
     let mut line = format!(
         "dap {} submodule {} {}",
@@ -446,6 +487,13 @@ fn dap_line(doc: &roxmltree::Document, dap: roxmltree::Node, daps: &[roxmltree::
         line += &format!(" {}", number(attr(module, "ModuleIdentNumber")));
     }
     line
+}
+
+/// A device access point's own submodule.
+fn own_submodule<'a, 'input>(dap: roxmltree::Node<'a, 'input>) -> roxmltree::Node<'a, 'input> {
+    dap.descendants()
+        .find(|n| n.has_tag_name("VirtualSubmoduleItem"))
+        .unwrap()
 }
 
 /// The modules other than PROFIsafe ones `dap` offers, in its order.

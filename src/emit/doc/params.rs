@@ -9,7 +9,9 @@ use crate::i18n::sheet as w;
 use crate::ir::profibus::{
     Diagnosis, DiagnosisArea, PrmHolds, PrmParam, PrmType, PrmValue, Profibus, STANDARD_DIAG_BYTES,
 };
-use crate::ir::profinet::{ChannelDiagnosis, ParameterRecord, RecordValue, RecordValueType};
+use crate::ir::profinet::{
+    ChannelDiagnosis, Dap, ParameterRecord, Profinet, RecordValue, RecordValueType,
+};
 use crate::ir::{Allowed, EntryKey, EntryType, Ir, MappingKind, MappingSet};
 use crate::pkw::DiagArea;
 
@@ -23,7 +25,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let own_records = ir
         .profinet
         .as_ref()
-        .is_some_and(|p| !p.access_point_records.is_empty() || !p.port_records.is_empty());
+        .is_some_and(|p| p.record_lists.iter().any(|l| !l.is_empty()));
     if ir.mappings.groups.is_empty() && !other_params && !own_records {
         return;
     }
@@ -80,10 +82,8 @@ fn own_records_tables(doc: &mut Builder, ir: &Ir, lang: Lang) {
     };
     doc.subsection("own-records", lang.t(w::OWN_RECORDS));
     doc.para(text(lang.t(w::OWN_RECORDS_INTRO)));
-    for (whose, records) in [
-        (w::ACCESS_POINT_RECORD, &p.access_point_records),
-        (w::PORT_RECORD, &p.port_records),
-    ] {
+    for (list, records) in p.record_lists.iter().enumerate() {
+        let whose = own_records_whose(p, list, lang);
         for record in records {
             let rows = record
                 .values
@@ -99,10 +99,29 @@ fn own_records_tables(doc: &mut Builder, ir: &Ir, lang: Lang) {
             ];
             let name = lang.text(&record.name.text);
             let size = record_size(lang, record.length);
-            let caption = w::own_record_caption(lang, lang.t(whose), record.index, name, &size);
+            let caption = w::own_record_caption(lang, &whose, record.index, name, &size);
             doc.table(caption, &head, rows);
         }
     }
+}
+
+/// Whose the records of list `list` are: the access point's or every
+/// port's, followed by the names of the device access points that have
+/// them where not every one has.
+fn own_records_whose(p: &Profinet, list: usize, lang: Lang) -> String {
+    let port = p.daps.iter().any(|d| d.port_records == list);
+    let kind = lang.t(if port {
+        w::PORT_RECORD
+    } else {
+        w::ACCESS_POINT_RECORD
+    });
+    let having = |d: &&Dap| d.access_point_records == list || d.port_records == list;
+    let daps: Vec<&Dap> = p.daps.iter().filter(having).collect();
+    if daps.len() == p.daps.len() {
+        return kind.to_string();
+    }
+    let names: Vec<&str> = daps.iter().map(|d| lang.text(&d.name.text)).collect();
+    w::records_of(lang, kind, &names.join(lang.t(w::LIST_SEPARATOR)))
 }
 
 /// `8 bytes`, `1 byte`.

@@ -469,11 +469,6 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
             ),
             ("pzd_out", pn_pzds(ir, p, MappingKind::PzdOut)),
             ("pzd_in", pn_pzds(ir, p, MappingKind::PzdIn)),
-            (
-                "access_point_records",
-                pn_submodule_records(&p.access_point_records),
-            ),
-            ("port_records", pn_submodule_records(&p.port_records)),
         ],
     )
 }
@@ -584,6 +579,11 @@ fn pn_dap(p: &Profinet, dap: &profinet::Dap) -> Value {
                     dap.modules.iter().copied().chain(empty).map(size).collect(),
                 ),
             ),
+            (
+                "access_point_records",
+                pn_submodule_records(p.own_records(dap).0),
+            ),
+            ("port_records", pn_submodule_records(p.own_records(dap).1)),
         ],
     ))
 }

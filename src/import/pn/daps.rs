@@ -2,6 +2,7 @@
 //! each says that differs from the first, in the keys the description has
 //! for it. One that the format cannot say is left out (W600), with why.
 
+use super::own_records::{own_records, OwnRecords};
 use super::stack::{Declared, Placed};
 use super::{attribute, hex32, list, mrp_client, submodules_of as submodules, text, Recognised};
 use crate::device::pn::{Dap, PnDevice, SubmoduleKind};
@@ -34,6 +35,8 @@ const SHARED_INTERFACE: &[&str] = &[
 pub(super) struct DapEntry<'a> {
     pub dap: &'a Dap,
     keys: Vec<(&'static str, String)>,
+    /// Its records where not the first's.
+    records: OwnRecords,
 }
 
 impl DapEntry<'_> {
@@ -42,6 +45,7 @@ impl DapEntry<'_> {
         for (key, value) in &self.keys {
             out.key(key, value);
         }
+        self.records.write_later(out);
     }
 }
 
@@ -53,7 +57,7 @@ pub(super) fn later_daps<'a>(
     offer: &Offered<'a>,
     (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
-    (placed, taken): (&Placed, Vec<u32>),
+    (placed, taken, first_records): (&Placed, Vec<u32>, &OwnRecords),
     notes: &mut Notes,
 ) -> Vec<DapEntry<'a>> {
     let (first, others) = (&offer.device.daps[0], &offer.device.daps[1..]);
@@ -76,7 +80,10 @@ pub(super) fn later_daps<'a>(
                 Ok(keys)
             });
         match keys {
-            Ok(keys) => later.push(DapEntry { dap, keys }),
+            Ok(keys) => {
+                let records = own_records(dap, notes).unlike(first_records);
+                later.push(DapEntry { dap, keys, records });
+            }
             Err(why) => notes.unsaid(
                 &format!("device access point `{}`", dap.item.id),
                 &dap.item.place,
@@ -248,9 +255,6 @@ fn shared_as_first(first: &Dap, dap: &Dap) -> Result<(), String> {
     };
     if im(first) != im(dap) {
         return Err("its Writeable_IM_Records are not the first device access point's, and the description's share them".into());
-    }
-    if !super::own_records::records_as_first(first, dap) {
-        return Err("its own submodule's or its ports' parameter records are not the first device access point's, and the description gives every access point the same".into());
     }
     Ok(())
 }

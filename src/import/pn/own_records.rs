@@ -1,10 +1,12 @@
 //! `[[profinet.access_point_records]]` and `[[profinet.port_records]]`: the
 //! parameter records of a GSDML file's device access point's own submodule
 //! and of its ports (SEW's MOVI-C's record 8200, and 9000 to 9002 of each
-//! port). The description gives one list of each for every access point
-//! and every port: the records are imported where every imported access
-//! point, and every port, has the same; else, and each record the
-//! description cannot say (an index PROFINET keeps, a value of another
+//! port), and a later access point's where not the first's
+//! (`[[profinet.daps]] access_point_records`, `port_records`: MOVI-C's V2.0
+//! moves the ports' records to its own submodule). The description gives
+//! an access point one list for all its ports: the ports' records are
+//! imported where each of its ports has the same; else, and each record
+//! the description cannot say (an index PROFINET keeps, a value of another
 //! type, a constant that is not 0), left out (W600) with why.
 
 use super::{fits, text};
@@ -25,20 +27,44 @@ struct Said {
     values: Vec<Keys>,
 }
 
-/// The records the description gives the access points and the ports.
+/// The records the description gives an access point's own submodule and
+/// its ports; a later access point's `None` where they are the first's.
 pub(super) struct OwnRecords {
-    access_point: Vec<Said>,
-    ports: Vec<Said>,
+    access_point: Option<Vec<Said>>,
+    ports: Option<Vec<Said>>,
 }
 
 impl OwnRecords {
+    /// The first access point's, as `[[profinet.access_point_records]]` and
+    /// `[[profinet.port_records]]`.
     pub fn write(&self, out: &mut TomlOut) {
-        for (table, records) in [
-            ("profinet.access_point_records", &self.access_point),
-            ("profinet.port_records", &self.ports),
-        ] {
-            for record in records {
-                out.array_item(table);
+        self.write_under(out, "profinet");
+    }
+
+    /// A later access point's, under its `[[profinet.daps]]` entry just
+    /// written: a list of none as `access_point_records = []`, then each
+    /// record as a table of the entry's.
+    pub fn write_later(&self, out: &mut TomlOut) {
+        for (key, records) in self.lists() {
+            if records.is_some_and(Vec::is_empty) {
+                out.key(key, "[]");
+            }
+        }
+        self.write_under(out, "profinet.daps");
+    }
+
+    fn lists(&self) -> [(&'static str, Option<&Vec<Said>>); 2] {
+        [
+            ("access_point_records", self.access_point.as_ref()),
+            ("port_records", self.ports.as_ref()),
+        ]
+    }
+
+    fn write_under(&self, out: &mut TomlOut, parent: &str) {
+        for (key, records) in self.lists() {
+            let table = format!("{parent}.{key}");
+            for record in records.into_iter().flatten() {
+                out.array_item(&table);
                 for (key, value) in &record.keys {
                     out.key(key, value);
                 }
@@ -51,44 +77,33 @@ impl OwnRecords {
             }
         }
     }
+
+    /// These records, a later access point's, where not `first`'s.
+    pub fn unlike(self, first: &OwnRecords) -> OwnRecords {
+        OwnRecords {
+            access_point: self
+                .access_point
+                .filter(|l| Some(l) != first.access_point.as_ref()),
+            ports: self.ports.filter(|l| Some(l) != first.ports.as_ref()),
+        }
+    }
 }
 
-/// The records of the access points' own submodules and of their ports,
-/// where all say the same.
-pub(super) fn own_records(daps: &[&Dap], notes: &mut Notes) -> OwnRecords {
+/// The records of `dap`'s own submodule and of its ports.
+pub(super) fn own_records(dap: &Dap, notes: &mut Notes) -> OwnRecords {
     let of_kind = |kind: SubmoduleKind| -> Vec<&Submodule> {
-        let submodules = daps.iter().flat_map(|dap| &dap.item.submodules);
+        let submodules = dap.item.submodules.iter();
         submodules.filter(|s| s.kind == kind).collect()
     };
     // A device access point's own submodule is its one virtual submodule.
     OwnRecords {
-        access_point: shared(
+        access_point: Some(shared(
             &of_kind(SubmoduleKind::Virtual),
             "device access point",
             notes,
-        ),
-        ports: shared(&of_kind(SubmoduleKind::Port), "port", notes),
+        )),
+        ports: Some(shared(&of_kind(SubmoduleKind::Port), "port", notes)),
     }
-}
-
-/// Whether `dap`'s own submodule and each of its ports have the records
-/// `first`'s own submodule and first port have, as the description says
-/// them: it gives every access point, and every port, the same.
-pub(super) fn records_as_first(first: &Dap, dap: &Dap) -> bool {
-    let records = |s: &Submodule| -> Vec<Result<Said, u32>> {
-        s.records
-            .iter()
-            .map(|r| said(r).map_err(|_| r.index))
-            .collect()
-    };
-    [SubmoduleKind::Virtual, SubmoduleKind::Port]
-        .into_iter()
-        .all(|kind| {
-            let reference = first.item.submodules.iter().find(|s| s.kind == kind);
-            let reference = reference.map(records).unwrap_or_default();
-            let mut own = dap.item.submodules.iter().filter(|s| s.kind == kind);
-            own.all(|s| records(s) == reference)
-        })
 }
 
 /// The records each of `submodules` has, when each has the same ones:

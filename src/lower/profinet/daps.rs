@@ -73,6 +73,9 @@ pub fn lower(
         media_redundancy: first.media_redundancy,
         modules: offered,
         safety_modules: safety,
+        // The first's: `submodule_records::lower_lists` sets its own.
+        access_point_records: 0,
+        port_records: 1,
         last_slot: first_stack.last_slot.unwrap_or(own.last_used_slot()),
         max_input_length: io.input,
         max_output_length: io.output,
@@ -228,6 +231,9 @@ fn lower_entry(
         media_redundancy,
         modules: offered,
         safety_modules: safety,
+        // The first's: `submodule_records::lower_lists` sets its own.
+        access_point_records: 0,
+        port_records: 1,
         last_slot: stack.last_slot.unwrap_or(own.last_used_slot()),
         max_input_length: io.input,
         max_output_length: io.output,

@@ -7,34 +7,93 @@
 
 use crate::description as raw;
 use crate::diag::Diagnostic;
-use crate::ir::profinet::{RecordValue, RecordValueType, SubmoduleRecord, TextRef, ValueItem};
+use crate::ir::profinet::{Dap, RecordValue, RecordValueType, SubmoduleRecord, TextRef, ValueItem};
 use crate::lower::checks::Checker;
 use crate::lower::param_values::{self, Holds, Stored, Taken};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
-/// Whose records: where the description gives them, and the tag of their
-/// GSDML IDs.
+/// Whose records: the access point's own submodule's or a port's, of the
+/// first DAP (`[profinet]`'s) or of `profinet.daps[n]`.
 #[derive(Clone, Copy)]
-pub enum Whose {
-    AccessPoint,
-    Port,
+struct Whose {
+    port: bool,
+    later: Option<usize>,
 }
 
 impl Whose {
-    fn key(self) -> &'static str {
-        match self {
-            Whose::AccessPoint => "profinet.access_point_records",
-            Whose::Port => "profinet.port_records",
+    /// Where the description gives them.
+    fn key(self) -> String {
+        let list = if self.port {
+            "port_records"
+        } else {
+            "access_point_records"
+        };
+        match self.later {
+            None => format!("profinet.{list}"),
+            Some(n) => format!("profinet.daps[{n}].{list}"),
         }
     }
 
-    fn tag(self) -> &'static str {
-        match self {
-            Whose::AccessPoint => "DAP_RECORD",
-            Whose::Port => "PORT_RECORD",
+    /// The tag of their GSDML IDs: the first DAP's `DAP_RECORD` and
+    /// `PORT_RECORD`, DAP 2's `DAP_2_RECORD` and `DAP_2_PORT_RECORD`.
+    fn tag(self) -> String {
+        let dap = self
+            .later
+            .map_or("DAP".to_string(), |n| format!("DAP_{}", n + 2));
+        if self.port {
+            let prefix = self.later.map_or(String::new(), |_| format!("{dap}_"));
+            format!("{prefix}PORT_RECORD")
+        } else {
+            format!("{dap}_RECORD")
         }
     }
+}
+
+/// Every list of records and each DAP's two (`daps` as lowered from `p`,
+/// the first first): the first's own submodule's and ports', then each
+/// list a `[[profinet.daps]]` entry gives of its own; an entry without
+/// one takes the first's.
+pub fn lower_lists(
+    cx: &mut Checker,
+    p: &raw::Profinet,
+    daps: &mut [Dap],
+) -> Option<Vec<Vec<SubmoduleRecord>>> {
+    let first = [(&p.access_point_records, false), (&p.port_records, true)]
+        .map(|(given, port)| lower(cx, given, Whose { port, later: None }));
+    let mut lists = Vec::new();
+    let mut complete = true;
+    for list in first {
+        complete &= list.is_some();
+        lists.push(list.unwrap_or_default());
+    }
+    for (n, (given, dap)) in p.daps.iter().zip(daps.iter_mut().skip(1)).enumerate() {
+        let given = given.get_ref();
+        for (own, port) in [
+            (&given.access_point_records, false),
+            (&given.port_records, true),
+        ] {
+            let Some(own) = own else { continue };
+            let whose = Whose {
+                port,
+                later: Some(n),
+            };
+            complete &= lower(cx, own, whose).is_some_and(|list| {
+                let place = if port {
+                    &mut dap.port_records
+                } else {
+                    &mut dap.access_point_records
+                };
+                *place = lists.len();
+                lists.push(list);
+                true
+            });
+        }
+    }
+    if complete {
+        alike_under_one_ident(cx, p, daps, &lists);
+    }
+    complete.then_some(lists)
 }
 
 /// The most a user-specific record index is: PROFINET keeps 0x8000 and up
@@ -57,9 +116,59 @@ fn user_specific(cx: &mut Checker, index: &Spanned<u16>) -> Option<u16> {
     None
 }
 
+/// E162: device access points of one ident number, which the device
+/// cannot tell apart, give each record index of their own submodules, and
+/// of their ports, alike (the device reads a record the controller of any
+/// of them writes). Reported at the later DAP's `ident`.
+fn alike_under_one_ident(
+    cx: &mut Checker,
+    p: &raw::Profinet,
+    daps: &[Dap],
+    lists: &[Vec<SubmoduleRecord>],
+) {
+    for (index, (dap, given)) in daps[1..].iter().zip(&p.daps).enumerate() {
+        let earlier = daps[..=index].iter().filter(|d| d.ident == dap.ident);
+        let kinds = |d: &Dap| [(d.access_point_records, false), (d.port_records, true)];
+        let clash = earlier.flat_map(kinds).find_map(|(list, port)| {
+            let own = if port {
+                dap.port_records
+            } else {
+                dap.access_point_records
+            };
+            lists[list].iter().find_map(|r| {
+                lists[own]
+                    .iter()
+                    .find(|o| o.index == r.index && !o.decoded_alike(r))
+                    .map(|o| (o.index, port))
+            })
+        });
+        let Some((record, port)) = clash else {
+            continue;
+        };
+        let whose = if port {
+            "its ports'"
+        } else {
+            "its own submodule's"
+        };
+        cx.push(
+            Diagnostic::error(
+                "E162",
+                format!(
+                    "device access point {} (profinet.daps[{index}]) has ident number 0x{:08X} as an earlier one, and {whose} record {record} is not that one's",
+                    index + 2,
+                    dap.ident
+                ),
+            )
+            .at(given.get_ref().ident.span())
+            .label("another record under one ident number")
+            .help("the device cannot tell device access points of one ident number apart, and reads a record any of them writes: give the record alike (its length and each value's place, type, default and range), or this one an ident number of its own"),
+        );
+    }
+}
+
 /// Each record: E101 for an index outside the user-specific ones, E105
 /// for one given twice, and its values checked.
-pub fn lower(
+fn lower(
     cx: &mut Checker,
     given: &[Spanned<raw::SubmoduleRecord>],
     whose: Whose,

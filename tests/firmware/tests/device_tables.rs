@@ -8,7 +8,7 @@ mod device_files;
 
 use device_files::{allowed_text, hex};
 use gsdc_firmware_check::gsdc_support::{
-    DpDevice, DpDiagnosis, DpParam, PnDevice, PnRecord, PnSubmoduleRecord, PrmDataType, PrmError,
+    DpDevice, DpDiagnosis, DpParam, PnDap, PnDevice, PnRecord, PnSubmoduleRecord, PrmDataType, PrmError,
     RecordReading,
 };
 use gsdc_firmware_check::{
@@ -127,6 +127,32 @@ fn own_record_line(what: &str, r: &PnSubmoduleRecord) -> String {
     line
 }
 
+/// A DAP's records of its own submodule and of its ports, then the record
+/// of each index a DAP of its ident number has that a device presenting it
+/// takes, by `PnDevice::own_record`: `takes dap_record 8200 len 1`.
+fn own_records_lines(d: &PnDevice, dap: &PnDap) -> Vec<String> {
+    let mut lines = Vec::new();
+    for (what, records) in [
+        ("dap_record", dap.access_point_records),
+        ("port_record", dap.port_records),
+    ] {
+        lines.extend(records.iter().map(|r| own_record_line(what, r)));
+    }
+    let same = d.daps.iter().filter(|other| other.ident == dap.ident);
+    for other in same {
+        for (what, port, records) in [
+            ("dap_record", false, other.access_point_records),
+            ("port_record", true, other.port_records),
+        ] {
+            for r in records {
+                let taken = d.own_record(dap.ident, port, r.index).unwrap();
+                lines.push(format!("takes {what} {} len {}", taken.index, taken.len));
+            }
+        }
+    }
+    lines
+}
+
 fn pn_lines(d: &PnDevice) -> Vec<String> {
     let mut lines = vec![
         format!("vendor {} device {}", d.vendor_id, d.device_id),
@@ -149,15 +175,10 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             }
         }
         lines.push(line);
+        lines.extend(own_records_lines(d, dap));
     }
     let s = &d.interface_submodule;
     lines.push(format!("interface {} {}", s.subslot, s.ident));
-    for (what, records) in [
-        ("dap_record", d.access_point_records),
-        ("port_record", d.port_records),
-    ] {
-        lines.extend(records.iter().map(|r| own_record_line(what, r)));
-    }
     for m in d.modules {
         let slots: Vec<String> = m.slots.iter().map(u16::to_string).collect();
         lines.push(format!(

@@ -7,7 +7,7 @@ use pnio::rt::IoImage;
 use wire_firmware::card::Card;
 use wire_firmware::cyclic::{exchange, PzdTargets, Shape};
 use wire_firmware::drive::Drive;
-use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord, PnSubmoduleRecord};
+use wire_firmware::gsdc_support::{Mapping, PnModule, PnRecord};
 
 /// The entries of a record the controller wrote, each with its value.
 pub type Decoded = Vec<(&'static Mapping, u16)>;
@@ -24,6 +24,8 @@ pub struct Written {
 pub struct Application {
     card: &'static Card,
     drive: Drive,
+    /// The ident number of the device access point it presents in slot 0.
+    dap_ident: u32,
     plugged: Vec<(u16, &'static PnModule)>,
     /// Each record's values: the GSDML's until the controller writes it.
     records: Vec<(&'static PnRecord, Decoded)>,
@@ -42,7 +44,11 @@ pub struct DoubleWord {
 }
 
 impl Application {
-    pub fn new(card: &'static Card, plugged: &[(u16, &'static PnModule)]) -> Application {
+    pub fn new(
+        card: &'static Card,
+        dap_ident: u32,
+        plugged: &[(u16, &'static PnModule)],
+    ) -> Application {
         let records = plugged
             .iter()
             .flat_map(|(_, m)| m.records)
@@ -60,6 +66,7 @@ impl Application {
         Application {
             card,
             drive: wire_firmware::manuals::drive(card),
+            dap_ident,
             plugged: plugged.to_vec(),
             records,
             double_words: Vec::new(),
@@ -127,24 +134,22 @@ impl Application {
     }
 
     /// A record of the access point's own submodule or of a port, decoded
-    /// by the layout's `access_point_records` or `port_records`. These are
+    /// by its DAP's `access_point_records` or `port_records` in the layout
+    /// (`PnDevice::own_record`). These are
     /// the card's settings, not the drive's: the card keeps none of them.
     fn write_own(&self, subslot: u16, index: u16, bytes: &[u8]) -> Option<Result<Written, String>> {
         let pn = self.card.pn?;
-        let records: &[PnSubmoduleRecord] =
-            if pn.daps.iter().any(|d| d.submodule.subslot == subslot) {
-                pn.access_point_records
-            } else if pn
-                .daps
-                .iter()
-                .flat_map(|d| d.ports)
-                .any(|p| p.subslot == subslot)
-            {
-                pn.port_records
-            } else {
-                return None;
-            };
-        let record = records.iter().find(|r| r.index == index)?;
+        // Of the access point it presents, or of another of its ident
+        // number, which the controller may have been configured with.
+        let daps = pn.daps.iter().filter(|d| d.ident == self.dap_ident);
+        let port = if daps.clone().any(|d| d.submodule.subslot == subslot) {
+            false
+        } else if daps.flat_map(|d| d.ports).any(|p| p.subslot == subslot) {
+            true
+        } else {
+            return None;
+        };
+        let record = pn.own_record(self.dap_ident, port, index)?;
         let mut values = vec![0; record.values.len()];
         if let Err(e) = record.decode(bytes, &mut values) {
             return Some(Err(format!("{e:?}")));

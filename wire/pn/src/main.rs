@@ -189,7 +189,7 @@ fn run(args: &Args) -> Result<(), String> {
     let deadline = args
         .seconds
         .map(|s| Instant::now() + Duration::from_secs(s));
-    let mut application = drive::Application::new(card, &plugged);
+    let mut application = drive::Application::new(card, dap.dap.ident, &plugged);
     while deadline.is_none_or(|d| Instant::now() < d)
         && !acyclic.is_finished()
         && SIGNALLED.load(Ordering::Relaxed) == 0
