@@ -692,6 +692,10 @@ pub struct Profinet {
     pub module_releases: Option<Spanned<bool>>,
     /// Every module's data submodule names the module's category too.
     pub submodule_categories: Option<Spanned<bool>>,
+    /// Whether an access point that offers a safety module declares the
+    /// `FunctionalSafety` application class: true by default (ABB's FENA
+    /// does; SEW's MOVI-C does not).
+    pub functional_safety_class: Option<Spanned<bool>>,
     /// What the card's PROFINET stack offers the controllers.
     #[serde(default)]
     pub stack: Stack,

@@ -30,6 +30,11 @@ pub struct SafetyModule {
     pub io_structure_desc_version: Option<Spanned<u8>>,
     pub f_parameters: Spanned<FParameters>,
     pub crcs: Spanned<DescriptionCrcs>,
+    /// The parameter records of its submodule besides the F-parameters
+    /// (SEW's MOVI-C: record 8200, its diagnosis alarms), as
+    /// `[[profinet.access_point_records]]` gives a record.
+    #[serde(default)]
+    pub records: Vec<Spanned<super::SubmoduleRecord>>,
 }
 
 /// A `DataItem` of safety IO data.

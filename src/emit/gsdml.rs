@@ -355,14 +355,19 @@ fn subslot_list(doc: &mut Doc, p: &Profinet, dap: &Dap) {
 /// GSDML since V2.3, as PI's V2.3 stylesheet shows): the isochronous one
 /// when the modules have isochronous mode and the energy saving one with
 /// PROFIenergy (SEW's MOVI-C, whose modules have IsochroneMode and whose
-/// access points PROFIenergy, declares `Isochronous;EnergySaving`), and the
-/// netload class.
+/// access points PROFIenergy, declares `Isochronous;EnergySaving`), the
+/// functional safety one where the access point offers a safety module and
+/// the description does not say otherwise (ABB's FENA declares it, SEW's
+/// MOVI-C does not), and the netload class.
 fn certification_info(doc: &mut Doc, p: &Profinet, dap: &Dap) {
     let properties = &p.interface_properties;
     let classes = [
         ("Isochronous", properties.isochronous.is_some()),
         ("EnergySaving", p.profienergy.is_some()),
-        ("FunctionalSafety", !dap.safety_modules.is_empty()),
+        (
+            "FunctionalSafety",
+            p.functional_safety_class && !dap.safety_modules.is_empty(),
+        ),
     ];
     let application_class: Vec<&str> = classes
         .iter()
@@ -806,13 +811,18 @@ fn submodule_records(doc: &mut Doc, records: &[SubmoduleRecord]) {
     }
     doc.open("RecordDataList", &[]);
     for record in records {
-        open_record(doc, record.index, record.length, &record.name);
-        for value in &record.values {
-            record_value(doc, value);
-        }
-        doc.close("ParameterRecordDataItem");
+        parameter_record_item(doc, record);
     }
     doc.close("RecordDataList");
+}
+
+/// A record of the card's own as its `ParameterRecordDataItem`.
+fn parameter_record_item(doc: &mut Doc, record: &SubmoduleRecord) {
+    open_record(doc, record.index, record.length, &record.name);
+    for value in &record.values {
+        record_value(doc, value);
+    }
+    doc.close("ParameterRecordDataItem");
 }
 
 /// A record value's Ref. Its AllowedValues are written only where they
@@ -1039,6 +1049,10 @@ fn safety_module(doc: &mut Doc, p: &Profinet, m: &SafetyModule) {
     }
     doc.close("IOData");
     doc.open("RecordDataList", &[]);
+    // Its other records first, as the schema orders them.
+    for record in &m.records {
+        parameter_record_item(doc, record);
+    }
     let index = m.f_parameter_index.to_string();
     let crc = m.crcs.f_param_desc.to_string();
     doc.open(
@@ -1179,10 +1193,10 @@ fn ext_channel_diag_list(doc: &mut Doc, extended: &[ExtendedDiagnosis]) {
 }
 
 /// One ValueItem per set of choices a module's record refers to, then one
-/// per record value of the access point and the ports with choices or a
-/// help.
+/// per record value of the access points, the ports and the safety modules
+/// with choices or a help.
 fn value_list(doc: &mut Doc, p: &Profinet) {
-    let records = p.record_lists.iter().flatten();
+    let records = p.own_records_of_every_submodule();
     let values = records.flat_map(|r| &r.values);
     let items: Vec<&ValueItem> = p
         .value_items

@@ -892,9 +892,9 @@ phrases! {
         de: "Datensätze des Gerätezugangspunkts und der Ports",
     };
     OWN_RECORDS_INTRO = {
-        en: "The controller writes these records at startup, with the values the user set: those of the device access point to its own submodule (slot 0, subslot 1), those of the ports to every port. Each value is high byte first; a bit's place counts from bit 0 of its byte.",
-        zh: "控制器在启动时以用户设定的值写入以下参数记录：设备接入点的记录写入其自身子模块（插槽 0，子插槽 1），端口的记录写入每个端口。各值高字节在前；位的位置从其字节的 Bit0 算起。",
-        de: "Der Controller schreibt diese Datensätze beim Anlauf mit den Werten, die der Benutzer eingestellt hat: die des Gerätezugangspunkts in dessen eigenes Submodul (Steckplatz 0, Subslot 1), die der Ports in jeden Port. Jeder Wert steht mit dem höherwertigen Byte zuerst; die Stelle eines Bits zählt ab Bit 0 seines Bytes.",
+        en: "The controller writes these records at startup, with the values the user set: those of the device access point to its own submodule (slot 0, subslot 1), those of the ports to every port, those of a safety module to its submodule. Each value is high byte first; a bit's place counts from bit 0 of its byte.",
+        zh: "控制器在启动时以用户设定的值写入以下参数记录：设备接入点的记录写入其自身子模块（插槽 0，子插槽 1），端口的记录写入每个端口，安全模块的记录写入其子模块。各值高字节在前；位的位置从其字节的 Bit0 算起。",
+        de: "Der Controller schreibt diese Datensätze beim Anlauf mit den Werten, die der Benutzer eingestellt hat: die des Gerätezugangspunkts in dessen eigenes Submodul (Steckplatz 0, Subslot 1), die der Ports in jeden Port, die eines Sicherheitsmoduls in dessen Submodul. Jeder Wert steht mit dem höherwertigen Byte zuerst; die Stelle eines Bits zählt ab Bit 0 seines Bytes.",
     };
     ACCESS_POINT_RECORD = { en: "Device access point", zh: "设备接入点", de: "Gerätezugangspunkt" };
     PORT_RECORD = { en: "Every port", zh: "每个端口", de: "Jeder Port" };

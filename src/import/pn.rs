@@ -214,11 +214,21 @@ pub(super) fn describe(
     let first_offers = daps::offered(dap, dap, &offer).ok().flatten();
     let timing = irt::Declared::of(dap, &modules, notes);
     let energy = profienergy::Declared::of(dap, name.version, notes);
+    let safety_class = functional_safety_class(
+        std::iter::once(dap).chain(later.iter().map(|l| l.dap)),
+        &placed.safety,
+    );
     unsaid_extras(
         device,
         (dap, &later),
         (&modules, empty.as_ref()),
-        (&timing, energy.is_some(), &placed.safety),
+        // The safety modules the access points that offer them declare
+        // FunctionalSafety for, as gsdc writes it.
+        (
+            &timing,
+            energy.is_some(),
+            if safety_class { &placed.safety } else { &[] },
+        ),
         notes,
     );
     let mut out = TomlOut::default();
@@ -237,7 +247,7 @@ pub(super) fn describe(
     profinet(
         &mut out,
         device,
-        (&imported_daps, first_offers),
+        (&imported_daps, first_offers, safety_class),
         &name,
         (&modules, module_slots),
         notes,
@@ -1095,7 +1105,7 @@ fn defaults_and_values(out: &mut TomlOut, fields: &[Field]) {
 fn profinet(
     out: &mut TomlOut,
     device: &PnDevice,
-    (daps, first_offers): (&[&Dap], Option<String>),
+    (daps, first_offers, safety_class): (&[&Dap], Option<String>, bool),
     name: &FileName,
     (modules, module_slots): (&[Recognised], Slots),
     notes: &mut Notes,
@@ -1174,6 +1184,9 @@ fn profinet(
     }
     if submodules_repeat_categories(modules) {
         out.key("submodule_categories", true);
+    }
+    if !safety_class {
+        out.key("functional_safety_class", false);
     }
 }
 
@@ -1818,6 +1831,29 @@ fn fits(a: &Attribute, known: &[(&str, Option<&str>)]) -> bool {
     }
 }
 
+/// Whether `dap` offers one of the safety modules imported.
+fn offers_safety(dap: &Dap, safety: &[(String, Offer)]) -> bool {
+    dap.useable_modules
+        .iter()
+        .any(|r| safety.iter().any(|(id, _)| *id == r.target))
+}
+
+/// `functional_safety_class`: false where no access point that offers a
+/// safety module declares the `FunctionalSafety` application class (SEW's
+/// MOVI-C), else gsdc's default; where some do and some do not, the round
+/// trip names those that differ.
+fn functional_safety_class<'a>(
+    daps: impl Iterator<Item = &'a Dap>,
+    safety: &[(String, Offer)],
+) -> bool {
+    let declares = |dap: &Dap| {
+        attribute(&dap.item.attributes, "CertificationInfo@ApplicationClass")
+            .is_some_and(|c| c.split(';').any(|c| c == "FunctionalSafety"))
+    };
+    let mut offering = daps.filter(|d| offers_safety(d, safety)).peekable();
+    offering.peek().is_none() || offering.any(declares)
+}
+
 /// The device access point's `ApplicationClass` gsdc writes: `Isochronous`
 /// with the modules' isochronous mode, `EnergySaving` with PROFIenergy,
 /// `FunctionalSafety` with safety modules.
@@ -1885,11 +1921,7 @@ fn unsaid_extras(
         data_known.push((CATEGORY, None));
     }
     for dap in [first].into_iter().chain(later.iter().map(|l| l.dap)) {
-        let offers_safety = dap
-            .useable_modules
-            .iter()
-            .any(|r| safety.iter().any(|(id, _)| *id == r.target));
-        let class = application_class((has_isochronous, has_energy, offers_safety));
+        let class = application_class((has_isochronous, has_energy, offers_safety(dap, safety)));
         let mut known = dap_known.clone();
         if let Some(class) = &class {
             known.push(("CertificationInfo@ApplicationClass", Some(class)));

@@ -47,6 +47,9 @@ pub struct Profinet {
     /// Whether every module's data submodule names the module's category
     /// too (its ModuleInfo's CategoryRef).
     pub submodule_categories: bool,
+    /// Whether an access point that offers a safety module declares the
+    /// `FunctionalSafety` application class.
+    pub functional_safety_class: bool,
     /// The interface submodule's SubmoduleIdentNumber.
     pub interface_ident: u32,
     pub interface_properties: InterfaceProperties,
@@ -173,6 +176,13 @@ impl Profinet {
         &self.daps[0]
     }
 
+    /// Every record of the card's own: the access points' own submodules'
+    /// and the ports', then the safety modules' besides their F-parameters.
+    pub fn own_records_of_every_submodule(&self) -> impl Iterator<Item = &SubmoduleRecord> {
+        let safety = self.safety_modules.iter().flat_map(|m| &m.records);
+        self.record_lists.iter().flatten().chain(safety)
+    }
+
     /// The records of `dap`'s own submodule, and of each of its ports.
     pub fn own_records(&self, dap: &Dap) -> (&[SubmoduleRecord], &[SubmoduleRecord]) {
         (
@@ -234,7 +244,7 @@ impl Profinet {
                 refs.extend(item.bits.iter().map(|b| &b.text));
             }
         }
-        for record in self.record_lists.iter().flatten() {
+        for record in self.own_records_of_every_submodule() {
             refs.push(&record.name);
             refs.extend(record.values.iter().map(|v| &v.text));
             let items = record.values.iter().filter_map(|v| v.value_item.as_ref());

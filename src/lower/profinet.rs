@@ -270,6 +270,10 @@ pub fn lower(
             .submodule_categories
             .as_ref()
             .is_some_and(|s| *s.get_ref()),
+        functional_safety_class: p
+            .functional_safety_class
+            .as_ref()
+            .is_none_or(|s| *s.get_ref()),
         interface_properties,
         categories,
         device_symbol: device.symbol.as_ref().map(|_| GraphicItem {

@@ -2114,12 +2114,23 @@ typedef struct {
     size_t port_records_count;
 } gsdc_pn_dap_t;
 
+/* A PROFIsafe module: its ident number, its submodule with the safety data
+ * (the message trailer included), and that submodule's parameter records
+ * besides the F-parameters (SEW's MOVI-C: record 8200), which the card's
+ * PROFIsafe layer reads. */
+typedef struct {
+    uint32_t ident;
+    gsdc_pn_submodule_t submodule;
+    const gsdc_pn_submodule_record_t *records;
+    size_t records_count;
+} gsdc_pn_safety_module_t;
+
 /* A PROFINET IO device: its identity and DNS_CompatibleName (the
  * NameOfStation an engineering tool proposes), the GSDML's device access
  * points in its order (those of one ident number present the same slot 0:
  * the device cannot tell which one a project used, and takes what any of
  * them offers, gsdc_pn_device_offers), the interface submodule, every
- * module of the GSDML, its PKW codec,
+ * module of the GSDML, its PROFIsafe modules, its PKW codec,
  * whether PZD1 from the controller is the control word and PZD1 to the
  * controller the status word, and the PZD words the records map each
  * way. */
@@ -2132,6 +2143,8 @@ typedef struct {
     gsdc_pn_submodule_t interface_submodule;
     const gsdc_pn_module_t *modules;
     size_t modules_count;
+    const gsdc_pn_safety_module_t *safety_modules;
+    size_t safety_modules_count;
     gsdc_pkw_codec_t pkw;
     bool control_word;
     bool status_word;

@@ -363,6 +363,9 @@ pub struct PnDevice {
     pub interface_submodule: PnSubmodule,
     /// Every module of the GSDML, in its order.
     pub modules: &'static [PnModule],
+    /// Its PROFIsafe modules: the records of their submodules besides the
+    /// F-parameters, which the card's PROFIsafe layer reads.
+    pub safety_modules: &'static [PnSafetyModule],
     pub pkw: PkwCodec,
     /// Whether PZD1 from the controller is the drive's control word, and
     /// PZD1 to the controller its status word.
@@ -507,6 +510,16 @@ impl PnDevice {
         })
         .find(|r| r.index == index)
     }
+}
+
+/// A PROFIsafe module: its ident number, its submodule with the safety
+/// data (the message trailer included), and that submodule's parameter
+/// records besides the F-parameters (SEW's MOVI-C: record 8200).
+#[derive(Clone, Copy, Debug)]
+pub struct PnSafetyModule {
+    pub ident: u32,
+    pub submodule: PnSubmodule,
+    pub records: &'static [PnSubmoduleRecord],
 }
 
 /// A PZD word and the record entry whose value is the drive parameter it

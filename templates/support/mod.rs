@@ -29,7 +29,7 @@ pub use device::{DiagCode, DpDiagArea, DpDiagnosis, DpGateway, GatewayDiagType};
 pub use device::{DpDevice, DpModule, DpParam, NodeTotals, PkwCodec, PzdParam, UserPrm};
 pub use device::{GatewayDiagnosis, GatewayNode, PnPzd};
 pub use device::{PnDap, PnDevice, PnModule, PnRecord, PnRecordValue, PnSubmodule};
-pub use device::{PnSubmoduleRecord, PrmDataType, RecordReading};
+pub use device::{PnSafetyModule, PnSubmoduleRecord, PrmDataType, RecordReading};
 pub use numbering::{AddressScheme, Numbering, NumberingPrefix, ParameterName, WrittenPrefix};
 
 /// A 16-bit word as PROFIBUS and PROFINET carry it: big-endian, alignment 1,

@@ -378,6 +378,15 @@ static void dump_pn(const gsdc_pn_device_t *d)
             dump_record(&m->records[j]);
         }
     }
+    for (i = 0U; i < d->safety_modules_count; i++) {
+        const gsdc_pn_safety_module_t *m = &d->safety_modules[i];
+        printf("safety_module %lu submodule %u %lu in %lu out %lu\n", (unsigned long)m->ident,
+               (unsigned int)m->submodule.subslot, (unsigned long)m->submodule.ident,
+               (unsigned long)m->submodule.input_len, (unsigned long)m->submodule.output_len);
+        for (j = 0U; j < m->records_count; j++) {
+            dump_own_record("safety_record", &m->records[j]);
+        }
+    }
 }
 #endif
 

@@ -303,6 +303,42 @@ pub fn pn_lines(gsdml: &Path) -> Vec<String> {
             }
         }
     }
+    lines.extend(safety_module_lines(&doc));
+    lines
+}
+
+/// Each PROFIsafe module: its ident number, its submodule with the bytes
+/// of its safety data each way, and the submodule's records besides the
+/// F-parameters, as a device access point's own records are listed.
+fn safety_module_lines(doc: &roxmltree::Document) -> Vec<String> {
+    let mut lines = Vec::new();
+    for module in doc
+        .descendants()
+        .filter(|n| n.has_tag_name("ModuleItem") && is_safety_module(*n))
+    {
+        let submodule = own_submodule(module);
+        let bytes = |direction: &str| -> usize {
+            submodule
+                .descendants()
+                .filter(|n| n.has_tag_name(direction))
+                .flat_map(|d| d.children().filter(|n| n.has_tag_name("DataItem")))
+                .map(|d| match attr(d, "DataType") {
+                    "F_MessageTrailer4Byte" => 4,
+                    "F_MessageTrailer5Byte" => 5,
+                    other => data_type_len(other),
+                })
+                .sum()
+        };
+        lines.push(format!(
+            "safety_module {} submodule {} {} in {} out {}",
+            number(attr(module, "ModuleIdentNumber")),
+            number(submodule.attribute("FixedInSubslots").unwrap_or("1")),
+            number(attr(submodule, "SubmoduleIdentNumber")),
+            bytes("Input"),
+            bytes("Output")
+        ));
+        lines.extend(own_record_lines(doc, "safety_record", submodule));
+    }
     lines
 }
 
@@ -489,7 +525,7 @@ fn dap_line(doc: &roxmltree::Document, dap: roxmltree::Node, daps: &[roxmltree::
     line
 }
 
-/// A device access point's own submodule.
+/// A device access point's or a module's first virtual submodule.
 fn own_submodule<'a, 'input>(dap: roxmltree::Node<'a, 'input>) -> roxmltree::Node<'a, 'input> {
     dap.descendants()
         .find(|n| n.has_tag_name("VirtualSubmoduleItem"))

@@ -25,7 +25,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     let own_records = ir
         .profinet
         .as_ref()
-        .is_some_and(|p| p.record_lists.iter().any(|l| !l.is_empty()));
+        .is_some_and(|p| p.own_records_of_every_submodule().next().is_some());
     if ir.mappings.groups.is_empty() && !other_params && !own_records {
         return;
     }
@@ -82,8 +82,11 @@ fn own_records_tables(doc: &mut Builder, ir: &Ir, lang: Lang) {
     };
     doc.subsection("own-records", lang.t(w::OWN_RECORDS));
     doc.para(text(lang.t(w::OWN_RECORDS_INTRO)));
-    for (list, records) in p.record_lists.iter().enumerate() {
-        let whose = own_records_whose(p, list, lang);
+    let lists = p.record_lists.iter().enumerate();
+    let lists = lists.map(|(list, records)| (own_records_whose(p, list, lang), records));
+    let safety = p.safety_modules.iter();
+    let safety = safety.map(|m| (lang.text(&m.name.text).to_string(), &m.records));
+    for (whose, records) in lists.chain(safety) {
         for record in records {
             let rows = record
                 .values

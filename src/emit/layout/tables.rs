@@ -12,6 +12,7 @@ use super::{Doc, Val};
 use crate::ir::gateway::{self, DiagCode, ParamKey};
 use crate::ir::profibus::{self, PrmHolds, PrmType, PrmValue, Profibus};
 use crate::ir::profinet::{self, Profinet, RecordReading};
+use crate::ir::safety::SafetyModule;
 use crate::ir::{AddressScheme, Allowed, Direction, Ident, Ir, MappingKind, Numbering, PkwKind};
 
 /// A table the layout declares: `DP_DEVICE` in Rust, `<prefix>_dp_device()`
@@ -458,6 +459,13 @@ fn pn_device(ir: &Ir, p: &Profinet) -> Record {
                         .collect(),
                 ),
             ),
+            (
+                "safety_modules",
+                Value::List(
+                    Elem::Record("pn safety module"),
+                    p.safety_modules.iter().map(pn_safety_module).collect(),
+                ),
+            ),
             ("pkw", pkw_codec(ir.telegram.pkw)),
             (
                 "control_word",
@@ -644,6 +652,23 @@ fn pn_module(ir: &Ir, p: &profinet::Profinet, m: &profinet::Module) -> Value {
 
 /// The empty module as a module of no words, whose one submodule carries
 /// no data.
+/// A PROFIsafe module: its ident number, its submodule with the safety
+/// data, and that submodule's records besides the F-parameters.
+fn pn_safety_module(m: &SafetyModule) -> Value {
+    let bytes = (m.input_bytes().into(), m.output_bytes().into());
+    Value::Record(record(
+        "pn safety module",
+        vec![
+            ("ident", hex(m.ident_number, 8)),
+            (
+                "submodule",
+                submodule(profinet::DEFAULT_SUBSLOT, m.submodule_ident_number, bytes),
+            ),
+            ("records", pn_submodule_records(&m.records)),
+        ],
+    ))
+}
+
 fn pn_empty_module(e: &profinet::EmptyModule) -> Value {
     module_record(
         (&e.name.text.en, e.ident, e.slots),

@@ -63,18 +63,7 @@ impl OwnRecords {
     fn write_under(&self, out: &mut TomlOut, parent: &str) {
         for (key, records) in self.lists() {
             let table = format!("{parent}.{key}");
-            for record in records.into_iter().flatten() {
-                out.array_item(&table);
-                for (key, value) in &record.keys {
-                    out.key(key, value);
-                }
-                for value in &record.values {
-                    out.array_item(&format!("{table}.values"));
-                    for (key, v) in value {
-                        out.key(key, v);
-                    }
-                }
-            }
+            write_records(out, &table, records.map_or(&[][..], |r| &r[..]));
         }
     }
 
@@ -87,6 +76,38 @@ impl OwnRecords {
             ports: self.ports.filter(|l| Some(l) != first.ports.as_ref()),
         }
     }
+}
+
+/// Each of `records` as an item of the array of tables `table`.
+fn write_records(out: &mut TomlOut, table: &str, records: &[Said]) {
+    for record in records {
+        out.array_item(table);
+        for (key, value) in &record.keys {
+            out.key(key, value);
+        }
+        for value in &record.values {
+            out.array_item(&format!("{table}.values"));
+            for (key, v) in value {
+                out.key(key, v);
+            }
+        }
+    }
+}
+
+/// The records of a safety module's submodule besides its F-parameters.
+pub(super) struct SafetyRecords(Vec<Said>);
+
+impl SafetyRecords {
+    /// As `[[profinet.safety_modules.records]]` of the entry just written.
+    pub fn write(&self, out: &mut TomlOut) {
+        write_records(out, "profinet.safety_modules.records", &self.0);
+    }
+}
+
+/// The records of a safety module's submodule besides its F-parameters
+/// that the description can say; each other left out with why.
+pub(super) fn safety_records(submodule: &Submodule, notes: &mut Notes) -> SafetyRecords {
+    SafetyRecords(shared(&[submodule], "safety module", notes))
 }
 
 /// The records of `dap`'s own submodule and of its ports.

@@ -2,6 +2,7 @@
 //! safety IO data, F-parameters and description CRCs, carried as the file
 //! has them and pinned to gsdc's fingerprint of what they describe.
 
+use super::own_records::{safety_records, SafetyRecords};
 use super::slots::{offered, one_range, slot_list};
 use super::stack::is_true;
 use super::{attribute, hex32, text, Notes, SUBMODULE_ATTRIBUTES};
@@ -36,6 +37,8 @@ pub(super) struct Safety<'a> {
     f_parameters: Vec<FParameter>,
     io_structure_desc_version: Option<u8>,
     crcs: (u16, u32),
+    /// Its submodule's records besides the F-parameters.
+    records: SafetyRecords,
 }
 
 impl Safety<'_> {
@@ -103,6 +106,7 @@ impl Safety<'_> {
         {
             out.key(p.element, parameter_table(p));
         }
+        self.records.write(out);
     }
 
     /// The fingerprint the build computes of what the CRCs describe.
@@ -196,7 +200,7 @@ pub(super) fn safety_modules<'a>(
         if !seen.insert(&module.id) {
             continue;
         }
-        let read = one_range(reference).and_then(|slots| read(module, slots, taken));
+        let read = one_range(reference).and_then(|slots| read(module, slots, taken, notes));
         match read {
             Ok(safety) => {
                 taken.extend(module.ident);
@@ -208,8 +212,14 @@ pub(super) fn safety_modules<'a>(
     found
 }
 
-/// A safety module the description can say, or why not.
-fn read<'a>(module: &'a PnModule, slots: Slots, taken: &[u32]) -> Result<Safety<'a>, String> {
+/// A safety module the description can say, or why not; each record of
+/// its submodule the description cannot say left out with why.
+fn read<'a>(
+    module: &'a PnModule,
+    slots: Slots,
+    taken: &[u32],
+    notes: &mut Notes,
+) -> Result<Safety<'a>, String> {
     let [submodule] = module.submodules.as_slice() else {
         return Err("it has more than one submodule".into());
     };
@@ -219,8 +229,10 @@ fn read<'a>(module: &'a PnModule, slots: Slots, taken: &[u32]) -> Result<Safety<
     if module.ident.is_none_or(|i| i == 0 || taken.contains(&i)) {
         return Err("its ModuleIdentNumber is 0 or another module's or access point's, which the description's cannot share (E176)".into());
     }
-    if !module.useable_submodules.is_empty() || !submodule.records.is_empty() {
-        return Err("it has pluggable submodules or parameter records besides its F-parameters, which the description's safety modules do not".into());
+    if !module.useable_submodules.is_empty() {
+        return Err(
+            "it has pluggable submodules, which the description's safety modules do not".into(),
+        );
     }
     let extra = module
         .attributes
@@ -257,6 +269,7 @@ fn read<'a>(module: &'a PnModule, slots: Slots, taken: &[u32]) -> Result<Safety<
     Ok(Safety {
         module,
         submodule,
+        records: safety_records(submodule, notes),
         slots,
         f_parameter_index,
         f_parameters: f_parameters(&submodule.attributes),
@@ -284,7 +297,10 @@ fn known(a: &Attribute) -> bool {
                         && F_PARAMETER_ATTRIBUTES.iter().any(|(n, _)| *n == attribute)
                 })
     });
-    fixed || parameter || matches!(name, "PROFIsafeSupported" | IO_CRC | IO_VERSION)
+    // Its isochronous mode is `[profinet.isochronous]`'s, the data
+    // modules': the round trip judges it.
+    let isochronous = name.starts_with("IsochroneMode@");
+    fixed || parameter || isochronous || matches!(name, "PROFIsafeSupported" | IO_CRC | IO_VERSION)
         // The module's category, which the build repeats with
         // `submodule_categories`; the round trip judges it.
         || name == super::CATEGORY

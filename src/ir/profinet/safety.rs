@@ -34,6 +34,8 @@ pub struct SafetyModule {
     pub f_parameter_index: u16,
     pub f_parameters: Vec<FParameter>,
     pub crcs: DescriptionCrcs,
+    /// Its submodule's parameter records besides the F-parameters.
+    pub records: Vec<super::SubmoduleRecord>,
 }
 
 /// A `DataItem` of safety IO data.

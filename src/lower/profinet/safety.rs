@@ -66,10 +66,11 @@ fn module(
     let f_parameters = f_parameters(cx, m.f_parameters.get_ref(), &what("f_parameters"));
     // A vendor's record index (the schema's IndexT also has the profile's
     // 0xB000 to 0xBFFF, which no F-parameter record of the corpus uses).
-    let index = &m.f_parameters.get_ref().index;
-    let index = cx.spanned_in_range(index, 0, 0x7FFF, &what("f_parameters.index"));
-    let (ident, slots, input, output, f_parameters, index) =
-        (ident?, slots?, input?, output?, f_parameters?, index?);
+    let f_index = &m.f_parameters.get_ref().index;
+    let f_index = cx.spanned_in_range(f_index, 0, 0x7FFF, &what("f_parameters.index"));
+    let records = super::submodule_records::lower_safety(cx, &m.records, index);
+    let (ident, slots, input, output, f_parameters, f_index) =
+        (ident?, slots?, input?, output?, f_parameters?, f_index?);
     trailers_fit_the_crc(
         cx,
         (&input, &output),
@@ -91,8 +92,9 @@ fn module(
         input,
         output,
         io_structure_desc_version: m.io_structure_desc_version.as_ref().map(|v| *v.get_ref()),
-        f_parameter_index: index,
+        f_parameter_index: f_index,
         f_parameters,
+        records: records?,
         crcs: DescriptionCrcs {
             f_param_desc: *m.crcs.get_ref().f_param_desc.get_ref(),
             f_io_structure_desc: *m.crcs.get_ref().f_io_structure_desc.get_ref(),

@@ -13,41 +13,52 @@ use crate::lower::param_values::{self, Holds, Stored, Taken};
 use std::collections::BTreeSet;
 use toml::Spanned;
 
-/// Whose records: the access point's own submodule's or a port's, of the
-/// first DAP (`[profinet]`'s) or of `profinet.daps[n]`.
-#[derive(Clone, Copy)]
+/// Whose records: where the description gives them, and the tag of their
+/// GSDML IDs.
 struct Whose {
-    port: bool,
-    later: Option<usize>,
+    key: String,
+    tag: String,
 }
 
 impl Whose {
-    /// Where the description gives them.
-    fn key(self) -> String {
-        let list = if self.port {
+    /// The access point's own submodule's, or a port's, of the first DAP
+    /// (`[profinet]`'s: tags `DAP_RECORD`, `PORT_RECORD`) or of
+    /// `profinet.daps[n]` (DAP 2's: `DAP_2_RECORD`, `DAP_2_PORT_RECORD`).
+    fn dap(port: bool, later: Option<usize>) -> Whose {
+        let list = if port {
             "port_records"
         } else {
             "access_point_records"
         };
-        match self.later {
-            None => format!("profinet.{list}"),
-            Some(n) => format!("profinet.daps[{n}].{list}"),
-        }
+        let (key, dap) = match later {
+            None => (format!("profinet.{list}"), "DAP".to_string()),
+            Some(n) => (
+                format!("profinet.daps[{n}].{list}"),
+                format!("DAP_{}", n + 2),
+            ),
+        };
+        let tag = match (port, later) {
+            (true, None) => "PORT_RECORD".to_string(),
+            (true, Some(_)) => format!("{dap}_PORT_RECORD"),
+            (false, _) => format!("{dap}_RECORD"),
+        };
+        Whose { key, tag }
     }
+}
 
-    /// The tag of their GSDML IDs: the first DAP's `DAP_RECORD` and
-    /// `PORT_RECORD`, DAP 2's `DAP_2_RECORD` and `DAP_2_PORT_RECORD`.
-    fn tag(self) -> String {
-        let dap = self
-            .later
-            .map_or("DAP".to_string(), |n| format!("DAP_{}", n + 2));
-        if self.port {
-            let prefix = self.later.map_or(String::new(), |_| format!("{dap}_"));
-            format!("{prefix}PORT_RECORD")
-        } else {
-            format!("{dap}_RECORD")
-        }
-    }
+/// The records of `profinet.safety_modules[index]`'s submodule besides its
+/// F-parameters (SEW's MOVI-C: record 8200, its diagnosis alarms), tagged
+/// `SAFETY_1_RECORD`.
+pub fn lower_safety(
+    cx: &mut Checker,
+    given: &[Spanned<raw::SubmoduleRecord>],
+    index: usize,
+) -> Option<Vec<SubmoduleRecord>> {
+    let whose = Whose {
+        key: format!("profinet.safety_modules[{index}].records"),
+        tag: format!("SAFETY_{}_RECORD", index + 1),
+    };
+    lower(cx, given, &whose)
 }
 
 /// Every list of records and each DAP's two (`daps` as lowered from `p`,
@@ -60,7 +71,7 @@ pub fn lower_lists(
     daps: &mut [Dap],
 ) -> Option<Vec<Vec<SubmoduleRecord>>> {
     let first = [(&p.access_point_records, false), (&p.port_records, true)]
-        .map(|(given, port)| lower(cx, given, Whose { port, later: None }));
+        .map(|(given, port)| lower(cx, given, &Whose::dap(port, None)));
     let mut lists = Vec::new();
     let mut complete = true;
     for list in first {
@@ -74,11 +85,8 @@ pub fn lower_lists(
             (&given.port_records, true),
         ] {
             let Some(own) = own else { continue };
-            let whose = Whose {
-                port,
-                later: Some(n),
-            };
-            complete &= lower(cx, own, whose).is_some_and(|list| {
+            let whose = Whose::dap(port, Some(n));
+            complete &= lower(cx, own, &whose).is_some_and(|list| {
                 let place = if port {
                     &mut dap.port_records
                 } else {
@@ -171,12 +179,12 @@ fn alike_under_one_ident(
 fn lower(
     cx: &mut Checker,
     given: &[Spanned<raw::SubmoduleRecord>],
-    whose: Whose,
+    whose: &Whose,
 ) -> Option<Vec<SubmoduleRecord>> {
     let mut seen = BTreeSet::new();
     let mut records = Vec::new();
     for (place, record) in given.iter().enumerate() {
-        let at = format!("{}[{place}]", whose.key());
+        let at = format!("{}[{place}]", whose.key);
         let record = record.get_ref();
         let index = user_specific(cx, &record.index);
         if let Some(index) = index.filter(|i| !seen.insert(*i)) {
@@ -191,9 +199,9 @@ fn one(
     cx: &mut Checker,
     record: &raw::SubmoduleRecord,
     index: u16,
-    (whose, at): (Whose, &str),
+    (whose, at): (&Whose, &str),
 ) -> Option<SubmoduleRecord> {
-    let id = format!("{}_{index}", whose.tag());
+    let id = format!("{}_{index}", whose.tag);
     let name = TextRef::new(
         format!("IDT_{id}"),
         cx.text(&record.name, None, &format!("{at}.name")),

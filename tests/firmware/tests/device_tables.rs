@@ -229,6 +229,14 @@ fn pn_lines(d: &PnDevice) -> Vec<String> {
             ));
         }
     }
+    for m in d.safety_modules {
+        let s = &m.submodule;
+        lines.push(format!(
+            "safety_module {} submodule {} {} in {} out {}",
+            m.ident, s.subslot, s.ident, s.input_len, s.output_len
+        ));
+        lines.extend(m.records.iter().map(|r| own_record_line("safety_record", r)));
+    }
     lines
 }
 
