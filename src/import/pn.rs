@@ -195,11 +195,10 @@ pub(super) fn describe(
             .collect(),
     };
     let first_stack = stack::Declared::of(dap, (&modules, &placed), name.version, notes);
-    let safety_ids: Vec<String> = placed.safety.iter().map(|(id, _)| id.clone()).collect();
     let offer = daps::Offered {
         device,
         modules: &modules,
-        safety: &safety_ids,
+        safety: &placed.safety,
     };
     let first_records = own_records::own_records(dap, notes);
     let later = daps::later_daps(

@@ -446,8 +446,7 @@ fn daps_table(doc: &mut Builder, p: &Profinet, lang: Lang) {
 /// nothing, as far as this description uses them: the places a firmware
 /// team checks against its card.
 pub(crate) fn checklist_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
-    doc.section("check", lang.t(w::TO_CHECK));
-    doc.para(text(lang.t(w::CHECKLIST_INTRO)));
+    doc.section_with_intro("check", lang.t(w::TO_CHECK), lang.t(w::CHECKLIST_INTRO));
     let mut rows: Vec<Vec<Cell>> = Vec::new();
     let mut row = |what: &str, why: &str| rows.push(vec![text(what), vec![Run::Mark(why.into())]]);
     for decision in &ir.decisions {

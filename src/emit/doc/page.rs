@@ -79,6 +79,17 @@ impl Builder {
         self.heading(2, id, text);
     }
 
+    /// A section whose first paragraph says what it holds.
+    pub fn section_with_intro(
+        &mut self,
+        id: &'static str,
+        title: impl Into<String>,
+        intro: impl Into<String>,
+    ) {
+        self.section(id, title);
+        self.para(text(intro));
+    }
+
     pub fn subsection(&mut self, id: &'static str, text: impl Into<String>) {
         self.heading(3, id, text);
     }

@@ -663,8 +663,11 @@ pub(crate) fn dp_diagnosis_types_section(doc: &mut Builder, ir: &Ir, lang: Lang)
     else {
         return;
     };
-    doc.section("dp-diagnosis-types", lang.t(w::DP_DIAGNOSIS_TYPES));
-    doc.para(text(lang.t(w::DP_DIAGNOSIS_TYPES_INTRO)));
+    doc.section_with_intro(
+        "dp-diagnosis-types",
+        lang.t(w::DP_DIAGNOSIS_TYPES),
+        lang.t(w::DP_DIAGNOSIS_TYPES_INTRO),
+    );
     for t in &p.diagnosis_types {
         for area in &t.areas {
             let rows = area
@@ -714,8 +717,11 @@ pub(crate) fn dp_channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lan
     else {
         return;
     };
-    doc.section("dp-channel-diagnosis", lang.t(w::DP_CHANNEL_DIAGNOSIS));
-    doc.para(text(lang.t(w::DP_CHANNEL_DIAGNOSIS_INTRO)));
+    doc.section_with_intro(
+        "dp-channel-diagnosis",
+        lang.t(w::DP_CHANNEL_DIAGNOSIS),
+        lang.t(w::DP_CHANNEL_DIAGNOSIS_INTRO),
+    );
     let rows = p
         .channel_diagnosis
         .iter()
@@ -737,8 +743,11 @@ pub(crate) fn channel_diagnosis_section(doc: &mut Builder, ir: &Ir, lang: Lang) 
     else {
         return;
     };
-    doc.section("channel-diagnosis", lang.t(w::CHANNEL_DIAGNOSIS));
-    doc.para(text(lang.t(w::CHANNEL_DIAGNOSIS_INTRO)));
+    doc.section_with_intro(
+        "channel-diagnosis",
+        lang.t(w::CHANNEL_DIAGNOSIS),
+        lang.t(w::CHANNEL_DIAGNOSIS_INTRO),
+    );
     let rows = p
         .channel_diagnosis
         .iter()

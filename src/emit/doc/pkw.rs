@@ -25,8 +25,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if !has_pkw {
         return;
     }
-    doc.section("pkw", lang.t(w::PKW_HEADING));
-    doc.para(text(lang.t(w::PKW_INTRO)));
+    doc.section_with_intro("pkw", lang.t(w::PKW_HEADING), lang.t(w::PKW_INTRO));
     match ir.telegram.pkw {
         PkwKind::PkeIndPwe => pke_ind_pwe(doc, ir, lang),
         PkwKind::StationCommandAddressValue => station_command(doc, ir, lang),

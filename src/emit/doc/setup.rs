@@ -12,8 +12,7 @@ pub(crate) fn section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if ir.setup.is_empty() {
         return;
     }
-    doc.section("setup", lang.t(w::SETUP_HEADING));
-    doc.para(text(lang.t(w::SETUP_INTRO)));
+    doc.section_with_intro("setup", lang.t(w::SETUP_HEADING), lang.t(w::SETUP_INTRO));
     for group in &ir.setup {
         group_table(doc, ir, lang, group);
     }

@@ -447,8 +447,7 @@ pub(crate) fn words_section(doc: &mut Builder, ir: &Ir, lang: Lang) {
     if modules.is_empty() {
         return;
     }
-    doc.section("words", lang.t(w::WORDS_HEADING));
-    doc.para(text(lang.t(w::WORDS_INTRO)));
+    doc.section_with_intro("words", lang.t(w::WORDS_HEADING), lang.t(w::WORDS_INTRO));
     for (longest, others) in figure_groups(ir, lang, &modules) {
         let mut caption = longest.name.clone();
         if !others.is_empty() {

@@ -10,6 +10,7 @@ use crate::device::{Attribute, Text};
 use crate::import::toml_out::TomlOut;
 use crate::import::Notes;
 use crate::ir::profinet::Version;
+use crate::lower::Offer;
 
 /// What the description's device access points share: the first's value
 /// stands for every one (`[profinet]` states it once).
@@ -98,8 +99,8 @@ pub(super) fn later_daps<'a>(
 pub(super) struct Offered<'a> {
     pub device: &'a PnDevice,
     pub modules: &'a [Recognised<'a>],
-    /// The IDs of the safety modules imported.
-    pub safety: &'a [String],
+    /// The safety modules imported, by their IDs.
+    pub safety: &'a [(String, Offer)],
 }
 
 /// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.
@@ -300,7 +301,7 @@ pub(super) fn offered(first: &Dap, dap: &Dap, offer: &Offered) -> Result<Option<
     for r in &dap.useable_modules {
         let data = modules.iter().find(|m| m.module.id == r.target);
         data_modules += usize::from(data.is_some());
-        let safety_number = safety.iter().position(|id| *id == r.target);
+        let safety_number = safety.iter().position(|(id, _)| *id == r.target);
         let name = data
             .map(|m| m.code_name())
             .or_else(|| safety_number.map(|n| crate::ir::safety::code_name(n + 1)));
