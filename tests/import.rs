@@ -1048,12 +1048,16 @@ fn every_corpus_file_imports_or_says_why_and_the_readme_table_is_current() {
             gsdc::compile(&ir).unwrap_or_else(|e| panic!("{}: {e:#?}", row.file));
         }
     }
-    // Both drive GSDML files' imports build (SEW's MOVI-C: no releases, a
-    // family with `-`, conformance class C imported as B): ABB's FENA, its
-    // safety modules with it, as the same device; MOVI-C as a draft.
+    // Both drive GSDML files import as the same device: ABB's FENA, its
+    // safety modules with it, and SEW's MOVI-C (no releases, a family with
+    // `-`, three access points of one ident number, F-modules only the
+    // later ones offer).
     let row = |file: &str| gsdml.iter().find(|r| r.file.contains(file)).unwrap();
-    assert!(row("-ABB-FENA-").imported.round_trip.is_clean());
-    assert!(row("-SEW-MOVI-C-").imported.draft.is_some());
+    for drive in ["-ABB-FENA-", "-SEW-MOVI-C-"] {
+        let imported = &row(drive).imported;
+        assert!(imported.round_trip.is_clean(), "{drive}");
+        assert!(imported.description.is_some(), "{drive}");
+    }
     // A GSDML file not imported says why: refused at its device access
     // point (E602, no module the format can say), or its import does not
     // build or builds another device (E601). Each device access point and
@@ -1185,23 +1189,22 @@ fn the_command_writes_a_new_description_and_refuses_what_it_cannot() {
     assert_eq!(over.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "kept");
     assert!(!out_dir.join("9KDP1.png").exists());
-    // SEW's MOVI-C: its import builds another device; the changes are
-    // shown before the warnings, which name what the format cannot say.
-    let gsdml = support::shared(&format!("corpus/gsdml/{MOVI_C}"));
-    let refused_out = dir.join("movi-c.toml");
-    let refused = run_import(&gsdml, &refused_out);
+    // Siemens' IM174 (SI018133): its import builds another device; the
+    // changes are shown before the warnings, which name what the format
+    // cannot say or says otherwise.
+    let gsd = support::shared("corpus/gsd/ivangre4__SI018133.GSE");
+    let refused_out = dir.join("si018133.toml");
+    let refused = run_import(&gsd, &refused_out);
     assert_eq!(refused.status.code(), Some(1));
     let stderr = support::stderr(&refused);
     assert!(
-        stderr.starts_with("error[E601]: the import builds another device: "),
+        stderr.starts_with("error[E601]: the import builds another device: GSD_Revision (compatible): \"4\" → \"5\""),
         "{stderr}"
     );
-    assert!(
-        stderr.contains("warning[W600]: record 8201 of the device access point is not imported")
-    );
     assert!(stderr.contains(
-        "warning[W600]: DNS_CompatibleName `SEW-EURODRIVE-DFC2xX` is imported as `sew-eurodrive-dfc2xx`: a name of station has lower-case labels only (E132)"
+        "warning[W600]: GSD_Revision 4 is imported as 5: the file states Ident_Maintenance_supp, which came with revision 5 (E124)"
     ));
+    assert!(stderr.contains("warning[W600]: Bitmap_Device is not imported"));
     assert!(!refused_out.exists());
     // Two files: a card's GSD and GSDML file, in either order, make one
     // description; two GSD files are a usage error.
@@ -1416,7 +1419,7 @@ fn assert_imported_and_kept(files: &[(&str, &str)], kept: impl Fn(&str) -> bool)
         .iter()
         .map(|&(name, says)| {
             let imported = corpus_import(name);
-            assert_says(as_imported(name, &imported), &[says]);
+            assert_says(written(&imported, name), &[says]);
             let changed: Vec<String> = round_trip_changes(name, &imported)
                 .into_iter()
                 .filter(|c| kept(c))
@@ -1428,12 +1431,12 @@ fn assert_imported_and_kept(files: &[(&str, &str)], kept: impl Fn(&str) -> bool)
 }
 
 /// What `gsdc diff` finds, each change as its subject and how, between the
-/// corpus GSDML file `name` and the build of the description or draft its
-/// import made: cosmetic changes too, which are never E601.
+/// corpus GSDML file `name` and the build of the description its import
+/// wrote: cosmetic changes, which are never E601.
 fn round_trip_changes(name: &str, imported: &Imported) -> Vec<String> {
     let (_, gsdml) = built(
         "imported.toml",
-        as_imported(name, imported),
+        written(imported, name),
         ArtifactKind::Gsdml,
     );
     let old =
@@ -1485,16 +1488,6 @@ fn draft(imported: &Imported) -> &str {
         .draft
         .as_deref()
         .expect("the import builds another device")
-}
-
-/// What the import of the corpus GSDML file `name` wrote: FENA's
-/// description (its round trip clean since its PROFIsafe modules import),
-/// MOVI-C's draft.
-fn as_imported<'i>(name: &str, imported: &'i Imported) -> &'i str {
-    match name {
-        FENA => written(imported, name),
-        _ => draft(imported),
-    }
 }
 
 /// What an import wrote: its description, or its draft.
@@ -1663,7 +1656,7 @@ fn a_value_written_otherwise_than_the_file_is_marked_with_why() {
 fn movi_cs_stack_attributes_import() {
     let imported = corpus_import(MOVI_C);
     assert_says(
-        draft(&imported),
+        written(&imported, MOVI_C),
         &[
             "send_clock = [32, 64, 128]\npreferred_send_clock = 32\n",
             "gsdml_version = \"2.34\"\npnio_version = \"2.33\"\nrequired_schema_version = \"2.32\"\n",
@@ -1706,7 +1699,7 @@ fn movi_cs_stack_attributes_import() {
 fn movi_cs_profienergy_imports() {
     let imported = corpus_import(MOVI_C);
     assert_says(
-        draft(&imported),
+        written(&imported, MOVI_C),
         &["[profinet.profienergy]\nprofile_version = \"1.2\"\nentity_class = 1\nentity_subclass = 1\nase = true\npesap_uses_ase = true\nmodes = [\n  { id = 2, time_to_pause = 1000, regular_time_to_operate = 60000, min_length_of_stay = 60000 },\n  { id = 255, time_to_pause = 0, regular_time_to_operate = 0, min_length_of_stay = 0 },\n]\n"],
     );
     for code in ["E601", "W600"] {
@@ -1730,7 +1723,7 @@ fn movi_cs_profienergy_imports() {
 #[test]
 fn movi_cs_slots_and_empty_module_import() {
     let imported = corpus_import(MOVI_C);
-    let toml = draft(&imported);
+    let toml = written(&imported, MOVI_C);
     assert_says(
         toml,
         &[
@@ -1871,7 +1864,7 @@ fn an_attribute_of_a_later_version_than_the_files_is_left_out() {
 fn isochronous_real_time_and_mode_import_with_the_files_values() {
     let imported = corpus_import(MOVI_C);
     assert_says(
-        draft(&imported),
+        written(&imported, MOVI_C),
         &[
             "conformance_class = \"C\"",
             "[profinet.irt]\nmax_bridge_delay = 5500\nmax_number_ir_frame_data = 256\nforwarding_mode = [\"Relative\"]\nstartup_mode = [\"Advanced\", \"Legacy\"]\nsend_clock = [32, 64, 128]\nreduction_ratio = [1, 2, 4, 8, 16]\npreferred_send_clock = 32\nmax_local_jitter = 50\nt_pll_max = 1000\nport_tx_delay = 92\nport_rx_delay = 340\n",
@@ -2201,7 +2194,7 @@ fn channel_diagnosis_imports_with_its_texts() {
     assert!(diagnosis_changes.is_empty(), "{diagnosis_changes:#?}");
 
     let imported = corpus_import(MOVI_C);
-    let toml = draft(&imported);
+    let toml = written(&imported, MOVI_C);
     assert_eq!(toml.matches("[[profinet.channel_diagnosis]]\n").count(), 70);
     assert_eq!(
         toml.matches("[[profinet.channel_diagnosis.extended]]\n")
@@ -2740,39 +2733,40 @@ fn the_submodules_categories_import() {
 fn the_access_points_and_ports_records_import() {
     let access_point = "[[profinet.access_point_records]]\nindex = 8200\nname = { en = \"Alarm settings (head)\", de = \"Alarmeinstellungen (Kopf)\" }\n\n[[profinet.access_point_records.values]]\nname = { en = \"Enable diagnosis alarms\", de = \"Diagnose - Alarme aktivieren\" }\noffset = 0\nbits = 0\ndefault = 0\nchoices = [{ value = 0, text = { en = \"Off\", de = \"Aus\" } }, { value = 1, text = { en = \"On\", de = \"An\" } }]\n";
     let port = "[[profinet.port_records]]\nindex = 9001\nname = { en = \"Maintenance Required Alarms\", de = \"Maintenance Required Alarme\" }\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad rcvd packets' / min\", de = \"Schwellwert 'bad rcvd packets'/min\" }\noffset = 0\ntype = \"Unsigned32\"\ndefault = 10\nhelp = { en = \"Threshold to monitor 'bad received packets' within last minute\", de = \"Schwellwert zur Überwachung von 'bad received packets' innerhalb der letzten Minute\" }\n\n[[profinet.port_records.values]]\nname = { en = \"Threshold for 'bad sent packets' / min\", de = \"Schwellwert 'bad sent packets'/min\" }\noffset = 4\ntype = \"Unsigned32\"\ndefault = 10\nhelp = { en = \"Threshold to monitor 'bad sent packets' within last minute\", de = \"Schwellwert zur Überwachung von 'bad sent packets' innerhalb der letzten Minute\" }\n";
-    // A record's change, or a change of one of its parameters (its help),
-    // but for V4.0's record 8201, left out: its value allows 0 to 255 and
-    // names two of them.
-    let imported = assert_imported_and_kept(&[(MOVI_C, access_point), (MOVI_C, port)], |change| {
-        (change.starts_with("record ") || change.contains(" of record "))
-            && !change.starts_with("record 8201 ")
-    });
+    // V4.0's record 8201 (lines 307-312): one Unsigned8 without
+    // AllowedValues whose ValueItem (lines 1132-1138) names 0, 1 and 2
+    // (texts lines 7159-7161, 7286-7287, 9045-9047, 9174-9175). It allows
+    // those, as gsdc diff reads a Ref with a ValueItemTarget, and imports
+    // as a value with the three choices.
+    let webserver = "[[profinet.daps.access_point_records]]\nindex = 8201\nname = { en = \"Webserver\", de = \"Webserver\" }\n\n[[profinet.daps.access_point_records.values]]\nname = { en = \"Enable webserver\", de = \"Webserver aktivieren\" }\noffset = 0\ntype = \"Unsigned8\"\ndefault = 0\nchoices = [{ value = 0, text = { en = \"Keep device settings\", de = \"Geräteeinstellung beibehalten\" } }, { value = 1, text = { en = \"Webserver enabled (forced)\", de = \"Webserver aktiviert (forced)\" } }, { value = 2, text = { en = \"Webserver disabled (forced)\", de = \"Webserver deaktiviert (forced)\" } }]\n";
+    // No record's change, nor one of its parameters' (their help).
+    let imported = assert_imported_and_kept(
+        &[(MOVI_C, access_point), (MOVI_C, port), (MOVI_C, webserver)],
+        |change| change.starts_with("record ") || change.contains(" of record "),
+    );
     let left_out: Vec<&str> = messages(&imported[0], "W600")
         .into_iter()
         .filter(|m| m.starts_with("record "))
         .collect();
-    assert_eq!(left_out, ["record 8201 of the device access point is not imported: a value of it allows other values than its choices, which the description's choices are"]);
-    // V2.0's own submodule's records 9000 to 9005 and its ports' none, as
-    // V4.0's with its 8201 left out: the entries state them.
-    let toml = as_imported(MOVI_C, &imported[0]);
+    assert_eq!(left_out, Vec::<&str>::new());
+    // A choice its type cannot hold (300 of an Unsigned8) leaves it out.
+    let text = corpus_gsdml_text(MOVI_C).replacen(
+        r#"<Assign Content="2" TextId="WebserverForceDisable"/>"#,
+        r#"<Assign Content="300" TextId="WebserverForceDisable"/>"#,
+        1,
+    );
+    let imported_300 = import(MOVI_C, text.as_bytes());
+    assert!(messages(&imported_300, "W600").contains(&"record 8201 of the device access point is not imported: a choice of a value of it is not a value of its type"));
+    // V2.0's and V4.0's own submodule's records 9000 to 9005 and their
+    // ports' none: the entries state them.
+    let toml = written(&imported[0], MOVI_C);
     assert_eq!(
         toml.matches("[[profinet.daps.access_point_records]]\nindex = 9005\n")
             .count(),
         2
     );
     assert_eq!(toml.matches("port_records = []\n").count(), 2);
-    // MOVI-C with its first port's record 9002 taken out.
-    let text = corpus_gsdml_text(MOVI_C);
-    let start = text
-        .find("<ParameterRecordDataItem Index=\"9002\"")
-        .unwrap();
-    let end = start + text[start..].find("</ParameterRecordDataItem>").unwrap();
-    let without = format!(
-        "{}{}",
-        &text[..start],
-        &text[end + "</ParameterRecordDataItem>".len()..]
-    );
-    let imported = import(MOVI_C, without.as_bytes());
+    let imported = import(MOVI_C, movi_c_without_first_ports_9002().as_bytes());
     let left_out = messages(&imported, "W600");
     // 9002 too, which the other ports have.
     for index in [9000, 9001, 9002] {
@@ -2782,6 +2776,48 @@ fn the_access_points_and_ports_records_import() {
     let description = draft(&imported);
     assert!(!description.contains("port_records"), "{description}");
     assert!(description.contains("[[profinet.access_point_records]]"));
+}
+
+/// SEW's MOVI-C's F-modules (lines 406-515), which only its later access
+/// points offer (V1.0's UseableModules, lines 40-56, name neither), each
+/// with its submodule's record 8200 (lines 429 and 483), under access
+/// points that declare no FunctionalSafety class (lines 32, 151, 268):
+/// the first's modules are stated without them, the class is off, each
+/// F-module has its record, and the import's round trip is clean.
+#[test]
+fn movi_cs_safety_modules_import_under_its_later_access_points() {
+    let imported = corpus_import(MOVI_C);
+    let toml = written(&imported, MOVI_C);
+    let first_offers: Vec<String> = (1..=16).map(|n| format!("\"pzd{n}\"")).collect();
+    assert_says(
+        toml,
+        &[
+            &format!("\ndap_modules = [{}]\n", first_offers.join(", ")),
+            "functional_safety_class = false\n",
+            "[[profinet.safety_modules.records]]\nindex = 8200\nname = { en = \"Alarm settings (slot)\"",
+        ],
+    );
+    assert_eq!(
+        toml.matches("[[profinet.safety_modules.records]]").count(),
+        2
+    );
+    let r = imported.round_trip;
+    assert_eq!((r.breaking, r.compatible), (0, 0));
+}
+
+/// MOVI-C with its first port's record 9002 (lines 106-110) taken out,
+/// which leaves one line there: the lines after it come 4 earlier.
+fn movi_c_without_first_ports_9002() -> String {
+    let text = corpus_gsdml_text(MOVI_C);
+    let start = text
+        .find("<ParameterRecordDataItem Index=\"9002\"")
+        .unwrap();
+    let end = start + text[start..].find("</ParameterRecordDataItem>").unwrap();
+    format!(
+        "{}{}",
+        &text[..start],
+        &text[end + "</ParameterRecordDataItem>".len()..]
+    )
 }
 
 /// FENA's interface name (lines 62, 113, 167:
@@ -2817,17 +2853,14 @@ fn line_of(text: &str, offset: usize) -> usize {
 /// build is the same.
 #[test]
 fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
-    let imported = corpus_import(MOVI_C);
+    let text = movi_c_without_first_ports_9002();
+    let imported = import(MOVI_C, text.as_bytes());
     let toml = draft(&imported);
     assert!(toml.starts_with(&format!(
         "# A DRAFT (gsdc import --draft) of {MOVI_C}: its build is another device.\n"
     )));
     let changes = draft_list(toml, "changes");
-    let old = gsdc::device::read(
-        &support::corpus_file(&format!("gsdml/{MOVI_C}")),
-        Some(MOVI_C),
-    )
-    .unwrap();
+    let old = gsdc::device::read(text.as_bytes(), Some(MOVI_C)).unwrap();
     let (_, gsdml) = built("imported.toml", toml, ArtifactKind::Gsdml);
     let new = gsdc::device::read(gsdml.as_bytes(), Some(MOVI_C)).unwrap();
     let found: Vec<String> = gsdc::diff::compare(&old, &new)
@@ -2845,27 +2878,24 @@ fn a_draft_lists_each_change_of_its_build_and_each_part_left_out() {
     assert_eq!(changes, found);
     let r = imported.round_trip;
     assert_eq!(changes.len(), r.breaking + r.compatible);
-    // Line 307 of the file, read by hand: the record 8201 of the third
-    // access point's own submodule, whose value allows 0 to 255 and names
-    // two of them, the one change left.
-    let line = r#":307: record 8201 "Webserver" of submodule "DFC2xA V4.0" (0x00000001) of DAP "DFC2xA V4.0" (0x00007532) (breaking): removed"#;
-    assert_eq!(changes, [format!("{MOVI_C}{line}")]);
-    // What took the rest off: the first access point's modules without
-    // the F-modules only the later ones offer, no FunctionalSafety class,
-    // each F-module's record 8200 (lines 429 and 483).
-    let first_offers: Vec<String> = (1..=16).map(|n| format!("\"pzd{n}\"")).collect();
-    assert_says(
-        toml,
-        &[
-            &format!("\ndap_modules = [{}]\n", first_offers.join(", ")),
-            "functional_safety_class = false\n",
-            "[[profinet.safety_modules.records]]\nindex = 8200\nname = { en = \"Alarm settings (slot)\"",
-        ],
-    );
-    assert_eq!(
-        toml.matches("[[profinet.safety_modules.records]]").count(),
-        2
-    );
+    // Read by hand: the ports' records can no longer be said, so those of
+    // the first access point's ports are gone (its later ones have none):
+    // port 1's 9000 and 9001 (lines 95 and 100), port 2's 9000 to 9002
+    // (lines 119, 124, 130 of the file, 115, 120, 126 with 9002 cut).
+    let removed = [
+        (95, 9000, "Alarmsettings (monitoring)", 1),
+        (100, 9001, "Maintenance Required Alarms", 1),
+        (115, 9000, "Alarmsettings (monitoring)", 2),
+        (120, 9001, "Maintenance Required Alarms", 2),
+        (126, 9002, "Maintenance Demanded Alarms", 2),
+    ];
+    let expected: Vec<String> = removed
+        .iter()
+        .map(|(line, index, name, port)| {
+            format!("{MOVI_C}:{line}: record {index} \"{name}\" of port \"Port {port} - RJ45 (X4233_{port})\" at subslot 0x800{port} (0x0000000{}) of DAP \"DFC2xA V1.0\" (0x00007532) (breaking): removed", port + 2)
+        })
+        .collect();
+    assert_eq!(changes, expected);
     let source = &imported.text;
     let w600: Vec<String> = imported
         .diagnostics
@@ -2949,7 +2979,7 @@ fn a_draft_of_two_files_names_the_file_of_each_change() {
     }
 }
 
-/// `--draft`: a file whose import builds another device (SEW's MOVI-C) is
+/// `--draft`: a file whose import builds another device (Siemens' IM174) is
 /// written as a draft (with its symbol's PNG, MD810's), and the command
 /// still exits 1;
 /// without `--draft` the refusal says the option is there. A build of the
@@ -2958,9 +2988,10 @@ fn a_draft_of_two_files_names_the_file_of_each_change() {
 #[test]
 fn the_draft_option_writes_what_would_be_refused_as_a_draft() {
     let dir = support::scratch("draft");
-    let movi_c = support::shared(&format!("corpus/gsdml/{MOVI_C}"));
-    let out = dir.join("movi-c.toml");
-    let refused = run_import(&movi_c, &out);
+    let name = "ivangre4__SI018133.GSE";
+    let im174 = support::shared(&format!("corpus/gsd/{name}"));
+    let out = dir.join("im174.toml");
+    let refused = run_import(&im174, &out);
     assert_eq!(refused.status.code(), Some(1));
     assert!(support::stderr(&refused).contains("with `--draft` it is written as a draft"));
     assert!(!out.exists());
@@ -2973,14 +3004,14 @@ fn the_draft_option_writes_what_would_be_refused_as_a_draft() {
             out.as_os_str(),
         ])
     };
-    let drafted = import(&movi_c, &out);
+    let drafted = import(&im174, &out);
     assert_eq!(drafted.status.code(), Some(1));
     assert!(
-        support::stderr(&drafted).contains("movi-c.toml is a draft: its build is another device")
+        support::stderr(&drafted).contains("im174.toml is a draft: its build is another device")
     );
     let text = std::fs::read_to_string(&out).unwrap();
-    assert!(text.starts_with(&format!("# A DRAFT (gsdc import --draft) of {MOVI_C}: ")));
-    let library = corpus_import(MOVI_C);
+    assert!(text.starts_with(&format!("# A DRAFT (gsdc import --draft) of {name}: ")));
+    let library = corpus_gsd_import(name);
     assert_eq!(
         draft_list(&text, "changes"),
         draft_list(draft(&library), "changes")

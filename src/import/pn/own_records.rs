@@ -269,20 +269,23 @@ fn value(field: &Field) -> Result<(Keys, u32), &'static str> {
 
 /// What a value holds, as the description says it: its choices, whose
 /// values must be exactly those it allows; else its range, when less than
-/// its type's values.
+/// its type's values. Without AllowedValues a value with choices allows
+/// those (as gsdc diff and the other imports read a ValueItemTarget), one
+/// without allows every value of its type.
 fn holds(field: &Field, most: i128) -> Result<Option<(&'static str, String)>, &'static str> {
     let allowed = match &field.allowed {
-        Allowed::Any => vec![(0, most)],
+        Allowed::Any if !field.choices.is_empty() => None,
+        Allowed::Any => Some(vec![(0, most)]),
         Allowed::Ranges(ranges) => {
             let ints = ranges.iter().map(|(low, high)| match (low, high) {
                 (Value::Int(low), Value::Int(high)) => Ok((*low, *high)),
                 _ => Err("a value of it allows values that are not whole numbers"),
             });
-            ints.collect::<Result<Vec<_>, _>>()?
+            Some(ints.collect::<Result<Vec<_>, _>>()?)
         }
     };
     if field.choices.is_empty() {
-        return match allowed[..] {
+        return match *allowed.as_deref().unwrap_or_default() {
             [(0, high)] if high == most => Ok(None),
             [(low, high)] if 0 <= low && low <= high && high <= most => {
                 Ok(Some(("range", format!("[{low}, {high}]"))))
@@ -302,10 +305,16 @@ fn holds(field: &Field, most: i128) -> Result<Option<(&'static str, String)>, &'
             text(&choice.text)
         ));
     }
-    let allows = |v: i128| allowed.iter().any(|&(low, high)| (low..=high).contains(&v));
-    let count: i128 = allowed.iter().map(|(low, high)| high - low + 1).sum();
     values.sort_unstable();
     values.dedup();
+    let Some(allowed) = allowed else {
+        return match values.iter().all(|v| (0..=most).contains(v)) {
+            true => Ok(Some(("choices", list(choices)))),
+            false => Err("a choice of a value of it is not a value of its type"),
+        };
+    };
+    let allows = |v: i128| allowed.iter().any(|&(low, high)| (low..=high).contains(&v));
+    let count: i128 = allowed.iter().map(|(low, high)| high - low + 1).sum();
     if !values.iter().all(|&v| allows(v)) || i128::try_from(values.len()) != Ok(count) {
         return Err("a value of it allows other values than its choices, which the description's choices are");
     }
