@@ -429,10 +429,7 @@ impl Findings {
     /// how many more there are: a hostile description can have a hundred
     /// thousand, and the first hundred say what is wrong.
     pub fn rendered(&self, max: usize) -> Vec<String> {
-        let source = Source {
-            name: &self.name,
-            text: &self.text,
-        };
+        let source = Source::new(&self.name, &self.text);
         let mut out: Vec<String> = self
             .diagnostics
             .iter()
@@ -456,10 +453,7 @@ impl Findings {
     }
 
     fn cargo_warnings(&self) {
-        let source = Source {
-            name: &self.name,
-            text: &self.text,
-        };
+        let source = Source::new(&self.name, &self.text);
         for warning in self.warnings() {
             println!("cargo:warning={}", source.one_line(warning));
         }

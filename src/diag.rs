@@ -5,6 +5,7 @@
 //! a label shown under the caret and a help line. Rendering is rustc-style for
 //! people and JSON lines for tools.
 
+use std::cell::OnceCell;
 use std::fmt::Write as _;
 use std::ops::Range;
 use unicode_width::UnicodeWidthChar;
@@ -209,20 +210,44 @@ impl InputLimit {
 }
 
 /// A named source text, so that spans can be turned into lines and columns.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Source<'a> {
     pub name: &'a str,
     pub text: &'a str,
+    /// Where each line of `text` starts, found when the first place is
+    /// asked for: a file of many diagnostics is read once for their lines,
+    /// not once each (an import renders dozens far into a megabyte).
+    lines: OnceCell<Lines>,
 }
 
-/// 1-based line and column (in characters) of a byte offset.
+/// Byte offsets where the lines of a text start: the line of any offset
+/// without reading the text again.
+#[derive(Debug, Clone)]
+pub(crate) struct Lines(Vec<usize>);
+
+impl Lines {
+    /// memchr's vectorized search: a line at a time with `str`'s own search
+    /// took a sixth of reading the device of the largest GSDML files.
+    pub(crate) fn of(text: &str) -> Lines {
+        let breaks = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1);
+        Lines(std::iter::once(0).chain(breaks).collect())
+    }
+
+    /// The 1-based line of a byte offset.
+    pub(crate) fn line(&self, offset: usize) -> u32 {
+        self.0.partition_point(|&start| start <= offset) as u32
+    }
+
+    /// Where a 1-based line starts.
+    fn start(&self, line: u32) -> usize {
+        self.0[line as usize - 1]
+    }
+}
+
+/// 1-based line and column (in characters) of a byte offset; for many
+/// offsets of one text, [`Source::line_col`] reads its lines once.
 pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = floor_char_boundary(text, offset.min(text.len()));
-    let before = &text[..offset];
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let column = text[line_start..offset].chars().count() + 1;
-    (line, column)
+    Source::new("", text).line_col(offset)
 }
 
 fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
@@ -232,13 +257,30 @@ fn floor_char_boundary(text: &str, mut offset: usize) -> usize {
     offset
 }
 
-impl Source<'_> {
+impl<'a> Source<'a> {
+    pub fn new(name: &'a str, text: &'a str) -> Self {
+        Source {
+            name,
+            text,
+            lines: OnceCell::new(),
+        }
+    }
+
+    /// [`line_col`] of a byte offset of the text.
+    pub fn line_col(&self, offset: usize) -> (usize, usize) {
+        let offset = floor_char_boundary(self.text, offset.min(self.text.len()));
+        let lines = self.lines.get_or_init(|| Lines::of(self.text));
+        let line = lines.line(offset);
+        let column = self.text[lines.start(line)..offset].chars().count() + 1;
+        (line as usize, column)
+    }
+
     /// `file:line:column` of the diagnostic's span, or just the file name,
     /// as a terminal is shown it ([`shown`]).
     pub fn location(&self, diagnostic: &Diagnostic) -> String {
         match &diagnostic.span {
             Some(span) => {
-                let (line, column) = line_col(self.text, span.start);
+                let (line, column) = self.line_col(span.start);
                 format!("{}:{line}:{column}", shown(self.name))
             }
             None => shown(self.name),
@@ -298,7 +340,7 @@ impl Source<'_> {
         marker: &str,
         label: Option<&str>,
     ) -> String {
-        let (line, column) = line_col(self.text, span.start);
+        let (line, column) = self.line_col(span.start);
         let gutter = line.to_string().len();
         let pad = " ".repeat(gutter);
         let _ = writeln!(out, "{pad}{marker} {}:{line}:{column}", shown(self.name));
@@ -428,6 +470,26 @@ mod tests {
         assert_eq!(line_col(text, 0), (1, 1));
     }
 
+    /// Each offset's place, counted by hand: at a line's start and end,
+    /// inside a character (its start's place), past the end (the end's).
+    #[test]
+    fn a_sources_places_count_lines_and_characters() {
+        let text = "\nab\r\n中文 é\n\nlast";
+        let source = Source::new("x", text);
+        let places: Vec<(usize, usize)> =
+            (0..=text.len() + 1).map(|o| source.line_col(o)).collect();
+        #[rustfmt::skip]
+        let expected = [
+            (1, 1), // the first line, empty
+            (2, 1), (2, 2), (2, 3), (2, 4), // a, b, \r, \n
+            (3, 1), (3, 1), (3, 1), (3, 2), (3, 2), (3, 2), // 中 and 文, 3 bytes each
+            (3, 3), (3, 4), (3, 4), (3, 5), // blank, é (2 bytes), \n
+            (4, 1), // the empty line
+            (5, 1), (5, 2), (5, 3), (5, 4), (5, 5), (5, 5), // last, its end, past it
+        ];
+        assert_eq!(places, expected);
+    }
+
     /// Chinese characters take two columns, a combining mark none: the
     /// caret stands under the span as a terminal shows the line.
     #[test]
@@ -435,11 +497,7 @@ mod tests {
         let text = "name = \"汇川e\u{301}\" x\n";
         let x = text.find('x').unwrap();
         let d = Diagnostic::error("E003", "m").at(x..x + 1).label("here");
-        let rendered = Source {
-            name: "x.toml",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.toml", text).render(&d);
         let lines: Vec<&str> = rendered.lines().collect();
         let caret = lines[4].find('^').unwrap();
         let gutter = lines[3].find('|').unwrap() + 2;
@@ -455,20 +513,12 @@ mod tests {
         let text = "Ident_Number\t=\t0x12345\r\n";
         let start = text.find("0x").unwrap();
         let d = Diagnostic::error("E208", "m").at(start..start + 7);
-        let rendered = Source {
-            name: "x.gsd",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.gsd", text).render(&d);
         let lines: Vec<&str> = rendered.lines().collect();
         assert_eq!(lines[3], "1 | Ident_Number = 0x12345", "{rendered}");
         assert_eq!(lines[4], format!("  | {}^^^^^^^", " ".repeat(15)));
         let d = Diagnostic::error("E208", "m").at(start - 2..start + 7);
-        let rendered = Source {
-            name: "x.gsd",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.gsd", text).render(&d);
         assert!(rendered.contains(&format!("  | {}^^^^^^^^^\n", " ".repeat(13))));
     }
 
@@ -482,11 +532,7 @@ mod tests {
             .at(0..text.find(" =").unwrap())
             .label("not \u{1b}[2J known")
             .help("did you mean `X\u{2066}`?");
-        let rendered = Source {
-            name: "a\u{1b}]0;title\u{7}.gsd",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("a\u{1b}]0;title\u{7}.gsd", text).render(&d);
         assert!(
             !rendered
                 .chars()
@@ -516,11 +562,7 @@ mod tests {
             "E411",
             format!("`{digits}` has 131073 hex digits: a byte is two"),
         );
-        let rendered = Source {
-            name: "HEX",
-            text: &digits,
-        }
-        .render(&d);
+        let rendered = Source::new("HEX", &digits).render(&d);
         assert!(rendered.len() < 2 * MAX_SHOWN_TEXT, "{}", rendered.len());
         let headline = rendered.lines().next().unwrap();
         assert!(headline.starts_with("error[E411]: `AAAA"), "{headline}");
@@ -539,11 +581,7 @@ mod tests {
             .at(start..start + 2)
             .label("expected a string")
             .help("write vendor = \"Name\"");
-        let rendered = Source {
-            name: "x.toml",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.toml", text).render(&d);
         assert_eq!(
             rendered,
             "error[E003]: wrong type\n --> x.toml:2:10\n  |\n2 | vendor = 42\n  |          ^^ expected a string\n  = help: write vendor = \"Name\"\n"
@@ -561,11 +599,7 @@ mod tests {
             .label("this one")
             .also_at(first..first + 1, "and this one")
             .help("move one");
-        let rendered = Source {
-            name: "x.toml",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.toml", text).render(&d);
         assert_eq!(
             rendered,
             "error[E105]: two records at index 1\n --> x.toml:4:9\n  |\n4 | index = 1\n  |         ^ this one\n ::: x.toml:2:9\n  |\n2 | first = 0\n  |         ^ and this one\n  = help: move one\n"
@@ -577,11 +611,7 @@ mod tests {
         let text = "name = { zh = \"名称（中文）\", en = 42 }\n";
         let start = text.find("42").unwrap();
         let d = Diagnostic::error("E003", "wrong type").at(start..start + 2);
-        let rendered = Source {
-            name: "x.toml",
-            text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.toml", text).render(&d);
         let lines: Vec<&str> = rendered.lines().collect();
         assert_eq!(lines[3], "1 | name = { zh = \"名称（中文）\", en = 42 }");
         // 15 narrow characters, 6 wide ones, 8 narrow: "42" 35 columns in.
@@ -589,7 +619,7 @@ mod tests {
         // A span over wide characters is as wide as they are drawn.
         let start = text.find('名').unwrap();
         let d = Diagnostic::error("E003", "x").at(start..start + "名称".len());
-        let rendered = Source { name: "x", text }.render(&d);
+        let rendered = Source::new("x", text).render(&d);
         assert!(
             rendered.contains(&format!("  | {}^^^^\n", " ".repeat(15))),
             "{rendered}"
@@ -605,11 +635,7 @@ mod tests {
         );
         let start = text.find("PPO7").unwrap() - 1;
         let d = Diagnostic::error("E104", "not a PPO type").at(start..start + 6);
-        let rendered = Source {
-            name: "x.toml",
-            text: &text,
-        }
-        .render(&d);
+        let rendered = Source::new("x.toml", &text).render(&d);
         assert!(rendered.len() < 600, "{rendered}");
         let lines: Vec<&str> = rendered.lines().collect();
         let caret = lines[4].find('^').unwrap();

@@ -19,6 +19,32 @@ pub fn is_unsafe(c: char) -> bool {
         || code & 0xFFFE == 0xFFFE
 }
 
+/// The first character of `s` that is unsafe ([`is_unsafe`]) and that
+/// `allowed` does not let through. Printable ASCII, nearly every byte of a
+/// device file's texts, is passed over a byte at a time without decoding.
+pub fn first_unsafe(s: &str, allowed: impl Fn(char) -> bool) -> Option<char> {
+    let mut at = 0;
+    while let Some(skip) = s.as_bytes()[at..]
+        .iter()
+        .position(|b| !is_printable_ascii(*b))
+    {
+        at += skip;
+        // A byte that is not printable ASCII starts a character here.
+        let c = s[at..].chars().next()?;
+        if is_unsafe(c) && !allowed(c) {
+            return Some(c);
+        }
+        at += c.len_utf8();
+    }
+    None
+}
+
+/// A byte that is a printable ASCII character on its own: no escape, no
+/// control, no part of a longer UTF-8 sequence.
+pub fn is_printable_ascii(b: u8) -> bool {
+    (0x20..0x7F).contains(&b)
+}
+
 /// What a terminal is shown for `c` when `c` is unsafe ([`is_unsafe`]),
 /// written as JSON writes it (`\n`, `\r`, `\t`, `\u001b`, `\u202e`);
 /// `None` when `c` is shown as it is. The one escaping of gsdc's terminal
@@ -65,5 +91,18 @@ mod tests {
         assert_eq!(escape("x\u{202E}lmx.dsg"), "x\\u202elmx.dsg");
         assert_eq!(escape("\u{061C}\u{2066}\u{2028}"), "\\u061c\\u2066\\u2028");
         assert_eq!(escape("\u{FFFE}\u{FDD0}"), "\\ufffe\\ufdd0");
+    }
+
+    #[test]
+    fn the_first_unsafe_character_is_found_past_printable_and_other_text() {
+        let none = |_| false;
+        assert_eq!(first_unsafe("Drehzahl – Sollwert ± 中", none), None);
+        assert_eq!(first_unsafe("x\u{7f}y", none), Some('\u{7f}'));
+        assert_eq!(first_unsafe("ä\u{85}", none), Some('\u{85}'));
+        assert_eq!(first_unsafe("ab\u{202E}c\u{1b}", none), Some('\u{202E}'));
+        assert_eq!(first_unsafe("end\u{FFFF}", none), Some('\u{FFFF}'));
+        // What `allowed` lets through is passed over.
+        assert_eq!(first_unsafe("two\nlines\t", |c| c == '\n'), Some('\t'));
+        assert_eq!(first_unsafe("two\nlines", |c| c == '\n'), None);
     }
 }

@@ -16,7 +16,7 @@ fn findings(folder: &str, name: &str) -> String {
         let diagnostics = gsdc::gsd::check(&text);
         (text, diagnostics)
     };
-    let source = Source { name, text: &text };
+    let source = Source::new(name, &text);
     diagnostics.iter().map(|d| source.render(d)).collect()
 }
 

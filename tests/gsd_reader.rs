@@ -81,10 +81,7 @@ fn every_corpus_file_has_only_the_known_findings() {
         let text = gsd::decode(&bytes);
         for d in gsd::check(&text).iter() {
             *found.entry((name.clone(), d.code)).or_default() += 1;
-            let source = gsdc::Source {
-                name: &name,
-                text: &text,
-            };
+            let source = gsdc::Source::new(&name, &text);
             rendered.push_str(&source.render(d));
         }
     }

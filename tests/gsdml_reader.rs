@@ -83,7 +83,7 @@ fn codes(diagnostics: &[Diagnostic]) -> BTreeMap<&'static str, usize> {
 }
 
 fn render(name: &str, text: &str, diagnostics: &[Diagnostic]) -> String {
-    let source = gsdc::Source { name, text };
+    let source = gsdc::Source::new(name, text);
     diagnostics.iter().map(|d| source.render(d)).collect()
 }
 

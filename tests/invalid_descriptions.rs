@@ -41,10 +41,8 @@ fn each_invalid_description_is_rejected_with_its_code() {
                 );
                 assert!(d.help.is_some(), "{name}: {} has no help", d.code);
             }
-            let source = Source {
-                name: &format!("tests/fixtures/invalid/{name}"),
-                text: &text,
-            };
+            let path = format!("tests/fixtures/invalid/{name}");
+            let source = Source::new(&path, &text);
             let rendered: String = diagnostics.iter().map(|d| source.render(d)).collect();
             insta::assert_snapshot!(name.trim_end_matches(".toml"), rendered);
         }

@@ -283,7 +283,7 @@ fn neither(name: &str, format: Format) -> Report {
     let output = match format {
         Format::Human => format!("error[E400]: {name} is {}: not checked", diagnostic.message),
         Format::Json => {
-            let source = Source { name, text: "" };
+            let source = Source::new(name, "");
             format!(
                 "{}\n{}",
                 super::json::finding(&source, &diagnostic),
@@ -301,7 +301,7 @@ fn neither(name: &str, format: Format) -> Report {
 /// The findings as they are printed: at most [`MAX_SHOWN`], rendered or as
 /// JSON lines, and the summary.
 fn render(name: &str, text: &str, diagnostics: &Diagnostics, format: Format) -> Report {
-    let source = Source { name, text };
+    let source = Source::new(name, text);
     let errors = diagnostics.errors().count();
     let warnings = diagnostics.iter().count() - errors;
     let shown = diagnostics.iter().take(MAX_SHOWN);

@@ -174,7 +174,7 @@ fn mapping_options(ir: &Ir, options: &[String]) -> Result<MappingInForce, Refuse
 fn in_argument<T>(name: &str, text: &str, result: Result<T, Diagnostic>) -> Result<T, Refused> {
     result.map_err(|diagnostic| {
         Refused(
-            Source { name, text }
+            Source::new(name, text)
                 .render(&diagnostic)
                 .trim_end()
                 .to_string(),

@@ -185,10 +185,7 @@ fn read(path: &Path) -> Result<Vec<u8>, Status> {
 
 /// The diagnostics, then one line: what was left out and the round trip.
 fn report(name: &str, imported: &Imported) {
-    let source = Source {
-        name,
-        text: &imported.text,
-    };
+    let source = Source::new(name, &imported.text);
     // Errors first: they say why nothing was written, and a file of many
     // keywords the description has no place for must not hide them. Nor
     // may a round trip of many changes hide what was left out, which

@@ -1,7 +1,7 @@
 //! `--format json`: one object per finding and one per file, through
 //! serde_json, each on one line.
 
-use crate::diag::{line_col, Diagnostic, Source};
+use crate::diag::{Diagnostic, Source};
 use serde::Serialize;
 
 /// A finding with its place as line and column (1-based), `null` where it
@@ -42,7 +42,7 @@ pub fn finding(source: &Source, d: &Diagnostic) -> String {
     let (line, column) = d
         .span
         .as_ref()
-        .map(|span| line_col(source.text, span.start))
+        .map(|span| source.line_col(span.start))
         .unzip();
     to_line(&Finding {
         file: source.name,
@@ -55,7 +55,7 @@ pub fn finding(source: &Source, d: &Diagnostic) -> String {
         label: d.label.as_deref(),
         help: d.help.as_deref(),
         also: d.also().map(|also| {
-            let (line, column) = line_col(source.text, also.span.start);
+            let (line, column) = source.line_col(also.span.start);
             AlsoAt {
                 line,
                 column,
@@ -102,19 +102,13 @@ mod tests {
     #[test]
     fn a_finding_is_one_line_with_quotes_and_controls_escaped() {
         let d = Diagnostic::warning("W101", "a \"b\"\u{1}").help("x\ny");
-        let source = Source {
-            name: "f\tg",
-            text: "",
-        };
+        let source = Source::new("f\tg", "");
         assert_eq!(
             finding(&source, &d),
             "{\"file\":\"f\\tg\",\"line\":null,\"column\":null,\"severity\":\"warning\",\"code\":\"W101\",\"subject\":null,\"message\":\"a \\\"b\\\"\\u0001\",\"label\":null,\"help\":\"x\\ny\"}"
         );
         let d = Diagnostic::error("E101", "m").at(4..5);
-        let source = Source {
-            name: "f",
-            text: "ab\ncd\n",
-        };
+        let source = Source::new("f", "ab\ncd\n");
         assert!(finding(&source, &d).contains("\"line\":2,\"column\":2,"));
     }
 

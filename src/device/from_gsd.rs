@@ -3,7 +3,8 @@
 use std::ops::Range;
 
 use super::dp::{DiagArea, DiagBit, DiagType, DiagValue, DpDevice, DpModule, DpSlot, Keyword};
-use super::{Allowed, Bits, Choice, ConstBytes, Field, Lines, ParameterData, Place, Text, Value};
+use super::{Allowed, Bits, Choice, ConstBytes, Field, ParameterData, Place, Text, Value};
+use crate::diag::Lines;
 use crate::gsd::prm::{self, Family};
 use crate::gsd::{
     self, Arg, ExtUserPrmData, GsdFile, IndexedText, PrmDataType, Setting, UnitDiagArea,

@@ -14,9 +14,10 @@ use super::pn::{
     SubmoduleKind, UnitDiag,
 };
 use super::{
-    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, ElementPath, Field, Lines,
+    Allowed, Attribute, AttributeValue, Bits, Choice, ConstBytes, ElementPath, Field,
     ParameterData, Place, Text, Value,
 };
+use crate::diag::Lines;
 use crate::gsdml::tree::{child, children, in_gsdml, Node, NodeId, Tree};
 
 const XML_NAMESPACE: &str = "http://www.w3.org/XML/1998/namespace";

@@ -420,19 +420,3 @@ impl fmt::Display for AttributeValue {
         }
     }
 }
-
-/// Byte offsets where lines start, to give each fact its line.
-struct Lines(Vec<usize>);
-
-impl Lines {
-    /// memchr's vectorized search: a line at a time with `str`'s own search
-    /// took a sixth of reading the device of the largest GSDML files.
-    fn of(text: &str) -> Lines {
-        let breaks = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1);
-        Lines(std::iter::once(0).chain(breaks).collect())
-    }
-
-    fn line(&self, offset: usize) -> u32 {
-        self.0.partition_point(|&start| start <= offset) as u32
-    }
-}

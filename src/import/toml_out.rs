@@ -105,17 +105,28 @@ impl TomlOut {
 pub(super) fn quote(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 2);
     out.push('"');
-    // The runs between escapes are copied whole: a large file has a
-    // megabyte of texts, most of them without any.
-    let mut run = 0;
-    for (at, c) in text.char_indices() {
+    // The runs between escapes are copied whole, and printable ASCII is
+    // passed over by byte: a large file has a megabyte of texts, most of
+    // them without any escape.
+    let needs_look = |b: &u8| !crate::unicode::is_printable_ascii(*b) || matches!(b, b'"' | b'\\');
+    let (mut run, mut at) = (0, 0);
+    while let Some(skip) = text.as_bytes()[at..].iter().position(needs_look) {
+        at += skip;
+        // Every byte passed over was ASCII: a character starts here.
+        let Some(c) = text[at..].chars().next() else {
+            break;
+        };
+        let next = at + c.len_utf8();
         let short = match c {
             '"' => Some("\\\""),
             '\\' => Some("\\\\"),
             '\n' => Some("\\n"),
             '\t' => Some("\\t"),
             c if c.is_control() => None,
-            _ => continue,
+            _ => {
+                at = next;
+                continue;
+            }
         };
         out.push_str(&text[run..at]);
         match short {
@@ -124,7 +135,7 @@ pub(super) fn quote(text: &str) -> String {
                 let _ = write!(out, "\\u{:04X}", u32::from(c));
             }
         }
-        run = at + c.len_utf8();
+        (run, at) = (next, next);
     }
     out.push_str(&text[run..]);
     out.push('"');

@@ -6,7 +6,7 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::i18n::{files, Lang, Phrase};
 use crate::ir::decision::DecisionWords;
 use crate::ir::{self, Decision, DecisionKind};
-use crate::unicode::is_unsafe;
+use crate::unicode::{first_unsafe, is_unsafe};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 use toml::Spanned;
@@ -250,7 +250,7 @@ impl Checker {
                     .help(format!("write the {what}")),
             );
         }
-        let Some(bad) = s.chars().find(|&c| is_unsafe(c) && !lines.allows(c)) else {
+        let Some(bad) = first_unsafe(s, |c| lines.allows(c)) else {
             return !empty;
         };
         self.push(
@@ -620,13 +620,13 @@ pub fn is_gsd_char(c: char, latin1: bool) -> bool {
 /// Whether [`Checker::non_empty`] takes `s`: what it refused is not checked
 /// again.
 pub fn is_clean(s: &str) -> bool {
-    !s.trim().is_empty() && !s.chars().any(is_unsafe)
+    !s.trim().is_empty() && first_unsafe(s, |_| false).is_none()
 }
 
 /// [`is_clean`], line breaks allowed: what
 /// [`Checker::text_of_lines_allowed`] takes.
 pub fn is_clean_lines(s: &str) -> bool {
-    !s.trim().is_empty() && !s.chars().any(|c| is_unsafe(c) && !Lines::Many.allows(c))
+    !s.trim().is_empty() && first_unsafe(s, |c| Lines::Many.allows(c)).is_none()
 }
 
 /// A character as a message shows it: itself in backticks when it prints,
