@@ -242,6 +242,11 @@ impl Lines {
     fn start(&self, line: u32) -> usize {
         self.0[line as usize - 1]
     }
+
+    /// Where each line starts, the first at 0.
+    pub(crate) fn starts(&self) -> &[usize] {
+        &self.0
+    }
 }
 
 /// 1-based line and column (in characters) of a byte offset; for many

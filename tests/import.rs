@@ -1783,6 +1783,28 @@ fn a_module_in_other_slots_than_the_others_is_left_out_there() {
     );
 }
 
+/// MOVI-C's text under a V2.33 name: its later access points (PNIO_Version
+/// V2.34, lines 145 and 262) are left out, and with them the F-modules
+/// only they offer (lines 406 and 460), each with why, where the
+/// description would have listed them in no catalogue entry (E183): the
+/// draft builds, without safety modules.
+#[test]
+fn a_safety_module_only_left_out_access_points_offer_is_left_out() {
+    let imported = movi_c_named("V2.33");
+    let w600 = messages(&imported, "W600");
+    for dap in ["DFC2xA V2.0", "DFC2xA V4.0"] {
+        let left_out = format!("device access point `{dap}` is not imported: its PNIO_Version");
+        assert!(w600.iter().any(|m| m.starts_with(&left_out)), "{w600:#?}");
+    }
+    for module in ["FPD_DS_4_3Byte_InOut", "FPD_DS_4_3Byte_V2_InOut"] {
+        let left_out = format!("module `{module}` is not imported: only device access points the import leaves out offer it, and a module no device access point offers is in no catalogue entry (E183)");
+        assert!(w600.contains(&left_out.as_str()), "{w600:#?}");
+    }
+    let toml = draft(&imported);
+    assert!(!toml.contains("[[profinet.safety_modules]]"));
+    built("imported.toml", toml, ArtifactKind::Gsdml);
+}
+
 /// PROFIenergy in a file of a version gsdc does not write it in (MOVI-C's
 /// text under a V2.33 name) is left out once, at its element, with why;
 /// the access point's `PROFIenergyASE_Supported` and its `EnergySaving`

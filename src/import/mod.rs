@@ -25,7 +25,7 @@ pub use both::{import_both, Both};
 pub use symbol::ImportedSymbol;
 
 use crate::device::{Device, Place};
-use crate::diag::{Diagnostic, Diagnostics};
+use crate::diag::{Diagnostic, Diagnostics, Lines};
 use crate::diff::{Change, Class};
 
 /// What an import gives: the description (none when refused or when it
@@ -227,7 +227,7 @@ const REFUSED_HELP: &str = "gsdc import takes a drive option card's GSD or GSDML
 /// The diagnostics of one import, each at a line of the file.
 struct Notes {
     text: String,
-    lines: Vec<usize>,
+    lines: Lines,
     diagnostics: Diagnostics,
     unsaid: usize,
     /// The keys whose value the import chose, with why: each is marked
@@ -273,10 +273,14 @@ impl Notes {
         }
     }
 
+    /// Notes of a trial run, whose findings are dropped.
+    fn scratch() -> Notes {
+        Notes::new(String::new())
+    }
+
     fn new(text: String) -> Notes {
-        let starts = memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1);
         Notes {
-            lines: std::iter::once(0).chain(starts).collect(),
+            lines: Lines::of(&text),
             text,
             diagnostics: Diagnostics::default(),
             unsaid: 0,
@@ -289,9 +293,9 @@ impl Notes {
     /// The span of a place's line, without its line end.
     fn span(&self, place: &Place) -> Option<std::ops::Range<usize>> {
         let index = usize::try_from(place.line).ok()?.checked_sub(1)?;
-        let start = *self.lines.get(index)?;
-        let end = self
-            .lines
+        let starts = self.lines.starts();
+        let start = *starts.get(index)?;
+        let end = starts
             .get(index + 1)
             .map_or(self.text.len(), |&next| next.saturating_sub(1));
         Some(start..end.max(start))
@@ -301,7 +305,8 @@ impl Notes {
     /// order: where gsdc's own GSD says in words what no keyword can.
     fn comments_above(&self, place: &Place) -> Vec<&str> {
         let index = usize::try_from(place.line).unwrap_or(0).saturating_sub(1);
-        let mut comments: Vec<&str> = self.lines[..index.min(self.lines.len())]
+        let starts = self.lines.starts();
+        let mut comments: Vec<&str> = starts[..index.min(starts.len())]
             .iter()
             .rev()
             .map(|&start| self.text[start..].lines().next().unwrap_or_default().trim())

@@ -184,9 +184,9 @@ pub(super) fn describe(
     taken.extend(modules.iter().filter_map(|m| m.module.ident));
     let empty = slots::empty_module(device, dap, &taken, notes);
     taken.extend(empty.as_ref().and_then(|e| e.module.ident));
-    let safety = safety::safety_modules(device, &mut taken, notes);
+    let every_safety = safety::safety_modules(device, &mut taken, notes);
     let module_slots = slots::module_slots(dap, &modules, notes);
-    let placed = stack::Placed {
+    let placed_with = |safety: &[safety::Safety]| stack::Placed {
         module_slots,
         empty: empty.as_ref().map(|e| Offer::empty(e.slots)),
         safety: safety
@@ -194,20 +194,45 @@ pub(super) fn describe(
             .map(|s| (s.id().to_string(), s.offer()))
             .collect(),
     };
-    let first_stack = stack::Declared::of(dap, (&modules, &placed), name.version, notes);
+    // The first's stack and records count only what it offers itself.
+    let first_stack = stack::Declared::of(
+        dap,
+        (&modules, &placed_with(&every_safety)),
+        name.version,
+        notes,
+    );
+    let first_records = own_records::own_records(dap, notes);
+    let later_with = |placed: &stack::Placed, notes: &mut Notes| {
+        let offer = daps::Offered {
+            device,
+            modules: &modules,
+            safety: &placed.safety,
+        };
+        let context = (placed, taken.clone(), &first_records);
+        daps::later_daps(
+            &offer,
+            (&first_stack, name.version),
+            device_info,
+            context,
+            notes,
+        )
+    };
+    // Which later access points import does not depend on the safety
+    // modules, but their entries name those by number: a trial run (its
+    // findings dropped, the real run says them) finds the access points,
+    // then only the safety modules they offer are taken.
+    let trial = later_with(&placed_with(&every_safety), &mut Notes::scratch());
+    let offering: Vec<&Dap> = std::iter::once(dap)
+        .chain(trial.iter().map(|l| l.dap))
+        .collect();
+    let safety = safety::offered_by(every_safety, &offering, notes);
+    let placed = placed_with(&safety);
+    let later = later_with(&placed, notes);
     let offer = daps::Offered {
         device,
         modules: &modules,
         safety: &placed.safety,
     };
-    let first_records = own_records::own_records(dap, notes);
-    let later = daps::later_daps(
-        &offer,
-        (&first_stack, name.version),
-        device_info,
-        (&placed, taken, &first_records),
-        notes,
-    );
     // The first offers every data module the import takes; not every
     // safety module, where a later one offers those (SEW's MOVI-C).
     let first_offers = daps::offered(dap, dap, &offer).ok().flatten();

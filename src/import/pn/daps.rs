@@ -55,7 +55,7 @@ impl DapEntry<'_> {
 /// is DeviceIdentity's info text: what an entry without `info` gets;
 /// `taken` the ident numbers of the first and of the modules imported.
 pub(super) fn later_daps<'a>(
-    offer: &Offered<'a>,
+    offer: &Offered<'a, '_>,
     (first_stack, file): (&Declared, Version),
     device_info: Option<&Text>,
     (placed, taken, first_records): (&Placed, Vec<u32>, &OwnRecords),
@@ -96,11 +96,11 @@ pub(super) fn later_daps<'a>(
 }
 
 /// The modules the import takes, for the device access points to offer.
-pub(super) struct Offered<'a> {
-    pub device: &'a PnDevice,
-    pub modules: &'a [Recognised<'a>],
+pub(super) struct Offered<'d, 'o> {
+    pub device: &'d PnDevice,
+    pub modules: &'o [Recognised<'d>],
     /// The safety modules imported, by their IDs.
-    pub safety: &'a [(String, Offer)],
+    pub safety: &'o [(String, Offer)],
 }
 
 /// The keys of `dap`'s `[[profinet.daps]]` entry, or why it has none.

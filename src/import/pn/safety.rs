@@ -7,7 +7,7 @@ use super::slots::{offered, one_range, slot_list};
 use super::stack::is_true;
 use super::{attribute, hex32, text, Notes, SUBMODULE_ATTRIBUTES};
 use crate::description::safety::OPTIONAL_F_PARAMETERS;
-use crate::device::pn::{DataItem, IoPart, PnDevice, PnModule, Submodule};
+use crate::device::pn::{Dap, DataItem, IoPart, PnDevice, PnModule, Submodule};
 use crate::device::Attribute;
 use crate::import::toml_out::{quote, TomlOut};
 use crate::ir::profinet::Slots;
@@ -210,6 +210,29 @@ pub(super) fn safety_modules<'a>(
         }
     }
     found
+}
+
+/// The safety modules an imported access point offers; each other is left
+/// out with why: only access points the import leaves out offer it, and a
+/// module no access point offers is in no catalogue entry (E183).
+pub(super) fn offered_by<'a>(
+    safety: Vec<Safety<'a>>,
+    daps: &[&Dap],
+    notes: &mut Notes,
+) -> Vec<Safety<'a>> {
+    let offers = |s: &Safety| {
+        daps.iter()
+            .any(|d| d.useable_modules.iter().any(|r| r.target == s.module.id))
+    };
+    let (kept, left): (Vec<Safety>, Vec<Safety>) = safety.into_iter().partition(offers);
+    for s in left {
+        notes.unsaid(
+            &format!("module `{}`", s.module.id),
+            &s.module.place,
+            "only device access points the import leaves out offer it, and a module no device access point offers is in no catalogue entry (E183)",
+        );
+    }
+    kept
 }
 
 /// A safety module the description can say, or why not; each record of

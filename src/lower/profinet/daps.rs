@@ -94,8 +94,46 @@ pub fn lower(
     unique_idents(cx, p, daps[0].ident, modules);
     if complete {
         one_slot_zero_per_ident(cx, p, &daps);
+        every_module_offered(cx, p, &daps, (modules, first.placement.safety));
     }
     complete.then_some(daps)
+}
+
+/// E183: a module no device access point offers is in no catalogue entry:
+/// the file would list it for no one, and the layouts would carry a module
+/// no project can plug. Only where `dap_modules` leaves some out.
+fn every_module_offered(
+    cx: &mut Checker,
+    p: &raw::Profinet,
+    daps: &[Dap],
+    (modules, safety): (&[Module], &[SafetyModule]),
+) {
+    let Some(list) = &p.dap_modules else {
+        return; // the first offers every module
+    };
+    let data = modules
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !daps.iter().any(|d| d.modules.contains(i)))
+        .map(|(_, m)| m.ident.snake());
+    let safety = safety
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !daps.iter().any(|d| d.safety_modules.contains(i)))
+        .map(|(_, m)| m.ident.snake());
+    let unoffered: Vec<String> = data.chain(safety).map(|name| format!("`{name}`")).collect();
+    if unoffered.is_empty() {
+        return;
+    }
+    cx.push(
+        Diagnostic::error(
+            "E183",
+            format!("{} offered by no device access point", unoffered.join(", ")),
+        )
+        .at(list.span())
+        .label("not every module")
+        .help("name each module in `dap_modules` or in a [[profinet.daps]] entry's `modules`, or take it out of the description"),
+    );
 }
 
 /// E162: device access points of one ident number are one head module to
