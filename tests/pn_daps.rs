@@ -21,6 +21,14 @@ fn with_daps(daps: &str) -> String {
     format!("{}{daps}", &text[..start])
 }
 
+/// The PROFINET part of the description `text`; a panic with the
+/// diagnostics when it does not load.
+fn profinet(text: &str) -> gsdc::ir::Profinet {
+    let (ir, diagnostics) = descriptions::load_text(NAME, text);
+    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
+    ir.profinet.expect("a PROFINET part")
+}
+
 fn errors(text: &str) -> Vec<(&'static str, usize, usize)> {
     descriptions::error_places(NAME, text)
 }
@@ -118,9 +126,7 @@ fn a_dap_sharing_a_modules_ident_number_is_refused_at_it() {
 #[test]
 fn daps_of_one_ident_number_present_one_slot_zero() {
     let alike = "[[profinet.daps]]\nname = \"V2\"\nident = 0x200\n\n[[profinet.daps]]\nname = \"V3\"\nident = 0x200\nmodules = [\"pzd1\"]\n";
-    let (ir, diagnostics) = descriptions::load_text(NAME, &with_daps(alike));
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
-    let daps = &ir.profinet.unwrap().daps;
+    let daps = &profinet(&with_daps(alike)).daps;
     assert_eq!((daps[1].ident, daps[2].ident), (0x200, 0x200));
     // The first's ident number, with its own submodule's other number.
     let first = "[[profinet.daps]]\nname = \"V2\"\nident = 0x100\n";
@@ -150,11 +156,7 @@ fn daps_of_one_ident_number_give_each_record_alike() {
     let at = place(&other, "0x00000300");
     assert_eq!(errors(&other), [("E162", at.0, at.1)]);
     // Its own record of another index is its own.
-    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
-    let p = ir
-        .unwrap_or_else(|| panic!("{diagnostics:?}"))
-        .profinet
-        .unwrap();
+    let p = profinet(&text);
     let (own, ports) = p.own_records(&p.daps[3]);
     let indexes: Vec<u16> = own.iter().map(|r| r.index).collect();
     assert_eq!(indexes, [8200, 8201]);
@@ -170,9 +172,7 @@ fn the_first_dap_may_offer_some_modules() {
         "[profinet]\ndap_modules = [\"telegram1\"]\n",
         1,
     );
-    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
-    let p = ir.profinet.unwrap();
+    let p = profinet(&text);
     assert_eq!(p.daps[0].modules, [0]);
     // The second offers every module still.
     assert_eq!(p.daps[1].modules, [0, 1]);
@@ -195,9 +195,7 @@ fn more_ports_than_the_first_need_their_ident_numbers() {
         ),
         3,
     );
-    let (ir, diagnostics) = descriptions::load_text(NAME, &stated);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
-    let idents: Vec<u32> = ir.profinet.unwrap().daps[1]
+    let idents: Vec<u32> = profinet(&stated).daps[1]
         .ports
         .iter()
         .map(|p| p.ident)
@@ -263,9 +261,7 @@ fn a_later_daps_own_info_carries_the_draft_notice() {
         "vendor_id = { value = 0x1234 }",
         "vendor_id = { value = 0x1234, placeholder = true }",
     );
-    let (ir, diagnostics) = descriptions::load_text(NAME, &text);
-    let ir = ir.unwrap_or_else(|| panic!("{diagnostics:?}"));
-    let p = ir.profinet.unwrap();
+    let p = profinet(&text);
     let own = &p.daps[2].info.text.en;
     assert!(
         own.contains("VendorID 0x1234") && own.ends_with("standard telegram 1 alone."),

@@ -194,13 +194,9 @@ pub(super) fn describe(
             .map(|s| (s.id().to_string(), s.offer()))
             .collect(),
     };
+    let every_placed = placed_with(&every_safety);
     // The first's stack and records count only what it offers itself.
-    let first_stack = stack::Declared::of(
-        dap,
-        (&modules, &placed_with(&every_safety)),
-        name.version,
-        notes,
-    );
+    let first_stack = stack::Declared::of(dap, (&modules, &every_placed), name.version, notes);
     let first_records = own_records::own_records(dap, notes);
     let later_with = |placed: &stack::Placed, notes: &mut Notes| {
         let offer = daps::Offered {
@@ -221,7 +217,7 @@ pub(super) fn describe(
     // modules, but their entries name those by number: a trial run (its
     // findings dropped, the real run says them) finds the access points,
     // then only the safety modules they offer are taken.
-    let trial = later_with(&placed_with(&every_safety), &mut Notes::scratch());
+    let trial = later_with(&every_placed, &mut Notes::scratch());
     let offering: Vec<&Dap> = std::iter::once(dap)
         .chain(trial.iter().map(|l| l.dap))
         .collect();
